@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ElementTemplate.h
+ * @brief The shape every element of a system is an instance of (thesis §3.3).
+ *
+ * A template is n particles with rest positions, springs that hold the shape,
+ * and triangles that draw it. The springs decide how an element may fold and
+ * need not follow the drawn edges. Rest positions are normalised so that the
+ * template is centred on its centroid and its bounding sphere has diameter 1;
+ * the engine then scales it by the element size in world units.
+ */
+#ifndef BoundParticles_ElementTemplate_h
+#define BoundParticles_ElementTemplate_h
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+struct Spring
+{
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+  float restLength = 0.0f;
+  float stiffness = 1.0f; ///< in [0, 1]; 1 restores the full violation per iteration
+};
+
+struct ElementTemplate
+{
+  std::string name;
+  std::vector<std::array<float, 3>> rest;
+  std::vector<Spring> springs;
+  std::vector<std::array<std::uint32_t, 3>> triangles; ///< counter-clockwise seen from outside
+  std::vector<std::uint8_t> pinned;                    ///< empty, or one flag per particle
+
+  std::size_t particleCount() const { return this->rest.size(); }
+
+  /// Empty when the template is usable, otherwise what is wrong with it.
+  std::string validate() const;
+
+  /// Centres the rest shape on its centroid, scales its bounding sphere to
+  /// diameter 1 and recomputes every spring's rest length.
+  void normalize();
+};
+
+/// The built-in shapes of thesis Fig. 3.4, with no power-of-two padding.
+enum class BuiltinShape
+{
+  Point = 0,
+  Square,
+  Strip4,
+  Strip8,
+  Strip16,
+  Cross,
+  Paddlewheel,
+  Tetrahedron,
+  Fish,
+};
+constexpr int BuiltinShapeCount = 9;
+
+/// The shape's user-facing name ("Strip16", "Fish", ...).
+const char* builtinShapeName(BuiltinShape shape);
+
+/// A normalised template of the shape.
+ElementTemplate builtinTemplate(BuiltinShape shape);
+
+/**
+ * Builds a template from points, triangles and spring pairs; rest lengths come
+ * from the points. When `springPairs` is empty, the triangles' edges become the
+ * springs. The result is normalised.
+ */
+ElementTemplate makeTemplate(const std::string& name,
+  const std::vector<std::array<float, 3>>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles,
+  const std::vector<std::array<std::uint32_t, 2>>& springPairs);
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,508 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "Engine.h"
+
+#include "CounterHash.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+std::array<float, 9> toRowMajor(const Eigen::Matrix3d& m)
+{
+  std::array<float, 9> r;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      r[3 * i + j] = float(m(i, j));
+    }
+  }
+  return r;
+}
+
+inline bool finite3(const float* p)
+{
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+} // namespace
+
+std::array<float, 9> rotationFromDegrees(double x, double y, double z)
+{
+  const double d = Pi / 180.0;
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(z * d, Eigen::Vector3d::UnitZ()) *
+    Eigen::AngleAxisd(y * d, Eigen::Vector3d::UnitY()) *
+    Eigen::AngleAxisd(x * d, Eigen::Vector3d::UnitX()))
+                              .toRotationMatrix();
+  return toRowMajor(r);
+}
+
+std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
+{
+  // Shoemake, "Uniform random rotations", Graphics Gems III (1992).
+  const float s1 = std::sqrt(1.0f - u1), s2 = std::sqrt(u1);
+  const float a = float(2.0 * Pi) * u2, b = float(2.0 * Pi) * u3;
+  const float x = s1 * std::sin(a), y = s1 * std::cos(a), z = s2 * std::sin(b),
+              w = s2 * std::cos(b);
+  return { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y) };
+}
+
+std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
+{
+  std::ostringstream err;
+  const std::string shapeError = shape.validate();
+  if (!shapeError.empty())
+  {
+    return shapeError;
+  }
+  if (p.numberOfElements < 1)
+  {
+    return "NumberOfElements must be at least 1";
+  }
+  const std::size_t n = shape.particleCount();
+  if (p.numberOfElements > MaxParticles / n)
+  {
+    err << "NumberOfElements " << p.numberOfElements << " x " << n
+        << " particles per element exceeds the limit of " << MaxParticles
+        << " particles; use fewer elements or a simpler shape";
+    return err.str();
+  }
+  if (!(std::isfinite(p.elementSize) && p.elementSize > 0.0f))
+  {
+    return "ElementSize must be positive";
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(std::isfinite(p.emitterMin[k]) && std::isfinite(p.emitterMax[k]) &&
+          p.emitterMin[k] <= p.emitterMax[k]))
+    {
+      return "the emitter box is invalid: EmitterSize must not be negative and both "
+             "EmitterCenter and EmitterSize must be finite";
+    }
+  }
+  if (!(std::isfinite(p.lifetimeMin) && std::isfinite(p.lifetimeMax) && p.lifetimeMin > 0.0f &&
+        p.lifetimeMin <= p.lifetimeMax))
+  {
+    return "LifetimeRange must satisfy 0 < min <= max";
+  }
+  if (p.iterations < 0 || p.iterations > 1000)
+  {
+    return "RestorationIterations must lie in [0, 1000]";
+  }
+  if (!(p.relaxation > 0.0f && p.relaxation <= 2.0f))
+  {
+    return "the Jacobi relaxation factor must lie in (0, 2]";
+  }
+
+  this->Shape = shape;
+  this->Params = p;
+  this->Pinned.assign(n, 0);
+  if (!shape.pinned.empty())
+  {
+    this->Pinned = shape.pinned;
+  }
+  this->Springs.clear();
+  std::vector<int> degree(n, 0);
+  for (const Spring& s : shape.springs)
+  {
+    SpringWork w;
+    w.a = s.a;
+    w.b = s.b;
+    w.rest = s.restLength * p.elementSize;
+    w.stiffness = s.stiffness;
+    const bool pa = this->Pinned[s.a] != 0, pb = this->Pinned[s.b] != 0;
+    // A pinned end does not move, so the free end takes the whole correction (thesis §5.1).
+    w.shareA = pa ? 0.0f : (pb ? 1.0f : 0.5f);
+    w.shareB = pb ? 0.0f : (pa ? 1.0f : 0.5f);
+    this->Springs.push_back(w);
+    ++degree[s.a];
+    ++degree[s.b];
+  }
+  this->InverseDegree.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->InverseDegree[i] = degree[i] > 0 ? 1.0f / float(degree[i]) : 0.0f;
+  }
+
+  const std::size_t E = p.numberOfElements;
+  this->Positions.assign(3 * E * n, 0.0f);
+  this->Normals.assign(3 * E * n, 0.0f);
+  this->Forces.assign(E * n, 0.0f);
+  this->Lifetimes.assign(E, 0.0f);
+  this->Generations.assign(E, 0);
+  this->InitialCenters.assign(3 * E, 0.0f);
+  this->ResetFlags.assign(E, 0);
+  return std::string();
+}
+
+void Engine::place(std::size_t e)
+{
+  const Parameters& P = this->Params;
+  const std::uint32_t element = std::uint32_t(e), generation = this->Generations[e];
+  float u[7];
+  for (std::uint32_t d = 0; d < 7; ++d)
+  {
+    u[d] = uniformDraw(P.seed, element, generation, d);
+  }
+  float c[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    c[k] = P.emitterMin[k] + u[k] * (P.emitterMax[k] - P.emitterMin[k]);
+    this->InitialCenters[3 * e + k] = c[k];
+  }
+  const std::array<float, 9> R =
+    P.randomOrientation ? rotationFromUniforms(u[3], u[4], u[5]) : P.frame;
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto& r = this->Shape.rest[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[3 * i + k] =
+        c[k] + P.elementSize * (R[3 * k] * r[0] + R[3 * k + 1] * r[1] + R[3 * k + 2] * r[2]);
+    }
+  }
+  std::fill_n(this->Forces.data() + e * n, n, 0.0f);
+  this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
+  this->ResetFlags[e] = 0;
+}
+
+void Engine::initialize(const RangeRunner& run)
+{
+  std::fill(this->Generations.begin(), this->Generations.end(), 0u);
+  run(this->elementCount(), [this](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+    {
+      this->place(e);
+      this->normalsOf(e);
+    }
+  });
+}
+
+void Engine::advectParticle(const VectorField& field, double t, double h, float p[3]) const
+{
+  const float hf = float(h);
+  float k1[3];
+  field.sample(p, t, k1);
+  switch (this->Params.integrator)
+  {
+    case Integrator::Euler:
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf * k1[k];
+      }
+      return;
+    case Integrator::RK2:
+    {
+      float q[3], k2[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k1[k];
+      }
+      field.sample(q, t + 0.5 * h, k2);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf * k2[k];
+      }
+      return;
+    }
+    case Integrator::RK4:
+    {
+      float q[3], k2[3], k3[3], k4[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k1[k];
+      }
+      field.sample(q, t + 0.5 * h, k2);
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k2[k];
+      }
+      field.sample(q, t + 0.5 * h, k3);
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + hf * k3[k];
+      }
+      field.sample(q, t + h, k4);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf / 6.0f * (k1[k] + 2.0f * k2[k] + 2.0f * k3[k] + k4[k]);
+      }
+      return;
+    }
+  }
+}
+
+void Engine::restore(float* p, float* acc) const
+{
+  const std::size_t n = this->Shape.particleCount();
+  const Restoration method = this->Params.restoration;
+  for (int it = 0; it < this->Params.iterations; ++it)
+  {
+    if (method == Restoration::GaussSeidel)
+    {
+      // Each spring moves its ends at once, so later springs see the update.
+      for (const SpringWork& s : this->Springs)
+      {
+        float* pa = p + 3 * s.a;
+        float* pb = p + 3 * s.b;
+        const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+        const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (!(len > 0.0f))
+        {
+          continue;
+        }
+        const float f = s.stiffness * (s.rest - len) / len;
+        for (int k = 0; k < 3; ++k)
+        {
+          pa[k] += s.shareA * f * d[k];
+          pb[k] -= s.shareB * f * d[k];
+        }
+      }
+      continue;
+    }
+    // Jacobi: every spring sees the positions of the previous iteration. Each
+    // particle's corrections are summed in spring order, as a per-particle
+    // gather over a spring list sorted by index sums them.
+    std::fill_n(acc, 3 * n, 0.0f);
+    for (const SpringWork& s : this->Springs)
+    {
+      const float* pa = p + 3 * s.a;
+      const float* pb = p + 3 * s.b;
+      const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+      const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(len > 0.0f))
+      {
+        continue;
+      }
+      const float f = s.stiffness * (s.rest - len) / len;
+      for (int k = 0; k < 3; ++k)
+      {
+        acc[3 * s.a + k] += s.shareA * f * d[k];
+        acc[3 * s.b + k] -= s.shareB * f * d[k];
+      }
+    }
+    if (method == Restoration::AveragedJacobi)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          p[3 * i + k] += acc[3 * i + k] * this->InverseDegree[i];
+        }
+      }
+    }
+    else
+    {
+      const float w = this->Params.relaxation;
+      for (std::size_t i = 0; i < 3 * n; ++i)
+      {
+        p[i] += w * acc[i];
+      }
+    }
+  }
+}
+
+void Engine::stepElement(
+  std::size_t e, const VectorField& field, double t, double h, std::vector<float>& scratch)
+{
+  const std::size_t n = this->Shape.particleCount();
+  if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
+  {
+    ++this->Generations[e];
+    this->place(e);
+  }
+  float* p = this->Positions.data() + 3 * e * n;
+  float* before = scratch.data();        // positions before the step
+  float* advected = scratch.data() + 3 * n; // positions before restoration
+  std::copy_n(p, 3 * n, before);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!this->Pinned[i])
+    {
+      this->advectParticle(field, t, h, p + 3 * i);
+    }
+  }
+  std::copy_n(p, 3 * n, advected);
+  if (!this->Springs.empty())
+  {
+    this->restore(p, scratch.data() + 6 * n);
+  }
+
+  bool finite = true;
+  float* force = this->Forces.data() + e * n;
+  double c[3] = { 0, 0, 0 };
+  bool anyOutside = false;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float* q = p + 3 * i;
+    const float* a = advected + 3 * i;
+    const float d[3] = { q[0] - a[0], q[1] - a[1], q[2] - a[2] };
+    force[i] = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    finite = finite && finite3(q);
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += q[k];
+    }
+    anyOutside = anyOutside || !field.contains(q);
+  }
+  bool leave;
+  if (!finite)
+  {
+    // Keep the last good positions on view until the reset at the next step.
+    std::copy_n(before, 3 * n, p);
+    std::fill_n(force, n, 0.0f);
+    leave = true;
+  }
+  else if (this->Params.resetWhen == ResetWhen::AnyParticleLeaves)
+  {
+    leave = anyOutside;
+  }
+  else
+  {
+    const float center[3] = { float(c[0] / n), float(c[1] / n), float(c[2] / n) };
+    leave = !field.contains(center);
+  }
+  this->ResetFlags[e] = leave ? 1 : 0;
+  this->Lifetimes[e] -= float(h);
+}
+
+void Engine::step(const VectorField& field, double t, double h, const RangeRunner& run)
+{
+  const std::size_t n = this->Shape.particleCount();
+  run(this->elementCount(), [&](std::size_t begin, std::size_t end) {
+    // before + advected + Jacobi accumulator, per worker.
+    std::vector<float> scratch(9 * n);
+    for (std::size_t e = begin; e < end; ++e)
+    {
+      this->stepElement(e, field, t, h, scratch);
+    }
+  });
+}
+
+void Engine::normalsOf(std::size_t e)
+{
+  const std::size_t n = this->Shape.particleCount();
+  const float* p = this->Positions.data() + 3 * e * n;
+  float* nr = this->Normals.data() + 3 * e * n;
+  std::fill_n(nr, 3 * n, 0.0f);
+  for (const auto& tri : this->Shape.triangles)
+  {
+    const float* a = p + 3 * tri[0];
+    const float* b = p + 3 * tri[1];
+    const float* c = p + 3 * tri[2];
+    const float u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const float v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const float x[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+      u[0] * v[1] - u[1] * v[0] };
+    const float len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    if (!(len > 0.0f))
+    {
+      continue;
+    }
+    for (std::uint32_t idx : tri)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        nr[3 * idx + k] += x[k] / len;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float* q = nr + 3 * i;
+    const float len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    if (len > 0.0f)
+    {
+      q[0] /= len;
+      q[1] /= len;
+      q[2] /= len;
+    }
+    else
+    {
+      // No (non-degenerate) triangle: a fixed normal keeps the output finite.
+      q[0] = 0.0f;
+      q[1] = 0.0f;
+      q[2] = 1.0f;
+    }
+  }
+}
+
+void Engine::updateNormals(const RangeRunner& run)
+{
+  run(this->elementCount(), [this](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+    {
+      this->normalsOf(e);
+    }
+  });
+}
+
+StepSchedule::StepSchedule(double start, double dt, std::vector<double> breaks)
+  : Start(start)
+  , Dt(dt)
+  , Epsilon(dt * 1e-6)
+  , Breaks(std::move(breaks))
+{
+  std::sort(this->Breaks.begin(), this->Breaks.end());
+}
+
+double StepSchedule::next(double t) const
+{
+  const double limit = t + this->Epsilon;
+  // Grid points are computed from their index, never accumulated, so every run
+  // meets the same ones.
+  double k = std::floor((t - this->Start) / this->Dt);
+  double candidate = this->Start + k * this->Dt;
+  while (candidate <= limit)
+  {
+    k += 1.0;
+    candidate = this->Start + k * this->Dt;
+  }
+  const auto it = std::upper_bound(this->Breaks.begin(), this->Breaks.end(), limit);
+  if (it != this->Breaks.end())
+  {
+    candidate = std::min(candidate, *it);
+  }
+  return candidate;
+}
+
+double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
+  double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing)
+{
+  for (double next = schedule.next(t); next <= target + schedule.epsilon();
+       next = schedule.next(t))
+  {
+    if (keepGoing && !keepGoing(t))
+    {
+      break;
+    }
+    engine.step(field, t, next - t, run);
+    t = next;
+  }
+  return t;
+}
+
+void sampleAtPositions(const VectorField& field, double t, const float* positions,
+  std::size_t count, float* velocity, float* vorticity, const RangeRunner& run)
+{
+  run(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      field.sample(positions + 3 * i, t, velocity + 3 * i);
+      vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
+    }
+  });
+}
+
+} // namespace bp

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Engine.h
+ * @brief The CPU engine: DESIGN.md §4, one step of a system of bound particles.
+ *
+ * A step of size h at time t does, for every element independently:
+ *  1. reset, when the element was flagged by the previous step or its lifetime
+ *     ran out: a new centre uniform in the emitter box, a uniform random
+ *     rotation (or the user's frame), the scaled template, a lifetime uniform
+ *     in [min, max]; every draw comes from counterHash(seed, element,
+ *     generation, draw), draws 0-2 the centre, 3-5 the rotation, 6 the lifetime;
+ *  2. advection of every particle (Euler, RK2 midpoint or classic RK4);
+ *  3. restoration, K iterations of averaged Jacobi (thesis §3.5), Jacobi with
+ *     relaxation, or Gauss-Seidel; the per-particle "force" is the length of
+ *     the particle's total restoration displacement in this step;
+ *  4. normals (computed on demand by updateNormals(): they do not feed back
+ *     into the simulation, so computing them only for output is the same);
+ *  5. the reposition test: flag the element when its centre (or, as an option,
+ *     any particle) left the field, or a position became non-finite (then the
+ *     element keeps its positions from before the step, so no NaN is ever
+ *     visible); decrease the lifetime by h.
+ *
+ * Elements touch disjoint memory, so a step runs over element ranges in
+ * parallel and gives the same bits for any number of threads.
+ */
+#ifndef BoundParticles_Engine_h
+#define BoundParticles_Engine_h
+
+#include "ElementTemplate.h"
+#include "Parallel.h"
+#include "VectorField.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+enum class Integrator
+{
+  Euler = 0,
+  RK2,
+  RK4
+};
+
+enum class Restoration
+{
+  AveragedJacobi = 0,
+  Jacobi,
+  GaussSeidel
+};
+
+enum class ResetWhen
+{
+  CenterLeaves = 0,
+  AnyParticleLeaves
+};
+
+/// The most particles a system may hold (about 2 GiB of state and output).
+constexpr std::size_t MaxParticles = std::size_t(1) << 26;
+
+struct Parameters
+{
+  std::size_t numberOfElements = 1000;
+  float elementSize = 1.0f; ///< bounding-sphere diameter in world units
+  std::array<float, 3> emitterMin = { 0, 0, 0 };
+  std::array<float, 3> emitterMax = { 1, 1, 1 };
+  bool randomOrientation = true;
+  std::array<float, 9> frame = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }; ///< row-major, used without random orientation
+  float lifetimeMin = 1.0f;
+  float lifetimeMax = 2.0f;
+  Integrator integrator = Integrator::Euler;
+  Restoration restoration = Restoration::AveragedJacobi;
+  int iterations = 1;
+  /// Plain Jacobi's step factor on the summed corrections; stable for the
+  /// built-in shapes (up to 10 springs per particle) below about 0.3.
+  float relaxation = 0.2f;
+  ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  std::uint32_t seed = 0;
+};
+
+/// Row-major rotation R = Rz * Ry * Rx from angles in degrees about X, then Y, then Z.
+std::array<float, 9> rotationFromDegrees(double x, double y, double z);
+
+/// Shoemake's uniform random rotation from three uniforms in [0, 1).
+std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3);
+
+class Engine
+{
+public:
+  /// Checks the template and parameters and sizes the system; empty on success.
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters);
+
+  /// Places every element (generation 0) and computes its normals.
+  void initialize(const RangeRunner& run);
+
+  /// One step of size h from time t (h > 0).
+  void step(const VectorField& field, double t, double h, const RangeRunner& run);
+
+  /// Recomputes the per-particle normals from the positions.
+  void updateNormals(const RangeRunner& run);
+
+  std::size_t elementCount() const { return this->Params.numberOfElements; }
+  std::size_t particlesPerElement() const { return this->Shape.particleCount(); }
+  std::size_t particleCount() const { return this->elementCount() * this->particlesPerElement(); }
+  const ElementTemplate& shape() const { return this->Shape; }
+  const Parameters& parameters() const { return this->Params; }
+
+  /// Element-major: particle i of element e is at 3 * (e * n + i).
+  const std::vector<float>& positions() const { return this->Positions; }
+  const std::vector<float>& normals() const { return this->Normals; }
+  const std::vector<float>& forces() const { return this->Forces; }
+  const std::vector<float>& lifetimes() const { return this->Lifetimes; }
+  const std::vector<std::uint32_t>& generations() const { return this->Generations; }
+  /// The centre each element was last placed at: 3 floats per element.
+  const std::vector<float>& initialCenters() const { return this->InitialCenters; }
+  /// Elements flagged for reset at the next step.
+  const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
+
+  /// For tests: direct access to the positions of the system.
+  std::vector<float>& mutablePositions() { return this->Positions; }
+
+private:
+  struct SpringWork
+  {
+    std::uint32_t a, b;
+    float rest, stiffness;
+    float shareA, shareB; ///< part of the correction each end takes (pinned ends take none)
+  };
+
+  void place(std::size_t e);
+  void stepElement(std::size_t e, const VectorField& field, double t, double h,
+    std::vector<float>& scratch);
+  void advectParticle(const VectorField& field, double t, double h, float p[3]) const;
+  /// K iterations on one element's positions; `acc` holds 3n floats of scratch.
+  void restore(float* p, float* acc) const;
+  void normalsOf(std::size_t e);
+
+  ElementTemplate Shape;
+  Parameters Params;
+  std::vector<SpringWork> Springs;
+  std::vector<float> InverseDegree;
+  std::vector<std::uint8_t> Pinned;
+
+  std::vector<float> Positions;
+  std::vector<float> Normals;
+  std::vector<float> Forces;
+  std::vector<float> Lifetimes;
+  std::vector<std::uint32_t> Generations;
+  std::vector<float> InitialCenters;
+  std::vector<std::uint8_t> ResetFlags;
+};
+
+/**
+ * Where steps end: on the grid start + k * dt and on every time in `breaks`
+ * (the data's time steps, so no step straddles two data intervals). Because
+ * the boundaries do not depend on where a run stops, stepping to T1 and then
+ * to T2 passes through exactly the states a fresh run to T2 does.
+ */
+class StepSchedule
+{
+public:
+  StepSchedule(double start, double dt, std::vector<double> breaks);
+  /// The first boundary after t (boundaries closer than epsilon() to t are skipped).
+  double next(double t) const;
+  double epsilon() const { return this->Epsilon; }
+  double start() const { return this->Start; }
+  double dt() const { return this->Dt; }
+
+private:
+  double Start;
+  double Dt;
+  double Epsilon;
+  std::vector<double> Breaks;
+};
+
+/**
+ * Steps `engine` from its committed time t along the schedule's boundaries
+ * while the next boundary is not past `target`; returns the new committed time.
+ * `keepGoing` is asked before every step (progress, abort) and may stop early.
+ */
+double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
+  double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing = {});
+
+/// Velocity and |curl v| sampled at `count` positions (3 floats each).
+void sampleAtPositions(const VectorField& field, double t, const float* positions,
+  std::size_t count, float* velocity, float* vorticity, const RangeRunner& run);
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Parallel.h
+ * @brief How the core runs a loop over elements in parallel without knowing VTK.
+ *
+ * The engine's work is split into ranges of elements that touch disjoint
+ * memory. A RangeRunner decides how ranges are scheduled: the filter passes one
+ * built on vtkSMPTools, the unit tests pass serial or std::thread runners.
+ */
+#ifndef BoundParticles_Parallel_h
+#define BoundParticles_Parallel_h
+
+#include <cstddef>
+#include <functional>
+
+namespace bp
+{
+
+/// Processes items [begin, end).
+using RangeFunction = std::function<void(std::size_t begin, std::size_t end)>;
+
+/// Calls the function on ranges that together cover [0, count) exactly once.
+using RangeRunner = std::function<void(std::size_t count, const RangeFunction&)>;
+
+/// Runs the whole range on the calling thread.
+RangeRunner serialRunner();
+
+/// Splits the range into contiguous chunks over `threads` std::threads.
+RangeRunner threadRunner(unsigned threads);
+
+} // namespace bp
+
+#endif

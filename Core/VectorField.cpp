@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "VectorField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+
+std::string GridGeometry::validate() const
+{
+  std::ostringstream err;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->dims[a] < 1)
+    {
+      return "the field has no points";
+    }
+  }
+  int axes = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->dims[a] > 1)
+    {
+      ++axes;
+      if (!(std::isfinite(this->spacing[a]) && this->spacing[a] > 0.0))
+      {
+        err << "the field's spacing along axis " << "XYZ"[a] << " is " << this->spacing[a]
+            << "; it must be positive";
+        return err.str();
+      }
+    }
+    if (!std::isfinite(this->origin[a]))
+    {
+      return "the field's origin is not finite";
+    }
+  }
+  if (axes == 0)
+  {
+    return "the field has a single point; it needs at least two points along one axis";
+  }
+  return std::string();
+}
+
+std::array<double, 6> GridGeometry::bounds() const
+{
+  std::array<double, 6> b;
+  for (int a = 0; a < 3; ++a)
+  {
+    b[2 * a] = this->origin[a];
+    b[2 * a + 1] = this->origin[a] + (this->dims[a] - 1) * this->spacing[a];
+  }
+  return b;
+}
+
+double GridGeometry::diagonal() const
+{
+  const auto b = this->bounds();
+  double d2 = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    d2 += (b[2 * a + 1] - b[2 * a]) * (b[2 * a + 1] - b[2 * a]);
+  }
+  return std::sqrt(d2);
+}
+
+double GridGeometry::cellLength() const
+{
+  double sum = 0.0;
+  int axes = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->dims[a] > 1)
+    {
+      sum += std::abs(this->spacing[a]);
+      ++axes;
+    }
+  }
+  return axes > 0 ? sum / axes : 1.0;
+}
+
+VectorField::VectorField(const GridGeometry& grid, FieldSlice slice)
+  : VectorField(grid, std::move(slice), FieldSlice())
+{
+}
+
+VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice second)
+  : Grid(grid)
+  , First(std::move(first))
+  , Second(std::move(second))
+{
+  std::size_t stride = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Degenerate[a] = grid.dims[a] <= 1;
+    this->Origin[a] = float(grid.origin[a]);
+    this->InverseSpacing[a] = this->Degenerate[a] ? 0.0f : float(1.0 / grid.spacing[a]);
+    this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
+    this->Lower[a] = float(grid.origin[a]);
+    this->Upper[a] = float(grid.origin[a] + (grid.dims[a] - 1) * grid.spacing[a]);
+    // A plane repeats its single layer: the "next" corner is the same point.
+    this->Stride[a] = this->Degenerate[a] ? 0 : stride;
+    stride *= std::size_t(std::max(grid.dims[a], 1));
+  }
+}
+
+std::string VectorField::validate() const
+{
+  const std::string gridError = this->Grid.validate();
+  if (!gridError.empty())
+  {
+    return gridError;
+  }
+  const std::size_t expected = 3 * this->Grid.pointCount();
+  for (const FieldSlice* s : { &this->First, &this->Second })
+  {
+    if (s == &this->Second && !s->velocity)
+    {
+      continue;
+    }
+    if (!s->velocity || s->velocity->size() != expected)
+    {
+      return "the vector array does not have one 3-component tuple per grid point";
+    }
+    const std::vector<float>& v = *s->velocity;
+    for (std::size_t i = 0; i < v.size(); ++i)
+    {
+      if (!std::isfinite(v[i]))
+      {
+        std::ostringstream err;
+        err << "the vector array has a non-finite value (" << v[i] << ") at point " << i / 3
+            << " of the time step at t = " << s->time
+            << "; replace NaN/Inf values first (e.g. with the Calculator)";
+        return err.str();
+      }
+    }
+  }
+  if (this->Second.velocity && !(this->Second.time > this->First.time))
+  {
+    return "the field's two time steps are not in increasing time order";
+  }
+  return std::string();
+}
+
+void VectorField::sampleSlice(const float* data, const float p[3], float v[3]) const
+{
+  std::size_t base = 0;
+  float f[3];
+  std::size_t step[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    float g = (p[a] - this->Origin[a]) * this->InverseSpacing[a];
+    g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
+    // The last cell takes points on the upper boundary, so i + 1 stays valid.
+    const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
+    f[a] = g - i;
+    base += std::size_t(i) * this->Stride[a];
+    step[a] = this->Stride[a];
+  }
+  const float* c000 = data + 3 * base;
+  const float* c100 = data + 3 * (base + step[0]);
+  const float* c010 = data + 3 * (base + step[1]);
+  const float* c110 = data + 3 * (base + step[0] + step[1]);
+  const float* c001 = data + 3 * (base + step[2]);
+  const float* c101 = data + 3 * (base + step[0] + step[2]);
+  const float* c011 = data + 3 * (base + step[1] + step[2]);
+  const float* c111 = data + 3 * (base + step[0] + step[1] + step[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    const float x00 = c000[k] + f[0] * (c100[k] - c000[k]);
+    const float x10 = c010[k] + f[0] * (c110[k] - c010[k]);
+    const float x01 = c001[k] + f[0] * (c101[k] - c001[k]);
+    const float x11 = c011[k] + f[0] * (c111[k] - c011[k]);
+    const float y0 = x00 + f[1] * (x10 - x00);
+    const float y1 = x01 + f[1] * (x11 - x01);
+    v[k] = y0 + f[2] * (y1 - y0);
+  }
+}
+
+float VectorField::timeWeight(double t) const
+{
+  const double w = (t - this->First.time) / (this->Second.time - this->First.time);
+  return float(std::min(std::max(w, 0.0), 1.0));
+}
+
+void VectorField::sample(const float p[3], double t, float v[3]) const
+{
+  this->sampleSlice(this->First.velocity->data(), p, v);
+  if (this->Second.velocity)
+  {
+    const float w = this->timeWeight(t);
+    if (w > 0.0f)
+    {
+      float v1[3];
+      this->sampleSlice(this->Second.velocity->data(), p, v1);
+      for (int k = 0; k < 3; ++k)
+      {
+        v[k] += w * (v1[k] - v[k]);
+      }
+    }
+  }
+}
+
+float VectorField::vorticityMagnitude(const float p[3], double t) const
+{
+  // d[a][k] = d v_k / d x_a
+  float d[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->Degenerate[a])
+    {
+      continue;
+    }
+    const float h = float(this->Grid.spacing[a]);
+    float pp[3] = { p[0], p[1], p[2] };
+    float pm[3] = { p[0], p[1], p[2] };
+    pp[a] += h;
+    pm[a] -= h;
+    float vp[3], vm[3];
+    this->sample(pp, t, vp);
+    this->sample(pm, t, vm);
+    for (int k = 0; k < 3; ++k)
+    {
+      d[a][k] = (vp[k] - vm[k]) / (2.0f * h);
+    }
+  }
+  const float cx = d[1][2] - d[2][1];
+  const float cy = d[2][0] - d[0][2];
+  const float cz = d[0][1] - d[1][0];
+  return std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+bool VectorField::contains(const float p[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!this->Degenerate[a] && !(p[a] >= this->Lower[a] && p[a] <= this->Upper[a]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+double VectorField::maxSpeed() const
+{
+  double m = 0.0;
+  const std::vector<float>& v = *this->First.velocity;
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+  {
+    m = std::max(m, double(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]));
+  }
+  return std::sqrt(m);
+}
+
+} // namespace bp

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ElementTemplate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+struct Counts
+{
+  bp::BuiltinShape shape;
+  std::size_t particles, triangles, springs;
+};
+
+// Thesis Table 4.1 gives particles(triangles)[springs] for the square and the
+// strips; the fish is Tu and Terzopoulos' full 23-node, 91-spring model.
+const Counts expected[] = {
+  { bp::BuiltinShape::Point, 1, 0, 0 },
+  { bp::BuiltinShape::Square, 4, 2, 6 },
+  { bp::BuiltinShape::Strip4, 4, 2, 6 },
+  { bp::BuiltinShape::Strip8, 8, 6, 16 },
+  { bp::BuiltinShape::Strip16, 16, 14, 36 },
+  { bp::BuiltinShape::Cross, 12, 10, 29 },
+  { bp::BuiltinShape::Paddlewheel, 8, 4, 28 },
+  { bp::BuiltinShape::Tetrahedron, 4, 4, 6 },
+  { bp::BuiltinShape::Fish, 23, 40, 91 },
+};
+} // namespace
+
+TEST(ElementTemplate, BuiltinsHaveTheirCounts)
+{
+  for (const Counts& c : expected)
+  {
+    const bp::ElementTemplate t = bp::builtinTemplate(c.shape);
+    SCOPED_TRACE(t.name);
+    EXPECT_EQ(t.name, bp::builtinShapeName(c.shape));
+    EXPECT_EQ(t.validate(), "");
+    EXPECT_EQ(t.particleCount(), c.particles);
+    EXPECT_EQ(t.triangles.size(), c.triangles);
+    EXPECT_EQ(t.springs.size(), c.springs);
+  }
+}
+
+TEST(ElementTemplate, BuiltinsAreNormalised)
+{
+  for (const Counts& c : expected)
+  {
+    const bp::ElementTemplate t = bp::builtinTemplate(c.shape);
+    SCOPED_TRACE(t.name);
+    double centroid[3] = { 0, 0, 0 }, radius = 0;
+    for (const auto& p : t.rest)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centroid[k] += p[k] / t.particleCount();
+      }
+      radius = std::max(radius, std::sqrt(double(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])));
+    }
+    for (double v : centroid)
+    {
+      EXPECT_NEAR(v, 0.0, 1e-6);
+    }
+    if (t.particleCount() > 1)
+    {
+      EXPECT_NEAR(radius, 0.5, 1e-6);
+    }
+    for (const bp::Spring& s : t.springs)
+    {
+      const auto& a = t.rest[s.a];
+      const auto& b = t.rest[s.b];
+      const double d = std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) +
+        std::pow(a[2] - b[2], 2));
+      EXPECT_NEAR(s.restLength, d, 1e-6);
+      EXPECT_GT(s.restLength, 0.0f);
+    }
+  }
+}
+
+TEST(ElementTemplate, ClosedShapesFaceOutwards)
+{
+  // Signed volume by the divergence theorem: positive for outward triangles.
+  for (bp::BuiltinShape shape : { bp::BuiltinShape::Tetrahedron, bp::BuiltinShape::Fish })
+  {
+    const bp::ElementTemplate t = bp::builtinTemplate(shape);
+    double volume = 0.0;
+    for (std::size_t i = 0; i < t.triangles.size(); ++i)
+    {
+      const auto& a = t.rest[t.triangles[i][0]];
+      const auto& b = t.rest[t.triangles[i][1]];
+      const auto& c = t.rest[t.triangles[i][2]];
+      const double part = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                            a[2] * (b[0] * c[1] - b[1] * c[0])) /
+        6.0;
+      volume += part;
+      if (shape == bp::BuiltinShape::Tetrahedron)
+      {
+        EXPECT_GT(part, 0.0) << "triangle " << i;
+      }
+    }
+    EXPECT_GT(volume, 0.0) << t.name;
+  }
+}
+
+TEST(ElementTemplate, ValidateNamesTheProblem)
+{
+  bp::ElementTemplate t = bp::builtinTemplate(bp::BuiltinShape::Square);
+  t.springs[0].b = 9;
+  EXPECT_NE(t.validate().find("only 4 particles"), std::string::npos) << t.validate();
+
+  t = bp::builtinTemplate(bp::BuiltinShape::Square);
+  t.springs[1].b = t.springs[1].a;
+  EXPECT_NE(t.validate().find("to itself"), std::string::npos);
+
+  t = bp::builtinTemplate(bp::BuiltinShape::Square);
+  t.springs[2].stiffness = 1.5f;
+  EXPECT_NE(t.validate().find("stiffness"), std::string::npos);
+
+  t = bp::builtinTemplate(bp::BuiltinShape::Square);
+  t.triangles[0][2] = 7;
+  EXPECT_NE(t.validate().find("triangle 0"), std::string::npos);
+
+  t = bp::builtinTemplate(bp::BuiltinShape::Square);
+  t.rest[0][1] = std::nanf("");
+  EXPECT_NE(t.validate().find("non-finite"), std::string::npos);
+
+  EXPECT_NE(bp::ElementTemplate().validate(), "");
+}
+
+TEST(ElementTemplate, MakeTemplateUsesTriangleEdgesWithoutSprings)
+{
+  const bp::ElementTemplate t =
+    bp::makeTemplate("tri", { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }, {});
+  EXPECT_EQ(t.validate(), "");
+  EXPECT_EQ(t.springs.size(), 3u);
+}

@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TestHelpers.h"
+
+#include "CounterHash.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+bp::Parameters centralParameters(std::size_t elements, float size)
+{
+  bp::Parameters p;
+  p.numberOfElements = elements;
+  p.elementSize = size;
+  p.emitterMin = { -0.4f, -0.4f, -0.4f };
+  p.emitterMax = { 0.4f, 0.4f, 0.4f };
+  p.lifetimeMin = 1000.0f;
+  p.lifetimeMax = 1000.0f;
+  p.seed = 7;
+  return p;
+}
+
+bp::Engine configured(bp::BuiltinShape shape, const bp::Parameters& p)
+{
+  bp::Engine engine;
+  const std::string error = engine.configure(bp::builtinTemplate(shape), p);
+  EXPECT_EQ(error, "");
+  engine.initialize(bp::serialRunner());
+  return engine;
+}
+
+void run(bp::Engine& engine, const bp::VectorField& field, int steps, double dt,
+  const bp::RangeRunner& runner = bp::serialRunner())
+{
+  for (int s = 0; s < steps; ++s)
+  {
+    engine.step(field, s * dt, dt, runner);
+  }
+}
+} // namespace
+
+TEST(CounterHash, UniformsCoverTheUnitInterval)
+{
+  double sum = 0.0;
+  float lo = 1.0f, hi = 0.0f;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i)
+  {
+    const float u = bp::uniformDraw(1, std::uint32_t(i), 0, 0);
+    ASSERT_GE(u, 0.0f);
+    ASSERT_LT(u, 1.0f);
+    sum += u;
+    lo = std::min(lo, u);
+    hi = std::max(hi, u);
+  }
+  EXPECT_NEAR(sum / n, 0.5, 0.01);
+  EXPECT_LT(lo, 0.001f);
+  EXPECT_GT(hi, 0.999f);
+  // Each counter matters.
+  const std::uint32_t h = bp::counterHash(1, 2, 3, 4);
+  EXPECT_NE(h, bp::counterHash(2, 2, 3, 4));
+  EXPECT_NE(h, bp::counterHash(1, 3, 3, 4));
+  EXPECT_NE(h, bp::counterHash(1, 2, 4, 4));
+  EXPECT_NE(h, bp::counterHash(1, 2, 3, 5));
+}
+
+TEST(Engine, ShapesKeepEdgeLengthsInSolidRotation)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  for (int s = 0; s < bp::BuiltinShapeCount; ++s)
+  {
+    const auto shape = bp::BuiltinShape(s);
+    SCOPED_TRACE(bp::builtinShapeName(shape));
+    bp::Parameters p = centralParameters(50, 0.2f);
+    p.integrator = bp::Integrator::RK4;
+    bp::Engine engine = configured(shape, p);
+    const double dt = 2 * Pi / 400;
+    double worst = 0.0;
+    for (int k = 0; k < 400; ++k) // one revolution
+    {
+      engine.step(field, k * dt, dt, bp::serialRunner());
+      worst = std::max(worst, bptest::worstSpringStrain(engine));
+    }
+    EXPECT_LT(worst, 0.01);
+    for (std::uint8_t flag : engine.resetFlags())
+    {
+      EXPECT_EQ(flag, 0); // the emitter keeps every element inside the field
+    }
+  }
+}
+
+TEST(Engine, IntegratorsConvergeInOrder)
+{
+  // One particle once round the axis: RK4 closes the circle best, Euler spirals out.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  double error[3];
+  for (int m = 0; m < 3; ++m)
+  {
+    bp::Parameters p = centralParameters(1, 0.1f);
+    p.emitterMin = { 0.5f, 0.0f, 0.0f };
+    p.emitterMax = { 0.5f, 0.0f, 0.0f };
+    p.integrator = bp::Integrator(m);
+    bp::Engine engine = configured(bp::BuiltinShape::Point, p);
+    run(engine, field, 200, 2 * Pi / 200);
+    const float* q = engine.positions().data();
+    error[m] = std::hypot(q[0] - 0.5, q[1], q[2]);
+  }
+  EXPECT_LT(error[2], 1e-4);
+  EXPECT_LT(error[2], error[1]);
+  EXPECT_LT(error[1], error[0]);
+}
+
+TEST(Engine, NeverGoesNonFinite)
+{
+  // Velocities near FLT_MAX overflow any step; the element must keep finite
+  // positions, be flagged, and be reset at the next step.
+  bp::GridGeometry g = bptest::grid(5);
+  bp::FieldSlice s;
+  s.velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 3.0e38f);
+  const bp::VectorField field(g, s);
+  for (int m = 0; m < 3; ++m)
+  {
+    bp::Parameters p = centralParameters(20, 0.2f);
+    p.restoration = bp::Restoration(m);
+    p.integrator = bp::Integrator::RK4;
+    bp::Engine engine = configured(bp::BuiltinShape::Fish, p);
+    for (int k = 0; k < 5; ++k)
+    {
+      engine.step(field, k * 0.1, 0.1, bp::serialRunner());
+      engine.updateNormals(bp::serialRunner());
+      for (float v : engine.positions())
+        ASSERT_TRUE(std::isfinite(v));
+      for (float v : engine.normals())
+        ASSERT_TRUE(std::isfinite(v));
+      for (float v : engine.forces())
+        ASSERT_TRUE(std::isfinite(v));
+      for (std::uint8_t flag : engine.resetFlags())
+        EXPECT_EQ(flag, 1);
+    }
+    EXPECT_EQ(engine.generations()[0], 4u);
+  }
+}
+
+TEST(Engine, ResetsLandInsideTheEmitter)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  bp::Parameters p = centralParameters(500, 0.1f);
+  p.emitterMin = { -0.9f, 0.1f, 0.3f };
+  p.emitterMax = { -0.2f, 0.6f, 0.35f };
+  p.lifetimeMin = 0.01f; // every element expires in each step, so the next one resets it
+  p.lifetimeMax = 0.01f;
+  bp::Engine engine = configured(bp::BuiltinShape::Cross, p);
+  for (int k = 0; k < 4; ++k)
+  {
+    engine.step(field, k * 0.01, 0.01, bp::serialRunner());
+    for (std::size_t e = 0; e < engine.elementCount(); ++e)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const float c = engine.initialCenters()[3 * e + a];
+        EXPECT_GE(c, p.emitterMin[a]);
+        EXPECT_LE(c, p.emitterMax[a]);
+      }
+      EXPECT_EQ(engine.generations()[e], std::uint32_t(k));
+    }
+  }
+}
+
+TEST(Engine, CenterOrAnyParticleLeaving)
+{
+  // A uniform flow along +x pushes elements out through the x = 1 face.
+  bp::GridGeometry g = bptest::grid(5);
+  bp::FieldSlice s;
+  auto v = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
+  for (std::size_t i = 0; i < g.pointCount(); ++i)
+    (*v)[3 * i] = 1.0f;
+  s.velocity = v;
+  const bp::VectorField field(g, s);
+  for (auto when : { bp::ResetWhen::CenterLeaves, bp::ResetWhen::AnyParticleLeaves })
+  {
+    bp::Parameters p = centralParameters(1, 0.5f);
+    p.emitterMin = { 0.5f, 0, 0 };
+    p.emitterMax = { 0.5f, 0, 0 };
+    p.randomOrientation = false;
+    p.resetWhen = when;
+    bp::Engine engine = configured(bp::BuiltinShape::Strip4, p);
+    int steps = 0;
+    while (!engine.resetFlags()[0] && steps < 100)
+    {
+      engine.step(field, steps * 0.01, 0.01, bp::serialRunner());
+      ++steps;
+    }
+    // Unrotated, the strip reaches this far beyond its centre along x.
+    float reach = 0.0f;
+    for (const auto& r : engine.shape().rest)
+      reach = std::max(reach, r[0] * p.elementSize);
+    const double centreTravel = steps * 0.01;
+    if (when == bp::ResetWhen::CenterLeaves)
+      EXPECT_NEAR(centreTravel, 0.5, 0.011);
+    else
+      EXPECT_NEAR(centreTravel, 0.5 - reach, 0.011);
+  }
+}
+
+TEST(Engine, SameSeedSameResultOtherSeedOtherResult)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::Hurricane, bptest::grid(17));
+  auto runWithSeed = [&](std::uint32_t seed) {
+    bp::Parameters p = centralParameters(300, 0.1f);
+    p.seed = seed;
+    p.lifetimeMin = 0.2f;
+    p.lifetimeMax = 0.5f;
+    bp::Engine engine = configured(bp::BuiltinShape::Strip8, p);
+    run(engine, field, 50, 0.02);
+    return engine.positions();
+  };
+  EXPECT_EQ(runWithSeed(3), runWithSeed(3));
+  EXPECT_NE(runWithSeed(3), runWithSeed(4));
+}
+
+TEST(Engine, ThreadCountDoesNotChangeResults)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  std::vector<float> reference;
+  for (unsigned threads : { 1u, 2u, 3u, 8u })
+  {
+    bp::Parameters p = centralParameters(257, 0.15f);
+    p.lifetimeMin = 0.1f;
+    p.lifetimeMax = 0.4f;
+    p.emitterMin = { -1, -1, -1 };
+    p.emitterMax = { 1, 1, 1 };
+    p.restoration = bp::Restoration::GaussSeidel;
+    bp::Engine engine = configured(bp::BuiltinShape::Fish, p);
+    run(engine, field, 40, 0.02, bp::threadRunner(threads));
+    engine.updateNormals(bp::threadRunner(threads));
+    std::vector<float> state = engine.positions();
+    state.insert(state.end(), engine.normals().begin(), engine.normals().end());
+    state.insert(state.end(), engine.forces().begin(), engine.forces().end());
+    if (reference.empty())
+      reference = state;
+    else
+      EXPECT_EQ(state, reference) << threads << " threads";
+  }
+}
+
+TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
+{
+  // No flow: only restoration moves particles. Displace every particle and
+  // let K iterations pull the springs back to their rest lengths.
+  const bp::GridGeometry g = bptest::grid(5);
+  bp::FieldSlice s;
+  s.velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
+  const bp::VectorField still(g, s);
+  for (int m = 0; m < 3; ++m)
+  {
+    for (auto shape : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Fish,
+           bp::BuiltinShape::Paddlewheel })
+    {
+      SCOPED_TRACE(std::string(bp::builtinShapeName(shape)) + " method " + std::to_string(m));
+      bp::Parameters p = centralParameters(10, 0.3f);
+      p.restoration = bp::Restoration(m);
+      p.iterations = 300;
+      bp::Engine engine = configured(shape, p);
+      std::vector<float>& x = engine.mutablePositions();
+      for (std::size_t i = 0; i < x.size(); ++i)
+        x[i] += 0.01f * bp::uniformDraw(99, std::uint32_t(i), 0, 0) - 0.005f;
+      const double before = bptest::worstSpringStrain(engine);
+      engine.step(still, 0.0, 0.01, bp::serialRunner());
+      const double after = bptest::worstSpringStrain(engine);
+      // Flat shapes are only second-order rigid out of their plane, so the
+      // iterations converge slowly there; a tenfold reduction is the bar.
+      EXPECT_GT(before, 0.05);
+      EXPECT_LT(after, 0.1 * before) << "strain " << before << " -> " << after;
+      float maxForce = 0.0f;
+      for (float f : engine.forces())
+        maxForce = std::max(maxForce, f);
+      EXPECT_GT(maxForce, 0.0f);
+    }
+  }
+}
+
+TEST(Engine, PinnedParticlesStayPut)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip8);
+  shape.pinned.assign(shape.particleCount(), 0);
+  shape.pinned[0] = 1;
+  bp::Parameters p = centralParameters(5, 0.3f);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(shape, p), "");
+  engine.initialize(bp::serialRunner());
+  const std::vector<float> start = engine.positions();
+  run(engine, field, 100, 0.01);
+  const std::size_t n = shape.particleCount();
+  for (std::size_t e = 0; e < engine.elementCount(); ++e)
+  {
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(engine.positions()[3 * e * n + k], start[3 * e * n + k]);
+    EXPECT_NE(engine.positions()[3 * e * n + 3], start[3 * e * n + 3]); // the others swing
+  }
+}
+
+TEST(Engine, ConfigureRejectsBadParameters)
+{
+  const bp::ElementTemplate strip = bp::builtinTemplate(bp::BuiltinShape::Strip16);
+  bp::Engine engine;
+  bp::Parameters p = centralParameters(0, 0.1f);
+  EXPECT_NE(engine.configure(strip, p).find("at least 1"), std::string::npos);
+  p.numberOfElements = bp::MaxParticles; // times 16 particles
+  EXPECT_NE(engine.configure(strip, p).find("exceeds the limit"), std::string::npos);
+  p.numberOfElements = 10;
+  p.elementSize = -1.0f;
+  EXPECT_NE(engine.configure(strip, p).find("ElementSize"), std::string::npos);
+  p.elementSize = 0.1f;
+  p.lifetimeMin = 0.0f;
+  EXPECT_NE(engine.configure(strip, p).find("LifetimeRange"), std::string::npos);
+  p.lifetimeMin = 1.0f;
+  p.emitterMax[1] = -5.0f;
+  EXPECT_NE(engine.configure(strip, p).find("emitter"), std::string::npos);
+}
+
+TEST(StepSchedule, ForwardInPiecesEqualsAFreshRun)
+{
+  const bp::GridGeometry g = bptest::grid(17);
+  bp::FieldSlice a, b;
+  a.time = 0.0;
+  a.velocity = std::make_shared<std::vector<float>>(
+    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 0.0));
+  b.time = 0.5;
+  b.velocity = std::make_shared<std::vector<float>>(
+    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 0.5));
+  const bp::VectorField field(g, a, b);
+  const bp::StepSchedule schedule(0.0, 0.03, { 0.0, 0.5 });
+  bp::Parameters p = centralParameters(100, 0.1f);
+  p.lifetimeMin = 0.05f;
+  p.lifetimeMax = 0.2f;
+  bp::Engine fresh = configured(bp::BuiltinShape::Square, p);
+  bp::Engine pieces = fresh;
+  const double t = bp::advance(fresh, field, schedule, 0.0, 0.5, bp::serialRunner());
+  EXPECT_NEAR(t, 0.5, 1e-12);
+  double u = 0.0;
+  for (double target : { 0.07, 0.1, 0.2, 0.33, 0.5 })
+    u = bp::advance(pieces, field, schedule, u, target, bp::serialRunner());
+  EXPECT_EQ(u, t);
+  EXPECT_EQ(fresh.positions(), pieces.positions());
+  // Boundaries: grid points and the data time 0.5, never a sliver step.
+  EXPECT_NEAR(schedule.next(0.0), 0.03, 1e-15);
+  EXPECT_NEAR(schedule.next(0.48), 0.5, 1e-15);
+  EXPECT_NEAR(schedule.next(0.5), 0.51, 1e-12);
+  EXPECT_NEAR(schedule.next(0.03 - 1e-12), 0.06, 1e-12);
+}
