@@ -1,0 +1,756 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkBoundParticleTracer.h"
+
+#include "AnalyticFlows.h"
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "VectorField.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
+#include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+/// Debian's VTK starts on the Sequential SMP backend; the engine is parallel
+/// over elements, so take the threaded one unless the user chose a backend.
+void preferThreadedBackend()
+{
+  static std::once_flag once;
+  std::call_once(once, [] {
+    if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
+    {
+      vtkSMPTools::SetBackend("STDThread");
+    }
+  });
+}
+
+bp::RangeRunner smpRunner()
+{
+  return [](std::size_t count, const bp::RangeFunction& f) {
+    vtkSMPTools::For(vtkIdType(0), vtkIdType(count),
+      [&f](vtkIdType begin, vtkIdType end) { f(std::size_t(begin), std::size_t(end)); });
+  };
+}
+
+struct CopyToFloat
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, std::vector<float>& out) const
+  {
+    const auto values = vtk::DataArrayValueRange(array);
+    out.resize(values.size());
+    std::transform(values.begin(), values.end(), out.begin(),
+      [](typename decltype(values)::ValueType v) { return static_cast<float>(v); });
+  }
+};
+} // namespace
+
+struct vtkBoundParticleTracer::vtkInternals
+{
+  bp::Engine Engine;
+  std::unique_ptr<bp::StepSchedule> Schedule;
+  bool Valid = false;        // Engine holds a state at time Committed
+  bool NeedsReset = true;    // the filter or its input changed since the state was made
+  bool ResetPending = false; // this update replays from the start
+  double Committed = 0.0;
+  double Target = 0.0;
+  double StartTime = 0.0;
+
+  bool Unsteady = false;
+  std::vector<double> InputTimes; // unsteady input's time steps
+  std::vector<double> OutputTimes;
+  bp::GridGeometry Grid;
+  std::map<int, bp::FieldSlice> Slices; // by input time index, at most two
+  int RequestIndex = 0;
+  bool Continuing = false;
+
+  double ResolvedDt = 0.0;
+  double ResolvedElementSize = 0.0;
+  vtkIdType StepsInLastUpdate = 0;
+  bool LastUpdateReplayed = false;
+
+  // The output's cells depend only on the element count and the shape.
+  vtkSmartPointer<vtkCellArray> Cells;
+  int CellsKind = -1; // 0 vertices, 1 lines, 2 triangles
+  std::size_t CellsElements = 0;
+  int CellsShape = -1;
+
+  double timeEpsilon() const
+  {
+    const double span =
+      this->InputTimes.empty() ? 1.0 : this->InputTimes.back() - this->InputTimes.front();
+    return 1e-9 * std::max(1.0, std::abs(span));
+  }
+
+  /// Input time indices the field at time t is made of.
+  std::vector<int> slicesFor(double t) const
+  {
+    if (!this->Unsteady || this->InputTimes.size() < 2)
+    {
+      return { 0 };
+    }
+    const auto it =
+      std::upper_bound(this->InputTimes.begin(), this->InputTimes.end(), t + this->timeEpsilon());
+    int k = int(it - this->InputTimes.begin()) - 1;
+    k = std::max(0, std::min(k, int(this->InputTimes.size()) - 2));
+    return { k, k + 1 };
+  }
+
+  int firstMissing(const std::vector<int>& needed) const
+  {
+    for (int i : needed)
+    {
+      if (!this->Slices.count(i))
+      {
+        return i;
+      }
+    }
+    return -1;
+  }
+
+  bp::VectorField field(const std::vector<int>& ids) const
+  {
+    if (ids.size() == 1)
+    {
+      return bp::VectorField(this->Grid, this->Slices.at(ids[0]));
+    }
+    return bp::VectorField(this->Grid, this->Slices.at(ids[0]), this->Slices.at(ids[1]));
+  }
+
+  void clear()
+  {
+    this->Valid = false;
+    this->Slices.clear();
+    this->Continuing = false;
+  }
+};
+
+vtkStandardNewMacro(vtkBoundParticleTracer);
+
+vtkBoundParticleTracer::vtkBoundParticleTracer()
+  : Internals(new vtkInternals)
+{
+  preferThreadedBackend();
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+  // By default the active point vectors (or, failing that, the first
+  // 3-component point array).
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+}
+
+vtkBoundParticleTracer::~vtkBoundParticleTracer() = default;
+
+double vtkBoundParticleTracer::GetSimulationTime() const
+{
+  return this->Internals->Target;
+}
+vtkIdType vtkBoundParticleTracer::GetStepsInLastUpdate() const
+{
+  return this->Internals->StepsInLastUpdate;
+}
+bool vtkBoundParticleTracer::GetLastUpdateReplayed() const
+{
+  return this->Internals->LastUpdateReplayed;
+}
+double vtkBoundParticleTracer::GetResolvedTimeStep() const
+{
+  return this->Internals->ResolvedDt;
+}
+double vtkBoundParticleTracer::GetResolvedElementSize() const
+{
+  return this->Internals->ResolvedElementSize;
+}
+
+int vtkBoundParticleTracer::FillInputPortInformation(int, vtkInformation* info)
+{
+  // Any dataset is accepted here so that a wrong type gets an error that says
+  // what to do, rather than the pipeline's generic type mismatch.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
+int vtkBoundParticleTracer::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInternals& I = *this->Internals;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+
+  // The pipeline asks for information again only when this filter or
+  // something upstream changed: the cached state is stale.
+  I.NeedsReset = true;
+  I.clear();
+
+  I.InputTimes.clear();
+  if (inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const int count = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    I.InputTimes.assign(steps, steps + count);
+  }
+  I.Unsteady = !I.InputTimes.empty();
+  I.OutputTimes.clear();
+  if (I.Unsteady)
+  {
+    I.OutputTimes = I.InputTimes;
+  }
+  else
+  {
+    if (!(this->Duration > 0.0) || this->NumberOfTimeSteps < 2)
+    {
+      vtkErrorMacro("For a steady input, Duration must be positive and NumberOfTimeSteps at "
+                    "least 2 (they are "
+        << this->Duration << " and " << this->NumberOfTimeSteps << ").");
+      outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+      return 1;
+    }
+    for (int k = 0; k < this->NumberOfTimeSteps; ++k)
+    {
+      I.OutputTimes.push_back(this->Duration * k / (this->NumberOfTimeSteps - 1));
+    }
+  }
+  I.StartTime = I.OutputTimes.front();
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), I.OutputTimes.data(),
+    int(I.OutputTimes.size()));
+  const double range[2] = { I.OutputTimes.front(), I.OutputTimes.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkBoundParticleTracer::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInternals& I = *this->Internals;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+
+  if (!I.Continuing)
+  {
+    // A new update: plan where it starts.
+    double target = I.StartTime;
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      target = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    }
+    target = std::max(target, I.StartTime);
+    if (I.Unsteady)
+    {
+      target = std::min(target, I.InputTimes.back());
+    }
+    I.Target = target;
+    I.ResetPending = I.NeedsReset || !I.Valid || target < I.Committed - I.timeEpsilon();
+    I.StepsInLastUpdate = 0;
+    I.LastUpdateReplayed = I.ResetPending;
+    if (I.ResetPending)
+    {
+      I.Valid = false;
+      // A steady input's single slice is read again at every reset; an
+      // unsteady input's slices stay valid (the cache was cleared if the
+      // input changed).
+      if (!I.Unsteady)
+      {
+        I.Slices.clear();
+      }
+    }
+    const double from = I.ResetPending ? I.StartTime : I.Committed;
+    const int missing = I.firstMissing(I.slicesFor(from));
+    I.RequestIndex = missing >= 0 ? missing : I.slicesFor(from).back();
+  }
+
+  if (I.Unsteady)
+  {
+    inInfo->Set(
+      vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), I.InputTimes[I.RequestIndex]);
+  }
+  else
+  {
+    inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  }
+  return 1;
+}
+
+namespace
+{
+/// Reads `vectors` (the selected array, or null) of `input` into a slice;
+/// empty on success, otherwise what the user should fix.
+std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
+  bp::GridGeometry& grid, bp::FieldSlice& slice)
+{
+  std::ostringstream err;
+  vtkImageData* image = vtkImageData::SafeDownCast(input);
+  if (!image)
+  {
+    err << "The input is a " << (input ? input->GetClassName() : "null data object")
+        << "; Bound Particle Tracer needs a vtkImageData (a uniform grid). Resample the data "
+           "onto an image first, e.g. with the Resample To Image filter.";
+    return err.str();
+  }
+  if (image->GetNumberOfPoints() == 0)
+  {
+    return "The input image is empty: it has no points.";
+  }
+  if (!vectors && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    // No array chosen and no active vectors: take the first 3-component point array.
+    vtkPointData* pd = image->GetPointData();
+    for (int i = 0; i < pd->GetNumberOfArrays() && !vectors; ++i)
+    {
+      vtkDataArray* candidate = pd->GetArray(i);
+      if (candidate && candidate->GetNumberOfComponents() == 3)
+      {
+        vectors = candidate;
+      }
+    }
+  }
+  if (!vectors)
+  {
+    return "The input has no point vector array. Select a 3-component point array with the "
+           "Vectors property (pvpython: Vectors = ['POINTS', 'name']).";
+  }
+  const char* name = vectors->GetName() ? vectors->GetName() : "(unnamed)";
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    err << "The array '" << name
+        << "' is not point data; choose a point array (or apply Cell Data to Point Data).";
+    return err.str();
+  }
+  if (vectors->GetNumberOfComponents() != 3)
+  {
+    err << "The array '" << name << "' has " << vectors->GetNumberOfComponents()
+        << " component(s); Bound Particle Tracer needs a 3-component vector array.";
+    return err.str();
+  }
+  if (vectors->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    err << "The array '" << name << "' has " << vectors->GetNumberOfTuples() << " tuples for "
+        << image->GetNumberOfPoints() << " points.";
+    return err.str();
+  }
+  bp::GridGeometry g;
+  image->GetDimensions(g.dims.data());
+  image->GetOrigin(g.origin.data());
+  image->GetSpacing(g.spacing.data());
+  auto values = std::make_shared<std::vector<float>>();
+  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
+  if (!Dispatch::Execute(vectors, CopyToFloat{}, *values))
+  {
+    CopyToFloat{}(vectors, *values);
+  }
+  slice.velocity = values;
+  grid = g;
+  return std::string();
+}
+
+vtkSmartPointer<vtkCellArray> buildCells(const bp::ElementTemplate& shape, std::size_t elements,
+  int& kind)
+{
+  const std::size_t n = shape.particleCount();
+  int cellSize;
+  std::vector<std::uint32_t> local;
+  if (!shape.triangles.empty())
+  {
+    kind = 2;
+    cellSize = 3;
+    for (const auto& t : shape.triangles)
+      local.insert(local.end(), t.begin(), t.end());
+  }
+  else if (!shape.springs.empty())
+  {
+    kind = 1;
+    cellSize = 2;
+    for (const auto& s : shape.springs)
+    {
+      local.push_back(s.a);
+      local.push_back(s.b);
+    }
+  }
+  else
+  {
+    kind = 0;
+    cellSize = 1;
+    for (std::size_t i = 0; i < n; ++i)
+      local.push_back(std::uint32_t(i));
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(vtkIdType(local.size() * elements));
+  vtkIdType* out = connectivity->GetPointer(0);
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(elements), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType e = begin; e < end; ++e)
+    {
+      const vtkIdType offset = e * vtkIdType(n);
+      vtkIdType* o = out + e * vtkIdType(local.size());
+      for (std::size_t k = 0; k < local.size(); ++k)
+        o[k] = offset + local[k];
+    }
+  });
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(cellSize, connectivity);
+  return cells;
+}
+
+vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+} // namespace
+
+int vtkBoundParticleTracer::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInternals& I = *this->Internals;
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  output->Initialize();
+
+  auto fail = [&](const std::string& message) {
+    vtkErrorMacro(<< message);
+    I.clear();
+    I.NeedsReset = true;
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    output->Initialize();
+    return 1;
+  };
+  if (I.OutputTimes.empty())
+  {
+    return fail("The filter has no time range; see the previous error.");
+  }
+
+  // Take the time step this pass asked for.
+  if (!I.Slices.count(I.RequestIndex))
+  {
+    bp::GridGeometry grid;
+    bp::FieldSlice slice;
+    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkDataArray* vectors =
+      input ? this->GetInputArrayToProcess(0, inputVector, association) : nullptr;
+    const std::string error = readSlice(input, vectors, association, grid, slice);
+    if (!error.empty())
+    {
+      return fail(error);
+    }
+    slice.time = I.Unsteady ? I.InputTimes[I.RequestIndex] : 0.0;
+    if (!I.Slices.empty() && grid.dims != I.Grid.dims)
+    {
+      return fail("The input's time steps do not share one grid; every time step must have "
+                  "the same dimensions.");
+    }
+    I.Grid = grid;
+    const std::string gridError = grid.validate();
+    if (!gridError.empty())
+    {
+      return fail("Unusable input: " + gridError + ".");
+    }
+    const std::string fieldError = bp::VectorField(grid, slice).validate();
+    if (!fieldError.empty())
+    {
+      return fail("Unusable input: " + fieldError + ".");
+    }
+    I.Slices[I.RequestIndex] = slice;
+  }
+
+  auto continueWith = [&](int index) {
+    I.RequestIndex = index;
+    I.Continuing = true;
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    return 1;
+  };
+
+  if (I.ResetPending)
+  {
+    const std::vector<int> ids = I.slicesFor(I.StartTime);
+    const int missing = I.firstMissing(ids);
+    if (missing >= 0)
+    {
+      return continueWith(missing);
+    }
+    const bp::VectorField field = I.field(ids);
+    const bp::GridGeometry& grid = I.Grid;
+    const auto bounds = grid.bounds();
+    const double cell = grid.cellLength();
+
+    if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
+    {
+      return fail("StepSize must be positive (it is " + std::to_string(this->StepSize) + ").");
+    }
+    double speed = field.maxSpeed();
+    if (!(speed > 0.0))
+    {
+      vtkWarningMacro("The vector field is zero everywhere at the start time; elements will "
+                      "not move until it is not.");
+      speed = 1.0;
+    }
+    I.ResolvedDt =
+      this->StepSizeUnit == CELL_LENGTH ? this->StepSize * cell / speed : this->StepSize;
+    if (this->ElementSize < 0.0 || !std::isfinite(this->ElementSize))
+    {
+      return fail("ElementSize must be positive, or 0 for automatic.");
+    }
+    I.ResolvedElementSize =
+      this->ElementSize > 0.0 ? this->ElementSize : std::max(2.0 * cell, grid.diagonal() / 40.0);
+
+    if (this->NumberOfElements < 1)
+    {
+      return fail("NumberOfElements must be at least 1 (it is " +
+        std::to_string(this->NumberOfElements) + ").");
+    }
+    bp::Parameters p;
+    p.numberOfElements = std::size_t(this->NumberOfElements);
+    p.elementSize = float(I.ResolvedElementSize);
+    for (int a = 0; a < 3; ++a)
+    {
+      const bool whole = this->EmitterSize[a] < 0.0;
+      const double lo = whole ? bounds[2 * a] : this->EmitterCenter[a] - 0.5 * this->EmitterSize[a];
+      const double hi =
+        whole ? bounds[2 * a + 1] : this->EmitterCenter[a] + 0.5 * this->EmitterSize[a];
+      p.emitterMin[a] = float(lo);
+      p.emitterMax[a] = float(hi);
+    }
+    p.randomOrientation = this->RandomOrientation != 0;
+    p.frame = bp::rotationFromDegrees(
+      this->ElementRotation[0], this->ElementRotation[1], this->ElementRotation[2]);
+    double lifetime[2] = { this->LifetimeRange[0], this->LifetimeRange[1] };
+    if (lifetime[0] == 0.0 && lifetime[1] == 0.0)
+    {
+      const double span = I.OutputTimes.back() - I.OutputTimes.front();
+      const double scale = span > 0.0 ? span : 100.0 * I.ResolvedDt;
+      lifetime[0] = 0.5 * scale;
+      lifetime[1] = scale;
+    }
+    p.lifetimeMin = float(lifetime[0]);
+    p.lifetimeMax = float(lifetime[1]);
+    p.integrator = bp::Integrator(this->Integrator);
+    p.restoration = bp::Restoration(this->Restoration);
+    p.iterations = this->RestorationIterations;
+    p.relaxation = float(this->RelaxationFactor);
+    p.resetWhen = bp::ResetWhen(this->ResetWhen);
+    p.seed = std::uint32_t(this->Seed);
+
+    const std::string error =
+      I.Engine.configure(bp::builtinTemplate(bp::BuiltinShape(this->ElementShape)), p);
+    if (!error.empty())
+    {
+      return fail(error + ".");
+    }
+    I.Engine.initialize(smpRunner());
+    I.Schedule.reset(new bp::StepSchedule(
+      I.StartTime, I.ResolvedDt, I.Unsteady ? I.InputTimes : std::vector<double>()));
+    I.Committed = I.StartTime;
+    I.Valid = true;
+    I.NeedsReset = false;
+    I.ResetPending = false;
+  }
+
+  // Step forward one data interval at a time.
+  const double span = std::max(I.Target - I.Committed, 1e-300);
+  const double progressStart = I.Committed;
+  bool aborted = false;
+  auto keepGoing = [&](double t) {
+    ++I.StepsInLastUpdate;
+    this->UpdateProgress((t - progressStart) / span);
+    aborted = this->CheckAbort();
+    return !aborted;
+  };
+  const bp::RangeRunner run = smpRunner();
+  while (true)
+  {
+    const std::vector<int> ids = I.slicesFor(I.Committed);
+    const int missing = I.firstMissing(ids);
+    if (missing >= 0)
+    {
+      // Drop what no later step needs before asking for the next time step.
+      for (auto it = I.Slices.begin(); it != I.Slices.end();)
+        it = it->first < ids.front() ? I.Slices.erase(it) : std::next(it);
+      return continueWith(missing);
+    }
+    const bp::VectorField field = I.field(ids);
+    const double intervalEnd = ids.size() == 2 ? I.InputTimes[ids[1]] : I.Target;
+    const double limit = std::min(I.Target, intervalEnd);
+    I.Committed =
+      bp::advance(I.Engine, field, *I.Schedule, I.Committed, limit, run, keepGoing);
+    if (aborted)
+    {
+      I.clear();
+      I.NeedsReset = true;
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+      return 1;
+    }
+    if (limit >= I.Target || I.Committed < intervalEnd - I.Schedule->epsilon())
+    {
+      break;
+    }
+  }
+  I.Continuing = false;
+  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+
+  // The output at Target: the committed state, finished with a shorter step
+  // on a copy when Target falls between two step boundaries, so that the
+  // cache stays on the boundaries.
+  const std::vector<int> ids = I.slicesFor(I.Target);
+  const bp::VectorField field = I.field(ids);
+  bp::Engine* shown = &I.Engine;
+  bp::Engine partial;
+  if (I.Target - I.Committed > I.Schedule->epsilon())
+  {
+    partial = I.Engine;
+    partial.step(field, I.Committed, I.Target - I.Committed, run);
+    ++I.StepsInLastUpdate;
+    shown = &partial;
+  }
+  shown->updateNormals(run);
+  this->UpdateProgress(1.0);
+
+  // Assemble the polydata.
+  const bp::Engine& engine = *shown;
+  const std::size_t E = engine.elementCount(), n = engine.particlesPerElement();
+  const vtkIdType N = vtkIdType(engine.particleCount());
+
+  vtkNew<vtkPoints> points;
+  auto coords = floatArray("Points", 3, N);
+  std::memcpy(coords->GetPointer(0), engine.positions().data(), sizeof(float) * 3 * N);
+  points->SetData(coords);
+  output->SetPoints(points);
+
+  if (!I.Cells || I.CellsElements != E || I.CellsShape != this->ElementShape)
+  {
+    I.Cells = buildCells(engine.shape(), E, I.CellsKind);
+    I.CellsElements = E;
+    I.CellsShape = this->ElementShape;
+  }
+  switch (I.CellsKind)
+  {
+    case 0:
+      output->SetVerts(I.Cells);
+      break;
+    case 1:
+      output->SetLines(I.Cells);
+      break;
+    default:
+      output->SetPolys(I.Cells);
+  }
+
+  vtkPointData* pd = output->GetPointData();
+  auto normals = floatArray("Normals", 3, N);
+  std::memcpy(normals->GetPointer(0), engine.normals().data(), sizeof(float) * 3 * N);
+  auto velocity = floatArray("Velocity", 3, N);
+  auto vorticity = floatArray("Vorticity", 1, N);
+  bp::sampleAtPositions(field, I.Target, engine.positions().data(), std::size_t(N),
+    velocity->GetPointer(0), vorticity->GetPointer(0), run);
+  auto speed = floatArray("Speed", 1, N);
+  auto force = floatArray("Force", 1, N);
+  std::memcpy(force->GetPointer(0), engine.forces().data(), sizeof(float) * N);
+  auto lifetime = floatArray("Lifetime", 1, N);
+  auto layer = floatArray("Layer", 1, N);
+  auto radius = floatArray("Radius", 1, N);
+  vtkNew<vtkIdTypeArray> elementId;
+  elementId->SetName("ElementId");
+  elementId->SetNumberOfValues(N);
+  vtkNew<vtkIntArray> particleIndex;
+  particleIndex->SetName("ParticleIndex");
+  particleIndex->SetNumberOfValues(N);
+
+  const auto bounds = I.Grid.bounds();
+  const int axis = this->ColoringAxis;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double cu = 0.5 * (bounds[2 * u] + bounds[2 * u + 1]);
+  const double cv = 0.5 * (bounds[2 * v] + bounds[2 * v + 1]);
+  const float* vel = velocity->GetPointer(0);
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(E), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType e = begin; e < end; ++e)
+    {
+      const float* c = engine.initialCenters().data() + 3 * e;
+      const float lay = c[axis];
+      const float rad = float(std::hypot(c[u] - cu, c[v] - cv));
+      const float life = engine.lifetimes()[e];
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        const vtkIdType id = e * vtkIdType(n) + vtkIdType(i);
+        const float* w = vel + 3 * id;
+        speed->SetValue(id, std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        lifetime->SetValue(id, life);
+        layer->SetValue(id, lay);
+        radius->SetValue(id, rad);
+        elementId->SetValue(id, e);
+        particleIndex->SetValue(id, int(i));
+      }
+    }
+  });
+  pd->SetNormals(normals);
+  pd->SetVectors(velocity);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
+         speed, force, lifetime, elementId, particleIndex, vorticity, layer, radius })
+  {
+    pd->AddArray(a);
+  }
+
+  // What the automatic settings came to, for the Information panel and scripts.
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    output->GetFieldData()->AddArray(a);
+  };
+  addValue("TimeStep", I.ResolvedDt);
+  addValue("ElementSize", I.ResolvedElementSize);
+  addValue("SimulationTime", I.Target);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), I.Target);
+  return 1;
+}
+
+void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ElementShape: "
+     << bp::builtinShapeName(bp::BuiltinShape(this->ElementShape)) << "\n";
+  os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
+  os << indent << "ElementSize: " << this->ElementSize << "\n";
+  os << indent << "EmitterCenter: " << this->EmitterCenter[0] << " " << this->EmitterCenter[1]
+     << " " << this->EmitterCenter[2] << "\n";
+  os << indent << "EmitterSize: " << this->EmitterSize[0] << " " << this->EmitterSize[1] << " "
+     << this->EmitterSize[2] << "\n";
+  os << indent << "RandomOrientation: " << this->RandomOrientation << "\n";
+  os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
+     << "\n";
+  os << indent << "StepSize: " << this->StepSize << " ("
+     << (this->StepSizeUnit == CELL_LENGTH ? "cell lengths" : "time") << ")\n";
+  os << indent << "Integrator: " << this->Integrator << "\n";
+  os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
+     << "\n";
+  os << indent << "ResetWhen: " << this->ResetWhen << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Duration: " << this->Duration << ", NumberOfTimeSteps: "
+     << this->NumberOfTimeSteps << "\n";
+}

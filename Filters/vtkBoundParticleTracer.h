@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkBoundParticleTracer
+ * @brief Traces bound particles (small shapes of particles tied by springs)
+ * through a steady or unsteady vector field on a uniform grid.
+ *
+ * Each of NumberOfElements elements is an instance of ElementShape, scaled to
+ * ElementSize, placed in the emitter box, advected with the flow and restored
+ * to its shape every step (DESIGN.md §4; the maths lives in the VTK-free core,
+ * Core/Engine.h). The output is a vtkPolyData of all particles: the shape's
+ * triangles per element, or vertices for one-particle elements, with the point
+ * arrays Normals, Velocity, Speed, Force, Lifetime, ElementId, ParticleIndex,
+ * Vorticity, Layer and Radius.
+ *
+ * Pipeline time drives the simulation. A request for a time at or after the
+ * cached simulation time steps forward from the cache; an earlier time, or any
+ * change to the filter or its input, resets and replays from the start. Steps
+ * end on the grid start + k*dt and on the data's time steps, so a replay and an
+ * incremental run pass through the same states bit for bit. An unsteady input
+ * is requested one time step per pass and sampled linearly between the two
+ * steps that bracket each moment; at most two are held. A steady input gets
+ * NumberOfTimeSteps time values over [0, Duration] so that animation plays it.
+ */
+#ifndef vtkBoundParticleTracer_h
+#define vtkBoundParticleTracer_h
+
+#include "BoundParticlesFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class BOUNDPARTICLESFILTERS_EXPORT vtkBoundParticleTracer : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoundParticleTracer* New();
+  vtkTypeMacro(vtkBoundParticleTracer, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Shapes
+  {
+    POINT = 0,
+    SQUARE,
+    STRIP4,
+    STRIP8,
+    STRIP16,
+    CROSS,
+    PADDLEWHEEL,
+    TETRAHEDRON,
+    FISH
+  };
+  enum Integrators
+  {
+    EULER = 0,
+    RUNGE_KUTTA_2,
+    RUNGE_KUTTA_4
+  };
+  enum RestorationMethods
+  {
+    AVERAGED_JACOBI = 0,
+    JACOBI,
+    GAUSS_SEIDEL
+  };
+  enum ResetConditions
+  {
+    CENTER_LEAVES = 0,
+    ANY_PARTICLE_LEAVES
+  };
+  enum StepSizeUnits
+  {
+    CELL_LENGTH = 0,
+    TIME
+  };
+
+  ///@{
+  /// The built-in element shape (thesis Fig. 3.4). Default STRIP8.
+  vtkSetClampMacro(ElementShape, int, POINT, FISH);
+  vtkGetMacro(ElementShape, int);
+  ///@}
+
+  ///@{
+  /// Number of elements. At least 1; elements times particles at most 2^26.
+  vtkSetMacro(NumberOfElements, vtkIdType);
+  vtkGetMacro(NumberOfElements, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Diameter of an element in world units; 0 (default) picks the larger of two
+  /// cell lengths and 1/40 of the field's diagonal.
+  vtkSetMacro(ElementSize, double);
+  vtkGetMacro(ElementSize, double);
+  ///@}
+
+  ///@{
+  /// The emitter box where elements are placed: centre and full size. A
+  /// negative size on an axis (the default) spans the field's bounds there.
+  vtkSetVector3Macro(EmitterCenter, double);
+  vtkGetVector3Macro(EmitterCenter, double);
+  vtkSetVector3Macro(EmitterSize, double);
+  vtkGetVector3Macro(EmitterSize, double);
+  ///@}
+
+  ///@{
+  /// Uniform random orientation per element (default on); when off every
+  /// element is placed turned by ElementRotation (degrees about X, then Y, then Z).
+  vtkSetMacro(RandomOrientation, vtkTypeBool);
+  vtkGetMacro(RandomOrientation, vtkTypeBool);
+  vtkBooleanMacro(RandomOrientation, vtkTypeBool);
+  vtkSetVector3Macro(ElementRotation, double);
+  vtkGetVector3Macro(ElementRotation, double);
+  ///@}
+
+  ///@{
+  /// Lifetimes are drawn uniformly from [min, max] (time units). (0, 0), the
+  /// default, picks half to all of the animation's time range.
+  vtkSetVector2Macro(LifetimeRange, double);
+  vtkGetVector2Macro(LifetimeRange, double);
+  ///@}
+
+  ///@{
+  /// Largest simulation step. In CELL_LENGTH units (default; StepSize 0.5) a
+  /// step moves the fastest particle of the field that many cells; in TIME
+  /// units it is the step in the data's time units. Must be positive.
+  vtkSetMacro(StepSize, double);
+  vtkGetMacro(StepSize, double);
+  vtkSetClampMacro(StepSizeUnit, int, CELL_LENGTH, TIME);
+  vtkGetMacro(StepSizeUnit, int);
+  ///@}
+
+  ///@{
+  /// Advection integrator: EULER (thesis eq. 2.2, default), RUNGE_KUTTA_2, RUNGE_KUTTA_4.
+  vtkSetClampMacro(Integrator, int, EULER, RUNGE_KUTTA_4);
+  vtkGetMacro(Integrator, int);
+  ///@}
+
+  ///@{
+  /// Shape restoration: AVERAGED_JACOBI (thesis §3.5, default), JACOBI (sum of
+  /// corrections times RelaxationFactor) or GAUSS_SEIDEL; RestorationIterations
+  /// iterations per step (default 1).
+  vtkSetClampMacro(Restoration, int, AVERAGED_JACOBI, GAUSS_SEIDEL);
+  vtkGetMacro(Restoration, int);
+  vtkSetMacro(RestorationIterations, int);
+  vtkGetMacro(RestorationIterations, int);
+  vtkSetMacro(RelaxationFactor, double);
+  vtkGetMacro(RelaxationFactor, double);
+  ///@}
+
+  ///@{
+  /// When an element is put back into the emitter besides running out of
+  /// lifetime: its centre leaves the field (thesis) or any particle does.
+  vtkSetClampMacro(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES);
+  vtkGetMacro(ResetWhen, int);
+  ///@}
+
+  ///@{
+  /// Seed of the counter-based random numbers: the same seed, the same trace.
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  ///@}
+
+  ///@{
+  /// For a steady input: the time range [0, Duration] and the number of time
+  /// values the filter offers to the animation.
+  vtkSetMacro(Duration, double);
+  vtkGetMacro(Duration, double);
+  vtkSetMacro(NumberOfTimeSteps, int);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
+  /// The axis (0, 1, 2) for the Layer colouring (an element's initial centre
+  /// along it) and the Radius colouring (distance of that centre from the axis
+  /// line through the field's centre). Default 2 (Z).
+  vtkSetClampMacro(ColoringAxis, int, 0, 2);
+  vtkGetMacro(ColoringAxis, int);
+  ///@}
+
+  ///@{
+  /// What the last update did: the simulation time of the output, the number
+  /// of steps it took, whether it replayed from the start, and the resolved
+  /// step (time units) and element size (world units).
+  double GetSimulationTime() const;
+  vtkIdType GetStepsInLastUpdate() const;
+  bool GetLastUpdateReplayed() const;
+  double GetResolvedTimeStep() const;
+  double GetResolvedElementSize() const;
+  ///@}
+
+protected:
+  vtkBoundParticleTracer();
+  ~vtkBoundParticleTracer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int ElementShape = STRIP8;
+  vtkIdType NumberOfElements = 1000;
+  double ElementSize = 0.0;
+  double EmitterCenter[3] = { 0.0, 0.0, 0.0 };
+  double EmitterSize[3] = { -1.0, -1.0, -1.0 };
+  vtkTypeBool RandomOrientation = 1;
+  double ElementRotation[3] = { 0.0, 0.0, 0.0 };
+  double LifetimeRange[2] = { 0.0, 0.0 };
+  double StepSize = 0.5;
+  int StepSizeUnit = CELL_LENGTH;
+  int Integrator = EULER;
+  int Restoration = AVERAGED_JACOBI;
+  int RestorationIterations = 1;
+  double RelaxationFactor = 0.2;
+  int ResetWhen = CENTER_LEAVES;
+  int Seed = 0;
+  double Duration = 10.0;
+  int NumberOfTimeSteps = 101;
+  int ColoringAxis = 2;
+
+private:
+  vtkBoundParticleTracer(const vtkBoundParticleTracer&) = delete;
+  void operator=(const vtkBoundParticleTracer&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,326 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkAnalyticFlowSource.h"
+#include "vtkBoundParticleTracer.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTrivialProducer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// Collects the filter's error messages instead of printing them.
+struct ErrorLog
+{
+  std::vector<std::string> messages;
+  vtkNew<vtkCallbackCommand> callback;
+  explicit ErrorLog(vtkObject* watched)
+  {
+    this->callback->SetClientData(this);
+    this->callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+      static_cast<ErrorLog*>(self)->messages.emplace_back(static_cast<const char*>(text));
+    });
+    watched->AddObserver(vtkCommand::ErrorEvent, this->callback);
+  }
+  bool mentions(const std::string& part) const
+  {
+    for (const auto& m : this->messages)
+      if (m.find(part) != std::string::npos)
+        return true;
+    return false;
+  }
+};
+
+std::vector<float> pointsOf(vtkPolyData* pd)
+{
+  vtkFloatArray* a = vtkFloatArray::SafeDownCast(pd->GetPoints()->GetData());
+  return std::vector<float>(a->GetPointer(0), a->GetPointer(0) + 3 * pd->GetNumberOfPoints());
+}
+
+vtkSmartPointer<vtkAnalyticFlowSource> flow(int which, int resolution = 24)
+{
+  auto source = vtkSmartPointer<vtkAnalyticFlowSource>::New();
+  source->SetFlow(which);
+  source->SetResolution(resolution, resolution, resolution);
+  return source;
+}
+
+vtkSmartPointer<vtkBoundParticleTracer> tracerOn(vtkAlgorithm* source, int elements = 200)
+{
+  auto tracer = vtkSmartPointer<vtkBoundParticleTracer>::New();
+  tracer->SetInputConnection(source->GetOutputPort());
+  tracer->SetNumberOfElements(elements);
+  tracer->SetSeed(11);
+  return tracer;
+}
+
+vtkPolyData* at(vtkBoundParticleTracer* tracer, double t)
+{
+  tracer->UpdateTimeStep(t);
+  return tracer->GetOutput();
+}
+
+vtkSmartPointer<vtkImageData> image(int nx, int ny, int nz)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(nx, ny, nz);
+  img->SetSpacing(0.1, 0.1, 0.1);
+  return img;
+}
+
+vtkSmartPointer<vtkFloatArray> array(const char* name, int components, vtkIdType tuples, float v)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  a->Fill(v);
+  return a;
+}
+
+/// Runs the tracer on `input` and expects an error naming `expected` and an empty output.
+void expectRejected(vtkDataObject* input, const std::string& expected,
+  void (*configure)(vtkBoundParticleTracer*) = nullptr)
+{
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(input);
+  auto tracer = tracerOn(producer, 10);
+  if (configure)
+    configure(tracer);
+  ErrorLog log(tracer);
+  tracer->UpdateTimeStep(0.5);
+  EXPECT_TRUE(log.mentions(expected)) << "expected an error mentioning '" << expected << "', got "
+                                      << (log.messages.empty() ? "none" : log.messages[0]);
+  EXPECT_EQ(tracer->GetOutput()->GetNumberOfPoints(), 0);
+}
+} // namespace
+
+TEST(BoundParticleTracer, OutputSizesAndArrays)
+{
+  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  const struct
+  {
+    int shape, particles, triangles;
+  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0 }, { vtkBoundParticleTracer::STRIP16, 16, 14 },
+    { vtkBoundParticleTracer::CROSS, 12, 10 }, { vtkBoundParticleTracer::FISH, 23, 40 } };
+  for (const auto& s : shapes)
+  {
+    auto tracer = tracerOn(source, 37);
+    tracer->SetElementShape(s.shape);
+    vtkPolyData* out = at(tracer, 1.0);
+    ASSERT_EQ(out->GetNumberOfPoints(), 37 * s.particles);
+    if (s.triangles)
+    {
+      EXPECT_EQ(out->GetNumberOfPolys(), 37 * s.triangles);
+      EXPECT_EQ(out->GetNumberOfVerts(), 0);
+    }
+    else
+    {
+      EXPECT_EQ(out->GetNumberOfVerts(), 37);
+    }
+    const struct
+    {
+      const char* name;
+      int components;
+    } arrays[] = { { "Normals", 3 }, { "Velocity", 3 }, { "Speed", 1 }, { "Force", 1 },
+      { "Lifetime", 1 }, { "ElementId", 1 }, { "ParticleIndex", 1 }, { "Vorticity", 1 },
+      { "Layer", 1 }, { "Radius", 1 } };
+    for (const auto& a : arrays)
+    {
+      vtkDataArray* d = out->GetPointData()->GetArray(a.name);
+      ASSERT_NE(d, nullptr) << a.name;
+      EXPECT_EQ(d->GetNumberOfComponents(), a.components) << a.name;
+      EXPECT_EQ(d->GetNumberOfTuples(), out->GetNumberOfPoints()) << a.name;
+      for (int c = 0; c < a.components; ++c)
+      {
+        const double* r = d->GetRange(c);
+        EXPECT_TRUE(std::isfinite(r[0]) && std::isfinite(r[1])) << a.name;
+      }
+    }
+    EXPECT_EQ(out->GetPointData()->GetArray("ElementId")->GetRange()[1], 36);
+    EXPECT_EQ(out->GetPointData()->GetArray("ParticleIndex")->GetRange()[1], s.particles - 1);
+    EXPECT_NEAR(out->GetFieldData()->GetArray("SimulationTime")->GetTuple1(0), 1.0, 1e-12);
+  }
+}
+
+TEST(BoundParticleTracer, SteadyInputGetsTimeSteps)
+{
+  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER);
+  auto tracer = tracerOn(source);
+  tracer->SetDuration(4.0);
+  tracer->SetNumberOfTimeSteps(9);
+  tracer->UpdateInformation();
+  vtkInformation* info = tracer->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 9);
+  EXPECT_DOUBLE_EQ(info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[8], 4.0);
+  const std::vector<float> start = pointsOf(at(tracer, 0.0));
+  const std::vector<float> later = pointsOf(at(tracer, 0.5));
+  EXPECT_NE(start, later); // the steady flow plays
+}
+
+TEST(BoundParticleTracer, ForwardContinuesAndEqualsAFreshRun)
+{
+  auto source = flow(vtkAnalyticFlowSource::HURRICANE);
+  auto incremental = tracerOn(source);
+  incremental->SetLifetimeRange(0.3, 0.9); // resets happen along the way
+  at(incremental, 1.0);
+  const vtkIdType stepsTo1 = incremental->GetStepsInLastUpdate();
+  const std::vector<float> pieces = pointsOf(at(incremental, 2.35));
+  EXPECT_FALSE(incremental->GetLastUpdateReplayed());
+  const vtkIdType stepsOn = incremental->GetStepsInLastUpdate();
+
+  auto fresh = tracerOn(source);
+  fresh->SetLifetimeRange(0.3, 0.9);
+  const std::vector<float> direct = pointsOf(at(fresh, 2.35));
+  EXPECT_TRUE(fresh->GetLastUpdateReplayed());
+  // Continuing from 1.0 took only the steps after it.
+  EXPECT_NEAR(double(stepsOn), double(fresh->GetStepsInLastUpdate() - stepsTo1), 2.0);
+  EXPECT_EQ(pieces, direct);
+}
+
+TEST(BoundParticleTracer, BackwardAndChangesReplay)
+{
+  auto source = flow(vtkAnalyticFlowSource::VERTICAL_SHEAR);
+  auto tracer = tracerOn(source);
+  at(tracer, 2.0);
+  const std::vector<float> back = pointsOf(at(tracer, 0.7));
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  auto fresh = tracerOn(source);
+  EXPECT_EQ(back, pointsOf(at(fresh, 0.7)));
+
+  at(tracer, 0.9);
+  EXPECT_FALSE(tracer->GetLastUpdateReplayed());
+  tracer->SetSeed(12);
+  const std::vector<float> reseeded = pointsOf(at(tracer, 0.9));
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  EXPECT_NE(reseeded, pointsOf(at(fresh, 0.9)));
+
+  source->SetResolution(20, 20, 20); // an upstream change replays too
+  at(tracer, 0.9);
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+}
+
+TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
+{
+  auto source = flow(vtkAnalyticFlowSource::DOUBLE_GYRE);
+  source->SetResolution(40, 20, 2);
+  source->SetBounds(0, 2, 0, 1, 0, 0.1);
+  auto tracer = tracerOn(source);
+  tracer->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  tracer->UpdateInformation();
+  EXPECT_EQ(tracer->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()),
+    21);
+  at(tracer, 0.8);
+  at(tracer, 2.1);
+  EXPECT_FALSE(tracer->GetLastUpdateReplayed());
+  const std::vector<float> pieces = pointsOf(at(tracer, 3.75));
+  auto fresh = tracerOn(source);
+  fresh->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  EXPECT_EQ(pieces, pointsOf(at(fresh, 3.75)));
+  EXPECT_NEAR(fresh->GetSimulationTime(), 3.75, 1e-12);
+}
+
+TEST(BoundParticleTracer, SameSeedSameTraceOtherSeedOtherTrace)
+{
+  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto a = tracerOn(source), b = tracerOn(source), c = tracerOn(source);
+  c->SetSeed(99);
+  EXPECT_EQ(pointsOf(at(a, 1.3)), pointsOf(at(b, 1.3)));
+  EXPECT_NE(pointsOf(at(a, 1.3)), pointsOf(at(c, 1.3)));
+}
+
+TEST(BoundParticleTracer, DefaultsFollowTheField)
+{
+  auto source = flow(vtkAnalyticFlowSource::SOLID_BODY_ROTATION, 21);
+  auto tracer = tracerOn(source);
+  vtkPolyData* out = at(tracer, 0.0);
+  // The emitter covers the field; the element size and step follow its cells and speed.
+  double b[6];
+  out->GetBounds(b);
+  EXPECT_LT(b[0], -0.8);
+  EXPECT_GT(b[1], 0.8);
+  const double cell = 0.1, maxSpeed = std::sqrt(2.0);
+  EXPECT_NEAR(tracer->GetResolvedTimeStep(), 0.5 * cell / maxSpeed, 1e-6);
+  EXPECT_NEAR(tracer->GetResolvedElementSize(), 2 * cell, 1e-9);
+  tracer->SetStepSizeUnit(vtkBoundParticleTracer::TIME);
+  tracer->SetStepSize(0.01);
+  tracer->SetElementSize(0.3);
+  at(tracer, 0.0);
+  EXPECT_DOUBLE_EQ(tracer->GetResolvedTimeStep(), 0.01);
+  EXPECT_DOUBLE_EQ(tracer->GetResolvedElementSize(), 0.3);
+}
+
+TEST(BoundParticleTracer, BadInputGivesAClearErrorAndEmptyOutput)
+{
+  {
+    auto img = image(5, 5, 5);
+    img->GetPointData()->AddArray(array("pressure", 1, 125, 1.0f));
+    expectRejected(img, "no point vector array");
+  }
+  for (int components : { 1, 2 })
+  {
+    auto img = image(5, 5, 5);
+    img->GetPointData()->AddArray(array("flat", components, 125, 1.0f));
+    expectRejected(img, "component", [](vtkBoundParticleTracer* t) {
+      t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "flat");
+    });
+  }
+  {
+    auto img = image(5, 5, 5);
+    auto v = array("v", 3, 125, 1.0f);
+    v->SetComponent(60, 1, std::nanf(""));
+    img->GetPointData()->SetVectors(v);
+    expectRejected(img, "non-finite");
+  }
+  expectRejected(vtkSmartPointer<vtkImageData>::New(), "empty");
+  {
+    auto img = image(1, 1, 1);
+    img->GetPointData()->SetVectors(array("v", 3, 1, 1.0f));
+    expectRejected(img, "single point");
+  }
+  {
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> pts;
+    pts->InsertNextPoint(0, 0, 0);
+    pd->SetPoints(pts);
+    expectRejected(pd, "vtkImageData");
+  }
+  auto good = image(5, 5, 5);
+  good->GetPointData()->SetVectors(array("v", 3, 125, 1.0f));
+  expectRejected(good, "NumberOfElements", [](vtkBoundParticleTracer* t) { t->SetNumberOfElements(0); });
+  expectRejected(good, "exceeds the limit",
+    [](vtkBoundParticleTracer* t) { t->SetNumberOfElements(vtkIdType(1) << 40); });
+  expectRejected(good, "StepSize", [](vtkBoundParticleTracer* t) { t->SetStepSize(0.0); });
+  expectRejected(good, "StepSize", [](vtkBoundParticleTracer* t) { t->SetStepSize(-1.0); });
+  expectRejected(good, "ElementSize", [](vtkBoundParticleTracer* t) { t->SetElementSize(-2.0); });
+  expectRejected(good, "LifetimeRange", [](vtkBoundParticleTracer* t) { t->SetLifetimeRange(2, 1); });
+}
+
+TEST(BoundParticleTracer, RecoversAfterBadInput)
+{
+  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER, 12);
+  auto tracer = tracerOn(source, 10);
+  ErrorLog log(tracer);
+  tracer->SetStepSize(-1.0);
+  EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 0);
+  tracer->SetStepSize(0.5);
+  EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 10 * 8);
+  EXPECT_EQ(log.messages.size(), 1u);
+}
