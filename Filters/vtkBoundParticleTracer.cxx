@@ -109,18 +109,31 @@ struct vtkBoundParticleTracer::vtkInternals
     return 1e-9 * std::max(1.0, std::abs(span));
   }
 
-  /// Input time indices the field at time t is made of.
-  std::vector<int> slicesFor(double t) const
+  /**
+   * Input time indices of the field around time t. Stepping forward from t
+   * needs the interval that starts at t; showing the state at t needs only an
+   * interval that contains it, and at a data time step the one that ends
+   * there is the one already in hand.
+   */
+  std::vector<int> slicesFor(double t, bool forward) const
   {
     if (!this->Unsteady || this->InputTimes.size() < 2)
     {
       return { 0 };
     }
-    const auto it =
-      std::upper_bound(this->InputTimes.begin(), this->InputTimes.end(), t + this->timeEpsilon());
-    int k = int(it - this->InputTimes.begin()) - 1;
+    const double eps = this->timeEpsilon();
+    const auto begin = this->InputTimes.begin(), end = this->InputTimes.end();
+    int k = forward ? int(std::upper_bound(begin, end, t + eps) - begin) - 1
+                    : int(std::lower_bound(begin, end, t - eps) - begin) - 1;
     k = std::max(0, std::min(k, int(this->InputTimes.size()) - 2));
     return { k, k + 1 };
+  }
+
+  /// The slices the next piece of work needs: stepping on, or showing Target.
+  std::vector<int> slicesNeeded(double from) const
+  {
+    const bool forward = from < this->Target - this->timeEpsilon();
+    return this->slicesFor(forward ? from : this->Target, forward);
   }
 
   int firstMissing(const std::vector<int>& needed) const
@@ -281,9 +294,9 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
         I.Slices.clear();
       }
     }
-    const double from = I.ResetPending ? I.StartTime : I.Committed;
-    const int missing = I.firstMissing(I.slicesFor(from));
-    I.RequestIndex = missing >= 0 ? missing : I.slicesFor(from).back();
+    const std::vector<int> needed = I.slicesNeeded(I.ResetPending ? I.StartTime : I.Committed);
+    const int missing = I.firstMissing(needed);
+    I.RequestIndex = missing >= 0 ? missing : needed.back();
   }
 
   if (I.Unsteady)
@@ -491,7 +504,7 @@ int vtkBoundParticleTracer::RequestData(
 
   if (I.ResetPending)
   {
-    const std::vector<int> ids = I.slicesFor(I.StartTime);
+    const std::vector<int> ids = I.slicesNeeded(I.StartTime);
     const int missing = I.firstMissing(ids);
     if (missing >= 0)
     {
@@ -587,7 +600,7 @@ int vtkBoundParticleTracer::RequestData(
   const bp::RangeRunner run = smpRunner();
   while (true)
   {
-    const std::vector<int> ids = I.slicesFor(I.Committed);
+    const std::vector<int> ids = I.slicesNeeded(I.Committed);
     const int missing = I.firstMissing(ids);
     if (missing >= 0)
     {
@@ -619,8 +632,7 @@ int vtkBoundParticleTracer::RequestData(
   // The output at Target: the committed state, finished with a shorter step
   // on a copy when Target falls between two step boundaries, so that the
   // cache stays on the boundaries.
-  const std::vector<int> ids = I.slicesFor(I.Target);
-  const bp::VectorField field = I.field(ids);
+  const bp::VectorField field = I.field(I.slicesFor(I.Target, false));
   bp::Engine* shown = &I.Engine;
   bp::Engine partial;
   if (I.Target - I.Committed > I.Schedule->epsilon())

@@ -235,6 +235,16 @@ TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
   fresh->SetElementShape(vtkBoundParticleTracer::SQUARE);
   EXPECT_EQ(pieces, pointsOf(at(fresh, 3.75)));
   EXPECT_NEAR(fresh->GetSimulationTime(), 3.75, 1e-12);
+
+  // Targets on the data's own time steps, the first and the last included.
+  for (double t : { 4.0, 4.0, 0.0, 1.5, 10.0 })
+  {
+    vtkPolyData* out = at(tracer, t);
+    EXPECT_EQ(out->GetNumberOfPoints(), 200 * 4) << "t = " << t;
+    auto other = tracerOn(source);
+    other->SetElementShape(vtkBoundParticleTracer::SQUARE);
+    EXPECT_EQ(pointsOf(out), pointsOf(at(other, t))) << "t = " << t;
+  }
 }
 
 TEST(BoundParticleTracer, SameSeedSameTraceOtherSeedOtherTrace)

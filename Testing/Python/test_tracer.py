@@ -1,0 +1,86 @@
+"""The tracer through its proxies: outputs, time, animation, errors."""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+args = bptest.arguments()
+LoadPlugin(args.plugin, ns=globals())
+
+
+def points(proxy, time):
+    proxy.UpdatePipeline(time)
+    data = servermanager.Fetch(proxy)
+    if data.GetNumberOfPoints() == 0:
+        return None
+    return vtk_to_numpy(data.GetPoints().GetData()).copy()
+
+
+flow = AnalyticFlow(Flow="Shear Layer", Resolution=[24, 24, 24], Bounds=[0, 4, 0, 1, -1, 1])
+flow.UpdatePipeline()
+tracer = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+                             Seed=5, Duration=5.0, NumberOfTimeSteps=51)
+
+# A steady input gets time steps, and the animation plays through them.
+times = list(tracer.TimestepValues)
+bptest.check(len(times) == 51 and abs(times[-1] - 5.0) < 1e-12, "TimestepValues %s" % times[:3])
+scene = GetAnimationScene()
+scene.UpdateAnimationUsingDataTimeSteps()
+bptest.check(abs(scene.EndTime - 5.0) < 1e-12, "animation ends at %s" % scene.EndTime)
+view = CreateRenderView()
+display = Show(tracer, view)
+frames = []
+for t in (0.0, 0.5, 1.0):
+    scene.AnimationTime = t
+    Render(view)
+    data = servermanager.Fetch(tracer)
+    frames.append(vtk_to_numpy(data.GetPoints().GetData()).copy())
+bptest.check(all(f.shape == (2400, 3) for f in frames), "300 paddlewheels give 2400 points")
+bptest.check(abs(frames[1] - frames[0]).max() > 1e-3 and abs(frames[2] - frames[1]).max() > 1e-3,
+             "elements move while the animation plays")
+
+# Forward continues; the result equals a fresh run. Backward replays.
+fresh = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+                            Seed=5, Duration=5.0, NumberOfTimeSteps=51)
+continued = points(tracer, 1.7)
+bptest.check((continued == points(fresh, 1.7)).all(), "forward in time equals a fresh run")
+back = points(tracer, 0.4)
+fresh2 = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+                             Seed=5, Duration=5.0, NumberOfTimeSteps=51)
+bptest.check((back == points(fresh2, 0.4)).all(), "backward in time equals a fresh run")
+
+# Outputs: arrays and no NaN.
+data = servermanager.Fetch(tracer)
+pd = data.GetPointData()
+for name in ["Normals", "Velocity", "Speed", "Force", "Lifetime", "ElementId", "ParticleIndex",
+             "Vorticity", "Layer", "Radius"]:
+    array = pd.GetArray(name)
+    bptest.check(array is not None, "array %s present" % name)
+    if array is not None:
+        values = vtk_to_numpy(array)
+        bptest.check(values.size > 0 and (values == values).all(), "array %s is finite" % name)
+bptest.check(data.GetNumberOfCells() == 300 * 4, "4 triangles per paddlewheel")
+
+# Bad input: a 1-component array gives an error in the output window and no output.
+calc = Calculator(Input=flow, ResultArrayName="speed", Function="mag(velocity)")
+with bptest.CapturedMessages() as log:
+    bad = BoundParticleTracer(Input=calc, Vectors=["POINTS", "speed"])
+    bad.UpdatePipeline(0.5)
+bptest.check(log.mentions("1 component"), "1-component array error: %s" % log.messages)
+bptest.check(bad.GetDataInformation().GetNumberOfPoints() == 0, "no output for bad input")
+with bptest.CapturedMessages() as log:
+    tracer.StepSize = 0.0
+    tracer.UpdatePipeline(0.5)
+bptest.check(log.mentions("StepSize must be positive"), "StepSize error: %s" % log.messages)
+bptest.check(tracer.GetDataInformation().GetNumberOfPoints() == 0, "no output for StepSize 0")
+tracer.StepSize = 0.5
+tracer.UpdatePipeline(0.5)
+bptest.check(tracer.GetDataInformation().GetNumberOfPoints() == 2400, "recovers after fixing")
+
+Delete(view)
+del view
+bptest.finish()

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what is missing, then configures and builds BoundParticles (Release)
+# in ${BOUNDPARTICLES_BUILD_DIR:-build/}. Prints the build folder last.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BOUNDPARTICLES_BUILD_DIR:-$root/build}"
+
+bash "$root/scripts/setup.sh"
+mkdir -p "$build"
+if ! cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build/configure.log" 2>&1; then
+  cat "$build/configure.log" >&2
+  exit 1
+fi
+cmake --build "$build" --parallel "$(nproc)" -- --no-print-directory >"$build/build.log" 2>&1 || {
+  tail -n 60 "$build/build.log" >&2
+  exit 1
+}
+echo "$build"

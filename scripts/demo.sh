@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The main job: installs and builds if needed, then traces bound particles through
+# the built-in hurricane-like flow and writes bound-particles.png and
+# bound-particles.vtp to the folder given (default: demo-output/).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="$(realpath -m "${1:-$root/demo-output}")"
+build="$(bash "$root/scripts/build.sh" | tail -n 1)"
+plugin="$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so"
+xvfb-run -a -s "-screen 0 1920x1080x24" \
+  pvpython "$root/demo/demo.py" --plugin "$plugin" --output "$out"
