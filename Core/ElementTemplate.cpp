@@ -52,8 +52,8 @@ void orientAwayFrom(const std::vector<Point>& p, std::vector<Tri>& triangles, co
     const float v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
     const float n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
       u[0] * v[1] - u[1] * v[0] };
-    const float out[3] = { (a[0] + b[0] + c[0]) / 3 - inside[0], (a[1] + b[1] + c[1]) / 3 - inside[1],
-      (a[2] + b[2] + c[2]) / 3 - inside[2] };
+    const float out[3] = { (a[0] + b[0] + c[0]) / 3 - inside[0],
+      (a[1] + b[1] + c[1]) / 3 - inside[1], (a[2] + b[2] + c[2]) / 3 - inside[2] };
     if (n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0)
     {
       std::swap(t[1], t[2]);
@@ -117,7 +117,7 @@ ElementTemplate cross()
     { 2, 7, 3 }, { 3, 8, 9 }, { 3, 9, 0 }, { 0, 10, 11 }, { 0, 11, 1 } };
   std::vector<Pair> springs = triangleEdges(tris);
   const std::vector<Pair> extra = { { 4, 9 }, { 5, 8 }, { 6, 11 }, { 7, 10 }, // across
-    { 5, 6 }, { 7, 8 }, { 9, 10 }, { 11, 4 } };                                // tip to tip
+    { 5, 6 }, { 7, 8 }, { 9, 10 }, { 11, 4 } };                               // tip to tip
   springs.insert(springs.end(), extra.begin(), extra.end());
   return makeTemplate("Cross", p, tris, springs);
 }

@@ -51,9 +51,9 @@ std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
   const float a = float(2.0 * Pi) * u2, b = float(2.0 * Pi) * u3;
   const float x = s1 * std::sin(a), y = s1 * std::cos(a), z = s2 * std::sin(b),
               w = s2 * std::cos(b);
-  return { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
-    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y) };
+  return { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 2 * (x * y + w * z),
+    1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 2 * (x * z - w * y), 2 * (y * z + w * x),
+    1 - 2 * (x * x + y * y) };
 }
 
 std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
@@ -180,13 +180,15 @@ void Engine::place(std::size_t e)
 void Engine::initialize(const RangeRunner& run)
 {
   std::fill(this->Generations.begin(), this->Generations.end(), 0u);
-  run(this->elementCount(), [this](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e)
+  run(this->elementCount(),
+    [this](std::size_t begin, std::size_t end)
     {
-      this->place(e);
-      this->normalsOf(e);
-    }
-  });
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        this->place(e);
+        this->normalsOf(e);
+      }
+    });
 }
 
 void Engine::advectParticle(const VectorField& field, double t, double h, float p[3]) const
@@ -323,7 +325,7 @@ void Engine::stepElement(
     this->place(e);
   }
   float* p = this->Positions.data() + 3 * e * n;
-  float* before = scratch.data();        // positions before the step
+  float* before = scratch.data();           // positions before the step
   float* advected = scratch.data() + 3 * n; // positions before restoration
   std::copy_n(p, 3 * n, before);
   for (std::size_t i = 0; i < n; ++i)
@@ -380,14 +382,16 @@ void Engine::stepElement(
 void Engine::step(const VectorField& field, double t, double h, const RangeRunner& run)
 {
   const std::size_t n = this->Shape.particleCount();
-  run(this->elementCount(), [&](std::size_t begin, std::size_t end) {
-    // before + advected + Jacobi accumulator, per worker.
-    std::vector<float> scratch(9 * n);
-    for (std::size_t e = begin; e < end; ++e)
+  run(this->elementCount(),
+    [&](std::size_t begin, std::size_t end)
     {
-      this->stepElement(e, field, t, h, scratch);
-    }
-  });
+      // before + advected + Jacobi accumulator, per worker.
+      std::vector<float> scratch(9 * n);
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        this->stepElement(e, field, t, h, scratch);
+      }
+    });
 }
 
 void Engine::normalsOf(std::size_t e)
@@ -440,12 +444,14 @@ void Engine::normalsOf(std::size_t e)
 
 void Engine::updateNormals(const RangeRunner& run)
 {
-  run(this->elementCount(), [this](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e)
+  run(this->elementCount(),
+    [this](std::size_t begin, std::size_t end)
     {
-      this->normalsOf(e);
-    }
-  });
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        this->normalsOf(e);
+      }
+    });
 }
 
 StepSchedule::StepSchedule(double start, double dt, std::vector<double> breaks)
@@ -480,8 +486,7 @@ double StepSchedule::next(double t) const
 double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
   double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing)
 {
-  for (double next = schedule.next(t); next <= target + schedule.epsilon();
-       next = schedule.next(t))
+  for (double next = schedule.next(t); next <= target + schedule.epsilon(); next = schedule.next(t))
   {
     if (keepGoing && !keepGoing(t))
     {
@@ -496,13 +501,15 @@ double advance(Engine& engine, const VectorField& field, const StepSchedule& sch
 void sampleAtPositions(const VectorField& field, double t, const float* positions,
   std::size_t count, float* velocity, float* vorticity, const RangeRunner& run)
 {
-  run(count, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
+  run(count,
+    [&](std::size_t begin, std::size_t end)
     {
-      field.sample(positions + 3 * i, t, velocity + 3 * i);
-      vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
-    }
-  });
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        field.sample(positions + 3 * i, t, velocity + 3 * i);
+        vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
+      }
+    });
 }
 
 } // namespace bp

@@ -69,7 +69,8 @@ struct Parameters
   std::array<float, 3> emitterMin = { 0, 0, 0 };
   std::array<float, 3> emitterMax = { 1, 1, 1 };
   bool randomOrientation = true;
-  std::array<float, 9> frame = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }; ///< row-major, used without random orientation
+  std::array<float, 9> frame = { 1, 0, 0, 0, 1, 0, 0, 0,
+    1 }; ///< row-major, used without random orientation
   float lifetimeMin = 1.0f;
   float lifetimeMax = 2.0f;
   Integrator integrator = Integrator::Euler;
@@ -132,8 +133,8 @@ private:
   };
 
   void place(std::size_t e);
-  void stepElement(std::size_t e, const VectorField& field, double t, double h,
-    std::vector<float>& scratch);
+  void stepElement(
+    std::size_t e, const VectorField& field, double t, double h, std::vector<float>& scratch);
   void advectParticle(const VectorField& field, double t, double h, float p[3]) const;
   /// K iterations on one element's positions; `acc` holds 3n floats of scratch.
   void restore(float* p, float* acc) const;

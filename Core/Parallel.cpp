@@ -10,7 +10,8 @@ namespace bp
 
 RangeRunner serialRunner()
 {
-  return [](std::size_t count, const RangeFunction& f) {
+  return [](std::size_t count, const RangeFunction& f)
+  {
     if (count > 0)
     {
       f(0, count);
@@ -21,7 +22,8 @@ RangeRunner serialRunner()
 RangeRunner threadRunner(unsigned threads)
 {
   threads = std::max(1u, threads);
-  return [threads](std::size_t count, const RangeFunction& f) {
+  return [threads](std::size_t count, const RangeFunction& f)
+  {
     const std::size_t chunks = std::min<std::size_t>(threads, count);
     if (chunks <= 1)
     {

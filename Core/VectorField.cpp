@@ -26,8 +26,8 @@ std::string GridGeometry::validate() const
       ++axes;
       if (!(std::isfinite(this->spacing[a]) && this->spacing[a] > 0.0))
       {
-        err << "the field's spacing along axis " << "XYZ"[a] << " is " << this->spacing[a]
-            << "; it must be positive";
+        err << "the field's spacing along axis "
+            << "XYZ"[a] << " is " << this->spacing[a] << "; it must be positive";
         return err.str();
       }
     }

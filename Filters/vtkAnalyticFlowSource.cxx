@@ -31,13 +31,14 @@ std::string vtkAnalyticFlowSource::CheckSettings() const
   {
     if (this->Resolution[a] < 1 || this->Resolution[a] > 4096)
     {
-      err << "Resolution along " << "XYZ"[a] << " is " << this->Resolution[a]
-          << "; it must lie in [1, 4096].";
+      err << "Resolution along "
+          << "XYZ"[a] << " is " << this->Resolution[a] << "; it must lie in [1, 4096].";
       return err.str();
     }
     if (!(this->Bounds[2 * a + 1] > this->Bounds[2 * a]) && this->Resolution[a] > 1)
     {
-      err << "Bounds along " << "XYZ"[a] << " must have max > min.";
+      err << "Bounds along "
+          << "XYZ"[a] << " must have max > min.";
       return err.str();
     }
   }

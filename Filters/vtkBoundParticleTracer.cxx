@@ -18,8 +18,8 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkObjectFactory.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -43,17 +43,20 @@ namespace
 void preferThreadedBackend()
 {
   static std::once_flag once;
-  std::call_once(once, [] {
-    if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  std::call_once(once,
+    []
     {
-      vtkSMPTools::SetBackend("STDThread");
-    }
-  });
+      if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
+      {
+        vtkSMPTools::SetBackend("STDThread");
+      }
+    });
 }
 
 bp::RangeRunner smpRunner()
 {
-  return [](std::size_t count, const bp::RangeFunction& f) {
+  return [](std::size_t count, const bp::RangeFunction& f)
+  {
     vtkSMPTools::For(vtkIdType(0), vtkIdType(count),
       [&f](vtkIdType begin, vtkIdType end) { f(std::size_t(begin), std::size_t(end)); });
   };
@@ -301,8 +304,7 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
 
   if (I.Unsteady)
   {
-    inInfo->Set(
-      vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), I.InputTimes[I.RequestIndex]);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), I.InputTimes[I.RequestIndex]);
   }
   else
   {
@@ -383,8 +385,8 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   return std::string();
 }
 
-vtkSmartPointer<vtkCellArray> buildCells(const bp::ElementTemplate& shape, std::size_t elements,
-  int& kind)
+vtkSmartPointer<vtkCellArray> buildCells(
+  const bp::ElementTemplate& shape, std::size_t elements, int& kind)
 {
   const std::size_t n = shape.particleCount();
   int cellSize;
@@ -416,15 +418,17 @@ vtkSmartPointer<vtkCellArray> buildCells(const bp::ElementTemplate& shape, std::
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(vtkIdType(local.size() * elements));
   vtkIdType* out = connectivity->GetPointer(0);
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(elements), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType e = begin; e < end; ++e)
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(elements),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const vtkIdType offset = e * vtkIdType(n);
-      vtkIdType* o = out + e * vtkIdType(local.size());
-      for (std::size_t k = 0; k < local.size(); ++k)
-        o[k] = offset + local[k];
-    }
-  });
+      for (vtkIdType e = begin; e < end; ++e)
+      {
+        const vtkIdType offset = e * vtkIdType(n);
+        vtkIdType* o = out + e * vtkIdType(local.size());
+        for (std::size_t k = 0; k < local.size(); ++k)
+          o[k] = offset + local[k];
+      }
+    });
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(cellSize, connectivity);
   return cells;
@@ -449,7 +453,8 @@ int vtkBoundParticleTracer::RequestData(
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   output->Initialize();
 
-  auto fail = [&](const std::string& message) {
+  auto fail = [&](const std::string& message)
+  {
     vtkErrorMacro(<< message);
     I.clear();
     I.NeedsReset = true;
@@ -495,7 +500,8 @@ int vtkBoundParticleTracer::RequestData(
     I.Slices[I.RequestIndex] = slice;
   }
 
-  auto continueWith = [&](int index) {
+  auto continueWith = [&](int index)
+  {
     I.RequestIndex = index;
     I.Continuing = true;
     request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
@@ -591,7 +597,8 @@ int vtkBoundParticleTracer::RequestData(
   const double span = std::max(I.Target - I.Committed, 1e-300);
   const double progressStart = I.Committed;
   bool aborted = false;
-  auto keepGoing = [&](double t) {
+  auto keepGoing = [&](double t)
+  {
     ++I.StepsInLastUpdate;
     this->UpdateProgress((t - progressStart) / span);
     aborted = this->CheckAbort();
@@ -612,8 +619,7 @@ int vtkBoundParticleTracer::RequestData(
     const bp::VectorField field = I.field(ids);
     const double intervalEnd = ids.size() == 2 ? I.InputTimes[ids[1]] : I.Target;
     const double limit = std::min(I.Target, intervalEnd);
-    I.Committed =
-      bp::advance(I.Engine, field, *I.Schedule, I.Committed, limit, run, keepGoing);
+    I.Committed = bp::advance(I.Engine, field, *I.Schedule, I.Committed, limit, run, keepGoing);
     if (aborted)
     {
       I.clear();
@@ -700,26 +706,28 @@ int vtkBoundParticleTracer::RequestData(
   const double cu = 0.5 * (bounds[2 * u] + bounds[2 * u + 1]);
   const double cv = 0.5 * (bounds[2 * v] + bounds[2 * v + 1]);
   const float* vel = velocity->GetPointer(0);
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(E), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType e = begin; e < end; ++e)
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(E),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const float* c = engine.initialCenters().data() + 3 * e;
-      const float lay = c[axis];
-      const float rad = float(std::hypot(c[u] - cu, c[v] - cv));
-      const float life = engine.lifetimes()[e];
-      for (std::size_t i = 0; i < n; ++i)
+      for (vtkIdType e = begin; e < end; ++e)
       {
-        const vtkIdType id = e * vtkIdType(n) + vtkIdType(i);
-        const float* w = vel + 3 * id;
-        speed->SetValue(id, std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-        lifetime->SetValue(id, life);
-        layer->SetValue(id, lay);
-        radius->SetValue(id, rad);
-        elementId->SetValue(id, e);
-        particleIndex->SetValue(id, int(i));
+        const float* c = engine.initialCenters().data() + 3 * e;
+        const float lay = c[axis];
+        const float rad = float(std::hypot(c[u] - cu, c[v] - cv));
+        const float life = engine.lifetimes()[e];
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          const vtkIdType id = e * vtkIdType(n) + vtkIdType(i);
+          const float* w = vel + 3 * id;
+          speed->SetValue(id, std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+          lifetime->SetValue(id, life);
+          layer->SetValue(id, lay);
+          radius->SetValue(id, rad);
+          elementId->SetValue(id, e);
+          particleIndex->SetValue(id, int(i));
+        }
       }
-    }
-  });
+    });
   pd->SetNormals(normals);
   pd->SetVectors(velocity);
   for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
@@ -729,7 +737,8 @@ int vtkBoundParticleTracer::RequestData(
   }
 
   // What the automatic settings came to, for the Information panel and scripts.
-  auto addValue = [&](const char* name, double value) {
+  auto addValue = [&](const char* name, double value)
+  {
     vtkNew<vtkDoubleArray> a;
     a->SetName(name);
     a->InsertNextValue(value);
@@ -745,8 +754,8 @@ int vtkBoundParticleTracer::RequestData(
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ElementShape: "
-     << bp::builtinShapeName(bp::BuiltinShape(this->ElementShape)) << "\n";
+  os << indent << "ElementShape: " << bp::builtinShapeName(bp::BuiltinShape(this->ElementShape))
+     << "\n";
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "ElementSize: " << this->ElementSize << "\n";
   os << indent << "EmitterCenter: " << this->EmitterCenter[0] << " " << this->EmitterCenter[1]
@@ -763,6 +772,6 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "Duration: " << this->Duration << ", NumberOfTimeSteps: "
-     << this->NumberOfTimeSteps << "\n";
+  os << indent << "Duration: " << this->Duration
+     << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -22,8 +22,8 @@ struct Config
   std::size_t elements;
 };
 
-double medianSeconds(const bp::VectorField& field, const Config& c, const bp::RangeRunner& run,
-  int steps, double dt)
+double medianSeconds(
+  const bp::VectorField& field, const Config& c, const bp::RangeRunner& run, int steps, double dt)
 {
   std::vector<double> times;
   for (int repeat = 0; repeat < 6; ++repeat)
@@ -90,13 +90,13 @@ int main(int argc, char** argv)
   const std::vector<std::size_t> counts = quick
     ? std::vector<std::size_t>{ 4096 }
     : std::vector<std::size_t>{ 256, 1024, 4096, 16384, 65536 };
-  for (auto shape : { bp::BuiltinShape::Square, bp::BuiltinShape::Strip8,
-         bp::BuiltinShape::Strip16 })
+  for (auto shape :
+    { bp::BuiltinShape::Square, bp::BuiltinShape::Strip8, bp::BuiltinShape::Strip16 })
     for (std::size_t n : counts)
       configs.push_back({ shape, n });
 
-  std::printf("CPU engine, shear layer %d^3, Euler, 1 averaged-Jacobi iteration; median of 5\n",
-    resolution);
+  std::printf(
+    "CPU engine, shear layer %d^3, Euler, 1 averaged-Jacobi iteration; median of 5\n", resolution);
   std::printf("%-8s %-10s %8s %14s %14s %18s %8s\n", "shape", "elements", "particles",
     "steps/s 1 thr", "steps/s 2 thr", "particle-steps/s 2", "2 vs 1");
   for (const Config& c : configs)

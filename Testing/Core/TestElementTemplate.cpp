@@ -69,8 +69,8 @@ TEST(ElementTemplate, BuiltinsAreNormalised)
     {
       const auto& a = t.rest[s.a];
       const auto& b = t.rest[s.b];
-      const double d = std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) +
-        std::pow(a[2] - b[2], 2));
+      const double d =
+        std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2));
       EXPECT_NEAR(s.restLength, d, 1e-6);
       EXPECT_GT(s.restLength, 0.0f);
     }

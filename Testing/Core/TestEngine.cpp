@@ -150,8 +150,7 @@ TEST(Engine, NeverGoesNonFinite)
 
 TEST(Engine, ResetsLandInsideTheEmitter)
 {
-  const bp::VectorField field =
-    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  const bp::VectorField field = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
   bp::Parameters p = centralParameters(500, 0.1f);
   p.emitterMin = { -0.9f, 0.1f, 0.3f };
   p.emitterMax = { -0.2f, 0.6f, 0.35f };
@@ -212,9 +211,9 @@ TEST(Engine, CenterOrAnyParticleLeaving)
 
 TEST(Engine, SameSeedSameResultOtherSeedOtherResult)
 {
-  const bp::VectorField field =
-    bptest::steadyFlow(bp::AnalyticFlow::Hurricane, bptest::grid(17));
-  auto runWithSeed = [&](std::uint32_t seed) {
+  const bp::VectorField field = bptest::steadyFlow(bp::AnalyticFlow::Hurricane, bptest::grid(17));
+  auto runWithSeed = [&](std::uint32_t seed)
+  {
     bp::Parameters p = centralParameters(300, 0.1f);
     p.seed = seed;
     p.lifetimeMin = 0.2f;
@@ -229,8 +228,7 @@ TEST(Engine, SameSeedSameResultOtherSeedOtherResult)
 
 TEST(Engine, ThreadCountDoesNotChangeResults)
 {
-  const bp::VectorField field =
-    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  const bp::VectorField field = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
   std::vector<float> reference;
   for (unsigned threads : { 1u, 2u, 3u, 8u })
   {
@@ -263,8 +261,8 @@ TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
   const bp::VectorField still(g, s);
   for (int m = 0; m < 3; ++m)
   {
-    for (auto shape : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Fish,
-           bp::BuiltinShape::Paddlewheel })
+    for (auto shape :
+      { bp::BuiltinShape::Strip16, bp::BuiltinShape::Fish, bp::BuiltinShape::Paddlewheel })
     {
       SCOPED_TRACE(std::string(bp::builtinShapeName(shape)) + " method " + std::to_string(m));
       bp::Parameters p = centralParameters(10, 0.3f);
@@ -291,8 +289,7 @@ TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
 
 TEST(Engine, PinnedParticlesStayPut)
 {
-  const bp::VectorField field =
-    bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  const bp::VectorField field = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
   bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip8);
   shape.pinned.assign(shape.particleCount(), 0);
   shape.pinned[0] = 1;

@@ -52,9 +52,9 @@ TEST(VectorField, OutsideSamplesTheBoundary)
   const float p[3] = { 3.0f, -7.0f, 0.5f };
   float v[3];
   f.sample(p, 0.0, v);
-  EXPECT_NEAR(v[0], 2.0, 1e-6);   // x clamped to 1
-  EXPECT_NEAR(v[1], -2.0, 1e-6);  // y clamped to -1
-  EXPECT_NEAR(v[2], 0.5, 1e-6);   // 3 * 0.5 - 1
+  EXPECT_NEAR(v[0], 2.0, 1e-6);  // x clamped to 1
+  EXPECT_NEAR(v[1], -2.0, 1e-6); // y clamped to -1
+  EXPECT_NEAR(v[2], 0.5, 1e-6);  // 3 * 0.5 - 1
   EXPECT_FALSE(f.contains(p));
   const float inside[3] = { 1.0f, -1.0f, 0.0f };
   EXPECT_TRUE(f.contains(inside));

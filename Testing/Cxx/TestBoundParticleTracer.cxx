@@ -33,9 +33,8 @@ struct ErrorLog
   explicit ErrorLog(vtkObject* watched)
   {
     this->callback->SetClientData(this);
-    this->callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
-      static_cast<ErrorLog*>(self)->messages.emplace_back(static_cast<const char*>(text));
-    });
+    this->callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text)
+      { static_cast<ErrorLog*>(self)->messages.emplace_back(static_cast<const char*>(text)); });
     watched->AddObserver(vtkCommand::ErrorEvent, this->callback);
   }
   bool mentions(const std::string& part) const
@@ -117,8 +116,9 @@ TEST(BoundParticleTracer, OutputSizesAndArrays)
   const struct
   {
     int shape, particles, triangles;
-  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0 }, { vtkBoundParticleTracer::STRIP16, 16, 14 },
-    { vtkBoundParticleTracer::CROSS, 12, 10 }, { vtkBoundParticleTracer::FISH, 23, 40 } };
+  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0 },
+    { vtkBoundParticleTracer::STRIP16, 16, 14 }, { vtkBoundParticleTracer::CROSS, 12, 10 },
+    { vtkBoundParticleTracer::FISH, 23, 40 } };
   for (const auto& s : shapes)
   {
     auto tracer = tracerOn(source, 37);
@@ -225,8 +225,8 @@ TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
   auto tracer = tracerOn(source);
   tracer->SetElementShape(vtkBoundParticleTracer::SQUARE);
   tracer->UpdateInformation();
-  EXPECT_EQ(tracer->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()),
-    21);
+  EXPECT_EQ(
+    tracer->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 21);
   at(tracer, 0.8);
   at(tracer, 2.1);
   EXPECT_FALSE(tracer->GetLastUpdateReplayed());
@@ -288,9 +288,9 @@ TEST(BoundParticleTracer, BadInputGivesAClearErrorAndEmptyOutput)
   {
     auto img = image(5, 5, 5);
     img->GetPointData()->AddArray(array("flat", components, 125, 1.0f));
-    expectRejected(img, "component", [](vtkBoundParticleTracer* t) {
-      t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "flat");
-    });
+    expectRejected(img, "component",
+      [](vtkBoundParticleTracer* t)
+      { t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "flat"); });
   }
   {
     auto img = image(5, 5, 5);
@@ -314,13 +314,15 @@ TEST(BoundParticleTracer, BadInputGivesAClearErrorAndEmptyOutput)
   }
   auto good = image(5, 5, 5);
   good->GetPointData()->SetVectors(array("v", 3, 125, 1.0f));
-  expectRejected(good, "NumberOfElements", [](vtkBoundParticleTracer* t) { t->SetNumberOfElements(0); });
+  expectRejected(
+    good, "NumberOfElements", [](vtkBoundParticleTracer* t) { t->SetNumberOfElements(0); });
   expectRejected(good, "exceeds the limit",
     [](vtkBoundParticleTracer* t) { t->SetNumberOfElements(vtkIdType(1) << 40); });
   expectRejected(good, "StepSize", [](vtkBoundParticleTracer* t) { t->SetStepSize(0.0); });
   expectRejected(good, "StepSize", [](vtkBoundParticleTracer* t) { t->SetStepSize(-1.0); });
   expectRejected(good, "ElementSize", [](vtkBoundParticleTracer* t) { t->SetElementSize(-2.0); });
-  expectRejected(good, "LifetimeRange", [](vtkBoundParticleTracer* t) { t->SetLifetimeRange(2, 1); });
+  expectRejected(
+    good, "LifetimeRange", [](vtkBoundParticleTracer* t) { t->SetLifetimeRange(2, 1); });
 }
 
 TEST(BoundParticleTracer, RecoversAfterBadInput)
