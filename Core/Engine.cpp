@@ -245,6 +245,25 @@ void Engine::advectParticle(const VectorField& field, double t, double h, float 
   }
 }
 
+bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
+{
+  // Thesis eqs. 2.3-2.5: the whole correction moves end a away from end b by
+  // stiffness * (rest - length) along their difference; the ends share it.
+  const float* pa = p + 3 * s.a;
+  const float* pb = p + 3 * s.b;
+  const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+  const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(len > 0.0f))
+  {
+    return false; // coincident ends give no direction to restore along
+  }
+  const float f = s.stiffness * (s.rest - len) / len;
+  c[0] = f * d[0];
+  c[1] = f * d[1];
+  c[2] = f * d[2];
+  return true;
+}
+
 void Engine::restore(float* p, float* acc) const
 {
   const std::size_t n = this->Shape.particleCount();
@@ -256,19 +275,14 @@ void Engine::restore(float* p, float* acc) const
       // Each spring moves its ends at once, so later springs see the update.
       for (const SpringWork& s : this->Springs)
       {
-        float* pa = p + 3 * s.a;
-        float* pb = p + 3 * s.b;
-        const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
-        const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        if (!(len > 0.0f))
+        float c[3];
+        if (springCorrection(p, s, c))
         {
-          continue;
-        }
-        const float f = s.stiffness * (s.rest - len) / len;
-        for (int k = 0; k < 3; ++k)
-        {
-          pa[k] += s.shareA * f * d[k];
-          pb[k] -= s.shareB * f * d[k];
+          for (int k = 0; k < 3; ++k)
+          {
+            p[3 * s.a + k] += s.shareA * c[k];
+            p[3 * s.b + k] -= s.shareB * c[k];
+          }
         }
       }
       continue;
@@ -279,19 +293,14 @@ void Engine::restore(float* p, float* acc) const
     std::fill_n(acc, 3 * n, 0.0f);
     for (const SpringWork& s : this->Springs)
     {
-      const float* pa = p + 3 * s.a;
-      const float* pb = p + 3 * s.b;
-      const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
-      const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      if (!(len > 0.0f))
+      float c[3];
+      if (springCorrection(p, s, c))
       {
-        continue;
-      }
-      const float f = s.stiffness * (s.rest - len) / len;
-      for (int k = 0; k < 3; ++k)
-      {
-        acc[3 * s.a + k] += s.shareA * f * d[k];
-        acc[3 * s.b + k] -= s.shareB * f * d[k];
+        for (int k = 0; k < 3; ++k)
+        {
+          acc[3 * s.a + k] += s.shareA * c[k];
+          acc[3 * s.b + k] -= s.shareB * c[k];
+        }
       }
     }
     if (method == Restoration::AveragedJacobi)

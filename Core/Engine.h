@@ -136,6 +136,8 @@ private:
   void stepElement(
     std::size_t e, const VectorField& field, double t, double h, std::vector<float>& scratch);
   void advectParticle(const VectorField& field, double t, double h, float p[3]) const;
+  /// The correction of spring s at positions p; false when its ends coincide.
+  static bool springCorrection(const float* p, const SpringWork& s, float c[3]);
   /// K iterations on one element's positions; `acc` holds 3n floats of scratch.
   void restore(float* p, float* acc) const;
   void normalsOf(std::size_t e);
