@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake git
-  paraview paraview-dev python3-paraview
+  paraview paraview-dev python3-paraview python3-numpy libgl1-mesa-dri
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools libqt5svg5-dev libqt5opengl5-dev
   libopenmpi-dev openmpi-bin libutfcpp-dev libglew-dev liblz4-dev libdouble-conversion-dev
   libtiff-dev libnetcdf-dev libgdal-dev libavformat-dev libavcodec-dev
