@@ -336,3 +336,37 @@ TEST(BoundParticleTracer, RecoversAfterBadInput)
   EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 10 * 8);
   EXPECT_EQ(log.messages.size(), 1u);
 }
+
+TEST(BoundParticleTracer, LongReplaysReportProgressAndHonourAbort)
+{
+  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto tracer = tracerOn(source, 50);
+  struct Progress
+  {
+    int events = 0;
+    int abortAfter = -1;
+  } progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void*)
+    {
+      auto* p = static_cast<Progress*>(data);
+      if (++p->events == p->abortAfter)
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    });
+  tracer->AddObserver(vtkCommand::ProgressEvent, onProgress);
+
+  progress.abortAfter = 10;
+  EXPECT_EQ(at(tracer, 8.0)->GetNumberOfPoints(), 0); // aborted: no output
+  EXPECT_LT(progress.events, 14); // stopped at once (the executive adds its own reports)
+
+  tracer->SetAbortExecute(0);
+  progress.abortAfter = -1;
+  progress.events = 0;
+  const std::vector<float> after = pointsOf(at(tracer, 8.0));
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  EXPECT_GT(progress.events, 100); // one report per step of the replay
+  auto fresh = tracerOn(source, 50);
+  EXPECT_EQ(after, pointsOf(at(fresh, 8.0)));
+}
