@@ -478,18 +478,20 @@ double StepSchedule::next(double t) const
   // Grid points are computed from their index, never accumulated, so every run
   // meets the same ones.
   double k = std::floor((t - this->Start) / this->Dt);
-  double candidate = this->Start + k * this->Dt;
-  while (candidate <= limit)
+  double grid = this->Start + k * this->Dt;
+  while (grid <= limit)
   {
     k += 1.0;
-    candidate = this->Start + k * this->Dt;
+    grid = this->Start + k * this->Dt;
   }
+  // A break before the grid point, or within epsilon after it, wins: steps
+  // land exactly on breaks and no sliver step is left on either side.
   const auto it = std::upper_bound(this->Breaks.begin(), this->Breaks.end(), limit);
-  if (it != this->Breaks.end())
+  if (it != this->Breaks.end() && *it <= grid + this->Epsilon)
   {
-    candidate = std::min(candidate, *it);
+    return *it;
   }
-  return candidate;
+  return grid;
 }
 
 double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,

@@ -167,7 +167,8 @@ class StepSchedule
 {
 public:
   StepSchedule(double start, double dt, std::vector<double> breaks);
-  /// The first boundary after t (boundaries closer than epsilon() to t are skipped).
+  /// The first boundary after t. Boundaries closer than epsilon() to t are
+  /// skipped, and a grid point within epsilon() of a break yields the break.
   double next(double t) const;
   double epsilon() const { return this->Epsilon; }
   double start() const { return this->Start; }

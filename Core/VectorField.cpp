@@ -40,6 +40,16 @@ std::string GridGeometry::validate() const
   {
     return "the field has a single point; it needs at least two points along one axis";
   }
+  for (int a = 0; a < 3; ++a)
+  {
+    // Cell indices are computed in float, exact up to 2^24.
+    if (this->dims[a] > (1 << 24))
+    {
+      err << "the field has " << this->dims[a] << " points along axis "
+          << "XYZ"[a] << "; at most 16777216 are supported";
+      return err.str();
+    }
+  }
   return std::string();
 }
 

@@ -18,6 +18,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -89,8 +90,9 @@ struct vtkBoundParticleTracer::vtkInternals
   bool Unsteady = false;
   std::vector<double> InputTimes; // unsteady input's time steps
   std::vector<double> OutputTimes;
-  bp::GridGeometry Grid;
-  std::map<int, bp::FieldSlice> Slices; // by input time index, at most two
+  bp::GridGeometry Grid; // with its origin at 0: the engine works in grid-local coordinates
+  std::array<double, 3> Offset = { 0, 0, 0 }; // world position of the grid's first point
+  std::map<int, bp::FieldSlice> Slices;       // by input time index, at most two
   int RequestIndex = 0;
   bool Continuing = false;
 
@@ -132,11 +134,33 @@ struct vtkBoundParticleTracer::vtkInternals
     return { k, k + 1 };
   }
 
-  /// The slices the next piece of work needs: stepping on, or showing Target.
-  std::vector<int> slicesNeeded(double from) const
+  /// The slices the next piece of work needs: stepping on from `from`, or
+  /// showing `target` once there.
+  std::vector<int> slicesNeeded(double from, double target) const
   {
-    const bool forward = from < this->Target - this->timeEpsilon();
-    return this->slicesFor(forward ? from : this->Target, forward);
+    const bool forward = from < target - this->timeEpsilon();
+    return this->slicesFor(forward ? from : target, forward);
+  }
+
+  /// The requested time, clamped to the time range the filter offers.
+  double targetOf(vtkInformation* outInfo) const
+  {
+    double target = this->StartTime;
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      target = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    }
+    if (!std::isfinite(target))
+    {
+      target = this->StartTime;
+    }
+    return std::min(std::max(target, this->StartTime), this->OutputTimes.back());
+  }
+
+  /// Whether reaching `target` means replaying from the start.
+  bool needsReplay(double target) const
+  {
+    return this->NeedsReset || !this->Valid || target < this->Committed - this->timeEpsilon();
   }
 
   int firstMissing(const std::vector<int>& needed) const
@@ -232,7 +256,8 @@ int vtkBoundParticleTracer::RequestInformation(
     const int count = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
     I.InputTimes.assign(steps, steps + count);
   }
-  I.Unsteady = !I.InputTimes.empty();
+  // One time step is no flow in time: treat it as steady.
+  I.Unsteady = I.InputTimes.size() >= 2;
   I.OutputTimes.clear();
   if (I.Unsteady)
   {
@@ -240,10 +265,11 @@ int vtkBoundParticleTracer::RequestInformation(
   }
   else
   {
-    if (!(this->Duration > 0.0) || this->NumberOfTimeSteps < 2)
+    if (!(this->Duration > 0.0) || !std::isfinite(this->Duration) || this->NumberOfTimeSteps < 2 ||
+      this->NumberOfTimeSteps > 100000)
     {
-      vtkErrorMacro("For a steady input, Duration must be positive and NumberOfTimeSteps at "
-                    "least 2 (they are "
+      vtkErrorMacro("For a steady input, Duration must be positive and finite and "
+                    "NumberOfTimeSteps between 2 and 100000 (they are "
         << this->Duration << " and " << this->NumberOfTimeSteps << ").");
       outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
       outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
@@ -269,35 +295,14 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
 
-  if (!I.Continuing)
+  if (!I.Continuing && !I.OutputTimes.empty())
   {
-    // A new update: plan where it starts.
-    double target = I.StartTime;
-    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    {
-      target = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    }
-    target = std::max(target, I.StartTime);
-    if (I.Unsteady)
-    {
-      target = std::min(target, I.InputTimes.back());
-    }
-    I.Target = target;
-    I.ResetPending = I.NeedsReset || !I.Valid || target < I.Committed - I.timeEpsilon();
-    I.StepsInLastUpdate = 0;
-    I.LastUpdateReplayed = I.ResetPending;
-    if (I.ResetPending)
-    {
-      I.Valid = false;
-      // A steady input's single slice is read again at every reset; an
-      // unsteady input's slices stay valid (the cache was cleared if the
-      // input changed).
-      if (!I.Unsteady)
-      {
-        I.Slices.clear();
-      }
-    }
-    const std::vector<int> needed = I.slicesNeeded(I.ResetPending ? I.StartTime : I.Committed);
+    // A new update. Only choose what to ask upstream for here: the pipeline may
+    // ask for an update extent without executing, so the state changes wait
+    // for RequestData, which makes the same decision.
+    const double target = I.targetOf(outInfo);
+    const bool replay = I.needsReplay(target);
+    const std::vector<int> needed = I.slicesNeeded(replay ? I.StartTime : I.Committed, target);
     const int missing = I.firstMissing(needed);
     I.RequestIndex = missing >= 0 ? missing : needed.back();
   }
@@ -371,9 +376,20 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
     return err.str();
   }
   bp::GridGeometry g;
+  if (!image->GetDirectionMatrix()->IsIdentity())
+  {
+    return "The input image is rotated (its direction matrix is not the identity); Bound "
+           "Particle Tracer needs an axis-aligned grid. Resample it with Resample To Image.";
+  }
+  // Point 0 of an image lies at origin + extent_min * spacing (e.g. after Extract Subset).
+  const int* extent = image->GetExtent();
   image->GetDimensions(g.dims.data());
   image->GetOrigin(g.origin.data());
   image->GetSpacing(g.spacing.data());
+  for (int a = 0; a < 3; ++a)
+  {
+    g.origin[a] += extent[2 * a] * g.spacing[a];
+  }
   auto values = std::make_shared<std::vector<float>>();
   using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
   if (!Dispatch::Execute(vectors, CopyToFloat{}, *values))
@@ -467,6 +483,26 @@ int vtkBoundParticleTracer::RequestData(
     return fail("The filter has no time range; see the previous error.");
   }
 
+  if (!I.Continuing)
+  {
+    // The first pass of an update: replay from the start, or continue.
+    I.Target = I.targetOf(outInfo);
+    I.ResetPending = I.needsReplay(I.Target);
+    I.StepsInLastUpdate = 0;
+    I.LastUpdateReplayed = I.ResetPending;
+    if (I.ResetPending)
+    {
+      I.Valid = false;
+      // A steady input's single slice is read again at every replay; an
+      // unsteady input's slices stay valid (RequestInformation drops them when
+      // the input changes).
+      if (!I.Unsteady)
+      {
+        I.Slices.clear();
+      }
+    }
+  }
+
   // Take the time step this pass asked for.
   if (!I.Slices.count(I.RequestIndex))
   {
@@ -481,11 +517,35 @@ int vtkBoundParticleTracer::RequestData(
       return fail(error);
     }
     slice.time = I.Unsteady ? I.InputTimes[I.RequestIndex] : 0.0;
-    if (!I.Slices.empty() && grid.dims != I.Grid.dims)
+    if (I.Unsteady && input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
     {
-      return fail("The input's time steps do not share one grid; every time step must have "
-                  "the same dimensions.");
+      const double delivered = input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+      if (std::abs(delivered - slice.time) > I.timeEpsilon())
+      {
+        vtkWarningMacro("Asked the input for time " << slice.time << " but it delivered time "
+                                                    << delivered << "; using it as time "
+                                                    << slice.time << ".");
+      }
     }
+    if (!I.Slices.empty())
+    {
+      const double tolerance = 1e-9 * std::max(1.0, I.Grid.diagonal());
+      bool same = grid.dims == I.Grid.dims;
+      for (int a = 0; a < 3; ++a)
+      {
+        same = same && std::abs(grid.spacing[a] - I.Grid.spacing[a]) <= tolerance &&
+          std::abs(grid.origin[a] - I.Offset[a]) <= tolerance;
+      }
+      if (!same)
+      {
+        return fail("The input's time steps do not share one grid; every time step must have "
+                    "the same dimensions, origin and spacing.");
+      }
+    }
+    // The engine works in coordinates relative to the grid's first point, so
+    // float positions keep their precision far from the world origin.
+    I.Offset = grid.origin;
+    grid.origin = { 0.0, 0.0, 0.0 };
     I.Grid = grid;
     const std::string gridError = grid.validate();
     if (!gridError.empty())
@@ -510,7 +570,7 @@ int vtkBoundParticleTracer::RequestData(
 
   if (I.ResetPending)
   {
-    const std::vector<int> ids = I.slicesNeeded(I.StartTime);
+    const std::vector<int> ids = I.slicesNeeded(I.StartTime, I.Target);
     const int missing = I.firstMissing(ids);
     if (missing >= 0)
     {
@@ -551,14 +611,22 @@ int vtkBoundParticleTracer::RequestData(
     p.elementSize = float(I.ResolvedElementSize);
     for (int a = 0; a < 3; ++a)
     {
+      // The user's box is in world coordinates; the engine's is grid-local.
       const bool whole = this->EmitterSize[a] < 0.0;
-      const double lo = whole ? bounds[2 * a] : this->EmitterCenter[a] - 0.5 * this->EmitterSize[a];
-      const double hi =
-        whole ? bounds[2 * a + 1] : this->EmitterCenter[a] + 0.5 * this->EmitterSize[a];
+      const double center = this->EmitterCenter[a] - I.Offset[a];
+      const double lo = whole ? bounds[2 * a] : center - 0.5 * this->EmitterSize[a];
+      const double hi = whole ? bounds[2 * a + 1] : center + 0.5 * this->EmitterSize[a];
       p.emitterMin[a] = float(lo);
       p.emitterMax[a] = float(hi);
     }
     p.randomOrientation = this->RandomOrientation != 0;
+    for (double angle : this->ElementRotation)
+    {
+      if (!std::isfinite(angle))
+      {
+        return fail("ElementRotation must be finite.");
+      }
+    }
     p.frame = bp::rotationFromDegrees(
       this->ElementRotation[0], this->ElementRotation[1], this->ElementRotation[2]);
     double lifetime[2] = { this->LifetimeRange[0], this->LifetimeRange[1] };
@@ -607,7 +675,7 @@ int vtkBoundParticleTracer::RequestData(
   const bp::RangeRunner run = smpRunner();
   while (true)
   {
-    const std::vector<int> ids = I.slicesNeeded(I.Committed);
+    const std::vector<int> ids = I.slicesNeeded(I.Committed, I.Target);
     const int missing = I.firstMissing(ids);
     if (missing >= 0)
     {
@@ -619,6 +687,7 @@ int vtkBoundParticleTracer::RequestData(
     const bp::VectorField field = I.field(ids);
     const double intervalEnd = ids.size() == 2 ? I.InputTimes[ids[1]] : I.Target;
     const double limit = std::min(I.Target, intervalEnd);
+    const double before = I.Committed;
     I.Committed = bp::advance(I.Engine, field, *I.Schedule, I.Committed, limit, run, keepGoing);
     if (aborted)
     {
@@ -630,6 +699,12 @@ int vtkBoundParticleTracer::RequestData(
     if (limit >= I.Target || I.Committed < intervalEnd - I.Schedule->epsilon())
     {
       break;
+    }
+    if (I.Committed == before)
+    {
+      // Never spin: the schedule lands on every data time step, so this is a bug.
+      return fail("Time stepping made no progress at t = " + std::to_string(before) +
+        "; please report this with the input's time steps.");
     }
   }
   I.Continuing = false;
@@ -656,10 +731,33 @@ int vtkBoundParticleTracer::RequestData(
   const std::size_t E = engine.elementCount(), n = engine.particlesPerElement();
   const vtkIdType N = vtkIdType(engine.particleCount());
 
+  // World positions: grid-local ones plus the grid's offset, in double where
+  // float would lose more than 1e-4 of a cell at the field's coordinates.
   vtkNew<vtkPoints> points;
-  auto coords = floatArray("Points", 3, N);
-  std::memcpy(coords->GetPointer(0), engine.positions().data(), sizeof(float) * 3 * N);
-  points->SetData(coords);
+  double reach = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    reach = std::max(reach, std::abs(I.Offset[a]) + std::abs(I.Grid.bounds()[2 * a + 1]));
+  }
+  if (reach * std::ldexp(1.0, -23) > 1e-4 * I.Grid.cellLength())
+  {
+    points->SetDataTypeToDouble();
+  }
+  points->SetNumberOfPoints(N);
+  vtkDataArray* coords = points->GetData();
+  const float* local = engine.positions().data();
+  const double offset[3] = { I.Offset[0], I.Offset[1], I.Offset[2] };
+  vtkSMPTools::For(vtkIdType(0), N,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType id = begin; id < end; ++id)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          coords->SetComponent(id, c, double(local[3 * id + c]) + offset[c]);
+        }
+      }
+    });
   output->SetPoints(points);
 
   if (!I.Cells || I.CellsElements != E || I.CellsShape != this->ElementShape)
@@ -712,7 +810,7 @@ int vtkBoundParticleTracer::RequestData(
       for (vtkIdType e = begin; e < end; ++e)
       {
         const float* c = engine.initialCenters().data() + 3 * e;
-        const float lay = c[axis];
+        const float lay = float(double(c[axis]) + I.Offset[axis]);
         const float rad = float(std::hypot(c[u] - cu, c[v] - cv));
         const float life = engine.lifetimes()[e];
         for (std::size_t i = 0; i < n; ++i)

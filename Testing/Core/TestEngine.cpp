@@ -357,3 +357,23 @@ TEST(StepSchedule, ForwardInPiecesEqualsAFreshRun)
   EXPECT_NEAR(schedule.next(0.5), 0.51, 1e-12);
   EXPECT_NEAR(schedule.next(0.03 - 1e-12), 0.06, 1e-12);
 }
+
+TEST(StepSchedule, BreaksNearGridPointsAreLandedOnExactly)
+{
+  // Time steps stored as float32 sit a hair off the grid of a step that
+  // divides them; the steps must land on the breaks themselves.
+  std::vector<double> breaks;
+  for (int k = 0; k <= 10; ++k)
+    breaks.push_back(double(0.1f * float(k)));
+  const bp::StepSchedule schedule(0.0, 0.1, breaks);
+  double t = 0.0;
+  for (int k = 1; k <= 10; ++k)
+  {
+    t = schedule.next(t);
+    EXPECT_EQ(t, breaks[k]) << k;
+  }
+  // A break just after a grid point: one step onto the break, none left over.
+  const bp::StepSchedule near(0.0, 0.3, { 0.0, 0.9000001, 2.0 });
+  EXPECT_NEAR(near.next(0.6), 0.9000001, 1e-15);
+  EXPECT_NEAR(near.next(0.9000001), 1.2, 1e-12);
+}

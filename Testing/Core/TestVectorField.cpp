@@ -98,6 +98,9 @@ TEST(VectorField, ValidateRejectsBadFields)
   bp::GridGeometry one;
   one.dims = { 1, 1, 1 };
   EXPECT_NE(one.validate().find("single point"), std::string::npos);
+  bp::GridGeometry huge = bptest::grid(4);
+  huge.dims[0] = (1 << 24) + 4;
+  EXPECT_NE(huge.validate().find("at most"), std::string::npos);
   bp::GridGeometry empty;
   EXPECT_NE(empty.validate().find("no points"), std::string::npos);
 

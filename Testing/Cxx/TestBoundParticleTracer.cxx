@@ -8,9 +8,13 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkImageAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMatrix3x3.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -22,6 +26,58 @@
 #include <cmath>
 #include <string>
 #include <vector>
+
+/// A uniform flow along +x whose time steps are float32 values (0.1f k), as
+/// many files store them: they sit a hair off a 0.1 step grid.
+class vtkFloatTimesSource : public vtkImageAlgorithm
+{
+public:
+  static vtkFloatTimesSource* New();
+  vtkTypeMacro(vtkFloatTimesSource, vtkImageAlgorithm);
+  int Steps = 11;
+  double Origin = 0.0;
+
+protected:
+  vtkFloatTimesSource() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkInformation* info = out->GetInformationObject(0);
+    const int extent[6] = { 0, 10, 0, 10, 0, 10 };
+    const double origin[3] = { this->Origin, this->Origin, this->Origin };
+    const double spacing[3] = { 0.1, 0.1, 0.1 };
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    info->Set(vtkDataObject::ORIGIN(), origin, 3);
+    info->Set(vtkDataObject::SPACING(), spacing, 3);
+    std::vector<double> times;
+    for (int k = 0; k < this->Steps; ++k)
+      times.push_back(double(0.1f * float(k)));
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), int(times.size()));
+    const double range[2] = { times.front(), times.back() };
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    return 1;
+  }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkInformation* info = out->GetInformationObject(0);
+    vtkImageData* image = vtkImageData::GetData(info);
+    image->SetExtent(0, 10, 0, 10, 0, 10);
+    image->SetOrigin(this->Origin, this->Origin, this->Origin);
+    image->SetSpacing(0.1, 0.1, 0.1);
+    vtkNew<vtkFloatArray> v;
+    v->SetName("v");
+    v->SetNumberOfComponents(3);
+    v->SetNumberOfTuples(image->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+      v->SetTuple3(i, 0.1, 0.0, 0.0);
+    image->GetPointData()->SetVectors(v);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+      image->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
+        info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
+    return 1;
+  }
+};
+vtkStandardNewMacro(vtkFloatTimesSource);
 
 namespace
 {
@@ -369,4 +425,119 @@ TEST(BoundParticleTracer, LongReplaysReportProgressAndHonourAbort)
   EXPECT_GT(progress.events, 100); // one report per step of the replay
   auto fresh = tracerOn(source, 50);
   EXPECT_EQ(after, pointsOf(at(fresh, 8.0)));
+}
+
+TEST(BoundParticleTracer, Float32TimeStepsDoNotStall)
+{
+  // A step of 0.1 in time units divides the float32 time steps' intervals
+  // only approximately; stepping must land on each time step and go on.
+  vtkNew<vtkFloatTimesSource> source;
+  auto tracer = tracerOn(source, 20);
+  tracer->SetStepSizeUnit(vtkBoundParticleTracer::TIME);
+  tracer->SetStepSize(0.1);
+  tracer->SetElementSize(0.1);
+  tracer->SetLifetimeRange(100, 100);
+  for (int k = 1; k <= 10; ++k)
+  {
+    const double t = double(0.1f * float(k));
+    EXPECT_EQ(at(tracer, t)->GetNumberOfPoints(), 20 * 8) << t;
+    EXPECT_LE(tracer->GetStepsInLastUpdate(), 2) << t;
+  }
+}
+
+TEST(BoundParticleTracer, FarFromTheOriginKeepsPrecision)
+{
+  // v = (0.1, 0, 0) on a grid a million units from the origin: after 0.5 time
+  // units every particle has moved 0.05 along x, as near the origin.
+  std::vector<double> moved;
+  for (double origin : { 0.0, 1.0e6 })
+  {
+    vtkNew<vtkFloatTimesSource> source;
+    source->Origin = origin;
+    auto tracer = tracerOn(source, 10);
+    tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+    tracer->SetEmitterCenter(origin + 0.3, origin + 0.5, origin + 0.5);
+    tracer->SetEmitterSize(0.2, 0.2, 0.2);
+    tracer->SetLifetimeRange(100, 100);
+    vtkPolyData* start = at(tracer, 0.0);
+    const double x0 = start->GetPoint(3)[0];
+    EXPECT_GT(x0, origin + 0.19);
+    vtkPolyData* end = at(tracer, double(0.1f * 5.0f));
+    moved.push_back(end->GetPoint(3)[0] - x0);
+    if (origin > 0)
+      EXPECT_EQ(end->GetPoints()->GetDataType(), VTK_DOUBLE);
+    else
+      EXPECT_EQ(end->GetPoints()->GetDataType(), VTK_FLOAT);
+  }
+  EXPECT_NEAR(moved[0], 0.05, 1e-5);
+  EXPECT_NEAR(moved[1], 0.05, 1e-5);
+}
+
+TEST(BoundParticleTracer, ImagesWithAnOffsetExtentAreWhereTheySay)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetExtent(10, 20, 0, 10, 0, 10); // points at x in [1, 2]
+  img->SetSpacing(0.1, 0.1, 0.1);
+  img->GetPointData()->SetVectors(array("v", 3, 11 * 11 * 11, 0.0f));
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(img);
+  auto tracer = tracerOn(producer, 100);
+  tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+  double b[6];
+  at(tracer, 0.0)->GetBounds(b);
+  EXPECT_GE(b[0], 1.0 - 1e-6);
+  EXPECT_LE(b[1], 2.0 + 1e-6);
+
+  auto rotated = image(5, 5, 5);
+  rotated->GetPointData()->SetVectors(array("v", 3, 125, 1.0f));
+  const double turn[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
+  rotated->SetDirectionMatrix(turn);
+  expectRejected(rotated, "rotated");
+}
+
+TEST(BoundParticleTracer, SingleTimeStepIsSteadyAndTimeIsClamped)
+{
+  vtkNew<vtkFloatTimesSource> source;
+  source->Steps = 1;
+  auto tracer = tracerOn(source, 10);
+  tracer->SetDuration(3.0);
+  tracer->SetNumberOfTimeSteps(4);
+  tracer->UpdateInformation();
+  EXPECT_EQ(
+    tracer->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 4);
+  const std::vector<float> start = pointsOf(at(tracer, 0.0));
+  EXPECT_NE(start, pointsOf(at(tracer, 1.0)));
+  // Far past the range: the state at its end, not an ever longer run.
+  at(tracer, 1.0e6);
+  EXPECT_DOUBLE_EQ(tracer->GetSimulationTime(), 3.0);
+}
+
+TEST(BoundParticleTracer, NonFiniteSettingsAreRejected)
+{
+  auto good = image(5, 5, 5);
+  good->GetPointData()->SetVectors(array("v", 3, 125, 1.0f));
+  expectRejected(good, "ElementRotation",
+    [](vtkBoundParticleTracer* t)
+    {
+      t->SetRandomOrientation(0);
+      t->SetElementRotation(std::nan(""), 0, 0);
+    });
+  expectRejected(good, "Duration", [](vtkBoundParticleTracer* t) { t->SetDuration(INFINITY); });
+  expectRejected(good, "emitter",
+    [](vtkBoundParticleTracer* t)
+    {
+      t->SetEmitterCenter(std::nan(""), 0, 0);
+      t->SetEmitterSize(1, 1, 1);
+    });
+}
+
+TEST(BoundParticleTracer, AnUpdateExtentWithoutDataDoesNotReplay)
+{
+  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER, 12);
+  auto tracer = tracerOn(source, 20);
+  at(tracer, 1.0);
+  tracer->GetOutputInformation(0)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), 0.2);
+  tracer->PropagateUpdateExtent();
+  at(tracer, 3.0);
+  EXPECT_FALSE(tracer->GetLastUpdateReplayed());
 }
