@@ -352,7 +352,8 @@ void Engine::stepElement(
 
   bool finite = true;
   float* force = this->Forces.data() + e * n;
-  double c[3] = { 0, 0, 0 };
+  // Summed in float, particle by particle, as the GPU engine sums it.
+  float c[3] = { 0, 0, 0 };
   bool anyOutside = false;
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -381,7 +382,8 @@ void Engine::stepElement(
   }
   else
   {
-    const float center[3] = { float(c[0] / n), float(c[1] / n), float(c[2] / n) };
+    const float count = float(n);
+    const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
     leave = !field.contains(center);
   }
   this->ResetFlags[e] = leave ? 1 : 0;

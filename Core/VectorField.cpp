@@ -188,8 +188,27 @@ void VectorField::sampleSlice(const float* data, const float p[3], float v[3]) c
   }
 }
 
+VectorField::SamplingConstants VectorField::samplingConstants() const
+{
+  SamplingConstants c;
+  for (int a = 0; a < 3; ++a)
+  {
+    c.origin[a] = this->Origin[a];
+    c.inverseSpacing[a] = this->InverseSpacing[a];
+    c.maxIndex[a] = this->MaxIndex[a];
+    c.lower[a] = this->Lower[a];
+    c.upper[a] = this->Upper[a];
+    c.degenerate[a] = this->Degenerate[a];
+  }
+  return c;
+}
+
 float VectorField::timeWeight(double t) const
 {
+  if (!this->Second.velocity)
+  {
+    return 0.0f;
+  }
   const double w = (t - this->First.time) / (this->Second.time - this->First.time);
   return float(std::min(std::max(w, 0.0), 1.0));
 }

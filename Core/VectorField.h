@@ -69,9 +69,23 @@ public:
   /// Empty when every value of every slice is finite and the slices match the grid.
   std::string validate() const;
 
+  const FieldSlice& firstSlice() const { return this->First; }
+  const FieldSlice& secondSlice() const { return this->Second; }
+
+  /// Weight of the second slice at time t (0 for a steady field).
+  float timeWeight(double t) const;
+
+  /// The float constants sampling and the bounds test use, so that another
+  /// implementation (the GPU engine) computes with the very same numbers.
+  struct SamplingConstants
+  {
+    float origin[3], inverseSpacing[3], maxIndex[3], lower[3], upper[3];
+    bool degenerate[3];
+  };
+  SamplingConstants samplingConstants() const;
+
 private:
   void sampleSlice(const float* data, const float p[3], float v[3]) const;
-  float timeWeight(double t) const;
 
   GridGeometry Grid;
   FieldSlice First;

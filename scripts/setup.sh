@@ -11,6 +11,7 @@ PACKAGES=(
   libtiff-dev libnetcdf-dev libgdal-dev libavformat-dev libavcodec-dev
   libavutil-dev libswscale-dev libgl2ps-dev libtheora-dev libeigen3-dev
   libgtest-dev xvfb xauth
+  libepoxy-dev libegl-dev libegl-mesa0
 )
 
 missing=()

@@ -1,0 +1,627 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "GpuEngine.h"
+
+#include "BoundParticlesShaders.h" // generated from Shaders/
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+namespace
+{
+GLuint makeTexture2D(int width, int height, const float* data = nullptr)
+{
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, data);
+  return t;
+}
+
+/// Packs a list of RGBA texels into a texture `width` texels wide.
+GLuint makeListTexture(const std::vector<float>& rgba, int width)
+{
+  const int count = std::max<int>(1, int(rgba.size() / 4));
+  const int height = (count + width - 1) / width;
+  std::vector<float> padded(std::size_t(width) * height * 4, 0.0f);
+  std::copy(rgba.begin(), rgba.end(), padded.begin());
+  return makeTexture2D(width, height, padded.data());
+}
+
+std::string compile(GLenum type, const std::string& source, GLuint& shader)
+{
+  shader = glCreateShader(type);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok)
+  {
+    return std::string();
+  }
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(std::size_t(std::max(length, 1)), '\0');
+  glGetShaderInfoLog(shader, length, nullptr, &log[0]);
+  return log;
+}
+} // namespace
+
+struct GpuEngine::Internals
+{
+  ElementTemplate Shape;
+  Parameters Params;
+  int E = 0, n = 0;
+  int W = 0, H = 0;     // element grid
+  int BlocksPerRow = 0; // bx
+  int PW = 0, PH = 0;   // particle texture
+  int SpringsWidth = 2, TrianglesWidth = 1;
+  int SizeLimit = 1 << 30;
+
+  GLuint Vao = 0, Fbo = 0;
+  GLuint Reset = 0, Advect = 0, Restore = 0, Test = 0, Finalize = 0, Normals = 0;
+  GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
+  int Cur = 0; // current element textures
+  GLuint State[2] = { 0, 0 };
+  int S = 0; // current particle state texture
+  GLuint Advected = 0, Before = 0, Restored[2] = { 0, 0 }, NormalsTex = 0;
+  GLuint Rest = 0, ParticleInfo = 0, Springs = 0, Triangles = 0;
+
+  GLuint FieldTex[2] = { 0, 0 };
+  const void* FieldData[2] = { nullptr, nullptr };
+  const VectorField* Field = nullptr;
+  std::unique_ptr<VectorField> FieldCopy;
+
+  std::string program(const char* fragment, GLuint& out)
+  {
+    const std::string header = "#version 330 core\n";
+    GLuint vs = 0, fs = 0;
+    std::string error = compile(GL_VERTEX_SHADER, header + bpShaderFullscreenVert, vs);
+    if (error.empty())
+    {
+      error = compile(GL_FRAGMENT_SHADER, header + bpShaderCommon + fragment, fs);
+    }
+    if (!error.empty())
+    {
+      glDeleteShader(vs);
+      glDeleteShader(fs);
+      return "a GPU engine shader does not compile: " + error;
+    }
+    out = glCreateProgram();
+    glAttachShader(out, vs);
+    glAttachShader(out, fs);
+    glLinkProgram(out);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(out, GL_LINK_STATUS, &ok);
+    if (!ok)
+    {
+      char log[2048] = { 0 };
+      glGetProgramInfoLog(out, sizeof(log) - 1, nullptr, log);
+      return std::string("a GPU engine program does not link: ") + log;
+    }
+    return std::string();
+  }
+
+  // Uniforms are looked up by name: a pass ignores those it does not use.
+  static void setInt(GLuint p, const char* name, int v)
+  {
+    glUniform1i(glGetUniformLocation(p, name), v);
+  }
+  static void setFloat(GLuint p, const char* name, float v)
+  {
+    glUniform1f(glGetUniformLocation(p, name), v);
+  }
+  static void setVec3(GLuint p, const char* name, const float* v)
+  {
+    glUniform3f(glGetUniformLocation(p, name), v[0], v[1], v[2]);
+  }
+
+  int Unit = 0;
+  void bind(GLuint p, const char* name, GLuint texture, GLenum target = GL_TEXTURE_2D)
+  {
+    glActiveTexture(GLenum(GL_TEXTURE0 + this->Unit));
+    glBindTexture(target, texture);
+    setInt(p, name, this->Unit);
+    ++this->Unit;
+  }
+
+  /// Uses program p with the uniforms every pass shares.
+  void use(GLuint p)
+  {
+    glUseProgram(p);
+    this->Unit = 0;
+    const int grid[2] = { this->W, this->H };
+    glUniform2i(glGetUniformLocation(p, "bpElementGrid"), grid[0], grid[1]);
+    setInt(p, "bpBlocksPerRow", this->BlocksPerRow);
+    setInt(p, "bpElements", this->E);
+    setInt(p, "bpParticles", this->n);
+    glUniform1ui(glGetUniformLocation(p, "bpSeed"), this->Params.seed);
+    setVec3(p, "bpEmitterMin", this->Params.emitterMin.data());
+    setVec3(p, "bpEmitterMax", this->Params.emitterMax.data());
+    setFloat(p, "bpElementSize", this->Params.elementSize);
+    setInt(p, "bpRandomOrientation", this->Params.randomOrientation ? 1 : 0);
+    setVec3(p, "bpFrameRow0", this->Params.frame.data());
+    setVec3(p, "bpFrameRow1", this->Params.frame.data() + 3);
+    setVec3(p, "bpFrameRow2", this->Params.frame.data() + 6);
+    setFloat(p, "bpLifetimeMin", this->Params.lifetimeMin);
+    setFloat(p, "bpLifetimeMax", this->Params.lifetimeMax);
+    if (this->Field)
+    {
+      const VectorField::SamplingConstants c = this->Field->samplingConstants();
+      setVec3(p, "bpOrigin", c.origin);
+      setVec3(p, "bpInverseSpacing", c.inverseSpacing);
+      setVec3(p, "bpMaxIndex", c.maxIndex);
+      setVec3(p, "bpLower", c.lower);
+      setVec3(p, "bpUpper", c.upper);
+      glUniform3i(glGetUniformLocation(p, "bpNextCorner"), c.degenerate[0] ? 0 : 1,
+        c.degenerate[1] ? 0 : 1, c.degenerate[2] ? 0 : 1);
+      glUniform3i(
+        glGetUniformLocation(p, "bpDegenerate"), c.degenerate[0], c.degenerate[1], c.degenerate[2]);
+      setInt(p, "bpUnsteady", this->Field->isSteady() ? 0 : 1);
+      this->bind(p, "bpField0", this->FieldTex[0], GL_TEXTURE_3D);
+      this->bind(p, "bpField1", this->FieldTex[this->Field->isSteady() ? 0 : 1], GL_TEXTURE_3D);
+    }
+  }
+
+  /// Draws the full-screen triangle into the given targets.
+  void run(std::initializer_list<GLuint> targets, int width, int height)
+  {
+    glBindFramebuffer(GL_FRAMEBUFFER, this->Fbo);
+    GLenum buffers[4];
+    int k = 0;
+    for (GLuint t : targets)
+    {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D, t, 0);
+      buffers[k] = GLenum(GL_COLOR_ATTACHMENT0 + k);
+      ++k;
+    }
+    for (int j = k; j < 2; ++j)
+    {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + j), GL_TEXTURE_2D, 0, 0);
+    }
+    glDrawBuffers(k, buffers);
+    glViewport(0, 0, width, height);
+    glBindVertexArray(this->Vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  void readTexture(GLuint texture, int width, int height, std::vector<float>& out) const
+  {
+    glBindFramebuffer(GL_FRAMEBUFFER, this->Fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    out.resize(std::size_t(width) * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out.data());
+  }
+
+  std::size_t particleTexel(int e, int i) const
+  {
+    const int bx = i % this->BlocksPerRow, by = i / this->BlocksPerRow;
+    const int x = bx * this->W + e % this->W, y = by * this->H + e / this->W;
+    return std::size_t(y) * this->PW + x;
+  }
+
+  void deleteAll()
+  {
+    GLuint textures[] = { this->ElementState[0], this->ElementState[1], this->Centers[0],
+      this->Centers[1], this->State[0], this->State[1], this->Advected, this->Before,
+      this->Restored[0], this->Restored[1], this->NormalsTex, this->Rest, this->ParticleInfo,
+      this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1] };
+    for (GLuint t : textures)
+    {
+      if (t)
+      {
+        glDeleteTextures(1, &t);
+      }
+    }
+    for (GLuint p :
+      { this->Reset, this->Advect, this->Restore, this->Test, this->Finalize, this->Normals })
+    {
+      if (p)
+      {
+        glDeleteProgram(p);
+      }
+    }
+    if (this->Fbo)
+    {
+      glDeleteFramebuffers(1, &this->Fbo);
+    }
+    if (this->Vao)
+    {
+      glDeleteVertexArrays(1, &this->Vao);
+    }
+    *this = Internals();
+  }
+
+  Internals() = default;
+  Internals& operator=(Internals&&) = default;
+};
+
+GpuEngine::GpuEngine()
+  : I(new Internals)
+{
+}
+
+GpuEngine::~GpuEngine() = default;
+
+int GpuEngine::particleTextureWidth() const
+{
+  return this->I->PW;
+}
+
+int GpuEngine::particleTextureHeight() const
+{
+  return this->I->PH;
+}
+
+void GpuEngine::release()
+{
+  const int limit = this->I->SizeLimit;
+  this->I->deleteAll();
+  this->I->SizeLimit = limit;
+}
+
+void GpuEngine::setTextureSizeLimit(int texels)
+{
+  this->I->SizeLimit = texels;
+}
+
+std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters& p)
+{
+  // The same checks as the CPU engine, then the GPU's own limits.
+  Engine reference;
+  const std::string error = reference.configure(shape, p);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (p.restoration == Restoration::GaussSeidel)
+  {
+    return "Gauss-Seidel restoration runs on the CPU engine only";
+  }
+  this->release();
+  Internals& S = *this->I;
+  S.Shape = shape;
+  S.Params = p;
+  S.E = int(p.numberOfElements);
+  S.n = int(shape.particleCount());
+  S.W = int(std::ceil(std::sqrt(double(S.E))));
+  S.H = (S.E + S.W - 1) / S.W;
+  S.BlocksPerRow = int(std::ceil(std::sqrt(double(S.n) * S.H / S.W)));
+  S.BlocksPerRow = std::max(1, std::min(S.BlocksPerRow, S.n));
+  S.PW = S.BlocksPerRow * S.W;
+  S.PH = ((S.n + S.BlocksPerRow - 1) / S.BlocksPerRow) * S.H;
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  maxSize = std::min<GLint>(maxSize, S.SizeLimit);
+  if (S.PW > maxSize || S.PH > maxSize)
+  {
+    std::ostringstream err;
+    err << p.numberOfElements << " elements of " << S.n << " particles need a " << S.PW << " x "
+        << S.PH << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " << maxSize;
+    const int limit = S.SizeLimit;
+    S = Internals();
+    S.SizeLimit = limit;
+    return err.str();
+  }
+
+  for (auto pass :
+    { std::make_pair(bpShaderResetFrag, &S.Reset), std::make_pair(bpShaderAdvectFrag, &S.Advect),
+      std::make_pair(bpShaderRestoreFrag, &S.Restore), std::make_pair(bpShaderTestFrag, &S.Test),
+      std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
+      std::make_pair(bpShaderNormalsFrag, &S.Normals) })
+  {
+    const std::string programError = S.program(pass.first, *pass.second);
+    if (!programError.empty())
+    {
+      this->release();
+      return programError;
+    }
+  }
+  glGenVertexArrays(1, &S.Vao);
+  glGenFramebuffers(1, &S.Fbo);
+  for (int k = 0; k < 2; ++k)
+  {
+    S.ElementState[k] = makeTexture2D(S.W, S.H);
+    S.Centers[k] = makeTexture2D(S.W, S.H);
+    S.State[k] = makeTexture2D(S.PW, S.PH);
+    S.Restored[k] = makeTexture2D(S.PW, S.PH);
+  }
+  S.Advected = makeTexture2D(S.PW, S.PH);
+  S.Before = makeTexture2D(S.PW, S.PH);
+  S.NormalsTex = makeTexture2D(S.PW, S.PH);
+
+  // The template: rest positions, per-particle spring and triangle lists in
+  // index order (so sums run in the CPU engine's order), spring parameters.
+  std::vector<float> rest, info(std::size_t(S.n) * 2 * 4, 0.0f), springs, triangles;
+  std::vector<int> degree(S.n, 0);
+  std::vector<std::uint8_t> pinned(S.n, 0);
+  if (!shape.pinned.empty())
+  {
+    pinned = shape.pinned;
+  }
+  for (const Spring& s : shape.springs)
+  {
+    ++degree[s.a];
+    ++degree[s.b];
+  }
+  for (int i = 0; i < S.n; ++i)
+  {
+    rest.insert(rest.end(), { shape.rest[i][0], shape.rest[i][1], shape.rest[i][2], 0.0f });
+    float* row0 = &info[4 * i];
+    row0[0] = float(springs.size() / 8);
+    for (const Spring& s : shape.springs)
+    {
+      if (s.a != std::uint32_t(i) && s.b != std::uint32_t(i))
+      {
+        continue;
+      }
+      const bool pa = pinned[s.a] != 0, pb = pinned[s.b] != 0;
+      const float shareA = pa ? 0.0f : (pb ? 1.0f : 0.5f);
+      const float shareB = pb ? 0.0f : (pa ? 1.0f : 0.5f);
+      const float share = s.a == std::uint32_t(i) ? shareA : -shareB;
+      springs.insert(springs.end(),
+        { float(s.a), float(s.b), share, 0.0f, s.restLength * p.elementSize, s.stiffness, 0.0f,
+          0.0f });
+    }
+    row0[1] = float(springs.size() / 8) - row0[0];
+    row0[2] = degree[i] > 0 ? 1.0f / float(degree[i]) : 0.0f;
+    row0[3] = pinned[i] ? 1.0f : 0.0f;
+    float* row1 = &info[4 * (S.n + i)];
+    row1[0] = float(triangles.size() / 4);
+    for (const auto& t : shape.triangles)
+    {
+      if (t[0] == std::uint32_t(i) || t[1] == std::uint32_t(i) || t[2] == std::uint32_t(i))
+      {
+        triangles.insert(triangles.end(), { float(t[0]), float(t[1]), float(t[2]), 0.0f });
+      }
+    }
+    row1[1] = float(triangles.size() / 4) - row1[0];
+  }
+  S.Rest = makeTexture2D(S.n, 1, rest.data());
+  S.ParticleInfo = makeTexture2D(S.n, 2, info.data());
+  S.SpringsWidth = int(std::min<std::size_t>(std::max<std::size_t>(springs.size() / 4, 2), 4096));
+  S.SpringsWidth += S.SpringsWidth % 2;
+  S.Springs = makeListTexture(springs, S.SpringsWidth);
+  S.TrianglesWidth =
+    int(std::min<std::size_t>(std::max<std::size_t>(triangles.size() / 4, 1), 4096));
+  S.Triangles = makeListTexture(triangles, S.TrianglesWidth);
+  if (glGetError() != GL_NO_ERROR)
+  {
+    this->release();
+    return "the GPU could not create the engine's float textures (RGBA32F render targets)";
+  }
+  return std::string();
+}
+
+std::string GpuEngine::setField(const VectorField& field)
+{
+  Internals& S = *this->I;
+  S.FieldCopy.reset(new VectorField(field));
+  S.Field = S.FieldCopy.get();
+  const GridGeometry& g = field.grid();
+  GLint max3D = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+  for (int a = 0; a < 3; ++a)
+  {
+    if (g.dims[a] > max3D)
+    {
+      std::ostringstream err;
+      err << "the field's " << g.dims[a] << " points along axis "
+          << "XYZ"[a] << " exceed this GPU's GL_MAX_3D_TEXTURE_SIZE of " << max3D;
+      return err.str();
+    }
+  }
+  const FieldSlice* slices[2] = { &field.firstSlice(), &field.secondSlice() };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!slices[k]->velocity || S.FieldData[k] == slices[k]->velocity.get())
+    {
+      continue;
+    }
+    const std::vector<float>& v = *slices[k]->velocity;
+    std::vector<float> rgba(g.pointCount() * 4);
+    for (std::size_t i = 0; i < g.pointCount(); ++i)
+    {
+      rgba[4 * i] = v[3 * i];
+      rgba[4 * i + 1] = v[3 * i + 1];
+      rgba[4 * i + 2] = v[3 * i + 2];
+      rgba[4 * i + 3] = 0.0f;
+    }
+    if (!S.FieldTex[k])
+    {
+      glGenTextures(1, &S.FieldTex[k]);
+    }
+    glBindTexture(GL_TEXTURE_3D, S.FieldTex[k]);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, g.dims[0], g.dims[1], g.dims[2], 0, GL_RGBA,
+      GL_FLOAT, rgba.data());
+    S.FieldData[k] = slices[k]->velocity.get();
+  }
+  return glGetError() == GL_NO_ERROR ? std::string()
+                                     : std::string("the GPU could not hold the field's time steps");
+}
+
+void GpuEngine::initialize()
+{
+  Internals& S = *this->I;
+  // Place every element as generation 0 ...
+  S.use(S.Reset);
+  S.bind(S.Reset, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Reset, "bpCenters", S.Centers[S.Cur]);
+  Internals::setInt(S.Reset, "bpInitialize", 1);
+  S.run({ S.ElementState[1 - S.Cur], S.Centers[1 - S.Cur] }, S.W, S.H);
+  S.Cur = 1 - S.Cur;
+  S.use(S.Advect);
+  S.bind(S.Advect, "bpState", S.State[S.S]);
+  S.bind(S.Advect, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Advect, "bpRest", S.Rest);
+  S.bind(S.Advect, "bpParticleInfo", S.ParticleInfo);
+  Internals::setInt(S.Advect, "bpPlaceOnly", 1);
+  S.run({ S.Advected, S.Before }, S.PW, S.PH);
+  // ... with no flag set and zero force, as Engine::initialize leaves them.
+  S.use(S.Test);
+  S.bind(S.Test, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Test, "bpPositions", S.Advected);
+  Internals::setInt(S.Test, "bpSettleOnly", 1);
+  S.run({ S.ElementState[1 - S.Cur] }, S.W, S.H);
+  S.Cur = 1 - S.Cur;
+  S.use(S.Finalize);
+  S.bind(S.Finalize, "bpRestored", S.Advected);
+  S.bind(S.Finalize, "bpAdvected", S.Advected);
+  S.bind(S.Finalize, "bpBefore", S.Before);
+  S.bind(S.Finalize, "bpElementState", S.ElementState[S.Cur]);
+  S.run({ S.State[1 - S.S] }, S.PW, S.PH);
+  S.S = 1 - S.S;
+  this->updateNormals();
+}
+
+void GpuEngine::step(double t, double h)
+{
+  Internals& S = *this->I;
+  const Parameters& P = S.Params;
+  // 1. Reset.
+  S.use(S.Reset);
+  S.bind(S.Reset, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Reset, "bpCenters", S.Centers[S.Cur]);
+  Internals::setInt(S.Reset, "bpInitialize", 0);
+  S.run({ S.ElementState[1 - S.Cur], S.Centers[1 - S.Cur] }, S.W, S.H);
+  S.Cur = 1 - S.Cur;
+  // 2. Advect.
+  S.use(S.Advect);
+  S.bind(S.Advect, "bpState", S.State[S.S]);
+  S.bind(S.Advect, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Advect, "bpRest", S.Rest);
+  S.bind(S.Advect, "bpParticleInfo", S.ParticleInfo);
+  Internals::setInt(S.Advect, "bpPlaceOnly", 0);
+  Internals::setInt(S.Advect, "bpIntegrator", int(P.integrator));
+  Internals::setFloat(S.Advect, "bpStep", float(h));
+  const float weights[3] = { S.Field->timeWeight(t), S.Field->timeWeight(t + 0.5 * h),
+    S.Field->timeWeight(t + h) };
+  Internals::setVec3(S.Advect, "bpWeights", weights);
+  S.run({ S.Advected, S.Before }, S.PW, S.PH);
+  // 3. Restore, K Jacobi iterations.
+  GLuint positions = S.Advected;
+  if (!S.Shape.springs.empty())
+  {
+    for (int k = 0; k < P.iterations; ++k)
+    {
+      S.use(S.Restore);
+      S.bind(S.Restore, "bpPositions", positions);
+      S.bind(S.Restore, "bpParticleInfo", S.ParticleInfo);
+      S.bind(S.Restore, "bpSprings", S.Springs);
+      Internals::setInt(S.Restore, "bpSpringsWidth", S.SpringsWidth);
+      Internals::setInt(
+        S.Restore, "bpAveraged", P.restoration == Restoration::AveragedJacobi ? 1 : 0);
+      Internals::setFloat(S.Restore, "bpRelaxation", P.relaxation);
+      S.run({ S.Restored[k % 2] }, S.PW, S.PH);
+      positions = S.Restored[k % 2];
+    }
+  }
+  // 5. Reposition test, then the new state.
+  S.use(S.Test);
+  S.bind(S.Test, "bpElementState", S.ElementState[S.Cur]);
+  S.bind(S.Test, "bpPositions", positions);
+  Internals::setInt(S.Test, "bpSettleOnly", 0);
+  Internals::setInt(S.Test, "bpAnyParticle", P.resetWhen == ResetWhen::AnyParticleLeaves ? 1 : 0);
+  Internals::setFloat(S.Test, "bpStep", float(h));
+  S.run({ S.ElementState[1 - S.Cur] }, S.W, S.H);
+  S.Cur = 1 - S.Cur;
+  S.use(S.Finalize);
+  S.bind(S.Finalize, "bpRestored", positions);
+  S.bind(S.Finalize, "bpAdvected", S.Advected);
+  S.bind(S.Finalize, "bpBefore", S.Before);
+  S.bind(S.Finalize, "bpElementState", S.ElementState[S.Cur]);
+  S.run({ S.State[1 - S.S] }, S.PW, S.PH);
+  S.S = 1 - S.S;
+}
+
+void GpuEngine::updateNormals()
+{
+  Internals& S = *this->I;
+  S.use(S.Normals);
+  S.bind(S.Normals, "bpState", S.State[S.S]);
+  S.bind(S.Normals, "bpParticleInfo", S.ParticleInfo);
+  S.bind(S.Normals, "bpTriangles", S.Triangles);
+  Internals::setInt(S.Normals, "bpTrianglesWidth", S.TrianglesWidth);
+  S.run({ S.NormalsTex }, S.PW, S.PH);
+}
+
+void GpuEngine::read(
+  std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const
+{
+  const Internals& S = *this->I;
+  std::vector<float> texels;
+  if (positions || forces)
+  {
+    S.readTexture(S.State[S.S], S.PW, S.PH, texels);
+    if (positions)
+      positions->resize(std::size_t(S.E) * S.n * 3);
+    if (forces)
+      forces->resize(std::size_t(S.E) * S.n);
+    for (int e = 0; e < S.E; ++e)
+      for (int i = 0; i < S.n; ++i)
+      {
+        const float* t = &texels[4 * S.particleTexel(e, i)];
+        const std::size_t id = std::size_t(e) * S.n + i;
+        if (positions)
+          std::copy(t, t + 3, positions->begin() + 3 * id);
+        if (forces)
+          (*forces)[id] = t[3];
+      }
+  }
+  if (normals)
+  {
+    S.readTexture(S.NormalsTex, S.PW, S.PH, texels);
+    normals->resize(std::size_t(S.E) * S.n * 3);
+    for (int e = 0; e < S.E; ++e)
+      for (int i = 0; i < S.n; ++i)
+      {
+        const float* t = &texels[4 * S.particleTexel(e, i)];
+        std::copy(t, t + 3, normals->begin() + 3 * (std::size_t(e) * S.n + i));
+      }
+  }
+}
+
+void GpuEngine::readElements(
+  std::vector<float>* lifetimes, std::vector<float>* generations, std::vector<float>* centers) const
+{
+  const Internals& S = *this->I;
+  std::vector<float> texels;
+  S.readTexture(S.ElementState[S.Cur], S.W, S.H, texels);
+  if (lifetimes)
+    lifetimes->resize(S.E);
+  if (generations)
+    generations->resize(S.E);
+  for (int e = 0; e < S.E; ++e)
+  {
+    if (lifetimes)
+      (*lifetimes)[e] = texels[4 * e];
+    if (generations)
+      (*generations)[e] = texels[4 * e + 1];
+  }
+  if (centers)
+  {
+    S.readTexture(S.Centers[S.Cur], S.W, S.H, texels);
+    centers->resize(std::size_t(S.E) * 3);
+    for (int e = 0; e < S.E; ++e)
+      std::copy(&texels[4 * e], &texels[4 * e] + 3, centers->begin() + 3 * e);
+  }
+}
+
+} // namespace bp

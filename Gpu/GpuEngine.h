@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file GpuEngine.h
+ * @brief The GPU engine: DESIGN.md §4 as fragment passes over float textures.
+ *
+ * The same step as bp::Engine, computed per texel by the GLSL passes in
+ * Shaders/ (reset, advect, K restoration iterations, reposition test,
+ * finalize; normals on demand), ping-ponging RGBA32F textures. Particle state
+ * is laid out in blocks of one template particle index each (thesis §3.5.1),
+ * every block a near-square grid of elements, so the texture is near square
+ * and no count needs to be a power of two; the limit is GL_MAX_TEXTURE_SIZE.
+ * The field's time steps are 3D textures sampled exactly with texelFetch.
+ *
+ * Plain OpenGL 3.3 core through libepoxy, no VTK: it runs in any current
+ * context, a headless EGL one (tests, benchmarks) or a render window's.
+ * Averaged Jacobi and Jacobi restoration run here; Gauss-Seidel is rejected
+ * by configure() so that callers fall back to the CPU engine.
+ */
+#ifndef BoundParticles_GpuEngine_h
+#define BoundParticles_GpuEngine_h
+
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "VectorField.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+class GpuEngine
+{
+public:
+  GpuEngine();
+  ~GpuEngine(); // releases GL objects only through release()
+
+  /// Compiles the passes and sizes the textures; the GL context must be
+  /// current. Empty on success, otherwise why the GPU cannot run this system.
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters);
+
+  /// Uploads the field's time steps (skipped for slices already resident).
+  std::string setField(const VectorField& field);
+
+  /// Places every element (generation 0).
+  void initialize();
+
+  /// One step of size h from time t, on the field last set.
+  void step(double t, double h);
+
+  /// Recomputes the normals texture from the positions.
+  void updateNormals();
+
+  /// The state in the CPU engine's element-major order (null to skip).
+  void read(
+    std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const;
+  void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
+    std::vector<float>* centers) const;
+
+  /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
+  void setTextureSizeLimit(int texels);
+
+  /// Texture sizes, for reports: particle texture and element texture.
+  int particleTextureWidth() const;
+  int particleTextureHeight() const;
+
+  /// Deletes the GL objects; the context must be current.
+  void release();
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> I;
+};
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file HeadlessContext.h
+ * @brief An OpenGL 3.3+ core context with no window and no X: EGL on Mesa's
+ * surfaceless platform, or on an EGL device (NVIDIA), for tests and benchmarks
+ * of the GPU engine.
+ */
+#ifndef BoundParticles_HeadlessContext_h
+#define BoundParticles_HeadlessContext_h
+
+#include <string>
+
+namespace bp
+{
+
+class HeadlessContext
+{
+public:
+  HeadlessContext() = default;
+  ~HeadlessContext();
+  HeadlessContext(const HeadlessContext&) = delete;
+  HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+  /// Creates the context and makes it current; empty on success.
+  std::string create();
+  /// GL_RENDERER and GL_VERSION of the current context.
+  std::string description() const;
+
+private:
+  void* Display = nullptr;
+  void* Context = nullptr;
+};
+
+} // namespace bp
+
+#endif

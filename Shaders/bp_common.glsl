@@ -1,0 +1,169 @@
+// Shared by every pass of the GPU engine. It mirrors Core/ operation for
+// operation (same formulas, same order of float operations) so that the GPU
+// engine matches the CPU engine to rounding.
+
+// ---- Layout ---------------------------------------------------------------
+// Elements: a W x H grid, element e at (e % W, e / W).
+// Particles: one such grid ("block") per template particle index i; blocks sit
+// bx per row (thesis §3.5.1 strip layout, generalised to a near-square texture).
+uniform ivec2 bpElementGrid; // W, H
+uniform int bpBlocksPerRow;  // bx
+uniform int bpElements;      // E
+uniform int bpParticles;     // n, particles per element
+
+ivec2 bpElementTexel(int e)
+{
+  return ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+}
+
+ivec2 bpParticleTexel(int e, int i)
+{
+  ivec2 block = ivec2(i % bpBlocksPerRow, i / bpBlocksPerRow);
+  return block * bpElementGrid + bpElementTexel(e);
+}
+
+// Element and particle index of a particle texel; false outside the system.
+bool bpParticleOf(ivec2 texel, out int e, out int i)
+{
+  ivec2 block = texel / bpElementGrid;
+  ivec2 local = texel - block * bpElementGrid;
+  i = block.y * bpBlocksPerRow + block.x;
+  e = local.y * bpElementGrid.x + local.x;
+  return i < bpParticles && e < bpElements && block.x < bpBlocksPerRow;
+}
+
+// ---- Counter-based random numbers (Core/CounterHash.h) ----------------------
+uint bpHash(uint seed, uint element, uint generation, uint draw)
+{
+  uvec4 v = uvec4(seed, element, generation, draw) * 1664525u + 1013904223u;
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  v ^= v >> 16u;
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  return v.x;
+}
+
+uniform uint bpSeed;
+
+float bpDraw(int e, float generation, uint draw)
+{
+  uint h = bpHash(bpSeed, uint(e), uint(generation), draw);
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// ---- Placement (Engine::place) --------------------------------------------
+uniform vec3 bpEmitterMin;
+uniform vec3 bpEmitterMax;
+uniform float bpElementSize;
+uniform bool bpRandomOrientation;
+uniform vec3 bpFrameRow0;
+uniform vec3 bpFrameRow1;
+uniform vec3 bpFrameRow2;
+uniform float bpLifetimeMin;
+uniform float bpLifetimeMax;
+
+vec3 bpCenterOf(int e, float generation)
+{
+  vec3 u = vec3(bpDraw(e, generation, 0u), bpDraw(e, generation, 1u), bpDraw(e, generation, 2u));
+  return bpEmitterMin + u * (bpEmitterMax - bpEmitterMin);
+}
+
+float bpLifetimeOf(int e, float generation)
+{
+  return bpLifetimeMin + bpDraw(e, generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
+}
+
+// Position of template particle `rest` in element e of the given generation.
+vec3 bpPlace(int e, float generation, vec3 rest)
+{
+  vec3 c = bpCenterOf(e, generation);
+  vec3 r0 = bpFrameRow0, r1 = bpFrameRow1, r2 = bpFrameRow2;
+  if (bpRandomOrientation)
+  {
+    // Shoemake's uniform random rotation (rotationFromUniforms).
+    float u1 = bpDraw(e, generation, 3u);
+    float u2 = bpDraw(e, generation, 4u);
+    float u3 = bpDraw(e, generation, 5u);
+    float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
+    float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
+    float x = s1 * sin(a), y = s1 * cos(a), z = s2 * sin(b), w = s2 * cos(b);
+    r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
+    r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
+    r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
+  }
+  return c +
+    bpElementSize *
+    vec3(r0.x * rest.x + r0.y * rest.y + r0.z * rest.z, r1.x * rest.x + r1.y * rest.y + r1.z * rest.z,
+      r2.x * rest.x + r2.y * rest.y + r2.z * rest.z);
+}
+
+// ---- The field (VectorField::sample, exact trilinear by texelFetch) --------
+uniform sampler3D bpField0;
+uniform sampler3D bpField1;
+uniform bool bpUnsteady;
+uniform vec3 bpOrigin;
+uniform vec3 bpInverseSpacing;
+uniform vec3 bpMaxIndex;
+uniform ivec3 bpNextCorner; // 1 along an axis with cells, 0 along a flat one
+uniform vec3 bpLower;
+uniform vec3 bpUpper;
+uniform bvec3 bpDegenerate;
+
+vec3 bpSampleSlice(sampler3D field, vec3 p)
+{
+  vec3 g = (p - bpOrigin) * bpInverseSpacing;
+  g = min(max(g, vec3(0.0)), bpMaxIndex);
+  vec3 i = min(floor(g), max(bpMaxIndex - 1.0, vec3(0.0)));
+  vec3 f = g - i;
+  ivec3 a = ivec3(i);
+  ivec3 s = bpNextCorner;
+  vec3 c000 = texelFetch(field, a, 0).xyz;
+  vec3 c100 = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;
+  vec3 c010 = texelFetch(field, a + ivec3(0, s.y, 0), 0).xyz;
+  vec3 c110 = texelFetch(field, a + ivec3(s.x, s.y, 0), 0).xyz;
+  vec3 c001 = texelFetch(field, a + ivec3(0, 0, s.z), 0).xyz;
+  vec3 c101 = texelFetch(field, a + ivec3(s.x, 0, s.z), 0).xyz;
+  vec3 c011 = texelFetch(field, a + ivec3(0, s.y, s.z), 0).xyz;
+  vec3 c111 = texelFetch(field, a + s, 0).xyz;
+  vec3 x00 = c000 + f.x * (c100 - c000);
+  vec3 x10 = c010 + f.x * (c110 - c010);
+  vec3 x01 = c001 + f.x * (c101 - c001);
+  vec3 x11 = c011 + f.x * (c111 - c011);
+  vec3 y0 = x00 + f.y * (x10 - x00);
+  vec3 y1 = x01 + f.y * (x11 - x01);
+  return y0 + f.z * (y1 - y0);
+}
+
+// `weight` is the second slice's weight at the sample time, computed by the host.
+vec3 bpSample(vec3 p, float weight)
+{
+  vec3 v = bpSampleSlice(bpField0, p);
+  if (bpUnsteady && weight > 0.0)
+  {
+    vec3 v1 = bpSampleSlice(bpField1, p);
+    v += weight * (v1 - v);
+  }
+  return v;
+}
+
+bool bpContains(vec3 p)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!bpDegenerate[a] && !(p[a] >= bpLower[a] && p[a] <= bpUpper[a]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool bpFinite(vec3 p)
+{
+  return !any(isnan(p)) && !any(isinf(p));
+}

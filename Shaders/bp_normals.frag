@@ -1,0 +1,38 @@
+// Step 4, per particle: the normalised sum of the unit normals of the
+// particle's triangles, gathered in triangle order (Engine::normalsOf).
+uniform sampler2D bpState;
+uniform sampler2D bpParticleInfo;
+uniform sampler2D bpTriangles;  // per (particle, triangle): (i0, i1, i2, 0)
+uniform int bpTrianglesWidth;
+
+out vec4 outNormal;
+
+void main()
+{
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int e, i;
+  if (!bpParticleOf(texel, e, i))
+  {
+    outNormal = vec4(0.0);
+    return;
+  }
+  vec4 info = texelFetch(bpParticleInfo, ivec2(i, 1), 0);
+  int first = int(info.x), count = int(info.y);
+  vec3 sum = vec3(0.0);
+  for (int k = first; k < first + count; ++k)
+  {
+    vec4 tri = texelFetch(bpTriangles, ivec2(k % bpTrianglesWidth, k / bpTrianglesWidth), 0);
+    vec3 a = texelFetch(bpState, bpParticleTexel(e, int(tri.x)), 0).xyz;
+    vec3 b = texelFetch(bpState, bpParticleTexel(e, int(tri.y)), 0).xyz;
+    vec3 c = texelFetch(bpState, bpParticleTexel(e, int(tri.z)), 0).xyz;
+    vec3 u = b - a, v = c - a;
+    vec3 x = vec3(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
+    float len = sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
+    if (len > 0.0)
+    {
+      sum += x / len;
+    }
+  }
+  float len = sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
+  outNormal = vec4(len > 0.0 ? sum / len : vec3(0.0, 0.0, 1.0), 0.0);
+}
