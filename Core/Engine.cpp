@@ -2,6 +2,7 @@
 #include "Engine.h"
 
 #include "CounterHash.h"
+#include "ShapeMatching.h"
 
 #include <Eigen/Geometry>
 
@@ -44,16 +45,30 @@ std::array<float, 9> rotationFromDegrees(double x, double y, double z)
   return toRowMajor(r);
 }
 
-std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
+std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3)
 {
   // Shoemake, "Uniform random rotations", Graphics Gems III (1992).
   const float s1 = std::sqrt(1.0f - u1), s2 = std::sqrt(u1);
   const float a = float(2.0 * Pi) * u2, b = float(2.0 * Pi) * u3;
-  const float x = s1 * std::sin(a), y = s1 * std::cos(a), z = s2 * std::sin(b),
-              w = s2 * std::cos(b);
-  return { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 2 * (x * y + w * z),
-    1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 2 * (x * z - w * y), 2 * (y * z + w * x),
-    1 - 2 * (x * x + y * y) };
+  return { s1 * std::sin(a), s1 * std::cos(a), s2 * std::sin(b), s2 * std::cos(b) };
+}
+
+std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
+{
+  const std::array<float, 4> q = quaternionFromUniforms(u1, u2, u3);
+  std::array<float, 9> R;
+  quaternionToMatrix(q.data(), R.data());
+  return R;
+}
+
+std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R)
+{
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      m(i, j) = R[3 * i + j];
+  const Eigen::Quaterniond q(m);
+  return { float(q.x()), float(q.y()), float(q.z()), float(q.w()) };
 }
 
 std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
@@ -102,6 +117,10 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   {
     return "the Jacobi relaxation factor must lie in (0, 2]";
   }
+  if (!(p.shapeStiffness >= 0.0f && p.shapeStiffness <= 1.0f))
+  {
+    return "the shape-matching stiffness must lie in [0, 1]";
+  }
 
   this->Shape = shape;
   this->Params = p;
@@ -141,6 +160,8 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   this->Generations.assign(E, 0);
   this->InitialCenters.assign(3 * E, 0.0f);
   this->ResetFlags.assign(E, 0);
+  this->Orientations.assign(4 * E, 0.0f);
+  this->FrameQuaternion = quaternionFromRotation(p.frame);
   return std::string();
 }
 
@@ -159,8 +180,14 @@ void Engine::place(std::size_t e)
     c[k] = P.emitterMin[k] + u[k] * (P.emitterMax[k] - P.emitterMin[k]);
     this->InitialCenters[3 * e + k] = c[k];
   }
-  const std::array<float, 9> R =
-    P.randomOrientation ? rotationFromUniforms(u[3], u[4], u[5]) : P.frame;
+  const std::array<float, 4> q =
+    P.randomOrientation ? quaternionFromUniforms(u[3], u[4], u[5]) : this->FrameQuaternion;
+  std::copy(q.begin(), q.end(), this->Orientations.begin() + 4 * e);
+  std::array<float, 9> R = P.frame;
+  if (P.randomOrientation)
+  {
+    quaternionToMatrix(q.data(), R.data());
+  }
   const std::size_t n = this->Shape.particleCount();
   float* p = this->Positions.data() + 3 * e * n;
   for (std::size_t i = 0; i < n; ++i)
@@ -264,12 +291,71 @@ bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
   return true;
 }
 
-void Engine::restore(float* p, float* acc) const
+void Engine::matchShape(float* p, float* orientation) const
+{
+  // Goals: the rest shape turned by the best-fit rotation about the current
+  // centre (Müller et al. 2005, equal masses); particles move towards them.
+  const std::size_t n = this->Shape.particleCount();
+  const float size = this->Params.elementSize;
+  float c[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += p[3 * i + k];
+    }
+  }
+  const float count = float(n);
+  for (float& v : c)
+  {
+    v = v / count;
+  }
+  float A[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto& r = this->Shape.rest[i];
+    const float q[3] = { size * r[0], size * r[1], size * r[2] };
+    for (int row = 0; row < 3; ++row)
+    {
+      const float d = p[3 * i + row] - c[row];
+      for (int col = 0; col < 3; ++col)
+      {
+        A[3 * row + col] += d * q[col];
+      }
+    }
+  }
+  extractRotation(A, orientation);
+  float R[9];
+  quaternionToMatrix(orientation, R);
+  const float k = this->Params.shapeStiffness;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (this->Pinned[i])
+    {
+      continue;
+    }
+    const auto& r = this->Shape.rest[i];
+    const float q[3] = { size * r[0], size * r[1], size * r[2] };
+    for (int row = 0; row < 3; ++row)
+    {
+      const float goal =
+        c[row] + (R[3 * row] * q[0] + R[3 * row + 1] * q[1] + R[3 * row + 2] * q[2]);
+      p[3 * i + row] += k * (goal - p[3 * i + row]);
+    }
+  }
+}
+
+void Engine::restore(float* p, float* acc, float* orientation) const
 {
   const std::size_t n = this->Shape.particleCount();
   const Restoration method = this->Params.restoration;
   for (int it = 0; it < this->Params.iterations; ++it)
   {
+    if (method == Restoration::ShapeMatching)
+    {
+      this->matchShape(p, orientation);
+      continue;
+    }
     if (method == Restoration::GaussSeidel)
     {
       // Each spring moves its ends at once, so later springs see the update.
@@ -345,9 +431,9 @@ void Engine::stepElement(
     }
   }
   std::copy_n(p, 3 * n, advected);
-  if (!this->Springs.empty())
+  if (!this->Springs.empty() || this->Params.restoration == Restoration::ShapeMatching)
   {
-    this->restore(p, scratch.data() + 6 * n);
+    this->restore(p, scratch.data() + 6 * n, this->Orientations.data() + 4 * e);
   }
 
   bool finite = true;

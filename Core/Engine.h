@@ -50,7 +50,8 @@ enum class Restoration
 {
   AveragedJacobi = 0,
   Jacobi,
-  GaussSeidel
+  GaussSeidel,
+  ShapeMatching ///< best rigid fit (Core/ShapeMatching.h), goals blended by shapeStiffness
 };
 
 enum class ResetWhen
@@ -79,6 +80,8 @@ struct Parameters
   /// Plain Jacobi's step factor on the summed corrections; stable for the
   /// built-in shapes (up to 10 springs per particle) below about 0.3.
   float relaxation = 0.2f;
+  /// Shape matching: how far each iteration moves particles to their goals, in [0, 1].
+  float shapeStiffness = 1.0f;
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
   std::uint32_t seed = 0;
 };
@@ -86,8 +89,13 @@ struct Parameters
 /// Row-major rotation R = Rz * Ry * Rx from angles in degrees about X, then Y, then Z.
 std::array<float, 9> rotationFromDegrees(double x, double y, double z);
 
-/// Shoemake's uniform random rotation from three uniforms in [0, 1).
+/// Shoemake's uniform random rotation from three uniforms in [0, 1), as the
+/// unit quaternion (x, y, z, w) and as a row-major matrix.
+std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3);
 std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3);
+
+/// The unit quaternion (x, y, z, w) of a row-major rotation matrix.
+std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R);
 
 class Engine
 {
@@ -118,6 +126,8 @@ public:
   const std::vector<std::uint32_t>& generations() const { return this->Generations; }
   /// The centre each element was last placed at: 3 floats per element.
   const std::vector<float>& initialCenters() const { return this->InitialCenters; }
+  /// Each element's orientation (x, y, z, w), kept by shape matching.
+  const std::vector<float>& orientations() const { return this->Orientations; }
   /// Elements flagged for reset at the next step.
   const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
 
@@ -138,8 +148,10 @@ private:
   void advectParticle(const VectorField& field, double t, double h, float p[3]) const;
   /// The correction of spring s at positions p; false when its ends coincide.
   static bool springCorrection(const float* p, const SpringWork& s, float c[3]);
-  /// K iterations on one element's positions; `acc` holds 3n floats of scratch.
-  void restore(float* p, float* acc) const;
+  /// K iterations on one element's positions; `acc` holds 3n floats of
+  /// scratch, `orientation` the element's quaternion (shape matching).
+  void restore(float* p, float* acc, float* orientation) const;
+  void matchShape(float* p, float* orientation) const;
   void normalsOf(std::size_t e);
 
   ElementTemplate Shape;
@@ -154,6 +166,8 @@ private:
   std::vector<float> Lifetimes;
   std::vector<std::uint32_t> Generations;
   std::vector<float> InitialCenters;
+  std::vector<float> Orientations;
+  std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::vector<std::uint8_t> ResetFlags;
 };
 

@@ -643,6 +643,7 @@ int vtkBoundParticleTracer::RequestData(
     p.restoration = bp::Restoration(this->Restoration);
     p.iterations = this->RestorationIterations;
     p.relaxation = float(this->RelaxationFactor);
+    p.shapeStiffness = float(this->ShapeMatchingStiffness);
     p.resetWhen = bp::ResetWhen(this->ResetWhen);
     p.seed = std::uint32_t(this->Seed);
 

@@ -58,7 +58,8 @@ public:
   {
     AVERAGED_JACOBI = 0,
     JACOBI,
-    GAUSS_SEIDEL
+    GAUSS_SEIDEL,
+    SHAPE_MATCHING
   };
   enum ResetConditions
   {
@@ -134,14 +135,17 @@ public:
 
   ///@{
   /// Shape restoration: AVERAGED_JACOBI (thesis §3.5, default), JACOBI (sum of
-  /// corrections times RelaxationFactor) or GAUSS_SEIDEL; RestorationIterations
-  /// iterations per step (default 1).
-  vtkSetClampMacro(Restoration, int, AVERAGED_JACOBI, GAUSS_SEIDEL);
+  /// corrections times RelaxationFactor), GAUSS_SEIDEL, or SHAPE_MATCHING (best
+  /// rigid fit, Müller et al. 2005, goals blended by ShapeMatchingStiffness);
+  /// RestorationIterations iterations per step (default 1).
+  vtkSetClampMacro(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING);
   vtkGetMacro(Restoration, int);
   vtkSetMacro(RestorationIterations, int);
   vtkGetMacro(RestorationIterations, int);
   vtkSetMacro(RelaxationFactor, double);
   vtkGetMacro(RelaxationFactor, double);
+  vtkSetClampMacro(ShapeMatchingStiffness, double, 0.0, 1.0);
+  vtkGetMacro(ShapeMatchingStiffness, double);
   ///@}
 
   ///@{
@@ -208,6 +212,7 @@ protected:
   int Restoration = AVERAGED_JACOBI;
   int RestorationIterations = 1;
   double RelaxationFactor = 0.2;
+  double ShapeMatchingStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
   int Seed = 0;
   double Duration = 10.0;

@@ -67,11 +67,32 @@ struct GpuEngine::Internals
   int PW = 0, PH = 0;   // particle texture
   int SpringsWidth = 2, TrianglesWidth = 1;
   int SizeLimit = 1 << 30;
+  std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+
+  /// The reset pass: places flagged (or, initialising, all) elements.
+  void reset(bool initialize)
+  {
+    this->use(this->Reset);
+    this->bind(this->Reset, "bpElementState", this->ElementState[this->Cur]);
+    this->bind(this->Reset, "bpCenters", this->Centers[this->Cur]);
+    this->bind(this->Reset, "bpOrientations", this->Orientations[this->O]);
+    setInt(this->Reset, "bpInitialize", initialize ? 1 : 0);
+    glUniform4fv(
+      glGetUniformLocation(this->Reset, "bpFrameQuaternion"), 1, this->FrameQuaternion.data());
+    this->run({ this->ElementState[1 - this->Cur], this->Centers[1 - this->Cur],
+                this->Orientations[1 - this->O] },
+      this->W, this->H);
+    this->Cur = 1 - this->Cur;
+    this->O = 1 - this->O;
+  }
 
   GLuint Vao = 0, Fbo = 0;
-  GLuint Reset = 0, Advect = 0, Restore = 0, Test = 0, Finalize = 0, Normals = 0;
+  GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
+         Normals = 0;
   GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
   int Cur = 0; // current element textures
+  GLuint Orientations[2] = { 0, 0 }, MatchCenters = 0;
+  int O = 0; // current orientation texture
   GLuint State[2] = { 0, 0 };
   int S = 0; // current particle state texture
   GLuint Advected = 0, Before = 0, Restored[2] = { 0, 0 }, NormalsTex = 0;
@@ -187,7 +208,7 @@ struct GpuEngine::Internals
       buffers[k] = GLenum(GL_COLOR_ATTACHMENT0 + k);
       ++k;
     }
-    for (int j = k; j < 2; ++j)
+    for (int j = k; j < 4; ++j)
     {
       glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + j), GL_TEXTURE_2D, 0, 0);
     }
@@ -201,7 +222,10 @@ struct GpuEngine::Internals
   {
     glBindFramebuffer(GL_FRAMEBUFFER, this->Fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    for (int j = 1; j < 4; ++j)
+    {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + j), GL_TEXTURE_2D, 0, 0);
+    }
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     out.resize(std::size_t(width) * height * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -220,7 +244,8 @@ struct GpuEngine::Internals
     GLuint textures[] = { this->ElementState[0], this->ElementState[1], this->Centers[0],
       this->Centers[1], this->State[0], this->State[1], this->Advected, this->Before,
       this->Restored[0], this->Restored[1], this->NormalsTex, this->Rest, this->ParticleInfo,
-      this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1] };
+      this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1], this->Orientations[0],
+      this->Orientations[1], this->MatchCenters };
     for (GLuint t : textures)
     {
       if (t)
@@ -228,8 +253,8 @@ struct GpuEngine::Internals
         glDeleteTextures(1, &t);
       }
     }
-    for (GLuint p :
-      { this->Reset, this->Advect, this->Restore, this->Test, this->Finalize, this->Normals })
+    for (GLuint p : { this->Reset, this->Advect, this->Restore, this->Match, this->MatchApply,
+           this->Test, this->Finalize, this->Normals })
     {
       if (p)
       {
@@ -293,6 +318,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     return "Gauss-Seidel restoration runs on the CPU engine only";
   }
+  const std::array<float, 4> frameQuaternion = quaternionFromRotation(p.frame);
   this->release();
   Internals& S = *this->I;
   S.Shape = shape;
@@ -321,8 +347,9 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
 
   for (auto pass :
     { std::make_pair(bpShaderResetFrag, &S.Reset), std::make_pair(bpShaderAdvectFrag, &S.Advect),
-      std::make_pair(bpShaderRestoreFrag, &S.Restore), std::make_pair(bpShaderTestFrag, &S.Test),
-      std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
+      std::make_pair(bpShaderRestoreFrag, &S.Restore), std::make_pair(bpShaderMatchFrag, &S.Match),
+      std::make_pair(bpShaderMatchApplyFrag, &S.MatchApply),
+      std::make_pair(bpShaderTestFrag, &S.Test), std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
       std::make_pair(bpShaderNormalsFrag, &S.Normals) })
   {
     const std::string programError = S.program(pass.first, *pass.second);
@@ -338,9 +365,12 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     S.ElementState[k] = makeTexture2D(S.W, S.H);
     S.Centers[k] = makeTexture2D(S.W, S.H);
+    S.Orientations[k] = makeTexture2D(S.W, S.H);
     S.State[k] = makeTexture2D(S.PW, S.PH);
     S.Restored[k] = makeTexture2D(S.PW, S.PH);
   }
+  S.MatchCenters = makeTexture2D(S.W, S.H);
+  S.FrameQuaternion = frameQuaternion;
   S.Advected = makeTexture2D(S.PW, S.PH);
   S.Before = makeTexture2D(S.PW, S.PH);
   S.NormalsTex = makeTexture2D(S.PW, S.PH);
@@ -461,12 +491,7 @@ void GpuEngine::initialize()
 {
   Internals& S = *this->I;
   // Place every element as generation 0 ...
-  S.use(S.Reset);
-  S.bind(S.Reset, "bpElementState", S.ElementState[S.Cur]);
-  S.bind(S.Reset, "bpCenters", S.Centers[S.Cur]);
-  Internals::setInt(S.Reset, "bpInitialize", 1);
-  S.run({ S.ElementState[1 - S.Cur], S.Centers[1 - S.Cur] }, S.W, S.H);
-  S.Cur = 1 - S.Cur;
+  S.reset(true);
   S.use(S.Advect);
   S.bind(S.Advect, "bpState", S.State[S.S]);
   S.bind(S.Advect, "bpElementState", S.ElementState[S.Cur]);
@@ -496,12 +521,7 @@ void GpuEngine::step(double t, double h)
   Internals& S = *this->I;
   const Parameters& P = S.Params;
   // 1. Reset.
-  S.use(S.Reset);
-  S.bind(S.Reset, "bpElementState", S.ElementState[S.Cur]);
-  S.bind(S.Reset, "bpCenters", S.Centers[S.Cur]);
-  Internals::setInt(S.Reset, "bpInitialize", 0);
-  S.run({ S.ElementState[1 - S.Cur], S.Centers[1 - S.Cur] }, S.W, S.H);
-  S.Cur = 1 - S.Cur;
+  S.reset(false);
   // 2. Advect.
   S.use(S.Advect);
   S.bind(S.Advect, "bpState", S.State[S.S]);
@@ -515,9 +535,31 @@ void GpuEngine::step(double t, double h)
     S.Field->timeWeight(t + h) };
   Internals::setVec3(S.Advect, "bpWeights", weights);
   S.run({ S.Advected, S.Before }, S.PW, S.PH);
-  // 3. Restore, K Jacobi iterations.
+  // 3. Restore: K iterations of shape matching ...
   GLuint positions = S.Advected;
-  if (!S.Shape.springs.empty())
+  if (P.restoration == Restoration::ShapeMatching)
+  {
+    for (int k = 0; k < P.iterations; ++k)
+    {
+      S.use(S.Match);
+      S.bind(S.Match, "bpPositions", positions);
+      S.bind(S.Match, "bpRest", S.Rest);
+      S.bind(S.Match, "bpOrientations", S.Orientations[S.O]);
+      S.run({ S.MatchCenters, S.Orientations[1 - S.O] }, S.W, S.H);
+      S.O = 1 - S.O;
+      S.use(S.MatchApply);
+      S.bind(S.MatchApply, "bpPositions", positions);
+      S.bind(S.MatchApply, "bpRest", S.Rest);
+      S.bind(S.MatchApply, "bpParticleInfo", S.ParticleInfo);
+      S.bind(S.MatchApply, "bpMatchCenters", S.MatchCenters);
+      S.bind(S.MatchApply, "bpOrientations", S.Orientations[S.O]);
+      Internals::setFloat(S.MatchApply, "bpShapeStiffness", P.shapeStiffness);
+      S.run({ S.Restored[k % 2] }, S.PW, S.PH);
+      positions = S.Restored[k % 2];
+    }
+  }
+  // ... or of Jacobi.
+  else if (!S.Shape.springs.empty())
   {
     for (int k = 0; k < P.iterations; ++k)
     {
@@ -598,11 +640,16 @@ void GpuEngine::read(
   }
 }
 
-void GpuEngine::readElements(
-  std::vector<float>* lifetimes, std::vector<float>* generations, std::vector<float>* centers) const
+void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
+  std::vector<float>* centers, std::vector<float>* orientations) const
 {
   const Internals& S = *this->I;
   std::vector<float> texels;
+  if (orientations)
+  {
+    S.readTexture(S.Orientations[S.O], S.W, S.H, texels);
+    orientations->assign(texels.begin(), texels.begin() + 4 * std::size_t(S.E));
+  }
   S.readTexture(S.ElementState[S.Cur], S.W, S.H, texels);
   if (lifetimes)
     lifetimes->resize(S.E);

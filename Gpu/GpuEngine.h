@@ -13,7 +13,7 @@
  *
  * Plain OpenGL 3.3 core through libepoxy, no VTK: it runs in any current
  * context, a headless EGL one (tests, benchmarks) or a render window's.
- * Averaged Jacobi and Jacobi restoration run here; Gauss-Seidel is rejected
+ * Averaged Jacobi, Jacobi and shape matching run here; Gauss-Seidel is rejected
  * by configure() so that callers fall back to the CPU engine.
  */
 #ifndef BoundParticles_GpuEngine_h
@@ -56,7 +56,7 @@ public:
   void read(
     std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const;
   void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
-    std::vector<float>* centers) const;
+    std::vector<float>* centers, std::vector<float>* orientations = nullptr) const;
 
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);

@@ -167,3 +167,52 @@ bool bpFinite(vec3 p)
 {
   return !any(isnan(p)) && !any(isinf(p));
 }
+
+// ---- Shape matching (Core/ShapeMatching.h) ---------------------------------
+const int bpRotationIterations = 8;
+
+// Rows of the rotation matrix of the unit quaternion (x, y, z, w).
+void bpQuaternionRows(vec4 q, out vec3 r0, out vec3 r1, out vec3 r2)
+{
+  float x = q.x, y = q.y, z = q.z, w = q.w;
+  r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
+  r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
+  r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
+}
+
+// Turns q towards the rotation closest to A, given by its rows.
+vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
+{
+  for (int iteration = 0; iteration < bpRotationIterations; ++iteration)
+  {
+    vec3 r0, r1, r2;
+    bpQuaternionRows(q, r0, r1, r2);
+    vec3 num = vec3(0.0);
+    float dot = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      vec3 r = vec3(r0[c], r1[c], r2[c]);
+      vec3 a = vec3(a0[c], a1[c], a2[c]);
+      num.x += r.y * a.z - r.z * a.y;
+      num.y += r.z * a.x - r.x * a.z;
+      num.z += r.x * a.y - r.y * a.x;
+      dot += r.x * a.x + r.y * a.y + r.z * a.z;
+    }
+    float den = abs(dot) + 1.0e-9;
+    vec3 omega = vec3(num.x / den, num.y / den, num.z / den);
+    float angle = sqrt(omega.x * omega.x + omega.y * omega.y + omega.z * omega.z);
+    if (!(angle >= 1.0e-9))
+    {
+      break;
+    }
+    float s = sin(0.5 * angle) / angle, c = cos(0.5 * angle);
+    vec4 d = vec4(omega * s, c);
+    vec4 n = vec4(d.w * q.x + d.x * q.w + d.y * q.z - d.z * q.y,
+      d.w * q.y - d.x * q.z + d.y * q.w + d.z * q.x,
+      d.w * q.z + d.x * q.y - d.y * q.x + d.z * q.w,
+      d.w * q.w - d.x * q.x - d.y * q.y - d.z * q.z);
+    float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
+    q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
+  }
+  return q;
+}

@@ -125,7 +125,7 @@ TEST(Engine, NeverGoesNonFinite)
   bp::FieldSlice s;
   s.velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 3.0e38f);
   const bp::VectorField field(g, s);
-  for (int m = 0; m < 3; ++m)
+  for (int m = 0; m < 4; ++m)
   {
     bp::Parameters p = centralParameters(20, 0.2f);
     p.restoration = bp::Restoration(m);
@@ -259,7 +259,7 @@ TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
   bp::FieldSlice s;
   s.velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
   const bp::VectorField still(g, s);
-  for (int m = 0; m < 3; ++m)
+  for (int m = 0; m < 4; ++m)
   {
     for (auto shape :
       { bp::BuiltinShape::Strip16, bp::BuiltinShape::Fish, bp::BuiltinShape::Paddlewheel })
@@ -285,6 +285,51 @@ TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
       EXPECT_GT(maxForce, 0.0f);
     }
   }
+}
+
+TEST(Engine, ShapeMatchingRestoresARigidCopyInOneIteration)
+{
+  // With stiffness 1 the goals are a rigid copy of the rest shape, so one
+  // iteration restores every spring exactly, flat shapes included.
+  const bp::GridGeometry g = bptest::grid(5);
+  bp::FieldSlice s;
+  s.velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
+  const bp::VectorField still(g, s);
+  for (auto shape : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Cross, bp::BuiltinShape::Fish,
+         bp::BuiltinShape::Tetrahedron })
+  {
+    SCOPED_TRACE(bp::builtinShapeName(shape));
+    bp::Parameters p = centralParameters(20, 0.3f);
+    p.restoration = bp::Restoration::ShapeMatching;
+    bp::Engine engine = configured(shape, p);
+    std::vector<float>& x = engine.mutablePositions();
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] += 0.02f * bp::uniformDraw(5, std::uint32_t(i), 0, 0) - 0.01f;
+    EXPECT_GT(bptest::worstSpringStrain(engine), 0.05);
+    engine.step(still, 0.0, 0.01, bp::serialRunner());
+    EXPECT_LT(bptest::worstSpringStrain(engine), 1e-5);
+  }
+}
+
+TEST(Engine, ShapeMatchingOrientationFollowsTheRotation)
+{
+  // A cross in solid-body rotation about z: after a quarter turn its fitted
+  // orientation is its starting one turned by 90 degrees about z.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  bp::Parameters p = centralParameters(1, 0.3f);
+  p.emitterMin = p.emitterMax = { 0.3f, 0.0f, 0.0f };
+  p.randomOrientation = false;
+  p.restoration = bp::Restoration::ShapeMatching;
+  p.integrator = bp::Integrator::RK4;
+  bp::Engine engine = configured(bp::BuiltinShape::Cross, p);
+  run(engine, field, 250, 0.5 * Pi / 250);
+  const float* q = engine.orientations().data();
+  // Identity start: the result is the rotation by 90 degrees about z.
+  EXPECT_NEAR(std::abs(q[2]), std::sqrt(0.5), 2e-3);
+  EXPECT_NEAR(std::abs(q[3]), std::sqrt(0.5), 2e-3);
+  EXPECT_NEAR(q[0], 0.0, 2e-3);
+  EXPECT_NEAR(q[1], 0.0, 2e-3);
 }
 
 TEST(Engine, PinnedParticlesStayPut)

@@ -107,7 +107,8 @@ void compare(const Case& c, int steps)
 
   std::vector<float> positions, forces, normals, lifetimes, generations, centers;
   gpu.read(&positions, &forces, &normals);
-  gpu.readElements(&lifetimes, &generations, &centers);
+  std::vector<float> orientations;
+  gpu.readElements(&lifetimes, &generations, &centers, &orientations);
   gpu.release();
 
   // Tolerance: 1e-4 of the field's diagonal (issue 3).
@@ -128,6 +129,11 @@ void compare(const Case& c, int steps)
     EXPECT_NEAR(lifetimes[e], cpu.lifetimes()[e], 1e-5) << "element " << e;
   }
   EXPECT_EQ(generationMismatches, 0);
+  double worstOrientation = 0.0;
+  for (std::size_t k = 0; k < orientations.size(); ++k)
+    worstOrientation =
+      std::max(worstOrientation, double(std::abs(orientations[k] - cpu.orientations()[k])));
+  EXPECT_LT(worstOrientation, 1e-3) << "orientations differ by up to " << worstOrientation;
   EXPECT_LT(worst, tolerance) << "positions differ by up to " << worst;
   EXPECT_LT(worstForce, tolerance) << "forces differ by up to " << worstForce;
   EXPECT_LT(worstNormal, 1e-3) << "normals differ by up to " << worstNormal;
@@ -140,11 +146,19 @@ void compare(const Case& c, int steps)
 TEST(GpuEngine, MatchesTheCpuEngineForEachIntegratorAndRestoration)
 {
   for (auto integrator : { bp::Integrator::Euler, bp::Integrator::RK2, bp::Integrator::RK4 })
-    for (auto restoration : { bp::Restoration::AveragedJacobi, bp::Restoration::Jacobi })
+    for (auto restoration :
+      { bp::Restoration::AveragedJacobi, bp::Restoration::Jacobi, bp::Restoration::ShapeMatching })
     {
       SCOPED_TRACE(int(integrator) * 10 + int(restoration));
       compare({ bp::BuiltinShape::Strip16, 300, integrator, restoration, false }, 200);
     }
+}
+
+TEST(GpuEngine, MatchesWithShapeMatchingOnAnUnsteadyField)
+{
+  compare({ bp::BuiltinShape::Paddlewheel, 500, bp::Integrator::RK2, bp::Restoration::ShapeMatching,
+            true },
+    200);
 }
 
 TEST(GpuEngine, MatchesOnAnUnsteadyField)

@@ -1,0 +1,34 @@
+// Step 3 with shape matching, per particle: move towards the goal, the rest
+// position turned by the fitted rotation about the centre; pinned ones stay.
+uniform sampler2D bpPositions;
+uniform sampler2D bpRest;
+uniform sampler2D bpParticleInfo;
+uniform sampler2D bpMatchCenters;
+uniform sampler2D bpOrientations; // after the fit
+uniform float bpShapeStiffness;
+
+out vec4 outPosition;
+
+void main()
+{
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int e, i;
+  if (!bpParticleOf(texel, e, i))
+  {
+    outPosition = vec4(0.0);
+    return;
+  }
+  vec3 p = texelFetch(bpPositions, texel, 0).xyz;
+  if (texelFetch(bpParticleInfo, ivec2(i, 0), 0).w > 0.5)
+  {
+    outPosition = vec4(p, 0.0);
+    return;
+  }
+  vec3 c = texelFetch(bpMatchCenters, bpElementTexel(e), 0).xyz;
+  vec3 r0, r1, r2;
+  bpQuaternionRows(texelFetch(bpOrientations, bpElementTexel(e), 0), r0, r1, r2);
+  vec3 q = bpElementSize * texelFetch(bpRest, ivec2(i, 0), 0).xyz;
+  vec3 goal = c + vec3(r0.x * q.x + r0.y * q.y + r0.z * q.z, r1.x * q.x + r1.y * q.y + r1.z * q.z,
+                    r2.x * q.x + r2.y * q.y + r2.z * q.z);
+  outPosition = vec4(p + bpShapeStiffness * (goal - p), 0.0);
+}
