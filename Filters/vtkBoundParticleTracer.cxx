@@ -618,6 +618,26 @@ int vtkBoundParticleTracer::RequestData(
       const double hi = whole ? bounds[2 * a + 1] : center + 0.5 * this->EmitterSize[a];
       p.emitterMin[a] = float(lo);
       p.emitterMax[a] = float(hi);
+      if (this->ResetWhen == ANY_PARTICLE_LEAVES && grid.dims[a] > 1)
+      {
+        // Placed whole inside the field, so no particle is ever advected from
+        // outside it: keep centres one element radius from the bounds.
+        const double r = 0.5 * I.ResolvedElementSize;
+        const double inLo = bounds[2 * a] + r, inHi = bounds[2 * a + 1] - r;
+        if (inLo > inHi)
+        {
+          vtkWarningMacro("Elements of size "
+            << I.ResolvedElementSize << " do not fit in the field along "
+            << "XYZ"[a]
+            << "; with Reset When = Any Particle Leaves they are "
+               "reset every step. Choose a smaller Element Size.");
+        }
+        else
+        {
+          p.emitterMin[a] = float(std::min(std::max(lo, inLo), inHi));
+          p.emitterMax[a] = float(std::max(std::min(hi, inHi), inLo));
+        }
+      }
     }
     p.randomOrientation = this->RandomOrientation != 0;
     for (double angle : this->ElementRotation)

@@ -641,7 +641,8 @@ void GpuEngine::read(
 }
 
 void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
-  std::vector<float>* centers, std::vector<float>* orientations) const
+  std::vector<float>* centers, std::vector<float>* orientations,
+  std::vector<float>* resetFlags) const
 {
   const Internals& S = *this->I;
   std::vector<float> texels;
@@ -655,12 +656,16 @@ void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* 
     lifetimes->resize(S.E);
   if (generations)
     generations->resize(S.E);
+  if (resetFlags)
+    resetFlags->resize(S.E);
   for (int e = 0; e < S.E; ++e)
   {
     if (lifetimes)
       (*lifetimes)[e] = texels[4 * e];
     if (generations)
       (*generations)[e] = texels[4 * e + 1];
+    if (resetFlags)
+      (*resetFlags)[e] = texels[4 * e + 2];
   }
   if (centers)
   {

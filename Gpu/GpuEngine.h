@@ -56,7 +56,8 @@ public:
   void read(
     std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const;
   void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
-    std::vector<float>* centers, std::vector<float>* orientations = nullptr) const;
+    std::vector<float>* centers, std::vector<float>* orientations = nullptr,
+    std::vector<float>* resetFlags = nullptr) const;
 
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);

@@ -7,5 +7,5 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$(realpath -m "${1:-$root/demo-output}")"
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 plugin="$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so"
-xvfb-run -a -s "-screen 0 1920x1080x24" \
+bash "$root/scripts/with-display.sh" \
   pvpython "$root/demo/demo.py" --plugin "$plugin" --output "$out"

@@ -8,7 +8,7 @@ rm -f "$marker"
 export PV_PLUGIN_PATH="$plugin_dir" BOUNDPARTICLES_GUI_MARKER="$marker"
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
-timeout 300 xvfb-run -a -s "-screen 0 1600x1000x24" \
+timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
   paraview --script="$(dirname "$0")/gui_test.py"
 if [ ! -s "$marker" ]; then
   echo "the GUI did not run the test script (no marker at $marker)" >&2

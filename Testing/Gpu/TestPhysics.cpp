@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The physics suite (DESIGN.md §6): checks that assert numbers about how
+// elements move, each run on the CPU engine and on the GPU engine (in a
+// headless EGL context).
+#include "AnalyticFlows.h"
+#include "Engine.h"
+#include "GpuEngine.h"
+#include "HeadlessContext.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+bool haveContext()
+{
+  static std::unique_ptr<bp::HeadlessContext> shared;
+  static std::string error = "unset";
+  if (!shared)
+  {
+    shared.reset(new bp::HeadlessContext);
+    error = shared->create();
+  }
+  EXPECT_EQ(error, "") << "no headless OpenGL context";
+  return error.empty();
+}
+
+/// One engine or the other behind the few calls the checks need.
+class System
+{
+public:
+  System(bool gpu, const bp::ElementTemplate& shape, const bp::Parameters& p,
+    const bp::VectorField& field)
+    : Gpu(gpu)
+    , Field(field)
+  {
+    if (gpu)
+    {
+      EXPECT_EQ(this->GpuEngine.configure(shape, p), "");
+      EXPECT_EQ(this->GpuEngine.setField(field), "");
+      this->GpuEngine.initialize();
+    }
+    else
+    {
+      EXPECT_EQ(this->CpuEngine.configure(shape, p), "");
+      this->CpuEngine.initialize(bp::serialRunner());
+    }
+    this->n = shape.particleCount();
+  }
+  ~System()
+  {
+    if (this->Gpu)
+      this->GpuEngine.release();
+  }
+  void step(double t, double h)
+  {
+    if (this->Gpu)
+      this->GpuEngine.step(t, h);
+    else
+      this->CpuEngine.step(this->Field, t, h, bp::serialRunner());
+  }
+  std::vector<float> positions() const
+  {
+    if (!this->Gpu)
+      return this->CpuEngine.positions();
+    std::vector<float> p;
+    this->GpuEngine.read(&p, nullptr, nullptr);
+    return p;
+  }
+  std::vector<float> flags() const
+  {
+    if (!this->Gpu)
+      return std::vector<float>(
+        this->CpuEngine.resetFlags().begin(), this->CpuEngine.resetFlags().end());
+    std::vector<float> f;
+    this->GpuEngine.readElements(nullptr, nullptr, nullptr, nullptr, &f);
+    return f;
+  }
+  std::size_t n = 0;
+
+private:
+  bool Gpu;
+  const bp::VectorField& Field;
+  bp::Engine CpuEngine;
+  bp::GpuEngine GpuEngine;
+};
+
+bp::VectorField steady(bp::AnalyticFlow flow, std::array<int, 3> dims, std::array<double, 6> box)
+{
+  bp::GridGeometry g;
+  g.dims = dims;
+  for (int a = 0; a < 3; ++a)
+  {
+    g.origin[a] = box[2 * a];
+    g.spacing[a] = (box[2 * a + 1] - box[2 * a]) / (dims[a] - 1);
+  }
+  bp::FieldSlice s;
+  s.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, 0.0));
+  return bp::VectorField(g, s);
+}
+
+bp::Parameters placed(
+  std::size_t elements, float size, std::array<float, 3> lo, std::array<float, 3> hi)
+{
+  bp::Parameters p;
+  p.numberOfElements = elements;
+  p.elementSize = size;
+  p.emitterMin = lo;
+  p.emitterMax = hi;
+  p.lifetimeMin = p.lifetimeMax = 1000.0f;
+  p.seed = 3;
+  return p;
+}
+
+/// Angle of the vector from particle a to particle b in the plane of axes (u, v).
+double angleOf(const std::vector<float>& x, std::size_t base, int a, int b, int u, int v)
+{
+  const float* pa = &x[3 * (base + a)];
+  const float* pb = &x[3 * (base + b)];
+  return std::atan2(pb[u] - pa[u], pb[v] - pa[v]);
+}
+
+double unwrap(double delta)
+{
+  while (delta > Pi)
+    delta -= 2 * Pi;
+  while (delta < -Pi)
+    delta += 2 * Pi;
+  return delta;
+}
+
+class Physics : public ::testing::TestWithParam<bool>
+{
+protected:
+  void SetUp() override
+  {
+    if (GetParam() && !haveContext())
+      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
+  }
+};
+} // namespace
+
+// Solid-body rotation: every element keeps its edge lengths within 1% and turns
+// at the field's angular velocity within 2% after one revolution.
+TEST_P(Physics, SolidBodyRotationKeepsShapesAndTurnsWithTheField)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
+  bp::Parameters p = placed(40, 0.25f, { -0.5f, -0.5f, -0.5f }, { 0.5f, 0.5f, 0.5f });
+  p.randomOrientation = false; // flat in the plane of rotation
+  p.integrator = bp::Integrator::RK4;
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  System system(GetParam(), cross, p, field);
+  const int steps = 400, every = 10;
+  const double dt = 2 * Pi / steps; // unit angular velocity: one revolution
+  std::vector<double> turned(p.numberOfElements, 0.0), last(p.numberOfElements);
+  std::vector<float> x = system.positions();
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    last[e] = angleOf(x, e * 12, 9, 4, 1, 0); // left tip to right tip, angle in x-y
+  double worstStrain = 0.0;
+  for (int s = 0; s < steps; ++s)
+  {
+    system.step(s * dt, dt);
+    if ((s + 1) % every)
+      continue;
+    x = system.positions();
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    {
+      const double now = angleOf(x, e * 12, 9, 4, 1, 0);
+      turned[e] += unwrap(now - last[e]);
+      last[e] = now;
+      for (const bp::Spring& sp : cross.springs)
+      {
+        const float* a = &x[3 * (e * 12 + sp.a)];
+        const float* b = &x[3 * (e * 12 + sp.b)];
+        const double length = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+        worstStrain = std::max(worstStrain, std::abs(length / (sp.restLength * p.elementSize) - 1));
+      }
+    }
+  }
+  EXPECT_LT(worstStrain, 0.01);
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    EXPECT_NEAR(turned[e], 2 * Pi, 0.02 * 2 * Pi) << "element " << e;
+}
+
+// Shear layer (thesis Fig. 4.2): paddlewheels above and below mid-depth turn in
+// opposite senses; with shape matching at half the local vorticity, within 10%.
+TEST_P(Physics, ShearLayerPaddlewheelsTurnAtHalfTheVorticity)
+{
+  // u(z) = 1.25 - z^2 on z in [-1, 1]: vorticity du/dz = -2z about +y.
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  for (float level : { 0.5f, -0.5f })
+  {
+    bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
+    p.randomOrientation = false;
+    p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
+    p.restoration = bp::Restoration::ShapeMatching;
+    p.integrator = bp::Integrator::RK4;
+    System system(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Paddlewheel), p, field);
+    const int steps = 100;
+    const double dt = 0.01;
+    std::vector<float> x = system.positions();
+    std::vector<double> turned(p.numberOfElements, 0.0), last(p.numberOfElements);
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      last[e] = angleOf(x, e * 8, 0, 3, 0, 2); // a diagonal in the x-z plane
+    for (int s = 0; s < steps; ++s)
+    {
+      system.step(s * dt, dt);
+      x = system.positions();
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      {
+        const double now = angleOf(x, e * 8, 0, 3, 0, 2);
+        turned[e] += unwrap(now - last[e]);
+        last[e] = now;
+      }
+    }
+    double mean = 0.0;
+    for (double t : turned)
+      mean += t / (steps * dt) / turned.size();
+    const double halfVorticity = -level; // (du/dz) / 2 = -z
+    std::printf(
+      "%s: paddlewheels at z = %+.1f turn at %+.4f rad/time; half the vorticity is %+.4f\n",
+      GetParam() ? "GPU" : "CPU", level, mean, halfVorticity);
+    EXPECT_GT(mean * halfVorticity, 0.0) << "turns the wrong way at z = " << level;
+    EXPECT_NEAR(mean, halfVorticity, 0.1 * std::abs(halfVorticity)) << "at z = " << level;
+  }
+}
+
+// Vertical shear (thesis Fig. 4.4): strips lying in horizontal planes ride the
+// wind of their height. With reset on any particle leaving, no particle is ever
+// advected from outside the field, and the strips stay straight instead of
+// dragging at the boundary.
+TEST_P(Physics, VerticalShearStripsStayInsideAndStraight)
+{
+  const std::array<double, 6> box = { -1, 1, -1, 1, 0, 0.5 };
+  const bp::VectorField field = steady(bp::AnalyticFlow::VerticalShear, { 33, 33, 17 }, box);
+  const float size = 0.3f, r = 0.5f * size; // emitter shrunk by the element's radius
+  bp::Parameters p = placed(200, size, { -1 + r, -1 + r, r }, { 1 - r, 1 - r, 0.5f - r });
+  p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
+  p.randomOrientation = false; // lying in horizontal planes, where the wind is uniform
+  const bp::ElementTemplate strip = bp::builtinTemplate(bp::BuiltinShape::Strip16);
+  System system(GetParam(), strip, p, field);
+  const double rest =
+    std::hypot(strip.rest[14][0] - strip.rest[0][0], strip.rest[14][1] - strip.rest[0][1],
+      strip.rest[14][2] - strip.rest[0][2]) *
+    size;
+  const bp::VectorField::SamplingConstants c = field.samplingConstants();
+  int outsideUnflagged = 0, resets = 0;
+  double worstBend = 0.0;
+  for (int s = 0; s < 300; ++s)
+  {
+    system.step(s * 0.01, 0.01);
+    const std::vector<float> x = system.positions();
+    const std::vector<float> flags = system.flags();
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    {
+      if (flags[e] > 0.5f)
+      {
+        ++resets; // reset before its particles are advected again
+        continue;
+      }
+      for (std::size_t i = 0; i < 16; ++i)
+      {
+        const float* q = &x[3 * (e * 16 + i)];
+        for (int a = 0; a < 3; ++a)
+          outsideUnflagged += !(q[a] >= c.lower[a] && q[a] <= c.upper[a]);
+      }
+      // A strip dragging at the boundary bends: its end-to-end length shrinks.
+      const float* a = &x[3 * (e * 16)];
+      const float* b = &x[3 * (e * 16 + 14)];
+      worstBend =
+        std::max(worstBend, std::abs(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) / rest - 1));
+    }
+  }
+  EXPECT_EQ(outsideUnflagged, 0);
+  EXPECT_GT(resets, 0); // the check saw elements leave
+  EXPECT_LT(worstBend, 0.02);
+}
+
+// A pinned particle stays put to machine precision while its element swings.
+TEST_P(Physics, PinnedParticleStaysPut)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ABC, { 17, 17, 17 }, { -1, 1, -1, 1, -1, 1 });
+  bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip8);
+  shape.pinned.assign(shape.particleCount(), 0);
+  shape.pinned[0] = 1;
+  bp::Parameters p = placed(10, 0.3f, { -0.5f, -0.5f, -0.5f }, { 0.5f, 0.5f, 0.5f });
+  System system(GetParam(), shape, p, field);
+  const std::vector<float> start = system.positions();
+  for (int s = 0; s < 100; ++s)
+    system.step(s * 0.01, 0.01);
+  const std::vector<float> end = system.positions();
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+  {
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(end[3 * e * 8 + k], start[3 * e * 8 + k]);
+    EXPECT_GT(std::abs(end[3 * e * 8 + 21] - start[3 * e * 8 + 21]), 1e-3); // the far end swings
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, Physics, ::testing::Values(false, true),
+  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });
