@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -375,6 +376,59 @@ ElementTemplate builtinTemplate(BuiltinShape shape)
       return fish();
   }
   return makeTemplate("Point", { { 0, 0, 0 } }, {}, {});
+}
+
+std::vector<Pair> meshSprings(
+  std::size_t particles, const std::vector<Tri>& triangles, MeshSprings mode)
+{
+  if (mode == MeshSprings::AllPairs)
+  {
+    std::vector<Pair> all;
+    for (std::uint32_t a = 0; a < particles; ++a)
+    {
+      for (std::uint32_t b = a + 1; b < particles; ++b)
+      {
+        all.push_back({ a, b });
+      }
+    }
+    return all;
+  }
+  std::vector<Pair> springs = triangleEdges(triangles);
+  if (mode == MeshSprings::EdgesAndDiagonals)
+  {
+    // For each edge, the corners opposite it in the triangles that share it.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> opposite;
+    for (const Tri& t : triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+        opposite[{ std::min(a, b), std::max(a, b) }].push_back(c);
+      }
+    }
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (const Pair& e : springs)
+    {
+      seen.insert({ std::min(e[0], e[1]), std::max(e[0], e[1]) });
+    }
+    for (const auto& edge : opposite)
+    {
+      const auto& corners = edge.second;
+      for (std::size_t i = 0; i < corners.size(); ++i)
+      {
+        for (std::size_t j = i + 1; j < corners.size(); ++j)
+        {
+          const std::uint32_t a = std::min(corners[i], corners[j]);
+          const std::uint32_t b = std::max(corners[i], corners[j]);
+          if (a != b && seen.insert({ a, b }).second)
+          {
+            springs.push_back({ a, b });
+          }
+        }
+      }
+    }
+  }
+  return springs;
 }
 
 ElementTemplate makeTemplate(const std::string& name, const std::vector<Point>& points,

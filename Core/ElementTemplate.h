@@ -67,6 +67,19 @@ const char* builtinShapeName(BuiltinShape shape);
 /// A normalised template of the shape.
 ElementTemplate builtinTemplate(BuiltinShape shape);
 
+/// Which springs a mesh without lines gets (thesis §3.3: springs decide how
+/// an element may fold).
+enum class MeshSprings
+{
+  Edges = 0,         ///< the triangles' edges: a sheet that folds freely
+  EdgesAndDiagonals, ///< plus, across every edge two triangles share, their far corners
+  AllPairs           ///< every pair of particles: rigid
+};
+
+/// Springs for a mesh of `particles` points and these triangles.
+std::vector<std::array<std::uint32_t, 2>> meshSprings(std::size_t particles,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, MeshSprings mode);
+
 /**
  * Builds a template from points, triangles and spring pairs; rest lengths come
  * from the points. When `springPairs` is empty, the triangles' edges become the

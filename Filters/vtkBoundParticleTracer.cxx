@@ -8,6 +8,8 @@
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -101,11 +103,10 @@ struct vtkBoundParticleTracer::vtkInternals
   vtkIdType StepsInLastUpdate = 0;
   bool LastUpdateReplayed = false;
 
-  // The output's cells depend only on the element count and the shape.
+  // The output's cells, built at each replay (they depend on the element
+  // count and the shape only).
   vtkSmartPointer<vtkCellArray> Cells;
   int CellsKind = -1; // 0 vertices, 1 lines, 2 triangles
-  std::size_t CellsElements = 0;
-  int CellsShape = -1;
 
   double timeEpsilon() const
   {
@@ -198,7 +199,7 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkInternals)
 {
   preferThreadedBackend();
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
   // By default the active point vectors (or, failing that, the first
   // 3-component point array).
@@ -229,12 +230,23 @@ double vtkBoundParticleTracer::GetResolvedElementSize() const
   return this->Internals->ResolvedElementSize;
 }
 
-int vtkBoundParticleTracer::FillInputPortInformation(int, vtkInformation* info)
+int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   // Any dataset is accepted here so that a wrong type gets an error that says
   // what to do, rather than the pipeline's generic type mismatch.
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   return 1;
+}
+
+void vtkBoundParticleTracer::SetTemplateData(vtkPolyData* shape)
+{
+  this->SetInputDataInternal(1, shape);
 }
 
 int vtkBoundParticleTracer::RequestInformation(
@@ -399,6 +411,85 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   slice.velocity = values;
   grid = g;
   return std::string();
+}
+
+/// The element template of a polydata; empty on success, otherwise what is wrong.
+std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out)
+{
+  if (!mesh || mesh->GetNumberOfPoints() == 0)
+  {
+    return "The Element Template input has no points.";
+  }
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<std::array<float, 3>> points(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    points[i] = { float(x[0]), float(x[1]), float(x[2]) };
+  }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  vtkIdType count;
+  const vtkIdType* ids;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(count, ids);
+    for (vtkIdType k = 1; k + 1 < count; ++k) // a fan over each polygon
+    {
+      triangles.push_back(
+        { std::uint32_t(ids[0]), std::uint32_t(ids[k]), std::uint32_t(ids[k + 1]) });
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    strips->GetCurrentCell(count, ids);
+    for (vtkIdType k = 0; k + 2 < count; ++k) // every other triangle turned round
+    {
+      const auto a = std::uint32_t(ids[k]), b = std::uint32_t(ids[k + 1]),
+                 c = std::uint32_t(ids[k + 2]);
+      triangles.push_back(
+        k % 2 ? std::array<std::uint32_t, 3>{ b, a, c } : std::array<std::uint32_t, 3>{ a, b, c });
+    }
+  }
+  std::vector<std::array<std::uint32_t, 2>> springs;
+  std::vector<float> stiffness;
+  vtkDataArray* stiffnessArray = mesh->GetCellData()->GetArray("Stiffness");
+  const vtkIdType firstLine = mesh->GetNumberOfVerts();
+  vtkIdType line = 0;
+  auto lines = vtk::TakeSmartPointer(mesh->GetLines()->NewIterator());
+  for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++line)
+  {
+    lines->GetCurrentCell(count, ids);
+    const float k =
+      stiffnessArray ? float(stiffnessArray->GetComponent(firstLine + line, 0)) : 1.0f;
+    for (vtkIdType j = 0; j + 1 < count; ++j)
+    {
+      springs.push_back({ std::uint32_t(ids[j]), std::uint32_t(ids[j + 1]) });
+      stiffness.push_back(k);
+    }
+  }
+  if (springs.empty())
+  {
+    springs = bp::meshSprings(std::size_t(n), triangles, mode);
+    stiffness.assign(springs.size(), 1.0f);
+  }
+  out = bp::makeTemplate("Element Template", points, triangles, springs);
+  for (std::size_t k = 0; k < out.springs.size() && k < stiffness.size(); ++k)
+  {
+    out.springs[k].stiffness = stiffness[k];
+  }
+  if (vtkDataArray* pinned = mesh->GetPointData()->GetArray("Pinned"))
+  {
+    out.pinned.assign(std::size_t(n), 0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out.pinned[i] = pinned->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    }
+  }
+  const std::string error = out.validate();
+  return error.empty() ? error : "The Element Template input is unusable: " + error + ".";
 }
 
 vtkSmartPointer<vtkCellArray> buildCells(
@@ -667,13 +758,23 @@ int vtkBoundParticleTracer::RequestData(
     p.resetWhen = bp::ResetWhen(this->ResetWhen);
     p.seed = std::uint32_t(this->Seed);
 
-    const std::string error =
-      I.Engine.configure(bp::builtinTemplate(bp::BuiltinShape(this->ElementShape)), p);
+    bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape(this->ElementShape));
+    if (this->GetNumberOfInputConnections(1) > 0)
+    {
+      const std::string templateError = templateFromPolyData(
+        vtkPolyData::GetData(inputVector[1], 0), bp::MeshSprings(this->TemplateSprings), shape);
+      if (!templateError.empty())
+      {
+        return fail(templateError);
+      }
+    }
+    const std::string error = I.Engine.configure(shape, p);
     if (!error.empty())
     {
       return fail(error + ".");
     }
     I.Engine.initialize(smpRunner());
+    I.Cells = nullptr; // the element count or shape may have changed
     I.Schedule.reset(new bp::StepSchedule(
       I.StartTime, I.ResolvedDt, I.Unsteady ? I.InputTimes : std::vector<double>()));
     I.Committed = I.StartTime;
@@ -781,11 +882,9 @@ int vtkBoundParticleTracer::RequestData(
     });
   output->SetPoints(points);
 
-  if (!I.Cells || I.CellsElements != E || I.CellsShape != this->ElementShape)
+  if (!I.Cells)
   {
     I.Cells = buildCells(engine.shape(), E, I.CellsKind);
-    I.CellsElements = E;
-    I.CellsShape = this->ElementShape;
   }
   switch (I.CellsKind)
   {

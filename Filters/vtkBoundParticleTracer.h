@@ -29,6 +29,8 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkPolyData;
+
 class BOUNDPARTICLESFILTERS_EXPORT vtkBoundParticleTracer : public vtkPolyDataAlgorithm
 {
 public:
@@ -66,6 +68,12 @@ public:
     CENTER_LEAVES = 0,
     ANY_PARTICLE_LEAVES
   };
+  enum TemplateSpringModes
+  {
+    EDGES = 0,
+    EDGES_AND_DIAGONALS,
+    ALL_PAIRS
+  };
   enum StepSizeUnits
   {
     CELL_LENGTH = 0,
@@ -76,6 +84,24 @@ public:
   /// The built-in element shape (thesis Fig. 3.4). Default STRIP8.
   vtkSetClampMacro(ElementShape, int, POINT, FISH);
   vtkGetMacro(ElementShape, int);
+  ///@}
+
+  ///@{
+  /// The optional second input: any vtkPolyData as the element template,
+  /// instead of ElementShape. Points become particles (centred and scaled to
+  /// ElementSize), polygons and strips the drawn triangles, lines the springs
+  /// (with the optional cell array "Stiffness" in [0, 1]); the optional point
+  /// array "Pinned" (non-zero) pins particles in place.
+  void SetTemplateConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetTemplateData(vtkPolyData* shape);
+  ///@}
+
+  ///@{
+  /// Springs of a template mesh that has no lines: its EDGES, plus across
+  /// every shared edge the far corners (EDGES_AND_DIAGONALS, default), or
+  /// ALL_PAIRS (rigid).
+  vtkSetClampMacro(TemplateSprings, int, EDGES, ALL_PAIRS);
+  vtkGetMacro(TemplateSprings, int);
   ///@}
 
   ///@{
@@ -199,6 +225,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int ElementShape = STRIP8;
+  int TemplateSprings = EDGES_AND_DIAGONALS;
   vtkIdType NumberOfElements = 1000;
   double ElementSize = 0.0;
   double EmitterCenter[3] = { 0.0, 0.0, 0.0 };

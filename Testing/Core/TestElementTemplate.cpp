@@ -134,3 +134,15 @@ TEST(ElementTemplate, MakeTemplateUsesTriangleEdgesWithoutSprings)
   EXPECT_EQ(t.validate(), "");
   EXPECT_EQ(t.springs.size(), 3u);
 }
+
+TEST(ElementTemplate, MeshSpringsFromTriangles)
+{
+  // Two triangles sharing the diagonal of a unit square.
+  const std::vector<std::array<std::uint32_t, 3>> square = { { 0, 1, 2 }, { 0, 2, 3 } };
+  EXPECT_EQ(bp::meshSprings(4, square, bp::MeshSprings::Edges).size(), 5u);
+  const auto braced = bp::meshSprings(4, square, bp::MeshSprings::EdgesAndDiagonals);
+  ASSERT_EQ(braced.size(), 6u); // plus the other diagonal, 1-3
+  EXPECT_EQ(std::min(braced[5][0], braced[5][1]), 1u);
+  EXPECT_EQ(std::max(braced[5][0], braced[5][1]), 3u);
+  EXPECT_EQ(bp::meshSprings(5, square, bp::MeshSprings::AllPairs).size(), 10u);
+}

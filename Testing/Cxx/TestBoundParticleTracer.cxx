@@ -4,6 +4,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -15,6 +16,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -558,7 +560,92 @@ TEST(BoundParticleTracer, AnyParticleLeavingPlacesElementsWhollyInside)
     EXPECT_GE(b[2 * a], -1.0 - 1e-6);
     EXPECT_LE(b[2 * a + 1], 1.0 + 1e-6);
   }
-  tracer->SetResetWhen(vtkBoundParticleTracer::CENTER_LEAVES); // the thesis' rule: elements may stick out
+  tracer->SetResetWhen(
+    vtkBoundParticleTracer::CENTER_LEAVES); // the thesis' rule: elements may stick out
   at(tracer, 0.0)->GetBounds(b);
   EXPECT_GT(b[1], 1.05);
+}
+
+TEST(BoundParticleTracer, AnyMeshIsAnElement)
+{
+  // A Plane source of 3 x 3 quads is a cloth patch: 16 particles, 18 triangles.
+  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(3, 3);
+  for (int mode : { vtkBoundParticleTracer::EDGES, vtkBoundParticleTracer::EDGES_AND_DIAGONALS,
+         vtkBoundParticleTracer::ALL_PAIRS })
+  {
+    auto tracer = tracerOn(source, 25);
+    tracer->SetTemplateConnection(plane->GetOutputPort());
+    tracer->SetTemplateSprings(mode);
+    vtkPolyData* out = at(tracer, 0.5);
+    EXPECT_EQ(out->GetNumberOfPoints(), 25 * 16);
+    EXPECT_EQ(out->GetNumberOfPolys(), 25 * 18);
+    EXPECT_LT(out->GetPointData()->GetArray("Force")->GetRange()[1], 0.1);
+  }
+  // A changed template replays with the new shape.
+  auto tracer = tracerOn(source, 25);
+  tracer->SetTemplateConnection(plane->GetOutputPort());
+  at(tracer, 0.5);
+  plane->SetResolution(2, 2);
+  EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 25 * 9);
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+}
+
+TEST(BoundParticleTracer, TemplateLinesSpringsStiffnessAndPins)
+{
+  // A polyline of three particles: two springs, drawn as lines; particle 0 pinned.
+  auto line = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  pts->InsertNextPoint(0, 0, 0);
+  pts->InsertNextPoint(1, 0, 0);
+  pts->InsertNextPoint(2, 0.2, 0);
+  line->SetPoints(pts);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType ids[3] = { 0, 1, 2 };
+  lines->InsertNextCell(3, ids);
+  line->SetLines(lines);
+  vtkNew<vtkFloatArray> stiffness;
+  stiffness->SetName("Stiffness");
+  stiffness->InsertNextValue(0.5f);
+  line->GetCellData()->AddArray(stiffness);
+  vtkNew<vtkFloatArray> pinned;
+  pinned->SetName("Pinned");
+  pinned->InsertNextValue(1);
+  pinned->InsertNextValue(0);
+  pinned->InsertNextValue(0);
+  line->GetPointData()->AddArray(pinned);
+
+  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto tracer = tracerOn(source, 10);
+  tracer->SetTemplateData(line);
+  tracer->SetLifetimeRange(100, 100);
+  tracer->SetEmitterCenter(0, 0, 0); // far from the bounds: no element leaves
+  tracer->SetEmitterSize(0.5, 0.5, 0.5);
+  const std::vector<float> start = pointsOf(at(tracer, 0.0));
+  vtkPolyData* out = at(tracer, 1.0);
+  EXPECT_EQ(out->GetNumberOfLines(), 10 * 2);
+  const std::vector<float> later = pointsOf(out);
+  for (int e = 0; e < 10; ++e)
+  {
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(later[9 * e + k], start[9 * e + k]); // the pinned particle
+    EXPECT_NE(later[9 * e + 6], start[9 * e + 6]);   // the free end moves
+  }
+
+  stiffness->SetValue(0, 1.5f);
+  line->Modified();
+  ErrorLog log(tracer);
+  EXPECT_EQ(at(tracer, 1.0)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(log.mentions("stiffness"));
+}
+
+TEST(BoundParticleTracer, AnEmptyTemplateIsRejected)
+{
+  auto source = flow(vtkAnalyticFlowSource::ABC, 8);
+  auto tracer = tracerOn(source, 10);
+  tracer->SetTemplateData(vtkSmartPointer<vtkPolyData>::New());
+  ErrorLog log(tracer);
+  EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(log.mentions("Element Template input has no points"));
 }

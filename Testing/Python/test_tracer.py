@@ -81,6 +81,18 @@ tracer.StepSize = 0.5
 tracer.UpdatePipeline(0.5)
 bptest.check(tracer.GetDataInformation().GetNumberOfPoints() == 2400, "recovers after fixing")
 
+# Any source is an element editor: a sphere as the template.
+sphere = Sphere(ThetaResolution=8, PhiResolution=6)
+blobs = BoundParticleTracer(Input=flow, ElementTemplate=sphere, NumberOfElements=20,
+                            TemplateSprings="All Pairs")
+blobs.UpdatePipeline(0.5)
+info = blobs.GetDataInformation()
+sphereInfo = sphere.GetDataInformation()
+bptest.check(info.GetNumberOfPoints() == 20 * sphereInfo.GetNumberOfPoints(),
+             "20 spheres give %d points" % info.GetNumberOfPoints())
+bptest.check(info.GetNumberOfCells() == 20 * sphereInfo.GetNumberOfCells(),
+             "20 spheres give %d cells" % info.GetNumberOfCells())
+
 Delete(view)
 del view
 bptest.finish()
