@@ -378,6 +378,27 @@ ElementTemplate builtinTemplate(BuiltinShape shape)
   return makeTemplate("Point", { { 0, 0, 0 } }, {}, {});
 }
 
+std::vector<int> colourSprings(std::size_t particles, const std::vector<Spring>& springs)
+{
+  std::vector<std::vector<int>> used(particles); // colours touching each particle
+  std::vector<int> colour(springs.size(), 0);
+  for (std::size_t k = 0; k < springs.size(); ++k)
+  {
+    const auto& a = used[springs[k].a];
+    const auto& b = used[springs[k].b];
+    int c = 0;
+    while (
+      std::find(a.begin(), a.end(), c) != a.end() || std::find(b.begin(), b.end(), c) != b.end())
+    {
+      ++c;
+    }
+    colour[k] = c;
+    used[springs[k].a].push_back(c);
+    used[springs[k].b].push_back(c);
+  }
+  return colour;
+}
+
 std::vector<Pair> meshSprings(
   std::size_t particles, const std::vector<Tri>& triangles, MeshSprings mode)
 {

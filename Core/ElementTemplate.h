@@ -67,6 +67,14 @@ const char* builtinShapeName(BuiltinShape shape);
 /// A normalised template of the shape.
 ElementTemplate builtinTemplate(BuiltinShape shape);
 
+/**
+ * A colouring of the springs in which no two springs of one colour share a
+ * particle (greedy, in spring order): the colour of each spring. Gauss-Seidel
+ * applies the springs colour by colour, so that each colour can run as one
+ * parallel pass on the GPU and give the same result as on the CPU.
+ */
+std::vector<int> colourSprings(std::size_t particles, const std::vector<Spring>& springs);
+
 /// Which springs a mesh without lines gets (thesis §3.3: springs decide how
 /// an element may fold).
 enum class MeshSprings

@@ -146,6 +146,20 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
     ++degree[s.a];
     ++degree[s.b];
   }
+  // Gauss-Seidel applies the springs colour by colour (the GPU engine runs a
+  // colour per pass), in spring order within a colour.
+  const std::vector<int> colour = colourSprings(n, shape.springs);
+  this->GaussSeidelSprings.clear();
+  for (int c = 0; c <= (colour.empty() ? -1 : *std::max_element(colour.begin(), colour.end())); ++c)
+  {
+    for (std::size_t k = 0; k < colour.size(); ++k)
+    {
+      if (colour[k] == c)
+      {
+        this->GaussSeidelSprings.push_back(this->Springs[k]);
+      }
+    }
+  }
   this->InverseDegree.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -359,7 +373,7 @@ void Engine::restore(float* p, float* acc, float* orientation) const
     if (method == Restoration::GaussSeidel)
     {
       // Each spring moves its ends at once, so later springs see the update.
-      for (const SpringWork& s : this->Springs)
+      for (const SpringWork& s : this->GaussSeidelSprings)
       {
         float c[3];
         if (springCorrection(p, s, c))

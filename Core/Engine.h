@@ -157,6 +157,7 @@ private:
   ElementTemplate Shape;
   Parameters Params;
   std::vector<SpringWork> Springs;
+  std::vector<SpringWork> GaussSeidelSprings; ///< the springs in colour order
   std::vector<float> InverseDegree;
   std::vector<std::uint8_t> Pinned;
 

@@ -87,6 +87,8 @@ struct GpuEngine::Internals
   }
 
   GLuint Vao = 0, Fbo = 0;
+  GLuint GaussSeidel = 0, ColouredSprings = 0;
+  int Colours = 0;
   GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
          Normals = 0;
   GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
@@ -245,7 +247,7 @@ struct GpuEngine::Internals
       this->Centers[1], this->State[0], this->State[1], this->Advected, this->Before,
       this->Restored[0], this->Restored[1], this->NormalsTex, this->Rest, this->ParticleInfo,
       this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1], this->Orientations[0],
-      this->Orientations[1], this->MatchCenters };
+      this->Orientations[1], this->MatchCenters, this->ColouredSprings };
     for (GLuint t : textures)
     {
       if (t)
@@ -254,7 +256,7 @@ struct GpuEngine::Internals
       }
     }
     for (GLuint p : { this->Reset, this->Advect, this->Restore, this->Match, this->MatchApply,
-           this->Test, this->Finalize, this->Normals })
+           this->GaussSeidel, this->Test, this->Finalize, this->Normals })
     {
       if (p)
       {
@@ -314,10 +316,6 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     return error;
   }
-  if (p.restoration == Restoration::GaussSeidel)
-  {
-    return "Gauss-Seidel restoration runs on the CPU engine only";
-  }
   const std::array<float, 4> frameQuaternion = quaternionFromRotation(p.frame);
   this->release();
   Internals& S = *this->I;
@@ -349,6 +347,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     { std::make_pair(bpShaderResetFrag, &S.Reset), std::make_pair(bpShaderAdvectFrag, &S.Advect),
       std::make_pair(bpShaderRestoreFrag, &S.Restore), std::make_pair(bpShaderMatchFrag, &S.Match),
       std::make_pair(bpShaderMatchApplyFrag, &S.MatchApply),
+      std::make_pair(bpShaderGaussSeidelFrag, &S.GaussSeidel),
       std::make_pair(bpShaderTestFrag, &S.Test), std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
       std::make_pair(bpShaderNormalsFrag, &S.Normals) })
   {
@@ -422,6 +421,25 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     }
     row1[1] = float(triangles.size() / 4) - row1[0];
   }
+  // Gauss-Seidel: per (particle, colour) the particle's spring of that colour.
+  const std::vector<int> colour = colourSprings(std::size_t(S.n), shape.springs);
+  S.Colours = colour.empty() ? 0 : *std::max_element(colour.begin(), colour.end()) + 1;
+  std::vector<float> coloured(std::size_t(2 * S.n) * std::max(S.Colours, 1) * 4, 0.0f);
+  for (std::size_t k = 0; k < shape.springs.size(); ++k)
+  {
+    const Spring& s = shape.springs[k];
+    const bool pa = pinned[s.a] != 0, pb = pinned[s.b] != 0;
+    const float shares[2] = { pa ? 0.0f : (pb ? 1.0f : 0.5f), pb ? 0.0f : (pa ? 1.0f : 0.5f) };
+    const std::uint32_t ends[2] = { s.a, s.b };
+    for (int side = 0; side < 2; ++side)
+    {
+      float* texel = &coloured[4 * (std::size_t(colour[k]) * 2 * S.n + 2 * ends[side])];
+      const float entry[8] = { float(s.a), float(s.b), side == 0 ? shares[0] : -shares[1], 1.0f,
+        s.restLength * p.elementSize, s.stiffness, 0.0f, 0.0f };
+      std::copy(entry, entry + 8, texel);
+    }
+  }
+  S.ColouredSprings = makeTexture2D(2 * S.n, std::max(S.Colours, 1), coloured.data());
   S.Rest = makeTexture2D(S.n, 1, rest.data());
   S.ParticleInfo = makeTexture2D(S.n, 2, info.data());
   S.SpringsWidth = int(std::min<std::size_t>(std::max<std::size_t>(springs.size() / 4, 2), 4096));
@@ -556,6 +574,23 @@ void GpuEngine::step(double t, double h)
       Internals::setFloat(S.MatchApply, "bpShapeStiffness", P.shapeStiffness);
       S.run({ S.Restored[k % 2] }, S.PW, S.PH);
       positions = S.Restored[k % 2];
+    }
+  }
+  // ... or of Gauss-Seidel, a pass per colour of springs ...
+  else if (P.restoration == Restoration::GaussSeidel && !S.Shape.springs.empty())
+  {
+    int pass = 0;
+    for (int k = 0; k < P.iterations; ++k)
+    {
+      for (int c = 0; c < S.Colours; ++c, ++pass)
+      {
+        S.use(S.GaussSeidel);
+        S.bind(S.GaussSeidel, "bpPositions", positions);
+        S.bind(S.GaussSeidel, "bpColouredSprings", S.ColouredSprings);
+        Internals::setInt(S.GaussSeidel, "bpColour", c);
+        S.run({ S.Restored[pass % 2] }, S.PW, S.PH);
+        positions = S.Restored[pass % 2];
+      }
     }
   }
   // ... or of Jacobi.

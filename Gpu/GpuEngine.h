@@ -13,8 +13,10 @@
  *
  * Plain OpenGL 3.3 core through libepoxy, no VTK: it runs in any current
  * context, a headless EGL one (tests, benchmarks) or a render window's.
- * Averaged Jacobi, Jacobi and shape matching run here; Gauss-Seidel is rejected
- * by configure() so that callers fall back to the CPU engine.
+ * Every restoration runs here: averaged Jacobi and Jacobi as gathers over each
+ * particle's springs, Gauss-Seidel as one pass per colour of a spring colouring
+ * (the CPU engine applies the springs in the same colour order), shape matching
+ * as a fit per element and a move per particle.
  */
 #ifndef BoundParticles_GpuEngine_h
 #define BoundParticles_GpuEngine_h

@@ -146,3 +146,21 @@ TEST(ElementTemplate, MeshSpringsFromTriangles)
   EXPECT_EQ(std::max(braced[5][0], braced[5][1]), 3u);
   EXPECT_EQ(bp::meshSprings(5, square, bp::MeshSprings::AllPairs).size(), 10u);
 }
+
+TEST(ElementTemplate, SpringColoursShareNoParticle)
+{
+  for (int shape = 0; shape < bp::BuiltinShapeCount; ++shape)
+  {
+    const bp::ElementTemplate t = bp::builtinTemplate(bp::BuiltinShape(shape));
+    const std::vector<int> colour = bp::colourSprings(t.particleCount(), t.springs);
+    ASSERT_EQ(colour.size(), t.springs.size());
+    for (std::size_t i = 0; i < t.springs.size(); ++i)
+      for (std::size_t j = i + 1; j < t.springs.size(); ++j)
+        if (colour[i] == colour[j])
+        {
+          const auto& a = t.springs[i];
+          const auto& b = t.springs[j];
+          EXPECT_TRUE(a.a != b.a && a.a != b.b && a.b != b.a && a.b != b.b) << t.name;
+        }
+  }
+}
