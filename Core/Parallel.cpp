@@ -2,6 +2,9 @@
 #include "Parallel.h"
 
 #include <algorithm>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -46,6 +49,99 @@ RangeRunner threadRunner(unsigned threads)
       w.join();
     }
   };
+}
+
+namespace
+{
+class Pool
+{
+public:
+  explicit Pool(unsigned threads)
+    : Chunks(threads)
+  {
+    for (unsigned w = 1; w < threads; ++w)
+    {
+      this->Workers.emplace_back([this, w] { this->work(w); });
+    }
+  }
+  ~Pool()
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Stop = true;
+      ++this->Generation;
+    }
+    this->Wake.notify_all();
+    for (auto& t : this->Workers)
+    {
+      t.join();
+    }
+  }
+  void run(std::size_t count, const RangeFunction& f)
+  {
+    if (this->Workers.empty() || count < this->Chunks)
+    {
+      if (count > 0)
+      {
+        f(0, count);
+      }
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Job = &f;
+      this->Count = count;
+      this->Pending = this->Workers.size();
+      ++this->Generation;
+    }
+    this->Wake.notify_all();
+    f(0, count / this->Chunks); // the caller's own chunk
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    this->Done.wait(lock, [this] { return this->Pending == 0; });
+  }
+
+private:
+  void work(unsigned index)
+  {
+    std::size_t seen = 0;
+    while (true)
+    {
+      const RangeFunction* job;
+      std::size_t count;
+      {
+        std::unique_lock<std::mutex> lock(this->Mutex);
+        this->Wake.wait(lock, [&] { return this->Generation != seen; });
+        seen = this->Generation;
+        if (this->Stop)
+        {
+          return;
+        }
+        job = this->Job;
+        count = this->Count;
+      }
+      (*job)(count * index / this->Chunks, count * (index + 1) / this->Chunks);
+      {
+        std::lock_guard<std::mutex> lock(this->Mutex);
+        --this->Pending;
+      }
+      this->Done.notify_one();
+    }
+  }
+
+  const std::size_t Chunks;
+  std::vector<std::thread> Workers;
+  std::mutex Mutex;
+  std::condition_variable Wake, Done;
+  const RangeFunction* Job = nullptr;
+  std::size_t Count = 0, Pending = 0, Generation = 0;
+  bool Stop = false;
+};
+} // namespace
+
+RangeRunner poolRunner(unsigned threads)
+{
+  auto pool = std::make_shared<Pool>(std::max(1u, threads));
+  return [pool](std::size_t count, const RangeFunction& f) { pool->run(count, f); };
 }
 
 } // namespace bp

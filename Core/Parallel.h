@@ -25,8 +25,14 @@ using RangeRunner = std::function<void(std::size_t count, const RangeFunction&)>
 /// Runs the whole range on the calling thread.
 RangeRunner serialRunner();
 
-/// Splits the range into contiguous chunks over `threads` std::threads.
+/// Splits the range into contiguous chunks over `threads` std::threads,
+/// started anew for every call (simple; costly for small ranges).
 RangeRunner threadRunner(unsigned threads);
+
+/// The same chunks on a pool of `threads - 1` persistent workers and the
+/// calling thread, as vtkSMPTools' thread pool runs them. The pool lives as
+/// long as the returned runner (and its copies).
+RangeRunner poolRunner(unsigned threads);
 
 } // namespace bp
 

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBoundParticleTracer.h"
 
-#include "AnalyticFlows.h"
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "VectorField.h"

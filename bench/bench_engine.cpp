@@ -1,90 +1,153 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Steps per second of the CPU engine on a steady analytic flow, for element
-// shapes and counts of thesis Table 4.1, on 1 and 2 threads side by side.
-// Each cell is the median of 5 timed runs after one warm-up run.
+// Speed of the engines, side by side in one run: the CPU engine (1 and 2
+// threads) and the GPU engine (headless EGL) on the element shapes and counts
+// of thesis Table 4.1 plus single-particle elements, on a steady and an
+// unsteady field, against a plain trilinear Euler loop (no springs) compiled
+// in the same build. Every cell is the median of 5 timed runs after a warm-up.
+// Prints a table; --csv FILE also writes it as CSV.
 #include "AnalyticFlows.h"
 #include "Engine.h"
+#include "GpuEngine.h"
+#include "HeadlessContext.h"
+
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace
 {
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// Median of 5 timed runs after one warm-up; `run` returns the seconds it measured.
+double median(const std::function<double()>& run)
+{
+  run();
+  std::vector<double> t;
+  for (int k = 0; k < 5; ++k)
+    t.push_back(run());
+  std::sort(t.begin(), t.end());
+  return t[2];
+}
+
 struct Config
 {
   bp::BuiltinShape shape;
   std::size_t elements;
 };
 
-double medianSeconds(
-  const bp::VectorField& field, const Config& c, const bp::RangeRunner& run, int steps, double dt)
+bp::Parameters parametersFor(const bp::VectorField& field, std::size_t elements)
 {
-  std::vector<double> times;
-  for (int repeat = 0; repeat < 6; ++repeat)
+  bp::Parameters p;
+  p.numberOfElements = elements;
+  p.elementSize = 0.05f;
+  const auto b = field.grid().bounds();
+  for (int a = 0; a < 3; ++a)
   {
-    bp::Engine engine;
-    bp::Parameters p;
-    p.numberOfElements = c.elements;
-    p.elementSize = 0.1f;
-    const auto b = field.grid().bounds();
-    for (int a = 0; a < 3; ++a)
-    {
-      p.emitterMin[a] = float(b[2 * a]);
-      p.emitterMax[a] = float(b[2 * a + 1]);
-    }
-    p.lifetimeMin = 2.0f;
-    p.lifetimeMax = 4.0f;
-    const std::string error = engine.configure(bp::builtinTemplate(c.shape), p);
-    if (!error.empty())
-    {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      std::exit(1);
-    }
-    engine.initialize(run);
-    const auto start = std::chrono::steady_clock::now();
-    for (int s = 0; s < steps; ++s)
-    {
-      engine.step(field, s * dt, dt, run);
-    }
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (repeat > 0) // the first run warms caches and the allocator
-    {
-      times.push_back(seconds);
-    }
+    p.emitterMin[a] = float(b[2 * a]);
+    p.emitterMax[a] = float(b[2 * a + 1]);
   }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  p.lifetimeMin = 2.0f;
+  p.lifetimeMax = 4.0f;
+  return p;
+}
+
+/// Plain reference: every particle advected by trilinear Euler, no springs,
+/// no resets, the same sampler, over element ranges like the engine.
+double referenceLoop(const bp::VectorField& field, std::size_t particles, int steps, double dt,
+  const bp::RangeRunner& run)
+{
+  std::vector<float> x(3 * particles);
+  const auto b = field.grid().bounds();
+  for (std::size_t i = 0; i < particles; ++i)
+    for (int a = 0; a < 3; ++a)
+      x[3 * i + a] =
+        float(b[2 * a] + (b[2 * a + 1] - b[2 * a]) * ((i * (a + 3) * 2654435761u) % 1000) / 1000.0);
+  const auto start = Clock::now();
+  for (int s = 0; s < steps; ++s)
+  {
+    run(particles,
+      [&](std::size_t begin, std::size_t end)
+      {
+        const float h = float(dt);
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          float v[3];
+          field.sample(&x[3 * i], s * dt, v);
+          x[3 * i] += h * v[0];
+          x[3 * i + 1] += h * v[1];
+          x[3 * i + 2] += h * v[2];
+        }
+      });
+  }
+  return seconds(start);
+}
+
+long peakRssKiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0)
+      return std::atol(line.c_str() + 6);
+  return 0;
 }
 } // namespace
 
 int main(int argc, char** argv)
 {
   int resolution = 128;
-  bool quick = false;
+  bool quick = false, gpu = true;
+  std::string csvPath;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--resolution") && i + 1 < argc)
       resolution = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick"))
       quick = true;
+    else if (!std::strcmp(argv[i], "--no-gpu"))
+      gpu = false;
+    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
+      csvPath = argv[++i];
   }
+
   bp::GridGeometry g;
   g.dims = { resolution, resolution, resolution };
   g.origin = { -1, -1, -1 };
   const double h = 2.0 / (resolution - 1);
   g.spacing = { h, h, h };
-  bp::FieldSlice slice;
-  slice.velocity = std::make_shared<std::vector<float>>(
-    bp::sampleAnalyticFlow(bp::AnalyticFlow::ShearLayer, g, 0.0));
-  const bp::VectorField field(g, slice);
-  const double dt = 0.5 * h / field.maxSpeed();
+  auto slice = [&](bp::AnalyticFlow flow, double t)
+  {
+    bp::FieldSlice s;
+    s.time = t;
+    s.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t));
+    return s;
+  };
+  const bp::VectorField steady(g, slice(bp::AnalyticFlow::ShearLayer, 0.0));
+  const bp::VectorField unsteady(
+    g, slice(bp::AnalyticFlow::DoubleGyre, 0.0), slice(bp::AnalyticFlow::DoubleGyre, 100.0));
+
+  bp::HeadlessContext context;
+  std::string gpuName = "none";
+  if (gpu)
+  {
+    const std::string error = context.create();
+    gpu = error.empty();
+    gpuName = gpu ? context.description() : error;
+  }
 
   std::vector<Config> configs;
   const std::vector<std::size_t> counts = quick
@@ -94,21 +157,94 @@ int main(int argc, char** argv)
     { bp::BuiltinShape::Square, bp::BuiltinShape::Strip8, bp::BuiltinShape::Strip16 })
     for (std::size_t n : counts)
       configs.push_back({ shape, n });
+  if (!quick)
+  {
+    configs.push_back({ bp::BuiltinShape::Point, 262144 });
+    configs.push_back({ bp::BuiltinShape::Point, 1048576 });
+  }
 
   std::printf(
-    "CPU engine, shear layer %d^3, Euler, 1 averaged-Jacobi iteration; median of 5\n", resolution);
-  std::printf("%-8s %-10s %8s %14s %14s %18s %8s\n", "shape", "elements", "particles",
-    "steps/s 1 thr", "steps/s 2 thr", "particle-steps/s 2", "2 vs 1");
-  for (const Config& c : configs)
+    "Bound particles, %d^3 fields; Euler, 1 averaged-Jacobi iteration; median of 5 runs\n",
+    resolution);
+  std::printf("GPU engine on: %s\n", gpuName.c_str());
+  std::printf("%-8s %-8s %9s %9s %11s %11s %11s %9s %9s %11s %8s\n", "field", "shape", "elements",
+    "particles", "CPU1 st/s", "CPU2 st/s", "CPU2 Mps/s", "2 vs 1", "vs plain", "GPU st/s",
+    "B/elem");
+  std::FILE* csv = csvPath.empty() ? nullptr : std::fopen(csvPath.c_str(), "w");
+  if (csv)
+    std::fprintf(csv,
+      "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
+      "cpu2_particle_steps_per_s,plain2_particle_steps_per_s,gpu_steps_per_s,bytes_per_element\n");
+
+  for (const bool isUnsteady : { false, true })
   {
-    const bp::ElementTemplate t = bp::builtinTemplate(c.shape);
-    const std::size_t particles = c.elements * t.particleCount();
-    // Enough steps for about 0.2 s of work per run.
-    const int steps = int(std::max<std::size_t>(5, 4000000 / particles));
-    const double one = medianSeconds(field, c, bp::threadRunner(1), steps, dt);
-    const double two = medianSeconds(field, c, bp::threadRunner(2), steps, dt);
-    std::printf("%-8s %-10zu %8zu %14.1f %14.1f %18.3e %7.2fx\n", t.name.c_str(), c.elements,
-      particles, steps / one, steps / two, particles * steps / two, one / two);
+    const bp::VectorField& field = isUnsteady ? unsteady : steady;
+    const double dt = 0.5 * h / field.maxSpeed();
+    for (const Config& c : configs)
+    {
+      const bp::ElementTemplate t = bp::builtinTemplate(c.shape);
+      const std::size_t particles = c.elements * t.particleCount();
+      const int steps = int(std::max<std::size_t>(5, 3000000 / particles));
+      const bp::Parameters p = parametersFor(field, c.elements);
+      std::size_t stateBytes = 0;
+      auto cpu = [&](unsigned threads)
+      {
+        return median(
+          [&]
+          {
+            bp::Engine engine;
+            engine.configure(t, p);
+            const bp::RangeRunner run = bp::poolRunner(threads);
+            engine.initialize(run);
+            stateBytes = sizeof(float) *
+                (engine.positions().size() + engine.normals().size() + engine.forces().size() +
+                  engine.lifetimes().size() + engine.initialCenters().size() +
+                  engine.orientations().size()) +
+              engine.generations().size() * 4 + engine.resetFlags().size();
+            const auto start = Clock::now();
+            for (int s = 0; s < steps; ++s)
+              engine.step(field, s * dt, dt, run);
+            return seconds(start);
+          });
+      };
+      const double one = cpu(1), two = cpu(2);
+      const double plain =
+        median([&] { return referenceLoop(field, particles, steps, dt, bp::poolRunner(2)); });
+      double gpuRate = 0.0;
+      if (gpu)
+      {
+        bp::GpuEngine engine;
+        if (engine.configure(t, p).empty() && engine.setField(field).empty())
+        {
+          engine.initialize();
+          const double took = median(
+            [&]
+            {
+              glFinish();
+              const auto start = Clock::now();
+              for (int s = 0; s < steps; ++s)
+                engine.step(s * dt, dt);
+              glFinish();
+              return seconds(start);
+            });
+          gpuRate = steps / took;
+        }
+        engine.release();
+      }
+      const double ps = particles * steps / two;
+      const double plainPs = particles * steps / plain;
+      std::printf("%-8s %-8s %9zu %9zu %11.1f %11.1f %11.2f %8.2fx %8.2fx %11.1f %8zu\n",
+        isUnsteady ? "unsteady" : "steady", t.name.c_str(), c.elements, particles, steps / one,
+        steps / two, ps / 1e6, one / two, plainPs / ps, gpuRate, stateBytes / c.elements);
+      if (csv)
+        std::fprintf(csv, "%s,%s,%zu,%zu,%.3f,%.3f,%.1f,%.1f,%.3f,%zu\n",
+          isUnsteady ? "unsteady" : "steady", t.name.c_str(), c.elements, particles, steps / one,
+          steps / two, ps, plainPs, gpuRate, stateBytes / c.elements);
+      std::fflush(stdout);
+    }
   }
+  std::printf("peak resident memory: %.1f MiB\n", peakRssKiB() / 1024.0);
+  if (csv)
+    std::fclose(csv);
   return 0;
 }

@@ -239,8 +239,10 @@ TEST(Engine, ThreadCountDoesNotChangeResults)
     p.emitterMax = { 1, 1, 1 };
     p.restoration = bp::Restoration::GaussSeidel;
     bp::Engine engine = configured(bp::BuiltinShape::Fish, p);
-    run(engine, field, 40, 0.02, bp::threadRunner(threads));
-    engine.updateNormals(bp::threadRunner(threads));
+    const bp::RangeRunner runner =
+      threads % 2 ? bp::threadRunner(threads) : bp::poolRunner(threads);
+    run(engine, field, 40, 0.02, runner);
+    engine.updateNormals(runner);
     std::vector<float> state = engine.positions();
     state.insert(state.end(), engine.normals().begin(), engine.normals().end());
     state.insert(state.end(), engine.forces().begin(), engine.forces().end());
