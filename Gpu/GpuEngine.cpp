@@ -69,6 +69,27 @@ struct GpuEngine::Internals
   int SizeLimit = 1 << 30;
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
 
+  /// The advect pass: positions before the step (placed anew where reset) and
+  /// after advection from t by h, or only the placed ones.
+  void advect(bool placeOnly, double t, double h)
+  {
+    this->use(this->Advect);
+    this->bind(this->Advect, "bpState", this->State[this->S]);
+    this->bind(this->Advect, "bpElementState", this->ElementState[this->Cur]);
+    this->bind(this->Advect, "bpRest", this->Rest);
+    this->bind(this->Advect, "bpParticleInfo", this->ParticleInfo);
+    setInt(this->Advect, "bpPlaceOnly", placeOnly ? 1 : 0);
+    setInt(this->Advect, "bpIntegrator", int(this->Params.integrator));
+    setFloat(this->Advect, "bpStep", float(h));
+    if (this->Field)
+    {
+      const float weights[3] = { this->Field->timeWeight(t), this->Field->timeWeight(t + 0.5 * h),
+        this->Field->timeWeight(t + h) };
+      setVec3(this->Advect, "bpWeights", weights);
+    }
+    this->run({ this->Advected, this->Before }, this->PW, this->PH);
+  }
+
   /// The reset pass: places flagged (or, initialising, all) elements.
   void reset(bool initialize)
   {
@@ -510,13 +531,7 @@ void GpuEngine::initialize()
   Internals& S = *this->I;
   // Place every element as generation 0 ...
   S.reset(true);
-  S.use(S.Advect);
-  S.bind(S.Advect, "bpState", S.State[S.S]);
-  S.bind(S.Advect, "bpElementState", S.ElementState[S.Cur]);
-  S.bind(S.Advect, "bpRest", S.Rest);
-  S.bind(S.Advect, "bpParticleInfo", S.ParticleInfo);
-  Internals::setInt(S.Advect, "bpPlaceOnly", 1);
-  S.run({ S.Advected, S.Before }, S.PW, S.PH);
+  S.advect(true, 0.0, 0.0);
   // ... with no flag set and zero force, as Engine::initialize leaves them.
   S.use(S.Test);
   S.bind(S.Test, "bpElementState", S.ElementState[S.Cur]);
@@ -541,18 +556,7 @@ void GpuEngine::step(double t, double h)
   // 1. Reset.
   S.reset(false);
   // 2. Advect.
-  S.use(S.Advect);
-  S.bind(S.Advect, "bpState", S.State[S.S]);
-  S.bind(S.Advect, "bpElementState", S.ElementState[S.Cur]);
-  S.bind(S.Advect, "bpRest", S.Rest);
-  S.bind(S.Advect, "bpParticleInfo", S.ParticleInfo);
-  Internals::setInt(S.Advect, "bpPlaceOnly", 0);
-  Internals::setInt(S.Advect, "bpIntegrator", int(P.integrator));
-  Internals::setFloat(S.Advect, "bpStep", float(h));
-  const float weights[3] = { S.Field->timeWeight(t), S.Field->timeWeight(t + 0.5 * h),
-    S.Field->timeWeight(t + h) };
-  Internals::setVec3(S.Advect, "bpWeights", weights);
-  S.run({ S.Advected, S.Before }, S.PW, S.PH);
+  S.advect(false, t, h);
   // 3. Restore: K iterations of shape matching ...
   GLuint positions = S.Advected;
   if (P.restoration == Restoration::ShapeMatching)

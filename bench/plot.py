@@ -19,7 +19,7 @@ for axis, field in zip(axes, ("steady", "unsteady")):
                   label="%s CPU, 2 threads" % shape)
         gpu = [int(r["particles"]) * float(r["gpu_steps_per_s"]) for r in sel]
         if any(gpu):
-            axis.plot(n, gpu, "--s", color=colour, label="%s GPU engine" % shape)
+            axis.plot(n, gpu, "--s", color=colour, label="%s GPU engine (headless EGL)" % shape)
         axis.plot(n, [float(r["plain2_particle_steps_per_s"]) for r in sel], ":", color=colour,
                   alpha=0.6, label="%s plain Euler loop" % shape)
     axis.set_xscale("log", base=2)

@@ -9,6 +9,9 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from picture import dark_view  # noqa: E402
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
@@ -31,15 +34,7 @@ def main():
                                 NumberOfElements=40, ElementSize=0.15, Seed=5,
                                 Integrator="Runge-Kutta 4")
     time = 1.5
-    view = CreateRenderView()
-    view.ViewSize = [1280, 720]
-    view.OrientationAxesVisibility = 0
-    view.Background = [0.08, 0.09, 0.12]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.ViewTime = time
+    view = dark_view(time)
     Show(flow, view).SetRepresentationType("Outline")
     for tracer, array, preset in ((patches, "Force", "Viridis (matplotlib)"),
                                   (blobs, "Speed", "Cool to Warm")):

@@ -10,6 +10,9 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from picture import dark_view  # noqa: E402
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
@@ -36,15 +39,7 @@ def main():
     tracer.ResetWhen = "Any Particle Leaves"
     tracer.UpdatePipeline(args.time)
 
-    view = CreateRenderView()
-    view.ViewSize = [1280, 720]
-    view.OrientationAxesVisibility = 0
-    view.Background = [0.08, 0.09, 0.12]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.ViewTime = args.time
+    view = dark_view(args.time)
 
     outline = Show(flow, view)
     outline.SetRepresentationType("Outline")
