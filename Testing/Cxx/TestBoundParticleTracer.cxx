@@ -22,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
+#include "vtkXMLPolyDataReader.h"
 
 #include <gtest/gtest.h>
 
@@ -648,4 +649,34 @@ TEST(BoundParticleTracer, AnEmptyTemplateIsRejected)
   ErrorLog log(tracer);
   EXPECT_EQ(at(tracer, 0.5)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(log.mentions("Element Template input has no points"));
+}
+
+TEST(BoundParticleTracer, BuiltinElementFilesTraceLikeTheBuiltins)
+{
+  // Elements/<Shape>.vtp, loaded as the Element Template, is the built-in shape.
+  auto source = flow(vtkAnalyticFlowSource::HURRICANE, 16);
+  const char* names[] = { "Point", "Square", "Strip4", "Strip8", "Strip16", "Cross", "Paddlewheel",
+    "Tetrahedron", "Fish" };
+  for (int shape = 0; shape < 9; ++shape)
+  {
+    SCOPED_TRACE(names[shape]);
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(
+      (std::string(BOUNDPARTICLES_ELEMENTS_DIR) + "/" + names[shape] + ".vtp").c_str());
+    auto fromFile = tracerOn(source, 30);
+    fromFile->SetTemplateConnection(reader->GetOutputPort());
+    fromFile->SetElementSize(0.2);
+    auto builtin = tracerOn(source, 30);
+    builtin->SetElementShape(shape);
+    builtin->SetElementSize(0.2);
+    vtkPolyData* a = at(fromFile, 0.6);
+    vtkPolyData* b = at(builtin, 0.6);
+    ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+    EXPECT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells());
+    const std::vector<float> pa = pointsOf(a), pb = pointsOf(b);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < pa.size(); ++k)
+      worst = std::max(worst, double(std::abs(pa[k] - pb[k])));
+    EXPECT_LT(worst, 1e-5);
+  }
 }
