@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds in Release and measures the engines side by side: prints the table,
-# writes it as CSV and plots it (PNG) into ${1:-bench-output}/.
+# writes it as CSV and plots it (PNG) into ${1:-bench-output}/, then times
+# ParaView's Particle Tracer against the Bound Particle Tracer on one job.
 # Options after the folder go to the benchmark (--quick, --no-gpu, --resolution N).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -10,4 +11,7 @@ build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 mkdir -p "$out"
 "$build/bin/BoundParticlesBench" --csv "$out/engines.csv" "$@" | tee "$out/engines.txt"
 /usr/bin/python3 "$root/bench/plot.py" "$out/engines.csv" "$out/engines.png"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png"
+# ParaView's own Particle Tracer on the same job, side by side.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt"
+echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt"
