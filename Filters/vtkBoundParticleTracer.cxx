@@ -855,10 +855,11 @@ int vtkBoundParticleTracer::RequestData(
   // World positions: grid-local ones plus the grid's offset, in double where
   // float would lose more than 1e-4 of a cell at the field's coordinates.
   vtkNew<vtkPoints> points;
+  const auto localBounds = I.Grid.bounds();
   double reach = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    reach = std::max(reach, std::abs(I.Offset[a]) + std::abs(I.Grid.bounds()[2 * a + 1]));
+    reach = std::max(reach, std::abs(I.Offset[a]) + std::abs(localBounds[2 * a + 1]));
   }
   if (reach * std::ldexp(1.0, -23) > 1e-4 * I.Grid.cellLength())
   {

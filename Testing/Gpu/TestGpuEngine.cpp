@@ -102,7 +102,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
   ASSERT_EQ(gpu.setField(field), "");
   gpu.initialize();
 
-  const double dt = unsteady ? 0.01 : 0.01;
+  const double dt = 0.01;
   for (int s = 0; s < steps; ++s)
   {
     cpu.step(field, s * dt, dt, bp::serialRunner());
