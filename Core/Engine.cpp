@@ -71,7 +71,7 @@ std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R)
   return { float(q.x()), float(q.y()), float(q.z()), float(q.w()) };
 }
 
-std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
+std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
 {
   std::ostringstream err;
   const std::string shapeError = shape.validate();
@@ -122,6 +122,17 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
     return "the shape-matching stiffness must lie in [0, 1]";
   }
 
+  return std::string();
+}
+
+std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
+{
+  const std::string error = Engine::validate(shape, p);
+  if (!error.empty())
+  {
+    return error;
+  }
+  const std::size_t n = shape.particleCount();
   this->Shape = shape;
   this->Params = p;
   this->Pinned.assign(n, 0);
@@ -596,8 +607,9 @@ double StepSchedule::next(double t) const
   return grid;
 }
 
-double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
-  double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing)
+double advance(const StepSchedule& schedule, double t, double target,
+  const std::function<void(double t, double h)>& step,
+  const std::function<bool(double time)>& keepGoing)
 {
   for (double next = schedule.next(t); next <= target + schedule.epsilon(); next = schedule.next(t))
   {
@@ -605,10 +617,31 @@ double advance(Engine& engine, const VectorField& field, const StepSchedule& sch
     {
       break;
     }
-    engine.step(field, t, next - t, run);
+    step(t, next - t);
     t = next;
   }
   return t;
+}
+
+double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
+  double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing)
+{
+  return advance(
+    schedule, t, target, [&](double from, double h) { engine.step(field, from, h, run); },
+    keepGoing);
+}
+
+ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPerElement)
+{
+  ParticleLayout l;
+  l.elementGrid[0] = std::max<long long>(1, (long long)std::ceil(std::sqrt(double(elements))));
+  l.elementGrid[1] = (long long)((elements + l.elementGrid[0] - 1) / l.elementGrid[0]);
+  const double n = double(particlesPerElement);
+  l.blocksPerRow = (long long)std::ceil(std::sqrt(n * l.elementGrid[1] / l.elementGrid[0]));
+  l.blocksPerRow = std::max<long long>(1, std::min<long long>(l.blocksPerRow, (long long)n));
+  l.width = l.blocksPerRow * l.elementGrid[0];
+  l.height = (((long long)n + l.blocksPerRow - 1) / l.blocksPerRow) * l.elementGrid[1];
+  return l;
 }
 
 void sampleAtPositions(const VectorField& field, double t, const float* positions,

@@ -103,6 +103,9 @@ public:
   /// Checks the template and parameters and sizes the system; empty on success.
   std::string configure(const ElementTemplate& shape, const Parameters& parameters);
 
+  /// The checks configure() makes, without allocating anything.
+  static std::string validate(const ElementTemplate& shape, const Parameters& parameters);
+
   /// Places every element (generation 0) and computes its normals.
   void initialize(const RangeRunner& run);
 
@@ -203,6 +206,26 @@ private:
  */
 double advance(Engine& engine, const VectorField& field, const StepSchedule& schedule, double t,
   double target, const RangeRunner& run, const std::function<bool(double time)>& keepGoing = {});
+
+/// The same walk along the schedule for any engine: `step(t, h)` per step.
+double advance(const StepSchedule& schedule, double t, double target,
+  const std::function<void(double t, double h)>& step,
+  const std::function<bool(double time)>& keepGoing = {});
+
+/**
+ * The GPU engine's texture layout (thesis §3.5.1, generalised): elements in a
+ * near-square W x H grid, one such block per template particle index, blocks
+ * bx per row, so the particle texture is near square. Here, not in Gpu/, so
+ * the filter can check a system against a GPU's texture limit before it asks
+ * for one.
+ */
+struct ParticleLayout
+{
+  long long elementGrid[2] = { 0, 0 }; ///< W, H
+  long long blocksPerRow = 0;          ///< bx
+  long long width = 0, height = 0;     ///< the particle texture
+  static ParticleLayout of(std::size_t elements, std::size_t particlesPerElement);
+};
 
 /// Velocity and |curl v| sampled at `count` positions (3 floats each).
 void sampleAtPositions(const VectorField& field, double t, const float* positions,

@@ -4,6 +4,7 @@
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "VectorField.h"
+#include "WorkQueue.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
@@ -17,6 +18,8 @@
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationIntegerRequestKey.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
@@ -77,14 +80,74 @@ struct CopyToFloat
 };
 } // namespace
 
+// The request key's DataKey is where the output keeps the value it was made for.
+class vtkInformationGpuWorkQueueRequestKey : public vtkInformationIntegerRequestKey
+{
+public:
+  vtkInformationGpuWorkQueueRequestKey(const char* name, const char* location)
+    : vtkInformationIntegerRequestKey(name, location)
+  {
+    this->DataKey = vtkBoundParticleTracer::DATA_GPU_WORK_QUEUE();
+  }
+};
+vtkInformationKeyMacro(vtkBoundParticleTracer, DATA_GPU_WORK_QUEUE, Integer);
+vtkInformationKeySubclassMacro(
+  vtkBoundParticleTracer, GPU_WORK_QUEUE, GpuWorkQueueRequest, IntegerRequest);
+
+namespace
+{
+std::mutex& queueRegistryMutex()
+{
+  static std::mutex m;
+  return m;
+}
+std::map<int, std::weak_ptr<bp::WorkQueue>>& queueRegistry()
+{
+  static std::map<int, std::weak_ptr<bp::WorkQueue>> r;
+  return r;
+}
+std::uint64_t nextProducerId()
+{
+  static std::uint64_t next = 0;
+  std::lock_guard<std::mutex> lock(queueRegistryMutex());
+  return ++next;
+}
+} // namespace
+
+std::shared_ptr<bp::WorkQueue> vtkBoundParticleTracer::NewWorkQueue()
+{
+  std::lock_guard<std::mutex> lock(queueRegistryMutex());
+  static int nextId = 0;
+  auto& registry = queueRegistry();
+  for (auto it = registry.begin(); it != registry.end();)
+    it = it->second.expired() ? registry.erase(it) : std::next(it);
+  auto queue = std::make_shared<bp::WorkQueue>(++nextId);
+  registry[queue->id()] = queue;
+  return queue;
+}
+
+std::shared_ptr<bp::WorkQueue> vtkBoundParticleTracer::FindWorkQueue(int id)
+{
+  std::lock_guard<std::mutex> lock(queueRegistryMutex());
+  const auto it = queueRegistry().find(id);
+  return it == queueRegistry().end() ? nullptr : it->second.lock();
+}
+
 struct vtkBoundParticleTracer::vtkInternals
 {
+  using Track = bp::WorkQueue::Cursor;
+
   bp::Engine Engine;
+  Track Cpu; // where Engine stands
   std::unique_ptr<bp::StepSchedule> Schedule;
-  bool Valid = false;        // Engine holds a state at time Committed
-  bool NeedsReset = true;    // the filter or its input changed since the state was made
+  // Bumped whenever the filter or its input changes: a track made for an
+  // older configuration replays.
+  std::uint64_t Configuration = 1;
+  const std::uint64_t ProducerId = nextProducerId();
+  // This update's engine: the CPU one, or a GPU work queue.
+  std::shared_ptr<bp::WorkQueue> Queue;
+  Track* Active = &Cpu;
   bool ResetPending = false; // this update replays from the start
-  double Committed = 0.0;
   double Target = 0.0;
   double StartTime = 0.0;
 
@@ -157,10 +220,36 @@ struct vtkBoundParticleTracer::vtkInternals
     return std::min(std::max(target, this->StartTime), this->OutputTimes.back());
   }
 
-  /// Whether reaching `target` means replaying from the start.
+  /// Whether reaching `target` on the active track means replaying from the start.
   bool needsReplay(double target) const
   {
-    return this->NeedsReset || !this->Valid || target < this->Committed - this->timeEpsilon();
+    const Track& t = *this->Active;
+    return t.producer != this->ProducerId || t.configuration != this->Configuration ||
+      !t.valid || target < t.committed - this->timeEpsilon();
+  }
+
+  /// Chooses this update's engine: the GPU work queue the request names when
+  /// the GPU engine is selected and the queue is alive, else the CPU engine.
+  void selectEngine(int engine, vtkInformation* outInfo)
+  {
+    this->Queue = nullptr;
+    if (engine == GPU && outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
+    {
+      this->Queue = FindWorkQueue(outInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()));
+    }
+    this->Active = this->Queue ? &this->Queue->cursor : &this->Cpu;
+  }
+
+  /// Forgets every track (after a failure or an abort).
+  void invalidate()
+  {
+    ++this->Configuration;
+    this->Cpu.valid = false;
+    if (this->Queue)
+    {
+      this->Queue->clear();
+      this->Queue->cursor.valid = false;
+    }
   }
 
   int firstMissing(const std::vector<int>& needed) const
@@ -186,7 +275,7 @@ struct vtkBoundParticleTracer::vtkInternals
 
   void clear()
   {
-    this->Valid = false;
+    this->Cpu.valid = false;
     this->Slices.clear();
     this->Continuing = false;
   }
@@ -257,7 +346,7 @@ int vtkBoundParticleTracer::RequestInformation(
 
   // The pipeline asks for information again only when this filter or
   // something upstream changed: the cached state is stale.
-  I.NeedsReset = true;
+  I.invalidate();
   I.clear();
 
   I.InputTimes.clear();
@@ -311,9 +400,11 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // A new update. Only choose what to ask upstream for here: the pipeline may
     // ask for an update extent without executing, so the state changes wait
     // for RequestData, which makes the same decision.
+    I.selectEngine(this->Engine, outInfo);
     const double target = I.targetOf(outInfo);
     const bool replay = I.needsReplay(target);
-    const std::vector<int> needed = I.slicesNeeded(replay ? I.StartTime : I.Committed, target);
+    const std::vector<int> needed =
+      I.slicesNeeded(replay ? I.StartTime : I.Active->committed, target);
     const int missing = I.firstMissing(needed);
     I.RequestIndex = missing >= 0 ? missing : needed.back();
   }
@@ -563,7 +654,7 @@ int vtkBoundParticleTracer::RequestData(
   {
     vtkErrorMacro(<< message);
     I.clear();
-    I.NeedsReset = true;
+    I.invalidate();
     request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
     output->Initialize();
     return 1;
@@ -576,13 +667,21 @@ int vtkBoundParticleTracer::RequestData(
   if (!I.Continuing)
   {
     // The first pass of an update: replay from the start, or continue.
+    I.selectEngine(this->Engine, outInfo);
     I.Target = I.targetOf(outInfo);
     I.ResetPending = I.needsReplay(I.Target);
     I.StepsInLastUpdate = 0;
     I.LastUpdateReplayed = I.ResetPending;
+    if (!I.ResetPending && I.Queue && I.Active->showsPartialStep)
+    {
+      // Take back the short step the last update showed, as the CPU path
+      // steps a copy.
+      I.Queue->restore();
+      I.Active->showsPartialStep = false;
+    }
     if (I.ResetPending)
     {
-      I.Valid = false;
+      I.Active->valid = false;
       // A steady input's single slice is read again at every replay; an
       // unsteady input's slices stay valid (RequestInformation drops them when
       // the input changes).
@@ -767,24 +866,52 @@ int vtkBoundParticleTracer::RequestData(
         return fail(templateError);
       }
     }
-    const std::string error = I.Engine.configure(shape, p);
-    if (!error.empty())
+    if (I.Queue)
     {
-      return fail(error + ".");
+      const std::string error = bp::Engine::validate(shape, p);
+      if (!error.empty())
+      {
+        return fail(error + ".");
+      }
+      const bp::ParticleLayout layout = bp::ParticleLayout::of(p.numberOfElements, shape.particleCount());
+      const int maxSize = I.Queue->maxTextureSize;
+      if (maxSize > 0 && (layout.width > maxSize || layout.height > maxSize))
+      {
+        return fail(std::to_string(p.numberOfElements) + " elements of " +
+          std::to_string(shape.particleCount()) + " particles need a " +
+          std::to_string(layout.width) + " x " + std::to_string(layout.height) +
+          " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " + std::to_string(maxSize) +
+          ". Use fewer elements, or set Engine to CPU.");
+      }
+      I.Queue->clear();
+      I.Queue->configure(shape, p);
+      I.Queue->setField(field);
+      I.Queue->initialize();
+      I.Active->showsPartialStep = false;
     }
-    I.Engine.initialize(smpRunner());
-    I.Cells = nullptr; // the element count or shape may have changed
+    else
+    {
+      const std::string error = I.Engine.configure(shape, p);
+      if (!error.empty())
+      {
+        return fail(error + ".");
+      }
+      I.Engine.initialize(smpRunner());
+      I.Cells = nullptr; // the element count or shape may have changed
+    }
     I.Schedule.reset(new bp::StepSchedule(
       I.StartTime, I.ResolvedDt, I.Unsteady ? I.InputTimes : std::vector<double>()));
-    I.Committed = I.StartTime;
-    I.Valid = true;
-    I.NeedsReset = false;
+    I.Active->committed = I.StartTime;
+    I.Active->valid = true;
+    I.Active->configuration = I.Configuration;
+    I.Active->producer = I.ProducerId;
     I.ResetPending = false;
   }
 
   // Step forward one data interval at a time.
-  const double span = std::max(I.Target - I.Committed, 1e-300);
-  const double progressStart = I.Committed;
+  double& committed = I.Active->committed;
+  const double span = std::max(I.Target - committed, 1e-300);
+  const double progressStart = committed;
   bool aborted = false;
   auto keepGoing = [&](double t)
   {
@@ -796,7 +923,7 @@ int vtkBoundParticleTracer::RequestData(
   const bp::RangeRunner run = smpRunner();
   while (true)
   {
-    const std::vector<int> ids = I.slicesNeeded(I.Committed, I.Target);
+    const std::vector<int> ids = I.slicesNeeded(committed, I.Target);
     const int missing = I.firstMissing(ids);
     if (missing >= 0)
     {
@@ -808,20 +935,30 @@ int vtkBoundParticleTracer::RequestData(
     const bp::VectorField field = I.field(ids);
     const double intervalEnd = ids.size() == 2 ? I.InputTimes[ids[1]] : I.Target;
     const double limit = std::min(I.Target, intervalEnd);
-    const double before = I.Committed;
-    I.Committed = bp::advance(I.Engine, field, *I.Schedule, I.Committed, limit, run, keepGoing);
+    const double before = committed;
+    if (I.Queue)
+    {
+      I.Queue->setField(field);
+      committed = bp::advance(
+        *I.Schedule, committed, limit, [&](double t, double h) { I.Queue->step(t, h); },
+        keepGoing);
+    }
+    else
+    {
+      committed = bp::advance(I.Engine, field, *I.Schedule, committed, limit, run, keepGoing);
+    }
     if (aborted)
     {
       I.clear();
-      I.NeedsReset = true;
+      I.invalidate();
       request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
       return 1;
     }
-    if (limit >= I.Target || I.Committed < intervalEnd - I.Schedule->epsilon())
+    if (limit >= I.Target || committed < intervalEnd - I.Schedule->epsilon())
     {
       break;
     }
-    if (I.Committed == before)
+    if (committed == before)
     {
       // Never spin: the schedule lands on every data time step, so this is a bug.
       return fail("Time stepping made no progress at t = " + std::to_string(before) +
@@ -835,12 +972,26 @@ int vtkBoundParticleTracer::RequestData(
   // on a copy when Target falls between two step boundaries, so that the
   // cache stays on the boundaries.
   const bp::VectorField field = I.field(I.slicesFor(I.Target, false));
+  if (I.Queue)
+  {
+    I.Queue->setField(field);
+    if (I.Target - committed > I.Schedule->epsilon())
+    {
+      I.Queue->save();
+      I.Queue->step(committed, I.Target - committed);
+      I.Active->showsPartialStep = true;
+      ++I.StepsInLastUpdate;
+    }
+    this->UpdateProgress(1.0);
+    this->FillGpuOutput(output);
+    return 1;
+  }
   bp::Engine* shown = &I.Engine;
   bp::Engine partial;
-  if (I.Target - I.Committed > I.Schedule->epsilon())
+  if (I.Target - committed > I.Schedule->epsilon())
   {
     partial = I.Engine;
-    partial.step(field, I.Committed, I.Target - I.Committed, run);
+    partial.step(field, committed, I.Target - committed, run);
     ++I.StepsInLastUpdate;
     shown = &partial;
   }
@@ -955,6 +1106,55 @@ int vtkBoundParticleTracer::RequestData(
   }
 
   // What the automatic settings came to, for the Information panel and scripts.
+  this->AddSettingsFieldData(output);
+  return 1;
+}
+
+void vtkBoundParticleTracer::FillGpuOutput(vtkPolyData* output)
+{
+  vtkInternals& I = *this->Internals;
+  bp::DrawSettings& d = I.Queue->draw;
+  d.time = I.Target;
+  d.offset = I.Offset;
+  const auto bounds = I.Grid.bounds();
+  for (int a = 0; a < 3; ++a)
+  {
+    d.bounds[2 * a] = bounds[2 * a] + I.Offset[a];
+    d.bounds[2 * a + 1] = bounds[2 * a + 1] + I.Offset[a];
+  }
+  d.coloringAxis = this->ColoringAxis;
+  const int u = (this->ColoringAxis + 1) % 3, v = (this->ColoringAxis + 2) % 3;
+  d.radialCenter = { 0.5 * (bounds[2 * u] + bounds[2 * u + 1]),
+    0.5 * (bounds[2 * v] + bounds[2 * v + 1]) };
+  ++d.serial;
+
+  // No particles: the arrays are named, so displays offer them for colouring.
+  vtkNew<vtkPoints> points;
+  output->SetPoints(points);
+  vtkPointData* pd = output->GetPointData();
+  for (const char* name : { "Speed", "Force", "Lifetime", "Vorticity", "Layer", "Radius" })
+  {
+    pd->AddArray(floatArray(name, 1, 0));
+  }
+  pd->SetVectors(floatArray("Velocity", 3, 0));
+  pd->SetNormals(floatArray("Normals", 3, 0));
+  vtkNew<vtkIdTypeArray> elementId;
+  elementId->SetName("ElementId");
+  pd->AddArray(elementId);
+  vtkNew<vtkIntArray> particleIndex;
+  particleIndex->SetName("ParticleIndex");
+  pd->AddArray(particleIndex);
+
+  vtkNew<vtkIntArray> queue;
+  queue->SetName("BoundParticlesWorkQueue");
+  queue->InsertNextValue(I.Queue->id());
+  output->GetFieldData()->AddArray(queue);
+  this->AddSettingsFieldData(output);
+}
+
+void vtkBoundParticleTracer::AddSettingsFieldData(vtkPolyData* output)
+{
+  vtkInternals& I = *this->Internals;
   auto addValue = [&](const char* name, double value)
   {
     vtkNew<vtkDoubleArray> a;
@@ -966,7 +1166,6 @@ int vtkBoundParticleTracer::RequestData(
   addValue("ElementSize", I.ResolvedElementSize);
   addValue("SimulationTime", I.Target);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), I.Target);
-  return 1;
 }
 
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
@@ -992,4 +1191,5 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+  os << indent << "Engine: " << (this->Engine == GPU ? "GPU" : "CPU") << "\n";
 }

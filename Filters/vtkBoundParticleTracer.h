@@ -27,9 +27,17 @@
 #include "BoundParticlesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
+#include <memory> // for std::unique_ptr, std::shared_ptr
 
+class vtkInformationIntegerKey;
+class vtkInformationIntegerRequestKey;
 class vtkPolyData;
+#ifndef __VTK_WRAP__
+namespace bp
+{
+class WorkQueue;
+}
+#endif
 
 class BOUNDPARTICLESFILTERS_EXPORT vtkBoundParticleTracer : public vtkPolyDataAlgorithm
 {
@@ -204,6 +212,45 @@ public:
   vtkGetMacro(ColoringAxis, int);
   ///@}
 
+  enum Engines
+  {
+    CPU = 0,
+    GPU
+  };
+
+  ///@{
+  /// Which engine steps the trace shown by a **Bound Particles** display: CPU
+  /// (default) or GPU. With GPU, that display runs the GPU engine in its
+  /// render window and this filter only records the work (see
+  /// GPU_WORK_QUEUE()); every other consumer (Surface, writers, other filters)
+  /// still gets the CPU result, so nothing downstream ever sees a stale trace.
+  vtkSetClampMacro(Engine, int, CPU, GPU);
+  vtkGetMacro(Engine, int);
+  ///@}
+
+  /**
+   * Request key. A renderer that runs the GPU engine sets it on its input
+   * request to the id of its work queue (NewWorkQueue()). With Engine = GPU
+   * the filter then records the engine calls into that queue instead of
+   * making them, and outputs no particles: only the field data
+   * BoundParticlesWorkQueue (the queue's id), TimeStep, ElementSize and
+   * SimulationTime, and empty point arrays named like the CPU output's. Any
+   * other value (0, or no key) gets the CPU result; the key's value is part of
+   * what makes the output up to date, so the two never mix.
+   */
+  static vtkInformationIntegerRequestKey* GPU_WORK_QUEUE();
+  /// Where the output records the GPU_WORK_QUEUE it was made for.
+  static vtkInformationIntegerKey* DATA_GPU_WORK_QUEUE();
+
+#ifndef __VTK_WRAP__
+  ///@{
+  /// The process's one registry of GPU work queues (kept in this module so
+  /// that every library sees the same one).
+  static std::shared_ptr<bp::WorkQueue> NewWorkQueue();
+  static std::shared_ptr<bp::WorkQueue> FindWorkQueue(int id);
+  ///@}
+#endif
+
   ///@{
   /// What the last update did: the simulation time of the output, the number
   /// of steps it took, whether it replayed from the start, and the resolved
@@ -223,6 +270,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void FillGpuOutput(vtkPolyData* output);
+  void AddSettingsFieldData(vtkPolyData* output);
 
   int ElementShape = STRIP8;
   int TemplateSprings = EDGES_AND_DIAGONALS;
@@ -245,6 +294,7 @@ protected:
   double Duration = 10.0;
   int NumberOfTimeSteps = 101;
   int ColoringAxis = 2;
+  int Engine = CPU;
 
 private:
   vtkBoundParticleTracer(const vtkBoundParticleTracer&) = delete;

@@ -37,6 +37,11 @@ GLuint makeListTexture(const std::vector<float>& rgba, int width)
   return makeTexture2D(width, height, padded.data());
 }
 
+void setVec3Uniform(GLuint p, const char* name, const float* v)
+{
+  glUniform3f(glGetUniformLocation(p, name), v[0], v[1], v[2]);
+}
+
 std::string compile(GLenum type, const std::string& source, GLuint& shader)
 {
   shader = glCreateShader(type);
@@ -107,7 +112,9 @@ struct GpuEngine::Internals
     this->O = 1 - this->O;
   }
 
-  GLuint Vao = 0, Fbo = 0;
+  GLuint Vao = 0, Fbo = 0, CopyFbo = 0;
+  GLuint Samples = 0, Saved[4] = { 0, 0, 0, 0 };
+  GLuint SamplesProgram = 0;
   GLuint GaussSeidel = 0, ColouredSprings = 0;
   int Colours = 0;
   GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
@@ -237,6 +244,13 @@ struct GpuEngine::Internals
     }
     glDrawBuffers(k, buffers);
     glViewport(0, 0, width, height);
+    // A render window's state may be anything: the passes need none of it.
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindVertexArray(this->Vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -255,6 +269,19 @@ struct GpuEngine::Internals
     glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out.data());
   }
 
+  /// Copies a texture's texels into another of the same size (a blit: GL 3.3).
+  void copyTexture(GLuint from, GLuint to, int width, int height) const
+  {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, this->Fbo);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->CopyFbo);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+
   std::size_t particleTexel(int e, int i) const
   {
     const int bx = i % this->BlocksPerRow, by = i / this->BlocksPerRow;
@@ -268,7 +295,8 @@ struct GpuEngine::Internals
       this->Centers[1], this->State[0], this->State[1], this->Advected, this->Before,
       this->Restored[0], this->Restored[1], this->NormalsTex, this->Rest, this->ParticleInfo,
       this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1], this->Orientations[0],
-      this->Orientations[1], this->MatchCenters, this->ColouredSprings };
+      this->Orientations[1], this->MatchCenters, this->ColouredSprings, this->Samples,
+      this->Saved[0], this->Saved[1], this->Saved[2], this->Saved[3] };
     for (GLuint t : textures)
     {
       if (t)
@@ -277,16 +305,19 @@ struct GpuEngine::Internals
       }
     }
     for (GLuint p : { this->Reset, this->Advect, this->Restore, this->Match, this->MatchApply,
-           this->GaussSeidel, this->Test, this->Finalize, this->Normals })
+           this->GaussSeidel, this->Test, this->Finalize, this->Normals, this->SamplesProgram })
     {
       if (p)
       {
         glDeleteProgram(p);
       }
     }
-    if (this->Fbo)
+    for (GLuint f : { this->Fbo, this->CopyFbo })
     {
-      glDeleteFramebuffers(1, &this->Fbo);
+      if (f)
+      {
+        glDeleteFramebuffers(1, &f);
+      }
     }
     if (this->Vao)
     {
@@ -331,8 +362,7 @@ void GpuEngine::setTextureSizeLimit(int texels)
 std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters& p)
 {
   // The same checks as the CPU engine, then the GPU's own limits.
-  Engine reference;
-  const std::string error = reference.configure(shape, p);
+  const std::string error = Engine::validate(shape, p);
   if (!error.empty())
   {
     return error;
@@ -344,25 +374,26 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   S.Params = p;
   S.E = int(p.numberOfElements);
   S.n = int(shape.particleCount());
-  S.W = int(std::ceil(std::sqrt(double(S.E))));
-  S.H = (S.E + S.W - 1) / S.W;
-  S.BlocksPerRow = int(std::ceil(std::sqrt(double(S.n) * S.H / S.W)));
-  S.BlocksPerRow = std::max(1, std::min(S.BlocksPerRow, S.n));
-  S.PW = S.BlocksPerRow * S.W;
-  S.PH = ((S.n + S.BlocksPerRow - 1) / S.BlocksPerRow) * S.H;
+  const ParticleLayout layout = ParticleLayout::of(p.numberOfElements, shape.particleCount());
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   maxSize = std::min<GLint>(maxSize, S.SizeLimit);
-  if (S.PW > maxSize || S.PH > maxSize)
+  if (layout.width > maxSize || layout.height > maxSize)
   {
     std::ostringstream err;
-    err << p.numberOfElements << " elements of " << S.n << " particles need a " << S.PW << " x "
-        << S.PH << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " << maxSize;
+    err << p.numberOfElements << " elements of " << S.n << " particles need a " << layout.width
+        << " x " << layout.height << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of "
+        << maxSize;
     const int limit = S.SizeLimit;
     S = Internals();
     S.SizeLimit = limit;
     return err.str();
   }
+  S.W = int(layout.elementGrid[0]);
+  S.H = int(layout.elementGrid[1]);
+  S.BlocksPerRow = int(layout.blocksPerRow);
+  S.PW = int(layout.width);
+  S.PH = int(layout.height);
 
   for (auto pass :
     { std::make_pair(bpShaderResetFrag, &S.Reset), std::make_pair(bpShaderAdvectFrag, &S.Advect),
@@ -370,7 +401,8 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
       std::make_pair(bpShaderMatchApplyFrag, &S.MatchApply),
       std::make_pair(bpShaderGaussSeidelFrag, &S.GaussSeidel),
       std::make_pair(bpShaderTestFrag, &S.Test), std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
-      std::make_pair(bpShaderNormalsFrag, &S.Normals) })
+      std::make_pair(bpShaderNormalsFrag, &S.Normals),
+      std::make_pair(bpShaderSamplesFrag, &S.SamplesProgram) })
   {
     const std::string programError = S.program(pass.first, *pass.second);
     if (!programError.empty())
@@ -381,6 +413,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   }
   glGenVertexArrays(1, &S.Vao);
   glGenFramebuffers(1, &S.Fbo);
+  glGenFramebuffers(1, &S.CopyFbo);
   for (int k = 0; k < 2; ++k)
   {
     S.ElementState[k] = makeTexture2D(S.W, S.H);
@@ -394,6 +427,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   S.Advected = makeTexture2D(S.PW, S.PH);
   S.Before = makeTexture2D(S.PW, S.PH);
   S.NormalsTex = makeTexture2D(S.PW, S.PH);
+  S.Samples = makeTexture2D(S.PW, S.PH);
 
   // The template: rest positions, per-particle spring and triangle lists in
   // index order (so sums run in the CPU engine's order), spring parameters.
@@ -641,6 +675,74 @@ void GpuEngine::updateNormals()
   S.bind(S.Normals, "bpTriangles", S.Triangles);
   Internals::setInt(S.Normals, "bpTrianglesWidth", S.TrianglesWidth);
   S.run({ S.NormalsTex }, S.PW, S.PH);
+}
+
+void GpuEngine::saveState()
+{
+  Internals& S = *this->I;
+  if (!S.Saved[0])
+  {
+    S.Saved[0] = makeTexture2D(S.PW, S.PH);
+    for (int k = 1; k < 4; ++k)
+    {
+      S.Saved[k] = makeTexture2D(S.W, S.H);
+    }
+  }
+  S.copyTexture(S.State[S.S], S.Saved[0], S.PW, S.PH);
+  S.copyTexture(S.ElementState[S.Cur], S.Saved[1], S.W, S.H);
+  S.copyTexture(S.Centers[S.Cur], S.Saved[2], S.W, S.H);
+  S.copyTexture(S.Orientations[S.O], S.Saved[3], S.W, S.H);
+}
+
+void GpuEngine::restoreState()
+{
+  Internals& S = *this->I;
+  if (!S.Saved[0])
+  {
+    return;
+  }
+  S.copyTexture(S.Saved[0], S.State[S.S], S.PW, S.PH);
+  S.copyTexture(S.Saved[1], S.ElementState[S.Cur], S.W, S.H);
+  S.copyTexture(S.Saved[2], S.Centers[S.Cur], S.W, S.H);
+  S.copyTexture(S.Saved[3], S.Orientations[S.O], S.W, S.H);
+}
+
+void GpuEngine::updateFieldSamples(double t)
+{
+  Internals& S = *this->I;
+  if (!S.Field)
+  {
+    return;
+  }
+  S.use(S.SamplesProgram);
+  S.bind(S.SamplesProgram, "bpState", S.State[S.S]);
+  Internals::setFloat(S.SamplesProgram, "bpSampleWeight", S.Field->timeWeight(t));
+  const auto& spacing = S.Field->grid().spacing;
+  const float h[3] = { float(spacing[0]), float(spacing[1]), float(spacing[2]) };
+  setVec3Uniform(S.SamplesProgram, "bpSpacing", h);
+  S.run({ S.Samples }, S.PW, S.PH);
+}
+
+GpuEngine::DrawInputs GpuEngine::drawInputs() const
+{
+  const Internals& S = *this->I;
+  DrawInputs d;
+  d.positions = S.State[S.S];
+  d.normals = S.NormalsTex;
+  d.samples = S.Samples;
+  d.elements = S.ElementState[S.Cur];
+  d.centers = S.Centers[S.Cur];
+  d.elementGrid[0] = S.W;
+  d.elementGrid[1] = S.H;
+  d.blocksPerRow = S.BlocksPerRow;
+  d.elementCount = S.E;
+  d.particlesPerElement = S.n;
+  return d;
+}
+
+bool GpuEngine::isConfigured() const
+{
+  return this->I->Fbo != 0;
 }
 
 void GpuEngine::read(

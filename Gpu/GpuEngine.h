@@ -61,6 +61,35 @@ public:
     std::vector<float>* centers, std::vector<float>* orientations = nullptr,
     std::vector<float>* resetFlags = nullptr) const;
 
+  /// Keeps a copy of the state (particles, elements, centres, orientations):
+  /// a step to a time between two step boundaries is shown, then taken back
+  /// with restoreState(), as the CPU filter steps a copy.
+  void saveState();
+  void restoreState();
+
+  /// Samples the field at every particle at time t (velocity and |curl v|,
+  /// as bp::sampleAtPositions) into the samples texture, for colouring.
+  void updateFieldSamples(double t);
+
+  /// What a renderer needs to draw the state with vertex texture fetch: the
+  /// GL names of the current textures and the layout (bp_common.glsl).
+  struct DrawInputs
+  {
+    unsigned positions = 0; ///< per particle: grid-local position, force
+    unsigned normals = 0;   ///< per particle: unit normal
+    unsigned samples = 0;   ///< per particle: velocity, |curl v| (updateFieldSamples)
+    unsigned elements = 0;  ///< per element: lifetime, generation, flags
+    unsigned centers = 0;   ///< per element: the generation's initial centre
+    int elementGrid[2] = { 0, 0 };
+    int blocksPerRow = 0;
+    int elementCount = 0;
+    int particlesPerElement = 0;
+  };
+  DrawInputs drawInputs() const;
+
+  /// Whether configure() succeeded and release() was not called since.
+  bool isConfigured() const;
+
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);
 

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file WorkQueue.h
+ * @brief The GPU engine's work as the filter records it and a renderer runs it.
+ *
+ * With the GPU engine the filter keeps every decision it makes for the CPU
+ * engine (when to replay, which field time steps, which steps along the
+ * schedule, the short last step on a copy) but records the engine calls here
+ * instead of making them. The renderer that owns the GL context drains the
+ * queue before it draws. The queue holds the field time steps its pending
+ * calls need (shared, not copied) and nothing else; `cursor` is where the
+ * engine stands once every recorded call has run, which is what the filter's
+ * next decision starts from.
+ *
+ * A queue has an id, a plain integer a renderer can put into a pipeline
+ * request; the filter's module keeps the one registry of ids (a static here
+ * would be copied into every shared library that links Core).
+ */
+#ifndef BoundParticles_WorkQueue_h
+#define BoundParticles_WorkQueue_h
+
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "VectorField.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace bp
+{
+
+/// One recorded engine call.
+struct EngineCall
+{
+  enum class Kind
+  {
+    Configure,  ///< shape, parameters
+    SetField,   ///< field
+    Initialize, ///< place every element
+    Step,       ///< t, h
+    Save,       ///< keep a copy of the state
+    Restore     ///< go back to the copy
+  };
+  Kind kind = Kind::Step;
+  double t = 0.0, h = 0.0;
+  std::shared_ptr<const ElementTemplate> shape;
+  Parameters parameters;
+  std::shared_ptr<const VectorField> field;
+};
+
+/// What a renderer needs to draw the state the queue leads to.
+struct DrawSettings
+{
+  double time = 0.0;                         ///< the simulation time shown
+  std::array<double, 3> offset = { 0, 0, 0 }; ///< world position of the grid-local origin
+  std::array<double, 6> bounds = { 0, -1, 0, -1, 0, -1 }; ///< the field's world bounds
+  int coloringAxis = 2;                          ///< for Layer and Radius
+  std::array<double, 2> radialCenter = { 0, 0 }; ///< grid-local, the other two axes
+  std::uint64_t serial = 0; ///< changes with every update of the filter
+};
+
+class WorkQueue
+{
+public:
+  explicit WorkQueue(int id)
+    : Id(id)
+  {
+  }
+  WorkQueue(const WorkQueue&) = delete;
+  WorkQueue& operator=(const WorkQueue&) = delete;
+
+  int id() const { return this->Id; }
+
+  // Recording (the filter).
+  void configure(const ElementTemplate& shape, const Parameters& parameters);
+  void setField(const VectorField& field);
+  void initialize();
+  void step(double t, double h);
+  void save();
+  void restore();
+  /// Drops every pending call (a replay makes them moot).
+  void clear() { this->Pending.clear(); }
+
+  // Running (the renderer).
+  std::vector<EngineCall> take();
+  bool empty() const { return this->Pending.empty(); }
+  std::size_t pendingCount() const { return this->Pending.size(); }
+
+  /// Where the engine stands once every recorded call has run.
+  struct Cursor
+  {
+    bool valid = false;
+    double committed = 0.0;
+    std::uint64_t configuration = 0; ///< the filter's configuration it was made for
+    bool showsPartialStep = false;   ///< a short step on a saved copy is shown
+    std::uint64_t producer = 0;      ///< which filter recorded it
+  };
+  Cursor cursor;
+
+  DrawSettings draw;
+
+  /// The largest texture the renderer's GPU takes (0: not known yet), so the
+  /// filter can refuse a system before recording it.
+  int maxTextureSize = 0;
+
+  /// The renderer's last failure, if any (empty when the engine ran).
+  std::string failure;
+
+private:
+  int Id = 0;
+  std::vector<EngineCall> Pending;
+};
+
+} // namespace bp
+
+#endif

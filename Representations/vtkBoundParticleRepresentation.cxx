@@ -1,0 +1,319 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkBoundParticleRepresentation.h"
+
+#include "WorkQueue.h"
+#include "vtkBoundParticleTracer.h"
+#include "vtkOpenGLBoundParticleMapper.h"
+
+#include "vtkActor.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerRequestKey.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVRenderView.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+
+#include <string>
+
+struct vtkBoundParticleRepresentation::vtkInternals
+{
+  std::shared_ptr<bp::WorkQueue> Queue = vtkBoundParticleTracer::NewWorkQueue();
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkProperty> Property;
+  vtkNew<vtkOpenGLBoundParticleMapper> GpuMapper;
+  vtkNew<vtkPolyDataMapper> CpuMapper;
+  vtkSmartPointer<vtkPolyData> Cache;
+  double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
+  bool Gpu = false; // the cached input is a GPU work order
+  std::string ColorArray;
+  bool GpuFailed = false;
+};
+
+vtkStandardNewMacro(vtkBoundParticleRepresentation);
+
+vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
+  : Internals(new vtkInternals)
+{
+  vtkInternals& I = *this->Internals;
+  I.Actor->SetProperty(I.Property);
+  I.Actor->SetMapper(I.CpuMapper);
+  I.GpuMapper->SetWorkQueue(I.Queue);
+  // The CPU output's scalars look as the Surface representation draws them.
+  I.CpuMapper->SetScalarModeToUsePointFieldData();
+  I.CpuMapper->SetInterpolateScalarsBeforeMapping(1);
+  I.CpuMapper->SetUseLookupTableScalarRange(1);
+  I.CpuMapper->SetScalarVisibility(0);
+  I.GpuMapper->SetUseLookupTableScalarRange(1);
+}
+
+vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation() = default;
+
+int vtkBoundParticleRepresentation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkBoundParticleRepresentation::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  vtkInternals& I = *this->Internals;
+  // After a GPU failure, ask for the CPU result.
+  I.GpuFailed = I.GpuFailed || !I.Queue->failure.empty();
+  for (int k = 0; k < inputVector[0]->GetNumberOfInformationObjects(); ++k)
+  {
+    inputVector[0]->GetInformationObject(k)->Set(
+      vtkBoundParticleTracer::GPU_WORK_QUEUE(), I.GpuFailed ? 0 : I.Queue->id());
+  }
+  return 1;
+}
+
+int vtkBoundParticleRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInternals& I = *this->Internals;
+  vtkMath::UninitializeBounds(I.Bounds);
+  I.Cache = nullptr;
+  I.Gpu = false;
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1)
+  {
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    vtkPolyData* input = vtkPolyData::GetData(inInfo);
+    if (input)
+    {
+      I.Cache = vtkSmartPointer<vtkPolyData>::New();
+      I.Cache->ShallowCopy(input);
+      auto* id =
+        vtkIntArray::SafeDownCast(input->GetFieldData()->GetArray("BoundParticlesWorkQueue"));
+      I.Gpu = id && id->GetNumberOfValues() == 1 && id->GetValue(0) == I.Queue->id();
+      if (I.Gpu)
+      {
+        std::copy(I.Queue->draw.bounds.begin(), I.Queue->draw.bounds.end(), I.Bounds);
+      }
+      else
+      {
+        input->GetBounds(I.Bounds);
+      }
+    }
+    // The request is answered: other consumers of this output get the CPU result.
+    inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+  }
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+int vtkBoundParticleRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
+  {
+    return 0;
+  }
+  vtkInternals& I = *this->Internals;
+  if (request_type == vtkPVView::REQUEST_UPDATE())
+  {
+    vtkPVRenderView::SetPiece(inInfo, this, I.Cache);
+    vtkPVRenderView::SetGeometryBounds(inInfo, this, I.Bounds);
+    // The GPU state lives where the data is: render there.
+    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
+  }
+  else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
+  {
+    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
+  }
+  else if (request_type == vtkPVView::REQUEST_RENDER())
+  {
+    vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
+    if (I.Gpu)
+    {
+      I.Actor->SetMapper(I.GpuMapper);
+    }
+    else
+    {
+      I.CpuMapper->SetInputDataObject(piece);
+      I.Actor->SetMapper(I.CpuMapper);
+    }
+    this->UpdateColoring();
+  }
+  return 1;
+}
+
+bool vtkBoundParticleRepresentation::GetDrawsGpuState() const
+{
+  return this->Internals->Gpu && this->Internals->GpuMapper->GetLastError().empty();
+}
+
+void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
+{
+  this->Internals->GpuMapper->SetTextureSizeLimit(texels);
+}
+
+void vtkBoundParticleRepresentation::UpdateColoring()
+{
+  vtkInternals& I = *this->Internals;
+  const bool scalars = !I.ColorArray.empty();
+  I.CpuMapper->SetScalarVisibility(scalars ? 1 : 0);
+  I.CpuMapper->SelectColorArray(I.ColorArray.c_str());
+  I.GpuMapper->SetScalarVisibility(scalars ? 1 : 0);
+  vtkScalarsToColors* lut = I.CpuMapper->GetLookupTable();
+  const int component =
+    lut && lut->GetVectorMode() == vtkScalarsToColors::COMPONENT ? lut->GetVectorComponent() : -1;
+  if (!I.GpuMapper->SetColorArray(I.ColorArray.c_str(), component) && I.Gpu)
+  {
+    vtkWarningMacro("The GPU engine cannot colour by '" << I.ColorArray
+                                                        << "'; drawing the solid colour.");
+  }
+}
+
+bool vtkBoundParticleRepresentation::AddToView(vtkView* view)
+{
+  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
+  if (rview)
+  {
+    rview->GetRenderer()->AddActor(this->Internals->Actor);
+    return this->Superclass::AddToView(view);
+  }
+  return false;
+}
+
+bool vtkBoundParticleRepresentation::RemoveFromView(vtkView* view)
+{
+  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
+  if (rview)
+  {
+    rview->GetRenderer()->RemoveActor(this->Internals->Actor);
+    return this->Superclass::RemoveFromView(view);
+  }
+  return false;
+}
+
+void vtkBoundParticleRepresentation::SetVisibility(bool value)
+{
+  this->Superclass::SetVisibility(value);
+  this->Internals->Actor->SetVisibility(value ? 1 : 0);
+}
+
+void vtkBoundParticleRepresentation::SetInputArrayToProcess(
+  int idx, int port, int connection, int fieldAssociation, const char* name)
+{
+  this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
+  const bool points = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  this->Internals->ColorArray = points && name ? name : "";
+  this->UpdateColoring();
+}
+
+void vtkBoundParticleRepresentation::SetLookupTable(vtkScalarsToColors* lut)
+{
+  this->Internals->CpuMapper->SetLookupTable(lut);
+  this->Internals->GpuMapper->SetLookupTable(lut);
+}
+
+void vtkBoundParticleRepresentation::SetMapScalars(int value)
+{
+  const int mode = value ? VTK_COLOR_MODE_MAP_SCALARS : VTK_COLOR_MODE_DIRECT_SCALARS;
+  this->Internals->CpuMapper->SetColorMode(mode);
+}
+
+void vtkBoundParticleRepresentation::SetInterpolateScalarsBeforeMapping(int value)
+{
+  this->Internals->CpuMapper->SetInterpolateScalarsBeforeMapping(value);
+}
+
+// Forwarded to the property.
+void vtkBoundParticleRepresentation::SetColor(double r, double g, double b)
+{
+  this->Internals->Property->SetColor(r, g, b);
+}
+void vtkBoundParticleRepresentation::SetDiffuseColor(double r, double g, double b)
+{
+  this->Internals->Property->SetDiffuseColor(r, g, b);
+}
+void vtkBoundParticleRepresentation::SetAmbientColor(double r, double g, double b)
+{
+  this->Internals->Property->SetAmbientColor(r, g, b);
+}
+void vtkBoundParticleRepresentation::SetSpecularColor(double r, double g, double b)
+{
+  this->Internals->Property->SetSpecularColor(r, g, b);
+}
+void vtkBoundParticleRepresentation::SetOpacity(double value)
+{
+  this->Internals->Property->SetOpacity(value);
+}
+void vtkBoundParticleRepresentation::SetAmbient(double value)
+{
+  this->Internals->Property->SetAmbient(value);
+}
+void vtkBoundParticleRepresentation::SetDiffuse(double value)
+{
+  this->Internals->Property->SetDiffuse(value);
+}
+void vtkBoundParticleRepresentation::SetSpecular(double value)
+{
+  this->Internals->Property->SetSpecular(value);
+}
+void vtkBoundParticleRepresentation::SetSpecularPower(double value)
+{
+  this->Internals->Property->SetSpecularPower(value);
+}
+void vtkBoundParticleRepresentation::SetInterpolation(int value)
+{
+  this->Internals->Property->SetInterpolation(value);
+}
+void vtkBoundParticleRepresentation::SetPointSize(double value)
+{
+  this->Internals->Property->SetPointSize(value);
+}
+void vtkBoundParticleRepresentation::SetLineWidth(double value)
+{
+  this->Internals->Property->SetLineWidth(value);
+}
+
+// Forwarded to the actor.
+void vtkBoundParticleRepresentation::SetPosition(double x, double y, double z)
+{
+  this->Internals->Actor->SetPosition(x, y, z);
+}
+void vtkBoundParticleRepresentation::SetScale(double x, double y, double z)
+{
+  this->Internals->Actor->SetScale(x, y, z);
+}
+void vtkBoundParticleRepresentation::SetOrientation(double x, double y, double z)
+{
+  this->Internals->Actor->SetOrientation(x, y, z);
+}
+void vtkBoundParticleRepresentation::SetOrigin(double x, double y, double z)
+{
+  this->Internals->Actor->SetOrigin(x, y, z);
+}
+void vtkBoundParticleRepresentation::SetUserTransform(const double matrix[16])
+{
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(matrix);
+  this->Internals->Actor->SetUserTransform(transform);
+}
+void vtkBoundParticleRepresentation::SetPickable(int value)
+{
+  this->Internals->Actor->SetPickable(value);
+}
+
+void vtkBoundParticleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ColorArray: " << this->Internals->ColorArray << "\n";
+  os << indent << "Gpu: " << this->Internals->Gpu << "\n";
+}

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkBoundParticleRepresentation
+ * @brief The "Bound Particles" display of a Bound Particle Tracer.
+ *
+ * It asks its input for GPU work: on its own update request it sets
+ * vtkBoundParticleTracer::GPU_WORK_QUEUE() to its work queue's id, and takes
+ * it back to 0 once the update is done, so every other consumer of the same
+ * output gets the CPU result. With the tracer's Engine set to GPU the input
+ * then carries no particles, only the queue's id, and the
+ * vtkOpenGLBoundParticleMapper runs the recorded work and draws the GPU
+ * state; otherwise (Engine CPU, or after a GPU failure) it draws the CPU
+ * polydata with a plain polydata mapper, coloured the same way.
+ *
+ * The display properties (colour, opacity, lighting, the colour array and its
+ * lookup table, transforms) are the Surface representation's, shared through
+ * the GeometryRepresentation extension in the plugin's XML.
+ */
+#ifndef vtkBoundParticleRepresentation_h
+#define vtkBoundParticleRepresentation_h
+
+#include "BoundParticlesRepresentationsModule.h" // for export macro
+#include "vtkPVDataRepresentation.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkScalarsToColors;
+
+class BOUNDPARTICLESREPRESENTATIONS_EXPORT vtkBoundParticleRepresentation
+  : public vtkPVDataRepresentation
+{
+public:
+  static vtkBoundParticleRepresentation* New();
+  vtkTypeMacro(vtkBoundParticleRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  void SetVisibility(bool value) override;
+
+  ///@{
+  /// Forwarded to the actor's property (shared with the Surface representation).
+  void SetColor(double r, double g, double b);
+  void SetDiffuseColor(double r, double g, double b);
+  void SetAmbientColor(double r, double g, double b);
+  void SetSpecularColor(double r, double g, double b);
+  void SetOpacity(double value);
+  void SetAmbient(double value);
+  void SetDiffuse(double value);
+  void SetSpecular(double value);
+  void SetSpecularPower(double value);
+  void SetInterpolation(int value);
+  void SetPointSize(double value);
+  void SetLineWidth(double value);
+  ///@}
+
+  ///@{
+  /// Forwarded to the actor.
+  void SetPosition(double x, double y, double z);
+  void SetScale(double x, double y, double z);
+  void SetOrientation(double x, double y, double z);
+  void SetOrigin(double x, double y, double z);
+  void SetUserTransform(const double matrix[16]);
+  void SetPickable(int value);
+  ///@}
+
+  ///@{
+  /// Colouring: the array (ColorArrayName) and the lookup table.
+  using Superclass::SetInputArrayToProcess;
+  void SetInputArrayToProcess(
+    int idx, int port, int connection, int fieldAssociation, const char* name) override;
+  void SetLookupTable(vtkScalarsToColors* lut);
+  void SetMapScalars(int value);
+  void SetInterpolateScalarsBeforeMapping(int value);
+  ///@}
+
+  /// Whether the last render drew the GPU engine's state (else the CPU output).
+  bool GetDrawsGpuState() const;
+
+  /// For tests: caps the GPU engine's textures below GL_MAX_TEXTURE_SIZE.
+  void SetGpuTextureSizeLimit(int texels);
+
+protected:
+  vtkBoundParticleRepresentation();
+  ~vtkBoundParticleRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+private:
+  vtkBoundParticleRepresentation(const vtkBoundParticleRepresentation&) = delete;
+  void operator=(const vtkBoundParticleRepresentation&) = delete;
+
+  void UpdateColoring();
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

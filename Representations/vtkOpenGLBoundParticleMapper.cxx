@@ -1,0 +1,531 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkOpenGLBoundParticleMapper.h"
+
+#include "BoundParticlesShaders.h" // generated from Shaders/
+#include "GpuEngine.h"
+#include "WorkQueue.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <array>
+#include <cstring>
+
+namespace
+{
+/**
+ * Saves the GL state the engine's passes change and puts it back, so VTK's
+ * cached view of the state (vtkOpenGLState, the texture units, the bound
+ * shader) stays true.
+ */
+class GLStateGuard
+{
+public:
+  static constexpr int Units = 16;
+  GLStateGuard()
+  {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &this->DrawFbo);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &this->ReadFbo);
+    glGetIntegerv(GL_VIEWPORT, this->Viewport);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &this->Program);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &this->ActiveTexture);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &this->Vao);
+    glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &this->UnitCount);
+    this->UnitCount = std::min(this->UnitCount, Units);
+    for (int u = 0; u < this->UnitCount; ++u)
+    {
+      glActiveTexture(GLenum(GL_TEXTURE0 + u));
+      glGetIntegerv(GL_TEXTURE_BINDING_2D, &this->Texture2D[u]);
+      glGetIntegerv(GL_TEXTURE_BINDING_3D, &this->Texture3D[u]);
+    }
+    glActiveTexture(GLenum(this->ActiveTexture));
+    for (int k = 0; k < 5; ++k)
+    {
+      this->Enabled[k] = glIsEnabled(Capabilities[k]);
+    }
+    glGetBooleanv(GL_COLOR_WRITEMASK, this->ColorMask);
+  }
+  ~GLStateGuard()
+  {
+    for (int k = 0; k < 5; ++k)
+    {
+      if (this->Enabled[k])
+        glEnable(Capabilities[k]);
+      else
+        glDisable(Capabilities[k]);
+    }
+    glColorMask(this->ColorMask[0], this->ColorMask[1], this->ColorMask[2], this->ColorMask[3]);
+    for (int u = 0; u < this->UnitCount; ++u)
+    {
+      glActiveTexture(GLenum(GL_TEXTURE0 + u));
+      glBindTexture(GL_TEXTURE_2D, GLuint(this->Texture2D[u]));
+      glBindTexture(GL_TEXTURE_3D, GLuint(this->Texture3D[u]));
+    }
+    glActiveTexture(GLenum(this->ActiveTexture));
+    glBindVertexArray(GLuint(this->Vao));
+    glUseProgram(GLuint(this->Program));
+    glViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(this->DrawFbo));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(this->ReadFbo));
+  }
+
+private:
+  static constexpr GLenum Capabilities[5] = { GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST,
+    GL_CULL_FACE, GL_STENCIL_TEST };
+  GLint DrawFbo = 0, ReadFbo = 0, Viewport[4] = { 0, 0, 0, 0 }, Program = 0, ActiveTexture = 0,
+        Vao = 0, UnitCount = 0;
+  GLint Texture2D[Units] = {}, Texture3D[Units] = {};
+  GLboolean Enabled[5] = {}, ColorMask[4] = {};
+};
+constexpr GLenum GLStateGuard::Capabilities[5];
+
+/// The template as VTK polydata: its triangles (or springs as lines, or the
+/// lone particle as a vertex) over n points, so VTK builds one index buffer
+/// whose indices are template particle indices.
+vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, float size)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (const auto& r : shape.rest)
+  {
+    points->InsertNextPoint(size * r[0], size * r[1], size * r[2]);
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+  }
+  mesh->SetPoints(points);
+  mesh->GetPointData()->SetNormals(normals);
+  vtkNew<vtkCellArray> cells;
+  if (!shape.triangles.empty())
+  {
+    for (const auto& t : shape.triangles)
+    {
+      const vtkIdType ids[3] = { vtkIdType(t[0]), vtkIdType(t[1]), vtkIdType(t[2]) };
+      cells->InsertNextCell(3, ids);
+    }
+    mesh->SetPolys(cells);
+  }
+  else if (!shape.springs.empty())
+  {
+    for (const auto& s : shape.springs)
+    {
+      const vtkIdType ids[2] = { vtkIdType(s.a), vtkIdType(s.b) };
+      cells->InsertNextCell(2, ids);
+    }
+    mesh->SetLines(cells);
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < vtkIdType(shape.rest.size()); ++i)
+    {
+      cells->InsertNextCell(1, &i);
+    }
+    mesh->SetVerts(cells);
+  }
+  return mesh;
+}
+} // namespace
+
+struct vtkOpenGLBoundParticleMapper::vtkInternals
+{
+  bp::GpuEngine Engine;
+  std::shared_ptr<bp::WorkQueue> Queue;
+  bool Configured = false; // the engine holds a system
+  bool Failed = false;     // the queued work failed: draw nothing until the next Configure
+  std::string LastError;
+  std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
+  bp::GpuEngine::DrawInputs Inputs;
+  double DrawTime = 0.0;
+  bool NeedsSamples = false;
+
+  int ScalarMode = SOLID;
+  int Component = -1;
+
+  vtkNew<vtkTextureObject> ColorTable;
+  vtkMTimeType ColorTableTime = 0;
+  double ColorTableRange[2] = { 0, 1 };
+  static constexpr int ColorTableSize = 256;
+
+  int Units[5] = { -1, -1, -1, -1, -1 }; // texture units of the engine's textures while drawing
+};
+
+vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
+
+vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
+  : Internals(new vtkInternals)
+{
+  // Positions come from the engine's textures in world coordinates: VTK must
+  // not shift and scale the template's buffer and fold that into the matrices.
+  this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+  this->SetScalarVisibility(0);
+}
+
+vtkOpenGLBoundParticleMapper::~vtkOpenGLBoundParticleMapper() = default;
+
+void vtkOpenGLBoundParticleMapper::SetWorkQueue(const std::shared_ptr<bp::WorkQueue>& queue)
+{
+  if (this->Internals->Queue != queue)
+  {
+    this->Internals->Queue = queue;
+    this->Modified();
+  }
+}
+
+bool vtkOpenGLBoundParticleMapper::SetColorArray(const char* name, int component)
+{
+  vtkInternals& I = *this->Internals;
+  const std::string array = name ? name : "";
+  int mode = SOLID;
+  int comp = -1;
+  bool known = true;
+  if (array.empty())
+    mode = SOLID;
+  else if (array == "Force")
+    mode = FORCE;
+  else if (array == "Lifetime")
+    mode = LIFETIME;
+  else if (array == "Speed")
+    mode = VELOCITY;
+  else if (array == "Velocity")
+  {
+    mode = VELOCITY;
+    comp = component >= 0 && component < 3 ? component : -1;
+  }
+  else if (array == "Vorticity")
+    mode = VORTICITY;
+  else if (array == "Layer")
+    mode = LAYER;
+  else if (array == "Radius")
+    mode = RADIUS;
+  else if (array == "ElementId")
+    mode = ELEMENT_ID;
+  else if (array == "ParticleIndex")
+    mode = PARTICLE_INDEX;
+  else
+    known = false;
+  if (mode != I.ScalarMode || comp != I.Component)
+  {
+    I.ScalarMode = mode;
+    I.Component = comp;
+    this->Modified();
+  }
+  return known;
+}
+
+const std::string& vtkOpenGLBoundParticleMapper::GetLastError() const
+{
+  return this->Internals->LastError;
+}
+
+void vtkOpenGLBoundParticleMapper::SetTextureSizeLimit(int texels)
+{
+  this->Internals->Engine.setTextureSizeLimit(texels);
+}
+
+double* vtkOpenGLBoundParticleMapper::GetBounds()
+{
+  const auto& queue = this->Internals->Queue;
+  if (!queue || queue->draw.serial == 0)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+  else
+  {
+    std::copy(queue->draw.bounds.begin(), queue->draw.bounds.end(), this->Bounds);
+  }
+  return this->Bounds;
+}
+
+void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& I = *this->Internals;
+  if (!I.Queue)
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return;
+  }
+  window->MakeCurrent();
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  I.Queue->maxTextureSize = maxSize;
+
+  std::vector<bp::EngineCall> calls = I.Queue->take();
+  if (!calls.empty())
+  {
+    GLStateGuard guard;
+    for (const bp::EngineCall& call : calls)
+    {
+      std::string error;
+      switch (call.kind)
+      {
+        case bp::EngineCall::Kind::Configure:
+          I.Failed = false;
+          I.Configured = false;
+          error = I.Engine.configure(*call.shape, call.parameters);
+          if (error.empty())
+          {
+            I.Configured = true;
+            this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
+          }
+          break;
+        case bp::EngineCall::Kind::SetField:
+          if (I.Configured && !I.Failed)
+            error = I.Engine.setField(*call.field);
+          break;
+        case bp::EngineCall::Kind::Initialize:
+          if (I.Configured && !I.Failed)
+            I.Engine.initialize();
+          break;
+        case bp::EngineCall::Kind::Step:
+          if (I.Configured && !I.Failed)
+            I.Engine.step(call.t, call.h);
+          break;
+        case bp::EngineCall::Kind::Save:
+          if (I.Configured && !I.Failed)
+            I.Engine.saveState();
+          break;
+        case bp::EngineCall::Kind::Restore:
+          if (I.Configured && !I.Failed)
+            I.Engine.restoreState();
+          break;
+      }
+      if (!error.empty())
+      {
+        I.Failed = true;
+        I.LastError = "The GPU engine cannot run this trace: " + error +
+          ". Set the Bound Particle Tracer's Engine to CPU; this display draws the CPU result "
+          "from the next update on.";
+        vtkErrorMacro(<< I.LastError);
+        I.Queue->failure = I.LastError;
+      }
+    }
+    if (I.Configured && !I.Failed)
+    {
+      I.Engine.updateNormals();
+      I.SamplesSerial = 0;
+      const GLenum glError = glGetError();
+      if (glError != GL_NO_ERROR)
+      {
+        I.Failed = true;
+        I.LastError = "The GPU engine failed with OpenGL error " + std::to_string(glError) +
+          "; this display draws the CPU result from the next update on.";
+        vtkErrorMacro(<< I.LastError);
+        I.Queue->failure = I.LastError;
+      }
+    }
+  }
+  if (!I.Configured || I.Failed)
+  {
+    return;
+  }
+  if (I.ScalarMode == VELOCITY || I.ScalarMode == VORTICITY)
+  {
+    if (I.SamplesSerial != I.Queue->draw.serial)
+    {
+      GLStateGuard guard;
+      I.Engine.updateFieldSamples(I.Queue->draw.time);
+      I.SamplesSerial = I.Queue->draw.serial;
+    }
+  }
+  I.Inputs = I.Engine.drawInputs();
+  I.LastError.clear();
+  this->Superclass::Render(ren, act);
+}
+
+void vtkOpenGLBoundParticleMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  // A tag of our own after VTK's colour code, so ours runs after it.
+  vtkShaderProgram::Substitute(fs, "//VTK::Color::Impl", "//VTK::Color::Impl\n//BP::Color::Impl");
+  vtkShaderProgram::Substitute(fs, "//VTK::Color::Dec", "//VTK::Color::Dec\n//BP::Color::Dec");
+  shaders[vtkShader::Fragment]->SetSource(fs);
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+
+  vs = shaders[vtkShader::Vertex]->GetSource();
+  fs = shaders[vtkShader::Fragment]->GetSource();
+  // Every use of the vertex and normal attributes reads the fetched values;
+  // the attributes stay declared so VTK's buffers still bind.
+  vtkShaderProgram::Substitute(vs, "vertexMC", "bpVertexMC", true);
+  vtkShaderProgram::Substitute(vs, "normalMC", "bpNormalMC", true);
+  vtkShaderProgram::Substitute(vs, "in vec4 bpVertexMC;",
+    std::string("in vec4 vertexMC;\n") + bpShaderDrawVSDec, false);
+  vtkShaderProgram::Substitute(vs, "in vec3 bpNormalMC;", "in vec3 normalMC;", false);
+  vtkShaderProgram::Substitute(
+    vs, "void main()\n{", std::string("void main()\n{\n") + bpShaderDrawVSImpl, false);
+  vtkShaderProgram::Substitute(fs, "//BP::Color::Dec", bpShaderDrawFSDec, false);
+  vtkShaderProgram::Substitute(fs, "//BP::Color::Impl", bpShaderDrawFSImpl, false);
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkInternals& I = *this->Internals;
+  vtkShaderProgram* program = cellBO.Program;
+  const char* samplers[5] = { "bpPositions", "bpNormals", "bpSamples", "bpElements", "bpCenters" };
+  for (int k = 0; k < 5; ++k)
+  {
+    program->SetUniformi(samplers[k], I.Units[k]);
+  }
+  program->SetUniform2i("bpElementGrid", I.Inputs.elementGrid);
+  program->SetUniformi("bpBlocksPerRow", I.Inputs.blocksPerRow);
+  const auto& d = I.Queue->draw;
+  const float offset[3] = { float(d.offset[0]), float(d.offset[1]), float(d.offset[2]) };
+  program->SetUniform3f("bpOffset", offset);
+  const int mode = this->ScalarVisibility ? I.ScalarMode : int(SOLID);
+  program->SetUniformi("bpScalarMode", mode);
+  program->SetUniformi("bpComponent", I.Component);
+  const float range[2] = { float(I.ColorTableRange[0]), float(I.ColorTableRange[1]) };
+  program->SetUniform2f("bpScalarRange", range);
+  program->SetUniformi("bpColoringAxis", d.coloringAxis);
+  const float center[2] = { float(d.radialCenter[0]), float(d.radialCenter[1]) };
+  program->SetUniform2f("bpRadialCenter", center);
+  program->SetUniformi("bpColorTable", I.ColorTable->GetTextureUnit());
+  program->SetUniformf("bpColorTableSize", float(vtkInternals::ColorTableSize));
+}
+
+void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& I = *this->Internals;
+  vtkOpenGLRenderWindow* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+
+  // The lookup table as a table texture over its range.
+  vtkScalarsToColors* lut = this->GetLookupTable();
+  const double* range = lut->GetRange();
+  if (!I.ColorTable->GetHandle() || lut->GetMTime() > I.ColorTableTime ||
+    range[0] != I.ColorTableRange[0] || range[1] != I.ColorTableRange[1])
+  {
+    const int size = vtkInternals::ColorTableSize;
+    vtkNew<vtkDoubleArray> ramp;
+    ramp->SetNumberOfValues(size);
+    for (int k = 0; k < size; ++k)
+    {
+      ramp->SetValue(k, range[0] + (range[1] - range[0]) * k / double(size - 1));
+    }
+    vtkUnsignedCharArray* rgba = lut->MapScalars(ramp, VTK_COLOR_MODE_MAP_SCALARS, -1);
+    I.ColorTable->SetContext(window);
+    I.ColorTable->Create2DFromRaw(size, 1, 4, VTK_UNSIGNED_CHAR, rgba->GetVoidPointer(0));
+    I.ColorTable->SetMinificationFilter(vtkTextureObject::Linear);
+    I.ColorTable->SetMagnificationFilter(vtkTextureObject::Linear);
+    I.ColorTable->SetWrapS(vtkTextureObject::ClampToEdge);
+    I.ColorTable->SetWrapT(vtkTextureObject::ClampToEdge);
+    rgba->Delete();
+    I.ColorTableTime = lut->GetMTime();
+    I.ColorTableRange[0] = range[0];
+    I.ColorTableRange[1] = range[1];
+  }
+  I.ColorTable->Activate();
+
+  // The engine's textures on units VTK hands out.
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  const unsigned textures[5] = { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples,
+    I.Inputs.elements, I.Inputs.centers };
+  for (int k = 0; k < 5; ++k)
+  {
+    I.Units[k] = units->Allocate();
+    state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[k]));
+    glBindTexture(GL_TEXTURE_2D, textures[k]);
+  }
+
+  const int representation = act->GetProperty()->GetRepresentation();
+  for (int p = PrimitiveStart; p <= PrimitiveTris; ++p)
+  {
+    this->DrawingVertices = false;
+    this->DrawingSelection = false;
+    vtkOpenGLHelper& helper = this->Primitives[p];
+    if (!helper.IBO->IndexCount)
+    {
+      continue;
+    }
+    GLenum mode = this->GetOpenGLMode(representation, p);
+    this->UpdateShaders(helper, ren, act);
+    if (!helper.Program)
+    {
+      I.LastError = "The Bound Particles drawing shader does not compile; see the error above.";
+      continue;
+    }
+    if (mode == GL_POINTS)
+    {
+      state->vtkglPointSize(act->GetProperty()->GetPointSize());
+    }
+    else if (mode == GL_LINES && !this->HaveWideLines(ren, act))
+    {
+      state->vtkglLineWidth(act->GetProperty()->GetLineWidth());
+    }
+    helper.IBO->Bind();
+    glDrawElementsInstanced(mode, GLsizei(helper.IBO->IndexCount), GL_UNSIGNED_INT, nullptr,
+      GLsizei(I.Inputs.elementCount));
+    helper.IBO->Release();
+  }
+
+  for (int k = 0; k < 5; ++k)
+  {
+    state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[k]));
+    glBindTexture(GL_TEXTURE_2D, 0);
+    units->Free(I.Units[k]);
+    I.Units[k] = -1;
+  }
+  I.ColorTable->Deactivate();
+}
+
+void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& I = *this->Internals;
+  if (I.Configured)
+  {
+    if (window)
+    {
+      static_cast<vtkOpenGLRenderWindow*>(window)->MakeCurrent();
+      GLStateGuard guard;
+      I.Engine.release();
+    }
+    I.Configured = false;
+    if (I.Queue)
+    {
+      // The state is gone: what is queued continues from it, so the filter
+      // must replay into this queue.
+      I.Queue->clear();
+      I.Queue->cursor.valid = false;
+    }
+  }
+  I.ColorTable->ReleaseGraphicsResources(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkOpenGLBoundParticleMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ScalarMode: " << this->Internals->ScalarMode << "\n";
+  os << indent << "Configured: " << this->Internals->Configured << "\n";
+}

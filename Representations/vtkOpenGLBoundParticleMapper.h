@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkOpenGLBoundParticleMapper
+ * @brief Runs the GPU engine in the render window's context and draws its
+ * state with vertex texture fetch.
+ *
+ * The mapper owns the GPU state (a bp::GpuEngine: particle state in RGBA32F
+ * ping-pong textures, the field's time steps in 3D textures). Before it draws
+ * it runs the engine calls that vtkBoundParticleTracer recorded into its work
+ * queue, saving and restoring the GL state VTK keeps. It then draws the
+ * template's triangles once per element (glDrawElementsInstanced): VTK's own
+ * polydata shaders, so lights, Diffuse, Specular and the rest look as they do
+ * in the Surface representation, with the vertex position, normal and colour
+ * scalar fetched from the engine's textures. Nothing per particle is uploaded.
+ *
+ * Colouring by a scalar goes through the mapper's lookup table (its range
+ * and colours, sampled into a table texture): Force, Lifetime, Speed,
+ * Velocity (magnitude or a component), Vorticity, Layer, Radius, ElementId and
+ * ParticleIndex, the point arrays of the filter's CPU output.
+ */
+#ifndef vtkOpenGLBoundParticleMapper_h
+#define vtkOpenGLBoundParticleMapper_h
+
+#include "BoundParticlesRepresentationsModule.h" // for export macro
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <memory> // for std::unique_ptr, std::shared_ptr
+#include <string> // for std::string
+
+#ifndef __VTK_WRAP__
+namespace bp
+{
+class WorkQueue;
+}
+#endif
+
+class BOUNDPARTICLESREPRESENTATIONS_EXPORT vtkOpenGLBoundParticleMapper
+  : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkOpenGLBoundParticleMapper* New();
+  vtkTypeMacro(vtkOpenGLBoundParticleMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ScalarModes
+  {
+    SOLID = 0,
+    FORCE,
+    LIFETIME,
+    VELOCITY, ///< with a component, or its magnitude (Speed)
+    VORTICITY,
+    LAYER,
+    RADIUS,
+    ELEMENT_ID,
+    PARTICLE_INDEX
+  };
+
+#ifndef __VTK_WRAP__
+  /// The queue whose calls this mapper runs and whose state it draws.
+  void SetWorkQueue(const std::shared_ptr<bp::WorkQueue>& queue);
+#endif
+
+  /**
+   * Colours by the named point array of the CPU output (null or "" for the
+   * solid colour); `component` -1 is the magnitude of a vector array.
+   * Returns false, colouring solid, for a name this mapper cannot draw.
+   */
+  bool SetColorArray(const char* name, int component);
+
+  /// What went wrong in the last render; empty when the GPU engine ran.
+  const std::string& GetLastError() const;
+
+  /// The field's bounds: elements never leave them for long.
+  using vtkOpenGLPolyDataMapper::GetBounds;
+  double* GetBounds() override;
+
+  /// Runs the queued engine work, then draws.
+  void Render(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  /// For tests and benchmarks: a cap below GL_MAX_TEXTURE_SIZE.
+  void SetTextureSizeLimit(int texels);
+
+protected:
+  vtkOpenGLBoundParticleMapper();
+  ~vtkOpenGLBoundParticleMapper() override;
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+private:
+  vtkOpenGLBoundParticleMapper(const vtkOpenGLBoundParticleMapper&) = delete;
+  void operator=(const vtkOpenGLBoundParticleMapper&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

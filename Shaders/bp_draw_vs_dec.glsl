@@ -1,0 +1,55 @@
+// Drawing (vtkOpenGLBoundParticleMapper): declarations added to VTK's polydata
+// vertex shader. One instance per element, one vertex per template particle:
+// the position and normal come from the GPU engine's state textures (vertex
+// texture fetch), never from a buffer uploaded per frame.
+uniform sampler2D bpPositions; // per particle: grid-local position, force
+uniform sampler2D bpNormals;   // per particle: unit normal
+uniform sampler2D bpSamples;   // per particle: velocity, |curl v|
+uniform sampler2D bpElements;  // per element: lifetime, generation, flags
+uniform sampler2D bpCenters;   // per element: the generation's initial centre
+uniform ivec2 bpElementGrid;
+uniform int bpBlocksPerRow;
+uniform vec3 bpOffset;         // world position of the grid-local origin
+uniform int bpScalarMode;      // 0 solid; see vtkOpenGLBoundParticleMapper::ScalarModes
+uniform int bpComponent;       // for Velocity: 0-2, or -1 for the magnitude
+uniform vec2 bpScalarRange;    // the lookup table's range
+uniform int bpColoringAxis;
+uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
+out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
+vec4 bpVertexMC;
+vec3 bpNormalMC;
+
+ivec2 bpDrawTexel(int e, int i)
+{
+  ivec2 block = ivec2(i % bpBlocksPerRow, i / bpBlocksPerRow);
+  return block * bpElementGrid + ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+}
+
+float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
+{
+  ivec2 elementTexel = ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+  if (bpScalarMode == 1)
+    return state.w;
+  if (bpScalarMode == 2)
+    return texelFetch(bpElements, elementTexel, 0).x;
+  if (bpScalarMode == 3)
+  {
+    vec3 v = texelFetch(bpSamples, texel, 0).xyz;
+    return bpComponent >= 0 ? v[bpComponent] : length(v);
+  }
+  if (bpScalarMode == 4)
+    return texelFetch(bpSamples, texel, 0).w;
+  vec3 c = texelFetch(bpCenters, elementTexel, 0).xyz;
+  if (bpScalarMode == 5)
+    return c[bpColoringAxis] + bpOffset[bpColoringAxis];
+  if (bpScalarMode == 6)
+  {
+    vec2 d = vec2(c[(bpColoringAxis + 1) % 3], c[(bpColoringAxis + 2) % 3]) - bpRadialCenter;
+    return length(d);
+  }
+  if (bpScalarMode == 7)
+    return float(e);
+  if (bpScalarMode == 8)
+    return float(i);
+  return 0.0;
+}
