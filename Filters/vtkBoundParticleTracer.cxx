@@ -877,12 +877,23 @@ int vtkBoundParticleTracer::RequestData(
       const int maxSize = I.Queue->maxTextureSize;
       if (maxSize > 0 && (layout.width > maxSize || layout.height > maxSize))
       {
-        return fail(std::to_string(p.numberOfElements) + " elements of " +
+        // The display falls back to the CPU result, from this update on.
+        const std::string message = std::to_string(p.numberOfElements) + " elements of " +
           std::to_string(shape.particleCount()) + " particles need a " +
           std::to_string(layout.width) + " x " + std::to_string(layout.height) +
-          " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " + std::to_string(maxSize) +
-          ". Use fewer elements, or set Engine to CPU.");
+          " GPU state texture, beyond this GPU's limit of " + std::to_string(maxSize) +
+          " texels; the CPU engine runs this trace instead. Use fewer elements to run it on "
+          "the GPU.";
+        vtkErrorMacro(<< message);
+        I.Queue->clear();
+        I.Queue->cursor.valid = false;
+        I.Queue->failure = message;
+        I.Queue = nullptr;
+        I.Active = &I.Cpu;
       }
+    }
+    if (I.Queue)
+    {
       I.Queue->clear();
       I.Queue->configure(shape, p);
       I.Queue->setField(field);

@@ -21,8 +21,10 @@
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
 #include <string>
 
 struct vtkBoundParticleRepresentation::vtkInternals
@@ -37,6 +39,8 @@ struct vtkBoundParticleRepresentation::vtkInternals
   bool Gpu = false; // the cached input is a GPU work order
   std::string ColorArray;
   bool GpuFailed = false;
+  vtkMTimeType FailurePipelineTime = 0;
+  int TextureSizeLimit = 0;
 };
 
 vtkStandardNewMacro(vtkBoundParticleRepresentation);
@@ -73,8 +77,33 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
     return 0;
   }
   vtkInternals& I = *this->Internals;
-  // After a GPU failure, ask for the CPU result.
-  I.GpuFailed = I.GpuFailed || !I.Queue->failure.empty();
+  // After a GPU failure ask for the CPU result, until the pipeline changes.
+  vtkMTimeType pipelineTime = 0;
+  if (auto* executive = vtkStreamingDemandDrivenPipeline::SafeDownCast(
+        this->GetInputAlgorithm() ? this->GetInputAlgorithm()->GetExecutive() : nullptr))
+  {
+    pipelineTime = executive->GetPipelineMTime();
+  }
+  if (!I.Queue->failure.empty())
+  {
+    if (!I.GpuFailed)
+    {
+      I.GpuFailed = true;
+      I.FailurePipelineTime = pipelineTime;
+    }
+    else if (pipelineTime != I.FailurePipelineTime)
+    {
+      // The user changed something: try the GPU again.
+      I.GpuFailed = false;
+      I.Queue->failure.clear();
+    }
+  }
+  if (I.TextureSizeLimit > 0)
+  {
+    I.Queue->maxTextureSize = I.Queue->maxTextureSize > 0
+      ? std::min(I.Queue->maxTextureSize, I.TextureSizeLimit)
+      : I.TextureSizeLimit;
+  }
   for (int k = 0; k < inputVector[0]->GetNumberOfInformationObjects(); ++k)
   {
     inputVector[0]->GetInformationObject(k)->Set(
@@ -159,6 +188,7 @@ bool vtkBoundParticleRepresentation::GetDrawsGpuState() const
 
 void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
 {
+  this->Internals->TextureSizeLimit = texels;
   this->Internals->GpuMapper->SetTextureSizeLimit(texels);
 }
 

@@ -29,6 +29,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -162,6 +163,7 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
 
   int ScalarMode = SOLID;
   int Component = -1;
+  int SizeLimit = 0; // a cap below GL_MAX_TEXTURE_SIZE, for tests
 
   vtkNew<vtkTextureObject> ColorTable;
   vtkMTimeType ColorTableTime = 0;
@@ -241,7 +243,8 @@ const std::string& vtkOpenGLBoundParticleMapper::GetLastError() const
 
 void vtkOpenGLBoundParticleMapper::SetTextureSizeLimit(int texels)
 {
-  this->Internals->Engine.setTextureSizeLimit(texels);
+  this->Internals->SizeLimit = texels;
+  this->Internals->Engine.setTextureSizeLimit(texels > 0 ? texels : (1 << 30));
 }
 
 double* vtkOpenGLBoundParticleMapper::GetBounds()
@@ -273,7 +276,7 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   window->MakeCurrent();
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  I.Queue->maxTextureSize = maxSize;
+  I.Queue->maxTextureSize = I.SizeLimit > 0 ? std::min<int>(maxSize, I.SizeLimit) : maxSize;
 
   std::vector<bp::EngineCall> calls = I.Queue->take();
   if (!calls.empty())

@@ -56,3 +56,41 @@ class CapturedMessages:
 
     def mentions(self, part):
         return any(part in m for m in self.messages)
+
+
+def image_difference(path_a, path_b):
+    """(mean absolute difference per channel, fraction of pixels that differ by
+    more than 32 in some channel) of two images of one size, or None when the
+    sizes differ."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy
+
+    def pixels(path):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        image = reader.GetOutput()
+        dims = image.GetDimensions()
+        values = vtk_to_numpy(image.GetPointData().GetScalars())
+        return dims, values[:, :3].astype(numpy.int32)
+
+    dims_a, a = pixels(path_a)
+    dims_b, b = pixels(path_b)
+    if dims_a != dims_b:
+        return None
+    d = numpy.abs(a - b)
+    return float(d.mean()), float((d.max(axis=1) > 32).mean())
+
+
+def covered_fraction(path):
+    """Fraction of pixels that are not the background (the corner pixel)."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy
+
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    values = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    return float((numpy.abs(values - values[0]).max(axis=1) > 8).mean())

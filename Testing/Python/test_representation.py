@@ -1,0 +1,157 @@
+"""The Bound Particles representation: the GPU engine in the render window.
+
+Every image of the GPU path is compared twice: with the same trace run on the
+CPU engine and drawn by ParaView's Surface representation (the two must agree:
+same lights, same colours, positions within rounding), and with a baseline
+image in Testing/Data/Baseline. --update-baselines writes the baselines
+instead (look at them before committing them).
+"""
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+import paraview.simple  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+
+args = bptest.arguments("--baselines", "--output", "--update-baselines")
+LoadPlugin(args.plugin, ns=globals())
+paraview.simple._DisableFirstRenderCameraReset()
+os.makedirs(args.output, exist_ok=True)
+
+# Against the CPU path: the same trace must look the same.
+CPU_MEAN, CPU_PIXELS = 0.5, 0.002
+# Against the baselines: the same Mesa must draw the same picture.
+BASE_MEAN, BASE_PIXELS = 1.0, 0.005
+
+flow = AnalyticFlow(Flow="Shear Layer", Resolution=[32, 32, 32])
+flow.UpdatePipeline()
+
+
+def render(source, representation, color, scalar_range, name, time=1.0, size=(320, 240),
+           **display):
+    view = CreateRenderView(ViewSize=list(size))
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.1, 0.1, 0.15]
+    view.CameraPosition = [2.2, 1.6, 3.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30
+    shown = Show(source, view)
+    shown.SetRepresentationType(representation)
+    for key, value in display.items():
+        setattr(shown, key, value)
+    if color:
+        ColorBy(shown, ("POINTS", color))
+        lut = GetColorTransferFunction(color)
+        lut.ApplyPreset("Cool to Warm", True)
+        lut.RescaleTransferFunction(*scalar_range)
+    else:
+        ColorBy(shown, ("POINTS", None))
+        shown.DiffuseColor = [0.9, 0.85, 0.7]
+    shown.Specular = 0.3
+    view.ViewTime = time
+    Render(view)
+    path = os.path.join(args.output, name + ".png")
+    SaveScreenshot(path, view)
+    Delete(view)
+    del view
+    return path
+
+
+def tracer(shape, engine, count):
+    return BoundParticleTracer(Input=flow, ElementShape=shape, NumberOfElements=count,
+                               ElementSize=0.3, Seed=3, Engine=engine)
+
+
+# The representation is offered for the tracer's output.
+probe_view = CreateRenderView()
+probe = Show(tracer("Strip16", "GPU", 10), probe_view)
+bptest.check("Bound Particles" in probe.Representation.Available,
+             "representation types %s" % list(probe.Representation.Available))
+Delete(probe_view)
+del probe_view
+
+COLORS = [(None, None), ("Force", (0.0, 0.004)), ("Lifetime", (5.0, 10.0))]
+for shape in ["Strip16", "Cross", "Paddlewheel", "Fish"]:
+    cpu = tracer(shape, "CPU", 40)
+    gpu = tracer(shape, "GPU", 40)
+    for color, scalar_range in COLORS:
+        name = "%s_%s" % (shape, color or "Solid")
+        cpu_image = render(cpu, "Surface", color, scalar_range, name + "_cpu")
+        gpu_image = render(gpu, "Bound Particles", color, scalar_range, name)
+        covered = bptest.covered_fraction(gpu_image)
+        bptest.check(covered > 0.005, "%s: the GPU image shows elements (%.4f)" % (name, covered))
+        mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+        bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+                     "%s: GPU vs CPU differ: mean %.3f, pixels %.4f" % (name, mean, pixels))
+        baseline = os.path.join(args.baselines, name + ".png")
+        if args.update_baselines:
+            shutil.copyfile(gpu_image, baseline)
+            continue
+        if not os.path.exists(baseline):
+            bptest.check(False, "no baseline %s (the image is %s)" % (baseline, gpu_image))
+            continue
+        mean, pixels = bptest.image_difference(baseline, gpu_image)
+        bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
+                     "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
+    Delete(cpu)
+    Delete(gpu)
+
+# Counts that are no power of two: 1000 fish of 23 particles, stepped frame by
+# frame on the GPU, against a CPU replay to the same time.
+cpu = tracer("Fish", "CPU", 1000)
+gpu = tracer("Fish", "GPU", 1000)
+view = CreateRenderView(ViewSize=[320, 240])
+shown = Show(gpu, view)
+shown.SetRepresentationType("Bound Particles")
+for t in [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]:
+    view.ViewTime = t
+    Render(view)
+Delete(view)
+del view
+cpu_image = render(cpu, "Surface", "Speed", (0.0, 1.3), "Fish1000_cpu")
+gpu_image = render(gpu, "Bound Particles", "Speed", (0.0, 1.3), "Fish1000")
+mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+bptest.check(bptest.covered_fraction(gpu_image) > 0.02, "1000 fish are drawn")
+bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+             "1000 fish: GPU vs CPU differ: mean %.3f, pixels %.4f" % (mean, pixels))
+
+# No stale frames: while the GPU display shows the trace, every other consumer
+# of the same output gets the CPU result.
+view = CreateRenderView(ViewSize=[320, 240])
+shown = Show(gpu, view)
+shown.SetRepresentationType("Bound Particles")
+view.ViewTime = 0.5
+Render(view)
+gpu.UpdatePipeline(0.5)
+fetched = servermanager.Fetch(gpu)
+bptest.check(fetched.GetNumberOfPoints() == 1000 * 23,
+             "another consumer gets the CPU result: %d points" % fetched.GetNumberOfPoints())
+written = os.path.join(args.output, "saved.vtp")
+SaveData(written, proxy=gpu)
+reader = XMLPolyDataReader(FileName=[written])
+reader.UpdatePipeline()
+bptest.check(reader.GetDataInformation().GetNumberOfPoints() == 1000 * 23,
+             "Save Data writes the CPU result")
+Delete(reader)
+Render(view)
+Delete(view)
+del view
+
+# A GPU that cannot hold the system: a clear error, and the display draws the
+# CPU result in the same frame.
+cpu_image = render(cpu, "Surface", None, None, "Fallback_cpu")
+with bptest.CapturedMessages() as messages:
+    fallback_image = render(gpu, "Bound Particles", None, None, "Fallback",
+                            GpuTextureSizeLimit=64)
+bptest.check(messages.mentions("the CPU engine runs this trace instead"),
+             "the fallback says so: %s" % messages.messages)
+mean, pixels = bptest.image_difference(cpu_image, fallback_image)
+bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+             "the fallback draws the CPU result: mean %.3f, pixels %.4f" % (mean, pixels))
+
+bptest.finish()
