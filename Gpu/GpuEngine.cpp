@@ -723,6 +723,28 @@ void GpuEngine::updateFieldSamples(double t)
   S.run({ S.Samples }, S.PW, S.PH);
 }
 
+void GpuEngine::readFieldSamples(std::vector<float>* velocity, std::vector<float>* vorticity) const
+{
+  const Internals& S = *this->I;
+  std::vector<float> texels;
+  S.readTexture(S.Samples, S.PW, S.PH, texels);
+  const std::size_t count = std::size_t(S.E) * S.n;
+  if (velocity)
+    velocity->resize(3 * count);
+  if (vorticity)
+    vorticity->resize(count);
+  for (int e = 0; e < S.E; ++e)
+    for (int i = 0; i < S.n; ++i)
+    {
+      const float* t = &texels[4 * S.particleTexel(e, i)];
+      const std::size_t id = std::size_t(e) * S.n + i;
+      if (velocity)
+        std::copy(t, t + 3, velocity->begin() + 3 * id);
+      if (vorticity)
+        (*vorticity)[id] = t[3];
+    }
+}
+
 GpuEngine::DrawInputs GpuEngine::drawInputs() const
 {
   const Internals& S = *this->I;

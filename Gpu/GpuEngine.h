@@ -71,6 +71,9 @@ public:
   /// as bp::sampleAtPositions) into the samples texture, for colouring.
   void updateFieldSamples(double t);
 
+  /// The samples of updateFieldSamples() in element-major order.
+  void readFieldSamples(std::vector<float>* velocity, std::vector<float>* vorticity) const;
+
   /// What a renderer needs to draw the state with vertex texture fetch: the
   /// GL names of the current textures and the layout (bp_common.glsl).
   struct DrawInputs

@@ -205,3 +205,104 @@ TEST(GpuEngine, SaysWhatItCannotRun)
   EXPECT_LE(std::max(gpu.particleTextureWidth(), gpu.particleTextureHeight()), 600);
   gpu.release();
 }
+
+namespace
+{
+struct UnsteadySystem
+{
+  bp::GridGeometry g = grid(41, 21, 6, { 0, 2, 0, 1, 0, 0.25 });
+  bp::VectorField field = bp::VectorField(
+    g, slice(bp::AnalyticFlow::DoubleGyre, g, 0.0), slice(bp::AnalyticFlow::DoubleGyre, g, 2.0));
+  bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip16);
+  bp::Parameters p;
+  UnsteadySystem()
+  {
+    p.numberOfElements = 333;
+    p.elementSize = 0.1f;
+    p.emitterMin = { 0.0f, 0.0f, 0.0f };
+    p.emitterMax = { 2.0f, 1.0f, 0.25f };
+    p.lifetimeMin = 0.3f;
+    p.lifetimeMax = 1.2f;
+    p.seed = 4;
+  }
+};
+} // namespace
+
+TEST(GpuEngine, RestoreTakesBackAShortStep)
+{
+  // What the display does between two frames that fall between step
+  // boundaries: show a short step on a saved copy, then go on from the copy.
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  bp::Engine cpu;
+  ASSERT_EQ(cpu.configure(s.shape, s.p), "");
+  cpu.initialize(bp::serialRunner());
+  bp::GpuEngine gpu;
+  ASSERT_EQ(gpu.configure(s.shape, s.p), "");
+  ASSERT_EQ(gpu.setField(s.field), "");
+  gpu.initialize();
+  const double dt = 0.01;
+  for (int k = 0; k < 60; ++k)
+  {
+    cpu.step(s.field, k * dt, dt, bp::serialRunner());
+    gpu.step(k * dt, dt);
+    if (k % 20 == 10)
+    {
+      gpu.saveState();
+      gpu.step((k + 1) * dt, 0.3 * dt);
+      gpu.restoreState();
+    }
+  }
+  std::vector<float> positions, lifetimes;
+  gpu.read(&positions, nullptr, nullptr);
+  gpu.readElements(&lifetimes, nullptr, nullptr);
+  gpu.release();
+  double worst = 0.0;
+  for (std::size_t k = 0; k < positions.size(); ++k)
+    worst = std::max(worst, double(std::abs(positions[k] - cpu.positions()[k])));
+  EXPECT_LT(worst, 1e-4 * s.g.diagonal());
+  for (std::size_t e = 0; e < lifetimes.size(); ++e)
+    EXPECT_NEAR(lifetimes[e], cpu.lifetimes()[e], 1e-5);
+}
+
+TEST(GpuEngine, FieldSamplesMatchTheCpuOutputArrays)
+{
+  // Speed, Velocity and Vorticity colouring on the GPU use these samples.
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  bp::Engine cpu;
+  ASSERT_EQ(cpu.configure(s.shape, s.p), "");
+  cpu.initialize(bp::serialRunner());
+  bp::GpuEngine gpu;
+  ASSERT_EQ(gpu.configure(s.shape, s.p), "");
+  ASSERT_EQ(gpu.setField(s.field), "");
+  gpu.initialize();
+  for (int k = 0; k < 20; ++k)
+  {
+    cpu.step(s.field, k * 0.01, 0.01, bp::serialRunner());
+    gpu.step(k * 0.01, 0.01);
+  }
+  const double t = 0.2;
+  std::vector<float> positions;
+  gpu.read(&positions, nullptr, nullptr);
+  gpu.updateFieldSamples(t);
+  std::vector<float> velocity, vorticity;
+  gpu.readFieldSamples(&velocity, &vorticity);
+  gpu.release();
+  // The CPU arrays at the GPU's own positions: only the sampling is compared.
+  const std::size_t count = positions.size() / 3;
+  std::vector<float> cpuVelocity(3 * count), cpuVorticity(count);
+  bp::sampleAtPositions(s.field, t, positions.data(), count, cpuVelocity.data(),
+    cpuVorticity.data(), bp::serialRunner());
+  double worstVelocity = 0.0, worstVorticity = 0.0, largestVorticity = 0.0;
+  for (std::size_t k = 0; k < 3 * count; ++k)
+    worstVelocity = std::max(worstVelocity, double(std::abs(velocity[k] - cpuVelocity[k])));
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    worstVorticity = std::max(worstVorticity, double(std::abs(vorticity[k] - cpuVorticity[k])));
+    largestVorticity = std::max(largestVorticity, double(cpuVorticity[k]));
+  }
+  EXPECT_GT(largestVorticity, 0.1);
+  EXPECT_LT(worstVelocity, 1e-5);
+  EXPECT_LT(worstVorticity, 1e-4 * largestVorticity);
+}
