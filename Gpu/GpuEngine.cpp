@@ -72,6 +72,7 @@ struct GpuEngine::Internals
   int PW = 0, PH = 0;   // particle texture
   int SpringsWidth = 2, TrianglesWidth = 1;
   int SizeLimit = 1 << 30;
+  bool GeneratedSprings = false;
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
 
   /// The advect pass: positions before the step (placed anew where reset) and
@@ -133,7 +134,7 @@ struct GpuEngine::Internals
   const VectorField* Field = nullptr;
   std::unique_ptr<VectorField> FieldCopy;
 
-  std::string program(const char* fragment, GLuint& out)
+  std::string program(const std::string& fragment, GLuint& out)
   {
     const std::string header = "#version 330 core\n";
     GLuint vs = 0, fs = 0;
@@ -350,8 +351,20 @@ int GpuEngine::particleTextureHeight() const
 void GpuEngine::release()
 {
   const int limit = this->I->SizeLimit;
+  const bool generated = this->I->GeneratedSprings;
   this->I->deleteAll();
   this->I->SizeLimit = limit;
+  this->I->GeneratedSprings = generated;
+}
+
+void GpuEngine::setGeneratedSprings(bool generated)
+{
+  this->I->GeneratedSprings = generated;
+}
+
+bool GpuEngine::generatedSprings() const
+{
+  return this->I->GeneratedSprings;
 }
 
 void GpuEngine::setTextureSizeLimit(int texels)
@@ -384,9 +397,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     err << p.numberOfElements << " elements of " << S.n << " particles need a " << layout.width
         << " x " << layout.height << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of "
         << maxSize;
-    const int limit = S.SizeLimit;
-    S = Internals();
-    S.SizeLimit = limit;
+    this->release();
     return err.str();
   }
   S.W = int(layout.elementGrid[0]);
@@ -476,6 +487,43 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     }
     row1[1] = float(triangles.size() / 4) - row1[0];
   }
+  // The Jacobi pass with the springs as code (thesis §3.5) instead of a
+  // buffer: same corrections in the same order, so the same bits.
+  if (S.GeneratedSprings)
+  {
+    std::ostringstream code;
+    code << "vec3 bpSpringSum(int e, int i, vec4 info)\n{\n  vec3 acc = vec3(0.0);\n"
+         << "  switch (i)\n  {\n";
+    code.precision(9);
+    code << std::scientific;
+    for (int i = 0; i < S.n; ++i)
+    {
+      const int first = int(info[4 * i]), count = int(info[4 * i + 1]);
+      if (count == 0)
+        continue;
+      code << "    case " << i << ":\n";
+      for (int k = first; k < first + count; ++k)
+      {
+        const float* e = &springs[8 * std::size_t(k)];
+        code << "      acc += bpSpringCorrection(e, " << int(e[0]) << ", " << int(e[1]) << ", "
+             << e[2] << ", " << e[4] << ", " << e[5] << ");\n";
+      }
+      code << "      break;\n";
+    }
+    code << "  }\n  return acc;\n}\n";
+    std::string fragment = std::string("#define BP_GENERATED_SPRINGS\n") + bpShaderRestoreFrag;
+    const std::string tag = "//BP::GeneratedSprings";
+    fragment.replace(fragment.find(tag), tag.size(), code.str());
+    glDeleteProgram(S.Restore);
+    S.Restore = 0;
+    const std::string programError = S.program(fragment, S.Restore);
+    if (!programError.empty())
+    {
+      this->release();
+      return programError;
+    }
+  }
+
   // Gauss-Seidel: per (particle, colour) the particle's spring of that colour.
   const std::vector<int> colour = colourSprings(std::size_t(S.n), shape.springs);
   S.Colours = colour.empty() ? 0 : *std::max_element(colour.begin(), colour.end()) + 1;

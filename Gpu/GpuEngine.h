@@ -93,6 +93,13 @@ public:
   /// Whether configure() succeeded and release() was not called since.
   bool isConfigured() const;
 
+  /// The Jacobi restoration pass with the template's springs written into
+  /// the program as code (thesis §3.5), instead of read from a buffer; takes
+  /// effect at the next configure(). Both give the same bits; the benchmark
+  /// (bench/) measures which is faster.
+  void setGeneratedSprings(bool generated);
+  bool generatedSprings() const;
+
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);
 

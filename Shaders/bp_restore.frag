@@ -15,6 +15,41 @@ vec4 entry(int k)
   return texelFetch(bpSprings, ivec2(k % bpSpringsWidth, k / bpSpringsWidth), 0);
 }
 
+// The correction of one spring on particle (e, i), `share` its signed share.
+vec3 bpSpringCorrection(int e, int a, int b, float share, float rest, float stiffness)
+{
+  vec3 pa = texelFetch(bpPositions, bpParticleTexel(e, a), 0).xyz;
+  vec3 pb = texelFetch(bpPositions, bpParticleTexel(e, b), 0).xyz;
+  vec3 d = pa - pb;
+  float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (len > 0.0)
+  {
+    float f = stiffness * (rest - len) / len;
+    return share * (f * d);
+  }
+  return vec3(0.0);
+}
+
+#ifdef BP_GENERATED_SPRINGS
+// The template's springs as code, one case per particle index (thesis §3.5):
+// written by GpuEngine from the template at configure time.
+//BP::GeneratedSprings
+#else
+// The template's springs read from the spring buffer.
+vec3 bpSpringSum(int e, int i, vec4 info)
+{
+  int first = int(info.x), count = int(info.y);
+  vec3 acc = vec3(0.0);
+  for (int k = first; k < first + count; ++k)
+  {
+    vec4 ends = entry(2 * k);
+    vec4 spring = entry(2 * k + 1);
+    acc += bpSpringCorrection(e, int(ends.x), int(ends.y), ends.z, spring.x, spring.y);
+  }
+  return acc;
+}
+#endif
+
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -26,21 +61,6 @@ void main()
   }
   vec3 p = texelFetch(bpPositions, texel, 0).xyz;
   vec4 info = texelFetch(bpParticleInfo, ivec2(i, 0), 0);
-  int first = int(info.x), count = int(info.y);
-  vec3 acc = vec3(0.0);
-  for (int k = first; k < first + count; ++k)
-  {
-    vec4 ends = entry(2 * k);
-    vec4 spring = entry(2 * k + 1);
-    vec3 pa = texelFetch(bpPositions, bpParticleTexel(e, int(ends.x)), 0).xyz;
-    vec3 pb = texelFetch(bpPositions, bpParticleTexel(e, int(ends.y)), 0).xyz;
-    vec3 d = pa - pb;
-    float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    if (len > 0.0)
-    {
-      float f = spring.y * (spring.x - len) / len;
-      acc += ends.z * (f * d);
-    }
-  }
+  vec3 acc = bpSpringSum(e, i, info);
   outPosition = vec4(bpAveraged ? p + acc * info.z : p + bpRelaxation * acc, 0.0);
 }
