@@ -108,6 +108,13 @@ public:
   /// The renderer's last failure, if any (empty when the engine ran).
   std::string failure;
 
+  /// Estimated value ranges of the CPU output's arrays, for colour maps.
+  struct Range
+  {
+    std::string name;
+    double low = 0.0, high = 1.0;
+  };
+
 private:
   int Id = 0;
   std::vector<EngineCall> Pending;

@@ -133,6 +133,51 @@ std::shared_ptr<bp::WorkQueue> vtkBoundParticleTracer::FindWorkQueue(int id)
   return it == queueRegistry().end() ? nullptr : it->second.lock();
 }
 
+namespace
+{
+/**
+ * The ranges the CPU output's arrays are expected to span, for the GPU
+ * output, which has no particles: exact where the parameters fix them
+ * (Lifetime, Layer, Radius), from the field otherwise (Speed and Velocity from
+ * its largest speed; Vorticity from central differences on a lattice of at
+ * most 32^3 of its points); Force is bounded by the largest relative motion
+ * of two particles in a step.
+ */
+std::vector<bp::WorkQueue::Range> expectedRanges(const bp::VectorField& field,
+  const bp::Parameters& p, double dt, int axis, const std::array<double, 3>& offset)
+{
+  const double speed = field.maxSpeed();
+  const bp::GridGeometry& g = field.grid();
+  float vorticity = 0.0f;
+  int stride[3];
+  for (int a = 0; a < 3; ++a)
+    stride[a] = std::max(1, g.dims[a] / 32);
+  for (int k = 0; k < g.dims[2]; k += stride[2])
+    for (int j = 0; j < g.dims[1]; j += stride[1])
+      for (int i = 0; i < g.dims[0]; i += stride[0])
+      {
+        const float q[3] = { float(g.origin[0] + i * g.spacing[0]),
+          float(g.origin[1] + j * g.spacing[1]), float(g.origin[2] + k * g.spacing[2]) };
+        vorticity = std::max(vorticity, field.vorticityMagnitude(q, field.firstSlice().time));
+      }
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto b = g.bounds();
+  const double cu = 0.5 * (b[2 * u] + b[2 * u + 1]), cv = 0.5 * (b[2 * v] + b[2 * v + 1]);
+  double radius = 0.0;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    const double x = (corner & 1) ? p.emitterMax[u] : p.emitterMin[u];
+    const double y = (corner & 2) ? p.emitterMax[v] : p.emitterMin[v];
+    radius = std::max(radius, std::hypot(x - cu, y - cv));
+  }
+  return { { "Velocity", -speed, speed }, { "Speed", 0.0, speed },
+    { "Vorticity", 0.0, double(vorticity) }, { "Force", 0.0, dt * speed },
+    { "Lifetime", 0.0, double(p.lifetimeMax) },
+    { "Layer", p.emitterMin[axis] + offset[axis], p.emitterMax[axis] + offset[axis] },
+    { "Radius", 0.0, radius }, { "Normals", -1.0, 1.0 } };
+}
+} // namespace
+
 struct vtkBoundParticleTracer::vtkInternals
 {
   using Track = bp::WorkQueue::Cursor;
@@ -147,6 +192,9 @@ struct vtkBoundParticleTracer::vtkInternals
   // This update's engine: the CPU one, or a GPU work queue.
   std::shared_ptr<bp::WorkQueue> Queue;
   Track* Active = &Cpu;
+  // For the GPU output's summary points.
+  std::vector<bp::WorkQueue::Range> ExpectedRanges;
+  int TemplateParticles = 1;
   bool ResetPending = false; // this update replays from the start
   double Target = 0.0;
   double StartTime = 0.0;
@@ -894,6 +942,8 @@ int vtkBoundParticleTracer::RequestData(
     }
     if (I.Queue)
     {
+      I.TemplateParticles = int(shape.particleCount());
+      I.ExpectedRanges = expectedRanges(field, p, I.ResolvedDt, this->ColoringAxis, I.Offset);
       I.Queue->clear();
       I.Queue->configure(shape, p);
       I.Queue->setField(field);
@@ -1139,22 +1189,40 @@ void vtkBoundParticleTracer::FillGpuOutput(vtkPolyData* output)
     0.5 * (bounds[2 * v] + bounds[2 * v + 1]) };
   ++d.serial;
 
-  // No particles: the arrays are named, so displays offer them for colouring.
+  // No particles: two points spanning the field (its bounds, for the camera
+  // and the axes grid) carry every array of the CPU output with two values,
+  // the range it is expected to span, so displays offer the arrays for
+  // colouring and colour maps rescale to sensible ranges.
   vtkNew<vtkPoints> points;
+  points->InsertNextPoint(d.bounds[0], d.bounds[2], d.bounds[4]);
+  points->InsertNextPoint(d.bounds[1], d.bounds[3], d.bounds[5]);
   output->SetPoints(points);
   vtkPointData* pd = output->GetPointData();
-  for (const char* name : { "Speed", "Force", "Lifetime", "Vorticity", "Layer", "Radius" })
+  for (const bp::WorkQueue::Range& r : I.ExpectedRanges)
   {
-    pd->AddArray(floatArray(name, 1, 0));
+    auto a = floatArray(r.name.c_str(), r.name == "Velocity" || r.name == "Normals" ? 3 : 1, 2);
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      a->SetTypedComponent(0, c, float(r.low));
+      a->SetTypedComponent(1, c, float(r.high));
+    }
+    if (r.name == "Velocity")
+      pd->SetVectors(a);
+    else if (r.name == "Normals")
+      pd->SetNormals(a);
+    else
+      pd->AddArray(a);
   }
-  pd->SetVectors(floatArray("Velocity", 3, 0));
-  pd->SetNormals(floatArray("Normals", 3, 0));
-  vtkNew<vtkIdTypeArray> elementId;
-  elementId->SetName("ElementId");
-  pd->AddArray(elementId);
-  vtkNew<vtkIntArray> particleIndex;
-  particleIndex->SetName("ParticleIndex");
-  pd->AddArray(particleIndex);
+  for (const char* name : { "ElementId", "ParticleIndex" })
+  {
+    const double high = std::string(name) == "ElementId" ? double(this->NumberOfElements - 1)
+                                                         : double(I.TemplateParticles - 1);
+    vtkNew<vtkIntArray> ids;
+    ids->SetName(name);
+    ids->InsertNextValue(0);
+    ids->InsertNextValue(int(high));
+    pd->AddArray(ids);
+  }
 
   vtkNew<vtkIntArray> queue;
   queue->SetName("BoundParticlesWorkQueue");

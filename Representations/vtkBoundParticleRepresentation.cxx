@@ -139,7 +139,9 @@ int vtkBoundParticleRepresentation::RequestData(
         input->GetBounds(I.Bounds);
       }
     }
-    // The request is answered: other consumers of this output get the CPU result.
+    // The request is answered: every other consumer of this output (Surface,
+    // Save Data, filters, and ParaView's own axes grid of this display) gets
+    // the CPU result.
     inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
@@ -157,12 +159,6 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   {
     vtkPVRenderView::SetPiece(inInfo, this, I.Cache);
     vtkPVRenderView::SetGeometryBounds(inInfo, this, I.Bounds);
-    // The GPU state lives where the data is: render there.
-    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
-  {
-    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
