@@ -101,15 +101,16 @@ struct GpuEngine::Internals
   {
     this->use(this->Reset);
     this->bind(this->Reset, "bpElementState", this->ElementState[this->Cur]);
-    this->bind(this->Reset, "bpCenters", this->Centers[this->Cur]);
+    this->bind(this->Reset, "bpCenters", this->Centers[this->C]);
     this->bind(this->Reset, "bpOrientations", this->Orientations[this->O]);
     setInt(this->Reset, "bpInitialize", initialize ? 1 : 0);
     glUniform4fv(
       glGetUniformLocation(this->Reset, "bpFrameQuaternion"), 1, this->FrameQuaternion.data());
-    this->run({ this->ElementState[1 - this->Cur], this->Centers[1 - this->Cur],
+    this->run({ this->ElementState[1 - this->Cur], this->Centers[1 - this->C],
                 this->Orientations[1 - this->O] },
       this->W, this->H);
     this->Cur = 1 - this->Cur;
+    this->C = 1 - this->C;
     this->O = 1 - this->O;
   }
 
@@ -121,6 +122,7 @@ struct GpuEngine::Internals
   GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
          Normals = 0;
   GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
+  int C = 0; // current centres: only the reset pass writes them, so they flip apart
   int Cur = 0; // current element textures
   GLuint Orientations[2] = { 0, 0 }, MatchCenters = 0;
   int O = 0; // current orientation texture
@@ -738,7 +740,7 @@ void GpuEngine::saveState()
   }
   S.copyTexture(S.State[S.S], S.Saved[0], S.PW, S.PH);
   S.copyTexture(S.ElementState[S.Cur], S.Saved[1], S.W, S.H);
-  S.copyTexture(S.Centers[S.Cur], S.Saved[2], S.W, S.H);
+  S.copyTexture(S.Centers[S.C], S.Saved[2], S.W, S.H);
   S.copyTexture(S.Orientations[S.O], S.Saved[3], S.W, S.H);
 }
 
@@ -751,7 +753,7 @@ void GpuEngine::restoreState()
   }
   S.copyTexture(S.Saved[0], S.State[S.S], S.PW, S.PH);
   S.copyTexture(S.Saved[1], S.ElementState[S.Cur], S.W, S.H);
-  S.copyTexture(S.Saved[2], S.Centers[S.Cur], S.W, S.H);
+  S.copyTexture(S.Saved[2], S.Centers[S.C], S.W, S.H);
   S.copyTexture(S.Saved[3], S.Orientations[S.O], S.W, S.H);
 }
 
@@ -801,7 +803,7 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   d.normals = S.NormalsTex;
   d.samples = S.Samples;
   d.elements = S.ElementState[S.Cur];
-  d.centers = S.Centers[S.Cur];
+  d.centers = S.Centers[S.C];
   d.elementGrid[0] = S.W;
   d.elementGrid[1] = S.H;
   d.blocksPerRow = S.BlocksPerRow;
@@ -880,7 +882,7 @@ void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* 
   }
   if (centers)
   {
-    S.readTexture(S.Centers[S.Cur], S.W, S.H, texels);
+    S.readTexture(S.Centers[S.C], S.W, S.H, texels);
     centers->resize(std::size_t(S.E) * 3);
     for (int e = 0; e < S.E; ++e)
       std::copy(&texels[4 * e], &texels[4 * e] + 3, centers->begin() + 3 * e);

@@ -71,6 +71,16 @@ def main():
     print("demo: wrote %s" % image)
     print("demo: wrote %s" % data)
 
+    # The same trace on the GPU engine: stepped and drawn in the render
+    # window by the Bound Particles representation.
+    lut.AutomaticRescaleRangeMode = "Never"
+    tracer.Engine = "GPU"
+    display.SetRepresentationType("Bound Particles")
+    Render(view)
+    gpu_image = os.path.join(args.output, "bound-particles-gpu.png")
+    SaveScreenshot(gpu_image, view, ImageResolution=[1280, 720])
+    print("demo: wrote %s (GPU engine)" % gpu_image)
+
     # Views must go before the interpreter exits, or pvpython may crash on exit.
     Delete(view)
     del view

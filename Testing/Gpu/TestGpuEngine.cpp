@@ -135,6 +135,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
     EXPECT_NEAR(lifetimes[e], cpu.lifetimes()[e], 1e-5) << "element " << e;
   }
   EXPECT_EQ(generationMismatches, 0);
+  // The generation's initial centres (Layer and Radius colouring).
+  double worstCenter = 0.0;
+  for (std::size_t k = 0; k < centers.size(); ++k)
+    worstCenter = std::max(worstCenter, double(std::abs(centers[k] - cpu.initialCenters()[k])));
+  EXPECT_LT(worstCenter, 1e-6 * g.diagonal()) << "initial centres differ by up to " << worstCenter;
   double worstOrientation = 0.0;
   for (std::size_t k = 0; k < orientations.size(); ++k)
     worstOrientation =

@@ -27,6 +27,14 @@ drawn = (abs(pixels - background).sum(axis=1) > 30).mean()
 bptest.check(0.05 < drawn < 0.9, "elements cover %.1f%% of the picture" % (100 * drawn))
 bptest.check(pixels.std(axis=0).max() > 20, "the picture has colour")
 
+# The same trace on the GPU engine looks the same.
+gpu_png = os.path.join(args.output, "bound-particles-gpu.png")
+bptest.check(os.path.exists(gpu_png), "the demo writes a GPU image")
+if os.path.exists(gpu_png):
+    difference = bptest.image_difference(png, gpu_png)
+    bptest.check(difference is not None and difference[0] < 2.0 and difference[1] < 0.01,
+                 "GPU and CPU demo images differ: %s" % (difference,))
+
 vtp = vtkXMLPolyDataReader()
 vtp.SetFileName(os.path.join(args.output, "bound-particles.vtp"))
 vtp.Update()

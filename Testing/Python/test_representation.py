@@ -101,6 +101,21 @@ for shape in ["Strip16", "Cross", "Paddlewheel", "Fish"]:
     Delete(cpu)
     Delete(gpu)
 
+# Every other array of the CPU output colours the GPU path the same way.
+cpu = tracer("Paddlewheel", "CPU", 40)
+gpu = tracer("Paddlewheel", "GPU", 40)
+for color, scalar_range in [("Speed", (0.0, 1.3)), ("Vorticity", (0.0, 4.0)),
+                            ("Layer", (-1.0, 1.0)), ("Radius", (0.0, 1.4)),
+                            ("ElementId", (0.0, 39.0)), ("ParticleIndex", (0.0, 16.0))]:
+    name = "Paddlewheel_%s" % color
+    cpu_image = render(cpu, "Surface", color, scalar_range, name + "_cpu")
+    gpu_image = render(gpu, "Bound Particles", color, scalar_range, name)
+    mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+    bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+                 "%s: GPU vs CPU differ: mean %.3f, pixels %.4f" % (name, mean, pixels))
+Delete(cpu)
+Delete(gpu)
+
 # Counts that are no power of two: 1000 fish of 23 particles, stepped frame by
 # frame on the GPU, against a CPU replay to the same time.
 cpu = tracer("Fish", "CPU", 1000)
