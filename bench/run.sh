@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds in Release and measures the engines side by side: prints the table,
 # writes it as CSV and plots it (PNG) into ${1:-bench-output}/, then times
-# ParaView's Particle Tracer against the Bound Particle Tracer on one job.
+# ParaView's Particle Tracer against the Bound Particle Tracer on one job, and
+# the frames per second of the Bound Particles display inside ParaView.
 # Options after the folder go to the benchmark (--quick, --no-gpu, --resolution N).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -13,5 +14,8 @@ mkdir -p "$out"
 /usr/bin/python3 "$root/bench/plot.py" "$out/engines.csv" "$out/engines.png"
 # ParaView's own Particle Tracer on the same job, side by side.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt"
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt, $out/paraview_fps.txt"
+# Frames per second of the Bound Particles display inside ParaView, both engines.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/paraview_fps.py" \
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/paraview_fps.txt"
+echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/paraview_fps.txt"
