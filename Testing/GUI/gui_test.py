@@ -21,9 +21,29 @@ def trace():
     Render()
     points = tracer.GetDataInformation().GetNumberOfPoints()
     times = len(tracer.TimestepValues)
-    if points == 50 * 12 and times == 101:
-        return "traced %d points, %d time values" % (points, times)
-    return "wrong result: %d points, %d time values" % (points, times)
+    if points != 50 * 12 or times != 101:
+        return "wrong result: %d points, %d time values" % (points, times)
+    # The GPU engine in the GUI's own render window (a Qt OpenGL widget).
+    if "Bound Particles" not in display.Representation.Available:
+        return "no Bound Particles representation: %s" % list(display.Representation.Available)
+    tracer.Engine = "GPU"
+    display.SetRepresentationType("Bound Particles")
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewTime = 2.0
+    Render()
+    image = os.environ["BOUNDPARTICLES_GUI_MARKER"] + ".png"
+    SaveScreenshot(image, view, ImageResolution=[300, 300])
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkPNGReader()
+    reader.SetFileName(image)
+    reader.Update()
+    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    drawn = (abs(pixels - pixels[0]).max(axis=1) > 8).mean()
+    if drawn < 0.001:
+        return "the GPU engine drew nothing in the GUI (%.4f of the pixels)" % drawn
+    return "traced %d points, %d time values; GPU display covers %.3f of the view" % (
+        points, times, drawn)
 
 
 marker = os.environ["BOUNDPARTICLES_GUI_MARKER"]
