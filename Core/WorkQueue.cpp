@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WorkQueue.h"
 
-
 namespace bp
 {
 void WorkQueue::configure(const ElementTemplate& shape, const Parameters& parameters)

@@ -53,11 +53,11 @@ struct EngineCall
 /// What a renderer needs to draw the state the queue leads to.
 struct DrawSettings
 {
-  double time = 0.0;                         ///< the simulation time shown
+  double time = 0.0;                          ///< the simulation time shown
   std::array<double, 3> offset = { 0, 0, 0 }; ///< world position of the grid-local origin
   std::array<double, 6> bounds = { 0, -1, 0, -1, 0, -1 }; ///< the field's world bounds
-  int coloringAxis = 2;                          ///< for Layer and Radius
-  std::array<double, 2> radialCenter = { 0, 0 }; ///< grid-local, the other two axes
+  int coloringAxis = 2;                                   ///< for Layer and Radius
+  std::array<double, 2> radialCenter = { 0, 0 };          ///< grid-local, the other two axes
   std::uint64_t serial = 0; ///< changes with every update of the filter
 };
 

@@ -272,8 +272,8 @@ struct vtkBoundParticleTracer::vtkInternals
   bool needsReplay(double target) const
   {
     const Track& t = *this->Active;
-    return t.producer != this->ProducerId || t.configuration != this->Configuration ||
-      !t.valid || target < t.committed - this->timeEpsilon();
+    return t.producer != this->ProducerId || t.configuration != this->Configuration || !t.valid ||
+      target < t.committed - this->timeEpsilon();
   }
 
   /// Chooses this update's engine: the GPU work queue the request names when
@@ -921,7 +921,8 @@ int vtkBoundParticleTracer::RequestData(
       {
         return fail(error + ".");
       }
-      const bp::ParticleLayout layout = bp::ParticleLayout::of(p.numberOfElements, shape.particleCount());
+      const bp::ParticleLayout layout =
+        bp::ParticleLayout::of(p.numberOfElements, shape.particleCount());
       const int maxSize = I.Queue->maxTextureSize;
       if (maxSize > 0 && (layout.width > maxSize || layout.height > maxSize))
       {
@@ -1001,8 +1002,7 @@ int vtkBoundParticleTracer::RequestData(
     {
       I.Queue->setField(field);
       committed = bp::advance(
-        *I.Schedule, committed, limit, [&](double t, double h) { I.Queue->step(t, h); },
-        keepGoing);
+        *I.Schedule, committed, limit, [&](double t, double h) { I.Queue->step(t, h); }, keepGoing);
     }
     else
     {

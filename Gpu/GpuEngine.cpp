@@ -122,7 +122,7 @@ struct GpuEngine::Internals
   GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
          Normals = 0;
   GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
-  int C = 0; // current centres: only the reset pass writes them, so they flip apart
+  int C = 0;   // current centres: only the reset pass writes them, so they flip apart
   int Cur = 0; // current element textures
   GLuint Orientations[2] = { 0, 0 }, MatchCenters = 0;
   int O = 0; // current orientation texture

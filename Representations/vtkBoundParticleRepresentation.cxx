@@ -200,8 +200,8 @@ void vtkBoundParticleRepresentation::UpdateColoring()
     lut && lut->GetVectorMode() == vtkScalarsToColors::COMPONENT ? lut->GetVectorComponent() : -1;
   if (!I.GpuMapper->SetColorArray(I.ColorArray.c_str(), component) && I.Gpu)
   {
-    vtkWarningMacro("The GPU engine cannot colour by '" << I.ColorArray
-                                                        << "'; drawing the solid colour.");
+    vtkWarningMacro(
+      "The GPU engine cannot colour by '" << I.ColorArray << "'; drawing the solid colour.");
   }
 }
 

@@ -378,8 +378,8 @@ void vtkOpenGLBoundParticleMapper::ReplaceShaderValues(
   // the attributes stay declared so VTK's buffers still bind.
   vtkShaderProgram::Substitute(vs, "vertexMC", "bpVertexMC", true);
   vtkShaderProgram::Substitute(vs, "normalMC", "bpNormalMC", true);
-  vtkShaderProgram::Substitute(vs, "in vec4 bpVertexMC;",
-    std::string("in vec4 vertexMC;\n") + bpShaderDrawVSDec, false);
+  vtkShaderProgram::Substitute(
+    vs, "in vec4 bpVertexMC;", std::string("in vec4 vertexMC;\n") + bpShaderDrawVSDec, false);
   vtkShaderProgram::Substitute(vs, "in vec3 bpNormalMC;", "in vec3 normalMC;", false);
   vtkShaderProgram::Substitute(
     vs, "void main()\n{", std::string("void main()\n{\n") + bpShaderDrawVSImpl, false);
