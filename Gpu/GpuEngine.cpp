@@ -285,6 +285,29 @@ struct GpuEngine::Internals
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
 
+  /// A particle texture in the CPU engine's element-major order: xyz into
+  /// `xyz` (3 per particle) and w into `w` (null to skip either).
+  void readParticles(GLuint texture, std::vector<float>* xyz, std::vector<float>* w) const
+  {
+    std::vector<float> texels;
+    this->readTexture(texture, this->PW, this->PH, texels);
+    const std::size_t count = std::size_t(this->E) * this->n;
+    if (xyz)
+      xyz->resize(3 * count);
+    if (w)
+      w->resize(count);
+    for (int e = 0; e < this->E; ++e)
+      for (int i = 0; i < this->n; ++i)
+      {
+        const float* t = &texels[4 * this->particleTexel(e, i)];
+        const std::size_t id = std::size_t(e) * this->n + i;
+        if (xyz)
+          std::copy(t, t + 3, xyz->begin() + 3 * id);
+        if (w)
+          (*w)[id] = t[3];
+      }
+  }
+
   std::size_t particleTexel(int e, int i) const
   {
     const int bx = i % this->BlocksPerRow, by = i / this->BlocksPerRow;
@@ -775,24 +798,7 @@ void GpuEngine::updateFieldSamples(double t)
 
 void GpuEngine::readFieldSamples(std::vector<float>* velocity, std::vector<float>* vorticity) const
 {
-  const Internals& S = *this->I;
-  std::vector<float> texels;
-  S.readTexture(S.Samples, S.PW, S.PH, texels);
-  const std::size_t count = std::size_t(S.E) * S.n;
-  if (velocity)
-    velocity->resize(3 * count);
-  if (vorticity)
-    vorticity->resize(count);
-  for (int e = 0; e < S.E; ++e)
-    for (int i = 0; i < S.n; ++i)
-    {
-      const float* t = &texels[4 * S.particleTexel(e, i)];
-      const std::size_t id = std::size_t(e) * S.n + i;
-      if (velocity)
-        std::copy(t, t + 3, velocity->begin() + 3 * id);
-      if (vorticity)
-        (*vorticity)[id] = t[3];
-    }
+  this->I->readParticles(this->I->Samples, velocity, vorticity);
 }
 
 GpuEngine::DrawInputs GpuEngine::drawInputs() const
@@ -821,35 +827,13 @@ void GpuEngine::read(
   std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const
 {
   const Internals& S = *this->I;
-  std::vector<float> texels;
   if (positions || forces)
   {
-    S.readTexture(S.State[S.S], S.PW, S.PH, texels);
-    if (positions)
-      positions->resize(std::size_t(S.E) * S.n * 3);
-    if (forces)
-      forces->resize(std::size_t(S.E) * S.n);
-    for (int e = 0; e < S.E; ++e)
-      for (int i = 0; i < S.n; ++i)
-      {
-        const float* t = &texels[4 * S.particleTexel(e, i)];
-        const std::size_t id = std::size_t(e) * S.n + i;
-        if (positions)
-          std::copy(t, t + 3, positions->begin() + 3 * id);
-        if (forces)
-          (*forces)[id] = t[3];
-      }
+    S.readParticles(S.State[S.S], positions, forces);
   }
   if (normals)
   {
-    S.readTexture(S.NormalsTex, S.PW, S.PH, texels);
-    normals->resize(std::size_t(S.E) * S.n * 3);
-    for (int e = 0; e < S.E; ++e)
-      for (int i = 0; i < S.n; ++i)
-      {
-        const float* t = &texels[4 * S.particleTexel(e, i)];
-        std::copy(t, t + 3, normals->begin() + 3 * (std::size_t(e) * S.n + i));
-      }
+    S.readParticles(S.NormalsTex, normals, nullptr);
   }
 }
 

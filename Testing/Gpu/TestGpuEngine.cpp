@@ -230,6 +230,16 @@ struct UnsteadySystem
     p.lifetimeMax = 1.2f;
     p.seed = 4;
   }
+
+  /// Both engines configured and initialised on this system.
+  void start(bp::Engine& cpu, bp::GpuEngine& gpu) const
+  {
+    ASSERT_EQ(cpu.configure(this->shape, this->p), "");
+    cpu.initialize(bp::serialRunner());
+    ASSERT_EQ(gpu.configure(this->shape, this->p), "");
+    ASSERT_EQ(gpu.setField(this->field), "");
+    gpu.initialize();
+  }
 };
 } // namespace
 
@@ -240,12 +250,8 @@ TEST(GpuEngine, RestoreTakesBackAShortStep)
   ASSERT_NE(context(), nullptr);
   UnsteadySystem s;
   bp::Engine cpu;
-  ASSERT_EQ(cpu.configure(s.shape, s.p), "");
-  cpu.initialize(bp::serialRunner());
   bp::GpuEngine gpu;
-  ASSERT_EQ(gpu.configure(s.shape, s.p), "");
-  ASSERT_EQ(gpu.setField(s.field), "");
-  gpu.initialize();
+  s.start(cpu, gpu);
   const double dt = 0.01;
   for (int k = 0; k < 60; ++k)
   {
@@ -276,12 +282,8 @@ TEST(GpuEngine, FieldSamplesMatchTheCpuOutputArrays)
   ASSERT_NE(context(), nullptr);
   UnsteadySystem s;
   bp::Engine cpu;
-  ASSERT_EQ(cpu.configure(s.shape, s.p), "");
-  cpu.initialize(bp::serialRunner());
   bp::GpuEngine gpu;
-  ASSERT_EQ(gpu.configure(s.shape, s.p), "");
-  ASSERT_EQ(gpu.setField(s.field), "");
-  gpu.initialize();
+  s.start(cpu, gpu);
   for (int k = 0; k < 20; ++k)
   {
     cpu.step(s.field, k * 0.01, 0.01, bp::serialRunner());
