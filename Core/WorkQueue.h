@@ -85,8 +85,6 @@ public:
 
   // Running (the renderer).
   std::vector<EngineCall> take();
-  bool empty() const { return this->Pending.empty(); }
-  std::size_t pendingCount() const { return this->Pending.size(); }
 
   /// Where the engine stands once every recorded call has run.
   struct Cursor
@@ -107,13 +105,6 @@ public:
 
   /// The renderer's last failure, if any (empty when the engine ran).
   std::string failure;
-
-  /// Estimated value ranges of the CPU output's arrays, for colour maps.
-  struct Range
-  {
-    std::string name;
-    double low = 0.0, high = 1.0;
-  };
 
 private:
   int Id = 0;

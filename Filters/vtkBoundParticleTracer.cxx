@@ -135,6 +135,13 @@ std::shared_ptr<bp::WorkQueue> vtkBoundParticleTracer::FindWorkQueue(int id)
 
 namespace
 {
+/// An array of the CPU output and the range it is expected to span.
+struct ExpectedRange
+{
+  std::string name;
+  double low = 0.0, high = 1.0;
+};
+
 /**
  * The ranges the CPU output's arrays are expected to span, for the GPU
  * output, which has no particles: exact where the parameters fix them
@@ -143,8 +150,8 @@ namespace
  * most 32^3 of its points); Force is bounded by the largest relative motion
  * of two particles in a step.
  */
-std::vector<bp::WorkQueue::Range> expectedRanges(const bp::VectorField& field,
-  const bp::Parameters& p, double dt, int axis, const std::array<double, 3>& offset)
+std::vector<ExpectedRange> expectedRanges(const bp::VectorField& field, const bp::Parameters& p,
+  double dt, int axis, const std::array<double, 3>& offset)
 {
   const double speed = field.maxSpeed();
   const bp::GridGeometry& g = field.grid();
@@ -193,7 +200,7 @@ struct vtkBoundParticleTracer::vtkInternals
   std::shared_ptr<bp::WorkQueue> Queue;
   Track* Active = &Cpu;
   // For the GPU output's summary points.
-  std::vector<bp::WorkQueue::Range> ExpectedRanges;
+  std::vector<ExpectedRange> ExpectedRanges;
   int TemplateParticles = 1;
   bool ResetPending = false; // this update replays from the start
   double Target = 0.0;
@@ -1198,7 +1205,7 @@ void vtkBoundParticleTracer::FillGpuOutput(vtkPolyData* output)
   points->InsertNextPoint(d.bounds[1], d.bounds[3], d.bounds[5]);
   output->SetPoints(points);
   vtkPointData* pd = output->GetPointData();
-  for (const bp::WorkQueue::Range& r : I.ExpectedRanges)
+  for (const ExpectedRange& r : I.ExpectedRanges)
   {
     auto a = floatArray(r.name.c_str(), r.name == "Velocity" || r.name == "Normals" ? 3 : 1, 2);
     for (int c = 0; c < a->GetNumberOfComponents(); ++c)

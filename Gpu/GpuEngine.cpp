@@ -818,11 +818,6 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   return d;
 }
 
-bool GpuEngine::isConfigured() const
-{
-  return this->I->Fbo != 0;
-}
-
 void GpuEngine::read(
   std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const
 {

@@ -90,9 +90,6 @@ public:
   };
   DrawInputs drawInputs() const;
 
-  /// Whether configure() succeeded and release() was not called since.
-  bool isConfigured() const;
-
   /// The Jacobi restoration pass with the template's springs written into
   /// the program as code (thesis §3.5), instead of read from a buffer; takes
   /// effect at the next configure(). Both give the same bits; the benchmark

@@ -177,11 +177,6 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   return 1;
 }
 
-bool vtkBoundParticleRepresentation::GetDrawsGpuState() const
-{
-  return this->Internals->Gpu && this->Internals->GpuMapper->GetLastError().empty();
-}
-
 void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
 {
   this->Internals->TextureSizeLimit = texels;

@@ -75,9 +75,6 @@ public:
   void SetInterpolateScalarsBeforeMapping(int value);
   ///@}
 
-  /// Whether the last render drew the GPU engine's state (else the CPU output).
-  bool GetDrawsGpuState() const;
-
   /// For tests: caps the GPU engine's textures below GL_MAX_TEXTURE_SIZE.
   void SetGpuTextureSizeLimit(int texels);
 
