@@ -158,8 +158,6 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   std::string LastError;
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
   bp::GpuEngine::DrawInputs Inputs;
-  double DrawTime = 0.0;
-  bool NeedsSamples = false;
 
   int ScalarMode = SOLID;
   int Component = -1;
@@ -282,50 +280,60 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   if (!calls.empty())
   {
     GLStateGuard guard;
+    auto failWith = [&](const std::string& message)
+    {
+      I.Failed = true;
+      I.LastError = message;
+      vtkErrorMacro(<< message);
+      I.Queue->failure = message;
+    };
     for (const bp::EngineCall& call : calls)
     {
-      std::string error;
+      if (call.kind == bp::EngineCall::Kind::Configure)
+      {
+        I.Failed = false;
+        I.Configured = false;
+        const std::string error = I.Engine.configure(*call.shape, call.parameters);
+        if (!error.empty())
+        {
+          failWith("The GPU engine cannot run this trace: " + error +
+            ". This display draws the CPU result from the next update on.");
+          continue;
+        }
+        I.Configured = true;
+        this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
+        continue;
+      }
+      if (!I.Configured || I.Failed)
+      {
+        continue; // what follows a failed call would continue from nothing
+      }
       switch (call.kind)
       {
-        case bp::EngineCall::Kind::Configure:
-          I.Failed = false;
-          I.Configured = false;
-          error = I.Engine.configure(*call.shape, call.parameters);
-          if (error.empty())
+        case bp::EngineCall::Kind::SetField:
+        {
+          const std::string error = I.Engine.setField(*call.field);
+          if (!error.empty())
           {
-            I.Configured = true;
-            this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
+            failWith("The GPU engine cannot hold this field: " + error +
+              ". This display draws the CPU result from the next update on.");
           }
           break;
-        case bp::EngineCall::Kind::SetField:
-          if (I.Configured && !I.Failed)
-            error = I.Engine.setField(*call.field);
-          break;
+        }
         case bp::EngineCall::Kind::Initialize:
-          if (I.Configured && !I.Failed)
-            I.Engine.initialize();
+          I.Engine.initialize();
           break;
         case bp::EngineCall::Kind::Step:
-          if (I.Configured && !I.Failed)
-            I.Engine.step(call.t, call.h);
+          I.Engine.step(call.t, call.h);
           break;
         case bp::EngineCall::Kind::Save:
-          if (I.Configured && !I.Failed)
-            I.Engine.saveState();
+          I.Engine.saveState();
           break;
         case bp::EngineCall::Kind::Restore:
-          if (I.Configured && !I.Failed)
-            I.Engine.restoreState();
+          I.Engine.restoreState();
           break;
-      }
-      if (!error.empty())
-      {
-        I.Failed = true;
-        I.LastError = "The GPU engine cannot run this trace: " + error +
-          ". Set the Bound Particle Tracer's Engine to CPU; this display draws the CPU result "
-          "from the next update on.";
-        vtkErrorMacro(<< I.LastError);
-        I.Queue->failure = I.LastError;
+        case bp::EngineCall::Kind::Configure:
+          break;
       }
     }
     if (I.Configured && !I.Failed)
@@ -335,11 +343,8 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
       const GLenum glError = glGetError();
       if (glError != GL_NO_ERROR)
       {
-        I.Failed = true;
-        I.LastError = "The GPU engine failed with OpenGL error " + std::to_string(glError) +
-          "; this display draws the CPU result from the next update on.";
-        vtkErrorMacro(<< I.LastError);
-        I.Queue->failure = I.LastError;
+        failWith("The GPU engine failed with OpenGL error " + std::to_string(glError) +
+          "; this display draws the CPU result from the next update on.");
       }
     }
   }
