@@ -153,8 +153,7 @@ std::vector<float> sampleAnalyticFlow(AnalyticFlow flow, const GridGeometry& gri
     {
       for (int i = 0; i < grid.dims[0]; ++i, ++n)
       {
-        const double p[3] = { grid.origin[0] + i * grid.spacing[0],
-          grid.origin[1] + j * grid.spacing[1], grid.origin[2] + k * grid.spacing[2] };
+        const double p[3] = { grid.coordinate(0, i), grid.coordinate(1, j), grid.coordinate(2, k) };
         double v[3];
         analyticVelocity(flow, p, t, bounds, v);
         out[3 * n] = float(v[0]);

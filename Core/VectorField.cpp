@@ -42,6 +42,30 @@ std::string GridGeometry::validate() const
   }
   for (int a = 0; a < 3; ++a)
   {
+    const std::vector<double>& c = this->coordinates[a];
+    if (c.empty())
+    {
+      continue;
+    }
+    if (c.size() != std::size_t(this->dims[a]))
+    {
+      err << "the field has " << c.size() << " coordinates along axis "
+          << "XYZ"[a] << " for " << this->dims[a] << " points";
+      return err.str();
+    }
+    for (std::size_t i = 0; i < c.size(); ++i)
+    {
+      if (!std::isfinite(c[i]) || (i > 0 && !(c[i] > c[i - 1])))
+      {
+        err << "the field's coordinates along axis "
+            << "XYZ"[a] << " must be finite and strictly increasing (point " << i << " is at "
+            << c[i] << (i > 0 ? ", after " + std::to_string(c[i - 1]) : std::string()) << ")";
+        return err.str();
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+  {
     // Cell indices are computed in float, exact up to 2^24.
     if (this->dims[a] > (1 << 24))
     {
@@ -53,13 +77,62 @@ std::string GridGeometry::validate() const
   return std::string();
 }
 
+void GridGeometry::setCoordinates(int a, std::vector<double> values)
+{
+  this->dims[a] = int(values.size());
+  if (!values.empty())
+  {
+    this->origin[a] = values.front();
+    this->spacing[a] =
+      values.size() > 1 ? (values.back() - values.front()) / double(values.size() - 1) : 1.0;
+  }
+  this->coordinates[a] = std::move(values);
+}
+
+double GridGeometry::coordinate(int a, int i) const
+{
+  return this->isRectilinear(a) ? this->coordinates[a][std::size_t(i)]
+                                : this->origin[a] + i * this->spacing[a];
+}
+
+void GridGeometry::translate(const std::array<double, 3>& shift)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    this->origin[a] -= shift[a];
+    for (double& c : this->coordinates[a])
+    {
+      c -= shift[a];
+    }
+  }
+}
+
+bool GridGeometry::sameAs(const GridGeometry& other, double tolerance) const
+{
+  if (this->dims != other.dims)
+  {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int i = 0; i < this->dims[a]; ++i)
+    {
+      if (!(std::abs(this->coordinate(a, i) - other.coordinate(a, i)) <= tolerance))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 std::array<double, 6> GridGeometry::bounds() const
 {
   std::array<double, 6> b;
   for (int a = 0; a < 3; ++a)
   {
-    b[2 * a] = this->origin[a];
-    b[2 * a + 1] = this->origin[a] + (this->dims[a] - 1) * this->spacing[a];
+    b[2 * a] = this->coordinate(a, 0);
+    b[2 * a + 1] = this->coordinate(a, std::max(this->dims[a] - 1, 0));
   }
   return b;
 }
@@ -107,12 +180,59 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
     this->Origin[a] = float(grid.origin[a]);
     this->InverseSpacing[a] = this->Degenerate[a] ? 0.0f : float(1.0 / grid.spacing[a]);
     this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
-    this->Lower[a] = float(grid.origin[a]);
-    this->Upper[a] = float(grid.origin[a] + (grid.dims[a] - 1) * grid.spacing[a]);
+    this->Lower[a] = float(grid.coordinate(a, 0));
+    this->Upper[a] = float(grid.coordinate(a, std::max(grid.dims[a] - 1, 0)));
     // A plane repeats its single layer: the "next" corner is the same point.
     this->Stride[a] = this->Degenerate[a] ? 0 : stride;
     stride *= std::size_t(std::max(grid.dims[a], 1));
+    if (grid.isRectilinear(a) && !this->Degenerate[a] &&
+      grid.coordinates[a].size() == std::size_t(grid.dims[a]))
+    {
+      // Widths are taken in double before rounding, so that nearly equal
+      // float coordinates still give a finite, accurate weight.
+      const std::vector<double>& c = grid.coordinates[a];
+      std::vector<float>& table = this->AxisTable[a];
+      table.resize(2 * c.size());
+      for (std::size_t i = 0; i < c.size(); ++i)
+      {
+        table[2 * i] = float(c[i]);
+        table[2 * i + 1] = i + 1 < c.size() ? float(1.0 / (c[i + 1] - c[i])) : 0.0f;
+      }
+    }
   }
+}
+
+void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const
+{
+  const std::vector<float>& table = this->AxisTable[a];
+  if (table.empty())
+  {
+    float g = (x - this->Origin[a]) * this->InverseSpacing[a];
+    g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
+    // The last cell takes points on the upper boundary, so i + 1 stays valid.
+    const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
+    fraction = g - i;
+    cell = std::size_t(i);
+    return;
+  }
+  // The last cell whose first point is at or below x (bp_common.glsl does the
+  // same search on the same table).
+  x = std::min(std::max(x, this->Lower[a]), this->Upper[a]);
+  int lo = 0, hi = int(table.size() / 2) - 2;
+  while (lo < hi)
+  {
+    const int mid = (lo + hi + 1) / 2;
+    if (table[2 * mid] <= x)
+    {
+      lo = mid;
+    }
+    else
+    {
+      hi = mid - 1;
+    }
+  }
+  cell = std::size_t(lo);
+  fraction = std::min((x - table[2 * lo]) * table[2 * lo + 1], 1.0f);
 }
 
 std::string VectorField::validate() const
@@ -160,12 +280,9 @@ void VectorField::sampleSlice(const float* data, const float p[3], float v[3]) c
   std::size_t step[3];
   for (int a = 0; a < 3; ++a)
   {
-    float g = (p[a] - this->Origin[a]) * this->InverseSpacing[a];
-    g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
-    // The last cell takes points on the upper boundary, so i + 1 stays valid.
-    const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
-    f[a] = g - i;
-    base += std::size_t(i) * this->Stride[a];
+    std::size_t i;
+    this->locate(a, p[a], i, f[a]);
+    base += i * this->Stride[a];
     step[a] = this->Stride[a];
   }
   const float* c000 = data + 3 * base;
@@ -199,6 +316,7 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
     c.lower[a] = this->Lower[a];
     c.upper[a] = this->Upper[a];
     c.degenerate[a] = this->Degenerate[a];
+    c.rectilinear[a] = !this->AxisTable[a].empty();
   }
   return c;
 }

@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file VectorField.h
- * @brief A vector field on a uniform grid, sampled trilinearly in space and
- * linearly in time between two time steps (thesis §3.4).
+ * @brief A vector field on a uniform or rectilinear grid, sampled trilinearly
+ * in space and linearly in time between two time steps (thesis §3.4).
+ *
+ * An axis may carry explicit, strictly increasing point coordinates (the
+ * altitude layers of thesis §3.4): sampling then finds the cell by binary
+ * search and interpolates by the position within it, exactly, instead of the
+ * thesis' power-law approximation. Both engines search and weigh with the same
+ * float tables (axisTable()).
  *
  * Positions outside the grid sample the nearest boundary value, as the thesis'
  * clamped 3D textures do; the engine decides separately when an element has
@@ -20,12 +26,27 @@
 namespace bp
 {
 
-/// Point positions x_i = origin + i * spacing, x fastest (VTK's point order).
+/// Point positions x_i = origin + i * spacing, x fastest (VTK's point order),
+/// or, along an axis with coordinates, x_i = coordinates[a][i].
 struct GridGeometry
 {
   std::array<int, 3> dims = { 0, 0, 0 };
   std::array<double, 3> origin = { 0, 0, 0 };
+  /// Along a rectilinear axis, the mean spacing (for step and size defaults).
   std::array<double, 3> spacing = { 1, 1, 1 };
+  /// Empty for a uniform axis; otherwise one strictly increasing value per point.
+  std::array<std::vector<double>, 3> coordinates;
+
+  /// Makes axis a rectilinear with these point coordinates (dims, origin and
+  /// the mean spacing follow from them).
+  void setCoordinates(int a, std::vector<double> values);
+  bool isRectilinear(int a) const { return !this->coordinates[a].empty(); }
+  /// Position of point i along axis a.
+  double coordinate(int a, int i) const;
+  /// Moves the grid by -shift (origin and coordinates).
+  void translate(const std::array<double, 3>& shift);
+  /// Whether two grids place every point within `tolerance` of each other.
+  bool sameAs(const GridGeometry& other, double tolerance) const;
 
   std::size_t pointCount() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   /// Empty when the grid can carry a flow, otherwise why not.
@@ -81,11 +102,19 @@ public:
   {
     float origin[3], inverseSpacing[3], maxIndex[3], lower[3], upper[3];
     bool degenerate[3];
+    bool rectilinear[3];
   };
   SamplingConstants samplingConstants() const;
 
+  /// Along a rectilinear axis, per point i: its float coordinate and the float
+  /// inverse width of cell i (0 for the last point), interleaved. Empty along
+  /// a uniform axis.
+  const std::vector<float>& axisTable(int a) const { return this->AxisTable[a]; }
+
 private:
   void sampleSlice(const float* data, const float p[3], float v[3]) const;
+  /// The cell index and the position within it along axis a.
+  void locate(int a, float x, std::size_t& cell, float& fraction) const;
 
   GridGeometry Grid;
   FieldSlice First;
@@ -98,6 +127,7 @@ private:
   float Upper[3];
   bool Degenerate[3];
   std::size_t Stride[3];
+  std::array<std::vector<float>, 3> AxisTable;
 };
 
 } // namespace bp

@@ -131,10 +131,177 @@ struct GpuEngine::Internals
   GLuint Advected = 0, Before = 0, Restored[2] = { 0, 0 }, NormalsTex = 0;
   GLuint Rest = 0, ParticleInfo = 0, Springs = 0, Triangles = 0;
 
-  GLuint FieldTex[2] = { 0, 0 };
-  const void* FieldData[2] = { nullptr, nullptr };
+  /// A field time step resident on the GPU, or arriving a slab of z layers
+  /// at a time (stageSlice). Held by the data itself, so a freed and reused
+  /// address can never pass for a resident time step.
+  struct FieldSlot
+  {
+    GLuint texture = 0;
+    std::shared_ptr<const std::vector<float>> data;
+    int layers = 0; // z layers uploaded so far
+    std::uint64_t lastUse = 0;
+  };
+  // Two time steps in use and one arriving: at most three volumes resident.
+  std::array<FieldSlot, 3> Slots;
+  std::array<int, 3> SlotDims = { 0, 0, 0 };
+  std::uint64_t UseClock = 0;
+  int FieldSlots[2] = { -1, -1 }; // the current field's slices
+  GLuint AxesTex = 0;             // rectilinear axes' tables and bin lookups (bp_common.glsl)
+  std::array<std::vector<float>, 3> AxesTables;
+  int Bins[3] = { 1, 1, 1 };
+  float BinScale[3] = { 0, 0, 0 };
   const VectorField* Field = nullptr;
   std::unique_ptr<VectorField> FieldCopy;
+
+  /// The slot holding `data`, else a slot to receive it other than the two
+  /// kept ones: an empty one or the least recently used.
+  FieldSlot& slotFor(const std::shared_ptr<const std::vector<float>>& data, int keepA, int keepB)
+  {
+    for (FieldSlot& slot : this->Slots)
+    {
+      if (slot.data == data)
+      {
+        return slot;
+      }
+    }
+    FieldSlot* best = nullptr;
+    for (int k = 0; k < int(this->Slots.size()); ++k)
+    {
+      FieldSlot& slot = this->Slots[k];
+      if (k != keepA && k != keepB && (!best || slot.lastUse < best->lastUse))
+      {
+        best = &slot;
+      }
+    }
+    best->data = data;
+    best->layers = 0;
+    return *best;
+  }
+
+  /// Uploads up to `count` more z layers of the slot's data.
+  void uploadLayers(FieldSlot& slot, const GridGeometry& g, int count)
+  {
+    const int nz = std::max(g.dims[2], 1);
+    if (!slot.texture)
+    {
+      glGenTextures(1, &slot.texture);
+      glBindTexture(GL_TEXTURE_3D, slot.texture);
+      glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexImage3D(
+        GL_TEXTURE_3D, 0, GL_RGB32F, g.dims[0], g.dims[1], nz, 0, GL_RGB, GL_FLOAT, nullptr);
+    }
+    const int first = slot.layers, last = std::min(nz, slot.layers + std::max(count, 0));
+    if (last <= first)
+    {
+      return;
+    }
+    glBindTexture(GL_TEXTURE_3D, slot.texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+    const std::size_t layer = std::size_t(g.dims[0]) * g.dims[1] * 3;
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, first, g.dims[0], g.dims[1], last - first, GL_RGB,
+      GL_FLOAT, slot.data->data() + layer * first);
+    slot.layers = last;
+  }
+
+  /// Drops every resident time step when the grid's size changes.
+  void fitSlots(const GridGeometry& g)
+  {
+    if (this->SlotDims == g.dims)
+    {
+      return;
+    }
+    for (FieldSlot& slot : this->Slots)
+    {
+      if (slot.texture)
+      {
+        glDeleteTextures(1, &slot.texture);
+      }
+      slot = FieldSlot();
+    }
+    this->FieldSlots[0] = this->FieldSlots[1] = -1;
+    this->SlotDims = g.dims;
+  }
+
+  /// Uploads the rectilinear axes' tables and bin lookups (bp_common.glsl)
+  /// when they change. Empty on success, otherwise why the GPU cannot sample
+  /// these axes.
+  std::string uploadAxes(const VectorField& field)
+  {
+    std::array<std::vector<float>, 3> tables = { field.axisTable(0), field.axisTable(1),
+      field.axisTable(2) };
+    if (tables == this->AxesTables && this->AxesTex)
+    {
+      return std::string();
+    }
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    std::array<std::vector<float>, 3> bins;
+    std::size_t width = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      const std::vector<float>& t = tables[a];
+      this->Bins[a] = 1;
+      this->BinScale[a] = 0.0f;
+      if (t.empty())
+      {
+        continue;
+      }
+      const std::size_t points = t.size() / 2;
+      double narrowest = HUGE_VAL;
+      for (std::size_t i = 0; i + 1 < points; ++i)
+      {
+        narrowest = std::min(narrowest, double(t[2 * i + 2]) - double(t[2 * i]));
+      }
+      const double span = double(t[2 * (points - 1)]) - double(t[0]);
+      const double count = std::ceil(2.0 * span / narrowest) + 1.0;
+      if (!(narrowest > 0.0) || count > double(maxSize))
+      {
+        std::ostringstream err;
+        err << "the field's cells along axis "
+            << "XYZ"[a] << " range from " << narrowest << " to more than " << span / points
+            << " in width; the GPU's lookup for them would need " << count
+            << " texels, beyond its limit of " << maxSize << ". Use the CPU engine";
+        return err.str();
+      }
+      this->Bins[a] = int(count);
+      this->BinScale[a] = float(count / span);
+      bins[a].resize(std::size_t(count));
+      std::size_t cell = 0;
+      for (std::size_t b = 0; b < bins[a].size(); ++b)
+      {
+        const float start = t[0] + float(double(b) * span / count);
+        while (cell + 2 < points && t[2 * (cell + 1)] <= start)
+        {
+          ++cell;
+        }
+        bins[a][b] = float(cell);
+      }
+      width = std::max({ width, points, bins[a].size() });
+    }
+    this->AxesTables = tables;
+    std::vector<float> texels(width * 6 * 2, 0.0f);
+    for (int a = 0; a < 3; ++a)
+    {
+      std::copy(tables[a].begin(), tables[a].end(), texels.begin() + std::ptrdiff_t(a * width * 2));
+      for (std::size_t b = 0; b < bins[a].size(); ++b)
+      {
+        texels[((3 + a) * width + b) * 2] = bins[a][b];
+      }
+    }
+    if (!this->AxesTex)
+    {
+      glGenTextures(1, &this->AxesTex);
+    }
+    glBindTexture(GL_TEXTURE_2D, this->AxesTex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, GLsizei(width), 6, 0, GL_RG, GL_FLOAT, texels.data());
+    return std::string();
+  }
 
   std::string program(const std::string& fragment, GLuint& out)
   {
@@ -223,9 +390,18 @@ struct GpuEngine::Internals
         c.degenerate[1] ? 0 : 1, c.degenerate[2] ? 0 : 1);
       glUniform3i(
         glGetUniformLocation(p, "bpDegenerate"), c.degenerate[0], c.degenerate[1], c.degenerate[2]);
+      glUniform3i(glGetUniformLocation(p, "bpRectilinear"), c.rectilinear[0], c.rectilinear[1],
+        c.rectilinear[2]);
+      const auto& dims = this->Field->grid().dims;
+      glUniform3i(glGetUniformLocation(p, "bpLastCell"), std::max(dims[0] - 2, 0),
+        std::max(dims[1] - 2, 0), std::max(dims[2] - 2, 0));
+      glUniform3i(glGetUniformLocation(p, "bpBins"), this->Bins[0], this->Bins[1], this->Bins[2]);
+      setVec3(p, "bpBinScale", this->BinScale);
       setInt(p, "bpUnsteady", this->Field->isSteady() ? 0 : 1);
-      this->bind(p, "bpField0", this->FieldTex[0], GL_TEXTURE_3D);
-      this->bind(p, "bpField1", this->FieldTex[this->Field->isSteady() ? 0 : 1], GL_TEXTURE_3D);
+      const int second = this->Field->isSteady() ? 0 : 1;
+      this->bind(p, "bpField0", this->Slots[this->FieldSlots[0]].texture, GL_TEXTURE_3D);
+      this->bind(p, "bpField1", this->Slots[this->FieldSlots[second]].texture, GL_TEXTURE_3D);
+      this->bind(p, "bpAxes", this->AxesTex);
     }
   }
 
@@ -320,9 +496,10 @@ struct GpuEngine::Internals
     GLuint textures[] = { this->ElementState[0], this->ElementState[1], this->Centers[0],
       this->Centers[1], this->State[0], this->State[1], this->Advected, this->Before,
       this->Restored[0], this->Restored[1], this->NormalsTex, this->Rest, this->ParticleInfo,
-      this->Springs, this->Triangles, this->FieldTex[0], this->FieldTex[1], this->Orientations[0],
-      this->Orientations[1], this->MatchCenters, this->ColouredSprings, this->Samples,
-      this->Saved[0], this->Saved[1], this->Saved[2], this->Saved[3] };
+      this->Springs, this->Triangles, this->Slots[0].texture, this->Slots[1].texture,
+      this->Slots[2].texture, this->AxesTex, this->Orientations[0], this->Orientations[1],
+      this->MatchCenters, this->ColouredSprings, this->Samples, this->Saved[0], this->Saved[1],
+      this->Saved[2], this->Saved[3] };
     for (GLuint t : textures)
     {
       if (t)
@@ -587,8 +764,6 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
 std::string GpuEngine::setField(const VectorField& field)
 {
   Internals& S = *this->I;
-  S.FieldCopy.reset(new VectorField(field));
-  S.Field = S.FieldCopy.get();
   const GridGeometry& g = field.grid();
   GLint max3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
@@ -602,35 +777,57 @@ std::string GpuEngine::setField(const VectorField& field)
       return err.str();
     }
   }
+  const std::string axesError = S.uploadAxes(field);
+  if (!axesError.empty())
+  {
+    return axesError;
+  }
+  S.FieldCopy.reset(new VectorField(field));
+  S.Field = S.FieldCopy.get();
+  S.fitSlots(g);
   const FieldSlice* slices[2] = { &field.firstSlice(), &field.secondSlice() };
+  int chosen[2] = { -1, -1 };
   for (int k = 0; k < 2; ++k)
   {
-    if (!slices[k]->velocity || S.FieldData[k] == slices[k]->velocity.get())
+    if (!slices[k]->velocity)
     {
       continue;
     }
-    const std::vector<float>& v = *slices[k]->velocity;
-    std::vector<float> rgba(g.pointCount() * 4);
-    for (std::size_t i = 0; i < g.pointCount(); ++i)
-    {
-      rgba[4 * i] = v[3 * i];
-      rgba[4 * i + 1] = v[3 * i + 1];
-      rgba[4 * i + 2] = v[3 * i + 2];
-      rgba[4 * i + 3] = 0.0f;
-    }
-    if (!S.FieldTex[k])
-    {
-      glGenTextures(1, &S.FieldTex[k]);
-    }
-    glBindTexture(GL_TEXTURE_3D, S.FieldTex[k]);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, g.dims[0], g.dims[1], g.dims[2], 0, GL_RGBA,
-      GL_FLOAT, rgba.data());
-    S.FieldData[k] = slices[k]->velocity.get();
+    // The first slice's slot stays out of reach of the second's eviction.
+    Internals::FieldSlot& slot = S.slotFor(slices[k]->velocity, chosen[0], -1);
+    // Whatever has not arrived by slabs arrives now, at once.
+    S.uploadLayers(slot, g, std::max(g.dims[2], 1));
+    slot.lastUse = ++S.UseClock;
+    chosen[k] = int(&slot - S.Slots.data());
   }
+  S.FieldSlots[0] = chosen[0];
+  S.FieldSlots[1] = chosen[1];
   return glGetError() == GL_NO_ERROR ? std::string()
                                      : std::string("the GPU could not hold the field's time steps");
+}
+
+int GpuEngine::stageSlice(const FieldSlice& slice, std::size_t maxBytes)
+{
+  Internals& S = *this->I;
+  if (!S.Field || !slice.velocity || slice.velocity->size() != 3 * S.Field->grid().pointCount())
+  {
+    return 0;
+  }
+  const GridGeometry& g = S.Field->grid();
+  Internals::FieldSlot& slot = S.slotFor(slice.velocity, S.FieldSlots[0], S.FieldSlots[1]);
+  const std::size_t layerBytes = std::size_t(g.dims[0]) * g.dims[1] * 3 * sizeof(float);
+  S.uploadLayers(slot, g, int(std::max<std::size_t>(1, maxBytes / layerBytes)));
+  return std::max(g.dims[2], 1) - slot.layers;
+}
+
+int GpuEngine::residentTimeSteps() const
+{
+  int count = 0;
+  for (const auto& slot : this->I->Slots)
+  {
+    count += slot.data ? 1 : 0;
+  }
+  return count;
 }
 
 void GpuEngine::initialize()

@@ -42,8 +42,21 @@ public:
   /// current. Empty on success, otherwise why the GPU cannot run this system.
   std::string configure(const ElementTemplate& shape, const Parameters& parameters);
 
-  /// Uploads the field's time steps (skipped for slices already resident).
+  /// Makes the field's time steps resident: a time step already uploaded (or
+  /// staged) is not uploaded again, the rest of a partly staged one is
+  /// uploaded now. At most three time steps are resident; the least recently
+  /// used one outside the current field makes room.
   std::string setField(const VectorField& field);
+
+  /// Uploads whole z layers (at least one, about maxBytes) of a time step the
+  /// field will need next, into the resident slot not in use, so that moving
+  /// on to it with setField() does not upload a whole volume at once. The
+  /// slice must be on the current field's grid. Returns the layers still to
+  /// upload (0 when it is resident).
+  int stageSlice(const FieldSlice& slice, std::size_t maxBytes);
+
+  /// How many field time steps are resident (at most three).
+  int residentTimeSteps() const;
 
   /// Places every element (generation 0).
   void initialize();

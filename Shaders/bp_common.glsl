@@ -113,14 +113,59 @@ uniform ivec3 bpNextCorner; // 1 along an axis with cells, 0 along a flat one
 uniform vec3 bpLower;
 uniform vec3 bpUpper;
 uniform bvec3 bpDegenerate;
+// Rectilinear axes: row a of bpAxes holds, per point i, its coordinate and the
+// inverse width of cell i (VectorField::axisTable); row 3 + a holds, per bin
+// of a uniform division of the axis into bpBins[a] bins, the cell that holds
+// the bin's start. Bins are at most half the narrowest cell, so a bin holds at
+// most one point and the cell is found with three fetches and no search.
+uniform bvec3 bpRectilinear;
+uniform ivec3 bpLastCell; // points - 2
+uniform ivec3 bpBins;
+uniform vec3 bpBinScale; // bins per unit length
+uniform sampler2D bpAxes;
+
+// The cell along axis a that holds x, and the position within it: the cell
+// VectorField::locate finds by binary search, the same weight arithmetic.
+void bpLocate(int a, float x, out int cell, out float fraction)
+{
+  if (!bpRectilinear[a])
+  {
+    float g = (x - bpOrigin[a]) * bpInverseSpacing[a];
+    g = min(max(g, 0.0), bpMaxIndex[a]);
+    float i = min(floor(g), max(bpMaxIndex[a] - 1.0, 0.0));
+    fraction = g - i;
+    cell = int(i);
+    return;
+  }
+  x = min(max(x, bpLower[a]), bpUpper[a]);
+  int b = clamp(int((x - bpLower[a]) * bpBinScale[a]), 0, bpBins[a] - 1);
+  int i = int(texelFetch(bpAxes, ivec2(b, 3 + a), 0).x);
+  // The bin computed in float may be one off either way: one step down, at
+  // most two up.
+  if (i > 0 && texelFetch(bpAxes, ivec2(i, a), 0).x > x)
+  {
+    i -= 1;
+  }
+  if (i < bpLastCell[a] && texelFetch(bpAxes, ivec2(i + 1, a), 0).x <= x)
+  {
+    i += 1;
+  }
+  if (i < bpLastCell[a] && texelFetch(bpAxes, ivec2(i + 1, a), 0).x <= x)
+  {
+    i += 1;
+  }
+  vec2 c = texelFetch(bpAxes, ivec2(i, a), 0).xy;
+  fraction = min((x - c.x) * c.y, 1.0);
+  cell = i;
+}
 
 vec3 bpSampleSlice(sampler3D field, vec3 p)
 {
-  vec3 g = (p - bpOrigin) * bpInverseSpacing;
-  g = min(max(g, vec3(0.0)), bpMaxIndex);
-  vec3 i = min(floor(g), max(bpMaxIndex - 1.0, vec3(0.0)));
-  vec3 f = g - i;
-  ivec3 a = ivec3(i);
+  ivec3 a;
+  vec3 f;
+  bpLocate(0, p.x, a.x, f.x);
+  bpLocate(1, p.y, a.y, f.y);
+  bpLocate(2, p.z, a.z, f.z);
   ivec3 s = bpNextCorner;
   vec3 c000 = texelFetch(field, a, 0).xyz;
   vec3 c100 = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;

@@ -124,3 +124,79 @@ TEST(VectorField, SolidBodyRotationHasVorticityTwo)
   EXPECT_NEAR(f.vorticityMagnitude(p, 0.0), 2.0, 1e-4);
   EXPECT_NEAR(f.maxSpeed(), std::sqrt(2.0), 1e-5);
 }
+
+TEST(VectorField, RectilinearAxesAreSampledExactly)
+{
+  // Altitude-like z layers, crowded near the ground, and a stretched x axis.
+  bp::GridGeometry g = bptest::grid(6, 0.0, 1.0);
+  g.setCoordinates(2, { 0.0, 0.01, 0.03, 0.07, 0.2, 0.5, 1.0, 3.0 });
+  g.setCoordinates(0, { -2.0, -1.0, -0.5, 0.0, 0.25, 4.0 });
+  ASSERT_EQ(g.validate(), "");
+  EXPECT_EQ(g.dims[2], 8);
+  EXPECT_DOUBLE_EQ(g.bounds()[5], 3.0);
+  EXPECT_DOUBLE_EQ(g.spacing[2], 3.0 / 7.0);
+  // u is a known function of altitude, w is linear in x: at every grid layer
+  // exact, and linear between two layers.
+  auto u = [](double z) { return 10.0 * std::sqrt(z) + z * z; };
+  auto values = std::make_shared<std::vector<float>>();
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+      {
+        values->push_back(float(u(g.coordinate(2, k))));
+        values->push_back(float(g.coordinate(1, j)));
+        values->push_back(float(3.0 * g.coordinate(0, i)));
+      }
+  bp::FieldSlice s;
+  s.velocity = values;
+  const bp::VectorField f(g, s);
+  ASSERT_EQ(f.validate(), "");
+  for (int k = 0; k + 1 < g.dims[2]; ++k)
+  {
+    const double z0 = g.coordinate(2, k), z1 = g.coordinate(2, k + 1);
+    for (double w : { 0.0, 0.3, 0.5, 0.9 })
+    {
+      const double z = z0 + w * (z1 - z0);
+      const float p[3] = { 0.1f, 0.4f, float(z) };
+      float v[3];
+      f.sample(p, 0.0, v);
+      const double expected = u(z0) + (z - z0) / (z1 - z0) * (u(z1) - u(z0));
+      EXPECT_NEAR(v[0], expected, 2e-5 * std::max(1.0, std::abs(expected))) << "z = " << z;
+      EXPECT_NEAR(v[1], 0.4, 1e-6);
+      EXPECT_NEAR(v[2], 0.3, 1e-5); // linear in x on the stretched x axis
+    }
+  }
+  // Above the top and below the ground: the boundary layers.
+  const float above[3] = { 0.0f, 0.0f, 5.0f }, below[3] = { 0.0f, 0.0f, -1.0f };
+  float v[3];
+  f.sample(above, 0.0, v);
+  EXPECT_NEAR(v[0], u(3.0), 1e-4);
+  f.sample(below, 0.0, v);
+  EXPECT_NEAR(v[0], 0.0, 1e-6);
+  EXPECT_FALSE(f.contains(above));
+  const float inside[3] = { 3.9f, 1.0f, 2.9f };
+  EXPECT_TRUE(f.contains(inside));
+  // The float tables both engines use.
+  ASSERT_EQ(f.axisTable(2).size(), 16u);
+  EXPECT_FLOAT_EQ(f.axisTable(2)[2], 0.01f);
+  EXPECT_FLOAT_EQ(f.axisTable(2)[3], 50.0f); // 1 / (0.03 - 0.01)
+  EXPECT_TRUE(f.axisTable(1).empty());
+}
+
+TEST(VectorField, RectilinearGridsAreValidatedMovedAndCompared)
+{
+  bp::GridGeometry g = bptest::grid(4, 0.0, 1.0);
+  g.setCoordinates(2, { 0.0, 0.5, 0.5, 1.0 });
+  EXPECT_NE(g.validate().find("strictly increasing"), std::string::npos) << g.validate();
+  g.setCoordinates(2, { 0.0, 0.1, 0.4, 1.0 });
+  EXPECT_EQ(g.validate(), "");
+  bp::GridGeometry moved = g;
+  moved.translate({ 1.0, 2.0, 3.0 });
+  EXPECT_DOUBLE_EQ(moved.coordinate(2, 2), 0.4 - 3.0);
+  EXPECT_DOUBLE_EQ(moved.coordinate(0, 3), 1.0 - 1.0);
+  EXPECT_FALSE(moved.sameAs(g, 1e-9));
+  moved.translate({ -1.0, -2.0, -3.0 });
+  EXPECT_TRUE(moved.sameAs(g, 1e-9));
+  bp::GridGeometry uniform = bptest::grid(4, 0.0, 1.0);
+  EXPECT_FALSE(uniform.sameAs(g, 1e-9));
+}

@@ -42,6 +42,17 @@ bp::GridGeometry grid(int nx, int ny, int nz, const std::array<double, 6>& b)
   return g;
 }
 
+/// Makes axis a rectilinear over the same bounds, its points crowded towards
+/// the lower end (altitude layers), as (i / (n - 1))^power.
+void stretch(bp::GridGeometry& g, int a, double power)
+{
+  const double lo = g.origin[a], hi = g.coordinate(a, g.dims[a] - 1);
+  std::vector<double> c(std::size_t(g.dims[a]));
+  for (int i = 0; i < g.dims[a]; ++i)
+    c[std::size_t(i)] = lo + (hi - lo) * std::pow(double(i) / (g.dims[a] - 1), power);
+  g.setCoordinates(a, c);
+}
+
 bp::FieldSlice slice(bp::AnalyticFlow flow, const bp::GridGeometry& g, double t)
 {
   bp::FieldSlice s;
@@ -57,6 +68,7 @@ struct Case
   bp::Integrator integrator;
   bp::Restoration restoration;
   bool unsteady;
+  bool rectilinear = false; // y and z axes stretched
 };
 
 /// Runs both engines `steps` steps and returns the largest position difference.
@@ -66,7 +78,12 @@ void compare(const Case& c, int steps, bool pinSome = false)
   const bool unsteady = c.unsteady;
   const std::array<double, 6> box = unsteady ? std::array<double, 6>{ 0, 2, 0, 1, 0, 0.25 }
                                              : std::array<double, 6>{ -1, 1, -1, 1, -1, 1 };
-  const bp::GridGeometry g = unsteady ? grid(41, 21, 6, box) : grid(24, 24, 24, box);
+  bp::GridGeometry g = unsteady ? grid(41, 21, 6, box) : grid(24, 24, 24, box);
+  if (c.rectilinear)
+  {
+    stretch(g, 1, 1.7);
+    stretch(g, 2, 2.5);
+  }
   const bp::VectorField field = unsteady
     ? bp::VectorField(
         g, slice(bp::AnalyticFlow::DoubleGyre, g, 0.0), slice(bp::AnalyticFlow::DoubleGyre, g, 2.0))
@@ -151,6 +168,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
   std::printf("%s x %zu, integrator %d, restoration %d, %s: max |dx| %.3g (tolerance %.3g)\n",
     shape.name.c_str(), c.elements, int(c.integrator), int(c.restoration),
     unsteady ? "unsteady" : "steady", worst, tolerance);
+  if (c.rectilinear)
+    std::printf("  on a rectilinear grid\n");
 }
 } // namespace
 
@@ -177,6 +196,18 @@ TEST(GpuEngine, MatchesOnAnUnsteadyField)
   compare(
     { bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi, true },
     200);
+}
+
+TEST(GpuEngine, MatchesOnARectilinearGrid)
+{
+  // Non-uniform y and z axes: the GPU finds cells by a bin lookup, the CPU by
+  // binary search; both must find the same cell and weights.
+  compare({ bp::BuiltinShape::Strip8, 400, bp::Integrator::RK2, bp::Restoration::AveragedJacobi,
+            true, true },
+    200);
+  compare({ bp::BuiltinShape::Cross, 300, bp::Integrator::Euler, bp::Restoration::ShapeMatching,
+            false, true },
+    100);
 }
 
 TEST(GpuEngine, GaussSeidelWithPinnedParticles)
@@ -344,4 +375,51 @@ TEST(GpuEngine, GeneratedSpringsGiveTheSameBitsAsTheSpringBuffer)
         differing += results[0][k] != results[1][k];
       EXPECT_EQ(differing, 0u) << s.shape.name << ", restoration " << int(restoration);
     }
+}
+
+TEST(GpuEngine, StagedTimeStepsGiveTheSameResultAndStayBounded)
+{
+  // A time series crossed step by step: one engine uploads each time step
+  // when it is needed, the other stages the next one a slab of z layers per
+  // step beforehand (as the display does between frames). Same bits, and
+  // never more than three volumes resident.
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  std::vector<bp::FieldSlice> series;
+  for (int k = 0; k < 6; ++k)
+    series.push_back(slice(bp::AnalyticFlow::DoubleGyre, s.g, 0.25 * k));
+  const std::size_t layerBytes = std::size_t(s.g.dims[0]) * s.g.dims[1] * 3 * sizeof(float);
+  std::vector<float> results[2];
+  for (int staged = 0; staged < 2; ++staged)
+  {
+    bp::GpuEngine gpu;
+    ASSERT_EQ(gpu.configure(s.shape, s.p), "");
+    const double dt = 0.05;
+    int steps = 0;
+    for (std::size_t k = 0; k + 1 < series.size(); ++k)
+    {
+      ASSERT_EQ(gpu.setField(bp::VectorField(s.g, series[k], series[k + 1])), "");
+      if (k == 0)
+        gpu.initialize();
+      EXPECT_LE(gpu.residentTimeSteps(), 3);
+      int remaining = -1;
+      for (int j = 0; j < 5; ++j, ++steps)
+      {
+        gpu.step(steps * dt, dt);
+        if (staged && k + 2 < series.size())
+        {
+          remaining = gpu.stageSlice(series[k + 2], 2 * layerBytes);
+          EXPECT_LE(gpu.residentTimeSteps(), 3);
+        }
+      }
+      if (staged && k + 2 < series.size())
+        EXPECT_EQ(remaining, 0) << "6 layers staged by 2 in 5 steps";
+    }
+    // A jump to two time steps that are not resident evicts what is.
+    ASSERT_EQ(gpu.setField(bp::VectorField(s.g, series[0], series[1])), "");
+    EXPECT_LE(gpu.residentTimeSteps(), 3);
+    gpu.read(&results[staged], nullptr, nullptr);
+    gpu.release();
+  }
+  EXPECT_EQ(results[0], results[1]);
 }
