@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bp
@@ -105,6 +106,14 @@ public:
 
   /// The renderer's last failure, if any (empty when the engine ran).
   std::string failure;
+
+  /// Whether the filter reads the next field time step ahead of need and the
+  /// renderer uploads it a slab of z layers per frame (the display's choice);
+  /// otherwise a time step is uploaded whole when a step first needs it.
+  bool streamTimeSteps = true;
+  /// The time step the next update forward will need, once the filter has it
+  /// (empty otherwise).
+  FieldSlice upcoming;
 
 private:
   int Id = 0;

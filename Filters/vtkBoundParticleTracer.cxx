@@ -28,6 +28,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -163,8 +164,8 @@ std::vector<ExpectedRange> expectedRanges(const bp::VectorField& field, const bp
     for (int j = 0; j < g.dims[1]; j += stride[1])
       for (int i = 0; i < g.dims[0]; i += stride[0])
       {
-        const float q[3] = { float(g.origin[0] + i * g.spacing[0]),
-          float(g.origin[1] + j * g.spacing[1]), float(g.origin[2] + k * g.spacing[2]) };
+        const float q[3] = { float(g.coordinate(0, i)), float(g.coordinate(1, j)),
+          float(g.coordinate(2, k)) };
         vorticity = std::max(vorticity, field.vorticityMagnitude(q, field.firstSlice().time));
       }
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
@@ -211,9 +212,10 @@ struct vtkBoundParticleTracer::vtkInternals
   std::vector<double> OutputTimes;
   bp::GridGeometry Grid; // with its origin at 0: the engine works in grid-local coordinates
   std::array<double, 3> Offset = { 0, 0, 0 }; // world position of the grid's first point
-  std::map<int, bp::FieldSlice> Slices;       // by input time index, at most two
+  std::map<int, bp::FieldSlice> Slices;       // by input time index, at most three
   int RequestIndex = 0;
   bool Continuing = false;
+  bool ReadThisUpdate = false; // a time step came from upstream in this update
 
   double ResolvedDt = 0.0;
   double ResolvedElementSize = 0.0;
@@ -319,6 +321,40 @@ struct vtkBoundParticleTracer::vtkInternals
     return -1;
   }
 
+  /**
+   * Makes room for time step `index`: with three held, only those the work in
+   * progress needs stay. Memory stays bounded at three time steps whatever
+   * the pipeline asks for (a replay from the start, a jump).
+   */
+  void makeRoomFor(int index)
+  {
+    if (this->Slices.size() < 3)
+    {
+      return;
+    }
+    std::vector<int> keep = this->ResetPending
+      ? this->slicesNeeded(this->StartTime, this->Target)
+      : this->slicesNeeded(this->Active->committed, this->Target);
+    keep.push_back(index);
+    for (auto it = this->Slices.begin(); it != this->Slices.end();)
+    {
+      const bool needed = std::find(keep.begin(), keep.end(), it->first) != keep.end();
+      it = needed ? std::next(it) : this->Slices.erase(it);
+    }
+  }
+
+  /// The input time step after the interval shown at Target (-1 if none):
+  /// the one the next update forward will need.
+  int upcomingIndex() const
+  {
+    if (!this->Unsteady)
+    {
+      return -1;
+    }
+    const int next = this->slicesFor(this->Target, false).back() + 1;
+    return next < int(this->InputTimes.size()) ? next : -1;
+  }
+
   bp::VectorField field(const std::vector<int>& ids) const
   {
     if (ids.size() == 1)
@@ -363,6 +399,10 @@ vtkIdType vtkBoundParticleTracer::GetStepsInLastUpdate() const
 bool vtkBoundParticleTracer::GetLastUpdateReplayed() const
 {
   return this->Internals->LastUpdateReplayed;
+}
+int vtkBoundParticleTracer::GetNumberOfCachedTimeSteps() const
+{
+  return int(this->Internals->Slices.size());
 }
 double vtkBoundParticleTracer::GetResolvedTimeStep() const
 {
@@ -484,21 +524,24 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
 {
   std::ostringstream err;
   vtkImageData* image = vtkImageData::SafeDownCast(input);
-  if (!image)
+  vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(input);
+  vtkDataSet* dataSet = image ? static_cast<vtkDataSet*>(image) : rectilinear;
+  if (!dataSet)
   {
     err << "The input is a " << (input ? input->GetClassName() : "null data object")
-        << "; Bound Particle Tracer needs a vtkImageData (a uniform grid). Resample the data "
-           "onto an image first, e.g. with the Resample To Image filter.";
+        << "; Bound Particle Tracer needs a vtkImageData (a uniform grid) or a "
+           "vtkRectilinearGrid. Resample the data onto an image first, e.g. with the Resample To "
+           "Image filter.";
     return err.str();
   }
-  if (image->GetNumberOfPoints() == 0)
+  if (dataSet->GetNumberOfPoints() == 0)
   {
-    return "The input image is empty: it has no points.";
+    return "The input grid is empty: it has no points.";
   }
   if (!vectors && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     // No array chosen and no active vectors: take the first 3-component point array.
-    vtkPointData* pd = image->GetPointData();
+    vtkPointData* pd = dataSet->GetPointData();
     for (int i = 0; i < pd->GetNumberOfArrays() && !vectors; ++i)
     {
       vtkDataArray* candidate = pd->GetArray(i);
@@ -526,26 +569,74 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
         << " component(s); Bound Particle Tracer needs a 3-component vector array.";
     return err.str();
   }
-  if (vectors->GetNumberOfTuples() != image->GetNumberOfPoints())
+  if (vectors->GetNumberOfTuples() != dataSet->GetNumberOfPoints())
   {
     err << "The array '" << name << "' has " << vectors->GetNumberOfTuples() << " tuples for "
-        << image->GetNumberOfPoints() << " points.";
+        << dataSet->GetNumberOfPoints() << " points.";
     return err.str();
   }
   bp::GridGeometry g;
-  if (!image->GetDirectionMatrix()->IsIdentity())
+  if (image)
   {
-    return "The input image is rotated (its direction matrix is not the identity); Bound "
-           "Particle Tracer needs an axis-aligned grid. Resample it with Resample To Image.";
+    if (!image->GetDirectionMatrix()->IsIdentity())
+    {
+      return "The input image is rotated (its direction matrix is not the identity); Bound "
+             "Particle Tracer needs an axis-aligned grid. Resample it with Resample To Image.";
+    }
+    // Point 0 of an image lies at origin + extent_min * spacing (e.g. after Extract Subset).
+    const int* extent = image->GetExtent();
+    image->GetDimensions(g.dims.data());
+    image->GetOrigin(g.origin.data());
+    image->GetSpacing(g.spacing.data());
+    for (int a = 0; a < 3; ++a)
+    {
+      g.origin[a] += extent[2 * a] * g.spacing[a];
+    }
   }
-  // Point 0 of an image lies at origin + extent_min * spacing (e.g. after Extract Subset).
-  const int* extent = image->GetExtent();
-  image->GetDimensions(g.dims.data());
-  image->GetOrigin(g.origin.data());
-  image->GetSpacing(g.spacing.data());
-  for (int a = 0; a < 3; ++a)
+  else
   {
-    g.origin[a] += extent[2 * a] * g.spacing[a];
+    vtkDataArray* axes[3] = { rectilinear->GetXCoordinates(), rectilinear->GetYCoordinates(),
+      rectilinear->GetZCoordinates() };
+    int dims[3];
+    rectilinear->GetDimensions(dims);
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!axes[a] || axes[a]->GetNumberOfTuples() != dims[a])
+      {
+        err << "The rectilinear grid's "
+            << "XYZ"[a] << " coordinates do not match its " << dims[a]
+            << " points along that axis.";
+        return err.str();
+      }
+      std::vector<double> c(std::size_t(dims[a]));
+      for (int i = 0; i < dims[a]; ++i)
+      {
+        c[std::size_t(i)] = axes[a]->GetComponent(i, 0);
+      }
+      // Evenly spaced axes are sampled the uniform way: fewer operations, and
+      // images and rectilinear grids of the same points trace alike.
+      bool even = c.size() > 1;
+      const double h = even ? (c.back() - c.front()) / double(c.size() - 1) : 1.0;
+      for (std::size_t i = 1; even && i < c.size(); ++i)
+      {
+        even = std::abs((c[i] - c[i - 1]) - h) <= 1e-6 * std::abs(h);
+      }
+      if (even)
+      {
+        g.dims[a] = dims[a];
+        g.origin[a] = c.front();
+        g.spacing[a] = h;
+      }
+      else if (c.size() == 1)
+      {
+        g.dims[a] = 1;
+        g.origin[a] = c.front();
+      }
+      else
+      {
+        g.setCoordinates(a, std::move(c));
+      }
+    }
   }
   auto values = std::make_shared<std::vector<float>>();
   using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
@@ -727,6 +818,7 @@ int vtkBoundParticleTracer::RequestData(
     I.ResetPending = I.needsReplay(I.Target);
     I.StepsInLastUpdate = 0;
     I.LastUpdateReplayed = I.ResetPending;
+    I.ReadThisUpdate = false;
     if (!I.ResetPending && I.Queue && I.Active->showsPartialStep)
     {
       // Take back the short step the last update showed, as the CPU path
@@ -771,25 +863,25 @@ int vtkBoundParticleTracer::RequestData(
                                                     << slice.time << ".");
       }
     }
+    // The engine works in coordinates relative to the grid's first point, so
+    // float positions keep their precision far from the world origin.
+    const std::array<double, 3> offset = grid.origin;
+    grid.translate(offset);
     if (!I.Slices.empty())
     {
       const double tolerance = 1e-9 * std::max(1.0, I.Grid.diagonal());
-      bool same = grid.dims == I.Grid.dims;
+      bool same = grid.sameAs(I.Grid, tolerance);
       for (int a = 0; a < 3; ++a)
       {
-        same = same && std::abs(grid.spacing[a] - I.Grid.spacing[a]) <= tolerance &&
-          std::abs(grid.origin[a] - I.Offset[a]) <= tolerance;
+        same = same && std::abs(offset[a] - I.Offset[a]) <= tolerance;
       }
       if (!same)
       {
         return fail("The input's time steps do not share one grid; every time step must have "
-                    "the same dimensions, origin and spacing.");
+                    "the same dimensions and point coordinates.");
       }
     }
-    // The engine works in coordinates relative to the grid's first point, so
-    // float positions keep their precision far from the world origin.
-    I.Offset = grid.origin;
-    grid.origin = { 0.0, 0.0, 0.0 };
+    I.Offset = offset;
     I.Grid = grid;
     const std::string gridError = grid.validate();
     if (!gridError.empty())
@@ -801,7 +893,9 @@ int vtkBoundParticleTracer::RequestData(
     {
       return fail("Unusable input: " + fieldError + ".");
     }
+    I.makeRoomFor(I.RequestIndex);
     I.Slices[I.RequestIndex] = slice;
+    I.ReadThisUpdate = true;
   }
 
   auto continueWith = [&](int index)
@@ -1033,12 +1127,25 @@ int vtkBoundParticleTracer::RequestData(
         "; please report this with the input's time steps.");
     }
   }
-  I.Continuing = false;
-  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-
   // The output at Target: the committed state, finished with a shorter step
   // on a copy when Target falls between two step boundaries, so that the
   // cache stays on the boundaries.
+  if (I.Queue)
+  {
+    // Read the time step after this interval ahead of need, so the display
+    // can upload it a slab per frame before a step crosses into it. Not in
+    // an update that already read one: that frame has had its share.
+    const int upcoming = I.Queue->streamTimeSteps ? I.upcomingIndex() : -1;
+    if (upcoming >= 0 && !I.Slices.count(upcoming) && !I.ReadThisUpdate)
+    {
+      return continueWith(upcoming);
+    }
+    I.Queue->upcoming =
+      upcoming >= 0 && I.Slices.count(upcoming) ? I.Slices.at(upcoming) : bp::FieldSlice();
+  }
+  I.Continuing = false;
+  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+
   const bp::VectorField field = I.field(I.slicesFor(I.Target, false));
   if (I.Queue)
   {

@@ -262,6 +262,10 @@ public:
   double GetResolvedElementSize() const;
   ///@}
 
+  /// How many input time steps the filter holds (at most three: the two
+  /// around the current time and, for the GPU display, the next one).
+  int GetNumberOfCachedTimeSteps() const;
+
 protected:
   vtkBoundParticleTracer();
   ~vtkBoundParticleTracer() override;

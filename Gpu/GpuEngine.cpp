@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -26,6 +27,37 @@ GLuint makeTexture2D(int width, int height, const float* data = nullptr)
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, data);
   return t;
 }
+
+/// Tightly packed uploads, leaving the caller's unpack state as it was (a
+/// render window's context has its own).
+class TightUnpack
+{
+public:
+  TightUnpack()
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      glGetIntegerv(Names[k], &this->Saved[k]);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+  }
+  ~TightUnpack()
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      glPixelStorei(Names[k], this->Saved[k]);
+    }
+  }
+  TightUnpack(const TightUnpack&) = delete;
+  TightUnpack& operator=(const TightUnpack&) = delete;
+
+private:
+  static constexpr GLenum Names[3] = { GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH,
+    GL_UNPACK_IMAGE_HEIGHT };
+  GLint Saved[3] = { 4, 0, 0 };
+};
 
 /// Packs a list of RGBA texels into a texture `width` texels wide.
 GLuint makeListTexture(const std::vector<float>& rgba, int width)
@@ -197,9 +229,7 @@ struct GpuEngine::Internals
       return;
     }
     glBindTexture(GL_TEXTURE_3D, slot.texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+    TightUnpack unpack;
     const std::size_t layer = std::size_t(g.dims[0]) * g.dims[1] * 3;
     glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, first, g.dims[0], g.dims[1], last - first, GL_RGB,
       GL_FLOAT, slot.data->data() + layer * first);
@@ -298,7 +328,7 @@ struct GpuEngine::Internals
     glBindTexture(GL_TEXTURE_2D, this->AxesTex);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    TightUnpack unpack;
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, GLsizei(width), 6, 0, GL_RG, GL_FLOAT, texels.data());
     return std::string();
   }
@@ -818,6 +848,18 @@ int GpuEngine::stageSlice(const FieldSlice& slice, std::size_t maxBytes)
   const std::size_t layerBytes = std::size_t(g.dims[0]) * g.dims[1] * 3 * sizeof(float);
   S.uploadLayers(slot, g, int(std::max<std::size_t>(1, maxBytes / layerBytes)));
   return std::max(g.dims[2], 1) - slot.layers;
+}
+
+int GpuEngine::stageSliceWithin(const FieldSlice& slice, double seconds)
+{
+  const auto start = std::chrono::steady_clock::now();
+  int remaining;
+  do
+  {
+    remaining = this->stageSlice(slice, std::size_t(1) << 20);
+  } while (remaining > 0 &&
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds);
+  return remaining;
 }
 
 int GpuEngine::residentTimeSteps() const

@@ -55,6 +55,11 @@ public:
   /// upload (0 when it is resident).
   int stageSlice(const FieldSlice& slice, std::size_t maxBytes);
 
+  /// stageSlice() in slabs of about 1 MiB until `seconds` have passed (at
+  /// least one slab): what a renderer spends of a frame on the next time
+  /// step. Returns the layers still to upload.
+  int stageSliceWithin(const FieldSlice& slice, double seconds);
+
   /// How many field time steps are resident (at most three).
   int residentTimeSteps() const;
 

@@ -41,6 +41,7 @@ struct vtkBoundParticleRepresentation::vtkInternals
   bool GpuFailed = false;
   vtkMTimeType FailurePipelineTime = 0;
   int TextureSizeLimit = 0;
+  bool StreamTimeSteps = true;
 };
 
 vtkStandardNewMacro(vtkBoundParticleRepresentation);
@@ -98,6 +99,7 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
       I.Queue->failure.clear();
     }
   }
+  I.Queue->streamTimeSteps = I.StreamTimeSteps;
   if (I.TextureSizeLimit > 0)
   {
     I.Queue->maxTextureSize = I.Queue->maxTextureSize > 0
@@ -175,6 +177,15 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
     this->UpdateColoring();
   }
   return 1;
+}
+
+void vtkBoundParticleRepresentation::SetStreamTimeSteps(bool stream)
+{
+  if (this->Internals->StreamTimeSteps != stream)
+  {
+    this->Internals->StreamTimeSteps = stream;
+    this->Modified();
+  }
 }
 
 void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)

@@ -78,6 +78,12 @@ public:
   /// For tests: caps the GPU engine's textures below GL_MAX_TEXTURE_SIZE.
   void SetGpuTextureSizeLimit(int texels);
 
+  /// With the GPU engine and an unsteady field: read the next time step
+  /// ahead of need and upload it a slab of z layers per frame (on, the
+  /// default), or upload each time step whole in the frame that first needs
+  /// it (off).
+  void SetStreamTimeSteps(bool stream);
+
 protected:
   vtkBoundParticleRepresentation();
   ~vtkBoundParticleRepresentation() override;

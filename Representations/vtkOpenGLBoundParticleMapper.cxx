@@ -40,6 +40,11 @@ namespace
  * cached view of the state (vtkOpenGLState, the texture units, the bound
  * shader) stays true.
  */
+/// What a frame spends on uploading the next field time step: a 128^3
+/// float time step (24 MiB) then arrives over a few frames on a software
+/// renderer, in one or two on a GPU.
+constexpr double StagingSecondsPerFrame = 0.004;
+
 class GLStateGuard
 {
 public:
@@ -351,6 +356,13 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   if (!I.Configured || I.Failed)
   {
     return;
+  }
+  if (I.Queue->streamTimeSteps && I.Queue->upcoming.velocity)
+  {
+    // Upload the next time step a slab at a time, within a small time
+    // budget per frame, so the frame that crosses into it does not stall.
+    GLStateGuard guard;
+    I.Engine.stageSliceWithin(I.Queue->upcoming, StagingSecondsPerFrame);
   }
   if (I.ScalarMode == VELOCITY || I.ScalarMode == VORTICITY)
   {

@@ -14,7 +14,7 @@ mkdir -p "$out"
 /usr/bin/python3 "$root/bench/plot.py" "$out/engines.csv" "$out/engines.png"
 # ParaView's own Particle Tracer on the same job, side by side.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt, $out/paraview_fps.txt"
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt"
 # Frames per second of the Bound Particles display inside ParaView, both engines.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/paraview_fps.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/paraview_fps.txt"

@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageAlgorithm.h"
@@ -20,12 +21,14 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -679,4 +682,133 @@ TEST(BoundParticleTracer, BuiltinElementFilesTraceLikeTheBuiltins)
       worst = std::max(worst, double(std::abs(pa[k] - pb[k])));
     EXPECT_LT(worst, 1e-5);
   }
+}
+
+namespace
+{
+/// A vtkRectilinearGrid over x, y in [0, 1] with the given z layers and the
+/// velocity (wind(z), 0.1, 0) at every point.
+vtkSmartPointer<vtkRectilinearGrid> layeredGrid(
+  const std::vector<double>& z, double (*wind)(double), int nxy = 6)
+{
+  auto grid = vtkSmartPointer<vtkRectilinearGrid>::New();
+  grid->SetDimensions(nxy, nxy, int(z.size()));
+  vtkNew<vtkDoubleArray> xs, zs;
+  for (int i = 0; i < nxy; ++i)
+    xs->InsertNextValue(double(i) / (nxy - 1));
+  for (double value : z)
+    zs->InsertNextValue(value);
+  grid->SetXCoordinates(xs);
+  grid->SetYCoordinates(xs);
+  grid->SetZCoordinates(zs);
+  vtkNew<vtkFloatArray> v;
+  v->SetName("wind");
+  v->SetNumberOfComponents(3);
+  for (std::size_t k = 0; k < z.size(); ++k)
+    for (int j = 0; j < nxy; ++j)
+      for (int i = 0; i < nxy; ++i)
+        v->InsertNextTuple3(wind(z[k]), 0.1, 0.0);
+  grid->GetPointData()->SetVectors(v);
+  return grid;
+}
+
+double logWind(double z)
+{
+  return 5.0 * std::log1p(z / 0.05); // a boundary-layer profile
+}
+} // namespace
+
+TEST(BoundParticleTracer, StretchedAltitudeLayersAreSampledExactly)
+{
+  // Layers crowded near the ground, as in thesis §3.4, and a wind that is a
+  // known function of altitude: the sampled velocity at every particle is
+  // the linear interpolation between the two layers around it.
+  std::vector<double> z;
+  for (int k = 0; k < 12; ++k)
+    z.push_back(0.02 * (std::pow(1.45, k) - 1.0));
+  auto grid = layeredGrid(z, logWind);
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(grid);
+  auto tracer = tracerOn(producer, 300);
+  tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+  tracer->SetElementSize(0.01);
+  ErrorLog errors(tracer);
+  vtkPolyData* out = at(tracer, 0.05);
+  ASSERT_TRUE(errors.messages.empty()) << errors.messages.front();
+  ASSERT_EQ(out->GetNumberOfPoints(), 300);
+  vtkDataArray* velocity = out->GetPointData()->GetArray("Velocity");
+  ASSERT_NE(velocity, nullptr);
+  int checked = 0, lowLayers = 0;
+  for (vtkIdType id = 0; id < out->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    out->GetPoint(id, p);
+    const auto upper = std::upper_bound(z.begin(), z.end(), p[2]);
+    if (upper == z.begin() || upper == z.end())
+      continue; // outside the layers: reset elements sit on the bounds
+    const std::size_t k = std::size_t(upper - z.begin()) - 1;
+    const double w = (p[2] - z[k]) / (z[k + 1] - z[k]);
+    const double expected = logWind(z[k]) + w * (logWind(z[k + 1]) - logWind(z[k]));
+    EXPECT_NEAR(velocity->GetComponent(id, 0), expected, 1e-4 * std::max(1.0, expected))
+      << "at z = " << p[2];
+    EXPECT_NEAR(velocity->GetComponent(id, 1), 0.1, 1e-6);
+    ++checked;
+    lowLayers += k < 5;
+  }
+  EXPECT_GT(checked, 250);
+  EXPECT_GT(lowLayers, 0); // the thin layers near the ground are exercised
+
+  // A rectilinear grid with even axes traces exactly like the same image.
+  auto even = layeredGrid({ 0.0, 0.2, 0.4, 0.6, 0.8, 1.0 }, logWind);
+  auto img = image(6, 6, 6);
+  img->SetSpacing(0.2, 0.2, 0.2);
+  img->GetPointData()->SetVectors(even->GetPointData()->GetVectors());
+  vtkNew<vtkTrivialProducer> evenProducer, imageProducer;
+  evenProducer->SetOutput(even);
+  imageProducer->SetOutput(img);
+  auto onGrid = tracerOn(evenProducer, 50), onImage = tracerOn(imageProducer, 50);
+  EXPECT_EQ(pointsOf(at(onGrid, 0.5)), pointsOf(at(onImage, 0.5)));
+
+  // Layers out of order are an error that says so.
+  auto broken = layeredGrid({ 0.0, 0.3, 0.2, 1.0 }, logWind);
+  expectRejected(broken, "strictly increasing");
+}
+
+TEST(BoundParticleTracer, TimeStepsAreReadOnceAndAtMostThreeAreHeld)
+{
+  auto source = flow(vtkAnalyticFlowSource::DOUBLE_GYRE);
+  source->SetResolution(20, 10, 2);
+  source->SetBounds(0, 2, 0, 1, 0, 0.1);
+  std::vector<double> requested;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetClientData(&requested);
+  counter->SetCallback(
+    [](vtkObject* caller, unsigned long, void* log, void*)
+    {
+      auto* algorithm = static_cast<vtkAlgorithm*>(caller);
+      vtkInformation* info = algorithm->GetOutputInformation(0);
+      static_cast<std::vector<double>*>(log)->push_back(
+        info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
+    });
+  source->AddObserver(vtkCommand::EndEvent, counter);
+  auto tracer = tracerOn(source, 50);
+  // Play forward four frames per data interval (time steps every 0.5).
+  for (int frame = 0; frame <= 40; ++frame)
+  {
+    at(tracer, 0.125 * frame);
+    EXPECT_LE(tracer->GetNumberOfCachedTimeSteps(), 3) << "frame " << frame;
+  }
+  // Each time step up to t = 5 was read once, in order.
+  ASSERT_EQ(requested.size(), 11u);
+  for (std::size_t k = 0; k < requested.size(); ++k)
+    EXPECT_NEAR(requested[k], 0.5 * double(k), 1e-12);
+  // Back to the start and forward again: a replay reads what it needs,
+  // within the same bound.
+  requested.clear();
+  at(tracer, 0.3);
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  EXPECT_LE(tracer->GetNumberOfCachedTimeSteps(), 3);
+  at(tracer, 1.2);
+  EXPECT_LE(tracer->GetNumberOfCachedTimeSteps(), 3);
+  EXPECT_EQ(requested.size(), 4u); // t = 0, 0.5, 1, 1.5
 }

@@ -63,11 +63,12 @@ def render(source, representation, color, scalar_range, name, time=1.0, size=(32
     return path
 
 
-def compare_paths(cpu, gpu, color, scalar_range, name, frames=()):
+def compare_paths(cpu, gpu, color, scalar_range, name, frames=(), time=1.0, **display):
     """Draws the CPU path as Surface and the GPU path as Bound Particles (played
     through `frames` first) and checks that they agree; returns the GPU image."""
-    cpu_image = render(cpu, "Surface", color, scalar_range, name + "_cpu")
-    gpu_image = render(gpu, "Bound Particles", color, scalar_range, name, frames=frames)
+    cpu_image = render(cpu, "Surface", color, scalar_range, name + "_cpu", time=time)
+    gpu_image = render(gpu, "Bound Particles", color, scalar_range, name, time=time,
+                       frames=frames, **display)
     mean, pixels = bptest.image_difference(cpu_image, gpu_image)
     bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
                  "%s: GPU vs CPU differ: mean %.3f, pixels %.4f" % (name, mean, pixels))
@@ -126,6 +127,20 @@ gpu = tracer("Fish", "GPU", 1000)
 gpu_image = compare_paths(cpu, gpu, "Speed", (0.0, 1.3), "Fish1000",
                           frames=[0.0, 0.2, 0.35, 0.6, 0.3, 0.8])  # on, between, back
 bptest.check(bptest.covered_fraction(gpu_image) > 0.02, "1000 fish are drawn")
+
+# An unsteady field played across its time steps, four frames per interval:
+# with the next time step streamed to the GPU a slab per frame, and without.
+gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[40, 24, 6], NumberOfTimeSteps=9)
+for stream in (1, 0):
+    traces = [BoundParticleTracer(Input=gyre, ElementShape="Strip8", NumberOfElements=300,
+                                  ElementSize=0.15, Seed=5, Engine=engine)
+              for engine in ("CPU", "GPU")]
+    gyre_image = compare_paths(traces[0], traces[1], None, None, "Gyre_stream%d" % stream,
+                               frames=[0.125 * k for k in range(24)], time=3.0,
+                               StreamTimeSteps=stream)
+    bptest.check(bptest.covered_fraction(gyre_image) > 0.01, "the gyre's strips are drawn")
+    for trace in traces:
+        Delete(trace)
 
 # No stale frames: while the GPU display shows the trace, every other consumer
 # of the same output gets the CPU result.
