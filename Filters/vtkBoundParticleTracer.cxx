@@ -214,6 +214,7 @@ struct vtkBoundParticleTracer::vtkInternals
   std::array<double, 3> Offset = { 0, 0, 0 }; // world position of the grid's first point
   std::map<int, bp::FieldSlice> Slices;       // by input time index, at most three
   int RequestIndex = 0;
+  int LastRequested = -1; // the input time step last asked for: what upstream holds
   bool Continuing = false;
   bool ReadThisUpdate = false; // a time step came from upstream in this update
 
@@ -445,6 +446,7 @@ int vtkBoundParticleTracer::RequestInformation(
   I.clear();
 
   I.InputTimes.clear();
+  I.LastRequested = -1;
   if (inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
   {
     const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
@@ -501,12 +503,24 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     const std::vector<int> needed =
       I.slicesNeeded(replay ? I.StartTime : I.Active->committed, target);
     const int missing = I.firstMissing(needed);
-    I.RequestIndex = missing >= 0 ? missing : needed.back();
+    // With every time step in hand, ask for the one upstream already holds,
+    // so that nothing upstream runs again (a reader would read, ParaView
+    // would gather its data information).
+    I.RequestIndex = missing >= 0 ? missing
+      : I.LastRequested >= 0      ? I.LastRequested
+                                  : needed.back();
   }
 
+  // The GPU request concerns this filter only. The pipeline copies request
+  // keys upstream with every update-extent request; left there, each
+  // alternation between the GPU display and another consumer would make
+  // every algorithm upstream run again (a reader re-read its time step and
+  // ParaView gathered its data information, every frame).
+  inInfo->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
   if (I.Unsteady)
   {
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), I.InputTimes[I.RequestIndex]);
+    I.LastRequested = I.RequestIndex;
   }
   else
   {
@@ -839,8 +853,13 @@ int vtkBoundParticleTracer::RequestData(
     }
   }
 
-  // Take the time step this pass asked for.
-  if (!I.Slices.count(I.RequestIndex))
+  // Take the time step this pass asked for, if the work needs it: a first
+  // pass with every time step in hand asked for whatever upstream held.
+  const std::vector<int> planned = I.ResetPending ? I.slicesNeeded(I.StartTime, I.Target)
+                                                  : I.slicesNeeded(I.Active->committed, I.Target);
+  const bool wanted =
+    I.Continuing || std::find(planned.begin(), planned.end(), I.RequestIndex) != planned.end();
+  if (wanted && !I.Slices.count(I.RequestIndex))
   {
     bp::GridGeometry grid;
     bp::FieldSlice slice;
