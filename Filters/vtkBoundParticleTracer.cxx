@@ -217,6 +217,7 @@ struct vtkBoundParticleTracer::vtkInternals
   int LastRequested = -1; // the input time step last asked for: what upstream holds
   bool Continuing = false;
   bool ReadThisUpdate = false; // a time step came from upstream in this update
+  int IntervalAtStart = -1;    // the data interval shown before this update (-1: a replay)
 
   double ResolvedDt = 0.0;
   double ResolvedElementSize = 0.0;
@@ -833,6 +834,8 @@ int vtkBoundParticleTracer::RequestData(
     I.StepsInLastUpdate = 0;
     I.LastUpdateReplayed = I.ResetPending;
     I.ReadThisUpdate = false;
+    I.IntervalAtStart =
+      I.ResetPending || !I.Unsteady ? -1 : I.slicesFor(I.Active->committed, false).front();
     if (!I.ResetPending && I.Queue && I.Active->showsPartialStep)
     {
       // Take back the short step the last update showed, as the CPU path
@@ -1152,10 +1155,13 @@ int vtkBoundParticleTracer::RequestData(
   if (I.Queue)
   {
     // Read the time step after this interval ahead of need, so the display
-    // can upload it a slab per frame before a step crosses into it. Not in
-    // an update that already read one: that frame has had its share.
+    // can upload it a slab per frame before a step crosses into it. Only in
+    // an update that stays in its interval and read nothing: a frame that
+    // crosses a time step has had its share.
     const int upcoming = I.Queue->streamTimeSteps ? I.upcomingIndex() : -1;
-    if (upcoming >= 0 && !I.Slices.count(upcoming) && !I.ReadThisUpdate)
+    const bool quietFrame =
+      !I.ReadThisUpdate && I.IntervalAtStart == I.slicesFor(I.Target, false).front();
+    if (upcoming >= 0 && !I.Slices.count(upcoming) && quietFrame)
     {
       return continueWith(upcoming);
     }
