@@ -4,6 +4,7 @@
 #include "CounterHash.h"
 #include "ShapeMatching.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -71,6 +72,30 @@ std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R)
   return { float(q.x()), float(q.y()), float(q.z()), float(q.w()) };
 }
 
+std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size)
+{
+  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+  for (const auto& r : shape.rest)
+  {
+    const Eigen::Vector3d q(double(size) * r[0], double(size) * r[1], double(size) * r[2]);
+    moment += q * q.transpose();
+  }
+  // Pseudo-inverse: directions the template does not span (the normal of a
+  // flat one) get no stretch rather than an infinite one.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(moment);
+  const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
+  Eigen::Vector3d inverse = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+  {
+    const double lambda = eigen.eigenvalues()[k];
+    if (largest > 0.0 && lambda > 1e-6 * largest)
+    {
+      inverse[k] = 1.0 / lambda;
+    }
+  }
+  return toRowMajor(eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose());
+}
+
 std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
 {
   std::ostringstream err;
@@ -120,6 +145,22 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   if (!(p.shapeStiffness >= 0.0f && p.shapeStiffness <= 1.0f))
   {
     return "the shape-matching stiffness must lie in [0, 1]";
+  }
+  if (!(p.linearBlend >= 0.0f && p.linearBlend <= 1.0f))
+  {
+    return "the linear shape-matching blend (beta) must lie in [0, 1]";
+  }
+  if (int(p.linking) < int(Linking::None) || int(p.linking) > int(Linking::Torus))
+  {
+    return "Linking must be None, Chain, Ring, Sheet, Tube or Torus";
+  }
+  if (p.latticeWidth < 0)
+  {
+    return "LatticeWidth must not be negative (0 chooses a near-square lattice)";
+  }
+  if (!(p.linkStiffness >= 0.0f && p.linkStiffness <= 1.0f))
+  {
+    return "LinkStiffness must lie in [0, 1]";
   }
 
   return std::string();
@@ -187,13 +228,23 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   this->ResetFlags.assign(E, 0);
   this->Orientations.assign(4 * E, 0.0f);
   this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->RestMomentInverse = restMomentInverse(shape, p.elementSize);
+  this->Links = makeLinkTable(p.linking, E, p.latticeWidth, p.emitterMin, p.emitterMax);
+  const std::size_t linkedValues = this->Links.empty() ? 0 : 3 * E * n;
+  this->LinkBefore.assign(linkedValues, 0.0f);
+  this->LinkAdvected.assign(linkedValues, 0.0f);
+  this->LinkSnapshot.assign(linkedValues, 0.0f);
   return std::string();
 }
 
 void Engine::place(std::size_t e)
 {
   const Parameters& P = this->Params;
-  const std::uint32_t element = std::uint32_t(e), generation = this->Generations[e];
+  // A super set is released as one: every element draws as element 0 does,
+  // and sits at its lattice site.
+  const bool linked = !this->Links.empty();
+  const std::uint32_t element = linked ? 0u : std::uint32_t(e);
+  const std::uint32_t generation = this->Generations[e];
   float u[7];
   for (std::uint32_t d = 0; d < 7; ++d)
   {
@@ -202,7 +253,8 @@ void Engine::place(std::size_t e)
   float c[3];
   for (int k = 0; k < 3; ++k)
   {
-    c[k] = P.emitterMin[k] + u[k] * (P.emitterMax[k] - P.emitterMin[k]);
+    c[k] = linked ? this->Links.sites[3 * e + k]
+                  : P.emitterMin[k] + u[k] * (P.emitterMax[k] - P.emitterMin[k]);
     this->InitialCenters[3 * e + k] = c[k];
   }
   const std::array<float, 4> q =
@@ -352,6 +404,21 @@ void Engine::matchShape(float* p, float* orientation) const
   extractRotation(A, orientation);
   float R[9];
   quaternionToMatrix(orientation, R);
+  if (this->Params.linearShapeMatching)
+  {
+    // Goals from M = beta * A Aqq^-1 + (1 - beta) * R (Müller et al. 2005, §4.3).
+    const float beta = this->Params.linearBlend;
+    const float* Q = this->RestMomentInverse.data();
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int col = 0; col < 3; ++col)
+      {
+        const float linear =
+          A[3 * row] * Q[col] + A[3 * row + 1] * Q[3 + col] + A[3 * row + 2] * Q[6 + col];
+        R[3 * row + col] = beta * linear + (1.0f - beta) * R[3 * row + col];
+      }
+    }
+  }
   const float k = this->Params.shapeStiffness;
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -372,65 +439,75 @@ void Engine::matchShape(float* p, float* orientation) const
 
 void Engine::restore(float* p, float* acc, float* orientation) const
 {
-  const std::size_t n = this->Shape.particleCount();
-  const Restoration method = this->Params.restoration;
   for (int it = 0; it < this->Params.iterations; ++it)
   {
-    if (method == Restoration::ShapeMatching)
-    {
-      this->matchShape(p, orientation);
-      continue;
-    }
-    if (method == Restoration::GaussSeidel)
-    {
-      // Each spring moves its ends at once, so later springs see the update.
-      for (const SpringWork& s : this->GaussSeidelSprings)
-      {
-        float c[3];
-        if (springCorrection(p, s, c))
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            p[3 * s.a + k] += s.shareA * c[k];
-            p[3 * s.b + k] -= s.shareB * c[k];
-          }
-        }
-      }
-      continue;
-    }
-    // Jacobi: every spring sees the positions of the previous iteration. Each
-    // particle's corrections are summed in spring order, as a per-particle
-    // gather over a spring list sorted by index sums them.
-    std::fill_n(acc, 3 * n, 0.0f);
-    for (const SpringWork& s : this->Springs)
+    this->restoreOnce(p, acc, orientation);
+  }
+}
+
+bool Engine::restoresElements() const
+{
+  return !this->Springs.empty() || this->Params.restoration == Restoration::ShapeMatching;
+}
+
+void Engine::restoreOnce(float* p, float* acc, float* orientation) const
+{
+  const std::size_t n = this->Shape.particleCount();
+  const Restoration method = this->Params.restoration;
+  if (method == Restoration::ShapeMatching)
+  {
+    this->matchShape(p, orientation);
+    return;
+  }
+  if (method == Restoration::GaussSeidel)
+  {
+    // Each spring moves its ends at once, so later springs see the update.
+    for (const SpringWork& s : this->GaussSeidelSprings)
     {
       float c[3];
       if (springCorrection(p, s, c))
       {
         for (int k = 0; k < 3; ++k)
         {
-          acc[3 * s.a + k] += s.shareA * c[k];
-          acc[3 * s.b + k] -= s.shareB * c[k];
+          p[3 * s.a + k] += s.shareA * c[k];
+          p[3 * s.b + k] -= s.shareB * c[k];
         }
       }
     }
-    if (method == Restoration::AveragedJacobi)
+    return;
+  }
+  // Jacobi: every spring sees the positions of the previous iteration. Each
+  // particle's corrections are summed in spring order, as a per-particle
+  // gather over a spring list sorted by index sums them.
+  std::fill_n(acc, 3 * n, 0.0f);
+  for (const SpringWork& s : this->Springs)
+  {
+    float c[3];
+    if (springCorrection(p, s, c))
     {
-      for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          p[3 * i + k] += acc[3 * i + k] * this->InverseDegree[i];
-        }
+        acc[3 * s.a + k] += s.shareA * c[k];
+        acc[3 * s.b + k] -= s.shareB * c[k];
       }
     }
-    else
+  }
+  if (method == Restoration::AveragedJacobi)
+  {
+    for (std::size_t i = 0; i < n; ++i)
     {
-      const float w = this->Params.relaxation;
-      for (std::size_t i = 0; i < 3 * n; ++i)
+      for (int k = 0; k < 3; ++k)
       {
-        p[i] += w * acc[i];
+        p[3 * i + k] += acc[3 * i + k] * this->InverseDegree[i];
       }
+    }
+  }
+  else
+  {
+    const float w = this->Params.relaxation;
+    for (std::size_t i = 0; i < 3 * n; ++i)
+    {
+      p[i] += w * acc[i];
     }
   }
 }
@@ -456,11 +533,18 @@ void Engine::stepElement(
     }
   }
   std::copy_n(p, 3 * n, advected);
-  if (!this->Springs.empty() || this->Params.restoration == Restoration::ShapeMatching)
+  if (this->restoresElements())
   {
     this->restore(p, scratch.data() + 6 * n, this->Orientations.data() + 4 * e);
   }
+  this->settle(e, field, h, before, advected);
+}
 
+void Engine::settle(
+  std::size_t e, const VectorField& field, double h, const float* before, const float* advected)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
   bool finite = true;
   float* force = this->Forces.data() + e * n;
   // Summed in float, particle by particle, as the GPU engine sums it.
@@ -497,12 +581,134 @@ void Engine::stepElement(
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
     leave = !field.contains(center);
   }
-  this->ResetFlags[e] = leave ? 1 : 0;
+  // A super set's element stays (and keeps its last good positions when they
+  // turn non-finite): resetting it alone would tear the structure.
+  this->ResetFlags[e] = leave && this->Links.empty() ? 1 : 0;
   this->Lifetimes[e] -= float(h);
+}
+
+void Engine::restoreLinks(std::size_t e)
+{
+  const std::size_t n = this->Shape.particleCount();
+  const float* snapshot = this->LinkSnapshot.data();
+  float* p = this->Positions.data() + 3 * e * n;
+  const std::int32_t* neighbour = &this->Links.neighbours[LinkDirections * e];
+  const float* rest = &this->Links.rest[LinkDirections * e];
+  const float stiffness = this->Params.linkStiffness;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (this->Pinned[i])
+    {
+      continue; // and so is particle i of every neighbour
+    }
+    const float* q = snapshot + 3 * (e * n + i);
+    float acc[3] = { 0, 0, 0 };
+    int count = 0;
+    for (int d = 0; d < LinkDirections; ++d)
+    {
+      if (neighbour[d] < 0)
+      {
+        continue;
+      }
+      ++count;
+      const float* o = snapshot + 3 * (std::size_t(neighbour[d]) * n + i);
+      const float v[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] };
+      const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (len > 0.0f)
+      {
+        // Each end takes half, as a spring within an element does.
+        const float f = stiffness * (rest[d] - len) / len;
+        for (int k = 0; k < 3; ++k)
+        {
+          acc[k] += 0.5f * (f * v[k]);
+        }
+      }
+    }
+    if (count > 0)
+    {
+      const float average = 1.0f / float(count);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[3 * i + k] = q[k] + acc[k] * average;
+      }
+    }
+  }
+}
+
+void Engine::stepLinked(const VectorField& field, double t, double h, const RangeRunner& run)
+{
+  const std::size_t n = this->Shape.particleCount(), E = this->elementCount();
+  run(E,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
+        {
+          ++this->Generations[e];
+          this->place(e);
+        }
+        float* p = this->Positions.data() + 3 * e * n;
+        std::copy_n(p, 3 * n, this->LinkBefore.data() + 3 * e * n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          if (!this->Pinned[i])
+          {
+            this->advectParticle(field, t, h, p + 3 * i);
+          }
+        }
+        std::copy_n(p, 3 * n, this->LinkAdvected.data() + 3 * e * n);
+      }
+    });
+  for (int it = 0; it < this->Params.iterations; ++it)
+  {
+    if (this->restoresElements())
+    {
+      run(E,
+        [&](std::size_t begin, std::size_t end)
+        {
+          std::vector<float> acc(3 * n);
+          for (std::size_t e = begin; e < end; ++e)
+          {
+            this->restoreOnce(
+              this->Positions.data() + 3 * e * n, acc.data(), this->Orientations.data() + 4 * e);
+          }
+        });
+    }
+    // Links read the positions all elements had after this iteration.
+    run(E,
+      [&](std::size_t begin, std::size_t end)
+      {
+        std::copy(this->Positions.begin() + 3 * begin * n, this->Positions.begin() + 3 * end * n,
+          this->LinkSnapshot.begin() + 3 * begin * n);
+      });
+    run(E,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t e = begin; e < end; ++e)
+        {
+          this->restoreLinks(e);
+        }
+      });
+  }
+  run(E,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        this->settle(
+          e, field, h, this->LinkBefore.data() + 3 * e * n, this->LinkAdvected.data() + 3 * e * n);
+      }
+    });
 }
 
 void Engine::step(const VectorField& field, double t, double h, const RangeRunner& run)
 {
+  if (!this->Links.empty())
+  {
+    this->stepLinked(field, t, h, run);
+    return;
+  }
   const std::size_t n = this->Shape.particleCount();
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)

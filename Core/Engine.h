@@ -28,6 +28,7 @@
 
 #include "ElementTemplate.h"
 #include "Parallel.h"
+#include "SuperSet.h"
 #include "VectorField.h"
 
 #include <array>
@@ -82,6 +83,18 @@ struct Parameters
   float relaxation = 0.2f;
   /// Shape matching: how far each iteration moves particles to their goals, in [0, 1].
   float shapeStiffness = 1.0f;
+  /// Shape matching's linear mode (Müller et al. 2005, §4.3): goals from
+  /// beta * A + (1 - beta) * R, A the best linear (affine) fit and R its
+  /// rotation, so elements may also shear and stretch, by up to beta.
+  bool linearShapeMatching = false;
+  float linearBlend = 0.5f; ///< beta, in [0, 1]
+  /// Super sets (Core/SuperSet.h): springs between neighbouring elements.
+  /// Linked elements are released together at their lattice sites, with one
+  /// orientation and one lifetime, and are not reset when they leave the field
+  /// (that would tear the structure): the structure lives out its lifetime.
+  Linking linking = Linking::None;
+  int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
+  float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
   std::uint32_t seed = 0;
 };
@@ -96,6 +109,13 @@ std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3);
 
 /// The unit quaternion (x, y, z, w) of a row-major rotation matrix.
 std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R);
+
+/**
+ * Linear shape matching's (sum q q^T)^-1 over the template's rest positions q
+ * scaled by `size`, row-major; a pseudo-inverse, so that flat and line-like
+ * templates (whose moment has rank 2 or 1) fit within their own span.
+ */
+std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size);
 
 class Engine
 {
@@ -133,6 +153,8 @@ public:
   const std::vector<float>& orientations() const { return this->Orientations; }
   /// Elements flagged for reset at the next step.
   const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
+  /// The super set's links (empty without Linking).
+  const LinkTable& links() const { return this->Links; }
 
   /// For tests: direct access to the positions of the system.
   std::vector<float>& mutablePositions() { return this->Positions; }
@@ -154,7 +176,18 @@ private:
   /// K iterations on one element's positions; `acc` holds 3n floats of
   /// scratch, `orientation` the element's quaternion (shape matching).
   void restore(float* p, float* acc, float* orientation) const;
+  /// One of those iterations.
+  void restoreOnce(float* p, float* acc, float* orientation) const;
   void matchShape(float* p, float* orientation) const;
+  bool restoresElements() const;
+  /// Forces, the reposition test and the lifetime after restoration.
+  void settle(
+    std::size_t e, const VectorField& field, double h, const float* before, const float* advected);
+  /// A step of a super set: each restoration iteration is followed by one
+  /// averaged Jacobi pass over the links, so elements wait for each other.
+  void stepLinked(const VectorField& field, double t, double h, const RangeRunner& run);
+  /// That pass for element e, reading LinkSnapshot.
+  void restoreLinks(std::size_t e);
   void normalsOf(std::size_t e);
 
   ElementTemplate Shape;
@@ -173,6 +206,12 @@ private:
   std::vector<float> Orientations;
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::vector<std::uint8_t> ResetFlags;
+  std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+
+  LinkTable Links;
+  // A super set's step runs in phases over all elements: its before, advected
+  // and per-iteration positions are kept for the whole system.
+  std::vector<float> LinkBefore, LinkAdvected, LinkSnapshot;
 };
 
 /**

@@ -227,7 +227,8 @@ struct vtkBoundParticleTracer::vtkInternals
   // The output's cells, built at each replay (they depend on the element
   // count and the shape only).
   vtkSmartPointer<vtkCellArray> Cells;
-  int CellsKind = -1; // 0 vertices, 1 lines, 2 triangles
+  vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
+  int CellsKind = -1;                      // 0 vertices, 1 lines, 2 triangles
 
   double timeEpsilon() const
   {
@@ -743,6 +744,31 @@ std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::El
   return error.empty() ? error : "The Element Template input is unusable: " + error + ".";
 }
 
+/// A line per link of a super set: particle i of an element to particle i of
+/// its neighbour, each link once.
+vtkSmartPointer<vtkCellArray> buildLinkCells(const bp::LinkTable& links, std::size_t n)
+{
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(vtkIdType(2 * links.linkCount() * n));
+  vtkIdType* out = connectivity->GetPointer(0);
+  const std::size_t elements = links.sites.size() / 3;
+  for (std::size_t e = 0; e < elements; ++e)
+  {
+    for (int d : { 0, 2 }) // +u and +v: each link once
+    {
+      const std::int32_t f = links.neighbours[bp::LinkDirections * e + d];
+      for (std::size_t i = 0; f >= 0 && i < n; ++i)
+      {
+        *out++ = vtkIdType(e * n + i);
+        *out++ = vtkIdType(std::size_t(f) * n + i);
+      }
+    }
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(2, connectivity);
+  return cells;
+}
+
 vtkSmartPointer<vtkCellArray> buildCells(
   const bp::ElementTemplate& shape, std::size_t elements, int& kind)
 {
@@ -1024,6 +1050,11 @@ int vtkBoundParticleTracer::RequestData(
     p.iterations = this->RestorationIterations;
     p.relaxation = float(this->RelaxationFactor);
     p.shapeStiffness = float(this->ShapeMatchingStiffness);
+    p.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
+    p.linearBlend = float(this->LinearShapeMatchingBeta);
+    p.linking = bp::Linking(this->Linking);
+    p.latticeWidth = this->LatticeWidth;
+    p.linkStiffness = float(this->LinkStiffness);
     p.resetWhen = bp::ResetWhen(this->ResetWhen);
     p.seed = std::uint32_t(this->Seed);
 
@@ -1236,6 +1267,12 @@ int vtkBoundParticleTracer::RequestData(
   if (!I.Cells)
   {
     I.Cells = buildCells(engine.shape(), E, I.CellsKind);
+    I.LinkCells = engine.links().empty() ? nullptr : buildLinkCells(engine.links(), n);
+    if (I.LinkCells && I.CellsKind == 1)
+    {
+      // Springs drawn as lines: the links join them in the one line array.
+      I.Cells->Append(I.LinkCells);
+    }
   }
   switch (I.CellsKind)
   {
@@ -1247,6 +1284,10 @@ int vtkBoundParticleTracer::RequestData(
       break;
     default:
       output->SetPolys(I.Cells);
+  }
+  if (I.LinkCells && I.CellsKind != 1)
+  {
+    output->SetLines(I.LinkCells);
   }
 
   vtkPointData* pd = output->GetPointData();

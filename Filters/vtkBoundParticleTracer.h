@@ -82,6 +82,20 @@ public:
     EDGES_AND_DIAGONALS,
     ALL_PAIRS
   };
+  enum ShapeMatchingModes
+  {
+    RIGID = 0,
+    LINEAR
+  };
+  enum LinkingModes
+  {
+    NO_LINKING = 0,
+    CHAIN,
+    RING,
+    SHEET,
+    TUBE,
+    TORUS
+  };
   enum StepSizeUnits
   {
     CELL_LENGTH = 0,
@@ -180,6 +194,33 @@ public:
   vtkGetMacro(RelaxationFactor, double);
   vtkSetClampMacro(ShapeMatchingStiffness, double, 0.0, 1.0);
   vtkGetMacro(ShapeMatchingStiffness, double);
+  ///@}
+
+  ///@{
+  /// Shape matching's fit: RIGID (default) or LINEAR (Müller et al. 2005,
+  /// §4.3: goals from beta * A + (1 - beta) * R, A the best affine fit, so
+  /// elements may also shear and stretch). LinearShapeMatchingBeta is beta.
+  vtkSetClampMacro(ShapeMatchingMode, int, RIGID, LINEAR);
+  vtkGetMacro(ShapeMatchingMode, int);
+  vtkSetClampMacro(LinearShapeMatchingBeta, double, 0.0, 1.0);
+  vtkGetMacro(LinearShapeMatchingBeta, double);
+  ///@}
+
+  ///@{
+  /// Super sets (thesis §5.1): Linking NO_LINKING (default), CHAIN, RING,
+  /// SHEET, TUBE or TORUS joins particle i of each element to particle i of
+  /// its neighbours on a lattice (element order; W x H for the last three,
+  /// W = LatticeWidth, 0 for near square) with springs of LinkStiffness, so
+  /// all elements form one deformable structure. The structure is released
+  /// from lattice sites filling the emitter box, with one orientation and one
+  /// lifetime, and lives out its lifetime even where it leaves the field. The
+  /// links are output as lines.
+  vtkSetClampMacro(Linking, int, NO_LINKING, TORUS);
+  vtkGetMacro(Linking, int);
+  vtkSetClampMacro(LatticeWidth, int, 0, VTK_INT_MAX);
+  vtkGetMacro(LatticeWidth, int);
+  vtkSetClampMacro(LinkStiffness, double, 0.0, 1.0);
+  vtkGetMacro(LinkStiffness, double);
   ///@}
 
   ///@{
@@ -293,6 +334,11 @@ protected:
   int RestorationIterations = 1;
   double RelaxationFactor = 0.2;
   double ShapeMatchingStiffness = 1.0;
+  int ShapeMatchingMode = RIGID;
+  double LinearShapeMatchingBeta = 0.5;
+  int Linking = NO_LINKING;
+  int LatticeWidth = 0;
+  double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
   int Seed = 0;
   double Duration = 10.0;

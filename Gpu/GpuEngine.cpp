@@ -59,6 +59,32 @@ private:
   GLint Saved[3] = { 4, 0, 0 };
 };
 
+/// A W x H texture of per-element values (element e at (e % W, e / W), so
+/// row-major texel order is element order), 4 per element, zero padded.
+GLuint makeElementTexture(int width, int height, const std::vector<float>& perElement)
+{
+  std::vector<float> padded(std::size_t(width) * height * 4, 0.0f);
+  std::copy(perElement.begin(), perElement.end(), padded.begin());
+  TightUnpack unpack;
+  return makeTexture2D(width, height, padded.data());
+}
+
+/// The same with signed integers (RGBA32I), for element indices beyond 2^24.
+GLuint makeElementIndexTexture(int width, int height, const std::vector<std::int32_t>& perElement)
+{
+  std::vector<std::int32_t> padded(std::size_t(width) * height * 4, -1);
+  std::copy(perElement.begin(), perElement.end(), padded.begin());
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  TightUnpack unpack;
+  glTexImage2D(
+    GL_TEXTURE_2D, 0, GL_RGBA32I, width, height, 0, GL_RGBA_INTEGER, GL_INT, padded.data());
+  return t;
+}
+
 /// Packs a list of RGBA texels into a texture `width` texels wide.
 GLuint makeListTexture(const std::vector<float>& rgba, int width)
 {
@@ -152,7 +178,12 @@ struct GpuEngine::Internals
   GLuint GaussSeidel = 0, ColouredSprings = 0;
   int Colours = 0;
   GLuint Reset = 0, Advect = 0, Restore = 0, Match = 0, MatchApply = 0, Test = 0, Finalize = 0,
-         Normals = 0;
+         Normals = 0, Link = 0;
+  GLuint MatchLinear[2] = { 0, 0 }; // the linear mode's goal matrix, packed (bp_match.frag)
+  std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  // A super set: per element its lattice site, its neighbours and link rest lengths.
+  bool Linked = false;
+  GLuint LatticeSites = 0, LinkNeighbours = 0, LinkRest = 0;
   GLuint ElementState[2] = { 0, 0 }, Centers[2] = { 0, 0 };
   int C = 0;   // current centres: only the reset pass writes them, so they flip apart
   int Cur = 0; // current element textures
@@ -408,6 +439,10 @@ struct GpuEngine::Internals
     setVec3(p, "bpFrameRow2", this->Params.frame.data() + 6);
     setFloat(p, "bpLifetimeMin", this->Params.lifetimeMin);
     setFloat(p, "bpLifetimeMax", this->Params.lifetimeMax);
+    setInt(p, "bpLinked", this->Linked ? 1 : 0);
+    // Bound even when unused: an unbound sampler would share unit 0 with
+    // samplers of other types, and GL refuses to draw.
+    this->bind(p, "bpLatticeSites", this->LatticeSites);
     if (this->Field)
     {
       const VectorField::SamplingConstants c = this->Field->samplingConstants();
@@ -529,7 +564,8 @@ struct GpuEngine::Internals
       this->Springs, this->Triangles, this->Slots[0].texture, this->Slots[1].texture,
       this->Slots[2].texture, this->AxesTex, this->Orientations[0], this->Orientations[1],
       this->MatchCenters, this->ColouredSprings, this->Samples, this->Saved[0], this->Saved[1],
-      this->Saved[2], this->Saved[3] };
+      this->Saved[2], this->Saved[3], this->MatchLinear[0], this->MatchLinear[1],
+      this->LatticeSites, this->LinkNeighbours, this->LinkRest };
     for (GLuint t : textures)
     {
       if (t)
@@ -537,8 +573,9 @@ struct GpuEngine::Internals
         glDeleteTextures(1, &t);
       }
     }
-    for (GLuint p : { this->Reset, this->Advect, this->Restore, this->Match, this->MatchApply,
-           this->GaussSeidel, this->Test, this->Finalize, this->Normals, this->SamplesProgram })
+    for (GLuint p :
+      { this->Reset, this->Advect, this->Restore, this->Match, this->MatchApply, this->GaussSeidel,
+        this->Test, this->Finalize, this->Normals, this->SamplesProgram, this->Link })
     {
       if (p)
       {
@@ -645,7 +682,8 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
       std::make_pair(bpShaderGaussSeidelFrag, &S.GaussSeidel),
       std::make_pair(bpShaderTestFrag, &S.Test), std::make_pair(bpShaderFinalizeFrag, &S.Finalize),
       std::make_pair(bpShaderNormalsFrag, &S.Normals),
-      std::make_pair(bpShaderSamplesFrag, &S.SamplesProgram) })
+      std::make_pair(bpShaderSamplesFrag, &S.SamplesProgram),
+      std::make_pair(bpShaderLinkFrag, &S.Link) })
   {
     const std::string programError = S.program(pass.first, *pass.second);
     if (!programError.empty())
@@ -666,6 +704,24 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     S.Restored[k] = makeTexture2D(S.PW, S.PH);
   }
   S.MatchCenters = makeTexture2D(S.W, S.H);
+  S.MatchLinear[0] = makeTexture2D(S.W, S.H);
+  S.MatchLinear[1] = makeTexture2D(S.W, S.H);
+  S.RestMomentInverse = restMomentInverse(shape, p.elementSize);
+  // The super set's lattice, the same table the CPU engine builds.
+  const LinkTable links =
+    makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax);
+  S.Linked = !links.empty();
+  std::vector<float> sites(S.Linked ? 4 * std::size_t(S.E) : 0, 0.0f);
+  for (std::size_t e = 0; e < sites.size() / 4; ++e)
+  {
+    std::copy_n(&links.sites[3 * e], 3, &sites[4 * e]);
+  }
+  S.LatticeSites = makeElementTexture(S.W, S.H, sites);
+  if (S.Linked)
+  {
+    S.LinkRest = makeElementTexture(S.W, S.H, links.rest);
+    S.LinkNeighbours = makeElementIndexTexture(S.W, S.H, links.neighbours);
+  }
   S.FrameQuaternion = frameQuaternion;
   S.Advected = makeTexture2D(S.PW, S.PH);
   S.Before = makeTexture2D(S.PW, S.PH);
@@ -903,17 +959,27 @@ void GpuEngine::step(double t, double h)
   S.reset(false);
   // 2. Advect.
   S.advect(false, t, h);
-  // 3. Restore: K iterations of shape matching ...
+  // 3. Restore: K iterations of the elements' own restoration, each followed,
+  // in a super set, by one pass over the links (Engine::stepLinked).
   GLuint positions = S.Advected;
-  if (P.restoration == Restoration::ShapeMatching)
+  int pass = 0; // passes write Restored[0] and [1] in turn, never the one they read
+  const bool springs = !S.Shape.springs.empty();
+  for (int k = 0; k < P.iterations; ++k)
   {
-    for (int k = 0; k < P.iterations; ++k)
+    if (P.restoration == Restoration::ShapeMatching)
     {
+      // A fit per element, then a move per particle.
       S.use(S.Match);
       S.bind(S.Match, "bpPositions", positions);
       S.bind(S.Match, "bpRest", S.Rest);
       S.bind(S.Match, "bpOrientations", S.Orientations[S.O]);
-      S.run({ S.MatchCenters, S.Orientations[1 - S.O] }, S.W, S.H);
+      Internals::setInt(S.Match, "bpLinearMatching", P.linearShapeMatching ? 1 : 0);
+      Internals::setFloat(S.Match, "bpLinearBlend", P.linearBlend);
+      setVec3Uniform(S.Match, "bpRestMomentInverse0", S.RestMomentInverse.data());
+      setVec3Uniform(S.Match, "bpRestMomentInverse1", S.RestMomentInverse.data() + 3);
+      setVec3Uniform(S.Match, "bpRestMomentInverse2", S.RestMomentInverse.data() + 6);
+      S.run(
+        { S.MatchCenters, S.Orientations[1 - S.O], S.MatchLinear[0], S.MatchLinear[1] }, S.W, S.H);
       S.O = 1 - S.O;
       S.use(S.MatchApply);
       S.bind(S.MatchApply, "bpPositions", positions);
@@ -921,32 +987,27 @@ void GpuEngine::step(double t, double h)
       S.bind(S.MatchApply, "bpParticleInfo", S.ParticleInfo);
       S.bind(S.MatchApply, "bpMatchCenters", S.MatchCenters);
       S.bind(S.MatchApply, "bpOrientations", S.Orientations[S.O]);
+      S.bind(S.MatchApply, "bpMatchLinear0", S.MatchLinear[0]);
+      S.bind(S.MatchApply, "bpMatchLinear1", S.MatchLinear[1]);
+      Internals::setInt(S.MatchApply, "bpLinearMatching", P.linearShapeMatching ? 1 : 0);
       Internals::setFloat(S.MatchApply, "bpShapeStiffness", P.shapeStiffness);
-      S.run({ S.Restored[k % 2] }, S.PW, S.PH);
-      positions = S.Restored[k % 2];
+      S.run({ S.Restored[pass % 2] }, S.PW, S.PH);
+      positions = S.Restored[pass++ % 2];
     }
-  }
-  // ... or of Gauss-Seidel, a pass per colour of springs ...
-  else if (P.restoration == Restoration::GaussSeidel && !S.Shape.springs.empty())
-  {
-    int pass = 0;
-    for (int k = 0; k < P.iterations; ++k)
+    else if (P.restoration == Restoration::GaussSeidel && springs)
     {
-      for (int c = 0; c < S.Colours; ++c, ++pass)
+      // A pass per colour of springs.
+      for (int c = 0; c < S.Colours; ++c)
       {
         S.use(S.GaussSeidel);
         S.bind(S.GaussSeidel, "bpPositions", positions);
         S.bind(S.GaussSeidel, "bpColouredSprings", S.ColouredSprings);
         Internals::setInt(S.GaussSeidel, "bpColour", c);
         S.run({ S.Restored[pass % 2] }, S.PW, S.PH);
-        positions = S.Restored[pass % 2];
+        positions = S.Restored[pass++ % 2];
       }
     }
-  }
-  // ... or of Jacobi.
-  else if (!S.Shape.springs.empty())
-  {
-    for (int k = 0; k < P.iterations; ++k)
+    else if (springs)
     {
       S.use(S.Restore);
       S.bind(S.Restore, "bpPositions", positions);
@@ -956,8 +1017,19 @@ void GpuEngine::step(double t, double h)
       Internals::setInt(
         S.Restore, "bpAveraged", P.restoration == Restoration::AveragedJacobi ? 1 : 0);
       Internals::setFloat(S.Restore, "bpRelaxation", P.relaxation);
-      S.run({ S.Restored[k % 2] }, S.PW, S.PH);
-      positions = S.Restored[k % 2];
+      S.run({ S.Restored[pass % 2] }, S.PW, S.PH);
+      positions = S.Restored[pass++ % 2];
+    }
+    if (S.Linked)
+    {
+      S.use(S.Link);
+      S.bind(S.Link, "bpPositions", positions);
+      S.bind(S.Link, "bpParticleInfo", S.ParticleInfo);
+      S.bind(S.Link, "bpLinkNeighbours", S.LinkNeighbours);
+      S.bind(S.Link, "bpLinkRest", S.LinkRest);
+      Internals::setFloat(S.Link, "bpLinkStiffness", P.linkStiffness);
+      S.run({ S.Restored[pass % 2] }, S.PW, S.PH);
+      positions = S.Restored[pass++ % 2];
     }
   }
   // 5. Reposition test, then the new state.

@@ -66,16 +66,30 @@ uniform vec3 bpFrameRow1;
 uniform vec3 bpFrameRow2;
 uniform float bpLifetimeMin;
 uniform float bpLifetimeMax;
+// A super set (Core/SuperSet.h) is released as one: every element draws as
+// element 0 does and sits at its lattice site.
+uniform bool bpLinked;
+uniform sampler2D bpLatticeSites; // per element: the lattice site
+
+int bpDrawElement(int e)
+{
+  return bpLinked ? 0 : e;
+}
 
 vec3 bpCenterOf(int e, float generation)
 {
+  if (bpLinked)
+  {
+    return texelFetch(bpLatticeSites, bpElementTexel(e), 0).xyz;
+  }
   vec3 u = vec3(bpDraw(e, generation, 0u), bpDraw(e, generation, 1u), bpDraw(e, generation, 2u));
   return bpEmitterMin + u * (bpEmitterMax - bpEmitterMin);
 }
 
 float bpLifetimeOf(int e, float generation)
 {
-  return bpLifetimeMin + bpDraw(e, generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
+  return bpLifetimeMin +
+    bpDraw(bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
 }
 
 // Position of template particle `rest` in element e of the given generation.
@@ -86,9 +100,10 @@ vec3 bpPlace(int e, float generation, vec3 rest)
   if (bpRandomOrientation)
   {
     // Shoemake's uniform random rotation (rotationFromUniforms).
-    float u1 = bpDraw(e, generation, 3u);
-    float u2 = bpDraw(e, generation, 4u);
-    float u3 = bpDraw(e, generation, 5u);
+    int d = bpDrawElement(e);
+    float u1 = bpDraw(d, generation, 3u);
+    float u2 = bpDraw(d, generation, 4u);
+    float u3 = bpDraw(d, generation, 5u);
     float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
     float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
     float x = s1 * sin(a), y = s1 * cos(a), z = s2 * sin(b), w = s2 * cos(b);

@@ -6,6 +6,9 @@ uniform sampler2D bpParticleInfo;
 uniform sampler2D bpMatchCenters;
 uniform sampler2D bpOrientations; // after the fit
 uniform float bpShapeStiffness;
+uniform bool bpLinearMatching;
+uniform sampler2D bpMatchLinear0; // the linear mode's goal matrix, packed (bp_match.frag)
+uniform sampler2D bpMatchLinear1;
 
 out vec4 outPosition;
 
@@ -24,9 +27,21 @@ void main()
     outPosition = vec4(p, 0.0);
     return;
   }
-  vec3 c = texelFetch(bpMatchCenters, bpElementTexel(e), 0).xyz;
+  vec4 fit = texelFetch(bpMatchCenters, bpElementTexel(e), 0);
+  vec3 c = fit.xyz;
   vec3 r0, r1, r2;
-  bpQuaternionRows(texelFetch(bpOrientations, bpElementTexel(e), 0), r0, r1, r2);
+  if (bpLinearMatching)
+  {
+    vec4 l0 = texelFetch(bpMatchLinear0, bpElementTexel(e), 0);
+    vec4 l1 = texelFetch(bpMatchLinear1, bpElementTexel(e), 0);
+    r0 = vec3(fit.w, l0.x, l0.y);
+    r1 = vec3(l0.z, l0.w, l1.x);
+    r2 = vec3(l1.y, l1.z, l1.w);
+  }
+  else
+  {
+    bpQuaternionRows(texelFetch(bpOrientations, bpElementTexel(e), 0), r0, r1, r2);
+  }
   vec3 q = bpElementSize * texelFetch(bpRest, ivec2(i, 0), 0).xyz;
   vec3 goal = c + vec3(r0.x * q.x + r0.y * q.y + r0.z * q.z, r1.x * q.x + r1.y * q.y + r1.z * q.z,
                     r2.x * q.x + r2.y * q.y + r2.z * q.z);

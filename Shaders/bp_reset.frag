@@ -33,9 +33,10 @@ void main()
     if (bpRandomOrientation)
     {
       // Shoemake's quaternion (quaternionFromUniforms).
-      float u1 = bpDraw(e, generation, 3u);
-      float u2 = bpDraw(e, generation, 4u);
-      float u3 = bpDraw(e, generation, 5u);
+      int d = bpDrawElement(e);
+      float u1 = bpDraw(d, generation, 3u);
+      float u2 = bpDraw(d, generation, 4u);
+      float u3 = bpDraw(d, generation, 5u);
       float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
       float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
       outOrientation = vec4(s1 * sin(a), s1 * cos(a), s2 * sin(b), s2 * cos(b));

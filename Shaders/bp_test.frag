@@ -34,5 +34,8 @@ void main()
     anyOutside = anyOutside || !bpContains(q);
   }
   bool leave = !finite || (bpAnyParticle ? anyOutside : !bpContains(c / float(bpParticles)));
+  // A super set's element stays (finalize keeps its last good positions):
+  // resetting it alone would tear the structure.
+  leave = leave && !bpLinked;
   outState = vec4(state.x - bpStep, state.y, leave ? 1.0 : 0.0, finite ? 0.0 : 1.0);
 }

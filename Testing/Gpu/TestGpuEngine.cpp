@@ -69,6 +69,8 @@ struct Case
   bp::Restoration restoration;
   bool unsteady;
   bool rectilinear = false; // y and z axes stretched
+  bp::Linking linking = bp::Linking::None;
+  bool linearMatching = false;
 };
 
 /// Runs both engines `steps` steps and returns the largest position difference.
@@ -94,8 +96,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
   p.elementSize = 0.1f;
   for (int a = 0; a < 3; ++a)
   {
-    p.emitterMin[a] = float(box[2 * a]);
-    p.emitterMax[a] = float(box[2 * a + 1]);
+    // A super set's lattice spans the emitter; inset, so it starts inside.
+    const float inset =
+      c.linking == bp::Linking::None ? 0.0f : 0.2f * float(box[2 * a + 1] - box[2 * a]);
+    p.emitterMin[a] = float(box[2 * a]) + inset;
+    p.emitterMax[a] = float(box[2 * a + 1]) - inset;
   }
   p.lifetimeMin = 0.3f;
   p.lifetimeMax = 1.2f; // several resets per element in 200 steps
@@ -103,6 +108,10 @@ void compare(const Case& c, int steps, bool pinSome = false)
   p.restoration = c.restoration;
   p.iterations = 2;
   p.seed = 17;
+  p.linking = c.linking;
+  p.linkStiffness = 0.8f;
+  p.linearShapeMatching = c.linearMatching;
+  p.linearBlend = 0.4f;
   bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
   if (pinSome)
   {
@@ -170,6 +179,9 @@ void compare(const Case& c, int steps, bool pinSome = false)
     unsteady ? "unsteady" : "steady", worst, tolerance);
   if (c.rectilinear)
     std::printf("  on a rectilinear grid\n");
+  if (c.linking != bp::Linking::None)
+    std::printf(
+      "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
 }
 } // namespace
 
@@ -208,6 +220,46 @@ TEST(GpuEngine, MatchesOnARectilinearGrid)
   compare({ bp::BuiltinShape::Cross, 300, bp::Integrator::Euler, bp::Restoration::ShapeMatching,
             false, true },
     100);
+}
+
+TEST(GpuEngine, MatchesWithLinearShapeMatching)
+{
+  // A solid template (full-rank moment) and a flat one (pseudo-inverse).
+  Case solid{ bp::BuiltinShape::Paddlewheel, 300, bp::Integrator::RK2,
+    bp::Restoration::ShapeMatching, true };
+  solid.linearMatching = true;
+  compare(solid, 200);
+  Case flat{ bp::BuiltinShape::Strip8, 300, bp::Integrator::Euler, bp::Restoration::ShapeMatching,
+    false };
+  flat.linearMatching = true;
+  compare(flat, 200);
+}
+
+TEST(GpuEngine, SuperSetsMatchTheCpuEngine)
+{
+  // Every lattice, over restorations that run before each link pass.
+  const std::pair<bp::Linking, bp::Restoration> cases[] = {
+    { bp::Linking::Chain, bp::Restoration::AveragedJacobi },
+    { bp::Linking::Chain, bp::Restoration::GaussSeidel },
+    { bp::Linking::Ring, bp::Restoration::AveragedJacobi },
+    { bp::Linking::Ring, bp::Restoration::GaussSeidel },
+    { bp::Linking::Sheet, bp::Restoration::ShapeMatching },
+    { bp::Linking::Tube, bp::Restoration::Jacobi },
+    { bp::Linking::Torus, bp::Restoration::AveragedJacobi },
+  };
+  for (const auto& linked : cases)
+  {
+    SCOPED_TRACE(bp::linkingName(linked.first));
+    // Chains and rings of 64 (elements overlap less), lattices of 300 (not a square).
+    const bool row = linked.first == bp::Linking::Chain || linked.first == bp::Linking::Ring;
+    Case c{ bp::BuiltinShape::Strip4, row ? 64u : 300u, bp::Integrator::RK2, linked.second, true };
+    c.linking = linked.first;
+    compare(c, 150);
+  }
+  Case points{ bp::BuiltinShape::Point, 400, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    false };
+  points.linking = bp::Linking::Torus;
+  compare(points, 150, false);
 }
 
 TEST(GpuEngine, GaussSeidelWithPinnedParticles)

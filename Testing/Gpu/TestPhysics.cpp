@@ -304,5 +304,147 @@ TEST_P(Physics, PinnedParticleStaysPut)
   }
 }
 
+// Super sets: a sheet of points in solid-body rotation turns as one rigid
+// sheet, every link within 1% of its rest length, at the field's angular
+// velocity within 2%; a ring of crosses does too.
+TEST_P(Physics, SuperSetTurnsAsOneInSolidBodyRotation)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
+  for (auto linking : { bp::Linking::Sheet, bp::Linking::Ring })
+  {
+    SCOPED_TRACE(bp::linkingName(linking));
+    const bool sheet = linking == bp::Linking::Sheet;
+    bp::Parameters p = placed(sheet ? 64 : 24, 0.1f, { -0.6f, -0.4f, 0 }, { 0.6f, 0.4f, 0 });
+    p.randomOrientation = false;
+    p.integrator = bp::Integrator::RK4;
+    p.linking = linking;
+    const bp::ElementTemplate shape =
+      bp::builtinTemplate(sheet ? bp::BuiltinShape::Point : bp::BuiltinShape::Cross);
+    const std::size_t n = shape.particleCount();
+    bp::Engine reference; // the link table the engines build
+    ASSERT_EQ(reference.configure(shape, p), "");
+    const bp::LinkTable& links = reference.links();
+    System system(GetParam(), shape, p, field);
+    const int steps = 400;
+    const double dt = 2 * Pi / steps;
+    // The turn of the line from element 0 to the element half a row (or half
+    // the ring) away.
+    const std::size_t far = sheet ? 7 : 12;
+    std::vector<float> x = system.positions();
+    double last = angleOf(x, 0, 0, int(far * n), 1, 0), turned = 0.0, worstStrain = 0.0;
+    for (int s = 0; s < steps; ++s)
+    {
+      system.step(s * dt, dt);
+      x = system.positions();
+      const double now = angleOf(x, 0, 0, int(far * n), 1, 0);
+      turned += unwrap(now - last);
+      last = now;
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+        for (int d = 0; d < bp::LinkDirections; ++d)
+        {
+          const std::int32_t f = links.neighbours[bp::LinkDirections * e + d];
+          if (f < 0)
+            continue;
+          for (std::size_t i = 0; i < n; ++i)
+          {
+            const float* a = &x[3 * (e * n + i)];
+            const float* b = &x[3 * (std::size_t(f) * n + i)];
+            const double length = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+            worstStrain =
+              std::max(worstStrain, std::abs(length / links.rest[bp::LinkDirections * e + d] - 1));
+          }
+        }
+    }
+    std::printf("%s %s: turned %.4f rad (2 pi = %.4f), worst link strain %.2e\n",
+      GetParam() ? "GPU" : "CPU", bp::linkingName(linking), turned, 2 * Pi, worstStrain);
+    EXPECT_LT(worstStrain, 0.01);
+    EXPECT_NEAR(turned, 2 * Pi, 0.02 * 2 * Pi);
+  }
+}
+
+// Super sets hold together: in the shear layer a chain of points across the
+// layer stretches far when its links have no stiffness. With stiff links it
+// stretches less, and less again with more restoration iterations (Jacobi
+// passes propagate a correction one link per pass).
+TEST_P(Physics, SuperSetChainHoldsTogetherInShear)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  const auto stretchOf = [&](float stiffness, int iterations)
+  {
+    // A vertical chain from z = -0.8 to 0.8: the shear turns and stretches it.
+    bp::Parameters p = placed(33, 0.05f, { 1, 0.5f, -0.8f }, { 1, 0.5f, 0.8f });
+    p.randomOrientation = false;
+    p.linking = bp::Linking::Chain;
+    p.linkStiffness = stiffness;
+    p.iterations = iterations;
+    System system(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Point), p, field);
+    for (int s = 0; s < 100; ++s)
+      system.step(s * 0.01, 0.01);
+    const std::vector<float> x = system.positions();
+    double length = 0.0;
+    for (std::size_t e = 0; e + 1 < p.numberOfElements; ++e)
+      length += std::hypot(
+        x[3 * e + 3] - x[3 * e], x[3 * e + 4] - x[3 * e + 1], x[3 * e + 5] - x[3 * e + 2]);
+    return length / 1.6 - 1;
+  };
+  const double free = stretchOf(0.0f, 4), four = stretchOf(1.0f, 4), many = stretchOf(1.0f, 32);
+  std::printf("%s: chain stretched by %.1f%% with free links, %.1f%% with stiff ones and 4 "
+              "iterations, %.2f%% with 32\n",
+    GetParam() ? "GPU" : "CPU", 100 * free, 100 * four, 100 * many);
+  EXPECT_GT(free, 0.2);
+  EXPECT_LT(four, 0.5 * free);
+  EXPECT_LT(many, 0.02);
+}
+
+// Linear shape matching (Müller et al. 2005, §4.3): with beta = 0 it is the
+// rigid fit, bit for bit; with beta > 0 a sheared element deforms, by more as
+// beta grows, and still turns with the flow.
+TEST_P(Physics, LinearShapeMatchingLetsElementsShear)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Paddlewheel);
+  const auto run = [&](bool linear, float beta)
+  {
+    bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, 0.5f }, { 1.5f, 0.6f, 0.5f });
+    p.randomOrientation = false;
+    p.frame = bp::rotationFromDegrees(90, 0, 0);
+    p.restoration = bp::Restoration::ShapeMatching;
+    p.linearShapeMatching = linear;
+    p.linearBlend = beta;
+    System system(GetParam(), shape, p, field);
+    for (int s = 0; s < 100; ++s)
+      system.step(s * 0.01, 0.01);
+    const std::vector<float> x = system.positions();
+    double strain = 0.0;
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      for (const bp::Spring& sp : shape.springs)
+      {
+        const float* a = &x[3 * (e * 8 + sp.a)];
+        const float* b = &x[3 * (e * 8 + sp.b)];
+        strain = std::max(strain,
+          std::abs(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) /
+              double(sp.restLength * p.elementSize) -
+            1));
+      }
+    return std::make_pair(x, strain);
+  };
+  const auto rigid = run(false, 0.0f);
+  const auto zero = run(true, 0.0f);
+  const auto half = run(true, 0.5f);
+  const auto most = run(true, 0.9f);
+  std::printf("%s: worst spring strain rigid %.2e, linear beta 0.5 %.2e, beta 0.9 %.2e\n",
+    GetParam() ? "GPU" : "CPU", rigid.second, half.second, most.second);
+  double differ = 0.0;
+  for (std::size_t k = 0; k < rigid.first.size(); ++k)
+    differ = std::max(differ, double(std::abs(rigid.first[k] - zero.first[k])));
+  EXPECT_LT(differ, 1e-5);
+  EXPECT_LT(rigid.second, 0.01);
+  EXPECT_GT(half.second, 2 * rigid.second);
+  EXPECT_GT(most.second, half.second);
+}
+
 INSTANTIATE_TEST_SUITE_P(Engines, Physics, ::testing::Values(false, true),
   [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });

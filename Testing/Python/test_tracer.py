@@ -93,6 +93,31 @@ bptest.check(info.GetNumberOfPoints() == 20 * sphereInfo.GetNumberOfPoints(),
 bptest.check(info.GetNumberOfCells() == 20 * sphereInfo.GetNumberOfCells(),
              "20 spheres give %d cells" % info.GetNumberOfCells())
 
+# Super sets: a 4 x 3 sheet of crosses, its links output as lines (12 per
+# link, one per particle), its elements released on the lattice together.
+sheet = BoundParticleTracer(Input=flow, ElementShape="Cross", NumberOfElements=12,
+                            Linking="Sheet", LatticeWidth=4, EmitterCenter=[2, 0.5, 0],
+                            EmitterSize=[2, 0.5, 0], RandomOrientation=0)
+sheet.UpdatePipeline(0.5)
+data = servermanager.Fetch(sheet)
+links = 3 * 3 + 4 * 2
+bptest.check(data.GetNumberOfLines() == 12 * links,
+             "a 4 x 3 sheet of crosses has %d link lines" % data.GetNumberOfLines())
+bptest.check(data.GetNumberOfPolys() == 12 * 10,
+             "and its crosses' triangles: %d" % data.GetNumberOfPolys())
+sheet.Linking = "Torus"
+sheet.UpdatePipeline(0.5)
+bptest.check(servermanager.Fetch(sheet).GetNumberOfLines() == 12 * 24, "a torus closes")
+# Linear shape matching runs and differs from the rigid fit.
+matched = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=50,
+                              Restoration="Shape Matching", Seed=2)
+rigid = points(matched, 1.0)
+matched.ShapeMatchingMode = "Linear"
+matched.LinearShapeMatchingBeta = 0.8
+linear = points(matched, 1.0)
+bptest.check(rigid is not None and linear is not None and rigid.shape == linear.shape and
+             abs(rigid - linear).max() > 1e-4, "linear shape matching changes the trace")
+
 Delete(view)
 del view
 bptest.finish()
