@@ -295,11 +295,12 @@ void Engine::initialize(const RangeRunner& run)
     });
 }
 
-void Engine::advectParticle(const VectorField& field, double t, double h, float p[3]) const
+void Engine::advectParticle(
+  const VectorField& field, const StepWeights& w, double h, float p[3]) const
 {
   const float hf = float(h);
   float k1[3];
-  field.sample(p, t, k1);
+  field.sampleWeighted(p, w.start, k1);
   switch (this->Params.integrator)
   {
     case Integrator::Euler:
@@ -315,7 +316,7 @@ void Engine::advectParticle(const VectorField& field, double t, double h, float 
       {
         q[k] = p[k] + 0.5f * hf * k1[k];
       }
-      field.sample(q, t + 0.5 * h, k2);
+      field.sampleWeighted(q, w.middle, k2);
       for (int k = 0; k < 3; ++k)
       {
         p[k] += hf * k2[k];
@@ -329,17 +330,17 @@ void Engine::advectParticle(const VectorField& field, double t, double h, float 
       {
         q[k] = p[k] + 0.5f * hf * k1[k];
       }
-      field.sample(q, t + 0.5 * h, k2);
+      field.sampleWeighted(q, w.middle, k2);
       for (int k = 0; k < 3; ++k)
       {
         q[k] = p[k] + 0.5f * hf * k2[k];
       }
-      field.sample(q, t + 0.5 * h, k3);
+      field.sampleWeighted(q, w.middle, k3);
       for (int k = 0; k < 3; ++k)
       {
         q[k] = p[k] + hf * k3[k];
       }
-      field.sample(q, t + h, k4);
+      field.sampleWeighted(q, w.end, k4);
       for (int k = 0; k < 3; ++k)
       {
         p[k] += hf / 6.0f * (k1[k] + 2.0f * k2[k] + 2.0f * k3[k] + k4[k]);
@@ -512,8 +513,13 @@ void Engine::restoreOnce(float* p, float* acc, float* orientation) const
   }
 }
 
-void Engine::stepElement(
-  std::size_t e, const VectorField& field, double t, double h, std::vector<float>& scratch)
+Engine::StepWeights Engine::StepWeights::of(const VectorField& field, double t, double h)
+{
+  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h) };
+}
+
+void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
+  double h, std::vector<float>& scratch)
 {
   const std::size_t n = this->Shape.particleCount();
   if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
@@ -529,7 +535,7 @@ void Engine::stepElement(
   {
     if (!this->Pinned[i])
     {
-      this->advectParticle(field, t, h, p + 3 * i);
+      this->advectParticle(field, weights, h, p + 3 * i);
     }
   }
   std::copy_n(p, 3 * n, advected);
@@ -638,6 +644,7 @@ void Engine::restoreLinks(std::size_t e)
 void Engine::stepLinked(const VectorField& field, double t, double h, const RangeRunner& run)
 {
   const std::size_t n = this->Shape.particleCount(), E = this->elementCount();
+  const StepWeights weights = StepWeights::of(field, t, h);
   run(E,
     [&](std::size_t begin, std::size_t end)
     {
@@ -654,7 +661,7 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
         {
           if (!this->Pinned[i])
           {
-            this->advectParticle(field, t, h, p + 3 * i);
+            this->advectParticle(field, weights, h, p + 3 * i);
           }
         }
         std::copy_n(p, 3 * n, this->LinkAdvected.data() + 3 * e * n);
@@ -710,6 +717,7 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
     return;
   }
   const std::size_t n = this->Shape.particleCount();
+  const StepWeights weights = StepWeights::of(field, t, h);
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)
     {
@@ -717,7 +725,7 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
       std::vector<float> scratch(9 * n);
       for (std::size_t e = begin; e < end; ++e)
       {
-        this->stepElement(e, field, t, h, scratch);
+        this->stepElement(e, field, weights, h, scratch);
       }
     });
 }

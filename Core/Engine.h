@@ -168,9 +168,15 @@ private:
   };
 
   void place(std::size_t e);
-  void stepElement(
-    std::size_t e, const VectorField& field, double t, double h, std::vector<float>& scratch);
-  void advectParticle(const VectorField& field, double t, double h, float p[3]) const;
+  /// The second slice's weight at t, t + h/2 and t + h: once per step.
+  struct StepWeights
+  {
+    float start, middle, end;
+    static StepWeights of(const VectorField& field, double t, double h);
+  };
+  void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
+    std::vector<float>& scratch);
+  void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3]) const;
   /// The correction of spring s at positions p; false when its ends coincide.
   static bool springCorrection(const float* p, const SpringWork& s, float c[3]);
   /// K iterations on one element's positions; `acc` holds 3n floats of

@@ -173,6 +173,8 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
   , First(std::move(first))
   , Second(std::move(second))
 {
+  this->FirstData = this->First.velocity ? this->First.velocity->data() : nullptr;
+  this->SecondData = this->Second.velocity ? this->Second.velocity->data() : nullptr;
   std::size_t stride = 1;
   for (int a = 0; a < 3; ++a)
   {
@@ -202,21 +204,11 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
   }
 }
 
-void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const
+void VectorField::locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const
 {
-  const std::vector<float>& table = this->AxisTable[a];
-  if (table.empty())
-  {
-    float g = (x - this->Origin[a]) * this->InverseSpacing[a];
-    g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
-    // The last cell takes points on the upper boundary, so i + 1 stays valid.
-    const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
-    fraction = g - i;
-    cell = std::size_t(i);
-    return;
-  }
   // The last cell whose first point is at or below x (bp_common.glsl does the
   // same search on the same table).
+  const std::vector<float>& table = this->AxisTable[a];
   x = std::min(std::max(x, this->Lower[a]), this->Upper[a]);
   int lo = 0, hi = int(table.size() / 2) - 2;
   while (lo < hi)
@@ -273,38 +265,6 @@ std::string VectorField::validate() const
   return std::string();
 }
 
-void VectorField::sampleSlice(const float* data, const float p[3], float v[3]) const
-{
-  std::size_t base = 0;
-  float f[3];
-  std::size_t step[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    std::size_t i;
-    this->locate(a, p[a], i, f[a]);
-    base += i * this->Stride[a];
-    step[a] = this->Stride[a];
-  }
-  const float* c000 = data + 3 * base;
-  const float* c100 = data + 3 * (base + step[0]);
-  const float* c010 = data + 3 * (base + step[1]);
-  const float* c110 = data + 3 * (base + step[0] + step[1]);
-  const float* c001 = data + 3 * (base + step[2]);
-  const float* c101 = data + 3 * (base + step[0] + step[2]);
-  const float* c011 = data + 3 * (base + step[1] + step[2]);
-  const float* c111 = data + 3 * (base + step[0] + step[1] + step[2]);
-  for (int k = 0; k < 3; ++k)
-  {
-    const float x00 = c000[k] + f[0] * (c100[k] - c000[k]);
-    const float x10 = c010[k] + f[0] * (c110[k] - c010[k]);
-    const float x01 = c001[k] + f[0] * (c101[k] - c001[k]);
-    const float x11 = c011[k] + f[0] * (c111[k] - c011[k]);
-    const float y0 = x00 + f[1] * (x10 - x00);
-    const float y1 = x01 + f[1] * (x11 - x01);
-    v[k] = y0 + f[2] * (y1 - y0);
-  }
-}
-
 VectorField::SamplingConstants VectorField::samplingConstants() const
 {
   SamplingConstants c;
@@ -329,24 +289,6 @@ float VectorField::timeWeight(double t) const
   }
   const double w = (t - this->First.time) / (this->Second.time - this->First.time);
   return float(std::min(std::max(w, 0.0), 1.0));
-}
-
-void VectorField::sample(const float p[3], double t, float v[3]) const
-{
-  this->sampleSlice(this->First.velocity->data(), p, v);
-  if (this->Second.velocity)
-  {
-    const float w = this->timeWeight(t);
-    if (w > 0.0f)
-    {
-      float v1[3];
-      this->sampleSlice(this->Second.velocity->data(), p, v1);
-      for (int k = 0; k < 3; ++k)
-      {
-        v[k] += w * (v1[k] - v[k]);
-      }
-    }
-  }
 }
 
 float VectorField::vorticityMagnitude(const float p[3], double t) const

@@ -18,7 +18,9 @@
 #ifndef BoundParticles_VectorField_h
 #define BoundParticles_VectorField_h
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,7 +78,15 @@ public:
   bool isSteady() const { return !this->Second.velocity; }
 
   /// Velocity at p and time t.
-  void sample(const float p[3], double t, float v[3]) const;
+  void sample(const float p[3], double t, float v[3]) const
+  {
+    this->sampleWeighted(p, this->timeWeight(t), v);
+  }
+
+  /// Velocity at p where the second slice weighs `weight` (timeWeight()):
+  /// the engine's hot loop computes the weights once per step. The cell is
+  /// found once for both slices.
+  inline void sampleWeighted(const float p[3], float weight, float v[3]) const;
 
   /// |curl v| at p and time t, by central differences one cell apart.
   float vorticityMagnitude(const float p[3], double t) const;
@@ -112,9 +122,11 @@ public:
   const std::vector<float>& axisTable(int a) const { return this->AxisTable[a]; }
 
 private:
-  void sampleSlice(const float* data, const float p[3], float v[3]) const;
   /// The cell index and the position within it along axis a.
-  void locate(int a, float x, std::size_t& cell, float& fraction) const;
+  inline void locate(int a, float x, std::size_t& cell, float& fraction) const;
+  void locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const;
+  /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
+  inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
 
   GridGeometry Grid;
   FieldSlice First;
@@ -128,7 +140,70 @@ private:
   bool Degenerate[3];
   std::size_t Stride[3];
   std::array<std::vector<float>, 3> AxisTable;
+  const float* FirstData = nullptr;  ///< First.velocity's values
+  const float* SecondData = nullptr; ///< Second.velocity's, or null when steady
 };
+
+inline void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const
+{
+  if (!this->AxisTable[a].empty())
+  {
+    this->locateRectilinear(a, x, cell, fraction);
+    return;
+  }
+  float g = (x - this->Origin[a]) * this->InverseSpacing[a];
+  g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
+  // The last cell takes points on the upper boundary, so i + 1 stays valid.
+  const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
+  fraction = g - i;
+  cell = std::size_t(i);
+}
+
+inline void VectorField::interpolate(
+  const float* data, std::size_t base, const float f[3], float v[3]) const
+{
+  const std::size_t sx = this->Stride[0], sy = this->Stride[1], sz = this->Stride[2];
+  const float* c000 = data + 3 * base;
+  const float* c100 = data + 3 * (base + sx);
+  const float* c010 = data + 3 * (base + sy);
+  const float* c110 = data + 3 * (base + sx + sy);
+  const float* c001 = data + 3 * (base + sz);
+  const float* c101 = data + 3 * (base + sx + sz);
+  const float* c011 = data + 3 * (base + sy + sz);
+  const float* c111 = data + 3 * (base + sx + sy + sz);
+  for (int k = 0; k < 3; ++k)
+  {
+    const float x00 = c000[k] + f[0] * (c100[k] - c000[k]);
+    const float x10 = c010[k] + f[0] * (c110[k] - c010[k]);
+    const float x01 = c001[k] + f[0] * (c101[k] - c001[k]);
+    const float x11 = c011[k] + f[0] * (c111[k] - c011[k]);
+    const float y0 = x00 + f[1] * (x10 - x00);
+    const float y1 = x01 + f[1] * (x11 - x01);
+    v[k] = y0 + f[2] * (y1 - y0);
+  }
+}
+
+inline void VectorField::sampleWeighted(const float p[3], float weight, float v[3]) const
+{
+  std::size_t base = 0;
+  float f[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    std::size_t i;
+    this->locate(a, p[a], i, f[a]);
+    base += i * this->Stride[a];
+  }
+  this->interpolate(this->FirstData, base, f, v);
+  if (this->SecondData && weight > 0.0f)
+  {
+    float v1[3];
+    this->interpolate(this->SecondData, base, f, v1);
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k] += weight * (v1[k] - v[k]);
+    }
+  }
+}
 
 } // namespace bp
 

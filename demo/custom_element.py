@@ -10,7 +10,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import dark_view  # noqa: E402
+from picture import save_tracers_picture  # noqa: E402
 
 
 def main():
@@ -34,24 +34,9 @@ def main():
                                 NumberOfElements=40, ElementSize=0.15, Seed=5,
                                 Integrator="Runge-Kutta 4")
     time = 1.5
-    view = dark_view(time)
-    Show(flow, view).SetRepresentationType("Outline")
-    for tracer, array, preset in ((patches, "Force", "Viridis (matplotlib)"),
-                                  (blobs, "Speed", "Cool to Warm")):
-        tracer.UpdatePipeline(time)
-        display = Show(tracer, view)
-        ColorBy(display, ("POINTS", array))
-        GetColorTransferFunction(array).ApplyPreset(preset, True)
-        display.Specular = 0.3
-    Render(view)
-    view.CameraPosition = [3.1, -2.9, 2.4]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 0.0, 1.0]
-    image = os.path.join(args.output, "custom-elements.png")
-    SaveScreenshot(image, view, ImageResolution=[1280, 720])
-    print("wrote %s" % image)
-    Delete(view)
-    del view
+    save_tracers_picture(flow, ((patches, "Force", "Viridis (matplotlib)"),
+                                (blobs, "Speed", "Cool to Warm")), time, [3.1, -2.9, 2.4],
+                         os.path.join(args.output, "custom-elements.png"))
     return 0
 
 

@@ -14,3 +14,29 @@ def dark_view(time, size=(1280, 720)):
         pass
     view.ViewTime = time
     return view
+
+
+def save_tracers_picture(flow, layers, time, camera_position, path, line_width=1.0):
+    """The field's outline and each (tracer, array, preset) of `layers`
+    coloured by its array, seen from `camera_position` towards the origin,
+    saved to `path` at 1280 x 720."""
+    from paraview.simple import (ColorBy, Delete, GetColorTransferFunction, Render,
+                                 SaveScreenshot, Show)
+    view = dark_view(time)
+    Show(flow, view).SetRepresentationType("Outline")
+    for tracer, array, preset in layers:
+        tracer.UpdatePipeline(time)
+        display = Show(tracer, view)
+        ColorBy(display, ("POINTS", array))
+        GetColorTransferFunction(array).ApplyPreset(preset, True)
+        display.Specular = 0.3
+        display.LineWidth = line_width
+    Render(view)
+    view.CameraPosition = list(camera_position)
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    SaveScreenshot(path, view, ImageResolution=[1280, 720])
+    print("wrote %s" % path)
+    # Views must go before the interpreter exits, or pvpython crashes there.
+    Delete(view)
+    del view

@@ -10,7 +10,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import dark_view  # noqa: E402
+from picture import save_tracers_picture  # noqa: E402
 
 
 def main():
@@ -35,25 +35,9 @@ def main():
                                Integrator="Runge-Kutta 4", RestorationIterations=4,
                                LifetimeRange=[100, 100])
     time = 1.0
-    view = dark_view(time)
-    Show(flow, view).SetRepresentationType("Outline")
-    for tracer, array, preset in ((cloth, "Force", "Viridis (matplotlib)"),
-                                  (ring, "Speed", "Cool to Warm")):
-        tracer.UpdatePipeline(time)
-        display = Show(tracer, view)
-        ColorBy(display, ("POINTS", array))
-        GetColorTransferFunction(array).ApplyPreset(preset, True)
-        display.Specular = 0.3
-        display.LineWidth = 2.0
-    Render(view)
-    view.CameraPosition = [4.4, -4.1, 3.4]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 0.0, 1.0]
-    image = os.path.join(args.output, "super-sets.png")
-    SaveScreenshot(image, view, ImageResolution=[1280, 720])
-    print("wrote %s" % image)
-    Delete(view)
-    del view
+    save_tracers_picture(flow, ((cloth, "Force", "Viridis (matplotlib)"),
+                                (ring, "Speed", "Cool to Warm")), time, [4.4, -4.1, 3.4],
+                         os.path.join(args.output, "super-sets.png"), line_width=2.0)
     return 0
 
 
