@@ -518,8 +518,8 @@ Engine::StepWeights Engine::StepWeights::of(const VectorField& field, double t, 
   return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h) };
 }
 
-void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
-  double h, std::vector<float>& scratch)
+void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
+  double h, float* before, float* advected)
 {
   const std::size_t n = this->Shape.particleCount();
   if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
@@ -528,8 +528,6 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
     this->place(e);
   }
   float* p = this->Positions.data() + 3 * e * n;
-  float* before = scratch.data();           // positions before the step
-  float* advected = scratch.data() + 3 * n; // positions before restoration
   std::copy_n(p, 3 * n, before);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -539,6 +537,16 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
     }
   }
   std::copy_n(p, 3 * n, advected);
+}
+
+void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
+  double h, std::vector<float>& scratch)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* before = scratch.data();           // positions before the step
+  float* advected = scratch.data() + 3 * n; // positions before restoration
+  this->resetAndAdvect(e, field, weights, h, before, advected);
+  float* p = this->Positions.data() + 3 * e * n;
   if (this->restoresElements())
   {
     this->restore(p, scratch.data() + 6 * n, this->Orientations.data() + 4 * e);
@@ -650,21 +658,8 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
-        {
-          ++this->Generations[e];
-          this->place(e);
-        }
-        float* p = this->Positions.data() + 3 * e * n;
-        std::copy_n(p, 3 * n, this->LinkBefore.data() + 3 * e * n);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-          if (!this->Pinned[i])
-          {
-            this->advectParticle(field, weights, h, p + 3 * i);
-          }
-        }
-        std::copy_n(p, 3 * n, this->LinkAdvected.data() + 3 * e * n);
+        this->resetAndAdvect(e, field, weights, h, this->LinkBefore.data() + 3 * e * n,
+          this->LinkAdvected.data() + 3 * e * n);
       }
     });
   for (int it = 0; it < this->Params.iterations; ++it)

@@ -174,6 +174,10 @@ private:
     float start, middle, end;
     static StepWeights of(const VectorField& field, double t, double h);
   };
+  /// Steps 1 and 2 for element e: reset when due, then advect; keeps the
+  /// positions before the step and after advection (3n floats each).
+  void resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
+    float* before, float* advected);
   void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     std::vector<float>& scratch);
   void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3]) const;

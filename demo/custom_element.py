@@ -3,22 +3,17 @@ and blobs (a Sphere) traced through the built-in ABC flow.
 
     pvpython demo/custom_element.py --plugin BoundParticles.so --output docs
 """
-import argparse
 import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import save_tracers_picture  # noqa: E402
+from picture import picture_arguments, save_tracers_picture  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--plugin", required=True)
-    parser.add_argument("--output", required=True)
-    args = parser.parse_args()
-    os.makedirs(args.output, exist_ok=True)
+    args = picture_arguments(__doc__)
     LoadPlugin(args.plugin, ns=globals())
 
     flow = AnalyticFlow(Flow="ABC", Resolution=[40, 40, 40])

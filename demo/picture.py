@@ -1,5 +1,18 @@
-"""The look the README's pictures share."""
+"""The look the README's pictures share, and their command line."""
+import argparse
+import os
+
 from paraview.simple import CreateRenderView
+
+
+def picture_arguments(description):
+    """--plugin and --output of a picture script; the output folder exists."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--output", required=True)
+    args = parser.parse_args()
+    os.makedirs(args.output, exist_ok=True)
+    return args
 
 
 def dark_view(time, size=(1280, 720)):
