@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace bp
@@ -219,6 +220,12 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   }
 
   const std::size_t E = p.numberOfElements;
+  this->Ids.resize(E);
+  for (std::size_t e = 0; e < E; ++e)
+  {
+    this->Ids[e] = std::uint32_t(e);
+  }
+  this->HasDomain = false;
   this->Positions.assign(3 * E * n, 0.0f);
   this->Normals.assign(3 * E * n, 0.0f);
   this->Forces.assign(E * n, 0.0f);
@@ -243,7 +250,7 @@ void Engine::place(std::size_t e)
   // A super set is released as one: every element draws as element 0 does,
   // and sits at its lattice site.
   const bool linked = !this->Links.empty();
-  const std::uint32_t element = linked ? 0u : std::uint32_t(e);
+  const std::uint32_t element = linked ? 0u : this->Ids[e];
   const std::uint32_t generation = this->Generations[e];
   float u[7];
   for (std::uint32_t d = 0; d < 7; ++d)
@@ -551,11 +558,11 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
   {
     this->restore(p, scratch.data() + 6 * n, this->Orientations.data() + 4 * e);
   }
-  this->settle(e, field, h, before, advected);
+  this->settle(e, this->domainOf(field), h, before, advected);
 }
 
 void Engine::settle(
-  std::size_t e, const VectorField& field, double h, const float* before, const float* advected)
+  std::size_t e, const Domain& domain, double h, const float* before, const float* advected)
 {
   const std::size_t n = this->Shape.particleCount();
   float* p = this->Positions.data() + 3 * e * n;
@@ -575,7 +582,7 @@ void Engine::settle(
     {
       c[k] += q[k];
     }
-    anyOutside = anyOutside || !field.contains(q);
+    anyOutside = anyOutside || !domain.contains(q);
   }
   bool leave;
   if (!finite)
@@ -593,7 +600,7 @@ void Engine::settle(
   {
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
-    leave = !field.contains(center);
+    leave = !domain.contains(center);
   }
   // A super set's element stays (and keeps its last good positions when they
   // turn non-finite): resetting it alone would tear the structure.
@@ -698,8 +705,8 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        this->settle(
-          e, field, h, this->LinkBefore.data() + 3 * e * n, this->LinkAdvected.data() + 3 * e * n);
+        this->settle(e, this->domainOf(field), h, this->LinkBefore.data() + 3 * e * n,
+          this->LinkAdvected.data() + 3 * e * n);
       }
     });
 }
@@ -723,6 +730,187 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
         this->stepElement(e, field, weights, h, scratch);
       }
     });
+}
+
+void Engine::setDomain(const Domain& domain)
+{
+  this->HasDomain = true;
+  this->DomainBox = domain;
+}
+
+void Engine::resetDue(const RangeRunner& run)
+{
+  run(this->elementCount(),
+    [this](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t e = begin; e < end; ++e)
+      {
+        if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
+        {
+          ++this->Generations[e];
+          this->place(e);
+        }
+      }
+    });
+}
+
+std::array<float, 3> Engine::centerOf(std::size_t e) const
+{
+  // Summed in float, particle by particle, as the reposition test sums it.
+  const std::size_t n = this->Shape.particleCount();
+  const float* p = this->Positions.data() + 3 * e * n;
+  float c[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += p[3 * i + k];
+    }
+  }
+  const float count = float(n);
+  return { c[0] / count, c[1] / count, c[2] / count };
+}
+
+namespace
+{
+// A migration record: id, generation, reset flag, lifetime, initial centre,
+// orientation, then positions and forces.
+constexpr std::size_t RecordHeaderWords = 4 + 3 + 4;
+
+std::uint32_t floatBits(float f)
+{
+  std::uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+float bitsFloat(std::uint32_t u)
+{
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
+} // namespace
+
+std::size_t Engine::recordWords() const
+{
+  return RecordHeaderWords + 4 * this->Shape.particleCount();
+}
+
+void Engine::packElement(std::size_t e, std::vector<std::uint32_t>& out) const
+{
+  const std::size_t n = this->Shape.particleCount();
+  out.push_back(this->Ids[e]);
+  out.push_back(this->Generations[e]);
+  out.push_back(this->ResetFlags[e]);
+  out.push_back(floatBits(this->Lifetimes[e]));
+  auto floats = [&out](const float* values, std::size_t count)
+  {
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      out.push_back(floatBits(values[k]));
+    }
+  };
+  floats(this->InitialCenters.data() + 3 * e, 3);
+  floats(this->Orientations.data() + 4 * e, 4);
+  floats(this->Positions.data() + 3 * e * n, 3 * n);
+  floats(this->Forces.data() + e * n, n);
+}
+
+std::string Engine::exchange(
+  const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records)
+{
+  const std::size_t held = this->elementCount(), words = this->recordWords();
+  if (leaving.size() != held)
+  {
+    return "the leaving flags do not match the elements held";
+  }
+  if (records.size() % words != 0)
+  {
+    return "the element records do not match this element template";
+  }
+  if (!this->Links.empty())
+  {
+    return "a super set cannot be split among pieces";
+  }
+  // (id, source): source < held is an element kept, otherwise record
+  // source - held.
+  std::vector<std::pair<std::uint32_t, std::size_t>> order;
+  for (std::size_t e = 0; e < held; ++e)
+  {
+    if (!leaving[e])
+    {
+      order.emplace_back(this->Ids[e], e);
+    }
+  }
+  const std::size_t incoming = records.size() / words;
+  for (std::size_t r = 0; r < incoming; ++r)
+  {
+    const std::uint32_t id = records[r * words];
+    if (id >= this->Params.numberOfElements)
+    {
+      return "an element record carries id " + std::to_string(id) + " of " +
+        std::to_string(this->Params.numberOfElements) + " elements";
+    }
+    order.emplace_back(id, held + r);
+  }
+  std::sort(order.begin(), order.end());
+  for (std::size_t k = 1; k < order.size(); ++k)
+  {
+    if (order[k].first == order[k - 1].first)
+    {
+      return "element " + std::to_string(order[k].first) + " arrived twice";
+    }
+  }
+
+  const std::size_t n = this->Shape.particleCount(), E = order.size();
+  std::vector<std::uint32_t> ids(E), generations(E);
+  std::vector<std::uint8_t> flags(E);
+  std::vector<float> lifetimes(E), centers(3 * E), orientations(4 * E), positions(3 * E * n),
+    forces(E * n);
+  for (std::size_t k = 0; k < E; ++k)
+  {
+    const std::size_t source = order[k].second;
+    if (source < held)
+    {
+      ids[k] = this->Ids[source];
+      generations[k] = this->Generations[source];
+      flags[k] = this->ResetFlags[source];
+      lifetimes[k] = this->Lifetimes[source];
+      std::copy_n(this->InitialCenters.data() + 3 * source, 3, centers.data() + 3 * k);
+      std::copy_n(this->Orientations.data() + 4 * source, 4, orientations.data() + 4 * k);
+      std::copy_n(this->Positions.data() + 3 * source * n, 3 * n, positions.data() + 3 * k * n);
+      std::copy_n(this->Forces.data() + source * n, n, forces.data() + k * n);
+      continue;
+    }
+    const std::uint32_t* r = records.data() + (source - held) * words;
+    ids[k] = r[0];
+    generations[k] = r[1];
+    flags[k] = std::uint8_t(r[2] != 0);
+    lifetimes[k] = bitsFloat(r[3]);
+    const std::uint32_t* values = r + 4;
+    auto floats = [&values](float* out, std::size_t count)
+    {
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        out[j] = bitsFloat(*values++);
+      }
+    };
+    floats(centers.data() + 3 * k, 3);
+    floats(orientations.data() + 4 * k, 4);
+    floats(positions.data() + 3 * k * n, 3 * n);
+    floats(forces.data() + k * n, n);
+  }
+  this->Ids = std::move(ids);
+  this->Generations = std::move(generations);
+  this->ResetFlags = std::move(flags);
+  this->Lifetimes = std::move(lifetimes);
+  this->InitialCenters = std::move(centers);
+  this->Orientations = std::move(orientations);
+  this->Positions = std::move(positions);
+  this->Forces = std::move(forces);
+  // Recomputed from the positions before they are shown.
+  this->Normals.assign(3 * E * n, 0.0f);
+  return std::string();
 }
 
 void Engine::normalsOf(std::size_t e)

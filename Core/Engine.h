@@ -135,7 +135,9 @@ public:
   /// Recomputes the per-particle normals from the positions.
   void updateNormals(const RangeRunner& run);
 
-  std::size_t elementCount() const { return this->Params.numberOfElements; }
+  /// The elements this engine holds: all of them, or a piece's share in a
+  /// distributed run (Core/Partition.h).
+  std::size_t elementCount() const { return this->Ids.size(); }
   std::size_t particlesPerElement() const { return this->Shape.particleCount(); }
   std::size_t particleCount() const { return this->elementCount() * this->particlesPerElement(); }
   const ElementTemplate& shape() const { return this->Shape; }
@@ -155,6 +157,36 @@ public:
   const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
   /// The super set's links (empty without Linking).
   const LinkTable& links() const { return this->Links; }
+
+  /// The global id of each element held, increasing: what its draws hash.
+  const std::vector<std::uint32_t>& elementIds() const { return this->Ids; }
+
+  /// @name Distributed runs
+  /// A piece of a distributed run holds the elements whose centres lie in its
+  /// part of the field and samples a ghosted piece of it, so the reposition
+  /// test takes the whole field's domain. A step there is resetDue(), the
+  /// exchange of elements whose centres lie in another piece (Partition.h),
+  /// then step(): the same arithmetic as step() alone, which resets first.
+  ///@{
+  /// The bounds of the reposition test (by default the sampled field's).
+  void setDomain(const Domain& domain);
+  /// Step 1 of a step on its own: resets the elements that are due.
+  void resetDue(const RangeRunner& run);
+  /// The mean of element e's particle positions.
+  std::array<float, 3> centerOf(std::size_t e) const;
+  /// The 32-bit words of one element's state (normals are recomputed).
+  std::size_t recordWords() const;
+  /// Appends element e's state to `out`.
+  void packElement(std::size_t e, std::vector<std::uint32_t>& out) const;
+  /**
+   * Drops the elements flagged in `leaving` (one flag per element held) and
+   * takes in those `records` hold (recordWords() each, from packElement() of
+   * an engine configured alike); the elements stay in increasing id order.
+   * Empty on success, otherwise what is wrong with the records.
+   */
+  std::string exchange(
+    const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records);
+  ///@}
 
   /// For tests: direct access to the positions of the system.
   std::vector<float>& mutablePositions() { return this->Positions; }
@@ -192,7 +224,11 @@ private:
   bool restoresElements() const;
   /// Forces, the reposition test and the lifetime after restoration.
   void settle(
-    std::size_t e, const VectorField& field, double h, const float* before, const float* advected);
+    std::size_t e, const Domain& domain, double h, const float* before, const float* advected);
+  const Domain& domainOf(const VectorField& field) const
+  {
+    return this->HasDomain ? this->DomainBox : field.domain();
+  }
   /// A step of a super set: each restoration iteration is followed by one
   /// averaged Jacobi pass over the links, so elements wait for each other.
   void stepLinked(const VectorField& field, double t, double h, const RangeRunner& run);
@@ -202,6 +238,9 @@ private:
 
   ElementTemplate Shape;
   Parameters Params;
+  std::vector<std::uint32_t> Ids;
+  bool HasDomain = false;
+  Domain DomainBox;
   std::vector<SpringWork> Springs;
   std::vector<SpringWork> GaussSeidelSprings; ///< the springs in colour order
   std::vector<float> InverseDegree;

@@ -184,6 +184,9 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
     this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
     this->Lower[a] = float(grid.coordinate(a, 0));
     this->Upper[a] = float(grid.coordinate(a, std::max(grid.dims[a] - 1, 0)));
+    this->Bounds.lower[a] = this->Lower[a];
+    this->Bounds.upper[a] = this->Upper[a];
+    this->Bounds.degenerate[a] = this->Degenerate[a];
     // A plane repeats its single layer: the "next" corner is the same point.
     this->Stride[a] = this->Degenerate[a] ? 0 : stride;
     stride *= std::size_t(std::max(grid.dims[a], 1));
@@ -318,18 +321,6 @@ float VectorField::vorticityMagnitude(const float p[3], double t) const
   const float cy = d[2][0] - d[0][2];
   const float cz = d[0][1] - d[1][0];
   return std::sqrt(cx * cx + cy * cy + cz * cz);
-}
-
-bool VectorField::contains(const float p[3]) const
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!this->Degenerate[a] && !(p[a] >= this->Lower[a] && p[a] <= this->Upper[a]))
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 double VectorField::maxSpeed() const

@@ -59,6 +59,31 @@ struct GridGeometry
   double cellLength() const;
 };
 
+/**
+ * The box elements live in: the reposition test's bounds, in the engine's
+ * coordinates. An axis of one grid point is a plane and is ignored. A
+ * distributed trace samples a piece of the field but tests against the whole
+ * field's domain.
+ */
+struct Domain
+{
+  std::array<float, 3> lower = { 0, 0, 0 };
+  std::array<float, 3> upper = { 0, 0, 0 };
+  std::array<bool, 3> degenerate = { true, true, true };
+
+  bool contains(const float p[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!this->degenerate[a] && !(p[a] >= this->lower[a] && p[a] <= this->upper[a]))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
 /// One time step: 3 floats per grid point.
 struct FieldSlice
 {
@@ -92,7 +117,9 @@ public:
   float vorticityMagnitude(const float p[3], double t) const;
 
   /// Whether p lies in the grid's bounds (axes of one point are ignored).
-  bool contains(const float p[3]) const;
+  bool contains(const float p[3]) const { return this->Bounds.contains(p); }
+  /// The grid's bounds as a Domain.
+  const Domain& domain() const { return this->Bounds; }
 
   /// Largest speed over the grid points of the first slice.
   double maxSpeed() const;
@@ -138,6 +165,7 @@ private:
   float Lower[3];
   float Upper[3];
   bool Degenerate[3];
+  Domain Bounds;
   std::size_t Stride[3];
   std::array<std::vector<float>, 3> AxisTable;
   const float* FirstData = nullptr;  ///< First.velocity's values

@@ -3,6 +3,7 @@
 
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "Partition.h"
 #include "VectorField.h"
 #include "WorkQueue.h"
 
@@ -10,9 +11,11 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -23,6 +26,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -37,6 +41,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -79,6 +84,67 @@ struct CopyToFloat
       [](typename decltype(values)::ValueType v) { return static_cast<float>(v); });
   }
 };
+/// The global controller when the pipeline asks for one of as many pieces as
+/// it has processes (pvbatch, pvserver under MPI), else null.
+vtkMultiProcessController* pieceController(int pieces)
+{
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  return pieces > 1 && c && c->GetNumberOfProcesses() == pieces ? c : nullptr;
+}
+
+/// Sends each process its records, pairwise in one global order of pairs (so
+/// blocking sends never wait on each other in a cycle); only pairs with
+/// something to send talk.
+bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
+{
+  return [controller](const std::vector<std::vector<std::uint32_t>>& outgoing)
+  {
+    const int P = controller->GetNumberOfProcesses(), me = controller->GetLocalProcessId();
+    const std::size_t processes = std::size_t(P);
+    std::vector<long long> counts(processes), all(processes * processes);
+    for (int q = 0; q < P; ++q)
+    {
+      counts[std::size_t(q)] = q == me ? 0 : (long long)outgoing[std::size_t(q)].size();
+    }
+    controller->AllGather(counts.data(), all.data(), P);
+    constexpr int tag = 8731;
+    std::vector<std::uint32_t> incoming, buffer;
+    for (int q = 0; q < P; ++q)
+    {
+      if (q == me)
+      {
+        continue;
+      }
+      const long long sending = all[std::size_t(me) * P + q];
+      const long long receiving = all[std::size_t(q) * P + me];
+      auto send = [&]
+      {
+        if (sending > 0)
+          controller->Send(outgoing[std::size_t(q)].data(), vtkIdType(sending), q, tag);
+      };
+      auto receive = [&]
+      {
+        if (receiving > 0)
+        {
+          buffer.resize(std::size_t(receiving));
+          controller->Receive(buffer.data(), vtkIdType(receiving), q, tag);
+          incoming.insert(incoming.end(), buffer.begin(), buffer.end());
+        }
+      };
+      if (me < q)
+      {
+        send();
+        receive();
+      }
+      else
+      {
+        receive();
+        send();
+      }
+    }
+    return incoming;
+  };
+}
 } // namespace
 
 // The request key's DataKey is where the output keeps the value it was made for.
@@ -224,11 +290,144 @@ struct vtkBoundParticleTracer::vtkInternals
   vtkIdType StepsInLastUpdate = 0;
   bool LastUpdateReplayed = false;
 
+  // A distributed run (Pieces > 1): this process's piece of the field.
+  vtkMultiProcessController* Controller = nullptr;
+  int Piece = 0;
+  int Pieces = 1;
+  int RequestedPiece = 0; ///< the output piece asked for (without a controller)
+  int GhostCells = 2;     ///< around the owned block; grown at a replay if too few
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  std::unique_ptr<bp::Partition> Partition; ///< every piece's block, grid-local
+  bp::Domain Domain;                        ///< the whole field's, grid-local
+  double DomainCellLength = 1.0, DomainSmallestCell = 1.0;
+  long long Migrated = 0; ///< elements this process sent away in the last update
+
+  bool distributed() const { return this->Controller != nullptr; }
+
+  /// The whole field's bounds in grid-local coordinates.
+  std::array<double, 6> domainBounds() const
+  {
+    return this->distributed() && this->Partition ? this->Partition->domain() : this->Grid.bounds();
+  }
+
+  /// A step of a piece: resets first, so that an element reset into another
+  /// piece moves there before it samples the field; then the exchange; then
+  /// the step proper (which has nothing left to reset).
+  void distributedStep(bp::Engine& engine, const bp::VectorField& field, double t, double h,
+    const bp::RangeRunner& run)
+  {
+    engine.resetDue(run);
+    std::string error;
+    const long long left = bp::migrate(
+      engine, *this->Partition, this->Piece, controllerExchange(this->Controller), error);
+    this->Migrated += std::max(left, 0LL);
+    if (!error.empty())
+    {
+      vtkGenericWarningMacro("Bound Particle Tracer: an element exchange failed: " << error);
+    }
+    engine.step(field, t, h, run);
+  }
+
+  /**
+   * Gathers every process's block of the field (its owned extent's bounds)
+   * into the Partition and the whole field's Domain, and sets `offset` to the
+   * whole grid's first point. Collective; a process that could not read its
+   * piece makes every process fail. Returns the error, if any.
+   */
+  std::string sharePieces(std::string error, const bp::GridGeometry& grid, const int extent[6],
+    std::array<double, 3>& offset)
+  {
+    const int* owned = this->OwnedExtent;
+    const bool owns = owned[0] <= owned[1] && owned[2] <= owned[3] && owned[4] <= owned[5];
+    constexpr int Values = 8; // box, status, smallest cell width
+    double mine[Values] = { 1, 0, 1, 0, 1, 0, 1, 0 };
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3 && error.empty(); ++a)
+    {
+      if (owns && (owned[2 * a] < extent[2 * a] || owned[2 * a + 1] > extent[2 * a + 1]))
+      {
+        std::ostringstream err;
+        err << "The input delivered extent [" << extent[0] << " " << extent[1] << " " << extent[2]
+            << " " << extent[3] << " " << extent[4] << " " << extent[5]
+            << "], which lacks this process's block [" << owned[0] << " " << owned[1] << " "
+            << owned[2] << " " << owned[3] << " " << owned[4] << " " << owned[5]
+            << "]; the source must produce the extent it is asked for.";
+        error = err.str();
+        break;
+      }
+      if (owns)
+      {
+        mine[2 * a] = grid.coordinate(a, owned[2 * a] - extent[2 * a]);
+        mine[2 * a + 1] = grid.coordinate(a, owned[2 * a + 1] - extent[2 * a]);
+      }
+      for (int i = 0; i + 1 < grid.dims[a]; ++i)
+      {
+        smallest = std::min(smallest, std::abs(grid.coordinate(a, i + 1) - grid.coordinate(a, i)));
+        if (!grid.isRectilinear(a))
+          break;
+      }
+    }
+    mine[6] = error.empty() ? 1.0 : 0.0;
+    mine[7] = smallest;
+    std::vector<double> all(std::size_t(Values) * this->Pieces);
+    this->Controller->AllGather(mine, all.data(), Values);
+    std::vector<bp::Box> boxes(std::size_t(this->Pieces));
+    this->DomainSmallestCell = std::numeric_limits<double>::infinity();
+    for (int q = 0; q < this->Pieces; ++q)
+    {
+      const double* v = all.data() + std::size_t(q) * Values;
+      if (v[6] == 0.0 && error.empty())
+      {
+        error = "Process " + std::to_string(q) +
+          " could not read its piece of the input; see its error message.";
+      }
+      std::copy(v, v + 6, boxes[std::size_t(q)].begin());
+      this->DomainSmallestCell = std::min(this->DomainSmallestCell, v[7]);
+    }
+    if (error.empty())
+    {
+      error = bp::Partition::validate(boxes);
+      error =
+        error.empty() ? error : "The processes' pieces of the input do not fit: " + error + ".";
+    }
+    if (!error.empty())
+    {
+      return error;
+    }
+    const bp::Box world = bp::Partition(boxes).domain();
+    offset = { world[0], world[2], world[4] };
+    for (bp::Box& b : boxes)
+    {
+      for (int k = 0; k < 6 && !bp::isEmptyBox(b); ++k)
+        b[k] -= offset[std::size_t(k / 2)];
+    }
+    this->Partition.reset(new bp::Partition(boxes));
+    const bp::Box& local = this->Partition->domain();
+    double sum = 0.0;
+    int axes = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int cells = this->WholeExtent[2 * a + 1] - this->WholeExtent[2 * a];
+      this->Domain.lower[a] = float(local[2 * a]);
+      this->Domain.upper[a] = float(local[2 * a + 1]);
+      this->Domain.degenerate[a] = cells < 1;
+      if (cells >= 1)
+      {
+        sum += (local[2 * a + 1] - local[2 * a]) / cells;
+        ++axes;
+      }
+    }
+    this->DomainCellLength = axes > 0 ? sum / axes : 1.0;
+    return std::string();
+  }
+
   // The output's cells, built at each replay (they depend on the element
   // count and the shape only).
   vtkSmartPointer<vtkCellArray> Cells;
   vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
   int CellsKind = -1;                      // 0 vertices, 1 lines, 2 triangles
+  std::size_t CellsElements = 0;
 
   double timeEpsilon() const
   {
@@ -293,7 +492,8 @@ struct vtkBoundParticleTracer::vtkInternals
   void selectEngine(int engine, vtkInformation* outInfo)
   {
     this->Queue = nullptr;
-    if (engine == GPU && outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
+    if (engine == GPU && !this->distributed() &&
+      outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
     {
       this->Queue = FindWorkQueue(outInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()));
     }
@@ -494,6 +694,51 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
 
+  // Pieces: one block of the grid each, with ghost layers, when the pipeline
+  // asks for as many pieces as there are processes; otherwise piece 0 traces
+  // the whole field and other pieces are empty.
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  I.RequestedPiece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  vtkMultiProcessController* controller = pieceController(pieces);
+  if (controller != I.Controller || (controller && I.Piece != I.RequestedPiece))
+  {
+    // A change of pieces is a change of input: replay.
+    I.invalidate();
+    I.clear();
+    I.LastRequested = -1;
+  }
+  I.Controller = controller;
+  I.Pieces = controller ? pieces : 1;
+  I.Piece = controller ? I.RequestedPiece : 0;
+  if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    // The whole extent: in parallel, the executive of a source that can
+    // produce sub-extents splits it by piece (blocks, as below) and adds the
+    // ghost layers.
+    int* whole = inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+    std::copy(whole, whole + 6, I.WholeExtent);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), whole, 6);
+    if (I.distributed())
+    {
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), I.GhostCells);
+      vtkNew<vtkExtentTranslator> translator;
+      if (!translator->PieceToExtentThreadSafe(
+            I.Piece, I.Pieces, 0, whole, I.OwnedExtent, vtkExtentTranslator::BLOCK_MODE, 0))
+      {
+        // More processes than blocks: this one owns nothing.
+        for (int a = 0; a < 3; ++a)
+        {
+          I.OwnedExtent[2 * a] = whole[2 * a] + 1;
+          I.OwnedExtent[2 * a + 1] = whole[2 * a];
+        }
+      }
+    }
+  }
+
   if (!I.Continuing && !I.OutputTimes.empty())
   {
     // A new update. Only choose what to ask upstream for here: the pipeline may
@@ -536,7 +781,7 @@ namespace
 /// Reads `vectors` (the selected array, or null) of `input` into a slice;
 /// empty on success, otherwise what the user should fix.
 std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
-  bp::GridGeometry& grid, bp::FieldSlice& slice)
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6])
 {
   std::ostringstream err;
   vtkImageData* image = vtkImageData::SafeDownCast(input);
@@ -554,6 +799,8 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   {
     return "The input grid is empty: it has no points.";
   }
+  const int* dataExtent = image ? image->GetExtent() : rectilinear->GetExtent();
+  std::copy(dataExtent, dataExtent + 6, extent);
   if (!vectors && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     // No array chosen and no active vectors: take the first 3-component point array.
@@ -850,6 +1097,12 @@ int vtkBoundParticleTracer::RequestData(
   {
     return fail("The filter has no time range; see the previous error.");
   }
+  if (!I.distributed() && I.RequestedPiece != 0)
+  {
+    // Asked for a piece of several with no process per piece: piece 0 holds
+    // the whole trace.
+    return 1;
+  }
 
   if (!I.Continuing)
   {
@@ -858,6 +1111,7 @@ int vtkBoundParticleTracer::RequestData(
     I.Target = I.targetOf(outInfo);
     I.ResetPending = I.needsReplay(I.Target);
     I.StepsInLastUpdate = 0;
+    I.Migrated = 0;
     I.LastUpdateReplayed = I.ResetPending;
     I.ReadThisUpdate = false;
     I.IntervalAtStart =
@@ -868,6 +1122,13 @@ int vtkBoundParticleTracer::RequestData(
       // steps a copy.
       I.Queue->restore();
       I.Active->showsPartialStep = false;
+    }
+    if (I.ResetPending && I.distributed() && I.Piece == 0 && this->Engine == GPU)
+    {
+      vtkWarningMacro("The GPU engine runs in one process; with "
+        << I.Pieces
+        << " processes the CPU engine traces and the Bound Particles display draws its "
+           "particles on every process.");
     }
     if (I.ResetPending)
     {
@@ -895,7 +1156,14 @@ int vtkBoundParticleTracer::RequestData(
     int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
     vtkDataArray* vectors =
       input ? this->GetInputArrayToProcess(0, inputVector, association) : nullptr;
-    const std::string error = readSlice(input, vectors, association, grid, slice);
+    int extent[6];
+    std::string error = readSlice(input, vectors, association, grid, slice, extent);
+    std::array<double, 3> offset = grid.origin;
+    if (I.distributed())
+    {
+      // Every process reads in this pass: agree on the pieces (and fail together).
+      error = I.sharePieces(error, grid, extent, offset);
+    }
     if (!error.empty())
     {
       return fail(error);
@@ -911,9 +1179,9 @@ int vtkBoundParticleTracer::RequestData(
                                                     << slice.time << ".");
       }
     }
-    // The engine works in coordinates relative to the grid's first point, so
-    // float positions keep their precision far from the world origin.
-    const std::array<double, 3> offset = grid.origin;
+    // The engine works in coordinates relative to the grid's first point (the
+    // whole grid's, in parallel), so float positions keep their precision far
+    // from the world origin.
     grid.translate(offset);
     if (!I.Slices.empty())
     {
@@ -964,14 +1232,24 @@ int vtkBoundParticleTracer::RequestData(
     }
     const bp::VectorField field = I.field(ids);
     const bp::GridGeometry& grid = I.Grid;
-    const auto bounds = grid.bounds();
-    const double cell = grid.cellLength();
+    // The whole field's, also in parallel where this process holds a piece.
+    const auto bounds = I.domainBounds();
+    const double cell = I.distributed() ? I.DomainCellLength : grid.cellLength();
+    const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+      std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+    double speed = field.maxSpeed();
+    if (I.distributed())
+    {
+      double global = speed;
+      I.Controller->AllReduce(&speed, &global, 1, vtkCommunicator::MAX_OP);
+      speed = global;
+    }
 
     if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
     {
       return fail("StepSize must be positive (it is " + std::to_string(this->StepSize) + ").");
     }
-    double speed = field.maxSpeed();
+    const double fieldSpeed = speed;
     if (!(speed > 0.0))
     {
       vtkWarningMacro("The vector field is zero everywhere at the start time; elements will "
@@ -985,7 +1263,27 @@ int vtkBoundParticleTracer::RequestData(
       return fail("ElementSize must be positive, or 0 for automatic.");
     }
     I.ResolvedElementSize =
-      this->ElementSize > 0.0 ? this->ElementSize : std::max(2.0 * cell, grid.diagonal() / 40.0);
+      this->ElementSize > 0.0 ? this->ElementSize : std::max(2.0 * cell, diagonal / 40.0);
+    if (I.distributed())
+    {
+      // Enough ghost layers for an element and a step at twice the start's
+      // largest speed (an unsteady flow may speed up); if the pieces in hand
+      // have fewer, ask for them again with more. Every process computes the
+      // same number from the same global values.
+      const int needed = bp::ghostCellsNeeded(
+        I.ResolvedElementSize, 2.0 * fieldSpeed, I.ResolvedDt, I.DomainSmallestCell);
+      if (needed > I.GhostCells)
+      {
+        I.GhostCells = needed;
+        I.Slices.clear();
+        return continueWith(ids.front());
+      }
+      if (this->Linking != NO_LINKING)
+      {
+        return fail("Super sets (Linking) run in one process; in parallel (" +
+          std::to_string(I.Pieces) + " processes) set Linking to None.");
+      }
+    }
 
     if (this->NumberOfElements < 1)
     {
@@ -1113,6 +1411,11 @@ int vtkBoundParticleTracer::RequestData(
         return fail(error + ".");
       }
       I.Engine.initialize(smpRunner());
+      if (I.distributed())
+      {
+        I.Engine.setDomain(I.Domain);
+        bp::keepOwned(I.Engine, *I.Partition, I.Piece);
+      }
       I.Cells = nullptr; // the element count or shape may have changed
     }
     I.Schedule.reset(new bp::StepSchedule(
@@ -1133,7 +1436,9 @@ int vtkBoundParticleTracer::RequestData(
   {
     ++I.StepsInLastUpdate;
     this->UpdateProgress((t - progressStart) / span);
-    aborted = this->CheckAbort();
+    // In parallel every process must take every step (each exchanges
+    // elements with the others), so one process alone cannot stop.
+    aborted = !I.distributed() && this->CheckAbort();
     return !aborted;
   };
   const bp::RangeRunner run = smpRunner();
@@ -1157,6 +1462,12 @@ int vtkBoundParticleTracer::RequestData(
       I.Queue->setField(field);
       committed = bp::advance(
         *I.Schedule, committed, limit, [&](double t, double h) { I.Queue->step(t, h); }, keepGoing);
+    }
+    else if (I.distributed())
+    {
+      committed = bp::advance(
+        *I.Schedule, committed, limit,
+        [&](double t, double h) { I.distributedStep(I.Engine, field, t, h, run); }, keepGoing);
     }
     else
     {
@@ -1222,7 +1533,14 @@ int vtkBoundParticleTracer::RequestData(
   if (I.Target - committed > I.Schedule->epsilon())
   {
     partial = I.Engine;
-    partial.step(field, committed, I.Target - committed, run);
+    if (I.distributed())
+    {
+      I.distributedStep(partial, field, committed, I.Target - committed, run);
+    }
+    else
+    {
+      partial.step(field, committed, I.Target - committed, run);
+    }
     ++I.StepsInLastUpdate;
     shown = &partial;
   }
@@ -1264,8 +1582,9 @@ int vtkBoundParticleTracer::RequestData(
     });
   output->SetPoints(points);
 
-  if (!I.Cells)
+  if (!I.Cells || I.CellsElements != E)
   {
+    I.CellsElements = E; // in parallel, the count changes as elements move
     I.Cells = buildCells(engine.shape(), E, I.CellsKind);
     I.LinkCells = engine.links().empty() ? nullptr : buildLinkCells(engine.links(), n);
     if (I.LinkCells && I.CellsKind == 1)
@@ -1310,7 +1629,7 @@ int vtkBoundParticleTracer::RequestData(
   particleIndex->SetName("ParticleIndex");
   particleIndex->SetNumberOfValues(N);
 
-  const auto bounds = I.Grid.bounds();
+  const auto bounds = I.domainBounds();
   const int axis = this->ColoringAxis;
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const double cu = 0.5 * (bounds[2 * u] + bounds[2 * u + 1]);
@@ -1333,7 +1652,7 @@ int vtkBoundParticleTracer::RequestData(
           lifetime->SetValue(id, life);
           layer->SetValue(id, lay);
           radius->SetValue(id, rad);
-          elementId->SetValue(id, e);
+          elementId->SetValue(id, vtkIdType(engine.elementIds()[e]));
           particleIndex->SetValue(id, int(i));
         }
       }
@@ -1424,6 +1743,12 @@ void vtkBoundParticleTracer::AddSettingsFieldData(vtkPolyData* output)
   addValue("TimeStep", I.ResolvedDt);
   addValue("ElementSize", I.ResolvedElementSize);
   addValue("SimulationTime", I.Target);
+  if (I.distributed())
+  {
+    // This process's share: ghost layers read, elements sent to other pieces.
+    addValue("GhostLayers", I.GhostCells);
+    addValue("MigratedElements", double(I.Migrated));
+  }
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), I.Target);
 }
 

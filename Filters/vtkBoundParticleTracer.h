@@ -20,6 +20,13 @@
  * is requested one time step per pass and sampled linearly between the two
  * steps that bracket each moment; at most two are held. A steady input gets
  * NumberOfTimeSteps time values over [0, Duration] so that animation plays it.
+ *
+ * In parallel (pvbatch, pvserver under MPI) each process asks its input for
+ * one block of the grid with ghost layers, owns the elements whose centres lie
+ * in its block and outputs those; after each step elements move to the
+ * process that owns their new centre through the global
+ * vtkMultiProcessController (Core/Partition.h). Draws hash global element ids,
+ * so the set of elements does not depend on the number of processes.
  */
 #ifndef vtkBoundParticleTracer_h
 #define vtkBoundParticleTracer_h

@@ -17,6 +17,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProcessModule.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
@@ -106,10 +107,19 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
       ? std::min(I.Queue->maxTextureSize, I.TextureSizeLimit)
       : I.TextureSizeLimit;
   }
+  // The GPU engine's state lives in the GL context that draws it, so it runs
+  // only where this process renders everything it traces: the built-in
+  // session or a one-process pvbatch. A pvserver's data may be drawn by the
+  // client (local rendering) and a parallel run's elements move between
+  // processes, so there the tracer's CPU output is drawn and composited.
+  vtkProcessModule* pm = vtkProcessModule::GetProcessModule();
+  const int type = pm ? pm->GetProcessType() : vtkProcessModule::PROCESS_CLIENT;
+  const bool gpuHere = type == vtkProcessModule::PROCESS_CLIENT ||
+    (type == vtkProcessModule::PROCESS_BATCH && pm->GetNumberOfLocalPartitions() == 1);
   for (int k = 0; k < inputVector[0]->GetNumberOfInformationObjects(); ++k)
   {
     inputVector[0]->GetInformationObject(k)->Set(
-      vtkBoundParticleTracer::GPU_WORK_QUEUE(), I.GpuFailed ? 0 : I.Queue->id());
+      vtkBoundParticleTracer::GPU_WORK_QUEUE(), I.GpuFailed || !gpuHere ? 0 : I.Queue->id());
   }
   return 1;
 }
@@ -119,7 +129,9 @@ int vtkBoundParticleRepresentation::RequestData(
 {
   vtkInternals& I = *this->Internals;
   vtkMath::UninitializeBounds(I.Bounds);
-  I.Cache = nullptr;
+  // Never null: a client (which has no input) takes part in delivering the
+  // server's data for local rendering with this empty one.
+  I.Cache = vtkSmartPointer<vtkPolyData>::New();
   I.Gpu = false;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
@@ -127,7 +139,6 @@ int vtkBoundParticleRepresentation::RequestData(
     vtkPolyData* input = vtkPolyData::GetData(inInfo);
     if (input)
     {
-      I.Cache = vtkSmartPointer<vtkPolyData>::New();
       I.Cache->ShallowCopy(input);
       auto* id =
         vtkIntArray::SafeDownCast(input->GetFieldData()->GetArray("BoundParticlesWorkQueue"));

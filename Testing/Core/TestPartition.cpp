@@ -1,0 +1,313 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Distributed runs without MPI: pieces on threads exchange elements through
+// memory, and must reproduce the single-process run.
+#include "Partition.h"
+#include "TestHelpers.h"
+
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <thread>
+
+namespace
+{
+
+/// A barrier for `count` threads, reusable.
+class Barrier
+{
+public:
+  explicit Barrier(int count)
+    : Count(count)
+  {
+  }
+  void wait()
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const int generation = this->Generation;
+    if (++this->Waiting == this->Count)
+    {
+      this->Waiting = 0;
+      ++this->Generation;
+      this->Changed.notify_all();
+      return;
+    }
+    this->Changed.wait(lock, [&] { return generation != this->Generation; });
+  }
+
+private:
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  int Count, Waiting = 0, Generation = 0;
+};
+
+/// All-to-all through memory for `pieces` threads.
+class MemoryExchange
+{
+public:
+  explicit MemoryExchange(int pieces)
+    : Sync(pieces)
+    , Mail(std::size_t(pieces))
+  {
+  }
+  bp::ExchangeFunction forPiece(int piece)
+  {
+    return [this, piece](const std::vector<std::vector<std::uint32_t>>& outgoing)
+    {
+      this->Mail[std::size_t(piece)] = outgoing;
+      this->Sync.wait();
+      std::vector<std::uint32_t> incoming;
+      for (const auto& box : this->Mail)
+      {
+        const auto& records = box[std::size_t(piece)];
+        incoming.insert(incoming.end(), records.begin(), records.end());
+      }
+      this->Sync.wait(); // nobody overwrites its mail before all have read
+      return incoming;
+    };
+  }
+
+private:
+  Barrier Sync;
+  std::vector<std::vector<std::vector<std::uint32_t>>> Mail;
+};
+
+/// The whole grid's point extent [first, last] along each axis split in two
+/// along x and, for four pieces, along y: piece k's point ranges.
+std::vector<std::array<int, 6>> splitExtent(const bp::GridGeometry& g, int pieces)
+{
+  const int mx = (g.dims[0] - 1) / 2, my = (g.dims[1] - 1) / 3;
+  const int last[3] = { g.dims[0] - 1, g.dims[1] - 1, g.dims[2] - 1 };
+  if (pieces == 2)
+    return { { 0, mx, 0, last[1], 0, last[2] }, { mx, last[0], 0, last[1], 0, last[2] } };
+  return { { 0, mx, 0, my, 0, last[2] }, { mx, last[0], 0, my, 0, last[2] },
+    { 0, mx, my, last[1], 0, last[2] }, { mx, last[0], my, last[1], 0, last[2] } };
+}
+
+bp::Box boxOf(const bp::GridGeometry& g, const std::array<int, 6>& extent)
+{
+  bp::Box b;
+  for (int a = 0; a < 3; ++a)
+  {
+    b[2 * a] = g.coordinate(a, extent[2 * a]);
+    b[2 * a + 1] = g.coordinate(a, extent[2 * a + 1]);
+  }
+  return b;
+}
+
+/// The points of `extent` grown by `ghost` layers (within the grid), as a field of its own.
+bp::VectorField cut(const bp::VectorField& whole, std::array<int, 6> extent, int ghost)
+{
+  const bp::GridGeometry& g = whole.grid();
+  bp::GridGeometry piece;
+  for (int a = 0; a < 3; ++a)
+  {
+    extent[2 * a] = std::max(0, extent[2 * a] - ghost);
+    extent[2 * a + 1] = std::min(g.dims[a] - 1, extent[2 * a + 1] + ghost);
+    piece.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+    piece.origin[a] = g.coordinate(a, extent[2 * a]);
+    piece.spacing[a] = g.spacing[a];
+  }
+  auto values = std::make_shared<std::vector<float>>();
+  const std::vector<float>& all = *whole.firstSlice().velocity;
+  for (int k = extent[4]; k <= extent[5]; ++k)
+    for (int j = extent[2]; j <= extent[3]; ++j)
+      for (int i = extent[0]; i <= extent[1]; ++i)
+      {
+        const std::size_t id = (std::size_t(k) * g.dims[1] + j) * g.dims[0] + i;
+        values->insert(values->end(), all.begin() + 3 * id, all.begin() + 3 * id + 3);
+      }
+  bp::FieldSlice s;
+  s.velocity = values;
+  return bp::VectorField(piece, s);
+}
+
+bp::Parameters parameters()
+{
+  bp::Parameters p;
+  p.numberOfElements = 300;
+  p.elementSize = 0.12f;
+  p.emitterMin = { -0.9f, -0.9f, -0.9f };
+  p.emitterMax = { 0.9f, 0.9f, 0.9f };
+  p.lifetimeMin = 0.3f;
+  p.lifetimeMax = 0.6f;
+  p.integrator = bp::Integrator::RK4;
+  p.restoration = bp::Restoration::ShapeMatching;
+  p.seed = 11;
+  return p;
+}
+
+struct Element
+{
+  std::uint32_t generation;
+  std::vector<float> positions;
+};
+
+/// Runs the system on `pieces` threads; the state by element id, and the
+/// number of elements that changed pieces.
+std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, int pieces,
+  bool ghostedPieces, int steps, double dt, long long& migrated)
+{
+  const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  const auto extents = splitExtent(whole.grid(), pieces);
+  std::vector<bp::Box> boxes;
+  for (const auto& e : extents)
+    boxes.push_back(boxOf(whole.grid(), e));
+  const bp::Partition partition(boxes);
+  const int ghost =
+    bp::ghostCellsNeeded(parameters().elementSize, whole.maxSpeed(), dt, whole.grid().cellLength());
+  MemoryExchange exchange(pieces);
+  const std::size_t count = std::size_t(pieces);
+  std::vector<bp::Engine> engines(count);
+  std::vector<std::string> errors(count);
+  std::vector<long long> moved(count, 0);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < pieces; ++k)
+  {
+    threads.emplace_back(
+      [&, k]
+      {
+        const bp::VectorField field =
+          ghostedPieces ? cut(whole, extents[std::size_t(k)], ghost) : whole;
+        bp::Engine& engine = engines[std::size_t(k)];
+        errors[std::size_t(k)] = engine.configure(shape, parameters());
+        engine.setDomain(whole.domain());
+        engine.initialize(bp::serialRunner());
+        bp::keepOwned(engine, partition, k);
+        for (int s = 0; s < steps; ++s)
+        {
+          engine.resetDue(bp::serialRunner());
+          std::string error;
+          const long long left = bp::migrate(engine, partition, k, exchange.forPiece(k), error);
+          moved[std::size_t(k)] += std::max(left, 0LL);
+          if (!error.empty())
+            errors[std::size_t(k)] = error;
+          engine.step(field, s * dt, dt, bp::serialRunner());
+        }
+      });
+  }
+  for (auto& t : threads)
+    t.join();
+  std::map<std::uint32_t, Element> state;
+  migrated = 0;
+  for (int k = 0; k < pieces; ++k)
+  {
+    EXPECT_EQ(errors[std::size_t(k)], "");
+    migrated += moved[std::size_t(k)];
+    const bp::Engine& engine = engines[std::size_t(k)];
+    const std::size_t n = engine.particlesPerElement();
+    for (std::size_t e = 0; e < engine.elementCount(); ++e)
+    {
+      const std::uint32_t id = engine.elementIds()[e];
+      EXPECT_EQ(state.count(id), 0u) << "element " << id << " is held twice";
+      const float* p = engine.positions().data() + 3 * e * n;
+      state[id] = { engine.generations()[e], std::vector<float>(p, p + 3 * n) };
+    }
+  }
+  return state;
+}
+
+} // namespace
+
+TEST(Partition, EveryPositionHasOneOwner)
+{
+  const bp::Partition partition({ { 0, 1, 0, 1, 0, 0 }, { 1, 2, 0, 1, 0, 0 } });
+  const float inFirst[3] = { 0.5f, 0.5f, 0.0f }, onFace[3] = { 1.0f, 0.5f, 0.0f },
+              onTop[3] = { 2.0f, 1.0f, 0.0f }, beyond[3] = { 7.0f, -3.0f, 4.0f },
+              before[3] = { -1.0f, 0.2f, 0.0f }, nan[3] = { NAN, 0.5f, 0.0f };
+  EXPECT_EQ(partition.ownerOf(inFirst), 0);
+  EXPECT_EQ(partition.ownerOf(onFace), 1); // closed below, open above
+  EXPECT_EQ(partition.ownerOf(onTop), 1);  // the domain's upper faces are closed
+  EXPECT_EQ(partition.ownerOf(beyond), 1); // the nearest point of the domain
+  EXPECT_EQ(partition.ownerOf(before), 0);
+  EXPECT_EQ(partition.ownerOf(nan), 0);
+  EXPECT_EQ(partition.domain(), (bp::Box{ 0, 2, 0, 1, 0, 0 }));
+  EXPECT_EQ(bp::Partition::validate({}), "no pieces");
+  EXPECT_EQ(bp::Partition::validate({ { 0, 1, 2, 1, 0, 0 } }), "no pieces");
+  EXPECT_NE(bp::Partition::validate({ { 0, NAN, 0, 1, 0, 0 } }), "");
+  // A piece with nothing to own (min > max) is skipped.
+  const bp::Partition withEmpty({ { 1, 0, 1, 0, 1, 0 }, { 0, 1, 0, 1, 0, 0 } });
+  EXPECT_EQ(withEmpty.ownerOf(beyond), 1);
+  EXPECT_EQ(withEmpty.domain(), (bp::Box{ 0, 1, 0, 1, 0, 0 }));
+}
+
+TEST(Partition, GhostLayersCoverAnElementAndAStep)
+{
+  // A size-0.5 element moving 0.25 per step on cells of 0.1: 8 cells and 2 more.
+  EXPECT_EQ(bp::ghostCellsNeeded(0.5, 2.5, 0.1, 0.1), 10);
+  EXPECT_EQ(bp::ghostCellsNeeded(0.5, 2.5, 0.1, 0.0), 2);
+}
+
+TEST(Partition, ElementRecordsRoundTrip)
+{
+  const bp::VectorField field = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(17));
+  bp::Engine a, b;
+  bp::Parameters p = parameters();
+  p.numberOfElements = 10;
+  ASSERT_EQ(a.configure(bp::builtinTemplate(bp::BuiltinShape::Cross), p), "");
+  b = a;
+  a.initialize(bp::serialRunner());
+  b.initialize(bp::serialRunner());
+  for (int s = 0; s < 20; ++s)
+    a.step(field, s * 0.05, 0.05, bp::serialRunner());
+  // Move elements 3 and 7 of a into b in place of b's own.
+  std::vector<std::uint32_t> records;
+  a.packElement(3, records);
+  a.packElement(7, records);
+  EXPECT_EQ(records.size(), 2 * a.recordWords());
+  std::vector<std::uint8_t> leaving(10, 0);
+  leaving[3] = leaving[7] = 1;
+  ASSERT_EQ(b.exchange(leaving, records), "");
+  ASSERT_EQ(b.elementCount(), 10u);
+  const std::size_t n = a.particlesPerElement();
+  for (std::size_t e : { 3u, 7u })
+  {
+    EXPECT_EQ(b.elementIds()[e], e);
+    EXPECT_EQ(b.generations()[e], a.generations()[e]);
+    EXPECT_EQ(b.lifetimes()[e], a.lifetimes()[e]);
+    for (std::size_t i = 0; i < 3 * n; ++i)
+      EXPECT_EQ(b.positions()[3 * e * n + i], a.positions()[3 * e * n + i]);
+  }
+  // Bad records are refused with a reason.
+  EXPECT_NE(b.exchange(std::vector<std::uint8_t>(10, 0), records), ""); // held twice
+  EXPECT_NE(b.exchange(std::vector<std::uint8_t>(9, 0), {}), "");
+  records.pop_back();
+  EXPECT_NE(b.exchange(std::vector<std::uint8_t>(10, 0), records), "");
+}
+
+TEST(Partition, PiecesReproduceTheSingleProcessRun)
+{
+  const bp::VectorField whole = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+  const int steps = 60;
+  const double dt = 0.02;
+  bp::Engine serial;
+  ASSERT_EQ(serial.configure(bp::builtinTemplate(bp::BuiltinShape::Cross), parameters()), "");
+  serial.initialize(bp::serialRunner());
+  for (int s = 0; s < steps; ++s)
+    serial.step(whole, s * dt, dt, bp::serialRunner());
+  const std::size_t n = serial.particlesPerElement();
+
+  for (int pieces : { 2, 4 })
+  {
+    for (bool ghosted : { false, true })
+    {
+      long long migrated = 0;
+      const auto state = runDistributed(whole, pieces, ghosted, steps, dt, migrated);
+      ASSERT_EQ(state.size(), serial.elementCount());
+      // Elements crossed between pieces, and some were reset (lifetimes end).
+      EXPECT_GT(migrated, 100) << pieces << " pieces";
+      float worst = 0.0f;
+      for (std::size_t e = 0; e < serial.elementCount(); ++e)
+      {
+        const Element& d = state.at(std::uint32_t(e));
+        EXPECT_EQ(d.generation, serial.generations()[e]);
+        for (std::size_t i = 0; i < 3 * n; ++i)
+          worst = std::max(worst, std::abs(d.positions[i] - serial.positions()[3 * e * n + i]));
+      }
+      // The whole field on every piece gives the same bits; ghosted pieces
+      // locate cells from their own origin, which rounds differently.
+      EXPECT_LE(worst, ghosted ? 1e-4f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
+    }
+  }
+}

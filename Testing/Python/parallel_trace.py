@@ -1,0 +1,92 @@
+"""One trace, written sorted by element for comparison across process counts.
+
+Runs under pvpython (built-in), pvbatch under mpiexec (one piece per rank), or
+pvpython connected to a pvserver (--connect host:port). Writes <output>.npz
+with, per trace and time, the points, ElementId, ParticleIndex and Velocity
+sorted by (ElementId, ParticleIndex), and the process that output each point.
+"""
+import argparse
+import os
+import sys
+
+import numpy
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--output", required=True)
+parser.add_argument("--connect", help="host:port of a pvserver")
+parser.add_argument("--render", help="write a picture per remote-render threshold here")
+args = parser.parse_args()
+
+if args.connect:
+    host, port = args.connect.rsplit(":", 1)
+    Connect(host, int(port))
+    LoadPlugin(args.plugin, remote=True, ns=globals())
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+else:
+    LoadPlugin(args.plugin, ns=globals())
+
+
+def traces():
+    """Steady ABC with crosses reset as they leave; unsteady double gyre with points."""
+    abc = AnalyticFlow(Flow="ABC", Resolution=[40, 36, 32], Bounds=[0, 2, 0, 1.8, 0, 1.6])
+    crosses = BoundParticleTracer(
+        Input=abc, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
+        NumberOfTimeSteps=11, LifetimeRange=[0.2, 0.5], Integrator="Runge-Kutta 4",
+        Restoration="Shape Matching", StepSize=0.5)
+    gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[48, 24, 2], Bounds=[0, 2, 0, 1, 0, 0.1],
+                        NumberOfTimeSteps=6)
+    points = BoundParticleTracer(Input=gyre, ElementShape="Point", NumberOfElements=2000, Seed=9,
+                                 LifetimeRange=[1.0, 3.0])
+    return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
+
+
+result = {}
+for name, (tracer, times) in traces().items():
+    ids = ProcessIdScalars(Input=tracer)
+    if times is None:
+        steps = list(tracer.TimestepValues)
+        times = [steps[2], steps[-1]]
+    for k, t in enumerate(times):
+        ids.UpdatePipeline(t)
+        data = servermanager.Fetch(ids)
+        pd = data.GetPointData()
+        element = vtk_to_numpy(pd.GetArray("ElementId")).astype(numpy.int64)
+        particle = vtk_to_numpy(pd.GetArray("ParticleIndex")).astype(numpy.int64)
+        order = numpy.lexsort((particle, element))
+        key = "%s_%d" % (name, k)
+        result[key + "_points"] = vtk_to_numpy(data.GetPoints().GetData())[order].astype(float)
+        result[key + "_element"] = element[order]
+        result[key + "_particle"] = particle[order]
+        result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
+        result[key + "_process"] = vtk_to_numpy(pd.GetArray("ProcessId"))[order].astype(int)
+        print("%s t=%g: %d points" % (name, t, data.GetNumberOfPoints()))
+
+if args.render:
+    # The Bound Particles display with remote rendering on (threshold 0) and
+    # off, asking for the GPU engine: where the processes that trace are not
+    # the one that draws, the CPU engine's particles are drawn instead.
+    os.makedirs(args.render, exist_ok=True)
+    crosses = traces()["crosses"][0]
+    crosses.Engine = "GPU"
+    view = CreateRenderView()
+    view.ViewSize = [320, 240]
+    view.OrientationAxesVisibility = 0
+    display = Show(crosses, view)
+    display.SetRepresentationType("Bound Particles")
+    view.ViewTime = 1.0
+    ResetCamera(view)
+    for threshold, label in ((0.0, "remote"), (1e6, "local")):
+        view.RemoteRenderThreshold = threshold
+        Render(view)
+        SaveScreenshot(os.path.join(args.render, label + ".png"), view, ImageResolution=[320, 240])
+    Delete(display)
+    Delete(view)
+    del view
+
+numpy.savez(args.output, **result)
+print("wrote", args.output)

@@ -1,0 +1,171 @@
+"""Parallel and client-server runs trace the same elements as the built-in one.
+
+Runs Testing/Python/parallel_trace.py built in (the reference), then either
+under pvbatch with 1, 2 and 4 MPI ranks (--mode batch) or as a client of a
+two-rank pvserver on a free localhost port (--mode server), and compares the
+traces sorted by (ElementId, ParticleIndex): the same elements, positions and
+velocities within a float tolerance. Checks that the work was shared (every
+rank holds elements, elements changed ranks, no element is split) and that
+the Bound Particles display draws the same picture when the ranks' images are
+composited, with remote rendering on and off.
+"""
+import argparse
+import os
+import socket
+import subprocess
+import sys
+import time
+
+import numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--mode", choices=["batch", "server"], required=True)
+parser.add_argument("--pvpython", required=True)
+parser.add_argument("--pvbatch", required=True)
+parser.add_argument("--pvserver", required=True)
+parser.add_argument("--mpiexec", required=True)
+parser.add_argument("--output", required=True)
+args = parser.parse_args()
+
+here = os.path.dirname(os.path.abspath(__file__))
+script = os.path.join(here, "parallel_trace.py")
+os.makedirs(args.output, exist_ok=True)
+mpiexec = [args.mpiexec, "--allow-run-as-root", "--oversubscribe"]
+
+
+# pvpython initialises MPI as a singleton; its variables would make a child
+# mpiexec believe it runs inside that job.
+environment = {k: v for k, v in os.environ.items()
+               if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
+
+
+def run(command, name):
+    print("running", " ".join(command), flush=True)
+    started = time.time()
+    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          timeout=400, env=environment)
+    print(done.stdout[-3000:])
+    print("%s took %.1f s" % (name, time.time() - started))
+    bptest.check(done.returncode == 0, "%s exited with %d" % (name, done.returncode))
+    return done
+
+
+def trace(name, launcher, extra=()):
+    out = os.path.join(args.output, name + ".npz")
+    if os.path.exists(out):
+        os.remove(out)
+    run(launcher + [script, "--plugin", args.plugin, "--output", out] + list(extra), name)
+    return numpy.load(out) if os.path.exists(out) else None
+
+
+def coverage(png):
+    """The fraction of pixels that differ from the corner (background) colour."""
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    image = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    return float((abs(image - image[0]).sum(axis=1) > 30).mean())
+
+
+def compare(reference, result, name, ranks):
+    if result is None:
+        bptest.check(False, "%s wrote no trace" % name)
+        return
+    for key in reference.files:
+        if not key.endswith("_points"):
+            continue
+        base = key[: -len("_points")]
+        same_ids = (reference[base + "_element"].shape == result[base + "_element"].shape and
+                    (reference[base + "_element"] == result[base + "_element"]).all() and
+                    (reference[base + "_particle"] == result[base + "_particle"]).all())
+        bptest.check(same_ids, "%s %s: the same elements and particles" % (name, base))
+        if not same_ids:
+            continue
+        points = reference[key]
+        diagonal = numpy.linalg.norm(points.max(axis=0) - points.min(axis=0))
+        for array in ("_points", "_velocity"):
+            error = float(abs(result[base + array] - reference[base + array]).max())
+            print("%s %s%s: largest difference %.3g (diagonal %.3g)" %
+                  (name, base, array, error, diagonal))
+            bptest.check(error <= 2e-5 * diagonal, "%s %s%s differ by %g" %
+                         (name, base, array, error))
+        process = result[base + "_process"]
+        counts = numpy.bincount(process, minlength=ranks)
+        print("%s %s: elements' particles per rank %s" % (name, base, counts.tolist()))
+        bptest.check(len(counts) == ranks and (counts > 0).all(),
+                     "%s %s: every rank holds elements (%s)" % (name, base, counts.tolist()))
+        element = result[base + "_element"]
+        split = [e for e in numpy.unique(element) if len(numpy.unique(process[element == e])) > 1]
+        bptest.check(not split, "%s %s: elements split between ranks: %s" %
+                     (name, base, split[:5]))
+    if ranks > 1:
+        for trace_name in ("crosses", "points"):
+            first = result[trace_name + "_0_process"]
+            last = result[trace_name + "_1_process"]
+            moved = int((first != last).sum())
+            print("%s %s: %d particles changed ranks between the two times" %
+                  (name, trace_name, moved))
+            bptest.check(moved > 0, "%s %s: no element changed ranks" % (name, trace_name))
+
+
+def compare_pictures(reference_dir, result_dir, name):
+    expected = coverage(os.path.join(reference_dir, "remote.png"))
+    bptest.check(expected > 0.01, "the built-in picture shows elements (%.3f)" % expected)
+    for label in ("remote", "local"):
+        png = os.path.join(result_dir, label + ".png")
+        if not os.path.exists(png):
+            bptest.check(False, "%s wrote no %s picture" % (name, label))
+            continue
+        got = coverage(png)
+        print("%s %s rendering covers %.4f of the picture, built in %.4f" %
+              (name, label, got, expected))
+        bptest.check(abs(got - expected) <= 0.15 * expected,
+                     "%s %s rendering covers %.4f, built in %.4f" % (name, label, got, expected))
+
+
+reference_pictures = os.path.join(args.output, "builtin-pictures")
+reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
+
+if args.mode == "batch":
+    for ranks in (1, 2, 4):
+        name = "pvbatch-%d" % ranks
+        pictures = os.path.join(args.output, name + "-pictures")
+        result = trace(name, mpiexec + ["-n", str(ranks), args.pvbatch],
+                       ["--render", pictures] if ranks == 2 else [])
+        compare(reference, result, name, ranks)
+        if ranks == 2:
+            compare_pictures(reference_pictures, pictures, name)
+else:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    log_path = os.path.join(args.output, "pvserver.log")
+    with open(log_path, "w") as log:
+        server = subprocess.Popen(mpiexec + ["-n", "2", args.pvserver, "--server-port=%d" % port],
+                                  stdout=log, stderr=subprocess.STDOUT, env=environment)
+    try:
+        deadline = time.time() + 120
+        while time.time() < deadline and server.poll() is None:
+            with open(log_path) as log:
+                if "Accepting connection" in log.read():
+                    break
+            time.sleep(0.2)
+        pictures = os.path.join(args.output, "client-pictures")
+        result = trace("client-server", [args.pvpython],
+                       ["--connect", "localhost:%d" % port, "--render", pictures])
+        compare(reference, result, "client-server", 2)
+        compare_pictures(reference_pictures, pictures, "client-server")
+        server.wait(timeout=60)  # the server ends when its client disconnects
+    finally:
+        if server.poll() is None:
+            server.kill()
+    with open(log_path) as log:
+        print(log.read()[-2000:])
+
+bptest.finish()
