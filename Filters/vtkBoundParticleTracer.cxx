@@ -722,7 +722,14 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     int* whole = inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
     std::copy(whole, whole + 6, I.WholeExtent);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), whole, 6);
-    if (I.distributed())
+    if (!I.distributed())
+    {
+      // Piece 0 traces the whole field (see above): ask for all of it.
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+    else
     {
       inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), I.GhostCells);
       vtkNew<vtkExtentTranslator> translator;
