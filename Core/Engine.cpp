@@ -832,6 +832,10 @@ std::string Engine::exchange(
   {
     return "a super set cannot be split among pieces";
   }
+  if (records.empty() && std::find(leaving.begin(), leaving.end(), 1) == leaving.end())
+  {
+    return std::string(); // nothing moves: the elements stay as they are, in order
+  }
   // (id, source): source < held is an element kept, otherwise record
   // source - held.
   std::vector<std::pair<std::uint32_t, std::size_t>> order;
