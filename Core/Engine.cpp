@@ -9,8 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace bp
 {
@@ -34,6 +39,30 @@ std::array<float, 9> toRowMajor(const Eigen::Matrix3d& m)
 inline bool finite3(const float* p)
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+/**
+ * Sizes v to `count` copies of `value` in memory the system may back with
+ * huge pages: a step visits elements in space order, not memory order, and
+ * with 4 KiB pages nearly every element's state would miss the TLB.
+ */
+template <class T>
+void assignLarge(std::vector<T>& v, std::size_t count, T value)
+{
+  std::vector<T>().swap(v);
+  v.reserve(count);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t Huge = std::uintptr_t(2) << 20;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(v.data());
+  const std::uintptr_t first = (begin + Huge - 1) & ~(Huge - 1);
+  const std::uintptr_t last = (begin + count * sizeof(T)) & ~(Huge - 1);
+  if (last > first)
+  {
+    // Advice only: where it is refused the pages are ordinary.
+    madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  }
+#endif
+  v.assign(count, value);
 }
 } // namespace
 
@@ -213,6 +242,28 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
       }
     }
   }
+  // Per particle, the springs it ends, in spring order: end a takes +shareA
+  // of a correction, end b -shareB.
+  this->IncidenceStart.assign(n + 1, 0);
+  for (const SpringWork& w : this->Springs)
+  {
+    ++this->IncidenceStart[w.a + 1];
+    ++this->IncidenceStart[w.b + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->IncidenceStart[i + 1] += this->IncidenceStart[i];
+  }
+  this->Incidences.resize(2 * this->Springs.size());
+  {
+    std::vector<std::uint32_t> next(this->IncidenceStart.begin(), this->IncidenceStart.end() - 1);
+    for (std::size_t k = 0; k < this->Springs.size(); ++k)
+    {
+      const SpringWork& w = this->Springs[k];
+      this->Incidences[next[w.a]++] = { std::uint32_t(k), w.shareA };
+      this->Incidences[next[w.b]++] = { std::uint32_t(k), -w.shareB };
+    }
+  }
   this->InverseDegree.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -220,20 +271,21 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   }
 
   const std::size_t E = p.numberOfElements;
+  this->VisitOrder.clear();
   this->Ids.resize(E);
   for (std::size_t e = 0; e < E; ++e)
   {
     this->Ids[e] = std::uint32_t(e);
   }
   this->HasDomain = false;
-  this->Positions.assign(3 * E * n, 0.0f);
-  this->Normals.assign(3 * E * n, 0.0f);
-  this->Forces.assign(E * n, 0.0f);
-  this->Lifetimes.assign(E, 0.0f);
-  this->Generations.assign(E, 0);
-  this->InitialCenters.assign(3 * E, 0.0f);
-  this->ResetFlags.assign(E, 0);
-  this->Orientations.assign(4 * E, 0.0f);
+  assignLarge(this->Positions, 3 * E * n, 0.0f);
+  assignLarge(this->Normals, 3 * E * n, 0.0f);
+  assignLarge(this->Forces, E * n, 0.0f);
+  assignLarge(this->Lifetimes, E, 0.0f);
+  assignLarge(this->Generations, E, std::uint32_t(0));
+  assignLarge(this->InitialCenters, 3 * E, 0.0f);
+  assignLarge(this->ResetFlags, E, std::uint8_t(0));
+  assignLarge(this->Orientations, 4 * E, 0.0f);
   this->FrameQuaternion = quaternionFromRotation(p.frame);
   this->RestMomentInverse = restMomentInverse(shape, p.elementSize);
   this->Links = makeLinkTable(p.linking, E, p.latticeWidth, p.emitterMin, p.emitterMax);
@@ -445,12 +497,18 @@ void Engine::matchShape(float* p, float* orientation) const
   }
 }
 
-void Engine::restore(float* p, float* acc, float* orientation) const
+void Engine::restore(float* p, float* scratch, float* orientation) const
 {
   for (int it = 0; it < this->Params.iterations; ++it)
   {
-    this->restoreOnce(p, acc, orientation);
+    this->restoreOnce(p, scratch, orientation);
   }
+}
+
+std::size_t Engine::restorationScratchFloats() const
+{
+  // Jacobi's per-spring corrections.
+  return 3 * this->Springs.size();
 }
 
 bool Engine::restoresElements() const
@@ -458,7 +516,7 @@ bool Engine::restoresElements() const
   return !this->Springs.empty() || this->Params.restoration == Restoration::ShapeMatching;
 }
 
-void Engine::restoreOnce(float* p, float* acc, float* orientation) const
+void Engine::restoreOnce(float* p, float* scratch, float* orientation) const
 {
   const std::size_t n = this->Shape.particleCount();
   const Restoration method = this->Params.restoration;
@@ -486,36 +544,42 @@ void Engine::restoreOnce(float* p, float* acc, float* orientation) const
   }
   // Jacobi: every spring sees the positions of the previous iteration. Each
   // particle's corrections are summed in spring order, as a per-particle
-  // gather over a spring list sorted by index sums them.
-  std::fill_n(acc, 3 * n, 0.0f);
-  for (const SpringWork& s : this->Springs)
+  // gather over a spring list sorted by index sums them. The corrections are
+  // computed first, all independent, so their square roots and divisions
+  // overlap; coincident ends give no direction to restore along, and none.
+  const std::size_t springs = this->Springs.size();
+  float* corrections = scratch;
+  for (std::size_t k = 0; k < springs; ++k)
   {
-    float c[3];
-    if (springCorrection(p, s, c))
+    const SpringWork& s = this->Springs[k];
+    const float* pa = p + 3 * s.a;
+    const float* pb = p + 3 * s.b;
+    const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const float f = len > 0.0f ? s.stiffness * (s.rest - len) / len : 0.0f;
+    corrections[3 * k] = f * d[0];
+    corrections[3 * k + 1] = f * d[1];
+    corrections[3 * k + 2] = f * d[2];
+  }
+  // Each particle gathers its springs' corrections in spring order, with the
+  // signed share of its end, in registers.
+  const bool averaged = method == Restoration::AveragedJacobi;
+  const float w = this->Params.relaxation;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float sum[3] = { 0, 0, 0 };
+    for (std::uint32_t j = this->IncidenceStart[i]; j < this->IncidenceStart[i + 1]; ++j)
     {
+      const Incidence& in = this->Incidences[j];
+      const float* c = corrections + 3 * in.spring;
       for (int k = 0; k < 3; ++k)
       {
-        acc[3 * s.a + k] += s.shareA * c[k];
-        acc[3 * s.b + k] -= s.shareB * c[k];
+        sum[k] += in.share * c[k];
       }
     }
-  }
-  if (method == Restoration::AveragedJacobi)
-  {
-    for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k)
     {
-      for (int k = 0; k < 3; ++k)
-      {
-        p[3 * i + k] += acc[3 * i + k] * this->InverseDegree[i];
-      }
-    }
-  }
-  else
-  {
-    const float w = this->Params.relaxation;
-    for (std::size_t i = 0; i < 3 * n; ++i)
-    {
-      p[i] += w * acc[i];
+      p[3 * i + k] += averaged ? sum[k] * this->InverseDegree[i] : w * sum[k];
     }
   }
 }
@@ -543,20 +607,26 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
       this->advectParticle(field, weights, h, p + 3 * i);
     }
   }
-  std::copy_n(p, 3 * n, advected);
+  if (advected)
+  {
+    std::copy_n(p, 3 * n, advected);
+  }
 }
 
 void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
   double h, std::vector<float>& scratch)
 {
   const std::size_t n = this->Shape.particleCount();
-  float* before = scratch.data();           // positions before the step
-  float* advected = scratch.data() + 3 * n; // positions before restoration
+  float* before = scratch.data(); // positions before the step
+  // Positions before restoration, for the forces; without restoration every
+  // force stays 0 and nothing is kept.
+  const bool restores = this->restoresElements();
+  float* advected = restores ? scratch.data() + 3 * n : nullptr;
   this->resetAndAdvect(e, field, weights, h, before, advected);
-  float* p = this->Positions.data() + 3 * e * n;
-  if (this->restoresElements())
+  if (restores)
   {
-    this->restore(p, scratch.data() + 6 * n, this->Orientations.data() + 4 * e);
+    this->restore(this->Positions.data() + 3 * e * n, scratch.data() + 6 * n,
+      this->Orientations.data() + 4 * e);
   }
   this->settle(e, this->domainOf(field), h, before, advected);
 }
@@ -574,9 +644,12 @@ void Engine::settle(
   for (std::size_t i = 0; i < n; ++i)
   {
     const float* q = p + 3 * i;
-    const float* a = advected + 3 * i;
-    const float d[3] = { q[0] - a[0], q[1] - a[1], q[2] - a[2] };
-    force[i] = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (advected)
+    {
+      const float* a = advected + 3 * i;
+      const float d[3] = { q[0] - a[0], q[1] - a[1], q[2] - a[2] };
+      force[i] = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
     finite = finite && finite3(q);
     for (int k = 0; k < 3; ++k)
     {
@@ -676,11 +749,11 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
       run(E,
         [&](std::size_t begin, std::size_t end)
         {
-          std::vector<float> acc(3 * n);
+          std::vector<float> scratch(this->restorationScratchFloats());
           for (std::size_t e = begin; e < end; ++e)
           {
-            this->restoreOnce(
-              this->Positions.data() + 3 * e * n, acc.data(), this->Orientations.data() + 4 * e);
+            this->restoreOnce(this->Positions.data() + 3 * e * n, scratch.data(),
+              this->Orientations.data() + 4 * e);
           }
         });
     }
@@ -720,16 +793,135 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
   }
   const std::size_t n = this->Shape.particleCount();
   const StepWeights weights = StepWeights::of(field, t, h);
+  const std::vector<std::uint32_t>& order = this->visitOrder(field);
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)
     {
-      // before + advected + Jacobi accumulator, per worker.
-      std::vector<float> scratch(9 * n);
-      for (std::size_t e = begin; e < end; ++e)
+      // before + advected + restoration's scratch, per worker.
+      std::vector<float> scratch(6 * n + this->restorationScratchFloats());
+      for (std::size_t k = begin; k < end; ++k)
       {
-        this->stepElement(e, field, weights, h, scratch);
+        if (!order.empty())
+        {
+          // In visiting order the elements' own state is scattered in memory:
+          // fetch it ahead, while earlier elements sample the field.
+          // Its positions, once there, say which grid cells it will sample:
+          // fetch those a few elements later.
+          constexpr std::size_t StateAhead = 16, FieldAhead = 6;
+          if (k + StateAhead < end)
+          {
+            this->prefetchElement(order[k + StateAhead]);
+          }
+          if (k + FieldAhead < end)
+          {
+            const std::size_t next = order[k + FieldAhead];
+            const float* q = this->Positions.data() + 3 * next * n;
+            for (std::size_t i = 0; i < n; ++i)
+            {
+              field.prefetch(q + 3 * i);
+            }
+          }
+          this->stepElement(order[k], field, weights, h, scratch);
+        }
+        else
+        {
+          this->stepElement(k, field, weights, h, scratch);
+        }
       }
     });
+}
+
+void Engine::prefetchElement(std::size_t e) const
+{
+#if defined(__GNUC__)
+  const std::size_t n = this->Shape.particleCount();
+  constexpr std::size_t Line = 64;
+  __builtin_prefetch(this->ResetFlags.data() + e);
+  __builtin_prefetch(this->Lifetimes.data() + e, 1);
+  const char* positions = reinterpret_cast<const char*>(this->Positions.data() + 3 * e * n);
+  for (std::size_t b = 0; b < 12 * n; b += Line)
+  {
+    __builtin_prefetch(positions + b, 1);
+  }
+  if (this->restoresElements())
+  {
+    const char* forces = reinterpret_cast<const char*>(this->Forces.data() + e * n);
+    for (std::size_t b = 0; b < 4 * n; b += Line)
+    {
+      __builtin_prefetch(forces + b, 1);
+    }
+  }
+#else
+  (void)e;
+#endif
+}
+
+const std::vector<std::uint32_t>& Engine::visitOrder(const VectorField& field)
+{
+  // Below a few thousand elements the field's sampled cells stay in cache anyway.
+  constexpr std::size_t SmallestOrdered = 2048;
+  // A sort costs a few per cent of a step, and elements move less than a cell
+  // per step, so an order stays good for several steps.
+  constexpr int StepsPerOrder = 8;
+  const std::size_t E = this->elementCount(), n = this->Shape.particleCount();
+  if (E < SmallestOrdered)
+  {
+    this->VisitOrder.clear();
+    return this->VisitOrder;
+  }
+  if (this->VisitOrder.size() == E && this->StepsSinceOrdered < StepsPerOrder)
+  {
+    ++this->StepsSinceOrdered;
+    return this->VisitOrder;
+  }
+  this->StepsSinceOrdered = 1;
+  // The bins: the grid's cells coarsened evenly to about one per element.
+  const GridGeometry& grid = field.grid();
+  const Domain& domain = field.domain();
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    cells *= std::max(grid.dims[a] - 1, 1);
+  }
+  const double coarsening = std::min(1.0, std::cbrt(double(E) / cells));
+  int bins[3];
+  float binsPerUnit[3];
+  std::size_t binStride[3], binCount = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int axisCells = std::max(grid.dims[a] - 1, 1);
+    bins[a] = domain.degenerate[a] ? 1 : std::max(1, int(axisCells * coarsening));
+    const float width = domain.upper[a] - domain.lower[a];
+    binsPerUnit[a] = width > 0.0f ? float(bins[a]) / width : 0.0f;
+    binStride[a] = binCount;
+    binCount *= std::size_t(bins[a]);
+  }
+  // A counting sort by the bin of each element's first particle.
+  std::vector<std::uint32_t> binOf(E), start(binCount + 1, 0);
+  for (std::size_t e = 0; e < E; ++e)
+  {
+    const float* p = this->Positions.data() + 3 * e * n;
+    std::size_t bin = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const float u = (p[a] - domain.lower[a]) * binsPerUnit[a];
+      // Outside the field (or not a number): the nearest bin.
+      const int i = u >= 1.0f ? int(std::min(u, float(bins[a] - 1))) : 0;
+      bin += std::size_t(i) * binStride[a];
+    }
+    binOf[e] = std::uint32_t(bin);
+    ++start[bin + 1];
+  }
+  for (std::size_t b = 0; b < binCount; ++b)
+  {
+    start[b + 1] += start[b];
+  }
+  this->VisitOrder.resize(E);
+  for (std::size_t e = 0; e < E; ++e)
+  {
+    this->VisitOrder[start[binOf[e]]++] = std::uint32_t(e);
+  }
+  return this->VisitOrder;
 }
 
 void Engine::setDomain(const Domain& domain)
@@ -905,6 +1097,7 @@ std::string Engine::exchange(
     floats(forces.data() + k * n, n);
   }
   this->Ids = std::move(ids);
+  this->VisitOrder.clear();
   this->Generations = std::move(generations);
   this->ResetFlags = std::move(flags);
   this->Lifetimes = std::move(lifetimes);

@@ -207,7 +207,8 @@ private:
     static StepWeights of(const VectorField& field, double t, double h);
   };
   /// Steps 1 and 2 for element e: reset when due, then advect; keeps the
-  /// positions before the step and after advection (3n floats each).
+  /// positions before the step and after advection (3n floats each;
+  /// `advected` may be null when nothing restores).
   void resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     float* before, float* advected);
   void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
@@ -215,14 +216,17 @@ private:
   void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3]) const;
   /// The correction of spring s at positions p; false when its ends coincide.
   static bool springCorrection(const float* p, const SpringWork& s, float c[3]);
-  /// K iterations on one element's positions; `acc` holds 3n floats of
-  /// scratch, `orientation` the element's quaternion (shape matching).
-  void restore(float* p, float* acc, float* orientation) const;
+  /// K iterations on one element's positions; `scratch` holds
+  /// restorationScratchFloats() floats of scratch, `orientation` the
+  /// element's quaternion (shape matching).
+  void restore(float* p, float* scratch, float* orientation) const;
   /// One of those iterations.
-  void restoreOnce(float* p, float* acc, float* orientation) const;
+  void restoreOnce(float* p, float* scratch, float* orientation) const;
   void matchShape(float* p, float* orientation) const;
   bool restoresElements() const;
-  /// Forces, the reposition test and the lifetime after restoration.
+  std::size_t restorationScratchFloats() const;
+  /// Forces (unless `advected` is null), the reposition test and the
+  /// lifetime after restoration.
   void settle(
     std::size_t e, const Domain& domain, double h, const float* before, const float* advected);
   const Domain& domainOf(const VectorField& field) const
@@ -235,6 +239,16 @@ private:
   /// That pass for element e, reading LinkSnapshot.
   void restoreLinks(std::size_t e);
   void normalsOf(std::size_t e);
+  /**
+   * The order step() visits elements in, or empty for storage order: by a
+   * coarse grid over the field (about one bin per element) in the field's
+   * own memory order, so consecutive elements sample neighbouring memory and
+   * a worker's range is a slab of space. Elements are independent, so the
+   * order changes the speed, never the bits. Re-sorted every few steps.
+   */
+  const std::vector<std::uint32_t>& visitOrder(const VectorField& field);
+  /// Asks the cache for element e's state ahead of its step.
+  void prefetchElement(std::size_t e) const;
 
   ElementTemplate Shape;
   Parameters Params;
@@ -243,6 +257,15 @@ private:
   Domain DomainBox;
   std::vector<SpringWork> Springs;
   std::vector<SpringWork> GaussSeidelSprings; ///< the springs in colour order
+  /// A spring at one of its ends: the share of its correction that end
+  /// takes, negative at end b.
+  struct Incidence
+  {
+    std::uint32_t spring;
+    float share;
+  };
+  std::vector<std::uint32_t> IncidenceStart; ///< particle i's are [start[i], start[i + 1])
+  std::vector<Incidence> Incidences;
   std::vector<float> InverseDegree;
   std::vector<std::uint8_t> Pinned;
 
@@ -256,6 +279,9 @@ private:
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::vector<std::uint8_t> ResetFlags;
   std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+
+  std::vector<std::uint32_t> VisitOrder;
+  int StepsSinceOrdered = 0;
 
   LinkTable Links;
   // A super set's step runs in phases over all elements: its before, advected

@@ -182,6 +182,8 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
     this->Origin[a] = float(grid.origin[a]);
     this->InverseSpacing[a] = this->Degenerate[a] ? 0.0f : float(1.0 / grid.spacing[a]);
     this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
+    this->LastCell[a] = std::max(grid.dims[a] - 2, 0);
+    this->Rectilinear[a] = false;
     this->Lower[a] = float(grid.coordinate(a, 0));
     this->Upper[a] = float(grid.coordinate(a, std::max(grid.dims[a] - 1, 0)));
     this->Bounds.lower[a] = this->Lower[a];
@@ -198,6 +200,7 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
       const std::vector<double>& c = grid.coordinates[a];
       std::vector<float>& table = this->AxisTable[a];
       table.resize(2 * c.size());
+      this->Rectilinear[a] = true;
       for (std::size_t i = 0; i < c.size(); ++i)
       {
         table[2 * i] = float(c[i]);

@@ -25,6 +25,13 @@
 #include <string>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#define BOUNDPARTICLES_SSE2 1
+#else
+#define BOUNDPARTICLES_SSE2 0
+#endif
+
 namespace bp
 {
 
@@ -113,6 +120,10 @@ public:
   /// found once for both slices.
   inline void sampleWeighted(const float p[3], float weight, float v[3]) const;
 
+  /// Asks the cache for the grid points sampleWeighted(p, ...) will read,
+  /// so that a caller with work queued can hide the wait for memory.
+  inline void prefetch(const float p[3]) const;
+
   /// |curl v| at p and time t, by central differences one cell apart.
   float vorticityMagnitude(const float p[3], double t) const;
 
@@ -154,6 +165,10 @@ private:
   void locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const;
   /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
   inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
+#if BOUNDPARTICLES_SSE2
+  /// The same in SSE lanes 0-2, where x is not a plane (Stride[0] == 1).
+  inline __m128 interpolateLanes(const float* data, std::size_t base, const float f[3]) const;
+#endif
 
   GridGeometry Grid;
   FieldSlice First;
@@ -162,6 +177,8 @@ private:
   float Origin[3];
   float InverseSpacing[3];
   float MaxIndex[3];
+  int LastCell[3]; ///< the last cell's index (0 on a plane)
+  bool Rectilinear[3];
   float Lower[3];
   float Upper[3];
   bool Degenerate[3];
@@ -174,16 +191,19 @@ private:
 
 inline void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const
 {
-  if (!this->AxisTable[a].empty())
+  if (this->Rectilinear[a])
   {
     this->locateRectilinear(a, x, cell, fraction);
     return;
   }
   float g = (x - this->Origin[a]) * this->InverseSpacing[a];
-  g = std::min(std::max(g, 0.0f), this->MaxIndex[a]);
-  // The last cell takes points on the upper boundary, so i + 1 stays valid.
-  const float i = std::min(std::floor(g), std::max(this->MaxIndex[a] - 1.0f, 0.0f));
-  fraction = g - i;
+  // Clamped so that NaN lands on 0 rather than indexing out of the grid.
+  g = g > 0.0f ? g : 0.0f;
+  g = g < this->MaxIndex[a] ? g : this->MaxIndex[a];
+  // g >= 0, so truncation is floor; the last cell takes points on the upper
+  // boundary, so i + 1 stays valid.
+  const int i = std::min(int(g), this->LastCell[a]);
+  fraction = g - float(i);
   cell = std::size_t(i);
 }
 
@@ -211,6 +231,64 @@ inline void VectorField::interpolate(
   }
 }
 
+#if BOUNDPARTICLES_SSE2
+inline __m128 VectorField::interpolateLanes(
+  const float* data, std::size_t base, const float f[3]) const
+{
+  // The two corners of a cell edge along x are 6 consecutive floats; two
+  // overlapping 4-float loads hold them, and the three components are
+  // interpolated in lanes 0-2 with the scalar path's very operations, so both
+  // paths give the same bits. The loads stay in the array: the edge's second
+  // corner is a grid point, and the last load ends on its z.
+  const __m128 fx = _mm_set1_ps(f[0]);
+  auto edge = [data, fx](std::size_t corner)
+  {
+    const float* c = data + 3 * corner;
+    const __m128 first = _mm_loadu_ps(c);       // x0 y0 z0 x1
+    const __m128 shifted = _mm_loadu_ps(c + 2); // z0 x1 y1 z1
+    const __m128 second = _mm_shuffle_ps(shifted, shifted, _MM_SHUFFLE(0, 3, 2, 1));
+    return _mm_add_ps(first, _mm_mul_ps(fx, _mm_sub_ps(second, first)));
+  };
+  const std::size_t sy = this->Stride[1], sz = this->Stride[2];
+  const __m128 x00 = edge(base), x10 = edge(base + sy);
+  const __m128 x01 = edge(base + sz), x11 = edge(base + sy + sz);
+  const __m128 fy = _mm_set1_ps(f[1]);
+  const __m128 y0 = _mm_add_ps(x00, _mm_mul_ps(fy, _mm_sub_ps(x10, x00)));
+  const __m128 y1 = _mm_add_ps(x01, _mm_mul_ps(fy, _mm_sub_ps(x11, x01)));
+  return _mm_add_ps(y0, _mm_mul_ps(_mm_set1_ps(f[2]), _mm_sub_ps(y1, y0)));
+}
+#endif
+
+inline void VectorField::prefetch(const float p[3]) const
+{
+#if defined(__GNUC__)
+  std::size_t base = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    std::size_t i;
+    float f;
+    this->locate(a, p[a], i, f);
+    base += i * this->Stride[a];
+  }
+  const std::size_t sy = this->Stride[1], sz = this->Stride[2];
+  for (const float* data : { this->FirstData, this->SecondData })
+  {
+    if (!data)
+    {
+      continue;
+    }
+    // Each of the cell's four x edges is 6 floats, possibly across two lines.
+    for (const std::size_t corner : { base, base + sy, base + sz, base + sy + sz })
+    {
+      __builtin_prefetch(data + 3 * corner);
+      __builtin_prefetch(data + 3 * corner + 5);
+    }
+  }
+#else
+  (void)p;
+#endif
+}
+
 inline void VectorField::sampleWeighted(const float p[3], float weight, float v[3]) const
 {
   std::size_t base = 0;
@@ -221,8 +299,26 @@ inline void VectorField::sampleWeighted(const float p[3], float weight, float v[
     this->locate(a, p[a], i, f[a]);
     base += i * this->Stride[a];
   }
+  const bool blend = this->SecondData && weight > 0.0f;
+#if BOUNDPARTICLES_SSE2
+  if (this->Stride[0] == 1)
+  {
+    __m128 r = this->interpolateLanes(this->FirstData, base, f);
+    if (blend)
+    {
+      const __m128 r1 = this->interpolateLanes(this->SecondData, base, f);
+      r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(weight), _mm_sub_ps(r1, r)));
+    }
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, r);
+    v[0] = lanes[0];
+    v[1] = lanes[1];
+    v[2] = lanes[2];
+    return;
+  }
+#endif
   this->interpolate(this->FirstData, base, f, v);
-  if (this->SecondData && weight > 0.0f)
+  if (blend)
   {
     float v1[3];
     this->interpolate(this->SecondData, base, f, v1);

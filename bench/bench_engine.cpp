@@ -6,6 +6,7 @@
 // in the same build. Every cell is the median of 5 timed runs after a warm-up.
 // Prints a table; --csv FILE also writes it as CSV.
 #include "AnalyticFlows.h"
+#include "CounterHash.h"
 #include "Engine.h"
 #include "GpuEngine.h"
 #include "HeadlessContext.h"
@@ -13,6 +14,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -138,17 +140,33 @@ struct PlainField
 };
 
 /// Plain reference: every particle advected by trilinear Euler (or RK4), no
-/// springs, no resets, its own sampler, over ranges like the engine.
+/// springs, no resets, its own sampler, over ranges like the engine. Its
+/// particles are uniformly random and, its best case, sorted once into the
+/// field's memory order (z, then y, then x cell), so consecutive particles
+/// sample neighbouring memory, as the engine's visiting order makes them do.
 double referenceLoop(const bp::VectorField& field, std::size_t particles, int steps, double dt,
   const bp::RangeRunner& run, bool rk4 = false)
 {
   const PlainField plain(field);
-  std::vector<float> x(3 * particles);
   const auto b = field.grid().bounds();
+  std::vector<std::pair<std::size_t, std::array<float, 3>>> seeds(particles);
+  for (std::size_t i = 0; i < particles; ++i)
+  {
+    std::size_t cell = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const float u = bp::uniformDraw(7, std::uint32_t(i), 0, std::uint32_t(a));
+      seeds[i].second[a] = float(b[2 * a] + (b[2 * a + 1] - b[2 * a]) * u);
+      cell += std::size_t(u * float(field.grid().dims[a] - 1)) * plain.stride[a];
+    }
+    seeds[i].first = cell;
+  }
+  std::sort(
+    seeds.begin(), seeds.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+  std::vector<float> x(3 * particles);
   for (std::size_t i = 0; i < particles; ++i)
     for (int a = 0; a < 3; ++a)
-      x[3 * i + a] =
-        float(b[2 * a] + (b[2 * a + 1] - b[2 * a]) * ((i * (a + 3) * 2654435761u) % 1000) / 1000.0);
+      x[3 * i + a] = seeds[i].second[a];
   const auto start = Clock::now();
   for (int s = 0; s < steps; ++s)
   {
@@ -203,6 +221,7 @@ int main(int argc, char** argv)
   int resolution = 128;
   bool quick = false, gpu = true;
   std::string csvPath;
+  std::vector<std::string> only; // "Strip16x65536": just these rows
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--resolution") && i + 1 < argc)
@@ -213,6 +232,18 @@ int main(int argc, char** argv)
       gpu = false;
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
       csvPath = argv[++i];
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+      only.push_back(argv[++i]);
+    else
+    {
+      std::fprintf(stderr,
+        "usage: %s [--quick] [--no-gpu] [--resolution N] [--csv FILE] [--only SHAPExCOUNT]...\n"
+        "  --quick       4096 elements of each shape only\n"
+        "  --no-gpu      CPU engine and plain loop only\n"
+        "  --only S xN   only the rows of shape S with N elements, e.g. --only Strip16x65536\n",
+        argv[0]);
+      return std::strcmp(argv[i], "--help") ? 2 : 0;
+    }
   }
 
   bp::GridGeometry g;
@@ -252,6 +283,29 @@ int main(int argc, char** argv)
   {
     configs.push_back({ bp::BuiltinShape::Point, 262144 });
     configs.push_back({ bp::BuiltinShape::Point, 1048576 });
+  }
+  if (!only.empty())
+  {
+    std::vector<Config> all = configs;
+    for (auto shape : { bp::BuiltinShape::Point, bp::BuiltinShape::Square, bp::BuiltinShape::Strip8,
+           bp::BuiltinShape::Strip16 })
+      for (std::size_t n : { 256, 1024, 4096, 16384, 65536, 262144, 1048576 })
+        all.push_back({ shape, n });
+    configs.clear();
+    for (const Config& c : all)
+    {
+      const std::string name = bp::builtinTemplate(c.shape).name + "x" + std::to_string(c.elements);
+      const bool wanted = std::find(only.begin(), only.end(), name) != only.end();
+      const bool seen = std::any_of(configs.begin(), configs.end(),
+        [&](const Config& k) { return k.shape == c.shape && k.elements == c.elements; });
+      if (wanted && !seen)
+        configs.push_back(c);
+    }
+    if (configs.empty())
+    {
+      std::fprintf(stderr, "--only matched no shape and count (names as in the table)\n");
+      return 2;
+    }
   }
 
   std::printf(
