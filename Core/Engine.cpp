@@ -1247,7 +1247,10 @@ void sampleAtPositions(const VectorField& field, double t, const float* position
       for (std::size_t i = begin; i < end; ++i)
       {
         field.sample(positions + 3 * i, t, velocity + 3 * i);
-        vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
+        if (vorticity)
+        {
+          vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
+        }
       }
     });
 }

@@ -341,7 +341,8 @@ struct ParticleLayout
   static ParticleLayout of(std::size_t elements, std::size_t particlesPerElement);
 };
 
-/// Velocity and |curl v| sampled at `count` positions (3 floats each).
+/// Velocity and |curl v| sampled at `count` positions (3 floats each);
+/// `vorticity` may be null.
 void sampleAtPositions(const VectorField& field, double t, const float* positions,
   std::size_t count, float* velocity, float* vorticity, const RangeRunner& run);
 

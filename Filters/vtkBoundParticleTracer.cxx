@@ -1620,9 +1620,10 @@ int vtkBoundParticleTracer::RequestData(
   auto normals = floatArray("Normals", 3, N);
   std::memcpy(normals->GetPointer(0), engine.normals().data(), sizeof(float) * 3 * N);
   auto velocity = floatArray("Velocity", 3, N);
-  auto vorticity = floatArray("Vorticity", 1, N);
+  vtkSmartPointer<vtkFloatArray> vorticity =
+    this->ComputeVorticity ? floatArray("Vorticity", 1, N) : nullptr;
   bp::sampleAtPositions(field, I.Target, engine.positions().data(), std::size_t(N),
-    velocity->GetPointer(0), vorticity->GetPointer(0), run);
+    velocity->GetPointer(0), vorticity ? vorticity->GetPointer(0) : nullptr, run);
   auto speed = floatArray("Speed", 1, N);
   auto force = floatArray("Force", 1, N);
   std::memcpy(force->GetPointer(0), engine.forces().data(), sizeof(float) * N);
@@ -1669,7 +1670,10 @@ int vtkBoundParticleTracer::RequestData(
   for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
          speed, force, lifetime, elementId, particleIndex, vorticity, layer, radius })
   {
-    pd->AddArray(a);
+    if (a)
+    {
+      pd->AddArray(a);
+    }
   }
 
   // What the automatic settings came to, for the Information panel and scripts.
@@ -1782,5 +1786,6 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+  os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
   os << indent << "Engine: " << (this->Engine == GPU ? "GPU" : "CPU") << "\n";
 }

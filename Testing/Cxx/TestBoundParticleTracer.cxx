@@ -221,6 +221,25 @@ TEST(BoundParticleTracer, OutputSizesAndArrays)
   }
 }
 
+TEST(BoundParticleTracer, VorticityArrayCanBeLeftOut)
+{
+  // Compute Vorticity changes the output's arrays, never the trace.
+  auto source = flow(vtkAnalyticFlowSource::ABC);
+  auto tracer = tracerOn(source, 50);
+  vtkPolyData* out = at(tracer, 0.5);
+  ASSERT_NE(out->GetPointData()->GetArray("Vorticity"), nullptr);
+  EXPECT_GT(out->GetPointData()->GetArray("Vorticity")->GetRange()[1], 0.0);
+  const std::vector<float> with = pointsOf(out);
+  tracer->ComputeVorticityOff();
+  out = at(tracer, 0.5);
+  EXPECT_EQ(out->GetPointData()->GetArray("Vorticity"), nullptr);
+  EXPECT_NE(out->GetPointData()->GetArray("Velocity"), nullptr);
+  EXPECT_EQ(pointsOf(out), with);
+  tracer->ComputeVorticityOn();
+  out = at(tracer, 0.5);
+  EXPECT_NE(out->GetPointData()->GetArray("Vorticity"), nullptr);
+}
+
 TEST(BoundParticleTracer, SteadyInputGetsTimeSteps)
 {
   auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER);
