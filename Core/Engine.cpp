@@ -409,7 +409,7 @@ void Engine::advectParticle(
   }
 }
 
-bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
+inline bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
 {
   // Thesis eqs. 2.3-2.5: the whole correction moves end a away from end b by
   // stiffness * (rest - length) along their difference; the ends share it.
@@ -551,15 +551,11 @@ void Engine::restoreOnce(float* p, float* scratch, float* orientation) const
   float* corrections = scratch;
   for (std::size_t k = 0; k < springs; ++k)
   {
-    const SpringWork& s = this->Springs[k];
-    const float* pa = p + 3 * s.a;
-    const float* pb = p + 3 * s.b;
-    const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
-    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const float f = len > 0.0f ? s.stiffness * (s.rest - len) / len : 0.0f;
-    corrections[3 * k] = f * d[0];
-    corrections[3 * k + 1] = f * d[1];
-    corrections[3 * k + 2] = f * d[2];
+    float* c = corrections + 3 * k;
+    if (!springCorrection(p, this->Springs[k], c))
+    {
+      std::fill_n(c, 3, 0.0f);
+    }
   }
   // Each particle gathers its springs' corrections in spring order, with the
   // signed share of its end, in registers.

@@ -258,15 +258,8 @@ TEST(Engine, VisitingOrderDoesNotChangeResults)
   // A large system visits its elements in the field's memory order, a small
   // one in storage order; element e must evolve the same way in both, on a
   // flow that moves them across the grid, with resets and two threads.
-  const bp::GridGeometry g = bptest::grid(33);
-  bp::FieldSlice first, second;
-  first.time = 0.0;
-  first.velocity = std::make_shared<std::vector<float>>(
-    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 0.0));
-  second.time = 1.0;
-  second.velocity = std::make_shared<std::vector<float>>(
-    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 1.0));
-  const bp::VectorField field(g, first, second);
+  const bp::VectorField field =
+    bptest::unsteadyFlow(bp::AnalyticFlow::DoubleGyre, bptest::grid(33), 0.0, 1.0);
   for (auto integrator : { bp::Integrator::Euler, bp::Integrator::RK4 })
   {
     std::vector<bp::Engine> engines;
@@ -417,15 +410,8 @@ TEST(Engine, ConfigureRejectsBadParameters)
 
 TEST(StepSchedule, ForwardInPiecesEqualsAFreshRun)
 {
-  const bp::GridGeometry g = bptest::grid(17);
-  bp::FieldSlice a, b;
-  a.time = 0.0;
-  a.velocity = std::make_shared<std::vector<float>>(
-    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 0.0));
-  b.time = 0.5;
-  b.velocity = std::make_shared<std::vector<float>>(
-    bp::sampleAnalyticFlow(bp::AnalyticFlow::DoubleGyre, g, 0.5));
-  const bp::VectorField field(g, a, b);
+  const bp::VectorField field =
+    bptest::unsteadyFlow(bp::AnalyticFlow::DoubleGyre, bptest::grid(17), 0.0, 0.5);
   const bp::StepSchedule schedule(0.0, 0.03, { 0.0, 0.5 });
   bp::Parameters p = centralParameters(100, 0.1f);
   p.lifetimeMin = 0.05f;

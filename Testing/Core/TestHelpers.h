@@ -31,6 +31,18 @@ inline bp::VectorField steadyFlow(bp::AnalyticFlow flow, const bp::GridGeometry&
   return bp::VectorField(g, s);
 }
 
+/// An unsteady field between the analytic flow sampled at t0 and at t1.
+inline bp::VectorField unsteadyFlow(
+  bp::AnalyticFlow flow, const bp::GridGeometry& g, double t0, double t1)
+{
+  bp::FieldSlice first, second;
+  first.time = t0;
+  first.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t0));
+  second.time = t1;
+  second.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t1));
+  return bp::VectorField(g, first, second);
+}
+
 inline float distance(const float* a, const float* b)
 {
   const float d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
