@@ -3,21 +3,52 @@
 
 namespace bp
 {
-void WorkQueue::configure(const ElementTemplate& shape, const Parameters& parameters)
+std::string EngineCall::applyTo(Stepper& target) const
 {
+  switch (this->kind)
+  {
+    case Kind::Configure:
+      return target.configure(*this->shape, this->parameters);
+    case Kind::SetField:
+      return target.setField(*this->field);
+    case Kind::Initialize:
+      target.initialize();
+      break;
+    case Kind::Step:
+      target.step(this->t, this->h);
+      break;
+    case Kind::Save:
+      target.save();
+      break;
+    case Kind::Restore:
+      target.restore();
+      break;
+  }
+  return std::string();
+}
+
+std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters& parameters)
+{
+  const std::string error = Engine::validate(shape, parameters);
+  if (!error.empty())
+  {
+    return error;
+  }
   EngineCall call;
   call.kind = EngineCall::Kind::Configure;
   call.shape = std::make_shared<const ElementTemplate>(shape);
   call.parameters = parameters;
   this->Pending.push_back(std::move(call));
+  return std::string();
 }
 
-void WorkQueue::setField(const VectorField& field)
+std::string WorkQueue::setField(const VectorField& field)
 {
   EngineCall call;
   call.kind = EngineCall::Kind::SetField;
   call.field = std::make_shared<const VectorField>(field);
   this->Pending.push_back(std::move(call));
+  return std::string();
 }
 
 void WorkQueue::initialize()

@@ -3,14 +3,16 @@
  * @file WorkQueue.h
  * @brief The GPU engine's work as the filter records it and a renderer runs it.
  *
- * With the GPU engine the filter keeps every decision it makes for the CPU
- * engine (when to replay, which field time steps, which steps along the
- * schedule, the short last step on a copy) but records the engine calls here
- * instead of making them. The renderer that owns the GL context drains the
- * queue before it draws. The queue holds the field time steps its pending
- * calls need (shared, not copied) and nothing else; `cursor` is where the
- * engine stands once every recorded call has run, which is what the filter's
- * next decision starts from.
+ * The third kind of Stepper (Stepper.h): with the GPU engine the tracer
+ * makes every decision it makes for the CPU engine (when to replay, which
+ * field time steps, which steps along the schedule, the short last step
+ * shown and taken back) but its stepper records the calls here instead of
+ * making them. The renderer that owns the GL context drains the queue before
+ * it draws and applies each call to its own stepper (Gpu/GpuStepper.h). The
+ * queue holds the field time steps its pending calls need (shared, not
+ * copied) and nothing else; `cursor` is where the engine stands once every
+ * recorded call has run, which is what the tracer's next decision starts
+ * from.
  *
  * A queue has an id, a plain integer a renderer can put into a pipeline
  * request; the filter's module keeps the one registry of ids (a static here
@@ -21,6 +23,7 @@
 
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "Stepper.h"
 #include "VectorField.h"
 
 #include <array>
@@ -49,6 +52,9 @@ struct EngineCall
   std::shared_ptr<const ElementTemplate> shape;
   Parameters parameters;
   std::shared_ptr<const VectorField> field;
+
+  /// Makes this call on `target`; empty on success, otherwise its error.
+  std::string applyTo(Stepper& target) const;
 };
 
 /// What a renderer needs to draw the state the queue leads to.
@@ -62,7 +68,7 @@ struct DrawSettings
   std::uint64_t serial = 0; ///< changes with every update of the filter
 };
 
-class WorkQueue
+class WorkQueue : public Stepper
 {
 public:
   explicit WorkQueue(int id)
@@ -74,29 +80,20 @@ public:
 
   int id() const { return this->Id; }
 
-  // Recording (the filter).
-  void configure(const ElementTemplate& shape, const Parameters& parameters);
-  void setField(const VectorField& field);
-  void initialize();
-  void step(double t, double h);
-  void save();
-  void restore();
+  // Recording (the tracer). configure() makes the CPU engine's checks, so a
+  // system no engine could run is refused before it is recorded.
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
+  std::string setField(const VectorField& field) override;
+  void initialize() override;
+  void step(double t, double h) override;
+  void save() override;
+  void restore() override;
   /// Drops every pending call (a replay makes them moot).
   void clear() { this->Pending.clear(); }
 
   // Running (the renderer).
   std::vector<EngineCall> take();
 
-  /// Where the engine stands once every recorded call has run.
-  struct Cursor
-  {
-    bool valid = false;
-    double committed = 0.0;
-    std::uint64_t configuration = 0; ///< the filter's configuration it was made for
-    bool showsPartialStep = false;   ///< a short step on a saved copy is shown
-    std::uint64_t producer = 0;      ///< which filter recorded it
-  };
-  Cursor cursor;
 
   DrawSettings draw;
 

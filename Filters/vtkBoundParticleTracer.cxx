@@ -254,7 +254,7 @@ std::vector<ExpectedRange> expectedRanges(const bp::VectorField& field, const bp
 
 struct vtkBoundParticleTracer::vtkInternals
 {
-  using Track = bp::WorkQueue::Cursor;
+  using Track = bp::TraceCursor;
 
   bp::Engine Engine;
   Track Cpu; // where Engine stands

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "Stepper.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace bp
+{
+
+CpuStepper::CpuStepper(RangeRunner run)
+  : Run(std::move(run))
+{
+}
+
+std::string CpuStepper::configure(const ElementTemplate& shape, const Parameters& parameters)
+{
+  this->NormalsCurrent = false;
+  return this->Current.configure(shape, parameters);
+}
+
+std::string CpuStepper::setField(const VectorField& field)
+{
+  // A field is a grid and shared time steps: copying it copies no velocities.
+  this->Field = std::make_shared<const VectorField>(field);
+  return std::string();
+}
+
+void CpuStepper::initialize()
+{
+  this->Current.initialize(this->Run);
+  this->NormalsCurrent = false;
+}
+
+void CpuStepper::step(double t, double h)
+{
+  this->Current.step(*this->Field, t, h, this->Run);
+  this->NormalsCurrent = false;
+}
+
+void CpuStepper::save()
+{
+  // Assignment reuses the copy's storage from the last save.
+  this->Saved = this->Current;
+}
+
+void CpuStepper::restore()
+{
+  std::swap(this->Current, this->Saved);
+  this->NormalsCurrent = false;
+}
+
+const Engine* CpuStepper::particles()
+{
+  if (!this->NormalsCurrent)
+  {
+    // Normals do not feed back into the simulation: computed for output only.
+    this->Current.updateNormals(this->Run);
+    this->NormalsCurrent = true;
+  }
+  return &this->Current;
+}
+
+DistributedStepper::DistributedStepper(RangeRunner run, ExchangeFunction exchange)
+  : Local(std::move(run))
+  , Exchange(std::move(exchange))
+{
+}
+
+void DistributedStepper::setPieces(const Partition& partition, const Domain& domain, int piece)
+{
+  this->Pieces.reset(new Partition(partition));
+  this->WholeDomain = domain;
+  this->Piece = piece;
+}
+
+std::string DistributedStepper::configure(
+  const ElementTemplate& shape, const Parameters& parameters)
+{
+  return this->Local.configure(shape, parameters);
+}
+
+std::string DistributedStepper::setField(const VectorField& field)
+{
+  return this->Local.setField(field);
+}
+
+void DistributedStepper::initialize()
+{
+  this->Local.initialize();
+  // The reposition test takes the whole field's domain, not the ghosted piece's.
+  this->Local.engine().setDomain(this->WholeDomain);
+  keepOwned(this->Local.engine(), *this->Pieces, this->Piece);
+}
+
+void DistributedStepper::step(double t, double h)
+{
+  // Resets first, so that an element reset into another piece moves there
+  // before it samples the field; then the exchange; then the step proper,
+  // which has nothing left to reset.
+  Engine& engine = this->Local.engine();
+  engine.resetDue(this->Local.runner());
+  std::string error;
+  const long long left = migrate(engine, *this->Pieces, this->Piece, this->Exchange, error);
+  this->Migrated += std::max(left, 0LL);
+  if (!error.empty())
+  {
+    this->Error = error;
+  }
+  this->Local.step(t, h);
+}
+
+void DistributedStepper::save()
+{
+  this->Local.save();
+}
+
+void DistributedStepper::restore()
+{
+  this->Local.restore();
+}
+
+const Engine* DistributedStepper::particles()
+{
+  return this->Local.particles();
+}
+
+long long DistributedStepper::takeMigrated()
+{
+  const long long count = this->Migrated;
+  this->Migrated = 0;
+  return count;
+}
+
+} // namespace bp

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Stepper.h
+ * @brief One interface for everything that steps a system of bound particles.
+ *
+ * The tracer drives a trace through these verbs only: configure the system,
+ * set the field, place every element, step, and save / restore the state
+ * around a short step shown between two step boundaries. Three kinds of
+ * stepper implement them:
+ *  - CpuStepper: the CPU engine in this process;
+ *  - DistributedStepper: a piece of a distributed run (Partition.h), whose
+ *    step also hands elements to the pieces that now own them;
+ *  - WorkQueue (WorkQueue.h): records the calls for a renderer that runs the
+ *    GPU engine in its own GL context (Gpu/GpuStepper.h replays them there).
+ * So the tracer holds one stepper and never asks which it is.
+ */
+#ifndef BoundParticles_Stepper_h
+#define BoundParticles_Stepper_h
+
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "Parallel.h"
+#include "Partition.h"
+#include "VectorField.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace bp
+{
+
+/**
+ * Where a stepper stands once all its work is done: what the trace plan
+ * (TracePlan.h) decides replay-or-continue from.
+ */
+struct TraceCursor
+{
+  bool valid = false;              ///< holds a trace at all
+  double committed = 0.0;          ///< the last step boundary reached
+  std::uint64_t configuration = 0; ///< the tracer configuration it was made for
+  std::uint64_t producer = 0;      ///< which tracer made it
+  bool showsPartialStep = false;   ///< a short step past `committed` is shown (restore() first)
+};
+
+class Stepper
+{
+public:
+  virtual ~Stepper() = default;
+
+  /// Checks the template and parameters and sizes the system; empty on success.
+  virtual std::string configure(const ElementTemplate& shape, const Parameters& parameters) = 0;
+  /// The field later steps sample; empty on success.
+  virtual std::string setField(const VectorField& field) = 0;
+  /// Places every element (generation 0).
+  virtual void initialize() = 0;
+  /// One step of size h from time t on the field last set.
+  virtual void step(double t, double h) = 0;
+  /// Keeps a copy of the state, so a short step can be shown and taken back.
+  virtual void save() = 0;
+  /// Goes back to the copy save() kept.
+  virtual void restore() = 0;
+
+  /// The particles as data in this process, with their normals up to date;
+  /// null where they live elsewhere (in a renderer's GPU textures).
+  virtual const Engine* particles() { return nullptr; }
+
+  TraceCursor cursor;
+};
+
+/// The CPU engine behind the stepper verbs.
+class CpuStepper : public Stepper
+{
+public:
+  explicit CpuStepper(RangeRunner run = serialRunner());
+
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
+  std::string setField(const VectorField& field) override;
+  void initialize() override;
+  void step(double t, double h) override;
+  void save() override;
+  void restore() override;
+  const Engine* particles() override;
+
+  Engine& engine() { return this->Current; }
+  const VectorField* field() const { return this->Field.get(); }
+  const RangeRunner& runner() const { return this->Run; }
+
+private:
+  RangeRunner Run;
+  Engine Current;
+  Engine Saved;
+  std::shared_ptr<const VectorField> Field;
+  bool NormalsCurrent = false;
+};
+
+/**
+ * A piece of a distributed run: the CPU engine on this process's piece of the
+ * field, owning the elements whose centres lie in its block. A step resets
+ * the elements that are due, exchanges those now owned elsewhere (collective:
+ * every piece takes every step), then steps; the same arithmetic as a step of
+ * the whole system (Engine.h).
+ */
+class DistributedStepper : public Stepper
+{
+public:
+  DistributedStepper(RangeRunner run, ExchangeFunction exchange);
+
+  /// Every piece's block and the whole field's domain, both grid-local; this
+  /// process's piece. Set before initialize().
+  void setPieces(const Partition& partition, const Domain& domain, int piece);
+
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
+  std::string setField(const VectorField& field) override;
+  void initialize() override;
+  void step(double t, double h) override;
+  void save() override;
+  void restore() override;
+  const Engine* particles() override;
+
+  /// Elements this piece sent away since the count was last taken.
+  long long takeMigrated();
+  /// The last exchange's error (empty when it went through).
+  const std::string& exchangeError() const { return this->Error; }
+
+private:
+  CpuStepper Local;
+  ExchangeFunction Exchange;
+  std::unique_ptr<Partition> Pieces;
+  Domain WholeDomain;
+  int Piece = 0;
+  long long Migrated = 0;
+  std::string Error;
+};
+
+} // namespace bp
+
+#endif
