@@ -131,4 +131,11 @@ long long DistributedStepper::takeMigrated()
   return count;
 }
 
+std::string DistributedStepper::takeExchangeError()
+{
+  std::string error;
+  error.swap(this->Error);
+  return error;
+}
+
 } // namespace bp

@@ -65,6 +65,13 @@ public:
   /// null where they live elsewhere (in a renderer's GPU textures).
   virtual const Engine* particles() { return nullptr; }
 
+  /// Whether the tracer should read the next field time step ahead of need
+  /// and offer it (a GPU display uploads it a slab per frame).
+  virtual bool readsAhead() const { return false; }
+  /// The time step the next update forward will need, once the tracer has
+  /// it (an empty slice otherwise).
+  virtual void offerUpcoming(const FieldSlice& /*slice*/) {}
+
   TraceCursor cursor;
 };
 
@@ -120,8 +127,9 @@ public:
 
   /// Elements this piece sent away since the count was last taken.
   long long takeMigrated();
-  /// The last exchange's error (empty when it went through).
-  const std::string& exchangeError() const { return this->Error; }
+  /// The last failed exchange's error since this was last asked (empty when
+  /// every exchange went through).
+  std::string takeExchangeError();
 
 private:
   CpuStepper Local;

@@ -34,6 +34,8 @@ std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters&
   {
     return error;
   }
+  // The engine starts again: nothing recorded before matters.
+  this->Pending.clear();
   EngineCall call;
   call.kind = EngineCall::Kind::Configure;
   call.shape = std::make_shared<const ElementTemplate>(shape);

@@ -88,12 +88,13 @@ public:
   void step(double t, double h) override;
   void save() override;
   void restore() override;
+  bool readsAhead() const override { return this->streamTimeSteps; }
+  void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
   /// Drops every pending call (a replay makes them moot).
   void clear() { this->Pending.clear(); }
 
   // Running (the renderer).
   std::vector<EngineCall> take();
-
 
   DrawSettings draw;
 

@@ -2,24 +2,26 @@
 /**
  * @class vtkBoundParticleTracer
  * @brief Traces bound particles (small shapes of particles tied by springs)
- * through a steady or unsteady vector field on a uniform grid.
+ * through a steady or unsteady vector field on a uniform or rectilinear grid.
  *
  * Each of NumberOfElements elements is an instance of ElementShape, scaled to
  * ElementSize, placed in the emitter box, advected with the flow and restored
- * to its shape every step (DESIGN.md §4; the maths lives in the VTK-free core,
- * Core/Engine.h). The output is a vtkPolyData of all particles: the shape's
- * triangles per element, or vertices for one-particle elements, with the point
- * arrays Normals, Velocity, Speed, Force, Lifetime, ElementId, ParticleIndex,
- * Vorticity, Layer and Radius.
+ * to its shape every step (docs/engine-specification.md; the maths lives in
+ * the VTK-free core, Core/Engine.h). The output is a vtkPolyData of all
+ * particles: the shape's triangles per element, or vertices for one-particle
+ * elements, with the point arrays of Core/OutputArrays.h (Normals, Velocity,
+ * Speed, Force, Lifetime, ElementId, ParticleIndex, Vorticity, Layer, Radius).
  *
- * Pipeline time drives the simulation. A request for a time at or after the
- * cached simulation time steps forward from the cache; an earlier time, or any
- * change to the filter or its input, resets and replays from the start. Steps
- * end on the grid start + k*dt and on the data's time steps, so a replay and an
- * incremental run pass through the same states bit for bit. An unsteady input
- * is requested one time step per pass and sampled linearly between the two
- * steps that bracket each moment; at most two are held. A steady input gets
- * NumberOfTimeSteps time values over [0, Duration] so that animation plays it.
+ * Pipeline time drives the simulation (Core/TracePlan.h decides each
+ * request). A request for a time at or after where the trace stands steps
+ * forward from there; an earlier time, or any change to the filter or its
+ * input, replays from the start. Steps end on the grid start + k*dt and on
+ * the data's time steps, so a replay and an incremental run pass through the
+ * same states bit for bit. An unsteady input is requested one time step per
+ * pass and sampled linearly between the two steps that bracket each moment;
+ * at most three are held (the third read ahead for a GPU display). A steady
+ * input gets NumberOfTimeSteps time values over [0, Duration] so that
+ * animation plays it.
  *
  * In parallel (pvbatch, pvserver under MPI) each process asks its input for
  * one block of the grid with ghost layers, owns the elements whose centres lie
@@ -34,7 +36,7 @@
 #include "BoundParticlesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr, std::shared_ptr
+#include <memory> // for std::unique_ptr
 
 class vtkInformationIntegerKey;
 class vtkInformationIntegerRequestKey;
@@ -42,7 +44,7 @@ class vtkPolyData;
 #ifndef __VTK_WRAP__
 namespace bp
 {
-class WorkQueue;
+struct TraceSettings;
 }
 #endif
 
@@ -287,7 +289,7 @@ public:
 
   /**
    * Request key. A renderer that runs the GPU engine sets it on its input
-   * request to the id of its work queue (NewWorkQueue()). With Engine = GPU
+   * request to the id of its work queue (BoundParticleWorkQueues.h). With Engine = GPU
    * the filter then records the engine calls into that queue instead of
    * making them, and outputs no particles: only the field data
    * BoundParticlesWorkQueue (the queue's id), TimeStep, ElementSize and
@@ -298,15 +300,6 @@ public:
   static vtkInformationIntegerRequestKey* GPU_WORK_QUEUE();
   /// Where the output records the GPU_WORK_QUEUE it was made for.
   static vtkInformationIntegerKey* DATA_GPU_WORK_QUEUE();
-
-#ifndef __VTK_WRAP__
-  ///@{
-  /// The process's one registry of GPU work queues (kept in this module so
-  /// that every library sees the same one).
-  static std::shared_ptr<bp::WorkQueue> NewWorkQueue();
-  static std::shared_ptr<bp::WorkQueue> FindWorkQueue(int id);
-  ///@}
-#endif
 
   ///@{
   /// What the last update did: the simulation time of the output, the number
@@ -331,8 +324,10 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  void FillGpuOutput(vtkPolyData* output);
-  void AddSettingsFieldData(vtkPolyData* output);
+#ifndef __VTK_WRAP__
+  /// The properties as the VTK-free core takes them.
+  bp::TraceSettings Settings() const;
+#endif
 
   int ElementShape = STRIP8;
   int TemplateSprings = EDGES_AND_DIAGONALS;

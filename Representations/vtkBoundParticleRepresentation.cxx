@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBoundParticleRepresentation.h"
 
+#include "BoundParticleWorkQueues.h"
 #include "WorkQueue.h"
 #include "vtkBoundParticleTracer.h"
 #include "vtkOpenGLBoundParticleMapper.h"
@@ -30,7 +31,7 @@
 
 struct vtkBoundParticleRepresentation::vtkInternals
 {
-  std::shared_ptr<bp::WorkQueue> Queue = vtkBoundParticleTracer::NewWorkQueue();
+  std::shared_ptr<bp::WorkQueue> Queue = bpvtk::NewWorkQueue();
   vtkNew<vtkActor> Actor;
   vtkNew<vtkProperty> Property;
   vtkNew<vtkOpenGLBoundParticleMapper> GpuMapper;

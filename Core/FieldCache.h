@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file FieldCache.h
+ * @brief The field time steps a trace holds: at most three, by input index.
+ *
+ * Two time steps bracket the moment being stepped; a third is the one read
+ * ahead of need (or the next one arriving before the oldest can go). Memory
+ * stays bounded at three time steps whatever the pipeline asks for: making
+ * room keeps only what the work in progress needs.
+ */
+#ifndef BoundParticles_FieldCache_h
+#define BoundParticles_FieldCache_h
+
+#include "VectorField.h"
+
+#include <map>
+#include <vector>
+
+namespace bp
+{
+
+class FieldCache
+{
+public:
+  static constexpr std::size_t Capacity = 3;
+
+  bool has(int index) const { return this->Slices.count(index) != 0; }
+  std::size_t size() const { return this->Slices.size(); }
+  const FieldSlice& at(int index) const { return this->Slices.at(index); }
+
+  /// The first of `indices` not held, or -1 when all are.
+  int firstMissing(const std::vector<int>& indices) const;
+
+  /// Holds `slice` as time step `index`; with Capacity held, first drops
+  /// every time step not in `keep`.
+  void insert(int index, const FieldSlice& slice, const std::vector<int>& keep);
+
+  /// Drops the time steps before `index` (no later step needs them).
+  void dropBefore(int index);
+
+  void clear() { this->Slices.clear(); }
+
+  /// The field of time step ids[0] (steady), or between ids[0] and ids[1].
+  VectorField field(const GridGeometry& grid, const std::vector<int>& ids) const;
+
+private:
+  std::map<int, FieldSlice> Slices;
+};
+
+} // namespace bp
+
+#endif

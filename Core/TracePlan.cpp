@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TracePlan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+
+std::string TracePlan::setTimes(const std::vector<double>& inputTimes, double duration, int count)
+{
+  this->InputTimes = inputTimes;
+  // One time step is no flow in time: treat it as steady.
+  this->Unsteady = inputTimes.size() >= 2;
+  this->OutputTimes.clear();
+  if (this->Unsteady)
+  {
+    this->OutputTimes = inputTimes;
+    return std::string();
+  }
+  if (!(duration > 0.0) || !std::isfinite(duration) || count < 2 || count > MaxSteadyTimeSteps)
+  {
+    std::ostringstream err;
+    err << "For a steady input, Duration must be positive and finite and NumberOfTimeSteps "
+           "between 2 and "
+        << MaxSteadyTimeSteps << " (they are " << duration << " and " << count << ").";
+    return err.str();
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    this->OutputTimes.push_back(duration * k / (count - 1));
+  }
+  return std::string();
+}
+
+double TracePlan::epsilon() const
+{
+  const double span =
+    this->InputTimes.empty() ? 1.0 : this->InputTimes.back() - this->InputTimes.front();
+  return 1e-9 * std::max(1.0, std::abs(span));
+}
+
+double TracePlan::targetOf(bool requested, double time) const
+{
+  const double start = this->startTime();
+  const double target = requested && std::isfinite(time) ? time : start;
+  const double end = this->OutputTimes.empty() ? start : this->OutputTimes.back();
+  return std::min(std::max(target, start), end);
+}
+
+std::vector<int> TracePlan::intervalAt(double t, bool forward) const
+{
+  if (!this->Unsteady)
+  {
+    return { 0 };
+  }
+  const double eps = this->epsilon();
+  const auto begin = this->InputTimes.begin(), end = this->InputTimes.end();
+  int k = forward ? int(std::upper_bound(begin, end, t + eps) - begin) - 1
+                  : int(std::lower_bound(begin, end, t - eps) - begin) - 1;
+  k = std::max(0, std::min(k, int(this->InputTimes.size()) - 2));
+  return { k, k + 1 };
+}
+
+std::vector<int> TracePlan::needed(double from, double target) const
+{
+  const bool forward = from < target - this->epsilon();
+  return this->intervalAt(forward ? from : target, forward);
+}
+
+TracePlan::Update TracePlan::decide(double target, const TraceCursor& cursor,
+  std::uint64_t producer, std::uint64_t configuration) const
+{
+  Update u;
+  u.target = target;
+  u.replay = cursor.producer != producer || cursor.configuration != configuration ||
+    !cursor.valid || target < cursor.committed - this->epsilon();
+  u.from = u.replay ? this->startTime() : cursor.committed;
+  return u;
+}
+
+int TracePlan::firstRequest(const Update& update, const FieldCache& cache, int upstream) const
+{
+  const std::vector<int> ids = this->needed(update.from, update.target);
+  const int missing = cache.firstMissing(ids);
+  return missing >= 0 ? missing : upstream >= 0 ? upstream : ids.back();
+}
+
+int TracePlan::readAheadIndex(double target) const
+{
+  if (!this->Unsteady)
+  {
+    return -1;
+  }
+  const int next = this->intervalAt(target, false).back() + 1;
+  return next < int(this->InputTimes.size()) ? next : -1;
+}
+
+} // namespace bp

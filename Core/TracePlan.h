@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracePlan.h
+ * @brief Decides, once per request, how a trace reaches the requested time.
+ *
+ * Pipeline time drives the simulation. A request for a time at or after where
+ * the stepper stands continues from there; an earlier time, or a stepper made
+ * for another configuration, replays from the start. An unsteady input is
+ * read one time step per pipeline pass and sampled linearly between the two
+ * steps that bracket each moment; the plan says which time steps the work
+ * needs, which to keep (FieldCache holds at most three) and which to read
+ * ahead for a display that uploads it a slab per frame. A steady input gets
+ * `count` time values over [0, duration] so that an animation plays it.
+ *
+ * No VTK here: the tracer's pipeline passes only ask the plan.
+ */
+#ifndef BoundParticles_TracePlan_h
+#define BoundParticles_TracePlan_h
+
+#include "FieldCache.h"
+#include "Stepper.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+class TracePlan
+{
+public:
+  /// The most time values a steady input may be offered at.
+  static constexpr int MaxSteadyTimeSteps = 100000;
+
+  /**
+   * Sets the time line: the input's time steps (fewer than two: a steady
+   * input, offered `count` times over [0, duration]). Empty on success,
+   * otherwise what to fix; the plan then offers no times.
+   */
+  std::string setTimes(const std::vector<double>& inputTimes, double duration, int count);
+
+  bool unsteady() const { return this->Unsteady; }
+  bool hasTimes() const { return !this->OutputTimes.empty(); }
+  const std::vector<double>& inputTimes() const { return this->InputTimes; }
+  const std::vector<double>& outputTimes() const { return this->OutputTimes; }
+  double startTime() const { return this->OutputTimes.empty() ? 0.0 : this->OutputTimes.front(); }
+  /// Times closer than this are one time.
+  double epsilon() const;
+
+  /// The requested time clamped to the offered range; no request (or a
+  /// non-finite one) is the start.
+  double targetOf(bool requested, double time) const;
+
+  /**
+   * Input time indices of the field around time t: stepping forward from t
+   * needs the interval that starts at t; showing the state at t needs only
+   * an interval that contains it, and at a data time step the one that ends
+   * there is the one already in hand. A steady input has one: {0}.
+   */
+  std::vector<int> intervalAt(double t, bool forward) const;
+
+  /// The time steps the next piece of work needs: stepping on from `from`,
+  /// or showing `target` once there.
+  std::vector<int> needed(double from, double target) const;
+
+  /// One request's decision.
+  struct Update
+  {
+    double target = 0.0; ///< the time to show
+    bool replay = true;  ///< start again from startTime()
+    /// Where stepping starts: startTime() for a replay, else the cursor's.
+    double from = 0.0;
+  };
+
+  /// Replay or continue: a stepper that holds no trace, one made by another
+  /// producer or configuration, or one past the target replays.
+  Update decide(double target, const TraceCursor& cursor, std::uint64_t producer,
+    std::uint64_t configuration) const;
+
+  /**
+   * The time step to ask upstream for in an update's first pass: the first
+   * one the work needs and `cache` lacks; with all in hand, the one upstream
+   * already holds (`upstream`, -1 if none), so nothing upstream runs again.
+   */
+  int firstRequest(const Update& update, const FieldCache& cache, int upstream) const;
+
+  /// The time step after the interval shown at `target`, which the next
+  /// update forward will need; -1 if none (or a steady input).
+  int readAheadIndex(double target) const;
+
+private:
+  bool Unsteady = false;
+  std::vector<double> InputTimes;
+  std::vector<double> OutputTimes;
+};
+
+} // namespace bp
+
+#endif

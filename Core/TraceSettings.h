@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TraceSettings.h
+ * @brief What the user set on the tracer, and how automatic settings resolve
+ * into the engine's Parameters.
+ *
+ * The tracer copies its properties into TraceSettings (world units, 0 or a
+ * negative size meaning "automatic"); resolveSettings() turns them, with the
+ * facts of the field at the start time, into bp::Parameters in the engine's
+ * grid-local coordinates: the time step from a step in cell lengths, the
+ * element size from the grid, the emitter box from the field's bounds, the
+ * lifetimes from the animation's span. No VTK here, so every rule is tested
+ * alone (Testing/Core/TestTraceSettings.cpp).
+ */
+#ifndef BoundParticles_TraceSettings_h
+#define BoundParticles_TraceSettings_h
+
+#include "Engine.h"
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+struct TraceSettings
+{
+  long long numberOfElements = 1000;
+  double elementSize = 0.0;                           ///< world units; 0: automatic
+  std::array<double, 3> emitterCenter = { 0, 0, 0 };  ///< world coordinates
+  std::array<double, 3> emitterSize = { -1, -1, -1 }; ///< negative: the field's extent on that axis
+  bool randomOrientation = true;
+  std::array<double, 3> rotationDegrees = { 0, 0, 0 }; ///< about X, then Y, then Z
+  std::array<double, 2> lifetimeRange = { 0, 0 };      ///< (0, 0): automatic
+  double stepSize = 0.5;
+  bool stepInCellLengths = true; ///< else stepSize is in the data's time units
+  Integrator integrator = Integrator::Euler;
+  Restoration restoration = Restoration::AveragedJacobi;
+  int iterations = 1;
+  double relaxation = 0.2;
+  double shapeStiffness = 1.0;
+  bool linearShapeMatching = false;
+  double linearBlend = 0.5;
+  Linking linking = Linking::None;
+  int latticeWidth = 0;
+  double linkStiffness = 1.0;
+  ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  int seed = 0;
+};
+
+/// What the automatic settings depend on, in grid-local coordinates.
+struct FieldFacts
+{
+  std::array<double, 6> bounds = { 0, 1, 0, 1, 0, 1 }; ///< the whole field's
+  std::array<double, 3> offset = { 0, 0, 0 };          ///< world position of the local origin
+  std::array<int, 3> dims = { 2, 2, 2 };               ///< points per axis (1: a flat axis)
+  double cellLength = 1.0;                             ///< mean cell length
+  double maxSpeed = 1.0;                               ///< the field's largest speed at the start
+  double timeSpan = 0.0;                               ///< the offered time range's length
+};
+
+struct Resolution
+{
+  Parameters parameters;
+  double dt = 0.0;          ///< the largest step, in time units
+  double elementSize = 0.0; ///< world units
+  std::vector<std::string> warnings;
+  std::string error; ///< non-empty: what the user should fix (nothing else is set)
+};
+
+/// Resolves `settings` against `field`: the engine's parameters, or an error.
+Resolution resolveSettings(const TraceSettings& settings, const FieldFacts& field);
+
+} // namespace bp
+
+#endif

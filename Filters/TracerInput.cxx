@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TracerInput.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+struct CopyToFloat
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, std::vector<float>& out) const
+  {
+    const auto values = vtk::DataArrayValueRange(array);
+    out.resize(values.size());
+    std::transform(values.begin(), values.end(), out.begin(),
+      [](typename decltype(values)::ValueType v) { return static_cast<float>(v); });
+  }
+};
+} // namespace
+
+namespace bpvtk
+{
+std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6])
+{
+  std::ostringstream err;
+  vtkImageData* image = vtkImageData::SafeDownCast(input);
+  vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(input);
+  vtkDataSet* dataSet = image ? static_cast<vtkDataSet*>(image) : rectilinear;
+  if (!dataSet)
+  {
+    err << "The input is a " << (input ? input->GetClassName() : "null data object")
+        << "; Bound Particle Tracer needs a vtkImageData (a uniform grid) or a "
+           "vtkRectilinearGrid. Resample the data onto an image first, e.g. with the Resample To "
+           "Image filter.";
+    return err.str();
+  }
+  if (dataSet->GetNumberOfPoints() == 0)
+  {
+    return "The input grid is empty: it has no points.";
+  }
+  const int* dataExtent = image ? image->GetExtent() : rectilinear->GetExtent();
+  std::copy(dataExtent, dataExtent + 6, extent);
+  if (!vectors && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    // No array chosen and no active vectors: take the first 3-component point array.
+    vtkPointData* pd = dataSet->GetPointData();
+    for (int i = 0; i < pd->GetNumberOfArrays() && !vectors; ++i)
+    {
+      vtkDataArray* candidate = pd->GetArray(i);
+      if (candidate && candidate->GetNumberOfComponents() == 3)
+      {
+        vectors = candidate;
+      }
+    }
+  }
+  if (!vectors)
+  {
+    return "The input has no point vector array. Select a 3-component point array with the "
+           "Vectors property (pvpython: Vectors = ['POINTS', 'name']).";
+  }
+  const char* name = vectors->GetName() ? vectors->GetName() : "(unnamed)";
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    err << "The array '" << name
+        << "' is not point data; choose a point array (or apply Cell Data to Point Data).";
+    return err.str();
+  }
+  if (vectors->GetNumberOfComponents() != 3)
+  {
+    err << "The array '" << name << "' has " << vectors->GetNumberOfComponents()
+        << " component(s); Bound Particle Tracer needs a 3-component vector array.";
+    return err.str();
+  }
+  if (vectors->GetNumberOfTuples() != dataSet->GetNumberOfPoints())
+  {
+    err << "The array '" << name << "' has " << vectors->GetNumberOfTuples() << " tuples for "
+        << dataSet->GetNumberOfPoints() << " points.";
+    return err.str();
+  }
+  bp::GridGeometry g;
+  if (image)
+  {
+    if (!image->GetDirectionMatrix()->IsIdentity())
+    {
+      return "The input image is rotated (its direction matrix is not the identity); Bound "
+             "Particle Tracer needs an axis-aligned grid. Resample it with Resample To Image.";
+    }
+    // Point 0 of an image lies at origin + extent_min * spacing (e.g. after Extract Subset).
+    const int* extent = image->GetExtent();
+    image->GetDimensions(g.dims.data());
+    image->GetOrigin(g.origin.data());
+    image->GetSpacing(g.spacing.data());
+    for (int a = 0; a < 3; ++a)
+    {
+      g.origin[a] += extent[2 * a] * g.spacing[a];
+    }
+  }
+  else
+  {
+    vtkDataArray* axes[3] = { rectilinear->GetXCoordinates(), rectilinear->GetYCoordinates(),
+      rectilinear->GetZCoordinates() };
+    int dims[3];
+    rectilinear->GetDimensions(dims);
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!axes[a] || axes[a]->GetNumberOfTuples() != dims[a])
+      {
+        err << "The rectilinear grid's "
+            << "XYZ"[a] << " coordinates do not match its " << dims[a]
+            << " points along that axis.";
+        return err.str();
+      }
+      std::vector<double> c(std::size_t(dims[a]));
+      for (int i = 0; i < dims[a]; ++i)
+      {
+        c[std::size_t(i)] = axes[a]->GetComponent(i, 0);
+      }
+      // Evenly spaced axes are sampled the uniform way: fewer operations, and
+      // images and rectilinear grids of the same points trace alike.
+      bool even = c.size() > 1;
+      const double h = even ? (c.back() - c.front()) / double(c.size() - 1) : 1.0;
+      for (std::size_t i = 1; even && i < c.size(); ++i)
+      {
+        even = std::abs((c[i] - c[i - 1]) - h) <= 1e-6 * std::abs(h);
+      }
+      if (even)
+      {
+        g.dims[a] = dims[a];
+        g.origin[a] = c.front();
+        g.spacing[a] = h;
+      }
+      else if (c.size() == 1)
+      {
+        g.dims[a] = 1;
+        g.origin[a] = c.front();
+      }
+      else
+      {
+        g.setCoordinates(a, std::move(c));
+      }
+    }
+  }
+  auto values = std::make_shared<std::vector<float>>();
+  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
+  if (!Dispatch::Execute(vectors, CopyToFloat{}, *values))
+  {
+    CopyToFloat{}(vectors, *values);
+  }
+  slice.velocity = values;
+  grid = g;
+  return std::string();
+}
+
+std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out)
+{
+  if (!mesh || mesh->GetNumberOfPoints() == 0)
+  {
+    return "The Element Template input has no points.";
+  }
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<std::array<float, 3>> points(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    points[i] = { float(x[0]), float(x[1]), float(x[2]) };
+  }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  vtkIdType count;
+  const vtkIdType* ids;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(count, ids);
+    for (vtkIdType k = 1; k + 1 < count; ++k) // a fan over each polygon
+    {
+      triangles.push_back(
+        { std::uint32_t(ids[0]), std::uint32_t(ids[k]), std::uint32_t(ids[k + 1]) });
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    strips->GetCurrentCell(count, ids);
+    for (vtkIdType k = 0; k + 2 < count; ++k) // every other triangle turned round
+    {
+      const auto a = std::uint32_t(ids[k]), b = std::uint32_t(ids[k + 1]),
+                 c = std::uint32_t(ids[k + 2]);
+      triangles.push_back(
+        k % 2 ? std::array<std::uint32_t, 3>{ b, a, c } : std::array<std::uint32_t, 3>{ a, b, c });
+    }
+  }
+  std::vector<std::array<std::uint32_t, 2>> springs;
+  std::vector<float> stiffness;
+  vtkDataArray* stiffnessArray = mesh->GetCellData()->GetArray("Stiffness");
+  const vtkIdType firstLine = mesh->GetNumberOfVerts();
+  vtkIdType line = 0;
+  auto lines = vtk::TakeSmartPointer(mesh->GetLines()->NewIterator());
+  for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++line)
+  {
+    lines->GetCurrentCell(count, ids);
+    const float k =
+      stiffnessArray ? float(stiffnessArray->GetComponent(firstLine + line, 0)) : 1.0f;
+    for (vtkIdType j = 0; j + 1 < count; ++j)
+    {
+      springs.push_back({ std::uint32_t(ids[j]), std::uint32_t(ids[j + 1]) });
+      stiffness.push_back(k);
+    }
+  }
+  if (springs.empty())
+  {
+    springs = bp::meshSprings(std::size_t(n), triangles, mode);
+    stiffness.assign(springs.size(), 1.0f);
+  }
+  out = bp::makeTemplate("Element Template", points, triangles, springs);
+  for (std::size_t k = 0; k < out.springs.size() && k < stiffness.size(); ++k)
+  {
+    out.springs[k].stiffness = stiffness[k];
+  }
+  if (vtkDataArray* pinned = mesh->GetPointData()->GetArray("Pinned"))
+  {
+    out.pinned.assign(std::size_t(n), 0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out.pinned[i] = pinned->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    }
+  }
+  const std::string error = out.validate();
+  return error.empty() ? error : "The Element Template input is unusable: " + error + ".";
+}
+
+} // namespace bpvtk

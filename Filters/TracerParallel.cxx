@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TracerParallel.h"
+
+#include "vtkCommunicator.h"
+#include "vtkExtentTranslator.h"
+#include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+/// The global controller when the pipeline asks for one of as many pieces as
+/// it has processes (pvbatch, pvserver under MPI), else null.
+vtkMultiProcessController* pieceController(int pieces)
+{
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  return pieces > 1 && c && c->GetNumberOfProcesses() == pieces ? c : nullptr;
+}
+
+/// Sends each process its records, pairwise in one global order of pairs (so
+/// blocking sends never wait on each other in a cycle); only pairs with
+/// something to send talk.
+bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
+{
+  return [controller](const std::vector<std::vector<std::uint32_t>>& outgoing)
+  {
+    const int P = controller->GetNumberOfProcesses(), me = controller->GetLocalProcessId();
+    const std::size_t processes = std::size_t(P);
+    std::vector<long long> counts(processes), all(processes * processes);
+    for (int q = 0; q < P; ++q)
+    {
+      counts[std::size_t(q)] = q == me ? 0 : (long long)outgoing[std::size_t(q)].size();
+    }
+    controller->AllGather(counts.data(), all.data(), P);
+    constexpr int tag = 8731;
+    std::vector<std::uint32_t> incoming, buffer;
+    for (int q = 0; q < P; ++q)
+    {
+      if (q == me)
+      {
+        continue;
+      }
+      const long long sending = all[std::size_t(me) * P + q];
+      const long long receiving = all[std::size_t(q) * P + me];
+      auto send = [&]
+      {
+        if (sending > 0)
+          controller->Send(outgoing[std::size_t(q)].data(), vtkIdType(sending), q, tag);
+      };
+      auto receive = [&]
+      {
+        if (receiving > 0)
+        {
+          buffer.resize(std::size_t(receiving));
+          controller->Receive(buffer.data(), vtkIdType(receiving), q, tag);
+          incoming.insert(incoming.end(), buffer.begin(), buffer.end());
+        }
+      };
+      if (me < q)
+      {
+        send();
+        receive();
+      }
+      else
+      {
+        receive();
+        send();
+      }
+    }
+    return incoming;
+  };
+}
+} // namespace
+
+namespace bpvtk
+{
+
+bool PieceLayout::takeRequest(vtkInformation* outInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  this->RequestedPiece =
+    outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  vtkMultiProcessController* controller = pieceController(pieces);
+  const bool changed =
+    controller != this->Controller || (controller && this->Piece != this->RequestedPiece);
+  this->Controller = controller;
+  this->Pieces = controller ? pieces : 1;
+  this->Piece = controller ? this->RequestedPiece : 0;
+  return changed;
+}
+
+void PieceLayout::requestInput(vtkInformation* inInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (!inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    return;
+  }
+  // The whole extent: in parallel, the executive of a source that can
+  // produce sub-extents splits it by piece (blocks, as below) and adds the
+  // ghost layers.
+  int* whole = inInfo->Get(SDDP::WHOLE_EXTENT());
+  std::copy(whole, whole + 6, this->WholeExtent);
+  inInfo->Set(SDDP::UPDATE_EXTENT(), whole, 6);
+  if (!this->distributed())
+  {
+    // Piece 0 traces the whole field: ask for all of it.
+    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    return;
+  }
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), this->GhostCells);
+  vtkNew<vtkExtentTranslator> translator;
+  if (!translator->PieceToExtentThreadSafe(
+        this->Piece, this->Pieces, 0, whole, this->OwnedExtent, vtkExtentTranslator::BLOCK_MODE, 0))
+  {
+    // More processes than blocks: this one owns nothing.
+    for (int a = 0; a < 3; ++a)
+    {
+      this->OwnedExtent[2 * a] = whole[2 * a] + 1;
+      this->OwnedExtent[2 * a + 1] = whole[2 * a];
+    }
+  }
+}
+
+std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
+  std::array<double, 3>& offset)
+{
+  const int* owned = this->OwnedExtent;
+  const bool owns = owned[0] <= owned[1] && owned[2] <= owned[3] && owned[4] <= owned[5];
+  constexpr int Values = 8; // box, status, smallest cell width
+  double mine[Values] = { 1, 0, 1, 0, 1, 0, 1, 0 };
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3 && error.empty(); ++a)
+  {
+    if (owns && (owned[2 * a] < extent[2 * a] || owned[2 * a + 1] > extent[2 * a + 1]))
+    {
+      std::ostringstream err;
+      err << "The input delivered extent [" << extent[0] << " " << extent[1] << " " << extent[2]
+          << " " << extent[3] << " " << extent[4] << " " << extent[5]
+          << "], which lacks this process's block [" << owned[0] << " " << owned[1] << " "
+          << owned[2] << " " << owned[3] << " " << owned[4] << " " << owned[5]
+          << "]; the source must produce the extent it is asked for.";
+      error = err.str();
+      break;
+    }
+    if (owns)
+    {
+      mine[2 * a] = grid.coordinate(a, owned[2 * a] - extent[2 * a]);
+      mine[2 * a + 1] = grid.coordinate(a, owned[2 * a + 1] - extent[2 * a]);
+    }
+    for (int i = 0; i + 1 < grid.dims[a]; ++i)
+    {
+      smallest = std::min(smallest, std::abs(grid.coordinate(a, i + 1) - grid.coordinate(a, i)));
+      if (!grid.isRectilinear(a))
+        break;
+    }
+  }
+  mine[6] = error.empty() ? 1.0 : 0.0;
+  mine[7] = smallest;
+  std::vector<double> all(std::size_t(Values) * this->Pieces);
+  this->Controller->AllGather(mine, all.data(), Values);
+  std::vector<bp::Box> boxes(std::size_t(this->Pieces));
+  this->DomainSmallestCell = std::numeric_limits<double>::infinity();
+  for (int q = 0; q < this->Pieces; ++q)
+  {
+    const double* v = all.data() + std::size_t(q) * Values;
+    if (v[6] == 0.0 && error.empty())
+    {
+      error = "Process " + std::to_string(q) +
+        " could not read its piece of the input; see its error message.";
+    }
+    std::copy(v, v + 6, boxes[std::size_t(q)].begin());
+    this->DomainSmallestCell = std::min(this->DomainSmallestCell, v[7]);
+  }
+  if (error.empty())
+  {
+    error = bp::Partition::validate(boxes);
+    error = error.empty() ? error : "The processes' pieces of the input do not fit: " + error + ".";
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  const bp::Box world = bp::Partition(boxes).domain();
+  offset = { world[0], world[2], world[4] };
+  for (bp::Box& b : boxes)
+  {
+    for (int k = 0; k < 6 && !bp::isEmptyBox(b); ++k)
+      b[k] -= offset[std::size_t(k / 2)];
+  }
+  this->Partition.reset(new bp::Partition(boxes));
+  const bp::Box& local = this->Partition->domain();
+  double sum = 0.0;
+  int axes = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int cells = this->WholeExtent[2 * a + 1] - this->WholeExtent[2 * a];
+    this->Domain.lower[a] = float(local[2 * a]);
+    this->Domain.upper[a] = float(local[2 * a + 1]);
+    this->Domain.degenerate[a] = cells < 1;
+    if (cells >= 1)
+    {
+      sum += (local[2 * a + 1] - local[2 * a]) / cells;
+      ++axes;
+    }
+  }
+  this->DomainCellLength = axes > 0 ? sum / axes : 1.0;
+  return std::string();
+}
+
+double PieceLayout::globalMax(double value) const
+{
+  double global = value;
+  this->Controller->AllReduce(&value, &global, 1, vtkCommunicator::MAX_OP);
+  return global;
+}
+
+bp::ExchangeFunction PieceLayout::exchange() const
+{
+  return controllerExchange(this->Controller);
+}
+
+std::array<double, 6> PieceLayout::domainBounds(const bp::GridGeometry& local) const
+{
+  return this->distributed() && this->Partition ? this->Partition->domain() : local.bounds();
+}
+
+double PieceLayout::cellLength(const bp::GridGeometry& local) const
+{
+  return this->distributed() ? this->DomainCellLength : local.cellLength();
+}
+
+} // namespace bpvtk

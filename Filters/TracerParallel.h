@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerParallel.h
+ * @brief The tracer's part of a distributed run (pvbatch, pvserver under MPI).
+ *
+ * When the pipeline asks for one of as many pieces as there are processes,
+ * each process asks its input for one block of the image extent (the
+ * vtkExtentTranslator's block split) with ghost layers, owns the elements
+ * whose centres lie in its block, and after each step hands elements to the
+ * process that owns their new centre (bp::DistributedStepper, through the
+ * global vtkMultiProcessController). Otherwise piece 0 traces the whole field
+ * and other pieces are empty.
+ */
+#ifndef BoundParticles_TracerParallel_h
+#define BoundParticles_TracerParallel_h
+
+#include "Partition.h"
+#include "VectorField.h"
+
+#include <array>
+#include <memory>
+#include <string>
+
+class vtkInformation;
+class vtkMultiProcessController;
+
+namespace bpvtk
+{
+
+class PieceLayout
+{
+public:
+  /**
+   * Takes the pieces the output request asks for (UPDATE_PIECE_NUMBER,
+   * UPDATE_NUMBER_OF_PIECES). Returns true when they differ from the last
+   * request's: a change of pieces is a change of input, so the trace replays.
+   */
+  bool takeRequest(vtkInformation* outInfo);
+
+  /// Asks the input for the whole extent (one process) or this process's
+  /// block with GhostCells layers (the executive splits it).
+  void requestInput(vtkInformation* inInfo);
+
+  /**
+   * Gathers every process's block of the field (its owned extent's bounds)
+   * into the partition and the whole field's domain, and sets `offset` to the
+   * whole grid's first point. Collective; a process that could not read its
+   * piece (`error` not empty) makes every process fail. Returns the error, if any.
+   */
+  std::string share(std::string error, const bp::GridGeometry& grid, const int extent[6],
+    std::array<double, 3>& offset);
+
+  /// The largest of every process's `value` (collective).
+  double globalMax(double value) const;
+
+  /// The element exchange through the controller (DistributedStepper).
+  bp::ExchangeFunction exchange() const;
+
+  bool distributed() const { return this->Controller != nullptr; }
+  /// Whether this process outputs nothing: a piece other than 0 of several
+  /// asked for without a process per piece.
+  bool idle() const { return !this->distributed() && this->RequestedPiece != 0; }
+
+  /// The whole field's bounds, grid-local (`local` is this process's grid).
+  std::array<double, 6> domainBounds(const bp::GridGeometry& local) const;
+  /// The whole field's mean cell length (`local` is this process's grid).
+  double cellLength(const bp::GridGeometry& local) const;
+
+  vtkMultiProcessController* Controller = nullptr;
+  int Piece = 0;
+  int Pieces = 1;
+  int RequestedPiece = 0; ///< the output piece asked for (without a controller)
+  int GhostCells = 2;     ///< around the owned block; grown at a replay if too few
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  std::unique_ptr<bp::Partition> Partition; ///< every piece's block, grid-local
+  bp::Domain Domain;                        ///< the whole field's, grid-local
+  double DomainCellLength = 1.0, DomainSmallestCell = 1.0;
+};
+
+} // namespace bpvtk
+
+#endif

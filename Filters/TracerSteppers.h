@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerSteppers.h
+ * @brief The tracer's steppers (Core/Stepper.h) and which one an update uses.
+ *
+ * The CPU engine in this process; a piece of a distributed run; or, when the
+ * Engine property is GPU and the request comes from a Bound Particles display
+ * in this process, that display's work queue, which records the calls for
+ * the GPU engine in its render window. Each keeps its own cursor, so a trace
+ * for the display and one for any other consumer never mix.
+ */
+#ifndef BoundParticles_TracerSteppers_h
+#define BoundParticles_TracerSteppers_h
+
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "Stepper.h"
+#include "WorkQueue.h"
+
+#include <memory>
+#include <string>
+
+class vtkInformation;
+
+namespace bpvtk
+{
+class PieceLayout;
+
+/// Runs element ranges through vtkSMPTools (the engine's parallel loops).
+bp::RangeRunner smpRunner();
+
+class TracerSteppers
+{
+public:
+  TracerSteppers();
+
+  /// Picks this update's stepper for a request (`outInfo`) to a tracer whose
+  /// Engine property asks for the GPU (`gpu`) or not.
+  void select(bool gpu, vtkInformation* outInfo, const PieceLayout& pieces);
+
+  bp::Stepper& active() { return *this->Active; }
+  /// The display's queue when this update records for it, else null.
+  bp::WorkQueue* queue() { return this->Queue.get(); }
+
+  /**
+   * Before a replay configures the active stepper: when it records for a
+   * display whose GPU cannot hold this system, gives the display the reason
+   * and takes the CPU engine instead. Returns the message to show (empty
+   * when nothing changed).
+   */
+  std::string fallBackIfTooLarge(const bp::ElementTemplate& shape, const bp::Parameters& p);
+
+  /// Forgets the active trace (after a failure, an abort or a change).
+  void invalidate();
+
+  /// The distributed stepper (valid while the pieces are distributed).
+  bp::DistributedStepper& distributed() { return *this->Distributed; }
+
+private:
+  bp::CpuStepper Cpu;
+  std::unique_ptr<bp::DistributedStepper> Distributed;
+  std::shared_ptr<bp::WorkQueue> Queue;
+  bp::Stepper* Active = &Cpu;
+};
+
+} // namespace bpvtk
+
+#endif

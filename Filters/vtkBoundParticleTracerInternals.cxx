@@ -1,0 +1,481 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkBoundParticleTracerInternals.h"
+
+#include "ElementTemplate.h"
+#include "Partition.h"
+#include "TraceSettings.h"
+#include "TracerInput.h"
+#include "VectorField.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+namespace
+{
+std::uint64_t nextProducerId()
+{
+  static std::mutex m;
+  static std::uint64_t next = 0;
+  std::lock_guard<std::mutex> lock(m);
+  return ++next;
+}
+} // namespace
+
+vtkBoundParticleTracer::vtkInternals::vtkInternals()
+  : ProducerId(nextProducerId())
+{
+}
+
+void vtkBoundParticleTracer::vtkInternals::invalidate()
+{
+  ++this->Configuration;
+  this->Steppers.invalidate();
+}
+
+void vtkBoundParticleTracer::vtkInternals::clear()
+{
+  this->Steppers.active().cursor.valid = false;
+  this->Cache.clear();
+  this->Continuing = false;
+}
+
+void vtkBoundParticleTracer::vtkInternals::decide(
+  vtkBoundParticleTracer* self, vtkInformation* outInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  this->Steppers.select(self->Engine == GPU, outInfo, this->Layout);
+  const double target = this->Plan.targetOf(
+    outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
+  this->Decision =
+    this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
+  this->RequestIndex = this->Plan.firstRequest(this->Decision, this->Cache, this->LastRequested);
+}
+
+void vtkBoundParticleTracer::vtkInternals::begin(vtkBoundParticleTracer* self)
+{
+  bp::Stepper& stepper = this->stepper();
+  const bool replay = this->Decision.replay;
+  this->ReplayPending = replay;
+  this->StepsInLastUpdate = 0;
+  this->Migrated = 0;
+  this->LastUpdateReplayed = replay;
+  this->ReadThisUpdate = false;
+  this->IntervalAtStart = replay || !this->Plan.unsteady()
+    ? -1
+    : this->Plan.intervalAt(stepper.cursor.committed, false).front();
+  if (!replay && stepper.cursor.showsPartialStep)
+  {
+    // Take back the short step the last update showed: the trace stays on
+    // the step boundaries, so a replay and a continued run agree bit for bit.
+    stepper.restore();
+  }
+  stepper.cursor.showsPartialStep = false;
+  if (replay && this->Layout.distributed() && this->Layout.Piece == 0 && self->Engine == GPU)
+  {
+    vtkWarningWithObjectMacro(self,
+      "The GPU engine runs in one process; with "
+        << this->Layout.Pieces
+        << " processes the CPU engine traces and the Bound Particles display draws its "
+           "particles on every process.");
+  }
+  if (replay)
+  {
+    stepper.cursor.valid = false;
+    // A steady input's single time step is read again at every replay; an
+    // unsteady input's stay valid (RequestInformation drops them when the
+    // input changes).
+    if (!this->Plan.unsteady())
+    {
+      this->Cache.clear();
+    }
+  }
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector)
+{
+  // A first pass with every time step in hand asked for whatever upstream
+  // held: take it only if the work needs it.
+  const std::vector<int> planned = this->Plan.needed(
+    this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed,
+    this->target());
+  const bool wanted = this->Continuing ||
+    std::find(planned.begin(), planned.end(), this->RequestIndex) != planned.end();
+  if (!wanted || this->Cache.has(this->RequestIndex))
+  {
+    return std::string();
+  }
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  bp::GridGeometry grid;
+  bp::FieldSlice slice;
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* vectors =
+    input ? self->GetInputArrayToProcess(0, inputVector, association) : nullptr;
+  int extent[6];
+  std::string error = bpvtk::readSlice(input, vectors, association, grid, slice, extent);
+  std::array<double, 3> offset = grid.origin;
+  if (this->Layout.distributed())
+  {
+    // Every process reads in this pass: agree on the pieces (and fail together).
+    error = this->Layout.share(error, grid, extent, offset);
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  slice.time = this->Plan.unsteady() ? this->Plan.inputTimes()[this->RequestIndex] : 0.0;
+  vtkInformation* data = input->GetInformation();
+  if (this->Plan.unsteady() && data->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    const double delivered = data->Get(vtkDataObject::DATA_TIME_STEP());
+    if (std::abs(delivered - slice.time) > this->Plan.epsilon())
+    {
+      vtkWarningWithObjectMacro(self,
+        "Asked the input for time " << slice.time << " but it delivered time " << delivered
+                                    << "; using it as time " << slice.time << ".");
+    }
+  }
+  return this->keepTimeStep(grid, offset, slice);
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
+  bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice)
+{
+  // The engine works in coordinates relative to the grid's first point (the
+  // whole grid's, in parallel), so float positions keep their precision far
+  // from the world origin.
+  grid.translate(offset);
+  if (this->Cache.size() > 0)
+  {
+    const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
+    bool same = grid.sameAs(this->Grid, tolerance);
+    for (int a = 0; a < 3; ++a)
+    {
+      same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
+    }
+    if (!same)
+    {
+      return "The input's time steps do not share one grid; every time step must have the same "
+             "dimensions and point coordinates.";
+    }
+  }
+  this->Offset = offset;
+  this->Grid = grid;
+  const std::string gridError = grid.validate();
+  if (!gridError.empty())
+  {
+    return "Unusable input: " + gridError + ".";
+  }
+  const std::string fieldError = bp::VectorField(grid, slice).validate();
+  if (!fieldError.empty())
+  {
+    return "Unusable input: " + fieldError + ".";
+  }
+  const double from =
+    this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed;
+  this->Cache.insert(this->RequestIndex, slice, this->Plan.needed(from, this->target()));
+  this->ReadThisUpdate = true;
+  return std::string();
+}
+
+bp::FieldFacts vtkBoundParticleTracer::vtkInternals::fieldFacts(const bp::VectorField& field)
+{
+  bp::FieldFacts facts;
+  // The whole field's, also in parallel where this process holds a piece.
+  facts.bounds = this->Layout.domainBounds(this->Grid);
+  facts.offset = this->Offset;
+  facts.dims = this->Grid.dims;
+  facts.cellLength = this->Layout.cellLength(this->Grid);
+  facts.maxSpeed = field.maxSpeed();
+  if (this->Layout.distributed())
+  {
+    facts.maxSpeed = this->Layout.globalMax(facts.maxSpeed);
+  }
+  const std::vector<double>& times = this->Plan.outputTimes();
+  facts.timeSpan = times.back() - times.front();
+  return facts;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::elementTemplate(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape)
+{
+  shape = bp::builtinTemplate(bp::BuiltinShape(self->ElementShape));
+  if (self->GetNumberOfInputConnections(1) == 0)
+  {
+    return std::string();
+  }
+  return bpvtk::templateFromPolyData(
+    vtkPolyData::GetData(inputVector[1], 0), bp::MeshSprings(self->TemplateSprings), shape);
+}
+
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector)
+{
+  const std::vector<int> ids = this->Plan.needed(this->Plan.startTime(), this->target());
+  const int missing = this->Cache.firstMissing(ids);
+  if (missing >= 0)
+  {
+    return Pass::need(missing);
+  }
+  const bp::VectorField field = this->Cache.field(this->Grid, ids);
+  const bp::FieldFacts facts = this->fieldFacts(field);
+  const bp::Resolution resolved = bp::resolveSettings(self->Settings(), facts);
+  for (const std::string& warning : resolved.warnings)
+  {
+    vtkWarningWithObjectMacro(self, << warning);
+  }
+  if (!resolved.error.empty())
+  {
+    return Pass::fail(resolved.error);
+  }
+  this->ResolvedDt = resolved.dt;
+  this->ResolvedElementSize = resolved.elementSize;
+  if (this->Layout.distributed())
+  {
+    // Enough ghost layers for an element and a step at twice the start's
+    // largest speed (an unsteady flow may speed up); if the pieces in hand
+    // have fewer, ask for them again with more. Every process computes the
+    // same number from the same global values.
+    const int needed = bp::ghostCellsNeeded(
+      resolved.elementSize, 2.0 * facts.maxSpeed, resolved.dt, this->Layout.DomainSmallestCell);
+    if (needed > this->Layout.GhostCells)
+    {
+      this->Layout.GhostCells = needed;
+      this->Cache.clear();
+      return Pass::need(ids.front());
+    }
+    if (self->Linking != NO_LINKING)
+    {
+      return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
+        std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
+    }
+  }
+  bp::ElementTemplate shape;
+  const std::string templateError = this->elementTemplate(self, inputVector, shape);
+  if (!templateError.empty())
+  {
+    return Pass::fail(templateError);
+  }
+  const bp::Parameters& p = resolved.parameters;
+  const std::string fallback = this->Steppers.fallBackIfTooLarge(shape, p);
+  if (!fallback.empty())
+  {
+    vtkErrorWithObjectMacro(self, << fallback);
+  }
+  bp::Stepper& stepper = this->stepper();
+  const std::string error = stepper.configure(shape, p);
+  if (!error.empty())
+  {
+    return Pass::fail(error + ".");
+  }
+  stepper.setField(field);
+  if (this->Layout.distributed())
+  {
+    this->Steppers.distributed().setPieces(
+      *this->Layout.Partition, this->Layout.Domain, this->Layout.Piece);
+  }
+  stepper.initialize();
+  this->Parameters = p;
+  this->ParticlesPerElement = shape.particleCount();
+  if (this->Steppers.queue())
+  {
+    // The display's output has no particles: it carries the ranges they span.
+    this->RangeFacts = bp::rangeFactsOf(field, p, resolved.dt, self->ColoringAxis, this->Offset,
+      this->Grid.bounds(), shape.particleCount());
+  }
+  this->startTrace();
+  return Pass();
+}
+
+void vtkBoundParticleTracer::vtkInternals::startTrace()
+{
+  this->Cells.reset(); // the element count or shape may have changed
+  this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,
+    this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
+  bp::TraceCursor& cursor = this->stepper().cursor;
+  cursor.committed = this->Plan.startTime();
+  cursor.valid = true;
+  cursor.configuration = this->Configuration;
+  cursor.producer = this->ProducerId;
+  cursor.showsPartialStep = false;
+  this->ReplayPending = false;
+}
+
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
+  vtkBoundParticleTracer* self)
+{
+  bp::Stepper& stepper = this->stepper();
+  double& committed = stepper.cursor.committed;
+  const double target = this->target();
+  const double span = std::max(target - committed, 1e-300);
+  const double progressStart = committed;
+  bool aborted = false;
+  auto keepGoing = [&](double t)
+  {
+    ++this->StepsInLastUpdate;
+    self->UpdateProgress((t - progressStart) / span);
+    // In parallel every process must take every step (each exchanges
+    // elements with the others), so one process alone cannot stop.
+    aborted = !this->Layout.distributed() && self->CheckAbort();
+    return !aborted;
+  };
+  // One data interval at a time.
+  while (true)
+  {
+    const std::vector<int> ids = this->Plan.needed(committed, target);
+    const int missing = this->Cache.firstMissing(ids);
+    if (missing >= 0)
+    {
+      // Drop what no later step needs before asking for the next time step.
+      this->Cache.dropBefore(ids.front());
+      return Pass::need(missing);
+    }
+    const double intervalEnd = ids.size() == 2 ? this->Plan.inputTimes()[ids[1]] : target;
+    const double limit = std::min(target, intervalEnd);
+    const double before = committed;
+    stepper.setField(this->Cache.field(this->Grid, ids));
+    committed = bp::advance(
+      *this->Schedule, committed, limit, [&](double t, double h) { stepper.step(t, h); },
+      keepGoing);
+    if (aborted)
+    {
+      return { Pass::Aborted, -1, std::string() };
+    }
+    if (limit >= target || committed < intervalEnd - this->Schedule->epsilon())
+    {
+      return Pass();
+    }
+    if (committed == before)
+    {
+      // Never spin: the schedule lands on every data time step, so this is a bug.
+      return Pass::fail("Time stepping made no progress at t = " + std::to_string(before) +
+        "; please report this with the input's time steps.");
+    }
+  }
+}
+
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::readAhead()
+{
+  bp::Stepper& stepper = this->stepper();
+  if (!stepper.readsAhead())
+  {
+    return Pass();
+  }
+  // Read the time step after this interval ahead of need, so the display can
+  // upload it a slab per frame before a step crosses into it. Only in an
+  // update that stays in its interval and read nothing: a frame that crosses
+  // a time step has had its share.
+  const int upcoming = this->Plan.readAheadIndex(this->target());
+  const bool quietFrame = !this->ReadThisUpdate &&
+    this->IntervalAtStart == this->Plan.intervalAt(this->target(), false).front();
+  if (upcoming >= 0 && !this->Cache.has(upcoming) && quietFrame)
+  {
+    return Pass::need(upcoming);
+  }
+  stepper.offerUpcoming(
+    upcoming >= 0 && this->Cache.has(upcoming) ? this->Cache.at(upcoming) : bp::FieldSlice());
+  return Pass();
+}
+
+void vtkBoundParticleTracer::vtkInternals::show(vtkBoundParticleTracer* self, vtkPolyData* output)
+{
+  // The output at the target: the committed state, finished with a shorter
+  // step that the next update takes back, so the trace stays on the step
+  // boundaries.
+  bp::Stepper& stepper = this->stepper();
+  const double target = this->target();
+  const bp::VectorField field = this->Cache.field(this->Grid, this->Plan.intervalAt(target, false));
+  stepper.setField(field);
+  const double committed = stepper.cursor.committed;
+  if (target - committed > this->Schedule->epsilon())
+  {
+    stepper.save();
+    stepper.step(committed, target - committed);
+    stepper.cursor.showsPartialStep = true;
+    ++this->StepsInLastUpdate;
+  }
+  if (this->Layout.distributed())
+  {
+    this->Migrated += this->Steppers.distributed().takeMigrated();
+    const std::string error = this->Steppers.distributed().takeExchangeError();
+    if (!error.empty())
+    {
+      vtkWarningWithObjectMacro(self, "An element exchange failed: " << error);
+    }
+  }
+  const bp::Engine* particles = stepper.particles();
+  self->UpdateProgress(1.0);
+  if (particles)
+  {
+    bpvtk::OutputFrame frame;
+    frame.time = target;
+    frame.offset = this->Offset;
+    frame.domain = this->Layout.domainBounds(this->Grid);
+    const auto local = this->Grid.bounds();
+    for (int a = 0; a < 3; ++a)
+    {
+      frame.reach = std::max(frame.reach, std::abs(this->Offset[a]) + std::abs(local[2 * a + 1]));
+    }
+    frame.cellLength = this->Grid.cellLength();
+    frame.coloringAxis = self->ColoringAxis;
+    frame.computeVorticity = self->ComputeVorticity != 0;
+    bpvtk::fillParticleOutput(output, *particles, field, frame, this->Cells, bpvtk::smpRunner());
+  }
+  else
+  {
+    this->fillDisplayOutput(self, output);
+  }
+  this->addSettingsFieldData(output);
+}
+
+void vtkBoundParticleTracer::vtkInternals::fillDisplayOutput(
+  vtkBoundParticleTracer* self, vtkPolyData* output)
+{
+  bp::WorkQueue& queue = *this->Steppers.queue();
+  bp::DrawSettings& d = queue.draw;
+  d.time = this->target();
+  d.offset = this->Offset;
+  const auto bounds = this->Grid.bounds();
+  for (int a = 0; a < 3; ++a)
+  {
+    d.bounds[2 * a] = bounds[2 * a] + this->Offset[a];
+    d.bounds[2 * a + 1] = bounds[2 * a + 1] + this->Offset[a];
+  }
+  d.coloringAxis = self->ColoringAxis;
+  const int u = (self->ColoringAxis + 1) % 3, v = (self->ColoringAxis + 2) % 3;
+  d.radialCenter = { 0.5 * (bounds[2 * u] + bounds[2 * u + 1]),
+    0.5 * (bounds[2 * v] + bounds[2 * v + 1]) };
+  ++d.serial;
+  // Two points spanning the field (for the camera and the axes grid).
+  bpvtk::fillRangeOutput(output, this->RangeFacts, d.bounds);
+  vtkNew<vtkIntArray> id;
+  id->SetName("BoundParticlesWorkQueue");
+  id->InsertNextValue(queue.id());
+  output->GetFieldData()->AddArray(id);
+}
+
+void vtkBoundParticleTracer::vtkInternals::addSettingsFieldData(vtkPolyData* output)
+{
+  // What the automatic settings came to, for the Information panel and scripts.
+  bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);
+  bpvtk::addFieldValue(output, "ElementSize", this->ResolvedElementSize);
+  bpvtk::addFieldValue(output, "SimulationTime", this->target());
+  if (this->Layout.distributed())
+  {
+    // This process's share: ghost layers read, elements sent to other pieces.
+    bpvtk::addFieldValue(output, "GhostLayers", this->Layout.GhostCells);
+    bpvtk::addFieldValue(output, "MigratedElements", double(this->Migrated));
+  }
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->target());
+}

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkBoundParticleTracerInternals.h
+ * @brief What a vtkBoundParticleTracer keeps between pipeline passes, and
+ * the steps of one update.
+ *
+ * An update runs over one or more pipeline passes: each pass brings one field
+ * time step from upstream (CONTINUE_EXECUTING asks for the next). Its steps:
+ *  1. begin(): take the decision RequestUpdateExtent made (bp::TracePlan);
+ *     take back a short step shown last time;
+ *  2. takeTimeStep(): read the time step this pass brought, if the work needs it;
+ *  3. replay(): resolve the settings and configure the stepper from the start;
+ *  4. stepToTarget(): step one data interval at a time up to the target;
+ *  5. readAhead(): for a display that wants it, the next time step ahead of need;
+ *  6. show(): finish with a short step shown, and build the output.
+ * Steps 3 to 5 may end the pass asking for another time step.
+ */
+#ifndef vtkBoundParticleTracerInternals_h
+#define vtkBoundParticleTracerInternals_h
+
+#include "vtkBoundParticleTracer.h"
+
+#include "Engine.h"
+#include "FieldCache.h"
+#include "OutputArrays.h"
+#include "TracePlan.h"
+#include "TraceSettings.h"
+#include "TracerOutput.h"
+#include "TracerParallel.h"
+#include "TracerSteppers.h"
+
+#include "vtkType.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+class vtkInformation;
+class vtkInformationVector;
+class vtkPolyData;
+
+/// How a step of an update ended.
+struct vtkBoundParticlePass
+{
+  enum Kind
+  {
+    Done,     ///< go on to the next step
+    NeedStep, ///< end this pass asking upstream for time step `index`
+    Failed,   ///< stop with `message` as the error
+    Aborted   ///< the user aborted: stop quietly
+  };
+  Kind kind = Done;
+  int index = -1;
+  std::string message;
+
+  static vtkBoundParticlePass need(int index) { return { NeedStep, index, std::string() }; }
+  static vtkBoundParticlePass fail(const std::string& message) { return { Failed, -1, message }; }
+};
+
+struct vtkBoundParticleTracer::vtkInternals
+{
+  using Pass = vtkBoundParticlePass;
+
+  bp::TracePlan Plan;
+  bp::FieldCache Cache;
+  bpvtk::TracerSteppers Steppers;
+  bpvtk::PieceLayout Layout;
+  bpvtk::ParticleCells Cells;
+  std::unique_ptr<bp::StepSchedule> Schedule;
+  /// Bumped whenever the filter or its input changes: a trace made for an
+  /// older configuration replays.
+  std::uint64_t Configuration = 1;
+  const std::uint64_t ProducerId;
+
+  // The update in progress.
+  bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
+  bool ReplayPending = false;     ///< this update replays from the start
+  bool Continuing = false;        ///< a later pass of the same update
+  int RequestIndex = 0;           ///< the input time step this pass asked for
+  int LastRequested = -1;         ///< the input time step upstream holds
+  bool ReadThisUpdate = false;    ///< a time step came from upstream in this update
+  int IntervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
+
+  // The field, in grid-local coordinates (floats keep their precision far
+  // from the world origin), and where its local origin lies in the world.
+  bp::GridGeometry Grid;
+  std::array<double, 3> Offset = { 0, 0, 0 };
+
+  // What the last replay resolved.
+  bp::Parameters Parameters;
+  double ResolvedDt = 0.0;
+  double ResolvedElementSize = 0.0;
+  std::size_t ParticlesPerElement = 1;
+  bp::RangeFacts RangeFacts; ///< for the GPU display's output
+
+  // What the last update did.
+  vtkIdType StepsInLastUpdate = 0;
+  bool LastUpdateReplayed = false;
+  long long Migrated = 0; ///< elements this process sent away
+
+  vtkInternals();
+
+  bp::Stepper& stepper() { return this->Steppers.active(); }
+  double target() const { return this->Decision.target; }
+
+  /// Forgets every trace (after a failure, an abort or a change).
+  void invalidate();
+  /// Forgets the held time steps too.
+  void clear();
+
+  /// The decision for a request (RequestUpdateExtent).
+  void decide(vtkBoundParticleTracer* self, vtkInformation* outInfo);
+
+  void begin(vtkBoundParticleTracer* self);
+  std::string takeTimeStep(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
+  Pass replay(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
+  Pass stepToTarget(vtkBoundParticleTracer* self);
+  Pass readAhead();
+  void show(vtkBoundParticleTracer* self, vtkPolyData* output);
+
+private:
+  /// The grid check and the cache insert for a time step just read.
+  std::string keepTimeStep(
+    bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);
+  /// The field's facts for parameter resolution (collective in parallel).
+  bp::FieldFacts fieldFacts(const bp::VectorField& field);
+  /// The element template: the built-in shape or the template input.
+  std::string elementTemplate(
+    vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
+  /// Points the stepper at the start of a new trace.
+  void startTrace();
+  void addSettingsFieldData(vtkPolyData* output);
+  void fillDisplayOutput(vtkBoundParticleTracer* self, vtkPolyData* output);
+};
+
+#endif

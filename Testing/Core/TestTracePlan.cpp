@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The trace plan (Core/TracePlan.h) and its field cache (Core/FieldCache.h):
+// replay or continue, which time steps a request needs, keeps and reads ahead.
+#include "FieldCache.h"
+#include "TracePlan.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace
+{
+bp::TracePlan unsteadyPlan()
+{
+  bp::TracePlan plan;
+  EXPECT_EQ(plan.setTimes({ 0.0, 1.0, 2.0, 3.0 }, 10.0, 101), "");
+  return plan;
+}
+
+bp::TraceCursor cursorAt(double committed, std::uint64_t producer = 7, std::uint64_t config = 3)
+{
+  bp::TraceCursor c;
+  c.valid = true;
+  c.committed = committed;
+  c.producer = producer;
+  c.configuration = config;
+  return c;
+}
+
+bp::FieldSlice slice(double time)
+{
+  bp::FieldSlice s;
+  s.time = time;
+  s.velocity = std::make_shared<std::vector<float>>(24, 0.0f);
+  return s;
+}
+} // namespace
+
+TEST(TracePlan, SteadyInputIsOfferedDurationInEvenSteps)
+{
+  bp::TracePlan plan;
+  EXPECT_EQ(plan.setTimes({ 5.0 }, 2.0, 5), "");
+  EXPECT_FALSE(plan.unsteady());
+  ASSERT_EQ(plan.outputTimes().size(), 5u);
+  EXPECT_DOUBLE_EQ(plan.outputTimes()[1], 0.5);
+  EXPECT_DOUBLE_EQ(plan.outputTimes().back(), 2.0);
+  EXPECT_EQ(plan.intervalAt(1.3, true), std::vector<int>{ 0 });
+  EXPECT_EQ(plan.readAheadIndex(1.0), -1);
+}
+
+TEST(TracePlan, SteadyTimeLineIsCheckedWithAMessage)
+{
+  bp::TracePlan plan;
+  EXPECT_NE(plan.setTimes({}, 0.0, 10).find("Duration must be positive"), std::string::npos);
+  EXPECT_FALSE(plan.hasTimes());
+  EXPECT_NE(plan.setTimes({}, 1.0, 1).find("NumberOfTimeSteps"), std::string::npos);
+  EXPECT_NE(plan.setTimes({}, std::numeric_limits<double>::infinity(), 10), "");
+}
+
+TEST(TracePlan, RequestsAreClampedToTheOfferedRange)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, -4.0), 0.0);
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, 9.0), 3.0);
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, 1.5), 1.5);
+  EXPECT_DOUBLE_EQ(plan.targetOf(false, 2.0), 0.0);
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, std::nan("")), 0.0);
+}
+
+TEST(TracePlan, IntervalsForSteppingAndForShowing)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  // Stepping on from a data time step needs the interval that starts there;
+  // showing the state there needs only the one that ends there.
+  EXPECT_EQ(plan.intervalAt(1.0, true), (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(plan.intervalAt(1.0, false), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(plan.intervalAt(0.0, false), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(plan.intervalAt(3.0, true), (std::vector<int>{ 2, 3 }));
+  EXPECT_EQ(plan.needed(0.5, 2.5), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(plan.needed(2.5, 2.5), (std::vector<int>{ 2, 3 }));
+}
+
+TEST(TracePlan, ContinuesForwardAndReplaysBackwardOrOnChange)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  const bp::TraceCursor at1 = cursorAt(1.0);
+  const auto forward = plan.decide(2.0, at1, 7, 3);
+  EXPECT_FALSE(forward.replay);
+  EXPECT_DOUBLE_EQ(forward.from, 1.0);
+  EXPECT_FALSE(plan.decide(1.0, at1, 7, 3).replay);
+  const auto back = plan.decide(0.5, at1, 7, 3);
+  EXPECT_TRUE(back.replay);
+  EXPECT_DOUBLE_EQ(back.from, 0.0);
+  EXPECT_TRUE(plan.decide(2.0, at1, 8, 3).replay) << "another tracer's trace";
+  EXPECT_TRUE(plan.decide(2.0, at1, 7, 4).replay) << "made for another configuration";
+  bp::TraceCursor empty = at1;
+  empty.valid = false;
+  EXPECT_TRUE(plan.decide(2.0, empty, 7, 3).replay);
+}
+
+TEST(TracePlan, FirstRequestIsWhatIsMissingElseWhatUpstreamHolds)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  bp::FieldCache cache;
+  bp::TracePlan::Update u = plan.decide(2.5, cursorAt(0.0), 7, 3);
+  EXPECT_EQ(plan.firstRequest(u, cache, -1), 0);
+  cache.insert(0, slice(0.0), {});
+  EXPECT_EQ(plan.firstRequest(u, cache, 0), 1);
+  cache.insert(1, slice(1.0), {});
+  // All in hand: ask for what upstream holds, so nothing upstream runs again.
+  EXPECT_EQ(plan.firstRequest(u, cache, 3), 3);
+  EXPECT_EQ(plan.firstRequest(u, cache, -1), 1);
+}
+
+TEST(TracePlan, ReadsAheadTheStepAfterTheShownInterval)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  EXPECT_EQ(plan.readAheadIndex(0.5), 2);
+  EXPECT_EQ(plan.readAheadIndex(1.0), 2);
+  EXPECT_EQ(plan.readAheadIndex(2.5), -1);
+}
+
+TEST(FieldCache, HoldsAtMostThreeKeepingWhatTheWorkNeeds)
+{
+  bp::FieldCache cache;
+  cache.insert(0, slice(0), {});
+  cache.insert(1, slice(1), {});
+  cache.insert(2, slice(2), {});
+  EXPECT_EQ(cache.size(), 3u);
+  cache.insert(3, slice(3), { 1, 2 });
+  EXPECT_EQ(cache.size(), 3u);
+  EXPECT_FALSE(cache.has(0));
+  EXPECT_TRUE(cache.has(1) && cache.has(2) && cache.has(3));
+  EXPECT_EQ(cache.firstMissing({ 2, 4 }), 4);
+  EXPECT_EQ(cache.firstMissing({ 2, 3 }), -1);
+  cache.dropBefore(3);
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_DOUBLE_EQ(cache.at(3).time, 3.0);
+}
+
+TEST(FieldCache, FieldBetweenTwoHeldSteps)
+{
+  bp::GridGeometry g;
+  g.dims = { 2, 2, 2 };
+  bp::FieldCache cache;
+  cache.insert(4, slice(4.0), {});
+  cache.insert(5, slice(6.0), {});
+  const bp::VectorField steady = cache.field(g, { 4 });
+  EXPECT_TRUE(steady.isSteady());
+  const bp::VectorField between = cache.field(g, { 4, 5 });
+  EXPECT_FALSE(between.isSteady());
+  EXPECT_FLOAT_EQ(between.timeWeight(5.0), 0.5f);
+}
