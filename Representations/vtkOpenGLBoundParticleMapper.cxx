@@ -3,6 +3,7 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "GpuEngine.h"
+#include "OutputArrays.h"
 #include "WorkQueue.h"
 
 #include "vtkActor.h"
@@ -164,7 +165,7 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
   bp::GpuEngine::DrawInputs Inputs;
 
-  int ScalarMode = SOLID;
+  bp::ColorSource ScalarMode = bp::ColorSource::Solid;
   int Component = -1;
   int SizeLimit = 0; // a cap below GL_MAX_TEXTURE_SIZE, for tests
 
@@ -201,35 +202,13 @@ void vtkOpenGLBoundParticleMapper::SetWorkQueue(const std::shared_ptr<bp::WorkQu
 bool vtkOpenGLBoundParticleMapper::SetColorArray(const char* name, int component)
 {
   vtkInternals& I = *this->Internals;
-  const std::string array = name ? name : "";
-  int mode = SOLID;
-  int comp = -1;
-  bool known = true;
-  if (array.empty())
-    mode = SOLID;
-  else if (array == "Force")
-    mode = FORCE;
-  else if (array == "Lifetime")
-    mode = LIFETIME;
-  else if (array == "Speed")
-    mode = VELOCITY;
-  else if (array == "Velocity")
-  {
-    mode = VELOCITY;
-    comp = component >= 0 && component < 3 ? component : -1;
-  }
-  else if (array == "Vorticity")
-    mode = VORTICITY;
-  else if (array == "Layer")
-    mode = LAYER;
-  else if (array == "Radius")
-    mode = RADIUS;
-  else if (array == "ElementId")
-    mode = ELEMENT_ID;
-  else if (array == "ParticleIndex")
-    mode = PARTICLE_INDEX;
-  else
-    known = false;
+  const bp::OutputArray* row = name && *name ? bp::findOutputArray(name) : nullptr;
+  const bool known = !(name && *name) || (row && row->color != bp::ColorSource::Solid);
+  const bp::ColorSource mode = row ? row->color : bp::ColorSource::Solid;
+  const int comp =
+    row && row->components == 3 && !row->colorsMagnitude && component >= 0 && component < 3
+    ? component
+    : -1;
   if (mode != I.ScalarMode || comp != I.Component)
   {
     I.ScalarMode = mode;
@@ -364,7 +343,7 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
     GLStateGuard guard;
     I.Engine.stageSliceWithin(I.Queue->upcoming, StagingSecondsPerFrame);
   }
-  if (I.ScalarMode == VELOCITY || I.ScalarMode == VORTICITY)
+  if (I.ScalarMode == bp::ColorSource::Velocity || I.ScalarMode == bp::ColorSource::Vorticity)
   {
     if (I.SamplesSerial != I.Queue->draw.serial)
     {
@@ -391,16 +370,18 @@ void vtkOpenGLBoundParticleMapper::ReplaceShaderValues(
 
   vs = shaders[vtkShader::Vertex]->GetSource();
   fs = shaders[vtkShader::Fragment]->GetSource();
+  // The colour modes' numbers, from the table of output arrays.
+  const std::string colorModes = bp::colorSourceDefinitions();
   // Every use of the vertex and normal attributes reads the fetched values;
   // the attributes stay declared so VTK's buffers still bind.
   vtkShaderProgram::Substitute(vs, "vertexMC", "bpVertexMC", true);
   vtkShaderProgram::Substitute(vs, "normalMC", "bpNormalMC", true);
   vtkShaderProgram::Substitute(
-    vs, "in vec4 bpVertexMC;", std::string("in vec4 vertexMC;\n") + bpShaderDrawVSDec, false);
+    vs, "in vec4 bpVertexMC;", "in vec4 vertexMC;\n" + colorModes + bpShaderDrawVSDec, false);
   vtkShaderProgram::Substitute(vs, "in vec3 bpNormalMC;", "in vec3 normalMC;", false);
   vtkShaderProgram::Substitute(
     vs, "void main()\n{", std::string("void main()\n{\n") + bpShaderDrawVSImpl, false);
-  vtkShaderProgram::Substitute(fs, "//BP::Color::Dec", bpShaderDrawFSDec, false);
+  vtkShaderProgram::Substitute(fs, "//BP::Color::Dec", colorModes + bpShaderDrawFSDec, false);
   vtkShaderProgram::Substitute(fs, "//BP::Color::Impl", bpShaderDrawFSImpl, false);
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Fragment]->SetSource(fs);
@@ -422,8 +403,8 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   const auto& d = I.Queue->draw;
   const float offset[3] = { float(d.offset[0]), float(d.offset[1]), float(d.offset[2]) };
   program->SetUniform3f("bpOffset", offset);
-  const int mode = this->ScalarVisibility ? I.ScalarMode : int(SOLID);
-  program->SetUniformi("bpScalarMode", mode);
+  const bp::ColorSource mode = this->ScalarVisibility ? I.ScalarMode : bp::ColorSource::Solid;
+  program->SetUniformi("bpScalarMode", int(mode));
   program->SetUniformi("bpComponent", I.Component);
   const float range[2] = { float(I.ColorTableRange[0]), float(I.ColorTableRange[1]) };
   program->SetUniform2f("bpScalarRange", range);
@@ -546,6 +527,6 @@ void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkOpenGLBoundParticleMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ScalarMode: " << this->Internals->ScalarMode << "\n";
+  os << indent << "ScalarMode: " << int(this->Internals->ScalarMode) << "\n";
   os << indent << "Configured: " << this->Internals->Configured << "\n";
 }

@@ -14,9 +14,9 @@
  * scalar fetched from the engine's textures. Nothing per particle is uploaded.
  *
  * Colouring by a scalar goes through the mapper's lookup table (its range
- * and colours, sampled into a table texture): Force, Lifetime, Speed,
- * Velocity (magnitude or a component), Vorticity, Layer, Radius, ElementId and
- * ParticleIndex, the point arrays of the filter's CPU output.
+ * and colours, sampled into a table texture): any array of the tracer's
+ * output that has a colour source in Core/OutputArrays.h (every one but
+ * Normals; Velocity by magnitude or a component).
  */
 #ifndef vtkOpenGLBoundParticleMapper_h
 #define vtkOpenGLBoundParticleMapper_h
@@ -42,28 +42,16 @@ public:
   vtkTypeMacro(vtkOpenGLBoundParticleMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ScalarModes
-  {
-    SOLID = 0,
-    FORCE,
-    LIFETIME,
-    VELOCITY, ///< with a component, or its magnitude (Speed)
-    VORTICITY,
-    LAYER,
-    RADIUS,
-    ELEMENT_ID,
-    PARTICLE_INDEX
-  };
-
 #ifndef __VTK_WRAP__
   /// The queue whose calls this mapper runs and whose state it draws.
   void SetWorkQueue(const std::shared_ptr<bp::WorkQueue>& queue);
 #endif
 
   /**
-   * Colours by the named point array of the CPU output (null or "" for the
-   * solid colour); `component` -1 is the magnitude of a vector array.
-   * Returns false, colouring solid, for a name this mapper cannot draw.
+   * Colours by the named point array of the tracer's output (null or "" for
+   * the solid colour); `component` -1 is the magnitude of a vector array.
+   * Returns false, colouring solid, for an array the table gives no colour
+   * source.
    */
   bool SetColorArray(const char* name, int component);
 

@@ -1,4 +1,4 @@
-  if (bpScalarMode > 0)
+  if (bpScalarMode != BP_COLOR_SOLID)
   {
     float bpU = clamp(bpScalarVSOutput, 0.0, 1.0);
     vec4 bpColor = texture(bpColorTable,

@@ -10,7 +10,7 @@ uniform sampler2D bpCenters;   // per element: the generation's initial centre
 uniform ivec2 bpElementGrid;
 uniform int bpBlocksPerRow;
 uniform vec3 bpOffset;         // world position of the grid-local origin
-uniform int bpScalarMode;      // 0 solid; see vtkOpenGLBoundParticleMapper::ScalarModes
+uniform int bpScalarMode;      // a BP_COLOR_* of Core/OutputArrays.h (ColorSource)
 uniform int bpComponent;       // for Velocity: 0-2, or -1 for the magnitude
 uniform vec2 bpScalarRange;    // the lookup table's range
 uniform int bpColoringAxis;
@@ -28,28 +28,28 @@ ivec2 bpDrawTexel(int e, int i)
 float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
 {
   ivec2 elementTexel = ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
-  if (bpScalarMode == 1)
+  if (bpScalarMode == BP_COLOR_FORCE)
     return state.w;
-  if (bpScalarMode == 2)
+  if (bpScalarMode == BP_COLOR_LIFETIME)
     return texelFetch(bpElements, elementTexel, 0).x;
-  if (bpScalarMode == 3)
+  if (bpScalarMode == BP_COLOR_VELOCITY)
   {
     vec3 v = texelFetch(bpSamples, texel, 0).xyz;
     return bpComponent >= 0 ? v[bpComponent] : length(v);
   }
-  if (bpScalarMode == 4)
+  if (bpScalarMode == BP_COLOR_VORTICITY)
     return texelFetch(bpSamples, texel, 0).w;
   vec3 c = texelFetch(bpCenters, elementTexel, 0).xyz;
-  if (bpScalarMode == 5)
+  if (bpScalarMode == BP_COLOR_LAYER)
     return c[bpColoringAxis] + bpOffset[bpColoringAxis];
-  if (bpScalarMode == 6)
+  if (bpScalarMode == BP_COLOR_RADIUS)
   {
     vec2 d = vec2(c[(bpColoringAxis + 1) % 3], c[(bpColoringAxis + 2) % 3]) - bpRadialCenter;
     return length(d);
   }
-  if (bpScalarMode == 7)
+  if (bpScalarMode == BP_COLOR_ELEMENT_INDEX)
     return float(e);
-  if (bpScalarMode == 8)
+  if (bpScalarMode == BP_COLOR_PARTICLE_INDEX)
     return float(i);
   return 0.0;
 }
