@@ -3,7 +3,7 @@
  * @file AnalyticFlows.h
  * @brief Vector fields with known structure, for the demo, the tests and the
  * benchmarks. Each flow is laid over a box (`bounds`) so its pattern is the
- * same for any box; the formulas are in README.md ("Analytic flows").
+ * same for any box; the formulas are in docs/user-guide.md ("Analytic Flow").
  */
 #ifndef BoundParticles_AnalyticFlows_h
 #define BoundParticles_AnalyticFlows_h

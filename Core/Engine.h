@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file Engine.h
- * @brief The CPU engine: DESIGN.md §4, one step of a system of bound particles.
+ * @brief The CPU engine: one step of a system of bound particles, as
+ * docs/engine-specification.md specifies it for both engines.
  *
  * A step of size h at time t does, for every element independently:
  *  1. reset, when the element was flagged by the previous step or its lifetime

@@ -32,6 +32,54 @@ struct CopyToFloat
       [](typename decltype(values)::ValueType v) { return static_cast<float>(v); });
   }
 };
+
+/// The geometry of a rectilinear grid; empty on success, otherwise what is wrong.
+std::string rectilinearGeometry(vtkRectilinearGrid* rectilinear, bp::GridGeometry& g)
+{
+  std::ostringstream err;
+  vtkDataArray* axes[3] = { rectilinear->GetXCoordinates(), rectilinear->GetYCoordinates(),
+    rectilinear->GetZCoordinates() };
+  int dims[3];
+  rectilinear->GetDimensions(dims);
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!axes[a] || axes[a]->GetNumberOfTuples() != dims[a])
+    {
+      err << "The rectilinear grid's "
+          << "XYZ"[a] << " coordinates do not match its " << dims[a] << " points along that axis.";
+      return err.str();
+    }
+    std::vector<double> c(std::size_t(dims[a]));
+    for (int i = 0; i < dims[a]; ++i)
+    {
+      c[std::size_t(i)] = axes[a]->GetComponent(i, 0);
+    }
+    // Evenly spaced axes are sampled the uniform way: fewer operations, and
+    // images and rectilinear grids of the same points trace alike.
+    bool even = c.size() > 1;
+    const double h = even ? (c.back() - c.front()) / double(c.size() - 1) : 1.0;
+    for (std::size_t i = 1; even && i < c.size(); ++i)
+    {
+      even = std::abs((c[i] - c[i - 1]) - h) <= 1e-6 * std::abs(h);
+    }
+    if (even)
+    {
+      g.dims[a] = dims[a];
+      g.origin[a] = c.front();
+      g.spacing[a] = h;
+    }
+    else if (c.size() == 1)
+    {
+      g.dims[a] = 1;
+      g.origin[a] = c.front();
+    }
+    else
+    {
+      g.setCoordinates(a, std::move(c));
+    }
+  }
+  return std::string();
+}
 } // namespace
 
 namespace bpvtk
@@ -114,47 +162,10 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   }
   else
   {
-    vtkDataArray* axes[3] = { rectilinear->GetXCoordinates(), rectilinear->GetYCoordinates(),
-      rectilinear->GetZCoordinates() };
-    int dims[3];
-    rectilinear->GetDimensions(dims);
-    for (int a = 0; a < 3; ++a)
+    const std::string axesError = rectilinearGeometry(rectilinear, g);
+    if (!axesError.empty())
     {
-      if (!axes[a] || axes[a]->GetNumberOfTuples() != dims[a])
-      {
-        err << "The rectilinear grid's "
-            << "XYZ"[a] << " coordinates do not match its " << dims[a]
-            << " points along that axis.";
-        return err.str();
-      }
-      std::vector<double> c(std::size_t(dims[a]));
-      for (int i = 0; i < dims[a]; ++i)
-      {
-        c[std::size_t(i)] = axes[a]->GetComponent(i, 0);
-      }
-      // Evenly spaced axes are sampled the uniform way: fewer operations, and
-      // images and rectilinear grids of the same points trace alike.
-      bool even = c.size() > 1;
-      const double h = even ? (c.back() - c.front()) / double(c.size() - 1) : 1.0;
-      for (std::size_t i = 1; even && i < c.size(); ++i)
-      {
-        even = std::abs((c[i] - c[i - 1]) - h) <= 1e-6 * std::abs(h);
-      }
-      if (even)
-      {
-        g.dims[a] = dims[a];
-        g.origin[a] = c.front();
-        g.spacing[a] = h;
-      }
-      else if (c.size() == 1)
-      {
-        g.dims[a] = 1;
-        g.origin[a] = c.front();
-      }
-      else
-      {
-        g.setCoordinates(a, std::move(c));
-      }
+      return axesError;
     }
   }
   auto values = std::make_shared<std::vector<float>>();

@@ -7,8 +7,8 @@
  * The descriptor (FileName) gives the grid (dimensions, origin, spacing), the
  * scalar type and byte order of the values, optional header bytes to skip, the
  * time values, and per time step either one file of interleaved (u, v, w)
- * triplets or three files, one per component (README, "Raw Vector Volume
- * Series"). The output is a vtkImageData, or a vtkRectilinearGrid when the
+ * triplets or three files, one per component (docs/user-guide.md, "Raw
+ * Vector Volume Series reader"). The output is a vtkImageData, or a vtkRectilinearGrid when the
  * descriptor lists z_coordinates (non-uniform layers), with one 3-component
  * float point array (array_name, default "velocity") set as the active vectors.
  *
