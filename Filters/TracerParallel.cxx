@@ -197,8 +197,17 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   offset = { world[0], world[2], world[4] };
   for (bp::Box& b : boxes)
   {
-    for (int k = 0; k < 6 && !bp::isEmptyBox(b); ++k)
+    // Whether a box is empty is decided before it moves: tested during the
+    // move, a box whose lower bound had moved past its unmoved upper bound
+    // passed for empty and stayed half moved (every field not at the origin).
+    if (bp::isEmptyBox(b))
+    {
+      continue;
+    }
+    for (int k = 0; k < 6; ++k)
+    {
       b[k] -= offset[std::size_t(k / 2)];
+    }
   }
   this->Partition.reset(new bp::Partition(boxes));
   const bp::Box& local = this->Partition->domain();
