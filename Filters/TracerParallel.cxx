@@ -236,6 +236,13 @@ double PieceLayout::globalMax(double value) const
   return global;
 }
 
+std::vector<long long> PieceLayout::gather(long long count) const
+{
+  std::vector<long long> all(std::size_t(this->Pieces), 0);
+  this->Controller->AllGather(&count, all.data(), 1);
+  return all;
+}
+
 bp::ExchangeFunction PieceLayout::exchange() const
 {
   return controllerExchange(this->Controller);

@@ -20,6 +20,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkInformation;
 class vtkMultiProcessController;
@@ -52,6 +53,9 @@ public:
 
   /// The largest of every process's `value` (collective).
   double globalMax(double value) const;
+
+  /// Every process's `count`, in process order (collective).
+  std::vector<long long> gather(long long count) const;
 
   /// The element exchange through the controller (DistributedStepper).
   bp::ExchangeFunction exchange() const;

@@ -10,6 +10,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -407,6 +408,14 @@ void vtkBoundParticleTracer::vtkInternals::show(vtkBoundParticleTracer* self, vt
   }
   if (this->Layout.distributed())
   {
+    if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+    {
+      // Collective, so only in an update that every process runs in step
+      // with the others: one that took steps (each exchanges elements) or
+      // replayed (each shares the field's largest speed).
+      const bp::Engine* held = stepper.particles();
+      this->ElementsPerProcess = this->Layout.gather(held ? (long long)held->elementCount() : 0);
+    }
     this->Migrated += this->Steppers.distributed().takeMigrated();
     const std::string error = this->Steppers.distributed().takeExchangeError();
     if (!error.empty())
@@ -473,9 +482,17 @@ void vtkBoundParticleTracer::vtkInternals::addSettingsFieldData(vtkPolyData* out
   bpvtk::addFieldValue(output, "SimulationTime", this->target());
   if (this->Layout.distributed())
   {
-    // This process's share: ghost layers read, elements sent to other pieces.
+    // This process's share: ghost layers read, elements sent to other pieces;
+    // and the balance: every process's element count (the same on each).
     bpvtk::addFieldValue(output, "GhostLayers", this->Layout.GhostCells);
     bpvtk::addFieldValue(output, "MigratedElements", double(this->Migrated));
+    vtkNew<vtkIdTypeArray> perProcess;
+    perProcess->SetName("ElementsPerProcess");
+    for (long long c : this->ElementsPerProcess)
+    {
+      perProcess->InsertNextValue(vtkIdType(c));
+    }
+    output->GetFieldData()->AddArray(perProcess);
   }
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->target());
 }

@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkInformation;
 class vtkInformationVector;
@@ -97,7 +98,8 @@ struct vtkBoundParticleTracer::vtkInternals
   // What the last update did.
   vtkIdType StepsInLastUpdate = 0;
   bool LastUpdateReplayed = false;
-  long long Migrated = 0; ///< elements this process sent away
+  long long Migrated = 0;                    ///< elements this process sent away
+  std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
 
   vtkInternals();
 

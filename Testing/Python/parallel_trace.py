@@ -20,6 +20,8 @@ parser.add_argument("--plugin", required=True)
 parser.add_argument("--output", required=True)
 parser.add_argument("--connect", help="host:port of a pvserver")
 parser.add_argument("--render", help="write a picture per remote-render threshold here")
+parser.add_argument("--rectilinear", help="a .vtr vector field with stretched z layers to trace")
+parser.add_argument("--data", help="the shared real data sets' folder (read in place)")
 args = parser.parse_args()
 
 if args.connect:
@@ -45,8 +47,52 @@ def traces():
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
 
 
+def placement_traces():
+    """Fields anywhere in space: the Analytic Flow's default bounds [-1, 1]^3;
+    projected coordinates ~1e6 from the origin; a field at negative
+    coordinates on every axis; thin, long boxes of anisotropic cells that the
+    block split cuts along X, Y and Z in turn; steady and unsteady."""
+    cases = {}
+    hurricane = AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24])
+    cases["hurricane"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                              NumberOfElements=800, Seed=4), [0.5, 1.0])
+    far = AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
+                       Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8])
+    cases["far_x"] = (BoundParticleTracer(Input=far, ElementShape="Strip4", NumberOfElements=600,
+                                          Seed=5, Duration=1.0, NumberOfTimeSteps=11,
+                                          LifetimeRange=[0.3, 0.6]), [0.5, 1.0])
+    negative = AnalyticFlow(Flow="Shear Layer", Resolution=[10, 40, 12],
+                            Bounds=[-7, -6, -9, -5, -3, -2.5])
+    cases["negative_y"] = (BoundParticleTracer(Input=negative, ElementShape="Square",
+                                               NumberOfElements=500, Seed=6, Duration=2.0,
+                                               NumberOfTimeSteps=11), [1.0, 2.0])
+    gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[12, 8, 40],
+                        Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5)
+    cases["unsteady_z"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
+                                               NumberOfElements=1200, Seed=7), [1.0, 2.0])
+    if args.rectilinear:
+        grid = XMLRectilinearGridReader(FileName=[args.rectilinear])
+        grid.UpdatePipeline()  # the emitter's defaults come from the input's bounds
+        cases["rectilinear"] = (BoundParticleTracer(
+            Input=grid, ElementShape="Cross", NumberOfElements=500, Seed=8, Duration=1.0,
+            NumberOfTimeSteps=6, Vectors=["POINTS", "velocity"]), [0.6, 1.0])
+    if args.data:
+        carotid = XMLImageDataReader(FileName=[os.path.join(args.data, "carotid.vti")])
+        carotid.UpdatePipeline()
+        cases["carotid"] = (BoundParticleTracer(
+            Input=carotid, ElementShape="Strip4", NumberOfElements=600, Seed=9, Duration=1.0,
+            NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"]), [0.5, 1.0])
+    return cases
+
+
+def all_traces():
+    cases = traces()
+    cases.update(placement_traces())
+    return cases
+
+
 result = {}
-for name, (tracer, times) in traces().items():
+for name, (tracer, times) in all_traces().items():
     ids = ProcessIdScalars(Input=tracer)
     if times is None:
         steps = list(tracer.TimestepValues)
@@ -64,6 +110,9 @@ for name, (tracer, times) in traces().items():
         result[key + "_particle"] = particle[order]
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
         result[key + "_process"] = vtk_to_numpy(pd.GetArray("ProcessId"))[order].astype(int)
+        per_process = data.GetFieldData().GetArray("ElementsPerProcess")
+        if per_process is not None:
+            result[key + "_per_process"] = vtk_to_numpy(per_process).astype(int)
         print("%s t=%g: %d points" % (name, t, data.GetNumberOfPoints()))
 
 if args.render:
