@@ -4,11 +4,14 @@
 #include "AnalyticFlows.h"
 #include "Engine.h"
 #include "GpuEngine.h"
+#include "GpuStepper.h"
 #include "HeadlessContext.h"
+#include "WorkQueue.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 namespace
@@ -474,4 +477,111 @@ TEST(GpuEngine, StagedTimeStepsGiveTheSameResultAndStayBounded)
     gpu.release();
   }
   EXPECT_EQ(results[0], results[1]);
+}
+
+namespace
+{
+/// Everything the GPU engine can read back, normals brought up to date.
+struct Readback
+{
+  std::vector<float> positions, forces, normals;
+  std::vector<float> lifetimes, generations, centers, orientations, resetFlags;
+
+  explicit Readback(bp::GpuEngine& gpu)
+  {
+    gpu.updateNormals();
+    gpu.read(&this->positions, &this->forces, &this->normals);
+    gpu.readElements(
+      &this->lifetimes, &this->generations, &this->centers, &this->orientations, &this->resetFlags);
+  }
+};
+
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+void expectSameBits(const Readback& a, const Readback& b)
+{
+  EXPECT_TRUE(sameBits(a.positions, b.positions));
+  EXPECT_TRUE(sameBits(a.forces, b.forces));
+  EXPECT_TRUE(sameBits(a.normals, b.normals));
+  EXPECT_TRUE(sameBits(a.lifetimes, b.lifetimes));
+  EXPECT_TRUE(sameBits(a.generations, b.generations));
+  EXPECT_TRUE(sameBits(a.centers, b.centers));
+  EXPECT_TRUE(sameBits(a.orientations, b.orientations));
+  EXPECT_TRUE(sameBits(a.resetFlags, b.resetFlags));
+}
+
+/// The calls a trace makes, through the stepper verbs: steps along the
+/// schedule, and now and then a short step shown and taken back.
+void trace(bp::Stepper& stepper, const UnsteadySystem& s)
+{
+  ASSERT_EQ(stepper.configure(s.shape, s.p), "");
+  ASSERT_EQ(stepper.setField(s.field), "");
+  stepper.initialize();
+  const double dt = 0.01;
+  for (int k = 0; k < 40; ++k)
+  {
+    stepper.step(k * dt, dt);
+    if (k % 10 == 5)
+    {
+      stepper.save();
+      stepper.step((k + 1) * dt, 0.4 * dt);
+      stepper.restore();
+    }
+  }
+}
+} // namespace
+
+TEST(GpuStepper, GivesTheBitsOfTheEngineDrivenDirectly)
+{
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  s.p.restoration = bp::Restoration::ShapeMatching; // orientations change too
+  bp::GpuEngine direct;
+  ASSERT_EQ(direct.configure(s.shape, s.p), "");
+  ASSERT_EQ(direct.setField(s.field), "");
+  direct.initialize();
+  const double dt = 0.01;
+  for (int k = 0; k < 40; ++k)
+  {
+    direct.step(k * dt, dt);
+    if (k % 10 == 5)
+    {
+      direct.saveState();
+      direct.step((k + 1) * dt, 0.4 * dt);
+      direct.restoreState();
+    }
+  }
+  const Readback expected(direct);
+  direct.release();
+
+  bp::GpuStepper stepper;
+  EXPECT_EQ(stepper.particles(), nullptr); // the state lives in textures
+  trace(stepper, s);
+  expectSameBits(Readback(stepper.engine()), expected);
+  stepper.engine().release();
+}
+
+TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
+{
+  // What the renderer does: the tracer records into a queue, the renderer
+  // applies each call to its own stepper in its GL context.
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  bp::GpuStepper direct;
+  trace(direct, s);
+  const Readback expected(direct.engine());
+  direct.engine().release();
+
+  bp::WorkQueue queue(1);
+  trace(queue, s);
+  const std::vector<bp::EngineCall> calls = queue.take();
+  EXPECT_EQ(calls.size(), 3u + 40u + 4u * 3u); // configure, field, initialize; steps; shown steps
+  bp::GpuStepper replayed;
+  for (const bp::EngineCall& call : calls)
+    ASSERT_EQ(call.applyTo(replayed), "");
+  expectSameBits(Readback(replayed.engine()), expected);
+  replayed.engine().release();
 }
