@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Parity: the GPU engine read back after N steps matches the CPU engine
-// (DESIGN.md §6), for each integrator and each restoration the GPU runs.
+// Parity: the GPU engine read back after N steps matches the CPU engine (both
+// follow docs/engine-specification.md), for each integrator and each
+// restoration the GPU runs.
 #include "AnalyticFlows.h"
 #include "Engine.h"
 #include "GpuEngine.h"

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The physics suite (DESIGN.md §6): checks that assert numbers about how
-// elements move, each run on the CPU engine and on the GPU engine (in a
-// headless EGL context).
+// The physics suite: checks that assert numbers about how elements move, each
+// run on the CPU engine and on the GPU engine (in a headless EGL context).
 #include "AnalyticFlows.h"
 #include "Engine.h"
 #include "GpuStepper.h"
