@@ -504,34 +504,42 @@ bool sameBits(const std::vector<float>& a, const std::vector<float>& b)
 
 void expectSameBits(const Readback& a, const Readback& b)
 {
-  EXPECT_TRUE(sameBits(a.positions, b.positions));
-  EXPECT_TRUE(sameBits(a.forces, b.forces));
-  EXPECT_TRUE(sameBits(a.normals, b.normals));
-  EXPECT_TRUE(sameBits(a.lifetimes, b.lifetimes));
-  EXPECT_TRUE(sameBits(a.generations, b.generations));
-  EXPECT_TRUE(sameBits(a.centers, b.centers));
-  EXPECT_TRUE(sameBits(a.orientations, b.orientations));
-  EXPECT_TRUE(sameBits(a.resetFlags, b.resetFlags));
+  using Array = std::vector<float> Readback::*;
+  const std::pair<const char*, Array> arrays[] = { { "positions", &Readback::positions },
+    { "forces", &Readback::forces }, { "normals", &Readback::normals },
+    { "lifetimes", &Readback::lifetimes }, { "generations", &Readback::generations },
+    { "centers", &Readback::centers }, { "orientations", &Readback::orientations },
+    { "reset flags", &Readback::resetFlags } };
+  for (const auto& array : arrays)
+    EXPECT_TRUE(sameBits(a.*array.second, b.*array.second)) << array.first << " differ";
 }
 
-/// The calls a trace makes, through the stepper verbs: steps along the
-/// schedule, and now and then a short step shown and taken back.
+/// A trace's steps along the schedule, and now and then a short step shown
+/// and taken back: step(t, h), save(), restore() on whatever is stepped.
+template <typename Step, typename Save, typename Restore>
+void schedule(Step step, Save save, Restore restore)
+{
+  const double dt = 0.01;
+  for (int k = 0; k < 40; ++k)
+  {
+    step(k * dt, dt);
+    if (k % 10 == 5)
+    {
+      save();
+      step((k + 1) * dt, 0.4 * dt);
+      restore();
+    }
+  }
+}
+
+/// The calls of a trace through the stepper verbs.
 void trace(bp::Stepper& stepper, const UnsteadySystem& s)
 {
   ASSERT_EQ(stepper.configure(s.shape, s.p), "");
   ASSERT_EQ(stepper.setField(s.field), "");
   stepper.initialize();
-  const double dt = 0.01;
-  for (int k = 0; k < 40; ++k)
-  {
-    stepper.step(k * dt, dt);
-    if (k % 10 == 5)
-    {
-      stepper.save();
-      stepper.step((k + 1) * dt, 0.4 * dt);
-      stepper.restore();
-    }
-  }
+  schedule([&](double t, double h) { stepper.step(t, h); }, [&] { stepper.save(); },
+    [&] { stepper.restore(); });
 }
 } // namespace
 
@@ -544,17 +552,8 @@ TEST(GpuStepper, GivesTheBitsOfTheEngineDrivenDirectly)
   ASSERT_EQ(direct.configure(s.shape, s.p), "");
   ASSERT_EQ(direct.setField(s.field), "");
   direct.initialize();
-  const double dt = 0.01;
-  for (int k = 0; k < 40; ++k)
-  {
-    direct.step(k * dt, dt);
-    if (k % 10 == 5)
-    {
-      direct.saveState();
-      direct.step((k + 1) * dt, 0.4 * dt);
-      direct.restoreState();
-    }
-  }
+  schedule([&](double t, double h) { direct.step(t, h); }, [&] { direct.saveState(); },
+    [&] { direct.restoreState(); });
   const Readback expected(direct);
   direct.release();
 
