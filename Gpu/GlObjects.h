@@ -14,7 +14,7 @@
  * render window (the context is gone, and its objects with it) or where
  * another context is current (a delete would free that context's objects).
  * So GpuEngine::release() (documented "the context must be current") deletes
- * every object at once by assigning a fresh, empty state over the old one,
+ * every object at once by assigning an empty GpuSystem over the old one,
  * member by member, and ~GpuEngine() calls no GL: an owner destroyed while
  * still holding a name forgets it, and the object lives on until its context
  * is destroyed. No list of objects to delete is kept anywhere.

@@ -60,7 +60,7 @@ public:
   // Per element, a texel each (element e at (e % W, e / W)).
   TexturePair elements;                 ///< lifetime, generation, reset flag, non-finite
   TexturePair centers;                  ///< the generation's initial centre
-  TexturePair orientations;             ///< the fit's rotation, a quaternion
+  TexturePair orientations;             ///< rotation as placed, then as fitted: a quaternion
   GlTexture matchCenters;               ///< shape matching: the fit's centre
   std::array<GlTexture, 2> matchLinear; ///< linear shape matching: the goal matrix, packed
 

@@ -36,17 +36,25 @@ public:
   /// `elementSize`; with `writeSpringCode`, also writes springSumCode.
   void upload(const ElementTemplate& shape, float elementSize, bool writeSpringCode);
 
-  GlTexture rest; ///< n x 1: rest position
-  GlTexture
-    particleInfo;    ///< n x 2: springs (first, count, 1/degree, pinned); triangles (first, count)
-  GlTexture springs; ///< two texels a spring: (a, b, share, 0), (rest length, stiffness, 0, 0)
-  int springsWidth = 2; ///< texels a row of `springs` (even: a spring never spans two rows)
-  GlTexture triangles;  ///< a texel a triangle: its three particle indices
+  /// n x 1: rest positions.
+  GlTexture rest;
+  /// n x 2, per particle: its springs (first, count, 1 / degree, pinned),
+  /// then its triangles (first, count).
+  GlTexture particleInfo;
+  /// Two texels a spring: (a, b, share, 0), (rest length, stiffness, 0, 0).
+  GlTexture springs;
+  /// Texels a row of `springs`; even, so a spring never spans two rows.
+  int springsWidth = 2;
+  /// A texel a triangle: its three particle indices.
+  GlTexture triangles;
   int trianglesWidth = 1;
-  GlTexture colouredSprings; ///< 2n x colours: per colour, each particle's spring of that colour
+  /// 2n x colours: per colour, each particle's spring of that colour.
+  GlTexture colouredSprings;
   int colourCount = 0;
-  std::array<float, 9> restMomentInverse = {}; ///< linear shape matching's (restMomentInverse())
-  std::string springSumCode; ///< bpSpringSum() with the springs as code (empty unless written)
+  /// Linear shape matching's inverse rest moment (bp::restMomentInverse).
+  std::array<float, 9> restMomentInverse = {};
+  /// bpSpringSum() with the springs as code; empty unless asked for.
+  std::string springSumCode;
 };
 
 } // namespace bp
