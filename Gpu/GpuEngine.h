@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file GpuEngine.h
- * @brief The GPU engine: DESIGN.md §4 as fragment passes over float textures.
+ * @brief The GPU engine: the step of docs/engine-specification.md as fragment
+ * passes over float textures.
  *
  * The same step as bp::Engine, computed per texel by the GLSL passes in
  * Shaders/ (reset, advect, K restoration iterations, reposition test,
@@ -17,6 +18,12 @@
  * particle's springs, Gauss-Seidel as one pass per colour of a spring colouring
  * (the CPU engine applies the springs in the same colour order), shape matching
  * as a fit per element and a move per particle.
+ *
+ * Inside, by role: GpuSystem.h (what configure() makes, a step's passes),
+ * GpuPasses.h (compiling, running and reading back passes), GpuTemplate.h
+ * (the template's tables), GpuState.h (the state textures), GpuFieldCache.h
+ * (resident time steps), all GL objects held by the owners of GlObjects.h.
+ * GpuStepper.h puts the engine behind the Stepper verbs (Core/Stepper.h).
  */
 #ifndef BoundParticles_GpuEngine_h
 #define BoundParticles_GpuEngine_h

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The physics suite (DESIGN.md §6): checks that assert numbers about how
-// elements move, each run on the CPU engine and on the GPU engine (in a
-// headless EGL context).
+// The physics suite: checks that assert numbers about how elements move, each
+// run on the CPU engine and on the GPU engine (in a headless EGL context).
 #include "AnalyticFlows.h"
 #include "Engine.h"
-#include "GpuEngine.h"
+#include "GpuStepper.h"
 #include "HeadlessContext.h"
+#include "Stepper.h"
 
 #include <gtest/gtest.h>
 
@@ -29,64 +29,53 @@ bool haveContext()
   return error.empty();
 }
 
-/// One engine or the other behind the few calls the checks need.
+/// One engine or the other behind the stepper verbs (Core/Stepper.h), with
+/// the readbacks the checks need.
 class System
 {
 public:
   System(bool gpu, const bp::ElementTemplate& shape, const bp::Parameters& p,
     const bp::VectorField& field)
-    : Gpu(gpu)
-    , Field(field)
   {
     if (gpu)
-    {
-      EXPECT_EQ(this->GpuEngine.configure(shape, p), "");
-      EXPECT_EQ(this->GpuEngine.setField(field), "");
-      this->GpuEngine.initialize();
-    }
+      this->Stepper.reset(this->Gpu = new bp::GpuStepper);
     else
-    {
-      EXPECT_EQ(this->CpuEngine.configure(shape, p), "");
-      this->CpuEngine.initialize(bp::serialRunner());
-    }
-    this->n = shape.particleCount();
+      this->Stepper.reset(this->Cpu = new bp::CpuStepper(bp::serialRunner()));
+    EXPECT_EQ(this->Stepper->configure(shape, p), "");
+    EXPECT_EQ(this->Stepper->setField(field), "");
+    this->Stepper->initialize();
   }
   ~System()
   {
     if (this->Gpu)
-      this->GpuEngine.release();
+      this->Gpu->engine().release();
   }
-  void step(double t, double h)
-  {
-    if (this->Gpu)
-      this->GpuEngine.step(t, h);
-    else
-      this->CpuEngine.step(this->Field, t, h, bp::serialRunner());
-  }
+  System(const System&) = delete;
+  System& operator=(const System&) = delete;
+
+  void step(double t, double h) { this->Stepper->step(t, h); }
   std::vector<float> positions() const
   {
-    if (!this->Gpu)
-      return this->CpuEngine.positions();
+    if (this->Cpu)
+      return this->Cpu->engine().positions();
     std::vector<float> p;
-    this->GpuEngine.read(&p, nullptr, nullptr);
+    this->Gpu->engine().read(&p, nullptr, nullptr);
     return p;
   }
   std::vector<float> flags() const
   {
-    if (!this->Gpu)
+    if (this->Cpu)
       return std::vector<float>(
-        this->CpuEngine.resetFlags().begin(), this->CpuEngine.resetFlags().end());
+        this->Cpu->engine().resetFlags().begin(), this->Cpu->engine().resetFlags().end());
     std::vector<float> f;
-    this->GpuEngine.readElements(nullptr, nullptr, nullptr, nullptr, &f);
+    this->Gpu->engine().readElements(nullptr, nullptr, nullptr, nullptr, &f);
     return f;
   }
-  std::size_t n = 0;
 
 private:
-  bool Gpu;
-  const bp::VectorField& Field;
-  bp::Engine CpuEngine;
-  bp::GpuEngine GpuEngine;
+  std::unique_ptr<bp::Stepper> Stepper;
+  bp::CpuStepper* Cpu = nullptr; // the stepper, when it is this kind
+  bp::GpuStepper* Gpu = nullptr;
 };
 
 bp::VectorField steady(bp::AnalyticFlow flow, std::array<int, 3> dims, std::array<double, 6> box)

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file GpuPasses.h
+ * @brief The GPU engine's fragment passes: compiled, fed, run and read back.
+ *
+ * Every pass is a full-screen triangle drawn into one to four RGBA32F
+ * textures with the fragment shader of Shaders/ after bp_common.glsl. A pass
+ * begins with the uniforms every pass shares (the layout, the placement
+ * parameters, the super set's lattice, the field), then takes its own
+ * textures and uniforms by name, so a pass ignores what it does not use.
+ *
+ * Every call needs the GL context current; the programs and framebuffers are
+ * deleted as GlObjects.h says.
+ */
+#ifndef BoundParticles_GpuPasses_h
+#define BoundParticles_GpuPasses_h
+
+#include "Engine.h"
+#include "GlObjects.h"
+
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+class GpuFieldCache;
+class GpuPasses;
+
+/// Where each element and particle sits in the engine's textures (bp_common.glsl).
+struct GpuLayout
+{
+  int elementCount = 0;          ///< E
+  int particlesPerElement = 0;   ///< n, the template's particles
+  int elementGrid[2] = { 0, 0 }; ///< element e at (e % W, e / W) of a W x H grid
+  int blocksPerRow = 0;          ///< particle i of every element in block i, so many a row
+  int particleTextureWidth = 0;  ///< blocksPerRow * W
+  int particleTextureHeight = 0; ///< rows of blocks * H
+  GpuLayout() = default;
+  /// `layout` is ParticleLayout::of(elements, particles), checked
+  /// against the GPU's texture size.
+  GpuLayout(const ParticleLayout& layout, std::size_t elements, std::size_t particles);
+
+  /// The row-major texel index of particle i of element e.
+  std::size_t particleTexel(int e, int i) const;
+};
+
+/// What every pass reads besides its own inputs (bp_common.glsl).
+struct SharedPassInputs
+{
+  const GpuLayout* layout = nullptr;
+  const Parameters* parameters = nullptr;
+  bool linked = false;     ///< a super set, released as one from its lattice
+  GLuint latticeSites = 0; ///< per element: its lattice site (bound even when unused)
+  const GpuFieldCache* fieldCache = nullptr; ///< its field is null before one is set
+};
+
+/// One pass being set up: its program in use, texture units handed out in turn.
+class GpuPass
+{
+public:
+  /// Binds `texture` to the next texture unit, for the sampler `name`.
+  GpuPass& texture(const char* name, GLuint texture, GLenum target = GL_TEXTURE_2D);
+  void setInt(const char* name, int value) const;
+  void setUnsigned(const char* name, unsigned value) const;
+  void setFloat(const char* name, float value) const;
+  void setVec3(const char* name, const float* value) const;
+  void setVec4(const char* name, const float* value) const;
+  void setIVec2(const char* name, int x, int y) const;
+  void setIVec3(const char* name, int x, int y, int z) const;
+
+  /// Draws the full-screen triangle into `targets` (colour attachments in
+  /// order) over a `width` x `height` viewport.
+  void run(std::initializer_list<GLuint> targets, int width, int height) const;
+  /// run() over the element grid: a fragment per element.
+  void runPerElement(std::initializer_list<GLuint> targets) const;
+  /// run() over the particle texture: a fragment per particle.
+  void runPerParticle(std::initializer_list<GLuint> targets) const;
+
+private:
+  friend class GpuPasses;
+  GpuPass(const GpuPasses& passes, const GpuLayout& layout, GLuint program)
+    : Passes(passes)
+    , Layout(layout)
+    , Program(program)
+  {
+  }
+  int location(const char* name) const;
+
+  const GpuPasses& Passes;
+  const GpuLayout& Layout;
+  GLuint Program = 0;
+  int Unit = 0;
+};
+
+class GpuPasses
+{
+public:
+  /// Compiles every pass and makes the framebuffers. `springSumCode`, when
+  /// not empty, is the template's springs written as code (GpuTemplate.h) for
+  /// the Jacobi pass instead of its springs buffer. Empty on success,
+  /// otherwise the compiler's or linker's log.
+  std::string compile(const std::string& springSumCode);
+
+  /// Uses `program` with the uniforms every pass shares.
+  GpuPass begin(const GlProgram& program, const SharedPassInputs& shared) const;
+
+  /// A texture's texels, 4 floats each, row by row.
+  void readTexture(GLuint texture, int width, int height, std::vector<float>& out) const;
+  /// A particle texture in the CPU engine's element-major order: xyz into
+  /// `xyz` (3 per particle) and w into `w` (null to skip either).
+  void readParticles(
+    GLuint texture, const GpuLayout& layout, std::vector<float>* xyz, std::vector<float>* w) const;
+  /// Copies a texture's texels into another of the same size (a blit: GL 3.3).
+  void copyTexture(GLuint from, GLuint to, int width, int height) const;
+
+  /// The passes (Shaders/bp_*.frag), in the order a step runs them.
+  struct Programs
+  {
+    GlProgram reset;       ///< places flagged elements (all, initialising)
+    GlProgram advect;      ///< moves particles through the field
+    GlProgram restore;     ///< (averaged) Jacobi over each particle's springs
+    GlProgram gaussSeidel; ///< one colour of springs
+    GlProgram match;       ///< shape matching: a fit per element
+    GlProgram matchApply;  ///< shape matching: a move per particle
+    GlProgram link;        ///< a super set's links between elements
+    GlProgram test;        ///< the reposition test
+    GlProgram finalize;    ///< the new state
+    GlProgram normals;     ///< per particle, from the template's triangles
+    GlProgram samples;     ///< the field at every particle, for colouring
+  };
+  Programs programs;
+
+private:
+  friend class GpuPass;
+  GlVertexArray Triangle; ///< empty: bp_fullscreen.vert makes the triangle from gl_VertexID
+  GlFramebuffer Framebuffer;
+  GlFramebuffer CopyTarget; ///< the draw side of copyTexture's blit
+};
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file GpuStepper.h
+ * @brief The GPU engine behind the stepper verbs (Core/Stepper.h).
+ *
+ * What a renderer holds in its own GL context: it replays the calls the
+ * tracer recorded into a bp::WorkQueue (EngineCall::applyTo) onto this
+ * stepper, then draws from engine().drawInputs(). Every verb needs the GL
+ * context current, as GpuEngine's do. The particles live in the engine's
+ * textures, so particles() is null; engine() reads them back where needed.
+ */
+#ifndef BoundParticles_GpuStepper_h
+#define BoundParticles_GpuStepper_h
+
+#include "GpuEngine.h"
+#include "Stepper.h"
+
+#include <string>
+
+namespace bp
+{
+
+class GpuStepper : public Stepper
+{
+public:
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
+  std::string setField(const VectorField& field) override;
+  void initialize() override;
+  void step(double t, double h) override;
+  /// GpuEngine::saveState(): a copy in textures.
+  void save() override;
+  /// GpuEngine::restoreState().
+  void restore() override;
+  /// Null: the state lives in GPU textures (engine().read() fetches it).
+  const Engine* particles() override { return nullptr; }
+
+  GpuEngine& engine() { return this->Gpu; }
+  const GpuEngine& engine() const { return this->Gpu; }
+
+private:
+  GpuEngine Gpu;
+};
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file GpuSystem.h
+ * @brief A system of bound particles on the GPU, and the passes of its step.
+ *
+ * What GpuEngine::configure() makes: the template's tables, the compiled
+ * passes and the state textures, with the field's resident time steps. A step
+ * runs the passes in the order of docs/engine-specification.md, as the CPU
+ * engine (Core/Engine.h) runs its stages: reset, advect, K restoration
+ * iterations (each followed, in a super set, by a pass over the links), the
+ * reposition test, finalize.
+ *
+ * Needs the GL context current. Assigning an empty system over one deletes
+ * every GL object it holds (GlObjects.h): that is how GpuEngine releases.
+ */
+#ifndef BoundParticles_GpuSystem_h
+#define BoundParticles_GpuSystem_h
+
+#include "ElementTemplate.h"
+#include "Engine.h"
+#include "GpuFieldCache.h"
+#include "GpuPasses.h"
+#include "GpuState.h"
+#include "GpuTemplate.h"
+
+#include <array>
+#include <string>
+
+namespace bp
+{
+
+class GpuSystem
+{
+public:
+  /// Makes the system for a template and parameters the CPU engine accepts
+  /// (Engine::validate), its textures at most `textureSizeLimit` texels wide,
+  /// with the Jacobi pass's springs as code if `generatedSprings`. Empty on
+  /// success, otherwise why the GPU cannot run it (the system is then partly
+  /// made: assign an empty one over it).
+  std::string make(const ElementTemplate& elementTemplate, const Parameters& systemParameters,
+    int textureSizeLimit, bool generatedSprings);
+
+  /// Places every element (generation 0), as Engine::initialize leaves them.
+  void initialize();
+  /// One step of size h from time t, on the field last set.
+  void step(double t, double h);
+  /// Recomputes the normals texture from the positions.
+  void updateNormals();
+  /// Samples the field at every particle at time t into the samples texture.
+  void updateFieldSamples(double t);
+
+  ElementTemplate shape;
+  Parameters parameters;
+  GpuLayout layout;
+  GpuPasses passes;
+  GpuTemplate shapeTables;
+  GpuFieldCache fieldCache;
+  GpuState state;
+
+private:
+  GpuPass begin(const GlProgram& program) const;
+  std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
+
+  void reset(bool initialize);
+  void advect(bool placeOnly, double t, double h);
+  GLuint restoreOnce(GLuint positions, int& restorationPass);
+  GLuint matchShapes(GLuint positions, int& restorationPass);
+  GLuint gaussSeidel(GLuint positions, int& restorationPass);
+  GLuint jacobi(GLuint positions, int& restorationPass);
+  GLuint link(GLuint positions, int& restorationPass);
+  GLuint runRestorationPass(const GpuPass& pass, int& restorationPass);
+  void test(GLuint positions, bool settleOnly, double h);
+  void finalize(GLuint restored);
+
+  /// parameters.frame as a quaternion, for the reset pass.
+  std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+};
+
+} // namespace bp
+
+#endif
