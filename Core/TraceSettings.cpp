@@ -28,7 +28,7 @@ void resolveEmitter(const TraceSettings& s, const FieldFacts& f, Resolution& r)
     const double hi = whole ? f.bounds[2 * a + 1] : center + 0.5 * s.emitterSize[a];
     p.emitterMin[a] = float(lo);
     p.emitterMax[a] = float(hi);
-    if (s.resetWhen != ResetWhen::AnyParticleLeaves || f.dims[a] <= 1)
+    if (s.engine.resetWhen != ResetWhen::AnyParticleLeaves || f.dims[a] <= 1)
     {
       continue;
     }
@@ -62,26 +62,6 @@ void resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolution& r
   }
   r.parameters.lifetimeMin = float(lifetime[0]);
   r.parameters.lifetimeMax = float(lifetime[1]);
-}
-
-/// The settings the engine takes as they are.
-void copyDirectSettings(const TraceSettings& s, Parameters& p)
-{
-  p.numberOfElements = std::size_t(s.numberOfElements);
-  p.randomOrientation = s.randomOrientation;
-  p.frame = rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
-  p.integrator = s.integrator;
-  p.restoration = s.restoration;
-  p.iterations = s.iterations;
-  p.relaxation = float(s.relaxation);
-  p.shapeStiffness = float(s.shapeStiffness);
-  p.linearShapeMatching = s.linearShapeMatching;
-  p.linearBlend = float(s.linearBlend);
-  p.linking = s.linking;
-  p.latticeWidth = s.latticeWidth;
-  p.linkStiffness = float(s.linkStiffness);
-  p.resetWhen = s.resetWhen;
-  p.seed = std::uint32_t(s.seed);
 }
 
 Resolution failure(const std::string& message)
@@ -125,7 +105,10 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
       return failure("ElementRotation must be finite.");
     }
   }
-  copyDirectSettings(s, r.parameters);
+  r.parameters = s.engine;
+  r.parameters.numberOfElements = std::size_t(s.numberOfElements);
+  r.parameters.frame =
+    rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
   r.parameters.elementSize = float(r.elementSize);
   resolveEmitter(s, f, r);
   resolveLifetimes(s, f, r);

@@ -31,23 +31,14 @@ struct TraceSettings
   double elementSize = 0.0;                           ///< world units; 0: automatic
   std::array<double, 3> emitterCenter = { 0, 0, 0 };  ///< world coordinates
   std::array<double, 3> emitterSize = { -1, -1, -1 }; ///< negative: the field's extent on that axis
-  bool randomOrientation = true;
   std::array<double, 3> rotationDegrees = { 0, 0, 0 }; ///< about X, then Y, then Z
   std::array<double, 2> lifetimeRange = { 0, 0 };      ///< (0, 0): automatic
   double stepSize = 0.5;
   bool stepInCellLengths = true; ///< else stepSize is in the data's time units
-  Integrator integrator = Integrator::Euler;
-  Restoration restoration = Restoration::AveragedJacobi;
-  int iterations = 1;
-  double relaxation = 0.2;
-  double shapeStiffness = 1.0;
-  bool linearShapeMatching = false;
-  double linearBlend = 0.5;
-  Linking linking = Linking::None;
-  int latticeWidth = 0;
-  double linkStiffness = 1.0;
-  ResetWhen resetWhen = ResetWhen::CenterLeaves;
-  int seed = 0;
+  /// The settings the engine takes as they are (integrator, restoration,
+  /// shape matching, linking, reset condition, seed, random orientation);
+  /// resolveSettings() fills in the rest of it.
+  Parameters engine;
 };
 
 /// What the automatic settings depend on, in grid-local coordinates.

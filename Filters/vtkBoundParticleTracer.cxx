@@ -98,23 +98,24 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.elementSize = this->ElementSize;
   std::copy(this->EmitterCenter, this->EmitterCenter + 3, s.emitterCenter.begin());
   std::copy(this->EmitterSize, this->EmitterSize + 3, s.emitterSize.begin());
-  s.randomOrientation = this->RandomOrientation != 0;
   std::copy(this->ElementRotation, this->ElementRotation + 3, s.rotationDegrees.begin());
   s.lifetimeRange = { this->LifetimeRange[0], this->LifetimeRange[1] };
   s.stepSize = this->StepSize;
   s.stepInCellLengths = this->StepSizeUnit == CELL_LENGTH;
-  s.integrator = bp::Integrator(this->Integrator);
-  s.restoration = bp::Restoration(this->Restoration);
-  s.iterations = this->RestorationIterations;
-  s.relaxation = this->RelaxationFactor;
-  s.shapeStiffness = this->ShapeMatchingStiffness;
-  s.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
-  s.linearBlend = this->LinearShapeMatchingBeta;
-  s.linking = bp::Linking(this->Linking);
-  s.latticeWidth = this->LatticeWidth;
-  s.linkStiffness = this->LinkStiffness;
-  s.resetWhen = bp::ResetWhen(this->ResetWhen);
-  s.seed = this->Seed;
+  bp::Parameters& p = s.engine;
+  p.randomOrientation = this->RandomOrientation != 0;
+  p.integrator = bp::Integrator(this->Integrator);
+  p.restoration = bp::Restoration(this->Restoration);
+  p.iterations = this->RestorationIterations;
+  p.relaxation = float(this->RelaxationFactor);
+  p.shapeStiffness = float(this->ShapeMatchingStiffness);
+  p.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
+  p.linearBlend = float(this->LinearShapeMatchingBeta);
+  p.linking = bp::Linking(this->Linking);
+  p.latticeWidth = this->LatticeWidth;
+  p.linkStiffness = float(this->LinkStiffness);
+  p.resetWhen = bp::ResetWhen(this->ResetWhen);
+  p.seed = std::uint32_t(this->Seed);
   return s;
 }
 

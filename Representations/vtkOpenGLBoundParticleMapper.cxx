@@ -3,6 +3,7 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "GpuEngine.h"
+#include "GpuStepper.h"
 #include "OutputArrays.h"
 #include "WorkQueue.h"
 
@@ -157,7 +158,8 @@ vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, floa
 
 struct vtkOpenGLBoundParticleMapper::vtkInternals
 {
-  bp::GpuEngine Engine;
+  bp::GpuStepper Stepper; ///< replays the recorded calls on the GPU engine
+  bp::GpuEngine& Engine = Stepper.engine();
   std::shared_ptr<bp::WorkQueue> Queue;
   bool Configured = false; // the engine holds a system
   bool Failed = false;     // the queued work failed: draw nothing until the next Configure
@@ -273,51 +275,28 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
     };
     for (const bp::EngineCall& call : calls)
     {
-      if (call.kind == bp::EngineCall::Kind::Configure)
+      const bool configure = call.kind == bp::EngineCall::Kind::Configure;
+      if (configure)
       {
         I.Failed = false;
         I.Configured = false;
-        const std::string error = I.Engine.configure(*call.shape, call.parameters);
-        if (!error.empty())
-        {
-          failWith("The GPU engine cannot run this trace: " + error +
-            ". This display draws the CPU result from the next update on.");
-          continue;
-        }
-        I.Configured = true;
-        this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
-        continue;
       }
-      if (!I.Configured || I.Failed)
+      else if (!I.Configured || I.Failed)
       {
         continue; // what follows a failed call would continue from nothing
       }
-      switch (call.kind)
+      // Only configure and setField can fail: the system or the field does not fit.
+      const std::string error = call.applyTo(I.Stepper);
+      if (!error.empty())
       {
-        case bp::EngineCall::Kind::SetField:
-        {
-          const std::string error = I.Engine.setField(*call.field);
-          if (!error.empty())
-          {
-            failWith("The GPU engine cannot hold this field: " + error +
-              ". This display draws the CPU result from the next update on.");
-          }
-          break;
-        }
-        case bp::EngineCall::Kind::Initialize:
-          I.Engine.initialize();
-          break;
-        case bp::EngineCall::Kind::Step:
-          I.Engine.step(call.t, call.h);
-          break;
-        case bp::EngineCall::Kind::Save:
-          I.Engine.saveState();
-          break;
-        case bp::EngineCall::Kind::Restore:
-          I.Engine.restoreState();
-          break;
-        case bp::EngineCall::Kind::Configure:
-          break;
+        failWith(std::string(configure ? "The GPU engine cannot run this trace: "
+                                       : "The GPU engine cannot hold this field: ") +
+          error + ". This display draws the CPU result from the next update on.");
+      }
+      else if (configure)
+      {
+        I.Configured = true;
+        this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
       }
     }
     if (I.Configured && !I.Failed)

@@ -32,7 +32,7 @@ vec3 bpSpringCorrection(int e, int a, int b, float share, float rest, float stif
 
 #ifdef BP_GENERATED_SPRINGS
 // The template's springs as code, one case per particle index (thesis §3.5):
-// written by GpuEngine from the template at configure time.
+// written by GpuTemplate from the template at configure time.
 //BP::GeneratedSprings
 #else
 // The template's springs read from the spring buffer.

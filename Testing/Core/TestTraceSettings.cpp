@@ -75,7 +75,7 @@ TEST(TraceSettings, EmitterIsTheWholeFieldOrTheUsersBoxInLocalCoordinates)
 TEST(TraceSettings, AnyParticleLeavesKeepsElementsWholeInside)
 {
   bp::TraceSettings s;
-  s.resetWhen = bp::ResetWhen::AnyParticleLeaves;
+  s.engine.resetWhen = bp::ResetWhen::AnyParticleLeaves;
   s.elementSize = 1.0;
   bp::Resolution r = bp::resolveSettings(s, box());
   EXPECT_FLOAT_EQ(r.parameters.emitterMin[0], 0.5f);
@@ -121,11 +121,11 @@ TEST(TraceSettings, SettingsThatCannotWorkSayWhatToFix)
 TEST(TraceSettings, DirectSettingsPassThrough)
 {
   bp::TraceSettings s;
-  s.integrator = bp::Integrator::RK4;
-  s.restoration = bp::Restoration::ShapeMatching;
-  s.iterations = 3;
-  s.seed = 42;
-  s.linking = bp::Linking::Sheet;
+  s.engine.integrator = bp::Integrator::RK4;
+  s.engine.restoration = bp::Restoration::ShapeMatching;
+  s.engine.iterations = 3;
+  s.engine.seed = 42;
+  s.engine.linking = bp::Linking::Sheet;
   const bp::Parameters p = bp::resolveSettings(s, box()).parameters;
   EXPECT_EQ(p.integrator, bp::Integrator::RK4);
   EXPECT_EQ(p.restoration, bp::Restoration::ShapeMatching);
