@@ -22,4 +22,7 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/paraview_fps.py" \
 # Steps per second under pvbatch with 1, 2 and 4 MPI ranks (and 1 rank of 2 threads).
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scaling.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_scaling.txt"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/paraview_fps.txt, $out/parallel_scaling.txt"
+# How evenly 2 and 4 ranks share the elements over a hurricane run.
+bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_balance.py" \
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_balance.txt"
+echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/paraview_fps.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt"
