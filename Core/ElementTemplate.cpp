@@ -238,6 +238,12 @@ std::string ElementTemplate::validate() const
       }
     }
   }
+  if (this->springs.size() > MaxTemplateSprings)
+  {
+    err << "the element template has " << this->springs.size() << " springs, more than the "
+        << MaxTemplateSprings << " a template may have";
+    return err.str();
+  }
   for (std::size_t s = 0; s < this->springs.size(); ++s)
   {
     const Spring& sp = this->springs[s];

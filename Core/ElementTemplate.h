@@ -28,6 +28,10 @@ struct Spring
   float stiffness = 1.0f; ///< in [0, 1]; 1 restores the full violation per iteration
 };
 
+/// The most springs a template may have (about 100 MB of spring tables);
+/// All Pairs on a mesh of more than about 2,900 points passes it.
+constexpr std::size_t MaxTemplateSprings = std::size_t(1) << 22;
+
 struct ElementTemplate
 {
   std::string name;

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -65,6 +66,22 @@ void assignLarge(std::vector<T>& v, std::size_t count, T value)
   v.assign(count, value);
 }
 } // namespace
+
+float stableRelaxation(const ElementTemplate& shape)
+{
+  const std::size_t n = shape.particleCount();
+  std::vector<double> load(n, 0.0);
+  const auto pinned = [&](std::uint32_t i) { return !shape.pinned.empty() && shape.pinned[i]; };
+  for (const Spring& s : shape.springs)
+  {
+    // The share each end takes: half, all where the other end is pinned.
+    const bool pa = pinned(s.a), pb = pinned(s.b);
+    load[s.a] += (pa ? 0.0 : (pb ? 1.0 : 0.5)) * s.stiffness;
+    load[s.b] += (pb ? 0.0 : (pa ? 1.0 : 0.5)) * s.stiffness;
+  }
+  const double worst = n ? *std::max_element(load.begin(), load.end()) : 0.0;
+  return worst > 0.0 ? float(1.0 / worst) : std::numeric_limits<float>::infinity();
+}
 
 std::array<float, 9> rotationFromDegrees(double x, double y, double z)
 {

@@ -12,10 +12,13 @@
  * the GPU output's expected ranges, the display's colour modes and the
  * shader's mode numbers all follow from this table.
  *
- * To add an array: add a row and its OutputArrayId; compute it in the
- * tracer's output (Filters/TracerOutput.cxx, one case per id); give it a
- * RangeSource; and, to colour by it on the GPU, a ColorSource with its case
- * in Shaders/bp_draw_vs_dec.glsl.
+ * To add an array: add its OutputArrayId (before Count) and its row, in the
+ * same order; compute it in Filters/TracerOutput.cxx, in the case of its
+ * ArraySource (one case per id there); give it a RangeSource. To colour by it
+ * on the GPU, give it a ColorSource and a case in Shaders/bp_draw_vs_dec.glsl
+ * reading engine state the draw shader can fetch (Gpu/GpuEngine.h
+ * DrawInputs); otherwise ColorSource::Solid (the display then colours it
+ * solid, as for Normals). docs/design.md lists every step.
  */
 #ifndef BoundParticles_OutputArrays_h
 #define BoundParticles_OutputArrays_h
@@ -41,7 +44,8 @@ enum class OutputArrayId
   ParticleIndex,
   Vorticity,
   Layer,
-  Radius
+  Radius,
+  Count ///< not an array: how many there are
 };
 
 enum class ValueType

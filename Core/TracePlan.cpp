@@ -8,8 +8,44 @@
 namespace bp
 {
 
+namespace
+{
+/// Empty when the input's time steps are finite and strictly increasing;
+/// otherwise what is wrong with them.
+std::string checkInputTimes(const std::vector<double>& times)
+{
+  for (std::size_t k = 0; k < times.size(); ++k)
+  {
+    std::ostringstream err;
+    if (!std::isfinite(times[k]))
+    {
+      err << "The input's time step " << k << " is " << times[k]
+          << "; every time value must be finite.";
+      return err.str();
+    }
+    if (k > 0 && !(times[k] > times[k - 1]))
+    {
+      err << "The input's time values must increase, but value " << k << " (" << times[k]
+          << ") follows " << times[k - 1]
+          << (times[k] == times[k - 1] ? " (a duplicate)" : " (out of order)")
+          << ". Fix the time values of the data (e.g. the reader's time array).";
+      return err.str();
+    }
+  }
+  return std::string();
+}
+} // namespace
+
 std::string TracePlan::setTimes(const std::vector<double>& inputTimes, double duration, int count)
 {
+  this->InputTimes.clear();
+  this->OutputTimes.clear();
+  this->Unsteady = false;
+  const std::string timesError = checkInputTimes(inputTimes);
+  if (!timesError.empty())
+  {
+    return timesError;
+  }
   this->InputTimes = inputTimes;
   // One time step is no flow in time: treat it as steady.
   this->Unsteady = inputTimes.size() >= 2;
@@ -44,8 +80,9 @@ double TracePlan::epsilon() const
 double TracePlan::targetOf(bool requested, double time) const
 {
   const double start = this->startTime();
-  const double target = requested && std::isfinite(time) ? time : start;
   const double end = this->OutputTimes.empty() ? start : this->OutputTimes.back();
+  // +inf is past the end (the end); -inf and NaN ask for nothing in range (the start).
+  const double target = requested && !std::isnan(time) ? time : start;
   return std::min(std::max(target, start), end);
 }
 
@@ -85,6 +122,22 @@ int TracePlan::firstRequest(const Update& update, const FieldCache& cache, int u
   const std::vector<int> ids = this->needed(update.from, update.target);
   const int missing = cache.firstMissing(ids);
   return missing >= 0 ? missing : upstream >= 0 ? upstream : ids.back();
+}
+
+std::string TracePlan::checkWork(double from, double target, double dt) const
+{
+  const double steps = (target - from) / dt;
+  if (!(steps <= double(MaxStepsPerUpdate)))
+  {
+    std::ostringstream err;
+    err << "Reaching t = " << target << " from t = " << from << " takes about " << steps
+        << " steps of " << dt << ", more than the " << MaxStepsPerUpdate
+        << " one update may take. The step comes from Step Size and the field's top speed: "
+           "check the velocity's units (and byte order), or raise Step Size, or shorten "
+           "Duration.";
+    return err.str();
+  }
+  return std::string();
 }
 
 int TracePlan::readAheadIndex(double target) const

@@ -32,11 +32,16 @@ class TracePlan
 public:
   /// The most time values a steady input may be offered at.
   static constexpr int MaxSteadyTimeSteps = 100000;
+  /// The most steps one update may take (about an hour for a million
+  /// particles here): beyond it an update is refused with the reason, so a
+  /// wrong unit or byte order never hangs a script.
+  static constexpr long long MaxStepsPerUpdate = 1000000;
 
   /**
-   * Sets the time line: the input's time steps (fewer than two: a steady
-   * input, offered `count` times over [0, duration]). Empty on success,
-   * otherwise what to fix; the plan then offers no times.
+   * Sets the time line: the input's time steps, finite and strictly
+   * increasing (fewer than two: a steady input, offered `count` times over
+   * [0, duration]). Empty on success, otherwise what to fix; the plan then
+   * offers no times.
    */
   std::string setTimes(const std::vector<double>& inputTimes, double duration, int count);
 
@@ -48,8 +53,8 @@ public:
   /// Times closer than this are one time.
   double epsilon() const;
 
-  /// The requested time clamped to the offered range; no request (or a
-  /// non-finite one) is the start.
+  /// The requested time clamped to the offered range (+inf: the end); no
+  /// request, -inf or NaN is the start.
   double targetOf(bool requested, double time) const;
 
   /**
@@ -84,6 +89,10 @@ public:
    * already holds (`upstream`, -1 if none), so nothing upstream runs again.
    */
   int firstRequest(const Update& update, const FieldCache& cache, int upstream) const;
+
+  /// Empty when stepping from `from` to `target` by at most `dt` stays within
+  /// MaxStepsPerUpdate; otherwise why the update is refused.
+  std::string checkWork(double from, double target, double dt) const;
 
   /// The time step after the interval shown at `target`, which the next
   /// update forward will need; -1 if none (or a steady input).

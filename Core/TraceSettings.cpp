@@ -49,12 +49,43 @@ void resolveEmitter(const TraceSettings& s, const FieldFacts& f, Resolution& r)
   }
 }
 
+/// An error when the emitter box misses the field on an axis: elements
+/// placed there would be reset forever and never be seen in the flow.
+std::string checkEmitter(const TraceSettings& s, const FieldFacts& f, const Parameters& p)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!std::isfinite(s.emitterCenter[a]) || !std::isfinite(s.emitterSize[a]))
+    {
+      return "The emitter box must be finite: EmitterCenter and EmitterSize hold a NaN or Inf.";
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    // A flat axis (one point) has no extent to miss; a super set lives out
+    // its lifetime wherever it goes, but still starts in the field.
+    const double lo = f.bounds[2 * a], hi = f.bounds[2 * a + 1];
+    const double slack = 1e-9 * std::max(1.0, hi - lo);
+    if (f.dims[a] > 1 && (p.emitterMax[a] < lo - slack || p.emitterMin[a] > hi + slack))
+    {
+      std::ostringstream err;
+      err << "The emitter box (" << p.emitterMin[a] + f.offset[a] << " to "
+          << p.emitterMax[a] + f.offset[a] << " along " << "XYZ"[a]
+          << ") lies outside the field (" << lo + f.offset[a] << " to " << hi + f.offset[a]
+          << "); move it into the field, or give a negative EmitterSize to span the field.";
+      return err.str();
+    }
+  }
+  return std::string();
+}
+
 /// (0, 0) picks half to all of the animation's span (or of 100 steps when
-/// the span is empty).
-void resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolution& r)
+/// the span is empty). An error names the setting that made them unusable.
+std::string resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolution& r)
 {
   double lifetime[2] = { s.lifetimeRange[0], s.lifetimeRange[1] };
-  if (lifetime[0] == 0.0 && lifetime[1] == 0.0)
+  const bool automatic = lifetime[0] == 0.0 && lifetime[1] == 0.0;
+  if (automatic)
   {
     const double scale = f.timeSpan > 0.0 ? f.timeSpan : 100.0 * r.dt;
     lifetime[0] = 0.5 * scale;
@@ -62,6 +93,17 @@ void resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolution& r
   }
   r.parameters.lifetimeMin = float(lifetime[0]);
   r.parameters.lifetimeMax = float(lifetime[1]);
+  const bool usable = r.parameters.lifetimeMin > 0.0f && std::isfinite(r.parameters.lifetimeMax);
+  if (automatic && !usable)
+  {
+    std::ostringstream err;
+    err << "The animation's time span (" << f.timeSpan
+        << ") gives automatic lifetimes that are not usable (" << lifetime[0] << " to "
+        << lifetime[1]
+        << "); set LifetimeRange, or for a steady input a Duration between 1e-30 and 1e30.";
+    return err.str();
+  }
+  return std::string();
 }
 
 Resolution failure(const std::string& message)
@@ -87,6 +129,14 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     speed = 1.0;
   }
   r.dt = s.stepInCellLengths ? s.stepSize * f.cellLength / speed : s.stepSize;
+  if (!(r.dt > 0.0) || !std::isfinite(r.dt))
+  {
+    std::ostringstream err;
+    err << "The time step (StepSize " << s.stepSize << (s.stepInCellLengths ? " cell lengths" : "")
+        << " at a top speed of " << f.maxSpeed << ") comes to " << r.dt
+        << ", which cannot step; check the velocity's units or set StepSize in time units.";
+    return failure(err.str());
+  }
   if (s.elementSize < 0.0 || !std::isfinite(s.elementSize))
   {
     return failure("ElementSize must be positive, or 0 for automatic.");
@@ -111,7 +161,16 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
   r.parameters.elementSize = float(r.elementSize);
   resolveEmitter(s, f, r);
-  resolveLifetimes(s, f, r);
+  const std::string emitterError = checkEmitter(s, f, r.parameters);
+  if (!emitterError.empty())
+  {
+    return failure(emitterError);
+  }
+  const std::string lifetimeError = resolveLifetimes(s, f, r);
+  if (!lifetimeError.empty())
+  {
+    return failure(lifetimeError);
+  }
   return r;
 }
 

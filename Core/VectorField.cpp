@@ -74,6 +74,64 @@ std::string GridGeometry::validate() const
       return err.str();
     }
   }
+  return this->checkScale();
+}
+
+double GridGeometry::smallestCell(int a) const
+{
+  if (this->dims[a] < 2)
+  {
+    return 0.0;
+  }
+  const std::vector<double>& c = this->coordinates[a];
+  if (c.empty())
+  {
+    return this->spacing[a];
+  }
+  double smallest = c[1] - c[0];
+  for (std::size_t i = 2; i < c.size(); ++i)
+  {
+    smallest = std::min(smallest, c[i] - c[i - 1]);
+  }
+  return smallest;
+}
+
+std::string GridGeometry::checkScale() const
+{
+  // The engine computes in float: positions relative to the grid's first
+  // point, cell widths and their inverses, and squared distances.
+  std::ostringstream err;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (std::abs(this->origin[a]) > MaxCoordinate)
+    {
+      err << "the field's first point lies at " << this->origin[a] << " along "
+          << "XYZ"[a] << ", beyond the " << MaxCoordinate
+          << " the engine's arithmetic supports; translate or rescale the data";
+      return err.str();
+    }
+    if (this->dims[a] < 2)
+    {
+      continue;
+    }
+    const double length = this->coordinate(a, this->dims[a] - 1) - this->coordinate(a, 0);
+    const double cell = this->smallestCell(a);
+    if (!(length <= MaxCoordinate))
+    {
+      err << "the field spans " << length << " along " << "XYZ"[a] << ", beyond the "
+          << MaxCoordinate << " the engine's arithmetic supports; rescale the coordinates";
+      return err.str();
+    }
+    if (!(cell >= MinCellWidth) || !(cell >= length * MinRelativeCellWidth))
+    {
+      err << "the field's cells along " << "XYZ"[a] << " are as narrow as " << cell
+          << " in a span of " << length
+          << ", finer than the engine's float positions resolve (cells must be at least "
+          << MinCellWidth << " wide and " << MinRelativeCellWidth
+          << " of the span); rescale the coordinates";
+      return err.str();
+    }
+  }
   return std::string();
 }
 
@@ -264,9 +322,49 @@ std::string VectorField::validate() const
       }
     }
   }
+  const std::string scaleError = this->checkVelocityScale();
+  if (!scaleError.empty())
+  {
+    return scaleError;
+  }
   if (this->Second.velocity && !(this->Second.time > this->First.time))
   {
     return "the field's two time steps are not in increasing time order";
+  }
+  return std::string();
+}
+
+std::string VectorField::checkVelocityScale() const
+{
+  float largest = 0.0f;
+  for (const FieldSlice* s : { &this->First, &this->Second })
+  {
+    if (s->velocity)
+    {
+      for (float v : *s->velocity)
+        largest = std::max(largest, std::abs(v));
+    }
+  }
+  std::ostringstream err;
+  if (largest > MaxVelocity)
+  {
+    err << "the vector array holds values up to " << largest << ", beyond the " << MaxVelocity
+        << " the engine's float arithmetic supports (speeds are squared); check the data's "
+           "byte order and units";
+    return err.str();
+  }
+  double cell = HUGE_VAL;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->Grid.dims[a] > 1)
+      cell = std::min(cell, this->Grid.smallestCell(a));
+  }
+  if (double(largest) / cell > MaxGradient)
+  {
+    err << "the field's velocities (up to " << largest << ") change over cells as narrow as "
+        << cell << ", so its gradients (the Vorticity array) would overflow float; rescale the "
+        << "coordinates or the velocities";
+    return err.str();
   }
   return std::string();
 }

@@ -57,9 +57,21 @@ struct GridGeometry
   /// Whether two grids place every point within `tolerance` of each other.
   bool sameAs(const GridGeometry& other, double tolerance) const;
 
+  /// The largest coordinate magnitude and span the engine's float
+  /// arithmetic supports, and the narrowest cells it resolves (absolute, and
+  /// relative to the axis's span).
+  static constexpr double MaxCoordinate = 1e30;
+  static constexpr double MinCellWidth = 1e-30;
+  static constexpr double MinRelativeCellWidth = 1e-6;
+
   std::size_t pointCount() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
-  /// Empty when the grid can carry a flow, otherwise why not.
+  /// Empty when the grid can carry a flow, otherwise why not (its scale included).
   std::string validate() const;
+  /// Empty when coordinates, spans and cell widths are within what the
+  /// engine's float arithmetic supports, otherwise what to rescale.
+  std::string checkScale() const;
+  /// The narrowest cell along axis a (0 for an axis of one point).
+  double smallestCell(int a) const;
   std::array<double, 6> bounds() const;
   double diagonal() const;
   /// Mean spacing over the axes with more than one point.
@@ -135,8 +147,17 @@ public:
   /// Largest speed over the grid points of the first slice.
   double maxSpeed() const;
 
-  /// Empty when every value of every slice is finite and the slices match the grid.
+  /// The largest velocity component the engine supports (its square, summed
+  /// over three components, must stay finite in float), and the largest
+  /// velocity over the narrowest cell (the Vorticity array's differences).
+  static constexpr float MaxVelocity = 1e18f;
+  static constexpr double MaxGradient = 1e30;
+
+  /// Empty when every value of every slice is finite and within MaxVelocity,
+  /// the gradients within MaxGradient, and the slices match the grid.
   std::string validate() const;
+  /// The MaxVelocity and MaxGradient checks alone.
+  std::string checkVelocityScale() const;
 
   const FieldSlice& firstSlice() const { return this->First; }
   const FieldSlice& secondSlice() const { return this->Second; }

@@ -80,6 +80,52 @@ std::string rectilinearGeometry(vtkRectilinearGrid* rectilinear, bp::GridGeometr
   }
   return std::string();
 }
+/**
+ * Checks what templateFromPolyData() reads before it reads it: every cell's
+ * point ids within the mesh (they become 32-bit indices), the Stiffness array
+ * one value per cell, and the springs All Pairs would make within the limit.
+ */
+std::string checkTemplateCells(vtkPolyData* mesh, bp::MeshSprings mode)
+{
+  std::ostringstream err;
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips(), mesh->GetLines() })
+  {
+    vtkIdType count;
+    const vtkIdType* ids;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(count, ids);
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= n)
+        {
+          err << "a cell uses point " << ids[k] << " but the mesh has " << n << " points";
+          return err.str();
+        }
+      }
+    }
+  }
+  vtkDataArray* stiffness = mesh->GetCellData()->GetArray("Stiffness");
+  if (stiffness && mesh->GetNumberOfLines() > 0 &&
+    stiffness->GetNumberOfTuples() < mesh->GetNumberOfCells())
+  {
+    err << "its Stiffness cell array has " << stiffness->GetNumberOfTuples() << " values for "
+        << mesh->GetNumberOfCells() << " cells; give one value in [0, 1] per cell";
+    return err.str();
+  }
+  const double pairs = 0.5 * double(n) * double(n - 1);
+  if (mode == bp::MeshSprings::AllPairs && mesh->GetNumberOfLines() == 0 &&
+    pairs > double(bp::MaxTemplateSprings))
+  {
+    err << "Template Springs = All Pairs on its " << n << " points makes " << pairs
+        << " springs, more than the " << bp::MaxTemplateSprings
+        << " a template may have; choose Edges or Edges And Diagonals";
+    return err.str();
+  }
+  return std::string();
+}
 } // namespace
 
 namespace bpvtk
@@ -186,6 +232,11 @@ std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::El
     return "The Element Template input has no points.";
   }
   const vtkIdType n = mesh->GetNumberOfPoints();
+  const std::string cellsError = checkTemplateCells(mesh, mode);
+  if (!cellsError.empty())
+  {
+    return "The Element Template input is unusable: " + cellsError + ".";
+  }
   std::vector<std::array<float, 3>> points(n);
   for (vtkIdType i = 0; i < n; ++i)
   {

@@ -14,6 +14,8 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -167,53 +169,153 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
   output->SetPoints(points);
 }
 
-/// The arrays computed per element (Lifetime, ElementId, Layer, Radius) and
-/// per particle from its element (Speed, ParticleIndex), in one pass.
-struct ElementArrays
+/// What filling an array may read: the engine, the field, the frame, and the
+/// arrays filled before it (table order), by id.
+struct FillContext
 {
-  vtkDataArray* arrays[10] = { nullptr };
-  vtkDataArray*& operator[](bp::OutputArrayId id) { return this->arrays[std::size_t(id)]; }
+  const bp::Engine& engine;
+  const bp::VectorField& field;
+  const bpvtk::OutputFrame& frame;
+  const bp::RangeRunner& run;
+  std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> filled;
 };
 
-void fillElementArrays(
-  ElementArrays& out, const bp::Engine& engine, const bpvtk::OutputFrame& frame)
+/// Writes value(e) on every particle of every element e.
+template <typename T, typename Value>
+void perElement(T* out, const bp::Engine& engine, const Value& value)
 {
-  using Id = bp::OutputArrayId;
-  const std::size_t E = engine.elementCount(), n = engine.particlesPerElement();
-  const auto& bounds = frame.domain;
-  const int axis = frame.coloringAxis;
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double cu = 0.5 * (bounds[2 * u] + bounds[2 * u + 1]);
-  const double cv = 0.5 * (bounds[2 * v] + bounds[2 * v + 1]);
-  const float* vel = floats(out[Id::Velocity]);
-  float* speed = floats(out[Id::Speed]);
-  float* lifetime = floats(out[Id::Lifetime]);
-  float* layer = floats(out[Id::Layer]);
-  float* radius = floats(out[Id::Radius]);
-  vtkIdType* elementId = static_cast<vtkIdTypeArray*>(out[Id::ElementId])->GetPointer(0);
-  int* particleIndex = static_cast<vtkIntArray*>(out[Id::ParticleIndex])->GetPointer(0);
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(E),
+  const vtkIdType n = vtkIdType(engine.particlesPerElement());
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(engine.elementCount()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType e = begin; e < end; ++e)
       {
-        const float* c = engine.initialCenters().data() + 3 * e;
-        const float lay = float(double(c[axis]) + frame.offset[axis]);
-        const float rad = float(std::hypot(c[u] - cu, c[v] - cv));
-        const float life = engine.lifetimes()[e];
-        for (std::size_t i = 0; i < n; ++i)
-        {
-          const vtkIdType id = e * vtkIdType(n) + vtkIdType(i);
-          const float* w = vel + 3 * id;
-          speed[id] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-          lifetime[id] = life;
-          layer[id] = lay;
-          radius[id] = rad;
-          elementId[id] = vtkIdType(engine.elementIds()[e]);
-          particleIndex[id] = int(i);
-        }
+        std::fill_n(out + e * n, n, T(value(std::size_t(e))));
       }
     });
+}
+
+void fillParticleState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  const std::size_t N = c.engine.particleCount();
+  switch (row.id)
+  {
+    case bp::OutputArrayId::Normals:
+      std::memcpy(floats(out), c.engine.normals().data(), sizeof(float) * 3 * N);
+      break;
+    case bp::OutputArrayId::Force:
+      std::memcpy(floats(out), c.engine.forces().data(), sizeof(float) * N);
+      break;
+    default:
+      break;
+  }
+}
+
+void fillFieldSample(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  const std::size_t N = c.engine.particleCount();
+  const float* positions = c.engine.positions().data();
+  float* values = floats(out);
+  const double t = c.frame.time;
+  const bp::VectorField& field = c.field;
+  c.run(N,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        if (row.id == bp::OutputArrayId::Velocity)
+          field.sample(positions + 3 * i, t, values + 3 * i);
+        else if (row.id == bp::OutputArrayId::Vorticity)
+          values[i] = field.vorticityMagnitude(positions + 3 * i, t);
+      }
+    });
+}
+
+void fillDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  if (row.id == bp::OutputArrayId::Speed)
+  {
+    const float* v = floats(c.filled[std::size_t(bp::OutputArrayId::Velocity)]);
+    float* speed = floats(out);
+    vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const float* w = v + 3 * i;
+          speed[i] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+      });
+  }
+}
+
+void fillElementState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  const bp::Engine& engine = c.engine;
+  const int axis = c.frame.coloringAxis;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto& b = c.frame.domain;
+  const double cu = 0.5 * (b[2 * u] + b[2 * u + 1]), cv = 0.5 * (b[2 * v] + b[2 * v + 1]);
+  const float* centres = engine.initialCenters().data();
+  switch (row.id)
+  {
+    case bp::OutputArrayId::Lifetime:
+      perElement(floats(out), engine, [&](std::size_t e) { return engine.lifetimes()[e]; });
+      break;
+    case bp::OutputArrayId::ElementId:
+      perElement(static_cast<vtkIdTypeArray*>(out)->GetPointer(0), engine,
+        [&](std::size_t e) { return engine.elementIds()[e]; });
+      break;
+    case bp::OutputArrayId::Layer: // the release centre along the colouring axis
+      perElement(floats(out), engine,
+        [&](std::size_t e) { return double(centres[3 * e + axis]) + c.frame.offset[axis]; });
+      break;
+    case bp::OutputArrayId::Radius: // the release centre's distance from the axis
+      perElement(floats(out), engine,
+        [&](std::size_t e)
+        { return std::hypot(centres[3 * e + u] - cu, centres[3 * e + v] - cv); });
+      break;
+    default:
+      break;
+  }
+}
+
+void fillTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  if (row.id == bp::OutputArrayId::ParticleIndex)
+  {
+    int* index = static_cast<vtkIntArray*>(out)->GetPointer(0);
+    const vtkIdType n = vtkIdType(c.engine.particlesPerElement());
+    vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+          index[i] = int(i % n);
+      });
+  }
+}
+
+/// Fills `out` as its row's source says.
+void fillArray(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  switch (row.source)
+  {
+    case bp::ArraySource::ParticleState:
+      fillParticleState(row, out, c);
+      break;
+    case bp::ArraySource::FieldSample:
+      fillFieldSample(row, out, c);
+      break;
+    case bp::ArraySource::Derived:
+      fillDerived(row, out, c);
+      break;
+    case bp::ArraySource::ElementState:
+      fillElementState(row, out, c);
+      break;
+    case bp::ArraySource::TemplateIndex:
+      fillTemplateIndex(row, out, c);
+      break;
+  }
 }
 } // namespace
 
@@ -253,32 +355,28 @@ void ParticleCells::apply(vtkPolyData* output, const bp::Engine& engine)
   }
 }
 
+bool OutputFrame::wants(const bp::OutputArray& row) const
+{
+  // The optional rows and the properties that ask for them.
+  return !row.optional || (row.id == bp::OutputArrayId::Vorticity && this->computeVorticity);
+}
+
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
   const OutputFrame& frame, ParticleCells& cells, const bp::RangeRunner& run)
 {
-  using Id = bp::OutputArrayId;
   setPoints(output, engine, frame);
   cells.apply(output, engine);
   const vtkIdType N = vtkIdType(engine.particleCount());
-  std::vector<vtkSmartPointer<vtkDataArray>> arrays;
-  ElementArrays byId;
+  FillContext context{ engine, field, frame, run, {} };
+  vtkPointData* pd = output->GetPointData();
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    const bool wanted = !row.optional || (row.id == Id::Vorticity && frame.computeVorticity);
-    arrays.push_back(wanted ? newArray(row, N) : nullptr);
-    byId[row.id] = arrays.back();
-  }
-  std::memcpy(floats(byId[Id::Normals]), engine.normals().data(), sizeof(float) * 3 * N);
-  std::memcpy(floats(byId[Id::Force]), engine.forces().data(), sizeof(float) * N);
-  bp::sampleAtPositions(field, frame.time, engine.positions().data(), std::size_t(N),
-    floats(byId[Id::Velocity]), byId[Id::Vorticity] ? floats(byId[Id::Vorticity]) : nullptr, run);
-  fillElementArrays(byId, engine, frame);
-  vtkPointData* pd = output->GetPointData();
-  for (std::size_t k = 0; k < arrays.size(); ++k)
-  {
-    if (arrays[k])
+    if (frame.wants(row))
     {
-      addToPointData(pd, bp::outputArrays()[k], arrays[k]);
+      vtkSmartPointer<vtkDataArray> array = newArray(row, N);
+      fillArray(row, array, context);
+      context.filled[std::size_t(row.id)] = array;
+      addToPointData(pd, row, array);
     }
   }
 }

@@ -39,6 +39,9 @@ struct OutputFrame
   double cellLength = 1.0; ///< of the local grid (for the points' precision)
   int coloringAxis = 2;    ///< for Layer and Radius
   bool computeVorticity = true;
+
+  /// Whether the output carries `row`: every row but the optional ones not asked for.
+  bool wants(const bp::OutputArray& row) const;
 };
 
 /// The output's cells, kept while the element count and shape stay.
@@ -58,7 +61,8 @@ private:
   std::size_t Elements = 0;
 };
 
-/// One point per particle with every array of the table.
+/// One point per particle with every array of the table the frame wants,
+/// each filled as its row's ArraySource says.
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
   const OutputFrame& frame, ParticleCells& cells, const bp::RangeRunner& run);
 

@@ -16,6 +16,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cstdlib>
+#include <new>
 #include <mutex>
 
 namespace
@@ -214,6 +215,30 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
 }
 
 int vtkBoundParticleTracer::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The checks before every large allocation leave only what they cannot
+  // foresee (memory taken meanwhile): that ends the update with a message,
+  // never the process.
+  try
+  {
+    return this->ExecuteUpdatePass(request, inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory while tracing "
+      << this->NumberOfElements
+      << " elements; use fewer elements or a smaller template, or close other data.");
+  }
+  vtkInternals& I = *this->Internals;
+  I.clear();
+  I.invalidate();
+  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
+  return 1;
+}
+
+int vtkBoundParticleTracer::ExecuteUpdatePass(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;

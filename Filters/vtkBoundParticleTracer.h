@@ -324,6 +324,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// One pipeline pass of an update (RequestData guards it against failed allocations).
+  int ExecuteUpdatePass(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 #ifndef __VTK_WRAP__
   /// The properties as the VTK-free core takes them.
   bp::TraceSettings Settings() const;

@@ -2,6 +2,7 @@
 #include "vtkBoundParticleTracerInternals.h"
 
 #include "ElementTemplate.h"
+#include "Memory.h"
 #include "Partition.h"
 #include "TraceSettings.h"
 #include "TracerInput.h"
@@ -153,6 +154,12 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
 std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice)
 {
+  // In world coordinates first, so how far from the origin the data lies counts too.
+  const std::string worldError = grid.validate();
+  if (!worldError.empty())
+  {
+    return "Unusable input: " + worldError + ".";
+  }
   // The engine works in coordinates relative to the grid's first point (the
   // whole grid's, in parallel), so float positions keep their precision far
   // from the world origin.
@@ -173,11 +180,6 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   }
   this->Offset = offset;
   this->Grid = grid;
-  const std::string gridError = grid.validate();
-  if (!gridError.empty())
-  {
-    return "Unusable input: " + gridError + ".";
-  }
   const std::string fieldError = bp::VectorField(grid, slice).validate();
   if (!fieldError.empty())
   {
@@ -268,7 +270,29 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   {
     return Pass::fail(templateError);
   }
-  const bp::Parameters& p = resolved.parameters;
+  bp::Parameters p = resolved.parameters;
+  // The engine's own checks first: they name the setting to change.
+  const std::string invalid = bp::Engine::validate(shape, p);
+  if (!invalid.empty())
+  {
+    return Pass::fail(invalid + ".");
+  }
+  const std::string memoryError = bp::checkAllocatable(bp::traceBytes(shape, p),
+    std::to_string(p.numberOfElements) + " elements of " + std::to_string(shape.particleCount()) +
+      " particles");
+  if (!memoryError.empty())
+  {
+    return Pass::fail(memoryError + "; use fewer elements or a smaller template.");
+  }
+  const float stable = bp::stableRelaxation(shape);
+  if (p.restoration == bp::Restoration::Jacobi && p.relaxation > stable)
+  {
+    vtkWarningWithObjectMacro(self, "Relaxation Factor "
+        << p.relaxation << " would make Jacobi diverge on this element (a particle's springs "
+        << "add up to " << 1.0f / stable << " shares); using " << stable
+        << ", the largest stable factor. Averaged Jacobi needs no factor.");
+    p.relaxation = stable;
+  }
   const std::string fallback = this->Steppers.fallBackIfTooLarge(shape, p);
   if (!fallback.empty())
   {
@@ -321,6 +345,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
   const double target = this->target();
   const double span = std::max(target - committed, 1e-300);
   const double progressStart = committed;
+  const std::string tooMuch = this->Plan.checkWork(committed, target, this->Schedule->dt());
+  if (!tooMuch.empty())
+  {
+    return Pass::fail(tooMuch);
+  }
   bool aborted = false;
   auto keepGoing = [&](double t)
   {

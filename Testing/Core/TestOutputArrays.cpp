@@ -12,6 +12,7 @@
 TEST(OutputArrays, EveryIdHasItsRowInOrder)
 {
   const auto& rows = bp::outputArrays();
+  EXPECT_EQ(rows.size(), std::size_t(bp::OutputArrayId::Count));
   std::set<std::string> names;
   for (std::size_t k = 0; k < rows.size(); ++k)
   {
