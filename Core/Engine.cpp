@@ -8,10 +8,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #if defined(__linux__)
@@ -1236,6 +1236,32 @@ double advance(Engine& engine, const VectorField& field, const StepSchedule& sch
   return advance(
     schedule, t, target, [&](double from, double h) { engine.step(field, from, h, run); },
     keepGoing);
+}
+
+std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize)
+{
+  std::ostringstream err;
+  const std::size_t n = shape.particleCount();
+  const ParticleLayout layout = ParticleLayout::of(elements, n);
+  if (layout.width > maxSize || layout.height > maxSize)
+  {
+    err << elements << " elements of " << n << " particles need a " << layout.width << " x "
+        << layout.height << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " << maxSize;
+    return err.str();
+  }
+  const long long tableWidth = 2 * (long long)n;
+  const long long listRows = (4 * (long long)shape.springs.size() + 4095) / 4096;
+  const long long triangleRows = (3 * (long long)shape.triangles.size() + 4095) / 4096;
+  if (tableWidth > maxSize || listRows > maxSize || triangleRows > maxSize)
+  {
+    err << "the element template's " << n << " particles, " << shape.springs.size()
+        << " springs and " << shape.triangles.size() << " triangles need template tables of up to "
+        << std::max({ tableWidth, listRows, triangleRows })
+        << " texels along one side, beyond this GPU's GL_MAX_TEXTURE_SIZE of " << maxSize
+        << "; the GPU engine takes templates of at most " << maxSize / 2 << " particles";
+    return err.str();
+  }
+  return std::string();
 }
 
 ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPerElement)

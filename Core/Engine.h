@@ -351,6 +351,15 @@ struct ParticleLayout
   static ParticleLayout of(std::size_t elements, std::size_t particlesPerElement);
 };
 
+/**
+ * Empty when every texture of the GPU engine for `elements` elements of
+ * `shape` fits a GPU whose textures are at most `maxSize` texels wide and
+ * high: the particle state (ParticleLayout), and the template's tables (rest
+ * positions and particle info n wide, the Gauss-Seidel spring table 2n wide,
+ * the spring and triangle lists 4096 wide). Otherwise which one does not.
+ */
+std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
+
 /// Velocity and |curl v| sampled at `count` positions (3 floats each);
 /// `vorticity` may be null.
 void sampleAtPositions(const VectorField& field, double t, const float* positions,

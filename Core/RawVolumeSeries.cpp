@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <new>
 #include <sstream>
 #include <system_error>
@@ -195,7 +196,15 @@ std::uint64_t RawVolumeSeries::numberOfPoints() const
 {
   if (this->dims[0] < 1 || this->dims[1] < 1 || this->dims[2] < 1)
     return 0;
-  return std::uint64_t(this->dims[0]) * std::uint64_t(this->dims[1]) * std::uint64_t(this->dims[2]);
+  // Three ints can multiply past 2^64 (2^21 x 2^21 x 2^22 wraps to 0, which
+  // an empty file would match): the count saturates instead.
+  std::uint64_t count = 1;
+  for (int d : this->dims)
+  {
+    if (__builtin_mul_overflow(count, std::uint64_t(d), &count))
+      return std::numeric_limits<std::uint64_t>::max();
+  }
+  return count;
 }
 
 std::uint64_t RawVolumeSeries::expectedFileSize(bool interleaved) const

@@ -70,8 +70,9 @@ std::string checkEmitter(const TraceSettings& s, const FieldFacts& f, const Para
     {
       std::ostringstream err;
       err << "The emitter box (" << p.emitterMin[a] + f.offset[a] << " to "
-          << p.emitterMax[a] + f.offset[a] << " along " << "XYZ"[a]
-          << ") lies outside the field (" << lo + f.offset[a] << " to " << hi + f.offset[a]
+          << p.emitterMax[a] + f.offset[a] << " along "
+          << "XYZ"[a] << ") lies outside the field (" << lo + f.offset[a] << " to "
+          << hi + f.offset[a]
           << "); move it into the field, or give a negative EmitterSize to span the field.";
       return err.str();
     }

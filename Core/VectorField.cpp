@@ -118,14 +118,15 @@ std::string GridGeometry::checkScale() const
     const double cell = this->smallestCell(a);
     if (!(length <= MaxCoordinate))
     {
-      err << "the field spans " << length << " along " << "XYZ"[a] << ", beyond the "
-          << MaxCoordinate << " the engine's arithmetic supports; rescale the coordinates";
+      err << "the field spans " << length << " along "
+          << "XYZ"[a] << ", beyond the " << MaxCoordinate
+          << " the engine's arithmetic supports; rescale the coordinates";
       return err.str();
     }
     if (!(cell >= MinCellWidth) || !(cell >= length * MinRelativeCellWidth))
     {
-      err << "the field's cells along " << "XYZ"[a] << " are as narrow as " << cell
-          << " in a span of " << length
+      err << "the field's cells along "
+          << "XYZ"[a] << " are as narrow as " << cell << " in a span of " << length
           << ", finer than the engine's float positions resolve (cells must be at least "
           << MinCellWidth << " wide and " << MinRelativeCellWidth
           << " of the span); rescale the coordinates";

@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArrayRange.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
@@ -137,6 +138,13 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   vtkImageData* image = vtkImageData::SafeDownCast(input);
   vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(input);
   vtkDataSet* dataSet = image ? static_cast<vtkDataSet*>(image) : rectilinear;
+  if (vtkCompositeDataSet::SafeDownCast(input))
+  {
+    err << "The input is a " << input->GetClassName()
+        << " (a composite of several datasets); Bound Particle Tracer traces one grid. Pick one "
+           "block with Extract Block, or merge them onto one grid with Resample To Image.";
+    return err.str();
+  }
   if (!dataSet)
   {
     err << "The input is a " << (input ? input->GetClassName() : "null data object")

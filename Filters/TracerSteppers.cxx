@@ -9,6 +9,8 @@
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkSMPTools.h"
 
+#include <cctype>
+
 namespace bpvtk
 {
 bp::RangeRunner smpRunner()
@@ -50,19 +52,16 @@ std::string TracerSteppers::fallBackIfTooLarge(
   {
     return std::string();
   }
-  const bp::ParticleLayout layout =
-    bp::ParticleLayout::of(p.numberOfElements, shape.particleCount());
   const int maxSize = this->Queue->maxTextureSize;
-  if (maxSize <= 0 || (layout.width <= maxSize && layout.height <= maxSize))
+  const std::string limit =
+    maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
+  if (limit.empty())
   {
     return std::string();
   }
   // The display falls back to the CPU result, from this update on.
-  const std::string message = std::to_string(p.numberOfElements) + " elements of " +
-    std::to_string(shape.particleCount()) + " particles need a " + std::to_string(layout.width) +
-    " x " + std::to_string(layout.height) + " GPU state texture, beyond this GPU's limit of " +
-    std::to_string(maxSize) +
-    " texels; the CPU engine runs this trace instead. Use fewer elements to run it on the GPU.";
+  std::string message = limit + "; the CPU engine runs this trace instead.";
+  message[0] = char(std::toupper(static_cast<unsigned char>(message[0])));
   this->Queue->clear();
   this->Queue->cursor.valid = false;
   this->Queue->failure = message;

@@ -2,6 +2,7 @@
 #include "vtkAnalyticFlowSource.h"
 
 #include "AnalyticFlows.h"
+#include "Memory.h"
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -126,6 +127,16 @@ int vtkAnalyticFlowSource::RequestData(
   }
   const std::array<double, 6> box = { this->Bounds[0], this->Bounds[1], this->Bounds[2],
     this->Bounds[3], this->Bounds[4], this->Bounds[5] };
+  // The volume and the copy a tracer takes of it: refused before allocating,
+  // since a failed allocation inside VTK aborts.
+  const std::string memoryError = bp::checkAllocatable(2.0 * 12.0 * double(piece.pointCount()),
+    "An Analytic Flow of " + std::to_string(piece.dims[0]) + " x " + std::to_string(piece.dims[1]) +
+      " x " + std::to_string(piece.dims[2]) + " points");
+  if (!memoryError.empty())
+  {
+    vtkErrorMacro(<< memoryError << "; lower its Resolution.");
+    return 1;
+  }
   vtkNew<vtkFloatArray> velocity;
   velocity->SetName("velocity");
   velocity->SetNumberOfComponents(3);

@@ -16,8 +16,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cstdlib>
-#include <new>
 #include <mutex>
+#include <new>
 
 namespace
 {
@@ -128,9 +128,11 @@ int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* i
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  // Any dataset is accepted here so that a wrong type gets an error that says
-  // what to do, rather than the pipeline's generic type mismatch.
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  // Any data object is accepted here, so that a wrong type gets an error that
+  // says what to do rather than the pipeline's generic type mismatch, and a
+  // composite input (a multiblock) reaches the tracer whole: the composite
+  // pipeline would otherwise run this multi-pass update once per block.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 

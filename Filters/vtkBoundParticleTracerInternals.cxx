@@ -10,6 +10,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -122,8 +123,10 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   bp::GridGeometry grid;
   bp::FieldSlice slice;
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* vectors =
-    input ? self->GetInputArrayToProcess(0, inputVector, association) : nullptr;
+  // Only a dataset has point data to choose from (readSlice says what else came).
+  vtkDataArray* vectors = vtkDataSet::SafeDownCast(input)
+    ? self->GetInputArrayToProcess(0, inputVector, association)
+    : nullptr;
   int extent[6];
   std::string error = bpvtk::readSlice(input, vectors, association, grid, slice, extent);
   std::array<double, 3> offset = grid.origin;
@@ -287,10 +290,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   const float stable = bp::stableRelaxation(shape);
   if (p.restoration == bp::Restoration::Jacobi && p.relaxation > stable)
   {
-    vtkWarningWithObjectMacro(self, "Relaxation Factor "
-        << p.relaxation << " would make Jacobi diverge on this element (a particle's springs "
-        << "add up to " << 1.0f / stable << " shares); using " << stable
-        << ", the largest stable factor. Averaged Jacobi needs no factor.");
+    vtkWarningWithObjectMacro(self,
+      "Relaxation Factor " << p.relaxation
+                           << " would make Jacobi diverge on this element (a particle's springs "
+                           << "add up to " << 1.0f / stable << " shares); using " << stable
+                           << ", the largest stable factor. Averaged Jacobi needs no factor.");
     p.relaxation = stable;
   }
   const std::string fallback = this->Steppers.fallBackIfTooLarge(shape, p);

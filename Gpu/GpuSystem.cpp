@@ -38,20 +38,12 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
 }
 
-std::string GpuSystem::checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const
+std::string GpuSystem::checkTextureSize(const ParticleLayout&, int textureSizeLimit) const
 {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   maxSize = std::min<GLint>(maxSize, textureSizeLimit);
-  if (wanted.width <= maxSize && wanted.height <= maxSize)
-  {
-    return std::string();
-  }
-  std::ostringstream err;
-  err << this->parameters.numberOfElements << " elements of " << this->layout.particlesPerElement
-      << " particles need a " << wanted.width << " x " << wanted.height
-      << " state texture, beyond this GPU's GL_MAX_TEXTURE_SIZE of " << maxSize;
-  return err.str();
+  return gpuTextureError(this->shape, this->parameters.numberOfElements, maxSize);
 }
 
 void GpuSystem::initialize()
