@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ElementTemplate.h"
+#include "Engine.h"
 
 #include <gtest/gtest.h>
 
@@ -163,4 +164,32 @@ TEST(ElementTemplate, SpringColoursShareNoParticle)
           EXPECT_TRUE(a.a != b.a && a.a != b.b && a.b != b.a && a.b != b.b) << t.name;
         }
   }
+}
+
+TEST(ElementTemplate, StableRelaxationFollowsTheBusiestParticle)
+{
+  // A chain: inner particles carry two half-shares, so 1 / (2 * 0.5) = 1.
+  const auto chain = bp::makeTemplate(
+    "chain", { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, {}, { { 0, 1 }, { 1, 2 } });
+  EXPECT_FLOAT_EQ(bp::stableRelaxation(chain), 1.0f);
+  // Every built-in shape is stable at the default factor.
+  for (int s = 0; s <= int(bp::BuiltinShape::Fish); ++s)
+  {
+    EXPECT_GE(bp::stableRelaxation(bp::builtinTemplate(bp::BuiltinShape(s))), 0.2f) << s;
+  }
+  EXPECT_TRUE(std::isinf(bp::stableRelaxation(bp::builtinTemplate(bp::BuiltinShape::Point))));
+}
+
+TEST(ElementTemplate, GpuTextureLimitsNameWhatDoesNotFit)
+{
+  const auto strip = bp::builtinTemplate(bp::BuiltinShape::Strip16);
+  EXPECT_EQ(bp::gpuTextureError(strip, 65536, 16384), "");
+  EXPECT_NE(bp::gpuTextureError(strip, 1 << 26, 16384).find("state texture"), std::string::npos);
+  std::vector<std::array<float, 3>> points(20000, { 0, 0, 0 });
+  for (std::size_t i = 0; i < points.size(); ++i)
+    points[i] = { float(i), float(i % 7), 0.0f };
+  const auto big = bp::makeTemplate("big", points, {}, { { 0, 1 } });
+  const std::string error = bp::gpuTextureError(big, 10, 16384);
+  EXPECT_NE(error.find("template"), std::string::npos) << error;
+  EXPECT_NE(error.find("at most 8192 particles"), std::string::npos) << error;
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -192,6 +194,10 @@ TEST(RawVolumeSeriesDescriptor, ValidateNamesTheProblem)
   EXPECT_NE(broken.validate().find("dimensions"), std::string::npos);
   broken = s;
   broken.dims = { 1 << 20, 1 << 20, 1 << 20 };
+  EXPECT_NE(broken.validate().find("dimensions"), std::string::npos);
+  // 2^21 x 2^21 x 2^22 = 2^64 points used to wrap to 0 (an empty file matched).
+  broken.dims = { 1 << 21, 1 << 21, 1 << 22 };
+  EXPECT_EQ(broken.numberOfPoints(), std::numeric_limits<std::uint64_t>::max());
   EXPECT_NE(broken.validate().find("dimensions"), std::string::npos);
   broken = s;
   broken.spacing = { 1.0, -1.0, 1.0 };

@@ -59,6 +59,24 @@ TEST(TracePlan, SteadyTimeLineIsCheckedWithAMessage)
   EXPECT_NE(plan.setTimes({}, std::numeric_limits<double>::infinity(), 10), "");
 }
 
+TEST(TracePlan, InputTimesMustBeFiniteAndIncreasing)
+{
+  bp::TracePlan plan;
+  EXPECT_NE(plan.setTimes({ 0, 2, 1, 3 }, 1.0, 10).find("out of order"), std::string::npos);
+  EXPECT_FALSE(plan.hasTimes());
+  EXPECT_NE(plan.setTimes({ 0, 1, 1 }, 1.0, 10).find("duplicate"), std::string::npos);
+  EXPECT_NE(plan.setTimes({ 0, std::nan("") }, 1.0, 10).find("finite"), std::string::npos);
+  EXPECT_NE(plan.setTimes({ 0, HUGE_VAL }, 1.0, 10).find("finite"), std::string::npos);
+}
+
+TEST(TracePlan, WorkBeyondTheStepBoundIsRefused)
+{
+  const bp::TracePlan plan = unsteadyPlan();
+  EXPECT_EQ(plan.checkWork(0.0, 3.0, 1e-3), "");
+  EXPECT_NE(plan.checkWork(0.0, 3.0, 1e-9).find("steps"), std::string::npos);
+  EXPECT_NE(plan.checkWork(0.0, 3.0, 0.0).find("steps"), std::string::npos);
+}
+
 TEST(TracePlan, RequestsAreClampedToTheOfferedRange)
 {
   const bp::TracePlan plan = unsteadyPlan();
@@ -67,6 +85,8 @@ TEST(TracePlan, RequestsAreClampedToTheOfferedRange)
   EXPECT_DOUBLE_EQ(plan.targetOf(true, 1.5), 1.5);
   EXPECT_DOUBLE_EQ(plan.targetOf(false, 2.0), 0.0);
   EXPECT_DOUBLE_EQ(plan.targetOf(true, std::nan("")), 0.0);
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, HUGE_VAL), 3.0);
+  EXPECT_DOUBLE_EQ(plan.targetOf(true, -HUGE_VAL), 0.0);
 }
 
 TEST(TracePlan, IntervalsForSteppingAndForShowing)
