@@ -1,0 +1,283 @@
+"""Hostile input never kills or hangs ParaView: a table of inputs a fuzzing run
+found harmful, each traced in its own pvpython process under an 8 GiB
+address-space limit and a time limit.
+
+Each case must end with exit status 0 (no signal, no abort), within its time
+limit, with finite output; a case the tracer must refuse must also say why,
+naming the problem. Run as the driver (`--plugin P`); the driver runs itself
+with `--case NAME` for each case.
+"""
+import argparse
+import json
+import math
+import os
+import resource
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--case")
+parser.add_argument("--pvpython", default="pvpython")
+parser.add_argument("--scratch", help="a folder for the cases' files")
+args = parser.parse_args()
+
+ADDRESS_LIMIT = 8 << 30
+TIME_LIMIT = 120
+
+
+def times_source(times, speed=0.1):
+    """A programmable image source with the given TIME_STEPS (in any order)."""
+    source = ProgrammableSource(OutputDataSetType="vtkImageData")
+    source.ScriptRequestInformation = (
+        "from paraview import util\n"
+        "util.SetOutputWholeExtent(self, [0, 8, 0, 8, 0, 8])\n"
+        "info = self.GetOutputInformation(0)\n"
+        "from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as S\n"
+        "info.Set(S.TIME_STEPS(), %r, %d)\n" % (list(times), len(times)))
+    source.Script = (
+        "import numpy\n"
+        "out = self.GetOutput()\n"
+        "out.SetExtent(0, 8, 0, 8, 0, 8)\n"
+        "out.SetSpacing(0.1, 0.1, 0.1)\n"
+        "from vtkmodules.util.numpy_support import numpy_to_vtk\n"
+        "v = numpy_to_vtk(numpy.tile([%r, 0.5 * %r, 0.0], (729, 1)), deep=True)\n"
+        "v.SetName('v')\n"
+        "out.GetPointData().AddArray(v)\n" % (speed, speed))
+    return source
+
+
+def scaled_flow(factor):
+    """An ABC flow whose velocity is multiplied by `factor` (wrong byte order, units)."""
+    return Calculator(Input=AnalyticFlow(Flow="ABC", Resolution=[16, 16, 16]),
+                      Function="velocity*%r" % factor, ResultArrayName="v")
+
+
+def int64_flow():
+    """An ABC flow's velocity as int64 values of 2^62."""
+    f = ProgrammableFilter(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 12, 12]),
+                           OutputDataSetType="vtkImageData")
+    f.Script = ("import numpy\n"
+                "from vtkmodules.util.numpy_support import numpy_to_vtk\n"
+                "out = self.GetOutput(); out.ShallowCopy(self.GetInput())\n"
+                "n = out.GetNumberOfPoints()\n"
+                "a = numpy_to_vtk(numpy.full((n, 3), 2**62, dtype=numpy.int64), deep=True)\n"
+                "a.SetName('v')\n"
+                "out.GetPointData().AddArray(a)\n")
+    return f
+
+
+def wrapped_template():
+    """A triangle whose second point id is 2^32 + 1 (it used to wrap to 1)."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkCommonCore import vtkPoints\n"
+        "from vtkmodules.vtkCommonDataModel import vtkCellArray\n"
+        "p = vtkPoints()\n"
+        "for x in ((0, 0, 0), (1, 0, 0), (0, 1, 0)): p.InsertNextPoint(x)\n"
+        "c = vtkCellArray(); c.InsertNextCell(3)\n"
+        "for i in (0, 2**32 + 1, 2): c.InsertCellPoint(i)\n"
+        "out = self.GetOutput(); out.SetPoints(p); out.SetPolys(c)\n")
+    return source
+
+
+def polygon(sides):
+    """A regular polygon as one cell: fanned, its first corner has a spring to every other."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkFiltersSources import vtkRegularPolygonSource\n"
+        "p = vtkRegularPolygonSource(); p.SetNumberOfSides(%d); p.GeneratePolylineOff()\n"
+        "p.Update(); self.GetOutput().ShallowCopy(p.GetOutput())\n" % sides)
+    return source
+
+
+def overflowing_bpvol():
+    """A .bpvol whose dimensions multiply to 2^64 points, with an empty data file."""
+    folder = args.scratch or tempfile.mkdtemp()
+    with open(os.path.join(folder, "empty.raw"), "wb"):
+        pass
+    path = os.path.join(folder, "overflow.bpvol")
+    with open(path, "w") as f:
+        json.dump({"dimensions": [2097152, 2097152, 4194304], "scalar_type": "float32",
+                   "byte_order": "little", "files": ["empty.raw"]}, f)
+    return OpenDataFile(path)
+
+
+def tracer(input_proxy, **properties):
+    properties.setdefault("NumberOfElements", 200)
+    return BoundParticleTracer(Input=input_proxy, **properties)
+
+
+def flow(**properties):
+    properties.setdefault("Resolution", [16, 16, 16])
+    return AnalyticFlow(**properties)
+
+
+def gpu_display(template_points):
+    """The Bound Particles display with the GPU engine and a sphere of about
+    `template_points` points as the element."""
+    phi = int(math.sqrt(template_points / 2))
+    sphere = Sphere(ThetaResolution=2 * phi, PhiResolution=phi)
+    return tracer(flow(Flow="ABC"), NumberOfElements=10, Engine="GPU",
+                  TemplateSprings="Edges", ElementTemplate=sphere), "Bound Particles"
+
+
+# name: (what to build, time, the word a refusal must contain or None where the
+# input is valid and must trace with finite output)
+CASES = {
+    "unsorted times": (lambda: tracer(times_source([0, 2, 1, 3]), Vectors=["POINTS", "v"]),
+                       1.0, "out of order"),
+    "duplicate times": (lambda: tracer(times_source([0, 1, 1, 2]), Vectors=["POINTS", "v"]),
+                        1.0, "duplicate"),
+    "NaN time": (lambda: tracer(times_source([0, float("nan"), 2]), Vectors=["POINTS", "v"]),
+                 1.0, "finite"),
+    "infinite time": (lambda: tracer(times_source([0, 1, float("inf")]),
+                                     Vectors=["POINTS", "v"]), 1.0, "finite"),
+    "infinite view time": (lambda: tracer(flow()), float("inf"), None),
+    "multiblock of unsteady images": (
+        lambda: tracer(GroupDatasets(
+            Input=[flow(Flow="Double Gyre"), flow(Flow="Double Gyre")])), 1.0, "composite"),
+    "multiblock of steady images": (
+        lambda: tracer(GroupDatasets(
+            Input=[flow(), flow()])), 1.0, "composite"),
+    "resolution 4096^3": (lambda: tracer(flow(Resolution=[4096, 4096, 4096])), 1.0,
+                          "Resolution"),
+    "all pairs on 20k points": (
+        lambda: tracer(flow(), NumberOfElements=2, TemplateSprings="All Pairs",
+                       ElementTemplate=Sphere(
+                           ThetaResolution=200, PhiResolution=100)), 1.0, "All Pairs"),
+    "2^26 point elements": (lambda: tracer(flow(), ElementShape="Point",
+                                           NumberOfElements=1 << 26), 1.0, "GiB"),
+    "fast field (wrong byte order)": (lambda: tracer(scaled_flow(4.3e8), Vectors=["POINTS", "v"]),
+                                      1.0, "steps"),
+    "int64 values of 2^62": (lambda: tracer(int64_flow(), Vectors=["POINTS", "v"]), 1.0,
+                             "byte order"),
+    "step size 1e-12": (lambda: tracer(flow(), StepSizeUnit="Time", StepSize=1e-12), 1.0,
+                        "steps"),
+    "duration 1e12": (lambda: tracer(flow(), Duration=1e12), 1e12, "steps"),
+    "speed 1e20": (lambda: tracer(scaled_flow(1e20), Vectors=["POINTS", "v"]), 1.0,
+                   "byte order"),
+    "speed 1e30": (lambda: tracer(scaled_flow(1e30), Vectors=["POINTS", "v"]), 1.0,
+                   "byte order"),
+    "spacing 1e-300": (lambda: tracer(flow(Bounds=[0, 1e-298, 0, 1e-298, 0, 1e-298])), 1e-298,
+                       "rescale"),
+    "coordinate 1e300": (lambda: tracer(flow(Bounds=[0, 1e300, 0, 1, 0, 1])), 1.0, "rescale"),
+    "duration 1e-300": (lambda: tracer(flow(), Duration=1e-300), 1e-300, "time span"),
+    "100-gon at relaxation 0.2": (
+        lambda: tracer(flow(), Restoration="Jacobi", RelaxationFactor=0.2,
+                       ElementTemplate=polygon(100)), 2.0, None),
+    "paddlewheel at relaxation 1": (lambda: tracer(flow(), ElementShape="Paddlewheel",
+                                                   Restoration="Jacobi",
+                                                   RelaxationFactor=1.0), 2.0, None),
+    "fish at relaxation 1.5": (lambda: tracer(flow(), ElementShape="Fish", Restoration="Jacobi",
+                                              RelaxationFactor=1.5), 2.0, None),
+    "cross at relaxation 1.5": (lambda: tracer(flow(), ElementShape="Cross", Restoration="Jacobi",
+                                               RelaxationFactor=1.5), 2.0, None),
+    "emitter outside the field": (lambda: tracer(flow(), EmitterCenter=[50, 50, 50],
+                                                 EmitterSize=[0.1, 0.1, 0.1]), 1.0, "outside"),
+    "template id beyond 32 bits": (lambda: tracer(flow(), ElementTemplate=wrapped_template()), 1.0,
+                                   "uses point"),
+    ".bpvol dimensions overflowing 64 bits": (lambda: tracer(overflowing_bpvol()), 0.0,
+                                              "dimensions"),
+    "GPU template of 20k points": (lambda: gpu_display(20000), 1.0, "GL_MAX_TEXTURE_SIZE"),
+    "GPU template of 200k points": (lambda: gpu_display(200000), 1.0, "GL_MAX_TEXTURE_SIZE"),
+    "GPU template of 2k points": (lambda: gpu_display(2000), 1.0, None),
+}
+
+
+def run_case(name):
+    """Builds the case, updates it (drawing it where it names a display), and
+    prints RESULT with the messages and whether the output is finite."""
+    from paraview import servermanager
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy
+    LoadPlugin(args.plugin, ns=globals())
+    build, t, _ = CASES[name]
+    with bptest.CapturedMessages() as log:
+        made = build()
+        proxy, display = made if isinstance(made, tuple) else (made, None)
+        if display:
+            view = CreateRenderView()
+            view.ViewSize = [200, 150]
+            shown = Show(proxy, view)
+            shown.SetRepresentationType(display)
+            view.ViewTime = t
+            Render(view)
+        proxy.UpdatePipeline(t)
+        data = servermanager.Fetch(proxy)
+        if display:
+            # pvpython crashes at exit with a view left alive (without this plugin too).
+            Delete(shown)
+            Delete(view)
+            del view
+    points = data.GetNumberOfPoints() if data else 0
+    finite = True
+    if points:
+        finite = bool(numpy.isfinite(vtk_to_numpy(data.GetPoints().GetData())).all())
+        pd = data.GetPointData()
+        for k in range(pd.GetNumberOfArrays()):
+            a = pd.GetArray(k)
+            if a is not None:
+                finite = finite and bool(numpy.isfinite(vtk_to_numpy(a)).all())
+    print("RESULT " + json.dumps({"points": points, "finite": finite, "messages": log.messages}))
+
+
+if args.case:
+    # The builders above name paraview.simple's functions and the plugin's proxies.
+    from paraview.simple import *  # noqa: F401,F403
+    LoadPlugin(args.plugin, ns=globals())
+    run_case(args.case)
+    sys.exit(0)
+
+
+def limit_address_space():
+    resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_LIMIT, ADDRESS_LIMIT))
+
+
+scratch = tempfile.mkdtemp(prefix="bp-hostile-")
+for name, (_, _, refusal) in CASES.items():
+    started = time.time()
+    process = subprocess.Popen(
+        [args.pvpython, os.path.abspath(__file__), "--plugin", args.plugin, "--case", name,
+         "--scratch", scratch],
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        preexec_fn=limit_address_space, start_new_session=True)
+    try:
+        out, _ = process.communicate(timeout=TIME_LIMIT)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, _ = process.communicate()
+    seconds = time.time() - started
+    result = None
+    for line in out.splitlines():
+        if line.startswith("RESULT "):
+            result = json.loads(line[len("RESULT "):])
+    status = process.returncode
+    print("%-40s exit %s, %.1f s, %s" % (name, status, seconds,
+                                         "no result" if result is None else
+                                         "%d points, %d message(s)" % (result["points"],
+                                                                       len(result["messages"]))))
+    if status != 0 or result is None:
+        print(out[-2500:])
+    bptest.check(status == 0, "%s: exited with %s%s" % (
+        name, status, " (signal %d)" % -status if status is not None and status < 0 else ""))
+    bptest.check(seconds < TIME_LIMIT, "%s: ran past %d s" % (name, TIME_LIMIT))
+    if result is None:
+        bptest.check(False, "%s: printed no result" % name)
+        continue
+    bptest.check(result["finite"], "%s: the output holds non-finite values" % name)
+    said = " | ".join(result["messages"])
+    if refusal:
+        bptest.check(refusal in said, "%s: refused without naming '%s' (messages: %s)" %
+                     (name, refusal, said[:300] or "none"))
+        print("    " + (result["messages"] or ["(no message)"])[-1][-240:].strip())
+    else:
+        bptest.check(result["points"] > 0, "%s: traced nothing (messages: %s)" %
+                     (name, said[:300] or "none"))
+bptest.finish()
