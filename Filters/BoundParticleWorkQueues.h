@@ -7,7 +7,8 @@
  * request (vtkBoundParticleTracer::GPU_WORK_QUEUE); the tracer finds the
  * queue by that id and records its engine calls into it (Core/WorkQueue.h).
  * Kept in the Filters module so that every library of the plugin sees the
- * same registry; it holds queues weakly, so a queue lives as long as its
+ * same registry. The registry holds queues weakly (a tracer holds the one it
+ * records into until its next update), so a queue lives about as long as its
  * display.
  */
 #ifndef BoundParticleWorkQueues_h

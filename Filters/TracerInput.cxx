@@ -205,13 +205,13 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
              "Particle Tracer needs an axis-aligned grid. Resample it with Resample To Image.";
     }
     // Point 0 of an image lies at origin + extent_min * spacing (e.g. after Extract Subset).
-    const int* extent = image->GetExtent();
+    const int* imageExtent = image->GetExtent();
     image->GetDimensions(g.dims.data());
     image->GetOrigin(g.origin.data());
     image->GetSpacing(g.spacing.data());
     for (int a = 0; a < 3; ++a)
     {
-      g.origin[a] += extent[2 * a] * g.spacing[a];
+      g.origin[a] += imageExtent[2 * a] * g.spacing[a];
     }
   }
   else

@@ -6,7 +6,8 @@
  * When the pipeline asks for one of as many pieces as there are processes,
  * each process asks its input for one block of the image extent (the
  * vtkExtentTranslator's block split) with ghost layers, owns the elements
- * whose centres lie in its block, and after each step hands elements to the
+ * whose centres lie in its block, and in each step (after resets, before
+ * advection) hands elements to the
  * process that owns their new centre (bp::DistributedStepper, through the
  * global vtkMultiProcessController). Otherwise piece 0 traces the whole field
  * and other pieces are empty.

@@ -50,7 +50,7 @@ public:
    */
   std::string fallBackIfTooLarge(const bp::ElementTemplate& shape, const bp::Parameters& p);
 
-  /// Forgets the active trace (after a failure, an abort or a change).
+  /// Forgets every stepper's trace and any pending GPU work.
   void invalidate();
 
   /// The distributed stepper (valid while the pieces are distributed).

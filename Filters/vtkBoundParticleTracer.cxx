@@ -151,9 +151,7 @@ int vtkBoundParticleTracer::RequestInformation(
 
   // The pipeline asks for information again only when this filter or
   // something upstream changed: the trace is stale.
-  I.invalidate();
-  I.clear();
-  I.LastRequested = -1;
+  I.forgetTrace();
   std::vector<double> inputTimes;
   if (inInfo->Has(SDDP::TIME_STEPS()))
   {
@@ -186,9 +184,7 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   if (I.Layout.takeRequest(outInfo))
   {
     // A change of pieces is a change of input: replay.
-    I.invalidate();
-    I.clear();
-    I.LastRequested = -1;
+    I.forgetTrace();
   }
   I.Layout.requestInput(inInfo);
   if (!I.Continuing && I.Plan.hasTimes())
@@ -233,8 +229,7 @@ int vtkBoundParticleTracer::RequestData(
       << " elements; use fewer elements or a smaller template, or close other data.");
   }
   vtkInternals& I = *this->Internals;
-  I.clear();
-  I.invalidate();
+  I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
   vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
   return 1;
@@ -263,8 +258,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
     {
       vtkErrorMacro(<< pass.message);
     }
-    I.clear();
-    I.invalidate();
+    I.endFailedUpdate();
     request->Remove(SDDP::CONTINUE_EXECUTING());
     output->Initialize();
     return 1;
@@ -303,8 +297,8 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   }
   I.Continuing = false;
   request->Remove(SDDP::CONTINUE_EXECUTING());
-  I.show(this, output);
-  return 1;
+  const Pass shown = I.show(this, output);
+  return shown.kind == Pass::Done ? 1 : end(shown);
 }
 
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)

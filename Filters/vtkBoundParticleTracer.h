@@ -8,7 +8,8 @@
  * ElementSize, placed in the emitter box, advected with the flow and restored
  * to its shape every step (docs/engine-specification.md; the maths lives in
  * the VTK-free core, Core/Engine.h). The output is a vtkPolyData of all
- * particles: the shape's triangles per element, or vertices for one-particle
+ * particles: the shape's triangles per element (its springs as lines where it
+ * has no triangles, a super set's links as lines too), or vertices for one-particle
  * elements, with the point arrays of Core/OutputArrays.h (Normals, Velocity,
  * Speed, Force, Lifetime, ElementId, ParticleIndex, Vorticity, Layer, Radius).
  *
@@ -25,7 +26,8 @@
  *
  * In parallel (pvbatch, pvserver under MPI) each process asks its input for
  * one block of the grid with ghost layers, owns the elements whose centres lie
- * in its block and outputs those; after each step elements move to the
+ * in its block and outputs those; in each step, after resets and before
+ * advection, elements move to the
  * process that owns their new centre through the global
  * vtkMultiProcessController (Core/Partition.h). Draws hash global element ids,
  * so the set of elements does not depend on the number of processes.
@@ -293,7 +295,8 @@ public:
    * the filter then records the engine calls into that queue instead of
    * making them, and outputs no particles: only the field data
    * BoundParticlesWorkQueue (the queue's id), TimeStep, ElementSize and
-   * SimulationTime, and empty point arrays named like the CPU output's. Any
+   * SimulationTime, and two points spanning the field carrying every array of
+   * the CPU output at the range it is expected to span (Core/OutputArrays.h). Any
    * other value (0, or no key) gets the CPU result; the key's value is part of
    * what makes the output up to date, so the two never mix.
    */

@@ -53,6 +53,19 @@ void vtkBoundParticleTracer::vtkInternals::clear()
   this->Continuing = false;
 }
 
+void vtkBoundParticleTracer::vtkInternals::forgetTrace()
+{
+  this->invalidate();
+  this->clear();
+  this->LastRequested = -1;
+}
+
+void vtkBoundParticleTracer::vtkInternals::endFailedUpdate()
+{
+  this->clear();
+  this->invalidate();
+}
+
 void vtkBoundParticleTracer::vtkInternals::decide(
   vtkBoundParticleTracer* self, vtkInformation* outInfo)
 {
@@ -234,6 +247,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   {
     return Pass::need(missing);
   }
+  if (this->Layout.distributed() && self->Linking != NO_LINKING)
+  {
+    return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
+      std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
+  }
   const bp::VectorField field = this->Cache.field(this->Grid, ids);
   const bp::FieldFacts facts = this->fieldFacts(field);
   const bp::Resolution resolved = bp::resolveSettings(self->Settings(), facts);
@@ -261,12 +279,19 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
       this->Cache.clear();
       return Pass::need(ids.front());
     }
-    if (self->Linking != NO_LINKING)
-    {
-      return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
-        std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
-    }
   }
+  const Pass configured = this->configureStepper(self, inputVector, field, resolved);
+  if (configured.kind == Pass::Done)
+  {
+    this->startTrace();
+  }
+  return configured;
+}
+
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, const bp::VectorField& field,
+  const bp::Resolution& resolved)
+{
   bp::ElementTemplate shape;
   const std::string templateError = this->elementTemplate(self, inputVector, shape);
   if (!templateError.empty())
@@ -303,12 +328,12 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
     vtkErrorWithObjectMacro(self, << fallback);
   }
   bp::Stepper& stepper = this->stepper();
-  const std::string error = stepper.configure(shape, p);
+  std::string error = stepper.configure(shape, p);
+  error = error.empty() ? stepper.setField(field) : error;
   if (!error.empty())
   {
     return Pass::fail(error + ".");
   }
-  stepper.setField(field);
   if (this->Layout.distributed())
   {
     this->Steppers.distributed().setPieces(
@@ -323,7 +348,6 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
     this->RangeFacts = bp::rangeFactsOf(field, p, resolved.dt, self->ColoringAxis, this->Offset,
       this->Grid.bounds(), shape.particleCount());
   }
-  this->startTrace();
   return Pass();
 }
 
@@ -378,7 +402,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
     const double intervalEnd = ids.size() == 2 ? this->Plan.inputTimes()[ids[1]] : target;
     const double limit = std::min(target, intervalEnd);
     const double before = committed;
-    stepper.setField(this->Cache.field(this->Grid, ids));
+    const std::string fieldError = stepper.setField(this->Cache.field(this->Grid, ids));
+    if (!fieldError.empty())
+    {
+      return Pass::fail(fieldError + ".");
+    }
     committed = bp::advance(
       *this->Schedule, committed, limit, [&](double t, double h) { stepper.step(t, h); },
       keepGoing);
@@ -422,7 +450,8 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::readAhead()
   return Pass();
 }
 
-void vtkBoundParticleTracer::vtkInternals::show(vtkBoundParticleTracer* self, vtkPolyData* output)
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::show(
+  vtkBoundParticleTracer* self, vtkPolyData* output)
 {
   // The output at the target: the committed state, finished with a shorter
   // step that the next update takes back, so the trace stays on the step
@@ -430,7 +459,11 @@ void vtkBoundParticleTracer::vtkInternals::show(vtkBoundParticleTracer* self, vt
   bp::Stepper& stepper = this->stepper();
   const double target = this->target();
   const bp::VectorField field = this->Cache.field(this->Grid, this->Plan.intervalAt(target, false));
-  stepper.setField(field);
+  const std::string fieldError = stepper.setField(field);
+  if (!fieldError.empty())
+  {
+    return Pass::fail(fieldError + ".");
+  }
   const double committed = stepper.cursor.committed;
   if (target - committed > this->Schedule->epsilon())
   {
@@ -476,12 +509,13 @@ void vtkBoundParticleTracer::vtkInternals::show(vtkBoundParticleTracer* self, vt
   }
   else
   {
-    this->fillDisplayOutput(self, output);
+    this->handToDisplay(self, output);
   }
   this->addSettingsFieldData(output);
+  return Pass();
 }
 
-void vtkBoundParticleTracer::vtkInternals::fillDisplayOutput(
+void vtkBoundParticleTracer::vtkInternals::handToDisplay(
   vtkBoundParticleTracer* self, vtkPolyData* output)
 {
   bp::WorkQueue& queue = *this->Steppers.queue();

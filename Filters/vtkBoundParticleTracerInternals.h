@@ -106,22 +106,36 @@ struct vtkBoundParticleTracer::vtkInternals
   bp::Stepper& stepper() { return this->Steppers.active(); }
   double target() const { return this->Decision.target; }
 
-  /// Forgets every trace (after a failure, an abort or a change).
-  void invalidate();
-  /// Forgets the held time steps too.
-  void clear();
+  /// After a change of the filter, its input or the pieces: every trace and
+  /// held time step is stale, and upstream holds nothing known.
+  void forgetTrace();
+  /// After a failed or aborted update: the trace and the held time steps
+  /// are dropped, so the next update replays from what upstream gives.
+  void endFailedUpdate();
 
-  /// The decision for a request (RequestUpdateExtent).
+  /// The decision for a request (RequestUpdateExtent): picks the stepper
+  /// for this request, then replay or continue and the first time step.
   void decide(vtkBoundParticleTracer* self, vtkInformation* outInfo);
 
   void begin(vtkBoundParticleTracer* self);
   std::string takeTimeStep(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
+  /// Resolves the settings from the start's field, then configures the stepper.
   Pass replay(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
   Pass stepToTarget(vtkBoundParticleTracer* self);
   Pass readAhead();
-  void show(vtkBoundParticleTracer* self, vtkPolyData* output);
+  /// Steps the short last step to the target (taken back at the next
+  /// update; collective in parallel, as every step), then builds the output.
+  Pass show(vtkBoundParticleTracer* self, vtkPolyData* output);
 
 private:
+  /// Forgets every trace: each stepper's cursor, and pending GPU work.
+  void invalidate();
+  /// Drops the active trace and the held time steps.
+  void clear();
+  /// The stepper set up for a new trace: the template, its checks (engine,
+  /// memory, stable relaxation, the GPU's limits), configure, field, placement.
+  Pass configureStepper(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
+    const bp::VectorField& field, const bp::Resolution& resolved);
   /// The grid check and the cache insert for a time step just read.
   std::string keepTimeStep(
     bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);
@@ -133,7 +147,10 @@ private:
   /// Points the stepper at the start of a new trace.
   void startTrace();
   void addSettingsFieldData(vtkPolyData* output);
-  void fillDisplayOutput(vtkBoundParticleTracer* self, vtkPolyData* output);
+  /// For a GPU display: hands it the draw settings (a new serial: the
+  /// display samples the field again), and fills the output with the
+  /// arrays' expected ranges on two points spanning the field.
+  void handToDisplay(vtkBoundParticleTracer* self, vtkPolyData* output);
 };
 
 #endif

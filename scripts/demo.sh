@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs and builds if needed, then traces bound particles through
-# the built-in hurricane-like flow and writes bound-particles.png and
-# bound-particles.vtp to the folder given (default: demo-output/).
+# the built-in hurricane-like flow and writes bound-particles.png,
+# bound-particles-gpu.png and bound-particles.vtp to the folder given
+# (default: demo-output/).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$(realpath -m "${1:-$root/demo-output}")"
