@@ -424,6 +424,8 @@ int vtkRawVectorVolumeSeriesReader::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   const int extent[6] = { 0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  // Any block of the volume (a parallel run's pieces with their ghost layers).
+  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
   if (s.zCoordinates.empty())
   {
     outInfo->Set(vtkDataObject::ORIGIN(), s.origin.data(), 3);
@@ -470,9 +472,20 @@ int vtkRawVectorVolumeSeriesReader::RequestData(
       0, s.stepAtOrBefore(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())));
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), s.times[std::size_t(step)]);
 
-  // The whole volume is one piece: in a parallel run, piece 0 holds it.
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  // The block asked for (the whole volume unless a parallel run asks for its
+  // piece with ghost layers), within the volume; none at all is an empty output.
+  int block[6] = { 0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1 };
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    int asked[6];
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), asked);
+    for (int a = 0; a < 3; ++a)
+    {
+      block[2 * a] = std::max(block[2 * a], asked[2 * a]);
+      block[2 * a + 1] = std::min(block[2 * a + 1], asked[2 * a + 1]);
+    }
+  }
+  if (block[0] > block[1] || block[2] > block[3] || block[4] > block[5])
     return 1;
 
   I.Reader->setReadAhead(this->ReadAhead != 0);
@@ -485,24 +498,23 @@ int vtkRawVectorVolumeSeriesReader::RequestData(
     return 1;
   }
 
-  const vtkIdType n = static_cast<vtkIdType>(s.numberOfPoints());
   if (vtkImageData* image = vtkImageData::SafeDownCast(output))
   {
-    image->SetExtent(0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1);
+    image->SetExtent(block);
     image->SetOrigin(s.origin.data());
     image->SetSpacing(s.spacing.data());
   }
   else if (vtkRectilinearGrid* grid = vtkRectilinearGrid::SafeDownCast(output))
   {
-    grid->SetExtent(0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1);
+    grid->SetExtent(block);
     vtkSmartPointer<vtkDoubleArray> axes[3];
     for (int a = 0; a < 3; ++a)
     {
       axes[a] = vtkSmartPointer<vtkDoubleArray>::New();
-      axes[a]->SetNumberOfTuples(s.dims[a]);
-      for (int i = 0; i < s.dims[a]; ++i)
-        axes[a]->SetValue(
-          i, a == 2 ? s.zCoordinates[std::size_t(i)] : s.origin[a] + i * s.spacing[a]);
+      axes[a]->SetNumberOfTuples(block[2 * a + 1] - block[2 * a] + 1);
+      for (int i = block[2 * a]; i <= block[2 * a + 1]; ++i)
+        axes[a]->SetValue(i - block[2 * a],
+          a == 2 ? s.zCoordinates[std::size_t(i)] : s.origin[a] + i * s.spacing[a]);
     }
     grid->SetXCoordinates(axes[0]);
     grid->SetYCoordinates(axes[1]);
@@ -514,11 +526,23 @@ int vtkRawVectorVolumeSeriesReader::RequestData(
     return 0;
   }
 
+  // The block's rows of the volume (x fastest, as the file and VTK store them).
+  const vtkIdType nx = block[1] - block[0] + 1, ny = block[3] - block[2] + 1,
+                  nz = block[5] - block[4] + 1;
   vtkNew<vtkFloatArray> vectors;
   vectors->SetName(s.arrayName.c_str());
   vectors->SetNumberOfComponents(3);
-  vectors->SetNumberOfTuples(n);
-  std::copy(values.begin(), values.end(), vectors->GetPointer(0));
+  vectors->SetNumberOfTuples(nx * ny * nz);
+  float* out = vectors->GetPointer(0);
+  for (vtkIdType k = 0; k < nz; ++k)
+    for (vtkIdType j = 0; j < ny; ++j)
+    {
+      const std::size_t row =
+        (std::size_t(block[4] + k) * std::size_t(s.dims[1]) + std::size_t(block[2] + j)) *
+          std::size_t(s.dims[0]) +
+        std::size_t(block[0]);
+      out = std::copy_n(values.begin() + std::ptrdiff_t(3 * row), 3 * nx, out);
+    }
   output->GetPointData()->SetVectors(vectors);
   return 1;
 }

@@ -21,6 +21,7 @@ parser.add_argument("--output", required=True)
 parser.add_argument("--connect", help="host:port of a pvserver")
 parser.add_argument("--render", help="write a picture per remote-render threshold here")
 parser.add_argument("--rectilinear", help="a .vtr vector field with stretched z layers to trace")
+parser.add_argument("--bpvol", help="the same field as a raw volume series (.bpvol)")
 parser.add_argument("--data", help="the shared real data sets' folder (read in place)")
 args = parser.parse_args()
 
@@ -76,6 +77,12 @@ def placement_traces():
         cases["rectilinear"] = (BoundParticleTracer(
             Input=grid, ElementShape="Cross", NumberOfElements=500, Seed=8, Duration=1.0,
             NumberOfTimeSteps=6, Vectors=["POINTS", "velocity"]), [0.6, 1.0])
+    if args.bpvol:
+        series = OpenDataFile(args.bpvol)
+        series.UpdatePipeline()
+        cases["bpvol"] = (BoundParticleTracer(
+            Input=series, ElementShape="Cross", NumberOfElements=500, Seed=8, Duration=1.0,
+            NumberOfTimeSteps=6), [0.6, 1.0])
     if args.data:
         carotid = XMLImageDataReader(FileName=[os.path.join(args.data, "carotid.vti")])
         carotid.UpdatePipeline()

@@ -10,6 +10,7 @@ the Bound Particles display draws the same picture when the ranks' images are
 composited, with remote rendering on and off.
 """
 import argparse
+import json
 import os
 import signal
 import socket
@@ -110,14 +111,23 @@ def write_rectilinear(path):
     array.SetName("velocity")
     grid.GetPointData().SetVectors(array)
     writer = vtkXMLRectilinearGridWriter()
-    writer.SetFileName(path)
+    writer.SetFileName(path + ".vtr")
     writer.SetInputData(grid)
     writer.Write()
+    # The same field as a raw volume series with its z layers listed.
+    velocity.astype("<f4").tofile(path + ".raw")
+    spacing = [float(a[1] - a[0]) for a in axes[:2]] + [1.0]
+    with open(path + ".bpvol", "w") as f:
+        json.dump({"dimensions": [len(a) for a in axes], "origin": [axes[0][0], axes[1][0], 0.0],
+                   "spacing": spacing, "z_coordinates": [float(z) for z in axes[2]],
+                   "scalar_type": "float32", "byte_order": "little", "times": [0.0],
+                   "files": [os.path.basename(path) + ".raw"]}, f)
 
 
-rectilinear = os.path.join(args.output, "stretched.vtr")
-write_rectilinear(rectilinear)
-inputs = ["--rectilinear", rectilinear] + (["--data", args.data] if args.data else [])
+stretched = os.path.join(args.output, "stretched")
+write_rectilinear(stretched)
+inputs = ["--rectilinear", stretched + ".vtr", "--bpvol", stretched + ".bpvol"] + (
+    ["--data", args.data] if args.data else [])
 
 
 def trace(name, launcher, extra=()):
