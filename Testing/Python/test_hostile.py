@@ -240,7 +240,8 @@ def limit_address_space():
     resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_LIMIT, ADDRESS_LIMIT))
 
 
-scratch = tempfile.mkdtemp(prefix="bp-hostile-")
+scratch_folder = tempfile.TemporaryDirectory(prefix="bp-hostile-")
+scratch = scratch_folder.name
 for name, (_, _, refusal) in CASES.items():
     started = time.time()
     process = subprocess.Popen(
@@ -280,4 +281,5 @@ for name, (_, _, refusal) in CASES.items():
     else:
         bptest.check(result["points"] > 0, "%s: traced nothing (messages: %s)" %
                      (name, said[:300] or "none"))
+scratch_folder.cleanup()
 bptest.finish()
