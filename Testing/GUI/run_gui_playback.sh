@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Plays a recorded GUI test (ParaView's XML events and checks) in the ParaView
+# GUI under Xvfb, with the plugin on PV_PLUGIN_PATH: usage
+#   run_gui_playback.sh PLUGIN_DIR DATA_DIR TEST.xml
+# An event on a widget that does not exist, or a failed check, makes ParaView
+# exit non-zero, and so this script.
+set -u
+plugin_dir="$1"
+data_dir="$2"
+script="$3"
+export PV_PLUGIN_PATH="$plugin_dir"
+# A fresh settings folder keeps the user's ParaView settings out of the test.
+export HOME="$(mktemp -d)"
+trap 'rm -rf "$HOME"' EXIT
+timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
+  paraview --dr --data-directory="$data_dir" --test-directory="$HOME" \
+  --test-script="$script" --exit
