@@ -3,9 +3,9 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkPVDataInformation.h"
-#include "vtkSMSourceProxy.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMSourceProxy.h"
 
 #include <QAbstractButton>
 

@@ -2,6 +2,7 @@
 # Plays a recorded GUI test (ParaView's XML events and checks) in the ParaView
 # GUI under Xvfb, with the plugin on PV_PLUGIN_PATH: usage
 #   run_gui_playback.sh PLUGIN_DIR DATA_DIR TEST.xml
+# ($PARAVIEW_DATA_ROOT in the events is DATA_DIR.)
 # An event on a widget that does not exist, or a failed check, makes ParaView
 # exit non-zero, and so this script.
 set -u

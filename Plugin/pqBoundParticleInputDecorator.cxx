@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "pqBoundParticleInputDecorator.h"
+
+#include "pqActiveObjects.h"
+#include "pqCoreUtilities.h"
+#include "pqPropertyWidget.h"
+#include "vtkCommand.h"
+#include "vtkPVDataInformation.h"
+#include "vtkPVXMLElement.h"
+#include "vtkSMProperty.h"
+#include "vtkSMProxy.h"
+#include "vtkSMSourceProxy.h"
+#include "vtkSMUncheckedPropertyHelper.h"
+
+#include <cstring>
+
+pqBoundParticleInputDecorator::pqBoundParticleInputDecorator(
+  vtkPVXMLElement* config, pqPropertyWidget* parent)
+  : Superclass(config, parent)
+{
+  const char* name = config->GetAttributeOrDefault("input", "Input");
+  vtkSMProxy* proxy = parent->proxy();
+  this->Input = proxy ? proxy->GetProperty(name) : nullptr;
+  if (this->Input)
+  {
+    // Connecting or changing the input: look again (signal to signal).
+    this->Observers[0] = pqCoreUtilities::connect(
+      this->Input, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(visibilityChanged()));
+    this->Observers[1] = pqCoreUtilities::connect(
+      this->Input, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(enableStateChanged()));
+  }
+  // An input's time steps are known once it has updated (after Apply).
+  QObject::connect(&pqActiveObjects::instance(), &pqActiveObjects::dataUpdated, this,
+    [this] { this->inputChanged(); });
+}
+
+pqBoundParticleInputDecorator::~pqBoundParticleInputDecorator()
+{
+  for (unsigned long observer : this->Observers)
+  {
+    if (this->Input && observer)
+    {
+      this->Input->RemoveObserver(observer);
+    }
+  }
+}
+
+void pqBoundParticleInputDecorator::inputChanged()
+{
+  Q_EMIT this->visibilityChanged();
+  Q_EMIT this->enableStateChanged();
+}
+
+bool pqBoundParticleInputDecorator::actsAs(const char* mode) const
+{
+  const char* configured = this->xml()->GetAttribute("mode");
+  return configured && std::strcmp(configured, mode) == 0;
+}
+
+bool pqBoundParticleInputDecorator::conditionHolds() const
+{
+  if (!this->Input)
+  {
+    return true;
+  }
+  vtkSMUncheckedPropertyHelper input(this->Input);
+  auto* source = vtkSMSourceProxy::SafeDownCast(input.GetAsProxy());
+  const std::string when = this->xml()->GetAttributeOrDefault("when", "");
+  if (when == "connected" || when == "unconnected")
+  {
+    return (source != nullptr) == (when == "connected");
+  }
+  if (when == "steady" || when == "unsteady")
+  {
+    // Before the input has data its time steps are unknown: show and enable.
+    vtkPVDataInformation* info =
+      source ? source->GetDataInformation(input.GetOutputPort()) : nullptr;
+    if (!info || info->GetNumberOfPoints() == 0)
+    {
+      return true;
+    }
+    return (info->GetNumberOfTimeSteps() >= 2) == (when == "unsteady");
+  }
+  return true;
+}
+
+bool pqBoundParticleInputDecorator::canShowWidget(bool showAdvanced) const
+{
+  if (this->actsAs("visibility") && !this->conditionHolds())
+  {
+    return false;
+  }
+  return this->Superclass::canShowWidget(showAdvanced);
+}
+
+bool pqBoundParticleInputDecorator::enableWidget() const
+{
+  if (this->actsAs("enabled_state") && !this->conditionHolds())
+  {
+    return false;
+  }
+  return this->Superclass::enableWidget();
+}

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class pqBoundParticleInputDecorator
+ * @brief Shows or enables a tracer property by what its inputs are.
+ *
+ * XML: `<PropertyWidgetDecorator type="BoundParticleInputDecorator"
+ * input="Input" when="steady" mode="visibility"/>`, where `input` names an
+ * input property of the proxy and `when` is one of
+ *  - `steady` / `unsteady`: that input has fewer than two / at least two time steps;
+ *  - `connected` / `unconnected`: that input is connected / not.
+ * `mode` is `visibility` (hide the widget otherwise) or `enabled_state`
+ * (grey it out otherwise). So Duration shows only for a steady field, and
+ * Element Shape greys out once an Element Template is connected.
+ */
+#ifndef pqBoundParticleInputDecorator_h
+#define pqBoundParticleInputDecorator_h
+
+#include "pqPropertyWidgetDecorator.h"
+
+#include "vtkWeakPointer.h"
+
+class vtkSMProperty;
+
+class pqBoundParticleInputDecorator : public pqPropertyWidgetDecorator
+{
+  typedef pqPropertyWidgetDecorator Superclass;
+
+public:
+  pqBoundParticleInputDecorator(vtkPVXMLElement* config, pqPropertyWidget* parent);
+  ~pqBoundParticleInputDecorator() override;
+
+  bool canShowWidget(bool showAdvanced) const override;
+  bool enableWidget() const override;
+
+private:
+  /// Whether the input meets the `when` condition.
+  bool conditionHolds() const;
+  /// Whether this decorator acts in `mode`.
+  bool actsAs(const char* mode) const;
+  /// Tells the panel to look again (the input or its data changed).
+  void inputChanged();
+
+  vtkWeakPointer<vtkSMProperty> Input;
+  unsigned long Observers[2] = { 0, 0 };
+
+  Q_DISABLE_COPY(pqBoundParticleInputDecorator)
+};
+
+#endif
