@@ -61,7 +61,7 @@ const Engine* CpuStepper::particles()
 }
 
 DistributedStepper::DistributedStepper(RangeRunner run, ExchangeFunction exchange)
-  : Local(std::move(run))
+  : CpuStepper(std::move(run))
   , Exchange(std::move(exchange))
 {
 }
@@ -73,23 +73,12 @@ void DistributedStepper::setPieces(const Partition& partition, const Domain& dom
   this->Piece = piece;
 }
 
-std::string DistributedStepper::configure(
-  const ElementTemplate& shape, const Parameters& parameters)
-{
-  return this->Local.configure(shape, parameters);
-}
-
-std::string DistributedStepper::setField(const VectorField& field)
-{
-  return this->Local.setField(field);
-}
-
 void DistributedStepper::initialize()
 {
-  this->Local.initialize();
+  this->CpuStepper::initialize();
   // The reposition test takes the whole field's domain, not the ghosted piece's.
-  this->Local.engine().setDomain(this->WholeDomain);
-  keepOwned(this->Local.engine(), *this->Pieces, this->Piece);
+  this->engine().setDomain(this->WholeDomain);
+  keepOwned(this->engine(), *this->Pieces, this->Piece);
 }
 
 void DistributedStepper::step(double t, double h)
@@ -97,8 +86,8 @@ void DistributedStepper::step(double t, double h)
   // Resets first, so that an element reset into another piece moves there
   // before it samples the field; then the exchange; then the step proper,
   // which has nothing left to reset.
-  Engine& engine = this->Local.engine();
-  engine.resetDue(this->Local.runner());
+  Engine& engine = this->engine();
+  engine.resetDue(this->runner());
   std::string error;
   const long long left = migrate(engine, *this->Pieces, this->Piece, this->Exchange, error);
   this->Migrated += std::max(left, 0LL);
@@ -106,22 +95,7 @@ void DistributedStepper::step(double t, double h)
   {
     this->Error = error;
   }
-  this->Local.step(t, h);
-}
-
-void DistributedStepper::save()
-{
-  this->Local.save();
-}
-
-void DistributedStepper::restore()
-{
-  this->Local.restore();
-}
-
-const Engine* DistributedStepper::particles()
-{
-  return this->Local.particles();
+  this->CpuStepper::step(t, h);
 }
 
 long long DistributedStepper::takeMigrated()

@@ -8,8 +8,9 @@
  * around a short step shown between two step boundaries. Three kinds of
  * stepper implement them:
  *  - CpuStepper: the CPU engine in this process;
- *  - DistributedStepper: a piece of a distributed run (Partition.h), whose
- *    step also hands elements to the pieces that now own them;
+ *  - DistributedStepper: a CpuStepper on a piece of a distributed run
+ *    (Partition.h), whose step also hands elements to the pieces that now
+ *    own them;
  *  - WorkQueue (WorkQueue.h): records the calls for a renderer that runs the
  *    GPU engine in its own GL context (Gpu/GpuStepper.h replays them there).
  * So the tracer holds one stepper and never asks which it is.
@@ -108,7 +109,7 @@ private:
  * every piece takes every step), then steps; the same arithmetic as a step of
  * the whole system (Engine.h).
  */
-class DistributedStepper : public Stepper
+class DistributedStepper : public CpuStepper
 {
 public:
   DistributedStepper(RangeRunner run, ExchangeFunction exchange);
@@ -117,13 +118,10 @@ public:
   /// process's piece. Set before initialize().
   void setPieces(const Partition& partition, const Domain& domain, int piece);
 
-  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
-  std::string setField(const VectorField& field) override;
+  /// Places every element, then keeps those whose centres lie in this piece.
   void initialize() override;
+  /// Resets, exchanges elements with the other pieces, then steps.
   void step(double t, double h) override;
-  void save() override;
-  void restore() override;
-  const Engine* particles() override;
 
   /// Elements this piece sent away since the count was last taken.
   long long takeMigrated();
@@ -132,7 +130,6 @@ public:
   std::string takeExchangeError();
 
 private:
-  CpuStepper Local;
   ExchangeFunction Exchange;
   std::unique_ptr<Partition> Pieces;
   Domain WholeDomain;

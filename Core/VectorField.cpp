@@ -300,6 +300,7 @@ std::string VectorField::validate() const
     return gridError;
   }
   const std::size_t expected = 3 * this->Grid.pointCount();
+  float largest = 0.0f; // over both time steps, for the scale check
   for (const FieldSlice* s : { &this->First, &this->Second })
   {
     if (s == &this->Second && !s->velocity)
@@ -313,6 +314,7 @@ std::string VectorField::validate() const
     const std::vector<float>& v = *s->velocity;
     for (std::size_t i = 0; i < v.size(); ++i)
     {
+      largest = std::max(largest, std::abs(v[i])); // NaN leaves it, and is caught below
       if (!std::isfinite(v[i]))
       {
         std::ostringstream err;
@@ -323,7 +325,7 @@ std::string VectorField::validate() const
       }
     }
   }
-  const std::string scaleError = this->checkVelocityScale();
+  const std::string scaleError = this->checkVelocityScale(largest);
   if (!scaleError.empty())
   {
     return scaleError;
@@ -335,17 +337,8 @@ std::string VectorField::validate() const
   return std::string();
 }
 
-std::string VectorField::checkVelocityScale() const
+std::string VectorField::checkVelocityScale(float largest) const
 {
-  float largest = 0.0f;
-  for (const FieldSlice* s : { &this->First, &this->Second })
-  {
-    if (s->velocity)
-    {
-      for (float v : *s->velocity)
-        largest = std::max(largest, std::abs(v));
-    }
-  }
   std::ostringstream err;
   if (largest > MaxVelocity)
   {

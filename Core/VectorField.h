@@ -156,8 +156,6 @@ public:
   /// Empty when every value of every slice is finite and within MaxVelocity,
   /// the gradients within MaxGradient, and the slices match the grid.
   std::string validate() const;
-  /// The MaxVelocity and MaxGradient checks alone.
-  std::string checkVelocityScale() const;
 
   const FieldSlice& firstSlice() const { return this->First; }
   const FieldSlice& secondSlice() const { return this->Second; }
@@ -181,6 +179,9 @@ public:
   const std::vector<float>& axisTable(int a) const { return this->AxisTable[a]; }
 
 private:
+  /// The MaxVelocity and MaxGradient checks, given the largest |component|.
+  std::string checkVelocityScale(float largest) const;
+
   /// The cell index and the position within it along axis a.
   inline void locate(int a, float x, std::size_t& cell, float& fraction) const;
   void locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const;

@@ -48,7 +48,8 @@ void TracerSteppers::select(bool gpu, vtkInformation* outInfo, const PieceLayout
 std::string TracerSteppers::fallBackIfTooLarge(
   const bp::ElementTemplate& shape, const bp::Parameters& p)
 {
-  if (!this->Queue || bp::Engine::validate(shape, p) != "")
+  // The tracer has validated shape and parameters already.
+  if (!this->Queue)
   {
     return std::string();
   }

@@ -123,9 +123,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
 {
   // A first pass with every time step in hand asked for whatever upstream
   // held: take it only if the work needs it.
-  const std::vector<int> planned = this->Plan.needed(
-    this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed,
-    this->target());
+  const std::vector<int> planned = this->Plan.needed(this->steppingFrom(), this->target());
   const bool wanted = this->Continuing ||
     std::find(planned.begin(), planned.end(), this->RequestIndex) != planned.end();
   if (!wanted || this->Cache.has(this->RequestIndex))
@@ -201,9 +199,8 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   {
     return "Unusable input: " + fieldError + ".";
   }
-  const double from =
-    this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed;
-  this->Cache.insert(this->RequestIndex, slice, this->Plan.needed(from, this->target()));
+  this->Cache.insert(
+    this->RequestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
   this->ReadThisUpdate = true;
   return std::string();
 }

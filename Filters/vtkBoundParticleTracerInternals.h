@@ -105,6 +105,12 @@ struct vtkBoundParticleTracer::vtkInternals
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
   double target() const { return this->Decision.target; }
+  /// Where the work still to do starts: the start time for a replay not yet
+  /// configured, else where the stepper stands (it moves as passes step).
+  double steppingFrom()
+  {
+    return this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed;
+  }
 
   /// After a change of the filter, its input or the pieces: every trace and
   /// held time step is stale, and upstream holds nothing known.
