@@ -10,6 +10,7 @@ the Bound Particles display draws the same picture when the ranks' images are
 composited, with remote rendering on and off.
 """
 import argparse
+import contextlib
 import json
 import os
 import signal
@@ -55,11 +56,33 @@ environment = {k: v for k, v in os.environ.items()
 BAD_DISPLAY = "bad X server connection"
 
 
-def run_group(command, timeout):
+@contextlib.contextmanager
+def own_display():
+    """A fresh 24-bit Xvfb for one client-server attempt: a server that a
+    crashed X client left unusable is not used again. Says so when the X
+    server has died by the time the attempt ends."""
+    read_end, write_end = os.pipe()
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
+                             "1920x1080x24", "-nolisten", "tcp"], pass_fds=(write_end,),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    with os.fdopen(read_end) as ready:
+        number = ready.readline().strip()
+    try:
+        bptest.check(number != "", "Xvfb started")
+        yield ":" + number
+    finally:
+        if xvfb.poll() is not None:
+            print("the attempt's X server :%s had exited (%s)" % (number, xvfb.returncode))
+        xvfb.terminate()
+        xvfb.wait()
+
+
+def run_group(command, timeout, env=None):
     """Runs a command in a process group of its own, killed whole if it runs past `timeout`
     (killing mpiexec alone could leave its ranks running)."""
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               text=True, env=environment, start_new_session=True)
+                               text=True, env=env or environment, start_new_session=True)
     try:
         out, _ = process.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
@@ -236,7 +259,13 @@ if args.mode == "batch":
             compare_pictures(reference_pictures, pictures, name)
 else:
     def client_server(attempt):
-        """A two-rank pvserver and a pvpython client; False if a rank could not open the display."""
+        """A two-rank pvserver and a pvpython client on an X server of their own;
+        False if a rank could not open the display."""
+        with own_display() as display:
+            print("client-server attempt %d on X display %s" % (attempt, display))
+            return client_server_on(attempt, dict(environment, DISPLAY=display))
+
+    def client_server_on(attempt, environment):
         with socket.socket() as sock:
             sock.bind(("127.0.0.1", 0))
             port = sock.getsockname()[1]
@@ -258,7 +287,8 @@ else:
                 os.remove(out)
             client = run_group(
                 [args.pvpython, script, "--plugin", args.plugin, "--output", out,
-                 "--connect", "localhost:%d" % port, "--render", pictures] + inputs, 300)
+                 "--connect", "localhost:%d" % port, "--render", pictures] + inputs, 300,
+                environment)
             print(client.stdout[-3000:])
             try:
                 server.wait(timeout=60)  # the server ends when its client disconnects
@@ -271,6 +301,10 @@ else:
         with open(log_path) as log:
             server_log = log.read()
         print(server_log[-2000:])
+        if client.returncode != 0:
+            print("the server's messages:\n" + "\n".join(
+                line for line in server_log.splitlines()
+                if "ERR|" in line or "WARN|" in line or BAD_DISPLAY in line or "Abort" in line))
         if client.returncode != 0 and attempt < 3 and BAD_DISPLAY in server_log + client.stdout:
             print("the server or client could not open the display; running both again")
             return False
