@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -152,20 +153,30 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
   }
   const vtkIdType N = vtkIdType(engine.particleCount());
   points->SetNumberOfPoints(N);
-  vtkDataArray* coords = points->GetData();
   const float* local = engine.positions().data();
   const double offset[3] = { frame.offset[0], frame.offset[1], frame.offset[2] };
-  vtkSMPTools::For(vtkIdType(0), N,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType id = begin; id < end; ++id)
+  // Written through the array's own pointer: a virtual call per component
+  // made this copy cost as much as the engine's step.
+  auto shift = [&](auto* coords)
+  {
+    using Coordinate = std::remove_pointer_t<decltype(coords)>;
+    vtkSMPTools::For(vtkIdType(0), 3 * N,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        for (int c = 0; c < 3; ++c)
+        for (vtkIdType k = begin; k < end; ++k)
         {
-          coords->SetComponent(id, c, double(local[3 * id + c]) + offset[c]);
+          coords[k] = Coordinate(double(local[k]) + offset[k % 3]);
         }
-      }
-    });
+      });
+  };
+  if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
+  {
+    shift(d->GetPointer(0));
+  }
+  else
+  {
+    shift(floats(points->GetData()));
+  }
   output->SetPoints(points);
 }
 
