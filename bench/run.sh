@@ -2,8 +2,7 @@
 # Builds in Release and measures the engines side by side: prints the table,
 # writes it as CSV and plots it (PNG) into ${1:-bench-output}/, then times
 # ParaView's Particle Tracer against the Bound Particle Tracer on one job, and
-# the frames per second of the Bound Particles display inside ParaView and what
-# a frame of Play costs, and
+# what a frame of Play costs inside ParaView (both engines and displays), and
 # steps per second under pvbatch with 1, 2 and 4 MPI ranks.
 # Options after the folder go to the benchmark (--quick, --no-gpu, --resolution N).
 set -euo pipefail
@@ -17,9 +16,6 @@ mkdir -p "$out"
 # ParaView's own Particle Tracer on the same job, side by side.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt"
-# Frames per second of the Bound Particles display inside ParaView, both engines.
-bash "$root/scripts/with-display.sh" pvpython "$root/bench/paraview_fps.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/paraview_fps.txt"
 # What one frame of Play costs (frame, update, step, draw), both engines and displays.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" \
@@ -30,4 +26,4 @@ bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scal
 # How evenly 2 and 4 ranks share the elements over a hurricane run.
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_balance.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_balance.txt"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/paraview_fps.txt, $out/play_frames.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt"
+echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt"
