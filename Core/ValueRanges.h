@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ValueRanges.h
+ * @brief The ranges VTK keeps for an array (per component and of the tuple
+ * magnitude, all values and finite values), computed while the values are
+ * still in cache.
+ *
+ * ParaView asks for every range of every output array after each update (its
+ * data information, twice per frame). Computed by VTK that is a pass over each
+ * array per range; handed over with the array it is free. The rules are VTK's:
+ * NaN never counts; the finite ranges also skip infinities; a tuple's squared
+ * magnitude is summed in the array's own value type, and the magnitude range
+ * is the square root of the smallest and largest squared magnitude.
+ */
+#ifndef BoundParticles_ValueRanges_h
+#define BoundParticles_ValueRanges_h
+
+#include "Parallel.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace bp
+{
+
+/// [min, max] pairs; min > max when no value counted.
+using Range = std::array<double, 2>;
+
+struct ValueRanges
+{
+  std::vector<Range> component;       ///< NaN skipped
+  std::vector<Range> finiteComponent; ///< NaN and infinities skipped
+  Range magnitude{ 0, 0 };            ///< of each tuple (2+ components); NaN skipped
+  Range finiteMagnitude{ 0, 0 };      ///< infinities skipped as well
+};
+
+/// The ranges of `tuples` tuples of `components` values each, in parallel.
+template <typename T>
+ValueRanges valueRanges(
+  const T* values, std::size_t tuples, int components, const RangeRunner& run);
+
+} // namespace bp
+
+#endif

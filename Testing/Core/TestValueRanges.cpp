@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ValueRanges.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace
+{
+/// VTK's rules, one value at a time: NaN never counts, the finite ranges also
+/// skip infinities, the magnitude is the root of the float squared sum.
+struct Naive
+{
+  std::vector<bp::Range> component, finiteComponent;
+  bp::Range magnitude, finiteMagnitude;
+};
+
+Naive naive(const std::vector<float>& values, int components)
+{
+  const double big = std::numeric_limits<double>::max();
+  Naive r;
+  r.component.assign(std::size_t(components), { big, -big });
+  r.finiteComponent = r.component;
+  r.magnitude = r.finiteMagnitude = { big, -big };
+  auto add = [](bp::Range& range, double v)
+  {
+    if (std::isnan(v))
+      return;
+    range[0] = std::min(range[0], v);
+    range[1] = std::max(range[1], v);
+  };
+  for (std::size_t i = 0; i < values.size() / std::size_t(components); ++i)
+  {
+    float squared = 0.0f;
+    for (int c = 0; c < components; ++c)
+    {
+      const float v = values[i * std::size_t(components) + std::size_t(c)];
+      add(r.component[std::size_t(c)], v);
+      if (!std::isinf(v))
+        add(r.finiteComponent[std::size_t(c)], v);
+      squared += v * v;
+    }
+    add(r.magnitude, squared);
+    if (!std::isinf(squared))
+      add(r.finiteMagnitude, squared);
+  }
+  for (bp::Range* m : { &r.magnitude, &r.finiteMagnitude })
+    *m = { std::sqrt((*m)[0]), std::sqrt((*m)[1]) };
+  return r;
+}
+} // namespace
+
+TEST(ValueRanges, MatchVtksRulesOnAnyRunner)
+{
+  std::mt19937 random(3);
+  std::normal_distribution<float> value(0.0f, 10.0f);
+  std::vector<float> values(3 * 10007);
+  for (float& v : values)
+    v = value(random);
+  values[5] = std::numeric_limits<float>::quiet_NaN();
+  values[300] = std::numeric_limits<float>::infinity();
+  values[301] = -std::numeric_limits<float>::infinity();
+  values[9000] = 1e30f; // its square is infinite in float: out of the finite magnitude
+  const Naive expected = naive(values, 3);
+  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::threadRunner(3) })
+  {
+    const bp::ValueRanges r = bp::valueRanges(values.data(), values.size() / 3, 3, run);
+    ASSERT_EQ(r.component.size(), 3u);
+    for (std::size_t c = 0; c < 3; ++c)
+    {
+      EXPECT_EQ(r.component[c], expected.component[c]) << c;
+      EXPECT_EQ(r.finiteComponent[c], expected.finiteComponent[c]) << c;
+    }
+    // values[300] is component 0 of tuple 100, values[301] its component 1
+    EXPECT_EQ(r.component[0][1], std::numeric_limits<float>::infinity());
+    EXPECT_EQ(r.component[1][0], -std::numeric_limits<float>::infinity());
+    EXPECT_TRUE(std::isfinite(r.finiteComponent[0][1]));
+    EXPECT_TRUE(std::isfinite(r.finiteComponent[1][0]));
+    EXPECT_EQ(r.magnitude, expected.magnitude);
+    EXPECT_EQ(r.finiteMagnitude, expected.finiteMagnitude);
+    EXPECT_TRUE(std::isinf(r.magnitude[1]));
+  }
+}
+
+TEST(ValueRanges, IntegersAndEmptyArrays)
+{
+  const std::vector<long long> ids = { 7, -3, 12, 0 };
+  const bp::ValueRanges r = bp::valueRanges(ids.data(), ids.size(), 1, bp::serialRunner());
+  EXPECT_EQ(r.component[0], (bp::Range{ -3.0, 12.0 }));
+  EXPECT_EQ(r.finiteComponent[0], (bp::Range{ -3.0, 12.0 }));
+  const bp::ValueRanges none = bp::valueRanges(ids.data(), 0, 1, bp::serialRunner());
+  EXPECT_GT(none.component[0][0], none.component[0][1]); // nothing counted
+}
