@@ -1280,15 +1280,26 @@ ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPer
 void sampleAtPositions(const VectorField& field, double t, const float* positions,
   std::size_t count, float* velocity, float* vorticity, const RangeRunner& run)
 {
+  const float weight = field.timeWeight(t);
   run(count,
     [&](std::size_t begin, std::size_t end)
     {
+      // Elements lie in memory in no spatial order, so each new one's cells
+      // are likely out of cache: ask for them a few particles ahead.
+      constexpr std::size_t Ahead = 24;
       for (std::size_t i = begin; i < end; ++i)
       {
-        field.sample(positions + 3 * i, t, velocity + 3 * i);
+        if (i + Ahead < end)
+        {
+          field.prefetch(positions + 3 * (i + Ahead));
+        }
         if (vorticity)
         {
-          vorticity[i] = field.vorticityMagnitude(positions + 3 * i, t);
+          vorticity[i] = field.sampleWithVorticity(positions + 3 * i, weight, velocity + 3 * i);
+        }
+        else
+        {
+          field.sampleWeighted(positions + 3 * i, weight, velocity + 3 * i);
         }
       }
     });

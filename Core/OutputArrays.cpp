@@ -75,7 +75,7 @@ std::string colorSourceDefinitions()
 namespace
 {
 /// The largest |curl v| at the start time on a lattice of at most 32^3 of
-/// the field's points (central differences, as the Vorticity array).
+/// the field's points (the cell gradient, as the Vorticity array).
 double latticeVorticity(const VectorField& field)
 {
   const GridGeometry& g = field.grid();

@@ -64,8 +64,9 @@ private:
  * particle of the elements it owns samples the field as the whole field
  * would: an element reaches `reach` element sizes from its centre (deformed
  * elements stretch beyond their rest radius of half a size), a step moves it
- * by up to maxSpeed * dt (an RK4 sub-step by less), trilinear sampling takes
- * the next grid point and the Vorticity output a central difference more.
+ * by up to maxSpeed * dt (an RK4 sub-step by less), trilinear sampling (the
+ * velocity, and the Vorticity output's gradient of the same cell) takes the
+ * next grid point, and one more cell is kept as a margin.
  */
 int ghostCellsNeeded(
   double elementSize, double maxSpeed, double dt, double cellLength, double reach = 1.0);

@@ -389,33 +389,73 @@ float VectorField::timeWeight(double t) const
   return float(std::min(std::max(w, 0.0), 1.0));
 }
 
-float VectorField::vorticityMagnitude(const float p[3], double t) const
+void VectorField::gradient(
+  const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const
 {
-  // d[a][k] = d v_k / d x_a
-  float d[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  const std::size_t sx = this->Stride[0], sy = this->Stride[1], sz = this->Stride[2];
+  const float* c000 = data + 3 * base;
+  const float* c100 = data + 3 * (base + sx);
+  const float* c010 = data + 3 * (base + sy);
+  const float* c110 = data + 3 * (base + sx + sy);
+  const float* c001 = data + 3 * (base + sz);
+  const float* c101 = data + 3 * (base + sx + sz);
+  const float* c011 = data + 3 * (base + sy + sz);
+  const float* c111 = data + 3 * (base + sx + sy + sz);
+  for (int k = 0; k < 3; ++k)
+  {
+    // Along x: the four x edges' differences, interpolated in y then z.
+    const float x0 = (c100[k] - c000[k]) + f[1] * ((c110[k] - c010[k]) - (c100[k] - c000[k]));
+    const float x1 = (c101[k] - c001[k]) + f[1] * ((c111[k] - c011[k]) - (c101[k] - c001[k]));
+    d[0][k] = (x0 + f[2] * (x1 - x0)) * w[0];
+    // Along y: the y edges, interpolated in x then z.
+    const float y0 = (c010[k] - c000[k]) + f[0] * ((c110[k] - c100[k]) - (c010[k] - c000[k]));
+    const float y1 = (c011[k] - c001[k]) + f[0] * ((c111[k] - c101[k]) - (c011[k] - c001[k]));
+    d[1][k] = (y0 + f[2] * (y1 - y0)) * w[1];
+    // Along z: the z edges, interpolated in x then y.
+    const float z0 = (c001[k] - c000[k]) + f[0] * ((c101[k] - c100[k]) - (c001[k] - c000[k]));
+    const float z1 = (c011[k] - c010[k]) + f[0] * ((c111[k] - c110[k]) - (c011[k] - c010[k]));
+    d[2][k] = (z0 + f[1] * (z1 - z0)) * w[2];
+  }
+}
+
+float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3]) const
+{
+  this->sampleWeighted(p, weight, v);
+  std::size_t base = 0;
+  float f[3], w[3];
   for (int a = 0; a < 3; ++a)
   {
-    if (this->Degenerate[a])
+    std::size_t i;
+    this->locate(a, p[a], i, f[a]);
+    base += i * this->Stride[a];
+    // d(fraction)/dx: 0 along a flat axis, where nothing varies.
+    w[a] = this->Rectilinear[a] ? this->AxisTable[a][2 * i + 1] : this->InverseSpacing[a];
+  }
+  // d[a][k] = d v_k / d x_a
+  float d[3][3];
+  this->gradient(this->FirstData, base, f, w, d);
+  if (this->SecondData && weight > 0.0f)
+  {
+    float d1[3][3];
+    this->gradient(this->SecondData, base, f, w, d1);
+    for (int a = 0; a < 3; ++a)
     {
-      continue;
-    }
-    const float h = float(this->Grid.spacing[a]);
-    float pp[3] = { p[0], p[1], p[2] };
-    float pm[3] = { p[0], p[1], p[2] };
-    pp[a] += h;
-    pm[a] -= h;
-    float vp[3], vm[3];
-    this->sample(pp, t, vp);
-    this->sample(pm, t, vm);
-    for (int k = 0; k < 3; ++k)
-    {
-      d[a][k] = (vp[k] - vm[k]) / (2.0f * h);
+      for (int k = 0; k < 3; ++k)
+      {
+        d[a][k] += weight * (d1[a][k] - d[a][k]);
+      }
     }
   }
   const float cx = d[1][2] - d[2][1];
   const float cy = d[2][0] - d[0][2];
   const float cz = d[0][1] - d[1][0];
   return std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+float VectorField::vorticityMagnitude(const float p[3], double t) const
+{
+  float v[3];
+  return this->sampleWithVorticity(p, this->timeWeight(t), v);
 }
 
 double VectorField::maxSpeed() const

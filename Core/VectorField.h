@@ -136,7 +136,13 @@ public:
   /// so that a caller with work queued can hide the wait for memory.
   inline void prefetch(const float p[3]) const;
 
-  /// |curl v| at p and time t, by central differences one cell apart.
+  /**
+   * Velocity at p (as sampleWeighted) and |curl v| there: the curl of the
+   * trilinear interpolant in the cell that holds p, so both come from the
+   * same eight grid points. Flat axes add no derivative.
+   */
+  float sampleWithVorticity(const float p[3], float weight, float v[3]) const;
+  /// |curl v| at p and time t (sampleWithVorticity).
   float vorticityMagnitude(const float p[3], double t) const;
 
   /// Whether p lies in the grid's bounds (axes of one point are ignored).
@@ -187,6 +193,10 @@ private:
   void locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const;
   /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
   inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
+  /// The velocity's derivatives d[a][k] = d v_k / d x_a of that interpolant,
+  /// with w[a] the derivative of the fraction along axis a.
+  void gradient(
+    const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const;
 #if BOUNDPARTICLES_SSE2
   /// The same in SSE lanes 0-2, where x is not a plane (Stride[0] == 1).
   inline __m128 interpolateLanes(const float* data, std::size_t base, const float f[3]) const;

@@ -97,9 +97,6 @@ void GpuSystem::updateFieldSamples(double t)
   GpuPass pass = this->begin(this->passes.programs.samples);
   pass.texture("bpState", this->state.particles.current());
   pass.setFloat("bpSampleWeight", field->timeWeight(t));
-  const auto& spacing = field->grid().spacing;
-  const float h[3] = { float(spacing[0]), float(spacing[1]), float(spacing[2]) };
-  pass.setVec3("bpSpacing", h);
   pass.runPerParticle({ this->state.samples.get() });
 }
 

@@ -125,6 +125,52 @@ TEST(VectorField, SolidBodyRotationHasVorticityTwo)
   EXPECT_NEAR(f.maxSpeed(), std::sqrt(2.0), 1e-5);
 }
 
+TEST(VectorField, VorticityIsTheCurlOfTheCellsInterpolant)
+{
+  // v = s (2y - z, 3x + z/2, x - 4y): curl v = s (-4.5, -2, 1) everywhere, and
+  // the trilinear interpolant of a linear field is the field, so its cell
+  // gradient is exact in every cell: on uniform and rectilinear axes, at the
+  // boundary, and between two slices (s = 1, then 2).
+  bp::GridGeometry g = bptest::grid(7, -1.0, 1.0);
+  g.setCoordinates(2, { -1.0, -0.9, -0.6, 0.0, 0.1, 0.7, 1.0 });
+  ASSERT_EQ(g.validate(), "");
+  auto slice = [&](double time, float s)
+  {
+    auto v = std::make_shared<std::vector<float>>();
+    for (int k = 0; k < g.dims[2]; ++k)
+      for (int j = 0; j < g.dims[1]; ++j)
+        for (int i = 0; i < g.dims[0]; ++i)
+        {
+          const double x = g.coordinate(0, i), y = g.coordinate(1, j), z = g.coordinate(2, k);
+          v->push_back(s * float(2 * y - z));
+          v->push_back(s * float(3 * x + 0.5 * z));
+          v->push_back(s * float(x - 4 * y));
+        }
+    return bp::FieldSlice{ time, v };
+  };
+  const bp::VectorField f(g, slice(0.0, 1.0f), slice(1.0, 2.0f));
+  ASSERT_EQ(f.validate(), "");
+  const double curl = std::sqrt(4.5 * 4.5 + 2.0 * 2.0 + 1.0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+  for (int n = 0; n < 200; ++n)
+  {
+    const float p[3] = { coordinate(random), coordinate(random), coordinate(random) };
+    for (double t : { 0.0, 0.25, 1.0 })
+    {
+      float v[3], sampled[3];
+      const float vorticity = f.sampleWithVorticity(p, f.timeWeight(t), v);
+      EXPECT_NEAR(vorticity, (1.0 + t) * curl, 2e-5 * curl);
+      EXPECT_NEAR(f.vorticityMagnitude(p, t), vorticity, 0.0f);
+      f.sample(p, t, sampled); // the velocity is the plain sample, bit for bit
+      for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(v[k], sampled[k]);
+    }
+  }
+  const float corner[3] = { 1.0f, 1.0f, 1.0f };
+  EXPECT_NEAR(f.vorticityMagnitude(corner, 0.0), curl, 2e-5 * curl);
+}
+
 TEST(VectorField, RectilinearAxesAreSampledExactly)
 {
   // Altitude-like z layers, crowded near the ground, and a stretched x axis.
