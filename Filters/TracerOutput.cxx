@@ -7,12 +7,16 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+
+#include "ValueRanges.h"
 
 #include <algorithm>
 #include <array>
@@ -97,21 +101,23 @@ vtkSmartPointer<vtkCellArray> buildCells(
   return cells;
 }
 
-vtkSmartPointer<vtkDataArray> newArray(const bp::OutputArray& row, vtkIdType tuples)
+int vtkTypeOf(bp::ValueType type)
 {
-  vtkSmartPointer<vtkDataArray> a;
-  switch (row.type)
+  switch (type)
   {
     case bp::ValueType::IdType:
-      a = vtkSmartPointer<vtkIdTypeArray>::New();
-      break;
+      return VTK_ID_TYPE;
     case bp::ValueType::Int:
-      a = vtkSmartPointer<vtkIntArray>::New();
-      break;
+      return VTK_INT;
     case bp::ValueType::Float:
-      a = vtkSmartPointer<vtkFloatArray>::New();
       break;
   }
+  return VTK_FLOAT;
+}
+
+vtkSmartPointer<vtkDataArray> newArray(const bp::OutputArray& row, vtkIdType tuples)
+{
+  auto a = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(vtkTypeOf(row.type)));
   a->SetName(row.name);
   a->SetNumberOfComponents(row.components);
   a->SetNumberOfTuples(tuples);
@@ -140,19 +146,75 @@ void addToPointData(vtkPointData* pd, const bp::OutputArray& row, vtkDataArray* 
   }
 }
 
+/// Stores per-component ranges under `key` as vtkDataArray::ComputeRange does.
+void storeComponentRanges(
+  vtkInformation* info, vtkInformationInformationVectorKey* key, const std::vector<bp::Range>& r)
+{
+  vtkNew<vtkInformationVector> perComponent;
+  perComponent->SetNumberOfInformationObjects(int(r.size()));
+  for (std::size_t c = 0; c < r.size(); ++c)
+  {
+    perComponent->GetInformationObject(int(c))->Set(vtkDataArray::COMPONENT_RANGE(), r[c].data(), 2);
+  }
+  info->Set(key, perComponent);
+}
+
+/**
+ * Hands `array` its ranges, computed now while the values are warm, in the
+ * information keys where VTK caches them: VTK uses them until the array is
+ * next modified. ParaView's data information asks for all of them after each
+ * update, which cost 40% of a frame when VTK computed them (issue 16). Call it
+ * after the array's last Modified().
+ */
+void primeRanges(vtkDataArray* array, const bp::RangeRunner& run)
+{
+  const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
+  const int n = array->GetNumberOfComponents();
+  if (tuples == 0)
+  {
+    return;
+  }
+  const void* values = array->GetVoidPointer(0);
+  bp::ValueRanges r;
+  switch (array->GetDataType())
+  {
+    case VTK_FLOAT:
+      r = bp::valueRanges(static_cast<const float*>(values), tuples, n, run);
+      break;
+    case VTK_DOUBLE:
+      r = bp::valueRanges(static_cast<const double*>(values), tuples, n, run);
+      break;
+    case VTK_INT:
+      r = bp::valueRanges(static_cast<const int*>(values), tuples, n, run);
+      break;
+    case VTK_ID_TYPE:
+      static_assert(std::is_same<vtkIdType, long long>::value, "ValueRanges has long long");
+      r = bp::valueRanges(static_cast<const long long*>(values), tuples, n, run);
+      break;
+    default:
+      return; // VTK computes it when asked
+  }
+  vtkInformation* info = array->GetInformation();
+  storeComponentRanges(info, vtkAbstractArray::PER_COMPONENT(), r.component);
+  storeComponentRanges(info, vtkAbstractArray::PER_FINITE_COMPONENT(), r.finiteComponent);
+  if (n > 1)
+  {
+    info->Set(vtkDataArray::L2_NORM_RANGE(), r.magnitude.data(), 2);
+    info->Set(vtkDataArray::L2_NORM_FINITE_RANGE(), r.finiteMagnitude.data(), 2);
+  }
+}
+
 /**
  * World positions: grid-local ones plus the grid's offset, in double where
  * float would lose more than 1e-4 of a cell at the field's coordinates.
  */
-void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::OutputFrame& frame)
+void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::OutputFrame& frame,
+  bpvtk::OutputStorage& storage, const bp::RangeRunner& run)
 {
-  vtkNew<vtkPoints> points;
-  if (frame.reach * std::ldexp(1.0, -23) > 1e-4 * frame.cellLength)
-  {
-    points->SetDataTypeToDouble();
-  }
+  const bool doubles = frame.reach * std::ldexp(1.0, -23) > 1e-4 * frame.cellLength;
   const vtkIdType N = vtkIdType(engine.particleCount());
-  points->SetNumberOfPoints(N);
+  vtkNew<vtkPoints> points;
+  points->SetData(storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, N));
   const float* local = engine.positions().data();
   const double offset[3] = { frame.offset[0], frame.offset[1], frame.offset[2] };
   // Written through the array's own pointer: a virtual call per component
@@ -177,18 +239,22 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
   {
     shift(floats(points->GetData()));
   }
+  primeRanges(points->GetData(), run);
   output->SetPoints(points);
 }
 
 /// What filling an array may read: the engine, the field, the frame, and the
-/// arrays filled before it (table order), by id.
+/// output's arrays by id (null where the frame does not want one); those of
+/// earlier rows are filled.
 struct FillContext
 {
   const bp::Engine& engine;
   const bp::VectorField& field;
   const bpvtk::OutputFrame& frame;
   const bp::RangeRunner& run;
-  std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> filled;
+  std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> arrays;
+
+  vtkDataArray* array(bp::OutputArrayId id) const { return this->arrays[std::size_t(id)]; }
 };
 
 /// Writes value(e) on every particle of every element e.
@@ -222,31 +288,36 @@ void fillParticleState(const bp::OutputArray& row, vtkDataArray* out, const Fill
   }
 }
 
-void fillFieldSample(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+/**
+ * Velocity, and Vorticity from the same cell, in one pass: the Velocity row
+ * fills both, and the Vorticity row alone only when Velocity is left out.
+ */
+void fillFieldSample(const bp::OutputArray& row, vtkDataArray* /*out*/, const FillContext& c)
 {
+  vtkDataArray* velocityArray = c.array(bp::OutputArrayId::Velocity);
+  vtkDataArray* vorticityArray = c.array(bp::OutputArrayId::Vorticity);
+  if (row.id == bp::OutputArrayId::Vorticity && velocityArray)
+  {
+    return; // filled with Velocity
+  }
   const std::size_t N = c.engine.particleCount();
   const float* positions = c.engine.positions().data();
-  float* values = floats(out);
-  const double t = c.frame.time;
-  const bp::VectorField& field = c.field;
-  c.run(N,
-    [&](std::size_t begin, std::size_t end)
-    {
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        if (row.id == bp::OutputArrayId::Velocity)
-          field.sample(positions + 3 * i, t, values + 3 * i);
-        else if (row.id == bp::OutputArrayId::Vorticity)
-          values[i] = field.vorticityMagnitude(positions + 3 * i, t);
-      }
-    });
+  std::vector<float> scratch;
+  float* velocity = velocityArray ? floats(velocityArray) : nullptr;
+  if (!velocity)
+  {
+    scratch.resize(3 * N);
+    velocity = scratch.data();
+  }
+  float* vorticity = vorticityArray ? floats(vorticityArray) : nullptr;
+  bp::sampleAtPositions(c.field, c.frame.time, positions, N, velocity, vorticity, c.run);
 }
 
 void fillDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
 {
   if (row.id == bp::OutputArrayId::Speed)
   {
-    const float* v = floats(c.filled[std::size_t(bp::OutputArrayId::Velocity)]);
+    const float* v = floats(c.array(bp::OutputArrayId::Velocity));
     float* speed = floats(out);
     vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
       [&](vtkIdType begin, vtkIdType end)
@@ -333,7 +404,7 @@ void fillArray(const bp::OutputArray& row, vtkDataArray* out, const FillContext&
 namespace bpvtk
 {
 
-void ParticleCells::apply(vtkPolyData* output, const bp::Engine& engine)
+void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine)
 {
   const std::size_t E = engine.elementCount();
   if (!this->Cells || this->Elements != E)
@@ -366,6 +437,56 @@ void ParticleCells::apply(vtkPolyData* output, const bp::Engine& engine)
   }
 }
 
+vtkSmartPointer<vtkDataArray> OutputStorage::reuse(
+  std::vector<vtkSmartPointer<vtkDataArray>>& kept, int dataType, int components, vtkIdType tuples)
+{
+  for (vtkSmartPointer<vtkDataArray>& a : kept)
+  {
+    // Held here alone: the last output let go of it, and so did every copy.
+    if (a->GetReferenceCount() == 1 && a->GetDataType() == dataType &&
+      a->GetNumberOfComponents() == components && a->GetNumberOfTuples() == tuples)
+    {
+      a->Modified(); // new values; drops the cached ranges
+      return a;
+    }
+  }
+  return nullptr;
+}
+
+vtkSmartPointer<vtkDataArray> OutputStorage::array(const bp::OutputArray& row, vtkIdType tuples)
+{
+  auto& kept = this->Kept[std::size_t(row.id)];
+  if (auto a = this->reuse(kept, vtkTypeOf(row.type), row.components, tuples))
+  {
+    return a;
+  }
+  vtkSmartPointer<vtkDataArray> a = newArray(row, tuples);
+  if (kept.size() == 2)
+  {
+    kept.erase(kept.begin()); // the oldest; its holders keep it alive
+  }
+  kept.push_back(a);
+  return a;
+}
+
+vtkSmartPointer<vtkDataArray> OutputStorage::pointData(int dataType, vtkIdType count)
+{
+  auto& kept = this->Kept.back();
+  if (auto a = this->reuse(kept, dataType, 3, count))
+  {
+    return a;
+  }
+  auto a = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(dataType));
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(count);
+  if (kept.size() == 2)
+  {
+    kept.erase(kept.begin());
+  }
+  kept.push_back(a);
+  return a;
+}
+
 bool OutputFrame::wants(const bp::OutputArray& row) const
 {
   // The optional rows and the properties that ask for them.
@@ -373,21 +494,35 @@ bool OutputFrame::wants(const bp::OutputArray& row) const
 }
 
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
-  const OutputFrame& frame, ParticleCells& cells, const bp::RangeRunner& run)
+  const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run)
 {
-  setPoints(output, engine, frame);
-  cells.apply(output, engine);
+  setPoints(output, engine, frame, storage, run);
+  storage.applyCells(output, engine);
   const vtkIdType N = vtkIdType(engine.particleCount());
   FillContext context{ engine, field, frame, run, {} };
-  vtkPointData* pd = output->GetPointData();
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     if (frame.wants(row))
     {
-      vtkSmartPointer<vtkDataArray> array = newArray(row, N);
+      arrays.push_back(storage.array(row, N));
+      context.arrays[std::size_t(row.id)] = arrays.back();
+    }
+  }
+  vtkPointData* pd = output->GetPointData();
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    if (vtkDataArray* array = context.array(row.id))
+    {
       fillArray(row, array, context);
-      context.filled[std::size_t(row.id)] = array;
       addToPointData(pd, row, array);
+    }
+  }
+  for (vtkDataArray* array : context.arrays)
+  {
+    if (array)
+    {
+      primeRanges(array, run); // every value written
     }
   }
 }

@@ -22,8 +22,10 @@
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 class vtkCellArray;
+class vtkDataArray;
 class vtkPolyData;
 
 namespace bpvtk
@@ -44,27 +46,44 @@ struct OutputFrame
   bool wants(const bp::OutputArray& row) const;
 };
 
-/// The output's cells, kept while the element count and shape stay.
-class ParticleCells
+/**
+ * What the output keeps from one frame to the next: its cells, while the
+ * element count and shape stay, and its arrays' memory. An array nothing
+ * else holds any more (a display's copy of the output lets go of it when it
+ * updates) is written again in place, so a frame does not pay the kernel for
+ * tens of megabytes of fresh pages. Two of each are kept: the one a display
+ * still holds and the one being written.
+ */
+class OutputStorage
 {
 public:
   /// Sets `output`'s cells for `engine`'s elements, built again only when
   /// the element count changed (or after reset()).
-  void apply(vtkPolyData* output, const bp::Engine& engine);
+  void applyCells(vtkPolyData* output, const bp::Engine& engine);
+  /// An array for `row` with `tuples` tuples, reused when free, marked modified.
+  vtkSmartPointer<vtkDataArray> array(const bp::OutputArray& row, vtkIdType tuples);
+  /// Points' storage of `dataType` (VTK_FLOAT or VTK_DOUBLE) for `count` points.
+  vtkSmartPointer<vtkDataArray> pointData(int dataType, vtkIdType count);
   /// Forgets the cells (the shape may have changed).
   void reset() { this->Cells = nullptr; }
 
 private:
+  vtkSmartPointer<vtkDataArray> reuse(std::vector<vtkSmartPointer<vtkDataArray>>& kept,
+    int dataType, int components, vtkIdType tuples);
+
   vtkSmartPointer<vtkCellArray> Cells;
   vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
   int Kind = -1;                           ///< 0 vertices, 1 lines, 2 triangles
   std::size_t Elements = 0;
+  /// Per array of the table (by id), then the points' storage last.
+  std::array<std::vector<vtkSmartPointer<vtkDataArray>>, std::size_t(bp::OutputArrayId::Count) + 1>
+    Kept;
 };
 
 /// One point per particle with every array of the table the frame wants,
 /// each filled as its row's ArraySource says.
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
-  const OutputFrame& frame, ParticleCells& cells, const bp::RangeRunner& run);
+  const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run);
 
 /// Two points at the corners of `worldBounds` with each array's expected range.
 void fillRangeOutput(

@@ -350,7 +350,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
 
 void vtkBoundParticleTracer::vtkInternals::startTrace()
 {
-  this->Cells.reset(); // the element count or shape may have changed
+  this->Storage.reset(); // the element count or shape may have changed
   this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,
     this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
   bp::TraceCursor& cursor = this->stepper().cursor;
@@ -502,7 +502,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::show(
     frame.cellLength = this->Grid.cellLength();
     frame.coloringAxis = self->ColoringAxis;
     frame.computeVorticity = self->ComputeVorticity != 0;
-    bpvtk::fillParticleOutput(output, *particles, field, frame, this->Cells, bpvtk::smpRunner());
+    bpvtk::fillParticleOutput(output, *particles, field, frame, this->Storage, bpvtk::smpRunner());
   }
   else
   {

@@ -67,7 +67,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bp::FieldCache Cache;
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;
-  bpvtk::ParticleCells Cells;
+  bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
   std::unique_ptr<bp::StepSchedule> Schedule;
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
