@@ -5,8 +5,10 @@
 #include "WorkQueue.h"
 #include "vtkBoundParticleTracer.h"
 #include "vtkOpenGLBoundParticleMapper.h"
+#include "vtkOpenGLKeptCellsMapper.h"
 
 #include "vtkActor.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerRequestKey.h"
@@ -16,8 +18,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProcessModule.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -35,7 +37,7 @@ struct vtkBoundParticleRepresentation::vtkInternals
   vtkNew<vtkActor> Actor;
   vtkNew<vtkProperty> Property;
   vtkNew<vtkOpenGLBoundParticleMapper> GpuMapper;
-  vtkNew<vtkPolyDataMapper> CpuMapper;
+  vtkNew<vtkOpenGLKeptCellsMapper> CpuMapper;
   vtkSmartPointer<vtkPolyData> Cache;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
   bool Gpu = false; // the cached input is a GPU work order
@@ -148,9 +150,14 @@ int vtkBoundParticleRepresentation::RequestData(
       {
         std::copy(I.Queue->draw.bounds.begin(), I.Queue->draw.bounds.end(), I.Bounds);
       }
-      else
+      else if (input->GetNumberOfPoints() > 0)
       {
-        input->GetBounds(I.Bounds);
+        // From the ranges the tracer cached on the points' array: no pass
+        // over a million points per frame.
+        for (int c = 0; c < 3; ++c)
+        {
+          input->GetPoints()->GetData()->GetRange(I.Bounds + 2 * c, c);
+        }
       }
     }
     // The request is answered: every other consumer of this output (Surface,
