@@ -18,6 +18,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
+#include "vtkView.h"
+#include "vtkExecutive.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
@@ -29,6 +31,7 @@
 #include "vtkTransform.h"
 
 #include <algorithm>
+#include <set>
 #include <string>
 
 struct vtkBoundParticleRepresentation::vtkInternals
@@ -40,6 +43,9 @@ struct vtkBoundParticleRepresentation::vtkInternals
   vtkNew<vtkOpenGLKeptCellsMapper> CpuMapper;
   vtkSmartPointer<vtkPolyData> Cache;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
+  /// The GPU request is left on the input until the view renders, for this
+  /// display's decorations (see RequestData).
+  bool RequestHeld = false;
   bool Gpu = false; // the cached input is a GPU work order
   std::string ColorArray;
   bool GpuFailed = false;
@@ -65,7 +71,112 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   I.GpuMapper->SetUseLookupTableScalarRange(1);
 }
 
-vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation() = default;
+vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation()
+{
+  this->ReleaseGpuRequest();
+}
+
+namespace
+{
+/// The algorithm that feeds `consumer`, past ParaView's pass-through post filters.
+vtkAlgorithm* FirstProducer(vtkAlgorithm* consumer)
+{
+  vtkAlgorithm* producer = consumer;
+  do
+  {
+    producer = producer->GetNumberOfInputPorts() > 0 && producer->GetNumberOfInputConnections(0) > 0
+      ? producer->GetInputAlgorithm(0, 0)
+      : nullptr;
+  } while (producer && producer->IsA("vtkPVPostFilter"));
+  return producer;
+}
+
+/// Whether `consumer` draws something of its own from the data, as opposed
+/// to a decoration of a display of it: the axes grids (bounds only) and the
+/// selection's highlight (a plain geometry representation fed by ParaView's
+/// selection extraction; the selected elements of a GPU display are not data
+/// in this process).
+bool NeedsElements(vtkDataRepresentation* consumer)
+{
+  if (consumer->IsA("vtkPVGridAxes3DRepresentation") || consumer->IsA("vtkPolarAxesRepresentation") ||
+    consumer->IsA("vtkSelectionRepresentation") || consumer->IsA("vtkPVCompositeRepresentation"))
+  {
+    return false;
+  }
+  vtkAlgorithm* producer = FirstProducer(consumer);
+  const bool selectionHighlight = std::string(consumer->GetClassName()) ==
+      "vtkGeometryRepresentation" &&
+    producer && producer->IsA("vtkPVExtractSelection");
+  return !selectionHighlight;
+}
+
+/// Whether `source` is upstream of `algorithm` (or is it), through every
+/// input connection; the connections hold references, so the walk is safe.
+bool Reaches(vtkAlgorithm* algorithm, vtkAlgorithm* source, std::set<vtkAlgorithm*>& seen)
+{
+  if (!algorithm || !seen.insert(algorithm).second)
+  {
+    return false;
+  }
+  if (algorithm == source)
+  {
+    return true;
+  }
+  for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int k = 0; k < algorithm->GetNumberOfInputConnections(port); ++k)
+    {
+      if (Reaches(algorithm->GetInputAlgorithm(port, k), source, seen))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace
+
+bool vtkBoundParticleRepresentation::ViewHasOtherConsumers()
+{
+  vtkView* view = this->GetView();
+  vtkAlgorithm* source = this->GetNumberOfInputConnections(0) ? this->GetInputAlgorithm(0, 0) : nullptr;
+  if (!view || !source)
+  {
+    return true; // nothing to tell: assume someone needs the elements
+  }
+  for (int i = 0; i < view->GetNumberOfRepresentations(); ++i)
+  {
+    auto* other = vtkPVDataRepresentation::SafeDownCast(view->GetRepresentation(i));
+    if (!other || other == this || !other->GetVisibility() || !NeedsElements(other))
+    {
+      continue;
+    }
+    std::set<vtkAlgorithm*> seen;
+    if (Reaches(other, source, seen))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void vtkBoundParticleRepresentation::ReleaseGpuRequest()
+{
+  vtkInternals& I = *this->Internals;
+  if (!I.RequestHeld)
+  {
+    return;
+  }
+  I.RequestHeld = false;
+  vtkExecutive* executive = this->GetExecutive();
+  if (this->GetNumberOfInputConnections(0) > 0 && executive)
+  {
+    if (vtkInformation* inInfo = executive->GetInputInformation(0, 0))
+    {
+      inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+    }
+  }
+}
 
 int vtkBoundParticleRepresentation::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -160,10 +271,22 @@ int vtkBoundParticleRepresentation::RequestData(
         }
       }
     }
-    // The request is answered: every other consumer of this output (Surface,
-    // Save Data, filters, and ParaView's own axes grid of this display) gets
-    // the CPU result.
-    inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+    // The request is answered. Every consumer that needs the elements as data
+    // (Surface, Save Data, filters, Fetch) must get the CPU result, so the
+    // request is taken back: consumers never set it and the pipeline leaves
+    // what they find. Only this display's decorations (the axes grid, the
+    // selection) update between here and the render in the same view pass;
+    // they need bounds and ranges, which the GPU output has, and would make
+    // the CPU engine step every frame. So when nothing else in the view draws
+    // from this data, the request is held until the view renders.
+    if (I.Gpu && !this->ViewHasOtherConsumers())
+    {
+      I.RequestHeld = true;
+    }
+    else
+    {
+      inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+    }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
@@ -183,6 +306,7 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
+    this->ReleaseGpuRequest(); // the view's update pass is over
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {
@@ -246,6 +370,7 @@ bool vtkBoundParticleRepresentation::RemoveFromView(vtkView* view)
   vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
   if (rview)
   {
+    this->ReleaseGpuRequest();
     rview->GetRenderer()->RemoveActor(this->Internals->Actor);
     return this->Superclass::RemoveFromView(view);
   }
@@ -256,6 +381,10 @@ void vtkBoundParticleRepresentation::SetVisibility(bool value)
 {
   this->Superclass::SetVisibility(value);
   this->Internals->Actor->SetVisibility(value ? 1 : 0);
+  if (!value)
+  {
+    this->ReleaseGpuRequest(); // e.g. another representation type was chosen
+  }
 }
 
 void vtkBoundParticleRepresentation::SetInputArrayToProcess(

@@ -6,7 +6,10 @@
  * It asks its input for GPU work: on its own update request it sets
  * vtkBoundParticleTracer::GPU_WORK_QUEUE() to its work queue's id, and takes
  * it back to 0 once the update is done, so every other consumer of the same
- * output gets the CPU result. With the tracer's Engine set to GPU the input
+ * output gets the CPU result. When nothing else in its view draws from the
+ * data, it takes the request back only when the view renders: its own
+ * decorations (the axes grid, the selection), which update in between, then
+ * get the GPU output's bounds and ranges instead of a CPU step per frame. With the tracer's Engine set to GPU the input
  * then carries no particles, only the queue's id, and the
  * vtkOpenGLBoundParticleMapper runs the recorded work and draws the GPU
  * state; otherwise (Engine CPU, or after a GPU failure) it draws the CPU
@@ -95,6 +98,12 @@ protected:
   bool RemoveFromView(vtkView* view) override;
 
 private:
+  /// Whether another visible display in this view draws from this data (a
+  /// downstream filter's, say): then the request is not held.
+  bool ViewHasOtherConsumers();
+  /// Sets the GPU request on the input back to 0 if it was held.
+  void ReleaseGpuRequest();
+
   vtkBoundParticleRepresentation(const vtkBoundParticleRepresentation&) = delete;
   void operator=(const vtkBoundParticleRepresentation&) = delete;
 

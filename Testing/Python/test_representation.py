@@ -160,6 +160,34 @@ reader.UpdatePipeline()
 bptest.check(reader.GetDataInformation().GetNumberOfPoints() == 1000 * 23,
              "Save Data writes the CPU result")
 Delete(reader)
+
+# The display's decorations (axes grid, selection) get the GPU output's bounds
+# and ranges: a frame makes no CPU step, so after it the tracer's own output
+# is still the two-point GPU output, while a fetch still gets the elements.
+view.ViewTime = 0.6
+Render(view)
+own = gpu.GetClientSideObject().GetOutputDataObject(0)
+bptest.check(own.GetNumberOfPoints() == 2,
+             "a GPU frame makes no CPU step: the output has %d points" % own.GetNumberOfPoints())
+bptest.check(servermanager.Fetch(gpu).GetNumberOfPoints() == 1000 * 23,
+             "after the frame a fetch gets the elements")
+
+# A downstream filter shown in the same view gets the elements for the view's
+# time, the very ones the CPU engine gives.
+double_force = Calculator(Input=gpu, Function="Force*2", ResultArrayName="DoubleForce")
+Show(double_force, view)
+view.ViewTime = 0.7
+Render(view)
+downstream = double_force.GetClientSideObject().GetOutputDataObject(0)
+reference = tracer("Fish", "CPU", 1000)
+reference.UpdatePipeline(0.7)
+expected = reference.GetClientSideObject().GetOutputDataObject(0)
+bptest.check(downstream.GetNumberOfPoints() == expected.GetNumberOfPoints() == 1000 * 23,
+             "a downstream display gets the elements: %d points" % downstream.GetNumberOfPoints())
+same = all(downstream.GetPoint(i) == expected.GetPoint(i) for i in range(0, 23000, 997))
+bptest.check(same, "the downstream display's elements are those of its time")
+Delete(reference)
+Delete(double_force)
 Render(view)
 Delete(view)
 del view
