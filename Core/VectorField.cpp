@@ -418,6 +418,41 @@ void VectorField::gradient(
   }
 }
 
+#if BOUNDPARTICLES_SSE2
+void VectorField::gradientLanes(
+  const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const
+{
+  // The four x edges as in interpolateLanes: two overlapping loads per edge
+  // give both corners in lanes 0-2 without reading past the array. The
+  // arithmetic is gradient()'s, operation for operation, so the bits agree.
+  auto corners = [data](std::size_t corner, __m128& c0, __m128& c1)
+  {
+    const float* c = data + 3 * corner;
+    c0 = _mm_loadu_ps(c);
+    const __m128 shifted = _mm_loadu_ps(c + 2);
+    c1 = _mm_shuffle_ps(shifted, shifted, _MM_SHUFFLE(0, 3, 2, 1));
+  };
+  const std::size_t sy = this->Stride[1], sz = this->Stride[2];
+  __m128 c000, c100, c010, c110, c001, c101, c011, c111;
+  corners(base, c000, c100);
+  corners(base + sy, c010, c110);
+  corners(base + sz, c001, c101);
+  corners(base + sy + sz, c011, c111);
+  const __m128 fx = _mm_set1_ps(f[0]), fy = _mm_set1_ps(f[1]), fz = _mm_set1_ps(f[2]);
+  auto lerp = [](__m128 a, __m128 b, __m128 t)
+  { return _mm_add_ps(a, _mm_mul_ps(t, _mm_sub_ps(b, a))); };
+  const __m128 x0 = lerp(_mm_sub_ps(c100, c000), _mm_sub_ps(c110, c010), fy);
+  const __m128 x1 = lerp(_mm_sub_ps(c101, c001), _mm_sub_ps(c111, c011), fy);
+  d[0] = _mm_mul_ps(lerp(x0, x1, fz), _mm_set1_ps(w[0]));
+  const __m128 y0 = lerp(_mm_sub_ps(c010, c000), _mm_sub_ps(c110, c100), fx);
+  const __m128 y1 = lerp(_mm_sub_ps(c011, c001), _mm_sub_ps(c111, c101), fx);
+  d[1] = _mm_mul_ps(lerp(y0, y1, fz), _mm_set1_ps(w[1]));
+  const __m128 z0 = lerp(_mm_sub_ps(c001, c000), _mm_sub_ps(c101, c100), fx);
+  const __m128 z1 = lerp(_mm_sub_ps(c011, c010), _mm_sub_ps(c111, c110), fx);
+  d[2] = _mm_mul_ps(lerp(z0, z1, fy), _mm_set1_ps(w[2]));
+}
+#endif
+
 float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3]) const
 {
   this->sampleWeighted(p, weight, v);
@@ -431,18 +466,45 @@ float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3
     // d(fraction)/dx: 0 along a flat axis, where nothing varies.
     w[a] = this->Rectilinear[a] ? this->AxisTable[a][2 * i + 1] : this->InverseSpacing[a];
   }
+  const bool blend = this->SecondData && weight > 0.0f;
   // d[a][k] = d v_k / d x_a
   float d[3][3];
-  this->gradient(this->FirstData, base, f, w, d);
-  if (this->SecondData && weight > 0.0f)
+#if BOUNDPARTICLES_SSE2
+  if (this->Stride[0] == 1)
   {
-    float d1[3][3];
-    this->gradient(this->SecondData, base, f, w, d1);
+    __m128 lanes[3];
+    this->gradientLanes(this->FirstData, base, f, w, lanes);
+    if (blend)
+    {
+      __m128 second[3];
+      this->gradientLanes(this->SecondData, base, f, w, second);
+      const __m128 weights = _mm_set1_ps(weight);
+      for (int a = 0; a < 3; ++a)
+      {
+        lanes[a] = _mm_add_ps(lanes[a], _mm_mul_ps(weights, _mm_sub_ps(second[a], lanes[a])));
+      }
+    }
     for (int a = 0; a < 3; ++a)
     {
-      for (int k = 0; k < 3; ++k)
+      alignas(16) float out[4];
+      _mm_store_ps(out, lanes[a]);
+      std::copy_n(out, 3, d[a]);
+    }
+  }
+  else
+#endif
+  {
+    this->gradient(this->FirstData, base, f, w, d);
+    if (blend)
+    {
+      float d1[3][3];
+      this->gradient(this->SecondData, base, f, w, d1);
+      for (int a = 0; a < 3; ++a)
       {
-        d[a][k] += weight * (d1[a][k] - d[a][k]);
+        for (int k = 0; k < 3; ++k)
+        {
+          d[a][k] += weight * (d1[a][k] - d[a][k]);
+        }
       }
     }
   }

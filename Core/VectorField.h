@@ -198,6 +198,11 @@ private:
   void gradient(
     const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const;
 #if BOUNDPARTICLES_SSE2
+  /// The same with the components in SSE lanes 0-2 (Stride[0] == 1).
+  void gradientLanes(
+    const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const;
+#endif
+#if BOUNDPARTICLES_SSE2
   /// The same in SSE lanes 0-2, where x is not a plane (Stride[0] == 1).
   inline __m128 interpolateLanes(const float* data, std::size_t base, const float f[3]) const;
 #endif
