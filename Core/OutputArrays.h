@@ -114,7 +114,6 @@ struct OutputArray
   ColorSource color;    ///< Solid: the GPU display cannot colour by it
   bool colorsMagnitude; ///< colours the magnitude of a vector's colour source
   RangeSource range;
-  bool optional; ///< output only when asked for (Compute Vorticity)
 };
 
 /// Every output array, in output order.

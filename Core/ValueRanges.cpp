@@ -77,9 +77,9 @@ struct Partial
 template <typename T>
 Range toRange(const MinMax<T>& m)
 {
-  return m.counted() ? Range{ double(m.low), double(m.high) }
-                     : Range{ std::numeric_limits<double>::max(),
-                         std::numeric_limits<double>::lowest() };
+  return m.counted()
+    ? Range{ double(m.low), double(m.high) }
+    : Range{ std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest() };
 }
 
 template <typename T>
@@ -128,7 +128,8 @@ bool hasInfiniteEnd(const MinMax<T>& m)
 
 /// The finite ranges of a chunk whose plain ranges reached an infinity.
 template <typename T>
-void scanFinite(const T* values, std::size_t begin, std::size_t end, std::size_t n, Partial<T>& part)
+void scanFinite(
+  const T* values, std::size_t begin, std::size_t end, std::size_t n, Partial<T>& part)
 {
   for (std::size_t i = begin; i < end; ++i)
   {
@@ -188,7 +189,6 @@ ValueRanges valueRanges(const T* values, std::size_t tuples, int components, con
 template ValueRanges valueRanges<float>(const float*, std::size_t, int, const RangeRunner&);
 template ValueRanges valueRanges<double>(const double*, std::size_t, int, const RangeRunner&);
 template ValueRanges valueRanges<int>(const int*, std::size_t, int, const RangeRunner&);
-template ValueRanges valueRanges<long long>(
-  const long long*, std::size_t, int, const RangeRunner&);
+template ValueRanges valueRanges<long long>(const long long*, std::size_t, int, const RangeRunner&);
 
 } // namespace bp

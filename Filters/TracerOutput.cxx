@@ -154,7 +154,8 @@ void storeComponentRanges(
   perComponent->SetNumberOfInformationObjects(int(r.size()));
   for (std::size_t c = 0; c < r.size(); ++c)
   {
-    perComponent->GetInformationObject(int(c))->Set(vtkDataArray::COMPONENT_RANGE(), r[c].data(), 2);
+    perComponent->GetInformationObject(int(c))->Set(
+      vtkDataArray::COMPONENT_RANGE(), r[c].data(), 2);
   }
   info->Set(key, perComponent);
 }
@@ -317,7 +318,19 @@ void fillDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContex
 {
   if (row.id == bp::OutputArrayId::Speed)
   {
-    const float* v = floats(c.array(bp::OutputArrayId::Velocity));
+    std::vector<float> sampled; // Velocity's values when the output leaves it out
+    const float* v = nullptr;
+    if (vtkDataArray* velocity = c.array(bp::OutputArrayId::Velocity))
+    {
+      v = floats(velocity);
+    }
+    else
+    {
+      sampled.resize(3 * c.engine.particleCount());
+      bp::sampleAtPositions(c.field, c.frame.time, c.engine.positions().data(),
+        c.engine.particleCount(), sampled.data(), nullptr, c.run);
+      v = sampled.data();
+    }
     float* speed = floats(out);
     vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
       [&](vtkIdType begin, vtkIdType end)
@@ -485,12 +498,6 @@ vtkSmartPointer<vtkDataArray> OutputStorage::pointData(int dataType, vtkIdType c
   }
   kept.push_back(a);
   return a;
-}
-
-bool OutputFrame::wants(const bp::OutputArray& row) const
-{
-  // The optional rows and the properties that ask for them.
-  return !row.optional || (row.id == bp::OutputArrayId::Vorticity && this->computeVorticity);
 }
 
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,

@@ -40,10 +40,17 @@ struct OutputFrame
   double reach = 0.0;      ///< the largest world |coordinate| in the field
   double cellLength = 1.0; ///< of the local grid (for the points' precision)
   int coloringAxis = 2;    ///< for Layer and Radius
-  bool computeVorticity = true;
+  /// Per row of the table, by id: whether the output carries it (the
+  /// tracer's Output Arrays and Compute Vorticity).
+  std::array<bool, std::size_t(bp::OutputArrayId::Count)> wanted = everyArray();
 
-  /// Whether the output carries `row`: every row but the optional ones not asked for.
-  bool wants(const bp::OutputArray& row) const;
+  bool wants(const bp::OutputArray& row) const { return this->wanted[std::size_t(row.id)]; }
+  static std::array<bool, std::size_t(bp::OutputArrayId::Count)> everyArray()
+  {
+    std::array<bool, std::size_t(bp::OutputArrayId::Count)> all;
+    all.fill(true);
+    return all;
+  }
 };
 
 /**

@@ -2,6 +2,7 @@
 #include "vtkBoundParticleTracer.h"
 
 #include "ElementTemplate.h"
+#include "OutputArrays.h"
 #include "TraceSettings.h"
 #include "vtkBoundParticleTracerInternals.h"
 
@@ -15,6 +16,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -299,6 +301,58 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   request->Remove(SDDP::CONTINUE_EXECUTING());
   const Pass shown = I.show(this, output);
   return shown.kind == Pass::Done ? 1 : end(shown);
+}
+
+int vtkBoundParticleTracer::GetNumberOfOutputArrays()
+{
+  return int(bp::outputArrays().size());
+}
+
+const char* vtkBoundParticleTracer::GetOutputArrayName(int index)
+{
+  const auto& rows = bp::outputArrays();
+  return index >= 0 && std::size_t(index) < rows.size() ? rows[std::size_t(index)].name : nullptr;
+}
+
+int vtkBoundParticleTracer::GetOutputArrayStatus(const char* name)
+{
+  return name &&
+      std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), name) ==
+        this->OmittedArrays.end()
+    ? 1
+    : 0;
+}
+
+void vtkBoundParticleTracer::SetOutputArrayStatus(const char* name, int status)
+{
+  if (!name || this->GetOutputArrayStatus(name) == (status ? 1 : 0))
+  {
+    return;
+  }
+  if (status)
+  {
+    this->OmittedArrays.erase(
+      std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), name));
+  }
+  else
+  {
+    this->OmittedArrays.emplace_back(name);
+  }
+  this->Modified();
+}
+
+void vtkBoundParticleTracer::DisableAllOutputArrays()
+{
+  std::vector<std::string> all;
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    all.emplace_back(row.name);
+  }
+  if (all != this->OmittedArrays)
+  {
+    this->OmittedArrays = all;
+    this->Modified();
+  }
 }
 
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)

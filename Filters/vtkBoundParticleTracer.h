@@ -39,6 +39,8 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkInformationIntegerKey;
 class vtkInformationIntegerRequestKey;
@@ -265,9 +267,27 @@ public:
   ///@}
 
   ///@{
-  /// Whether the output carries the Vorticity point array (|curl v| at each
-  /// particle). It costs six field samples per particle per output, more than
-  /// an RK4 step: turn it off when nothing is coloured by it. Default on.
+  /**
+   * Which point arrays the CPU output carries, by name (the rows of
+   * Core/OutputArrays.h; all by default). An array left out is not computed,
+   * which is what makes a frame of Play cheaper: the field samples behind
+   * Velocity, Speed and Vorticity cost about a step of the engine per output.
+   * Changing the selection changes the output only, never the trace. The
+   * GPU display colours by any of them, whatever this says.
+   */
+  int GetNumberOfOutputArrays();
+  const char* GetOutputArrayName(int index);
+  int GetOutputArrayStatus(const char* name);
+  void SetOutputArrayStatus(const char* name, int status);
+  /// Switches every output array off (the property's clean command: the
+  /// names it then sets are the ones switched on).
+  void DisableAllOutputArrays();
+  ///@}
+
+  ///@{
+  /// Whether the output carries the Vorticity point array (|curl v| of the
+  /// field's interpolant at each particle), the same as Vorticity's status in
+  /// the output arrays (both must be on). Default on.
   vtkSetMacro(ComputeVorticity, vtkTypeBool);
   vtkGetMacro(ComputeVorticity, vtkTypeBool);
   vtkBooleanMacro(ComputeVorticity, vtkTypeBool);
@@ -362,6 +382,7 @@ protected:
   int ColoringAxis = 2;
   vtkTypeBool ComputeVorticity = true;
   int Engine = CPU;
+  std::vector<std::string> OmittedArrays; ///< output arrays switched off, by name
 
 private:
   vtkBoundParticleTracer(const vtkBoundParticleTracer&) = delete;

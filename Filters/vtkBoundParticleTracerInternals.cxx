@@ -501,7 +501,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::show(
     }
     frame.cellLength = this->Grid.cellLength();
     frame.coloringAxis = self->ColoringAxis;
-    frame.computeVorticity = self->ComputeVorticity != 0;
+    for (const bp::OutputArray& row : bp::outputArrays())
+    {
+      frame.wanted[std::size_t(row.id)] = self->GetOutputArrayStatus(row.name) != 0 &&
+        (row.id != bp::OutputArrayId::Vorticity || self->ComputeVorticity);
+    }
     bpvtk::fillParticleOutput(output, *particles, field, frame, this->Storage, bpvtk::smpRunner());
   }
   else

@@ -9,6 +9,7 @@
 
 #include "vtkActor.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerRequestKey.h"
@@ -18,8 +19,6 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
-#include "vtkView.h"
-#include "vtkExecutive.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
@@ -29,6 +28,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTransform.h"
+#include "vtkView.h"
 
 #include <algorithm>
 #include <set>
@@ -98,15 +98,16 @@ vtkAlgorithm* FirstProducer(vtkAlgorithm* consumer)
 /// in this process).
 bool NeedsElements(vtkDataRepresentation* consumer)
 {
-  if (consumer->IsA("vtkPVGridAxes3DRepresentation") || consumer->IsA("vtkPolarAxesRepresentation") ||
-    consumer->IsA("vtkSelectionRepresentation") || consumer->IsA("vtkPVCompositeRepresentation"))
+  if (consumer->IsA("vtkPVGridAxes3DRepresentation") ||
+    consumer->IsA("vtkPolarAxesRepresentation") || consumer->IsA("vtkSelectionRepresentation") ||
+    consumer->IsA("vtkPVCompositeRepresentation"))
   {
     return false;
   }
   vtkAlgorithm* producer = FirstProducer(consumer);
-  const bool selectionHighlight = std::string(consumer->GetClassName()) ==
-      "vtkGeometryRepresentation" &&
-    producer && producer->IsA("vtkPVExtractSelection");
+  const bool selectionHighlight =
+    std::string(consumer->GetClassName()) == "vtkGeometryRepresentation" && producer &&
+    producer->IsA("vtkPVExtractSelection");
   return !selectionHighlight;
 }
 
@@ -139,7 +140,8 @@ bool Reaches(vtkAlgorithm* algorithm, vtkAlgorithm* source, std::set<vtkAlgorith
 bool vtkBoundParticleRepresentation::ViewHasOtherConsumers()
 {
   vtkView* view = this->GetView();
-  vtkAlgorithm* source = this->GetNumberOfInputConnections(0) ? this->GetInputAlgorithm(0, 0) : nullptr;
+  vtkAlgorithm* source =
+    this->GetNumberOfInputConnections(0) ? this->GetInputAlgorithm(0, 0) : nullptr;
   if (!view || !source)
   {
     return true; // nothing to tell: assume someone needs the elements

@@ -9,8 +9,8 @@
  * output gets the CPU result. When nothing else in its view draws from the
  * data, it takes the request back only when the view renders: its own
  * decorations (the axes grid, the selection), which update in between, then
- * get the GPU output's bounds and ranges instead of a CPU step per frame. With the tracer's Engine set to GPU the input
- * then carries no particles, only the queue's id, and the
+ * get the GPU output's bounds and ranges instead of a CPU step per frame. With the tracer's Engine
+ * set to GPU the input then carries no particles, only the queue's id, and the
  * vtkOpenGLBoundParticleMapper runs the recorded work and draws the GPU
  * state; otherwise (Engine CPU, or after a GPU failure) it draws the CPU
  * polydata with a plain polydata mapper, coloured the same way.

@@ -8,7 +8,8 @@ that nothing a user colours by changed for it:
   blended between time steps), Speed from Velocity;
 - every range ParaView reads (per component, finite, magnitude) against numpy,
   and a Surface display coloured by each array rescales to that range;
-- an earlier frame held by someone else is never overwritten.
+- an earlier frame held by someone else is never overwritten;
+- Output Arrays: only the arrays asked for, the same values, the same trace.
 """
 import os
 import sys
@@ -158,5 +159,37 @@ for flow_name in ("Shear Layer", "Double Gyre"):
     Delete(view)
     Delete(tracer)
     Delete(flow)
+
+# Output Arrays: only the arrays asked for, each as in the full output; the
+# trace itself is the same whatever is asked for.
+flow = AnalyticFlow(Flow="Double Gyre", Resolution=[24, 20, 12])
+full = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4)
+narrow = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4,
+                             OutputArrays=["Force", "Speed"])
+t = list(full.TimestepValues)[5]
+for tracer in (full, narrow):
+    tracer.UpdatePipeline(t)
+whole = full.GetClientSideObject().GetOutputDataObject(0)
+part = narrow.GetClientSideObject().GetOutputDataObject(0)
+names = sorted(part.GetPointData().GetArrayName(i) for i in range(part.GetPointData().GetNumberOfArrays()))
+bptest.check(names == ["Force", "Speed"], "Output Arrays Force, Speed: the output has %s" % names)
+bptest.check(np.array_equal(vtk_to_numpy(part.GetPoints().GetData()),
+                            vtk_to_numpy(whole.GetPoints().GetData())),
+             "the trace does not depend on the output arrays")
+for name in ("Force", "Speed"):
+    bptest.check(np.array_equal(vtk_to_numpy(part.GetPointData().GetArray(name)),
+                                vtk_to_numpy(whole.GetPointData().GetArray(name))),
+                 "%s is the same with Velocity left out" % name)
+narrow.OutputArrays = ["Vorticity"]
+narrow.UpdatePipeline(t)
+part = narrow.GetClientSideObject().GetOutputDataObject(0)
+bptest.check(np.array_equal(vtk_to_numpy(part.GetPointData().GetArray("Vorticity")),
+                             vtk_to_numpy(whole.GetPointData().GetArray("Vorticity"))),
+             "Vorticity is the same with Velocity left out")
+narrow.ComputeVorticity = 0
+narrow.UpdatePipeline(t)
+part = narrow.GetClientSideObject().GetOutputDataObject(0)
+bptest.check(part.GetPointData().GetArray("Vorticity") is None,
+             "Compute Vorticity off leaves Vorticity out even when ticked")
 
 bptest.finish()
