@@ -7,7 +7,9 @@ For each element count, engine and display, one process, side by side:
 - draw:   Render again with only the camera moved (no step, no new data).
 The targets (issue 16): with the CPU engine, frame <= 1.3 x (update + draw)
 and update <= 1.5 x step; with the GPU engine no CPU step per frame, so the
-frame costs the GPU passes plus the draw. Medians over the frames after a
+frame costs the GPU passes plus the draw. The CPU rows run twice: with every
+output array (the default) and with Output Arrays cut to what is drawn
+(Normals for the shading, Force for the colour). Medians over the frames after a
 warm-up; the 128^3 shear layer, Strip16, one step per frame, coloured by
 Force, 1024x768.
 
@@ -45,11 +47,18 @@ def median_ms(values):
     return 1e3 * statistics.median(values)
 
 
-def new_tracer(count, engine):
-    return BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=count,
-                               StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
-                               Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
-                               Engine=engine)
+ALL = None
+DRAWN = ["Normals", "Force"]
+
+
+def new_tracer(count, engine, arrays=ALL):
+    tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=count,
+                                 StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
+                                 Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
+                                 Engine=engine)
+    if arrays is not None:
+        tracer.OutputArrays = arrays
+    return tracer
 
 
 def new_view():
@@ -61,9 +70,9 @@ def new_view():
     return view
 
 
-def engine_costs(count):
+def engine_costs(count, arrays=ALL):
     """update and step of the CPU engine, nothing shown."""
-    tracer = new_tracer(count, "CPU")
+    tracer = new_tracer(count, "CPU", arrays)
     times = list(tracer.TimestepValues)
     tracer.UpdatePipeline(times[0])
     updates = []
@@ -78,9 +87,9 @@ def engine_costs(count):
     return median_ms(updates[warmup:]), 1e3 * step
 
 
-def display_costs(count, engine, representation):
+def display_costs(count, engine, representation, arrays=ALL):
     """frame and draw of one engine and display."""
-    tracer = new_tracer(count, engine)
+    tracer = new_tracer(count, engine, arrays)
     view = new_view()
     shown = Show(tracer, view)
     shown.SetRepresentationType(representation)
@@ -108,21 +117,24 @@ def display_costs(count, engine, representation):
 rows = []
 print("Play in ParaView: %d^3 shear layer, Strip16, one step per frame, coloured by Force, "
       "1024x768; medians of %d frames, ms" % (res, frames))
-header = ("elements", "engine", "display", "frame", "update", "step", "draw",
+header = ("elements", "engine", "display", "arrays", "frame", "update", "step", "draw",
           "frame/(update+draw)", "update/step")
-print("%9s %-6s %-15s %8s %8s %8s %8s %20s %12s" % header)
+print("%9s %-6s %-15s %-6s %8s %8s %8s %8s %20s %12s" % header)
 for count in [int(c) for c in args.counts.split(",")]:
-    update, step = engine_costs(count)
-    for engine, representation in (("CPU", "Surface"), ("CPU", "Bound Particles"),
-                                   ("GPU", "Bound Particles")):
-        frame, draw = display_costs(count, engine, representation)
+    costs = {label: engine_costs(count, arrays) for label, arrays in (("all", ALL), ("drawn", DRAWN))}
+    for engine, representation, label, arrays in (
+            ("CPU", "Surface", "all", ALL), ("CPU", "Surface", "drawn", DRAWN),
+            ("CPU", "Bound Particles", "all", ALL), ("CPU", "Bound Particles", "drawn", DRAWN),
+            ("GPU", "Bound Particles", "all", ALL)):
+        update, step = costs[label]
+        frame, draw = display_costs(count, engine, representation, arrays)
         # The GPU engine steps in the draw of a new time, not in an update.
         own_update = update if engine == "CPU" else 0.0
         ratio = frame / (own_update + draw)
-        row = (count, engine, representation, frame, own_update, step, draw, ratio,
+        row = (count, engine, representation, label, frame, own_update, step, draw, ratio,
                update / step if engine == "CPU" else float("nan"))
         rows.append(row)
-        print("%9d %-6s %-15s %8.1f %8.1f %8.1f %8.1f %20.2f %12.2f" % row, flush=True)
+        print("%9d %-6s %-15s %-6s %8.1f %8.1f %8.1f %8.1f %20.2f %12.2f" % row, flush=True)
 
 if args.csv:
     with open(args.csv, "w") as out:
