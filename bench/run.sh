@@ -20,10 +20,11 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" \
   --csv "$out/play_frames.csv" | tee "$out/play_frames.txt"
+/usr/bin/python3 "$root/bench/plot_play.py" "$out/play_frames.csv" "$out/play_frames.png"
 # Steps per second under pvbatch with 1, 2 and 4 MPI ranks (and 1 rank of 2 threads).
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scaling.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_scaling.txt"
 # How evenly 2 and 4 ranks share the elements over a hurricane run.
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_balance.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_balance.txt"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt"
+echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/parallel_scaling.txt, $out/parallel_balance.txt"
