@@ -392,15 +392,7 @@ float VectorField::timeWeight(double t) const
 void VectorField::gradient(
   const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const
 {
-  const std::size_t sx = this->Stride[0], sy = this->Stride[1], sz = this->Stride[2];
-  const float* c000 = data + 3 * base;
-  const float* c100 = data + 3 * (base + sx);
-  const float* c010 = data + 3 * (base + sy);
-  const float* c110 = data + 3 * (base + sx + sy);
-  const float* c001 = data + 3 * (base + sz);
-  const float* c101 = data + 3 * (base + sx + sz);
-  const float* c011 = data + 3 * (base + sy + sz);
-  const float* c111 = data + 3 * (base + sx + sy + sz);
+  const auto [c000, c100, c010, c110, c001, c101, c011, c111] = this->cornersOf(data, base);
   for (int k = 0; k < 3; ++k)
   {
     // Along x: the four x edges' differences, interpolated in y then z.

@@ -191,6 +191,9 @@ private:
   /// The cell index and the position within it along axis a.
   inline void locate(int a, float x, std::size_t& cell, float& fraction) const;
   void locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const;
+  /// The cell's eight grid points in `data`, x fastest: c000, c100, c010, c110,
+  /// c001, c101, c011, c111 (coincident along a flat axis).
+  inline std::array<const float*, 8> cornersOf(const float* data, std::size_t base) const;
   /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
   inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
   /// The velocity's derivatives d[a][k] = d v_k / d x_a of that interpolant,
@@ -244,18 +247,18 @@ inline void VectorField::locate(int a, float x, std::size_t& cell, float& fracti
   cell = std::size_t(i);
 }
 
+inline std::array<const float*, 8> VectorField::cornersOf(const float* data, std::size_t base) const
+{
+  const std::size_t sx = this->Stride[0], sy = this->Stride[1], sz = this->Stride[2];
+  return { data + 3 * base, data + 3 * (base + sx), data + 3 * (base + sy),
+    data + 3 * (base + sx + sy), data + 3 * (base + sz), data + 3 * (base + sx + sz),
+    data + 3 * (base + sy + sz), data + 3 * (base + sx + sy + sz) };
+}
+
 inline void VectorField::interpolate(
   const float* data, std::size_t base, const float f[3], float v[3]) const
 {
-  const std::size_t sx = this->Stride[0], sy = this->Stride[1], sz = this->Stride[2];
-  const float* c000 = data + 3 * base;
-  const float* c100 = data + 3 * (base + sx);
-  const float* c010 = data + 3 * (base + sy);
-  const float* c110 = data + 3 * (base + sx + sy);
-  const float* c001 = data + 3 * (base + sz);
-  const float* c101 = data + 3 * (base + sx + sz);
-  const float* c011 = data + 3 * (base + sy + sz);
-  const float* c111 = data + 3 * (base + sx + sy + sz);
+  const auto [c000, c100, c010, c110, c001, c101, c011, c111] = this->cornersOf(data, base);
   for (int k = 0; k < 3; ++k)
   {
     const float x00 = c000[k] + f[0] * (c100[k] - c000[k]);
