@@ -458,6 +458,64 @@ std::vector<Pair> meshSprings(
   return springs;
 }
 
+std::vector<std::uint32_t> triangleStrip(const ElementTemplate& shape)
+{
+  const auto& triangles = shape.triangles;
+  if (triangles.size() < 2 || triangles.size() > MaxStripTriangles)
+  {
+    return {};
+  }
+  // Each triangle by its directed edges (a -> b in its counter-clockwise order).
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> byEdge;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int q = 0; q < 3; ++q)
+    {
+      byEdge[{ triangles[t][q], triangles[t][(q + 1) % 3] }] = t;
+    }
+  }
+  for (std::size_t first = 0; first < triangles.size(); ++first)
+  {
+    for (int q = 0; q < 3; ++q)
+    {
+      const auto& t0 = triangles[first];
+      std::vector<std::uint32_t> s = { t0[q], t0[(q + 1) % 3], t0[(q + 2) % 3] };
+      std::vector<bool> used(triangles.size(), false);
+      used[first] = true;
+      for (std::size_t k = 1; k < triangles.size(); ++k)
+      {
+        // Strip triangle k starts with this directed edge.
+        const auto edge = k % 2 ? std::make_pair(s[k + 1], s[k]) : std::make_pair(s[k], s[k + 1]);
+        const auto found = byEdge.find(edge);
+        if (found == byEdge.end() || used[found->second])
+        {
+          break;
+        }
+        used[found->second] = true;
+        const auto& t = triangles[found->second];
+        std::vector<std::uint32_t> third;
+        for (int r = 0; r < 3; ++r)
+        {
+          if (t[r] != edge.first && t[r] != edge.second)
+          {
+            third.push_back(t[r]);
+          }
+        }
+        if (third.size() != 1)
+        {
+          break; // a degenerate triangle
+        }
+        s.push_back(third[0]);
+      }
+      if (s.size() == triangles.size() + 2)
+      {
+        return s;
+      }
+    }
+  }
+  return {};
+}
+
 ElementTemplate makeTemplate(const std::string& name, const std::vector<Point>& points,
   const std::vector<Tri>& triangles, const std::vector<Pair>& springPairs)
 {

@@ -102,6 +102,17 @@ ElementTemplate makeTemplate(const std::string& name,
   const std::vector<std::array<std::uint32_t, 3>>& triangles,
   const std::vector<std::array<std::uint32_t, 2>>& springPairs);
 
+/**
+ * The template's triangles as one triangle strip, the way VTK reads a strip
+ * (triangle k is s[k], s[k+1], s[k+2], the first two swapped when k is odd):
+ * every triangle once, with its winding, in any order. Empty when they form
+ * no strip (or are more than `MaxStripTriangles`). The output then has one
+ * cell per element instead of one per triangle, which ParaView's geometry
+ * filter and mappers walk cell by cell every frame.
+ */
+std::vector<std::uint32_t> triangleStrip(const ElementTemplate& shape);
+constexpr std::size_t MaxStripTriangles = 1024;
+
 } // namespace bp
 
 #endif

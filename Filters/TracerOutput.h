@@ -80,7 +80,7 @@ private:
 
   vtkSmartPointer<vtkCellArray> Cells;
   vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
-  int Kind = -1;                           ///< 0 vertices, 1 lines, 2 triangles
+  int Kind = -1; ///< 0 vertices, 1 lines, 2 triangles, 3 one triangle strip per element
   std::size_t Elements = 0;
   /// Per array of the table (by id), then the points' storage last.
   std::array<std::vector<vtkSmartPointer<vtkDataArray>>, std::size_t(bp::OutputArrayId::Count) + 1>

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace
 {
@@ -192,4 +194,64 @@ TEST(ElementTemplate, GpuTextureLimitsNameWhatDoesNotFit)
   const std::string error = bp::gpuTextureError(big, 10, 16384);
   EXPECT_NE(error.find("template"), std::string::npos) << error;
   EXPECT_NE(error.find("at most 8192 particles"), std::string::npos) << error;
+}
+
+namespace
+{
+/// The triangles VTK reads from strip s, each rotated to start at its smallest vertex.
+std::multiset<std::array<std::uint32_t, 3>> stripTriangles(const std::vector<std::uint32_t>& s)
+{
+  std::multiset<std::array<std::uint32_t, 3>> out;
+  for (std::size_t k = 0; k + 2 < s.size(); ++k)
+  {
+    std::array<std::uint32_t, 3> t = k % 2
+      ? std::array<std::uint32_t, 3>{ s[k + 1], s[k], s[k + 2] }
+      : std::array<std::uint32_t, 3>{ s[k], s[k + 1], s[k + 2] };
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.insert(t);
+  }
+  return out;
+}
+
+std::multiset<std::array<std::uint32_t, 3>> templateTriangles(const bp::ElementTemplate& shape)
+{
+  std::multiset<std::array<std::uint32_t, 3>> out;
+  for (auto t : shape.triangles)
+  {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.insert(t);
+  }
+  return out;
+}
+} // namespace
+
+TEST(ElementTemplate, StripsAreOneTriangleStripWithTheSameTriangles)
+{
+  for (auto shape : { bp::BuiltinShape::Square, bp::BuiltinShape::Strip4, bp::BuiltinShape::Strip8,
+         bp::BuiltinShape::Strip16 })
+  {
+    const bp::ElementTemplate t = bp::builtinTemplate(shape);
+    const std::vector<std::uint32_t> strip = bp::triangleStrip(t);
+    ASSERT_EQ(strip.size(), t.triangles.size() + 2) << t.name;
+    EXPECT_EQ(stripTriangles(strip), templateTriangles(t))
+      << t.name << ": same triangles, same winding";
+  }
+  // Shapes whose triangles form no single strip keep their triangles.
+  for (auto shape :
+    { bp::BuiltinShape::Cross, bp::BuiltinShape::Paddlewheel, bp::BuiltinShape::Fish })
+  {
+    EXPECT_TRUE(bp::triangleStrip(bp::builtinTemplate(shape)).empty())
+      << bp::builtinShapeName(shape);
+  }
+  // A fan of three triangles is a strip (1 2 0 3 4); of four it is not: a
+  // strip's vertex is in at most three triangles.
+  bp::ElementTemplate fan;
+  fan.triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 } };
+  EXPECT_EQ(stripTriangles(bp::triangleStrip(fan)), templateTriangles(fan));
+  fan.triangles.push_back({ 0, 4, 5 });
+  EXPECT_TRUE(bp::triangleStrip(fan).empty());
+  // Degenerate triangles are refused, not read past.
+  bp::ElementTemplate degenerate;
+  degenerate.triangles = { { 0, 1, 2 }, { 2, 1, 1 } };
+  EXPECT_TRUE(bp::triangleStrip(degenerate).empty());
 }

@@ -93,16 +93,25 @@ TEST(BoundParticleTracer, OutputSizesAndArrays)
   const struct
   {
     int shape, particles, triangles;
-  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0 },
-    { vtkBoundParticleTracer::STRIP16, 16, 14 }, { vtkBoundParticleTracer::CROSS, 12, 10 },
-    { vtkBoundParticleTracer::FISH, 23, 40 } };
+    bool strip; ///< one triangle strip per element
+  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0, false },
+    { vtkBoundParticleTracer::STRIP16, 16, 14, true },
+    { vtkBoundParticleTracer::CROSS, 12, 10, false },
+    { vtkBoundParticleTracer::FISH, 23, 40, false } };
   for (const auto& s : shapes)
   {
     auto tracer = tracerOn(source, 37);
     tracer->SetElementShape(s.shape);
     vtkPolyData* out = at(tracer, 1.0);
     ASSERT_EQ(out->GetNumberOfPoints(), 37 * s.particles);
-    if (s.triangles)
+    if (s.strip)
+    {
+      // A strip of n points holds n - 2 triangles.
+      ASSERT_EQ(out->GetNumberOfStrips(), 37);
+      EXPECT_EQ(out->GetStrips()->GetNumberOfConnectivityIds() - 2 * 37, 37 * s.triangles);
+      EXPECT_EQ(out->GetNumberOfPolys(), 0);
+    }
+    else if (s.triangles)
     {
       EXPECT_EQ(out->GetNumberOfPolys(), 37 * s.triangles);
       EXPECT_EQ(out->GetNumberOfVerts(), 0);
