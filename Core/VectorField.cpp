@@ -447,7 +447,6 @@ void VectorField::gradientLanes(
 
 float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3]) const
 {
-  this->sampleWeighted(p, weight, v);
   std::size_t base = 0;
   float f[3], w[3];
   for (int a = 0; a < 3; ++a)
@@ -458,6 +457,7 @@ float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3
     // d(fraction)/dx: 0 along a flat axis, where nothing varies.
     w[a] = this->Rectilinear[a] ? this->AxisTable[a][2 * i + 1] : this->InverseSpacing[a];
   }
+  this->sampleCell(base, f, weight, v); // the cell is found once for both
   const bool blend = this->SecondData && weight > 0.0f;
   // d[a][k] = d v_k / d x_a
   float d[3][3];

@@ -194,6 +194,9 @@ private:
   /// The cell's eight grid points in `data`, x fastest: c000, c100, c010, c110,
   /// c001, c101, c011, c111 (coincident along a flat axis).
   inline std::array<const float*, 8> cornersOf(const float* data, std::size_t base) const;
+  /// The velocity in the located cell at `base` with fractions f, both slices
+  /// blended (sampleWeighted once the cell is found).
+  inline void sampleCell(std::size_t base, const float f[3], float weight, float v[3]) const;
   /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
   inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
   /// The velocity's derivatives d[a][k] = d v_k / d x_a of that interpolant,
@@ -339,6 +342,12 @@ inline void VectorField::sampleWeighted(const float p[3], float weight, float v[
     this->locate(a, p[a], i, f[a]);
     base += i * this->Stride[a];
   }
+  this->sampleCell(base, f, weight, v);
+}
+
+inline void VectorField::sampleCell(
+  std::size_t base, const float f[3], float weight, float v[3]) const
+{
   const bool blend = this->SecondData && weight > 0.0f;
 #if BOUNDPARTICLES_SSE2
   if (this->Stride[0] == 1)

@@ -462,7 +462,7 @@ void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine)
   }
 }
 
-vtkSmartPointer<vtkDataArray> OutputStorage::reuse(
+vtkSmartPointer<vtkDataArray> OutputStorage::take(
   std::vector<vtkSmartPointer<vtkDataArray>>& kept, int dataType, int components, vtkIdType tuples)
 {
   for (vtkSmartPointer<vtkDataArray>& a : kept)
@@ -475,17 +475,9 @@ vtkSmartPointer<vtkDataArray> OutputStorage::reuse(
       return a;
     }
   }
-  return nullptr;
-}
-
-vtkSmartPointer<vtkDataArray> OutputStorage::array(const bp::OutputArray& row, vtkIdType tuples)
-{
-  auto& kept = this->Kept[std::size_t(row.id)];
-  if (auto a = this->reuse(kept, vtkTypeOf(row.type), row.components, tuples))
-  {
-    return a;
-  }
-  vtkSmartPointer<vtkDataArray> a = newArray(row, tuples);
+  auto a = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(dataType));
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
   if (kept.size() == 2)
   {
     kept.erase(kept.begin()); // the oldest; its holders keep it alive
@@ -494,22 +486,16 @@ vtkSmartPointer<vtkDataArray> OutputStorage::array(const bp::OutputArray& row, v
   return a;
 }
 
+vtkSmartPointer<vtkDataArray> OutputStorage::array(const bp::OutputArray& row, vtkIdType tuples)
+{
+  auto a = this->take(this->Kept[std::size_t(row.id)], vtkTypeOf(row.type), row.components, tuples);
+  a->SetName(row.name);
+  return a;
+}
+
 vtkSmartPointer<vtkDataArray> OutputStorage::pointData(int dataType, vtkIdType count)
 {
-  auto& kept = this->Kept.back();
-  if (auto a = this->reuse(kept, dataType, 3, count))
-  {
-    return a;
-  }
-  auto a = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(dataType));
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(count);
-  if (kept.size() == 2)
-  {
-    kept.erase(kept.begin());
-  }
-  kept.push_back(a);
-  return a;
+  return this->take(this->Kept.back(), dataType, 3, count);
 }
 
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,

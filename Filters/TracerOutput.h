@@ -75,8 +75,10 @@ public:
   void reset() { this->Cells = nullptr; }
 
 private:
-  vtkSmartPointer<vtkDataArray> reuse(std::vector<vtkSmartPointer<vtkDataArray>>& kept,
-    int dataType, int components, vtkIdType tuples);
+  /// One of `kept` that nothing else holds and that fits, marked modified;
+  /// else a new one, kept in place of the oldest.
+  vtkSmartPointer<vtkDataArray> take(std::vector<vtkSmartPointer<vtkDataArray>>& kept, int dataType,
+    int components, vtkIdType tuples);
 
   vtkSmartPointer<vtkCellArray> Cells;
   vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
