@@ -240,11 +240,6 @@ def limit_address_space():
     resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_LIMIT, ADDRESS_LIMIT))
 
 
-# Now and then VTK fails to open the X display, a case's process then
-# aborts (scripts/with-display.sh): such a run is tried again, three in all.
-BAD_DISPLAY = "bad X server connection"
-
-
 def run_case_process(name, scratch):
     """Runs one case in its own process; (exit status, output, seconds)."""
     started = time.time()
@@ -264,11 +259,7 @@ def run_case_process(name, scratch):
 scratch_folder = tempfile.TemporaryDirectory(prefix="bp-hostile-")
 scratch = scratch_folder.name
 for name, (_, _, refusal) in CASES.items():
-    for attempt in (1, 2, 3):
-        status, out, seconds = run_case_process(name, scratch)
-        if status == 0 or BAD_DISPLAY not in out or attempt == 3:
-            break
-        print("%s could not open the display; running it again" % name)
+    status, out, seconds = run_case_process(name, scratch)
     result = None
     for line in out.splitlines():
         if line.startswith("RESULT "):

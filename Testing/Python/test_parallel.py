@@ -10,7 +10,6 @@ the Bound Particles display draws the same picture when the ranks' images are
 composited, with remote rendering on and off.
 """
 import argparse
-import contextlib
 import json
 import os
 import signal
@@ -49,37 +48,6 @@ environment = {k: v for k, v in os.environ.items()
                if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
 
 
-# Now and then VTK cannot open the Xvfb display ("bad X server connection",
-# see scripts/with-display.sh). With two to four ranks each opening it after
-# tracing, a job fails so in about one start in four here (never with VTK's
-# Sequential SMP backend, 0 in 10, so threads the ranks started and ended
-# play a part; the X server logs nothing). A job is tried up to five times,
-# each retry on a fresh X server (run()); one attempt takes seconds.
-BAD_DISPLAY = "bad X server connection"
-
-
-@contextlib.contextmanager
-def own_display():
-    """A fresh 24-bit Xvfb for one client-server attempt: a server that a
-    crashed X client left unusable is not used again. Says so when the X
-    server has died by the time the attempt ends."""
-    read_end, write_end = os.pipe()
-    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
-                             "1920x1080x24", "-nolisten", "tcp"], pass_fds=(write_end,),
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    with os.fdopen(read_end) as ready:
-        number = ready.readline().strip()
-    try:
-        bptest.check(number != "", "Xvfb started")
-        yield ":" + number
-    finally:
-        if xvfb.poll() is not None:
-            print("the attempt's X server :%s had exited (%s)" % (number, xvfb.returncode))
-        xvfb.terminate()
-        xvfb.wait()
-
-
 def run_group(command, timeout, env=None):
     """Runs a command in a process group of its own, killed whole if it runs past `timeout`
     (killing mpiexec alone could leave its ranks running)."""
@@ -99,24 +67,20 @@ def run_group(command, timeout, env=None):
 JOB_LIMIT = 120
 
 
-def run(command, name, display_tries=5, hang_tries=2, env=None):
-    """Runs a job; one whose ranks could not open the X display runs again on
-    an X server of its own (a retry on the same server failed every time
-    when CI's shared one had stopped taking connections)."""
+def run(command, name, hang_tries=2):
+    """Runs a job; one killed at the job limit runs again once."""
     print("running", " ".join(command), flush=True)
     started = time.time()
-    done = run_group(command, JOB_LIMIT, env)
+    done = run_group(command, JOB_LIMIT)
     print(done.stdout[-3000:])
     print("%s took %.1f s" % (name, time.time() - started))
-    if done.returncode != 0 and display_tries > 1 and BAD_DISPLAY in done.stdout:
-        with own_display() as display:
-            print("%s could not open the display; running it again on X display %s"
-                  % (name, display))
-            fresh = dict(env or environment, DISPLAY=display)
-            return run(command, name, display_tries - 1, hang_tries, fresh)
+    if done.returncode != 0:  # the tail may hold only the other ranks' stack traces
+        print("%s's errors:\n" % name + "\n".join(
+            line for line in done.stdout.splitlines()
+            if "ERR|" in line or "FATL|" in line or "Abort" in line))
     if done.stdout.endswith("(killed after %d s)" % JOB_LIMIT) and hang_tries > 1:
         print("%s ran past %d s; running it again" % (name, JOB_LIMIT))
-        return run(command, name, display_tries, hang_tries - 1, env)
+        return run(command, name, hang_tries - 1)
     bptest.check(done.returncode == 0, "%s exited with %d" % (name, done.returncode))
     return done
 
@@ -266,18 +230,12 @@ if args.mode == "batch":
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
-    def client_server(attempt):
-        """A two-rank pvserver and a pvpython client on an X server of their own;
-        False if a rank could not open the display."""
-        with own_display() as display:
-            print("client-server attempt %d on X display %s" % (attempt, display))
-            return client_server_on(attempt, dict(environment, DISPLAY=display))
-
-    def client_server_on(attempt, environment):
+    def client_server():
+        """A two-rank pvserver and a pvpython client traced and rendered."""
         with socket.socket() as sock:
             sock.bind(("127.0.0.1", 0))
             port = sock.getsockname()[1]
-        log_path = os.path.join(args.output, "pvserver-%d.log" % attempt)
+        log_path = os.path.join(args.output, "pvserver.log")
         with open(log_path, "w") as log:
             server = subprocess.Popen(
                 mpiexec + ["-n", "2", args.pvserver, "--server-port=%d" % port],
@@ -312,17 +270,11 @@ else:
         if client.returncode != 0:
             print("the server's messages:\n" + "\n".join(
                 line for line in server_log.splitlines()
-                if "ERR|" in line or "WARN|" in line or BAD_DISPLAY in line or "Abort" in line))
-        if client.returncode != 0 and attempt < 3 and BAD_DISPLAY in server_log + client.stdout:
-            print("the server or client could not open the display; running both again")
-            return False
+                if "ERR|" in line or "WARN|" in line or "Abort" in line))
         bptest.check(client.returncode == 0, "the client exited with %d" % client.returncode)
         compare(reference, numpy.load(out) if os.path.exists(out) else None, "client-server", 2)
         compare_pictures(reference_pictures, pictures, "client-server")
-        return True
 
-    for attempt in (1, 2, 3):
-        if client_server(attempt):
-            break
+    client_server()
 
 bptest.finish()
