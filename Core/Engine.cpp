@@ -641,11 +641,11 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
     this->restore(this->Positions.data() + 3 * e * n, scratch.data() + 6 * n,
       this->Orientations.data() + 4 * e);
   }
-  this->settle(e, this->domainOf(field), h, before, advected);
+  this->settle(e, field, weights, h, before, advected);
 }
 
-void Engine::settle(
-  std::size_t e, const Domain& domain, double h, const float* before, const float* advected)
+void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
+  const float* before, const float* advected)
 {
   const std::size_t n = this->Shape.particleCount();
   float* p = this->Positions.data() + 3 * e * n;
@@ -668,7 +668,7 @@ void Engine::settle(
     {
       c[k] += q[k];
     }
-    anyOutside = anyOutside || !domain.contains(q);
+    anyOutside = anyOutside || !this->inDomain(field, q, weights.end);
   }
   bool leave;
   if (!finite)
@@ -678,20 +678,41 @@ void Engine::settle(
     std::fill_n(force, n, 0.0f);
     leave = true;
   }
-  else if (this->Params.resetWhen == ResetWhen::AnyParticleLeaves)
-  {
-    leave = anyOutside;
-  }
   else
   {
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
-    leave = !domain.contains(center);
+    leave = this->Params.resetWhen == ResetWhen::AnyParticleLeaves
+      ? anyOutside
+      : !this->inDomain(field, center, weights.end);
+    leave = leave || this->releasedStagnant(e, center, h);
   }
   // A super set's element stays (and keeps its last good positions when they
   // turn non-finite): resetting it alone would tear the structure.
   this->ResetFlags[e] = leave && this->Links.empty() ? 1 : 0;
   this->Lifetimes[e] -= float(h);
+}
+
+bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
+{
+  const Parameters& P = this->Params;
+  if (!(P.releaseMinSpeed > 0.0f) || !this->Links.empty())
+  {
+    return false;
+  }
+  // In its first step an element's lifetime is still the one drawn at its
+  // placement (compared with half a step's slack, so that both engines'
+  // roundings agree), and the centre it was placed at is its release centre.
+  const float drawn = P.lifetimeMin +
+    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
+  if (!(drawn - this->Lifetimes[e] < 0.5f * float(h)))
+  {
+    return false;
+  }
+  const float* start = this->InitialCenters.data() + 3 * e;
+  const float d[3] = { c[0] - start[0], c[1] - start[1], c[2] - start[2] };
+  const float reach = P.releaseMinSpeed * float(h);
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach;
 }
 
 void Engine::restoreLinks(std::size_t e)
@@ -791,7 +812,7 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        this->settle(e, this->domainOf(field), h, this->LinkBefore.data() + 3 * e * n,
+        this->settle(e, field, weights, h, this->LinkBefore.data() + 3 * e * n,
           this->LinkAdvected.data() + 3 * e * n);
       }
     });

@@ -17,9 +17,11 @@
  *  4. normals (computed on demand by updateNormals(): they do not feed back
  *     into the simulation, so computing them only for output is the same);
  *  5. the reposition test: flag the element when its centre (or, as an option,
- *     any particle) left the field, or a position became non-finite (then the
- *     element keeps its positions from before the step, so no NaN is ever
- *     visible); decrease the lifetime by h.
+ *     any particle) left the field or entered a cell outside the flow's
+ *     domain (DomainMask.h), when in its first step its centre moved slower
+ *     than releaseMinSpeed (released where the flow stands still), or when a
+ *     position became non-finite (then the element keeps its positions from
+ *     before the step, so no NaN is ever visible); decrease the lifetime by h.
  *
  * Elements touch disjoint memory, so a step runs over element ranges in
  * parallel and gives the same bits for any number of threads.
@@ -97,6 +99,10 @@ struct Parameters
   int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
   float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  /// An element whose centre moves slower than this over its first step
+  /// (in world units per time unit) was released where the flow stands
+  /// still, and is released again at the next step; 0 keeps every release.
+  float releaseMinSpeed = 0.0f;
   std::uint32_t seed = 0;
 };
 
@@ -237,8 +243,17 @@ private:
   std::size_t restorationScratchFloats() const;
   /// Forces (unless `advected` is null), the reposition test and the
   /// lifetime after restoration.
-  void settle(
-    std::size_t e, const Domain& domain, double h, const float* before, const float* advected);
+  void settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
+    const float* before, const float* advected);
+  /// Whether p is in the domain after a step: in the bounds, in a cell
+  /// inside the flow's domain (DomainMask.h).
+  bool inDomain(const VectorField& field, const float p[3], float weight) const
+  {
+    return this->domainOf(field).contains(p) && !field.outsideCellAt(p, weight);
+  }
+  /// Whether element e, in its first step since it was placed, moved its
+  /// centre `c` slower than releaseMinSpeed.
+  bool releasedStagnant(std::size_t e, const float c[3], double h) const;
   const Domain& domainOf(const VectorField& field) const
   {
     return this->HasDomain ? this->DomainBox : field.domain();

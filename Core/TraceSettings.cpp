@@ -161,6 +161,11 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   r.parameters.frame =
     rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
   r.parameters.elementSize = float(r.elementSize);
+  if (!(s.minimumReleaseSpeed >= 0.0 && s.minimumReleaseSpeed <= 1.0))
+  {
+    return failure("MinimumReleaseSpeed must be a fraction of the top speed in [0, 1].");
+  }
+  r.parameters.releaseMinSpeed = float(s.minimumReleaseSpeed * std::max(f.maxSpeed, 0.0));
   resolveEmitter(s, f, r);
   const std::string emitterError = checkEmitter(s, f, r.parameters);
   if (!emitterError.empty())

@@ -35,6 +35,9 @@ struct TraceSettings
   std::array<double, 2> lifetimeRange = { 0, 0 };      ///< (0, 0): automatic
   double stepSize = 0.5;
   bool stepInCellLengths = true; ///< else stepSize is in the data's time units
+  /// Releases slower than this fraction of the top speed are released again
+  /// (Parameters::releaseMinSpeed).
+  double minimumReleaseSpeed = 0.01;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
   /// resolveSettings() fills in the rest of it.

@@ -234,6 +234,14 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
 {
   this->FirstData = this->First.velocity ? this->First.velocity->data() : nullptr;
   this->SecondData = this->Second.velocity ? this->Second.velocity->data() : nullptr;
+  // A mask that does not fit the grid is ignored (validate() says so).
+  auto outside = [&grid](const FieldSlice& s) -> const std::uint8_t*
+  {
+    return s.outsideCells && s.outsideCells->size() == grid.pointCount() ? s.outsideCells->data()
+                                                                         : nullptr;
+  };
+  this->FirstOutside = outside(this->First);
+  this->SecondOutside = this->SecondData ? outside(this->Second) : nullptr;
   std::size_t stride = 1;
   for (int a = 0; a < 3; ++a)
   {
@@ -311,6 +319,10 @@ std::string VectorField::validate() const
     {
       return "the vector array does not have one 3-component tuple per grid point";
     }
+    if (s->outsideCells && s->outsideCells->size() != this->Grid.pointCount())
+    {
+      return "the domain mask does not have one value per grid point";
+    }
     const std::vector<float>& v = *s->velocity;
     for (std::size_t i = 0; i < v.size(); ++i)
     {
@@ -377,6 +389,24 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
     c.rectilinear[a] = !this->AxisTable[a].empty();
   }
   return c;
+}
+
+bool VectorField::outsideCellAt(const float p[3], float weight) const
+{
+  if (!this->FirstOutside && !this->SecondOutside)
+  {
+    return false;
+  }
+  std::size_t base = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    std::size_t i;
+    float f;
+    this->locate(a, p[a], i, f);
+    base += i * this->Stride[a];
+  }
+  return (this->FirstOutside && this->FirstOutside[base]) ||
+    (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);
 }
 
 float VectorField::timeWeight(double t) const

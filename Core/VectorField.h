@@ -108,6 +108,9 @@ struct FieldSlice
 {
   double time = 0.0;
   std::shared_ptr<const std::vector<float>> velocity;
+  /// Per grid point as a cell's lowest corner: 1 where that cell is outside
+  /// the flow's domain (DomainMask.h); null when no cell is.
+  std::shared_ptr<const std::vector<std::uint8_t>> outsideCells;
 };
 
 class VectorField
@@ -147,6 +150,11 @@ public:
 
   /// Whether p lies in the grid's bounds (axes of one point are ignored).
   bool contains(const float p[3]) const { return this->Bounds.contains(p); }
+  /// Whether the cell that holds p is outside the flow's domain in the
+  /// first slice, or in the second where it weighs anything (DomainMask.h).
+  bool outsideCellAt(const float p[3], float weight) const;
+  /// Whether any slice marks cells outside the domain.
+  bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
   /// The grid's bounds as a Domain.
   const Domain& domain() const { return this->Bounds; }
 
@@ -228,8 +236,10 @@ private:
   Domain Bounds;
   std::size_t Stride[3];
   std::array<std::vector<float>, 3> AxisTable;
-  const float* FirstData = nullptr;  ///< First.velocity's values
-  const float* SecondData = nullptr; ///< Second.velocity's, or null when steady
+  const float* FirstData = nullptr;            ///< First.velocity's values
+  const float* SecondData = nullptr;           ///< Second.velocity's, or null when steady
+  const std::uint8_t* FirstOutside = nullptr;  ///< First.outsideCells', or null
+  const std::uint8_t* SecondOutside = nullptr; ///< Second.outsideCells', or null
 };
 
 inline void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TracerInput.h"
 
+#include "DomainMask.h"
+
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -131,9 +133,32 @@ std::string checkTemplateCells(vtkPolyData* mesh, bp::MeshSprings mode)
 
 namespace bpvtk
 {
-std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
-  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6])
+namespace
 {
+/// The input's vtkValidPointMask (ParaView's resampling writes it: 0 where a
+/// point lies outside the source's domain) as one byte per point; empty
+/// without one, or with one of another length or width.
+std::vector<std::uint8_t> validPointMask(vtkDataSet* data)
+{
+  vtkDataArray* mask = data->GetPointData()->GetArray("vtkValidPointMask");
+  std::vector<std::uint8_t> valid;
+  if (!mask || mask->GetNumberOfComponents() != 1 ||
+    mask->GetNumberOfTuples() != data->GetNumberOfPoints())
+  {
+    return valid;
+  }
+  valid.resize(std::size_t(mask->GetNumberOfTuples()));
+  const auto values = vtk::DataArrayValueRange<1>(mask);
+  std::transform(values.begin(), values.end(), valid.begin(),
+    [](double v) { return std::uint8_t(v != 0.0 ? 1 : 0); });
+  return valid;
+}
+} // namespace
+
+std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints)
+{
+  nonFinitePoints = 0;
   std::ostringstream err;
   vtkImageData* image = vtkImageData::SafeDownCast(input);
   vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(input);
@@ -228,7 +253,17 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   {
     CopyToFloat{}(vectors, *values);
   }
+  const std::vector<std::uint8_t> valid = validPointMask(dataSet);
+  const bp::DomainMask mask =
+    bp::maskOutsidePoints(g, *values, valid.empty() ? nullptr : valid.data());
+  nonFinitePoints = mask.nonFinitePoints;
+  if (mask.outsidePoints == g.pointCount())
+  {
+    return "Every point of the input is outside the flow's domain (its vector is NaN or Inf, "
+           "or vtkValidPointMask is 0 there): there is no flow to trace.";
+  }
   slice.velocity = values;
+  slice.outsideCells = mask.outsideCells;
   grid = g;
   return std::string();
 }

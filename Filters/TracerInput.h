@@ -27,10 +27,12 @@ namespace bpvtk
  * Reads `vectors` (the selected array, or null for the first 3-component
  * point array) of `input`, a vtkImageData or vtkRectilinearGrid, into a
  * field time step: its grid (world coordinates, point 0 at `grid.origin`),
- * its velocities, and the data extent it covers.
+ * its velocities, and the data extent it covers. Points where the input's
+ * vtkValidPointMask is 0 or the vector is not finite are outside the flow's
+ * domain (bp::maskOutsidePoints); `nonFinitePoints` counts the latter.
  */
 std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
-  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6]);
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints);
 
 /// The element template of a polydata (TemplateSprings: `mode`).
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out);

@@ -105,6 +105,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.lifetimeRange = { this->LifetimeRange[0], this->LifetimeRange[1] };
   s.stepSize = this->StepSize;
   s.stepInCellLengths = this->StepSizeUnit == CELL_LENGTH;
+  s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
   bp::Parameters& p = s.engine;
   p.randomOrientation = this->RandomOrientation != 0;
   p.integrator = bp::Integrator(this->Integrator);
@@ -375,6 +376,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
      << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
+  os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

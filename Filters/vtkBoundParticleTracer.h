@@ -244,6 +244,14 @@ public:
   ///@}
 
   ///@{
+  /// Releases avoid stagnant flow: an element whose centre moves slower than
+  /// this fraction of the field's top speed (at the start) over its first
+  /// step is released again. 0 keeps every release.
+  vtkSetClampMacro(MinimumReleaseSpeed, double, 0.0, 1.0);
+  vtkGetMacro(MinimumReleaseSpeed, double);
+  ///@}
+
+  ///@{
   /// Seed of the counter-based random numbers: the same seed, the same trace.
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
@@ -376,6 +384,7 @@ protected:
   int LatticeWidth = 0;
   double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
+  double MinimumReleaseSpeed = 0.01;
   int Seed = 0;
   double Duration = 10.0;
   int NumberOfTimeSteps = 101;

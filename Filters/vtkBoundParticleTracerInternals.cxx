@@ -43,6 +43,7 @@ vtkBoundParticleTracer::vtkInternals::vtkInternals()
 void vtkBoundParticleTracer::vtkInternals::invalidate()
 {
   ++this->Configuration;
+  this->WarnedNonFinite = false;
   this->Steppers.invalidate();
 }
 
@@ -139,7 +140,18 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     ? self->GetInputArrayToProcess(0, inputVector, association)
     : nullptr;
   int extent[6];
-  std::string error = bpvtk::readSlice(input, vectors, association, grid, slice, extent);
+  std::size_t nonFinite = 0;
+  std::string error = bpvtk::readSlice(input, vectors, association, grid, slice, extent, nonFinite);
+  if (error.empty() && nonFinite > 0 && !this->WarnedNonFinite)
+  {
+    // Once per configuration: an unsteady input would say it every frame.
+    this->WarnedNonFinite = true;
+    vtkWarningWithObjectMacro(
+      self, << nonFinite << " of " << grid.pointCount() << " grid points ("
+            << 100.0 * double(nonFinite) / double(grid.pointCount())
+            << "%) have a NaN or Inf vector; they count as outside the flow's domain, and elements "
+               "that reach them are released again.");
+  }
   std::array<double, 3> offset = grid.origin;
   if (this->Layout.distributed())
   {

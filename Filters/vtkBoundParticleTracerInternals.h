@@ -72,6 +72,7 @@ struct vtkBoundParticleTracer::vtkInternals
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
+  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
   const std::uint64_t ProducerId;
 
   // The update in progress.

@@ -107,6 +107,7 @@ std::string GpuFieldCache::setField(const VectorField& field)
     Slot& slot = this->slotFor(slices[k]->velocity, chosen[0], -1);
     // Whatever has not arrived by slabs arrives now, at once.
     this->uploadLayers(slot, grid, std::max(grid.dims[2], 1));
+    this->uploadOutside(slot, grid, *slices[k]);
     slot.lastUse = ++this->UseClock;
     chosen[k] = int(&slot - this->Slots.data());
   }
@@ -127,6 +128,7 @@ int GpuFieldCache::stageSlice(const FieldSlice& slice, std::size_t maxBytes)
   Slot& slot = this->slotFor(slice.velocity, this->CurrentSlots[0], this->CurrentSlots[1]);
   const std::size_t layerBytes = std::size_t(grid.dims[0]) * grid.dims[1] * 3 * sizeof(float);
   this->uploadLayers(slot, grid, int(std::max<std::size_t>(1, maxBytes / layerBytes)));
+  this->uploadOutside(slot, grid, slice); // a twelfth of the velocities: at once
   return std::max(grid.dims[2], 1) - slot.layers;
 }
 
@@ -165,6 +167,57 @@ void GpuFieldCache::applyTo(GpuPass& pass) const
   pass.texture("bpField0", this->Slots[this->CurrentSlots[0]].texture.get(), GL_TEXTURE_3D);
   pass.texture("bpField1", this->Slots[this->CurrentSlots[second]].texture.get(), GL_TEXTURE_3D);
   pass.texture("bpAxes", this->AxesTexture.get());
+  const Slot& first = this->Slots[this->CurrentSlots[0]];
+  const Slot& next = this->Slots[this->CurrentSlots[second]];
+  pass.setInt("bpMasked0", first.outside ? 1 : 0);
+  pass.setInt("bpMasked1", next.outside ? 1 : 0);
+  pass.texture("bpOutside0", this->outsideTextureOf(first), GL_TEXTURE_3D);
+  pass.texture("bpOutside1", this->outsideTextureOf(next), GL_TEXTURE_3D);
+}
+
+GLuint GpuFieldCache::outsideTextureOf(const Slot& slot) const
+{
+  return slot.outside ? slot.outsideTexture.get() : this->NoOutsideTexture.get();
+}
+
+namespace
+{
+GlTexture makeOutsideTexture(int nx, int ny, int nz, const std::uint8_t* cells)
+{
+  GLuint name = 0;
+  glGenTextures(1, &name);
+  glBindTexture(GL_TEXTURE_3D, name);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  TightUnpack unpack;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of one byte per cell, not padded to 4
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, nx, ny, nz, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, cells);
+  return GlTexture(name);
+}
+} // namespace
+
+void GpuFieldCache::uploadOutside(Slot& slot, const GridGeometry& grid, const FieldSlice& slice)
+{
+  if (!this->NoOutsideTexture)
+  {
+    const std::uint8_t inside = 0;
+    this->NoOutsideTexture = makeOutsideTexture(1, 1, 1, &inside);
+  }
+  if (slot.outside == slice.outsideCells)
+  {
+    return;
+  }
+  slot.outside = slice.outsideCells;
+  slot.outsideTexture = GlTexture();
+  if (slot.outside && slot.outside->size() == grid.pointCount())
+  {
+    slot.outsideTexture = makeOutsideTexture(
+      grid.dims[0], grid.dims[1], std::max(grid.dims[2], 1), slot.outside->data());
+  }
+  else
+  {
+    slot.outside = nullptr;
+  }
 }
 
 GpuFieldCache::Slot& GpuFieldCache::slotFor(

@@ -3,7 +3,9 @@
  * @file GpuFieldCache.h
  * @brief The field's time steps resident on the GPU, and the rectilinear axes' lookups.
  *
- * A field time step is an RGB32F 3D texture sampled exactly with texelFetch.
+ * A field time step is an RGB32F 3D texture sampled exactly with texelFetch,
+ * with, where the data marks points outside the flow's domain, an R8UI 3D
+ * texture of the cells outside it (DomainMask.h) for the reposition test.
  * At most three are resident: the two the current field interpolates
  * between, and one arriving a slab of z layers at a time (stageSlice), so
  * that moving on to the next time step does not upload a whole volume at
@@ -67,6 +69,9 @@ private:
   {
     GlTexture texture;
     std::shared_ptr<const std::vector<float>> data;
+    /// The time step's cells outside the domain (R8UI, as DomainMask.h), or none.
+    GlTexture outsideTexture;
+    std::shared_ptr<const std::vector<std::uint8_t>> outside;
     int layers = 0; ///< z layers uploaded so far
     std::uint64_t lastUse = 0;
   };
@@ -74,6 +79,10 @@ private:
   std::string checkSize(const GridGeometry& grid) const;
   Slot& slotFor(const std::shared_ptr<const std::vector<float>>& data, int keepA, int keepB);
   void uploadLayers(Slot& slot, const GridGeometry& grid, int count);
+  /// Gives the slot the time step's mask of cells outside the domain.
+  void uploadOutside(Slot& slot, const GridGeometry& grid, const FieldSlice& slice);
+  /// The mask a slot without one binds: an active sampler needs a texture.
+  GLuint outsideTextureOf(const Slot& slot) const;
   void fitSlots(const GridGeometry& grid);
   std::string uploadAxes(const VectorField& field);
 
@@ -83,7 +92,8 @@ private:
   std::uint64_t UseClock = 0;
   int CurrentSlots[2] = { -1, -1 }; ///< the current field's first and second time step
 
-  GlTexture AxesTexture; ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
+  GlTexture NoOutsideTexture; ///< one cell, inside
+  GlTexture AxesTexture;      ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
   std::array<std::vector<float>, 3> AxesTables; ///< what AxesTexture was made from
   int Bins[3] = { 1, 1, 1 };
   float BinScale[3] = { 0, 0, 0 }; ///< bins per unit of length

@@ -53,7 +53,7 @@ void GpuSystem::initialize()
   this->advect(true, 0.0, 0.0);
   // ... with no flag set and zero force, as Engine::initialize leaves them.
   const GLuint placed = this->state.advected.get();
-  this->test(placed, true, 0.0);
+  this->test(placed, true, 0.0, 0.0f);
   this->finalize(placed);
   this->updateNormals();
 }
@@ -73,7 +73,8 @@ void GpuSystem::step(double t, double h)
     positions = this->restoreOnce(positions, restorationPass);
   }
   // 5. Reposition test, then the new state.
-  this->test(positions, false, h);
+  const VectorField* field = this->fieldCache.field();
+  this->test(positions, false, h, field ? field->timeWeight(t + h) : 0.0f);
   this->finalize(positions);
 }
 
@@ -256,7 +257,7 @@ GLuint GpuSystem::runRestorationPass(const GpuPass& pass, int& restorationPass)
 
 /// The reposition test on the restored `positions`; settling only clears
 /// the placed-now marks after initialisation.
-void GpuSystem::test(GLuint positions, bool settleOnly, double h)
+void GpuSystem::test(GLuint positions, bool settleOnly, double h, float endWeight)
 {
   GpuState& s = this->state;
   GpuPass pass = this->begin(this->passes.programs.test);
@@ -268,6 +269,9 @@ void GpuSystem::test(GLuint positions, bool settleOnly, double h)
     const bool any = this->parameters.resetWhen == ResetWhen::AnyParticleLeaves;
     pass.setInt("bpAnyParticle", any ? 1 : 0);
     pass.setFloat("bpStep", float(h));
+    pass.setFloat("bpReleaseMinSpeed", this->parameters.releaseMinSpeed);
+    pass.texture("bpCenters", s.centers.current());
+    pass.setFloat("bpEndWeight", endWeight);
   }
   pass.runPerElement({ s.elements.next() });
   s.elements.flip();

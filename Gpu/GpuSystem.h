@@ -69,7 +69,8 @@ private:
   GLuint jacobi(GLuint positions, int& restorationPass);
   GLuint link(GLuint positions, int& restorationPass);
   GLuint runRestorationPass(const GpuPass& pass, int& restorationPass);
-  void test(GLuint positions, bool settleOnly, double h);
+  /// `endWeight`: the second time step's weight at the step's end.
+  void test(GLuint positions, bool settleOnly, double h, float endWeight);
   void finalize(GLuint restored);
 
   /// parameters.frame as a quaternion, for the reset pass.

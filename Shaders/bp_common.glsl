@@ -223,6 +223,34 @@ bool bpContains(vec3 p)
   return true;
 }
 
+// The cells outside the flow's domain (VectorField::outsideCellAt, DomainMask.h):
+// per cell's lowest corner, nonzero outside; a time step without one has none.
+uniform usampler3D bpOutside0;
+uniform usampler3D bpOutside1;
+uniform bool bpMasked0;
+uniform bool bpMasked1;
+
+bool bpOutsideCell(vec3 p, float weight)
+{
+  if (!bpMasked0 && !bpMasked1)
+  {
+    return false;
+  }
+  ivec3 a;
+  vec3 f;
+  bpLocate(0, p.x, a.x, f.x);
+  bpLocate(1, p.y, a.y, f.y);
+  bpLocate(2, p.z, a.z, f.z);
+  return (bpMasked0 && texelFetch(bpOutside0, a, 0).r != 0u) ||
+    (weight > 0.0 && bpMasked1 && texelFetch(bpOutside1, a, 0).r != 0u);
+}
+
+// Engine::inDomain: in the bounds and in a cell inside the flow's domain.
+bool bpInDomain(vec3 p, float weight)
+{
+  return bpContains(p) && !bpOutsideCell(p, weight);
+}
+
 bool bpFinite(vec3 p)
 {
   return !any(isnan(p)) && !any(isinf(p));

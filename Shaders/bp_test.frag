@@ -1,10 +1,31 @@
-// Step 5, per element: the reposition test (Engine::stepElement): flag the
-// element when its centre (or any particle) left the field or a position is
-// not finite, and take the step off its lifetime.
+// Step 5, per element: the reposition test (Engine::settle): flag the
+// element when its centre (or any particle) left the field or entered a cell
+// outside the flow's domain, when in its first step its centre moved slower
+// than the release speed, or when a position is not finite; and take the
+// step off its lifetime.
 uniform sampler2D bpElementState; // after the reset pass
 uniform sampler2D bpPositions;    // after restoration
+uniform sampler2D bpCenters;      // release centres
 uniform bool bpAnyParticle;
 uniform float bpStep;
+uniform float bpEndWeight;       // the second time step's weight after the step
+uniform float bpReleaseMinSpeed; // 0: every release stays
+
+// Engine::releasedStagnant.
+bool bpReleasedStagnant(int e, vec4 state, vec3 c)
+{
+  if (!(bpReleaseMinSpeed > 0.0) || bpLinked)
+  {
+    return false;
+  }
+  if (!(bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep))
+  {
+    return false;
+  }
+  vec3 d = c - texelFetch(bpCenters, bpElementTexel(e), 0).xyz;
+  float reach = bpReleaseMinSpeed * bpStep;
+  return dot(d, d) < reach * reach;
+}
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
 
 out vec4 outState; // (lifetime, generation, flag, non-finite)
@@ -31,9 +52,11 @@ void main()
     vec3 q = texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz;
     finite = finite && bpFinite(q);
     c += q;
-    anyOutside = anyOutside || !bpContains(q);
+    anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
   }
-  bool leave = !finite || (bpAnyParticle ? anyOutside : !bpContains(c / float(bpParticles)));
+  c /= float(bpParticles);
+  bool leave = !finite || (bpAnyParticle ? anyOutside : !bpInDomain(c, bpEndWeight)) ||
+    bpReleasedStagnant(e, state, c);
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure.
   leave = leave && !bpLinked;

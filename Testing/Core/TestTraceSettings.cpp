@@ -134,3 +134,20 @@ TEST(TraceSettings, DirectSettingsPassThrough)
   EXPECT_EQ(p.linking, bp::Linking::Sheet);
   EXPECT_EQ(p.numberOfElements, 1000u);
 }
+
+TEST(TraceSettings, MinimumReleaseSpeedIsAFractionOfTheTopSpeed)
+{
+  bp::TraceSettings s;
+  EXPECT_DOUBLE_EQ(s.minimumReleaseSpeed, 0.01); // on by default
+  s.minimumReleaseSpeed = 0.25;
+  const bp::Resolution r = bp::resolveSettings(s, box());
+  ASSERT_EQ(r.error, "");
+  EXPECT_FLOAT_EQ(r.parameters.releaseMinSpeed, 0.5f); // a quarter of 2 units/s
+  s.minimumReleaseSpeed = 0.0;
+  EXPECT_EQ(bp::resolveSettings(s, box()).parameters.releaseMinSpeed, 0.0f);
+  for (double bad : { -0.1, 1.5, std::numeric_limits<double>::quiet_NaN() })
+  {
+    s.minimumReleaseSpeed = bad;
+    EXPECT_NE(bp::resolveSettings(s, box()).error.find("MinimumReleaseSpeed"), std::string::npos);
+  }
+}

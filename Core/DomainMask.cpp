@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "DomainMask.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bp
+{
+
+DomainMask maskOutsidePoints(
+  const GridGeometry& grid, std::vector<float>& velocity, const std::uint8_t* valid)
+{
+  DomainMask mask;
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  const std::size_t points = grid.pointCount();
+  std::vector<std::uint8_t>* cells = nullptr;
+  std::shared_ptr<std::vector<std::uint8_t>> owned;
+  for (std::size_t id = 0; id < points && 3 * id + 2 < velocity.size(); ++id)
+  {
+    float* v = velocity.data() + 3 * id;
+    const bool finite = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+    if (finite && (!valid || valid[id] != 0))
+    {
+      continue;
+    }
+    mask.nonFinitePoints += finite ? 0 : 1;
+    v[0] = v[1] = v[2] = 0.0f;
+    ++mask.outsidePoints;
+    if (!cells)
+    {
+      owned = std::make_shared<std::vector<std::uint8_t>>(points, std::uint8_t(0));
+      cells = owned.get();
+    }
+    // The cells with this point as a corner: their lowest corners lie up to
+    // one point below it along each axis with cells (sampling's last cell
+    // starts at dims - 2; a flat axis has the one cell 0).
+    const int i = int(id % std::size_t(nx));
+    const int j = int((id / std::size_t(nx)) % std::size_t(ny));
+    const int k = int(id / (std::size_t(nx) * std::size_t(ny)));
+    const int at[3] = { i, j, k };
+    const int dims[3] = { nx, ny, nz };
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const int lastCell = std::max(dims[a] - 2, 0);
+      lo[a] = std::max(at[a] - 1, 0);
+      hi[a] = std::min(at[a], lastCell);
+    }
+    for (int c = lo[2]; c <= hi[2]; ++c)
+    {
+      for (int b = lo[1]; b <= hi[1]; ++b)
+      {
+        for (int a = lo[0]; a <= hi[0]; ++a)
+        {
+          (*cells)[std::size_t(a) + std::size_t(nx) * (std::size_t(b) + std::size_t(ny) * c)] = 1;
+        }
+      }
+    }
+  }
+  mask.outsideCells = owned;
+  return mask;
+}
+
+} // namespace bp

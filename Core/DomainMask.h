@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file DomainMask.h
+ * @brief Grid points outside the flow's domain, and the cells they spoil.
+ *
+ * Real data marks where it has no flow: ParaView's resampling writes
+ * vtkValidPointMask = 0 outside the source's domain, and models write NaN
+ * over land or terrain. Such a point is outside the domain; so is every
+ * cell that has it as a corner, since interpolating there would mix in a
+ * velocity that does not exist. Both engines treat an element whose centre
+ * (or, per Reset When, any particle) lies in such a cell as having left the
+ * field, exactly as one that left the grid's bounds.
+ *
+ * The velocity stored at an outside point is 0, so that a particle of an
+ * element straddling the edge still samples finite values.
+ */
+#ifndef BoundParticles_DomainMask_h
+#define BoundParticles_DomainMask_h
+
+#include "VectorField.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace bp
+{
+
+struct DomainMask
+{
+  /// Per grid point, as the lowest corner of a cell (the index sampling
+  /// computes): 1 when that cell has a corner outside the domain. Null when
+  /// every point is inside.
+  std::shared_ptr<const std::vector<std::uint8_t>> outsideCells;
+  std::size_t outsidePoints = 0;   ///< how many grid points are outside
+  std::size_t nonFinitePoints = 0; ///< of those, how many had a non-finite vector
+};
+
+/**
+ * Marks the points of `velocity` (3 floats per point of `grid`) that are
+ * outside the domain: `valid` (one byte per point, may be null) is 0 there,
+ * or a component is not finite. Sets their velocity to 0 and returns the
+ * cells they spoil.
+ */
+DomainMask maskOutsidePoints(
+  const GridGeometry& grid, std::vector<float>& velocity, const std::uint8_t* valid);
+
+} // namespace bp
+
+#endif
