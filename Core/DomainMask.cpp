@@ -61,4 +61,58 @@ DomainMask maskOutsidePoints(
   return mask;
 }
 
+std::shared_ptr<const std::vector<std::uint8_t>> releaseUnfitCells(
+  const VectorField& field, float minSpeed)
+{
+  const GridGeometry& grid = field.grid();
+  const std::size_t points = grid.pointCount();
+  const FieldSlice* slices[2] = { &field.firstSlice(), &field.secondSlice() };
+  bool anyOutside = false;
+  for (const FieldSlice* s : slices)
+  {
+    anyOutside = anyOutside || (s->velocity && s->outsideCells);
+  }
+  if (!anyOutside && !(minSpeed > 0.0f))
+  {
+    return nullptr;
+  }
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  // Along an axis of one point the cell's "next" corner is the point itself.
+  const std::size_t step[3] = { nx > 1 ? 1u : 0u, ny > 1 ? std::size_t(nx) : 0u,
+    nz > 1 ? std::size_t(nx) * std::size_t(ny) : 0u };
+  const float limit = minSpeed * minSpeed;
+  auto unfit = std::make_shared<std::vector<std::uint8_t>>(points, std::uint8_t(0));
+  bool any = false;
+  for (int k = 0; k < std::max(nz - 1, 1); ++k)
+  {
+    for (int j = 0; j < std::max(ny - 1, 1); ++j)
+    {
+      for (int i = 0; i < std::max(nx - 1, 1); ++i)
+      {
+        const std::size_t base =
+          std::size_t(i) + std::size_t(nx) * (std::size_t(j) + std::size_t(ny) * k);
+        bool outside = false, moving = !(minSpeed > 0.0f);
+        for (const FieldSlice* s : slices)
+        {
+          if (!s->velocity)
+          {
+            continue;
+          }
+          outside = outside || (s->outsideCells && (*s->outsideCells)[base]);
+          for (int c = 0; c < 8 && !moving; ++c)
+          {
+            const std::size_t id =
+              base + ((c & 1) ? step[0] : 0) + ((c & 2) ? step[1] : 0) + ((c & 4) ? step[2] : 0);
+            const float* v = s->velocity->data() + 3 * id;
+            moving = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] >= limit;
+          }
+        }
+        (*unfit)[base] = outside || !moving ? 1 : 0;
+        any = any || (*unfit)[base];
+      }
+    }
+  }
+  return any ? unfit : nullptr;
+}
+
 } // namespace bp

@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -45,6 +46,27 @@ struct DomainMask
  */
 DomainMask maskOutsidePoints(
   const GridGeometry& grid, std::vector<float>& velocity, const std::uint8_t* valid);
+
+/**
+ * Where releases may not land, per cell of `field`'s grid (indexed as
+ * outsideCells): 1 where a corner is outside the domain in either time step,
+ * or where no corner in either time step is as fast as `minSpeed` (stagnant
+ * flow). Null when every cell is fit. Both engines place a release by
+ * drawing candidates until one lands in a fit cell (Engine::place).
+ */
+std::shared_ptr<const std::vector<std::uint8_t>> releaseUnfitCells(
+  const VectorField& field, float minSpeed);
+
+/// Where releases may not land over a whole field (Engine::setReleaseMask).
+struct ReleaseMask
+{
+  GridGeometry grid; ///< the whole field's, in engine coordinates
+  std::shared_ptr<const std::vector<std::uint8_t>> unfit;
+};
+
+/// The release mask of the whole field given this process's piece of it (a
+/// distributed run gathers every piece's cells; collective).
+using ReleaseMaskFunction = std::function<ReleaseMask(const VectorField& piece, float minSpeed)>;
 
 } // namespace bp
 

@@ -101,6 +101,19 @@ std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3)
   return { s1 * std::sin(a), s1 * std::cos(a), s2 * std::sin(b), s2 * std::cos(b) };
 }
 
+std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float, 4>& first)
+{
+  // r = (sin(a/2) e_axis, cos(a/2)), then the product r * first.
+  const float half = float(Pi) * u;
+  float r[4] = { 0, 0, 0, std::cos(half) };
+  r[axis] = std::sin(half);
+  const float* q = first.data();
+  return { r[3] * q[0] + r[0] * q[3] + r[1] * q[2] - r[2] * q[1],
+    r[3] * q[1] - r[0] * q[2] + r[1] * q[3] + r[2] * q[0],
+    r[3] * q[2] + r[0] * q[1] - r[1] * q[0] + r[2] * q[3],
+    r[3] * q[3] - r[0] * q[0] - r[1] * q[1] - r[2] * q[2] };
+}
+
 std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
 {
   const std::array<float, 4> q = quaternionFromUniforms(u1, u2, u3);
@@ -166,6 +179,10 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   if (!(std::isfinite(p.elementSize) && p.elementSize > 0.0f))
   {
     return "ElementSize must be positive";
+  }
+  if (p.planeAxis < -1 || p.planeAxis > 2)
+  {
+    return "the plane axis must be -1 (none) or an axis 0 to 2";
   }
   for (int k = 0; k < 3; ++k)
   {
@@ -327,14 +344,18 @@ void Engine::place(std::size_t e)
     u[d] = uniformDraw(P.seed, element, generation, d);
   }
   float c[3];
-  for (int k = 0; k < 3; ++k)
+  if (linked)
   {
-    c[k] = linked ? this->Links.sites[3 * e + k]
-                  : P.emitterMin[k] + u[k] * (P.emitterMax[k] - P.emitterMin[k]);
-    this->InitialCenters[3 * e + k] = c[k];
+    std::copy_n(this->Links.sites.data() + 3 * e, 3, c);
   }
-  const std::array<float, 4> q =
-    P.randomOrientation ? quaternionFromUniforms(u[3], u[4], u[5]) : this->FrameQuaternion;
+  else
+  {
+    this->releaseCenter(element, generation, c);
+  }
+  std::copy_n(c, 3, this->InitialCenters.data() + 3 * e);
+  const std::array<float, 4> q = !P.randomOrientation ? this->FrameQuaternion
+    : P.planeAxis >= 0 ? inPlaneQuaternion(P.planeAxis, u[3], this->FrameQuaternion)
+                       : quaternionFromUniforms(u[3], u[4], u[5]);
   std::copy(q.begin(), q.end(), this->Orientations.begin() + 4 * e);
   std::array<float, 9> R = P.frame;
   if (P.randomOrientation)
@@ -355,6 +376,38 @@ void Engine::place(std::size_t e)
   std::fill_n(this->Forces.data() + e * n, n, 0.0f);
   this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
   this->ResetFlags[e] = 0;
+}
+
+void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
+{
+  const Parameters& P = this->Params;
+  auto candidate = [&](int k)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const float u = uniformDraw(P.seed, element, generation, candidateDraw(k) + std::uint32_t(a));
+      c[a] = P.emitterMin[a] + u * (P.emitterMax[a] - P.emitterMin[a]);
+    }
+  };
+  candidate(0);
+  if (!this->ReleaseUnfit)
+  {
+    return;
+  }
+  const VectorField& grid = *this->ReleaseGrid;
+  const std::vector<std::uint8_t>& unfit = *this->ReleaseUnfit;
+  for (int k = 1; k < ReleaseTries && !(grid.contains(c) && !unfit[grid.cellIndexAt(c)]); ++k)
+  {
+    candidate(k);
+  }
+}
+
+void Engine::setReleaseMask(
+  const GridGeometry& grid, std::shared_ptr<const std::vector<std::uint8_t>> unfit)
+{
+  const bool fits = unfit && unfit->size() == grid.pointCount();
+  this->ReleaseUnfit = fits ? std::move(unfit) : nullptr;
+  this->ReleaseGrid = fits ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;
 }
 
 void Engine::initialize(const RangeRunner& run)

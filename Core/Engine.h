@@ -37,6 +37,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,17 @@ enum class ResetWhen
 /// The most particles a system may hold (about 2 GiB of state and output).
 constexpr std::size_t MaxParticles = std::size_t(1) << 26;
 
+/// How many candidate centres a release draws before it takes the last one
+/// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
+constexpr int ReleaseTries = 64;
+/// The draw of a release's k-th candidate centre's first coordinate (then
+/// the next two): 0 for the first, after the orientation and lifetime draws
+/// (3-6) for the others.
+constexpr std::uint32_t candidateDraw(int k)
+{
+  return k == 0 ? 0u : std::uint32_t(8 + 3 * (k - 1));
+}
+
 struct Parameters
 {
   std::size_t numberOfElements = 1000;
@@ -75,7 +87,11 @@ struct Parameters
   std::array<float, 3> emitterMax = { 1, 1, 1 };
   bool randomOrientation = true;
   std::array<float, 9> frame = { 1, 0, 0, 0, 1, 0, 0, 0,
-    1 }; ///< row-major, used without random orientation
+    1 }; ///< row-major, used without random orientation (and under planeAxis)
+  /// With random orientation on a flat field (one axis of one point): that
+  /// axis. Elements then turn at random about it only, after `frame` lays
+  /// the template's x-y plane into the field's plane; -1: uniform rotations.
+  int planeAxis = -1;
   float lifetimeMin = 1.0f;
   float lifetimeMax = 2.0f;
   Integrator integrator = Integrator::Euler;
@@ -126,6 +142,10 @@ std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3);
 /// The unit quaternion (x, y, z, w) of a row-major rotation matrix.
 std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R);
 
+/// The rotation by 2 pi u about axis `axis` (0-2) after the rotation `first`,
+/// as a unit quaternion: an in-plane orientation (Parameters::planeAxis).
+std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float, 4>& first);
+
 /**
  * Linear shape matching's (sum q q^T)^-1 over the template's rest positions q
  * scaled by `size`, row-major; a pseudo-inverse, so that flat and line-like
@@ -144,6 +164,15 @@ public:
 
   /// Places every element (generation 0) and computes its normals.
   void initialize(const RangeRunner& run);
+
+  /**
+   * Where releases may land: `unfit` (releaseUnfitCells(), DomainMask.h) per
+   * cell of `grid`, the whole field's grid in engine coordinates. A release
+   * draws up to ReleaseTries candidate centres and takes the first inside the
+   * grid's bounds in a fit cell (or else the last). Null: the first candidate.
+   */
+  void setReleaseMask(
+    const GridGeometry& grid, std::shared_ptr<const std::vector<std::uint8_t>> unfit);
 
   /// One step of size h from time t (h > 0).
   void step(const VectorField& field, double t, double h, const RangeRunner& run);
@@ -216,6 +245,8 @@ private:
   };
 
   void place(std::size_t e);
+  /// The release centre of element `element`'s generation (Engine::place).
+  void releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// The second slice's weight at t, t + h/2 and t + h: once per step.
   struct StepWeights
   {
@@ -300,6 +331,10 @@ private:
   std::vector<float> Lifetimes;
   std::vector<std::uint32_t> Generations;
   std::vector<float> InitialCenters;
+  /// Where releases may land (setReleaseMask): the grid (a field without
+  /// time steps, for locating cells only) and its unfit cells.
+  std::shared_ptr<const VectorField> ReleaseGrid;
+  std::shared_ptr<const std::vector<std::uint8_t>> ReleaseUnfit;
   std::vector<float> Orientations;
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::vector<std::uint8_t> ResetFlags;

@@ -22,7 +22,22 @@ std::string CpuStepper::setField(const VectorField& field)
 {
   // A field is a grid and shared time steps: copying it copies no velocities.
   this->Field = std::make_shared<const VectorField>(field);
+  const float speed = this->Current.parameters().releaseMinSpeed;
+  if (field.firstSlice().velocity != this->ReleaseFirst ||
+    field.secondSlice().velocity != this->ReleaseSecond || speed != this->ReleaseSpeed)
+  {
+    this->Release = this->releaseMaskOf(field, speed);
+    this->ReleaseFirst = field.firstSlice().velocity;
+    this->ReleaseSecond = field.secondSlice().velocity;
+    this->ReleaseSpeed = speed;
+  }
+  this->Current.setReleaseMask(this->Release.grid, this->Release.unfit);
   return std::string();
+}
+
+ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
+{
+  return { field.grid(), releaseUnfitCells(field, minSpeed) };
 }
 
 void CpuStepper::initialize()
@@ -60,10 +75,18 @@ const Engine* CpuStepper::particles()
   return &this->Current;
 }
 
-DistributedStepper::DistributedStepper(RangeRunner run, ExchangeFunction exchange)
+DistributedStepper::DistributedStepper(
+  RangeRunner run, ExchangeFunction exchange, ReleaseMaskFunction releaseMask)
   : CpuStepper(std::move(run))
   , Exchange(std::move(exchange))
+  , WholeReleaseMask(std::move(releaseMask))
 {
+}
+
+ReleaseMask DistributedStepper::releaseMaskOf(const VectorField& piece, float minSpeed)
+{
+  // Releases land anywhere in the whole field: every piece must agree.
+  return this->WholeReleaseMask ? this->WholeReleaseMask(piece, minSpeed) : ReleaseMask();
 }
 
 void DistributedStepper::setPieces(const Partition& partition, const Domain& domain, int piece)

@@ -18,6 +18,7 @@
 #ifndef BoundParticles_Stepper_h
 #define BoundParticles_Stepper_h
 
+#include "DomainMask.h"
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "Parallel.h"
@@ -94,12 +95,21 @@ public:
   const VectorField* field() const { return this->Field.get(); }
   const RangeRunner& runner() const { return this->Run; }
 
+protected:
+  /// Where releases may not land, for the field just set: the field's own
+  /// cells here; a distributed run's whole field in DistributedStepper.
+  virtual ReleaseMask releaseMaskOf(const VectorField& field, float minSpeed);
+
 private:
   RangeRunner Run;
   Engine Current;
   Engine Saved;
   std::shared_ptr<const VectorField> Field;
   bool NormalsCurrent = false;
+  /// The release mask and what it was made from (a field is its time steps).
+  ReleaseMask Release;
+  std::shared_ptr<const std::vector<float>> ReleaseFirst, ReleaseSecond;
+  float ReleaseSpeed = -1.0f;
 };
 
 /**
@@ -112,7 +122,7 @@ private:
 class DistributedStepper : public CpuStepper
 {
 public:
-  DistributedStepper(RangeRunner run, ExchangeFunction exchange);
+  DistributedStepper(RangeRunner run, ExchangeFunction exchange, ReleaseMaskFunction releaseMask);
 
   /// Every piece's block and the whole field's domain, both grid-local; this
   /// process's piece. Set before initialize().
@@ -129,8 +139,12 @@ public:
   /// every exchange went through).
   std::string takeExchangeError();
 
+protected:
+  ReleaseMask releaseMaskOf(const VectorField& piece, float minSpeed) override;
+
 private:
   ExchangeFunction Exchange;
+  ReleaseMaskFunction WholeReleaseMask;
   std::unique_ptr<Partition> Pieces;
   Domain WholeDomain;
   int Piece = 0;

@@ -36,7 +36,8 @@ std::string checkInputTimes(const std::vector<double>& times)
 }
 } // namespace
 
-std::string TracePlan::setTimes(const std::vector<double>& inputTimes, double duration, int count)
+std::string TracePlan::setTimes(
+  const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval)
 {
   this->InputTimes.clear();
   this->OutputTimes.clear();
@@ -52,7 +53,18 @@ std::string TracePlan::setTimes(const std::vector<double>& inputTimes, double du
   this->OutputTimes.clear();
   if (this->Unsteady)
   {
-    this->OutputTimes = inputTimes;
+    const int parts = std::max(framesPerInterval, 1);
+    for (std::size_t k = 0; k + 1 < inputTimes.size(); ++k)
+    {
+      for (int f = 0; f < parts; ++f)
+      {
+        // Input time steps exactly, and evenly between them.
+        const double w = double(f) / parts;
+        this->OutputTimes.push_back(
+          f == 0 ? inputTimes[k] : inputTimes[k] + w * (inputTimes[k + 1] - inputTimes[k]));
+      }
+    }
+    this->OutputTimes.push_back(inputTimes.back());
     return std::string();
   }
   if (!(duration > 0.0) || !std::isfinite(duration) || count < 2 || count > MaxSteadyTimeSteps)

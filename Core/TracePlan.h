@@ -39,11 +39,13 @@ public:
 
   /**
    * Sets the time line: the input's time steps, finite and strictly
-   * increasing (fewer than two: a steady input, offered `count` times over
-   * [0, duration]). Empty on success, otherwise what to fix; the plan then
-   * offers no times.
+   * increasing, each interval between them offered as `framesPerInterval`
+   * frames (fewer than two time steps: a steady input, offered `count` times
+   * over [0, duration]). Empty on success, otherwise what to fix; the plan
+   * then offers no times.
    */
-  std::string setTimes(const std::vector<double>& inputTimes, double duration, int count);
+  std::string setTimes(
+    const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval = 1);
 
   bool unsteady() const { return this->Unsteady; }
   bool hasTimes() const { return !this->OutputTimes.empty(); }

@@ -80,15 +80,27 @@ std::string checkEmitter(const TraceSettings& s, const FieldFacts& f, const Para
   return std::string();
 }
 
-/// (0, 0) picks half to all of the animation's span (or of 100 steps when
-/// the span is empty). An error names the setting that made them unusable.
+/// The time the fastest flow takes to cross the field's longest side; 0 for a still field.
+double crossingTime(const FieldFacts& f)
+{
+  const double longest =
+    std::max({ f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
+  return f.maxSpeed > 0.0 && longest > 0.0 ? longest / f.maxSpeed : 0.0;
+}
+
+/// (0, 0) picks half to all of T: the time the fastest flow takes to cross
+/// the field, within the animation's span (or 100 steps when both are
+/// empty). Elements are renewed before they pile up where the flow is slow.
+/// An error names the setting that made them unusable.
 std::string resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolution& r)
 {
   double lifetime[2] = { s.lifetimeRange[0], s.lifetimeRange[1] };
   const bool automatic = lifetime[0] == 0.0 && lifetime[1] == 0.0;
   if (automatic)
   {
-    const double scale = f.timeSpan > 0.0 ? f.timeSpan : 100.0 * r.dt;
+    const double crossing = crossingTime(f);
+    double scale = f.timeSpan > 0.0 ? f.timeSpan : 100.0 * r.dt;
+    scale = crossing > 0.0 ? std::min(scale, crossing) : scale;
     lifetime[0] = 0.5 * scale;
     lifetime[1] = scale;
   }
@@ -105,6 +117,32 @@ std::string resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolu
     return err.str();
   }
   return std::string();
+}
+
+/// On a flat field (one axis of one point) random orientations turn the
+/// elements about that axis only, the template's x-y plane laid into the
+/// field's plane, so that strips are not seen edge-on.
+void resolvePlane(const FieldFacts& f, Parameters& p)
+{
+  int flat = -1, flatAxes = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (f.dims[a] <= 1)
+    {
+      flat = a;
+      ++flatAxes;
+    }
+  }
+  if (!p.randomOrientation || flatAxes != 1)
+  {
+    return;
+  }
+  p.planeAxis = flat;
+  // The template's normal (z) onto the flat axis: x-y stays, x-z is a turn
+  // of -90 degrees about x, y-z one of 90 degrees about y.
+  p.frame = flat == 2 ? rotationFromDegrees(0, 0, 0)
+    : flat == 1       ? rotationFromDegrees(-90, 0, 0)
+                      : rotationFromDegrees(0, 90, 0);
 }
 
 Resolution failure(const std::string& message)
@@ -160,6 +198,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   r.parameters.numberOfElements = std::size_t(s.numberOfElements);
   r.parameters.frame =
     rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
+  resolvePlane(f, r.parameters);
   r.parameters.elementSize = float(r.elementSize);
   if (!(s.minimumReleaseSpeed >= 0.0 && s.minimumReleaseSpeed <= 1.0))
   {
@@ -178,6 +217,68 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     return failure(lifetimeError);
   }
   return r;
+}
+
+TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, double stepSize,
+  bool stepInCellLengths, const std::vector<double>& inputTimes, const TimeScale& scale)
+{
+  TimeLine line;
+  line.duration = duration;
+  line.framesPerInterval = std::max(framesPerInterval, 1);
+  const bool unsteady = inputTimes.size() >= 2;
+  const bool automatic = unsteady ? framesPerInterval <= 0 : duration <= 0.0;
+  const double dt = !scale.valid() ? 0.0
+    : stepInCellLengths            ? stepSize * scale.cellLength / scale.maxSpeed
+                                   : stepSize;
+  const bool stepKnown = dt > 0.0 && std::isfinite(dt);
+  if (automatic && !unsteady)
+  {
+    line.duration = FallbackDuration;
+    if (stepKnown)
+    {
+      // A step the user gave in time units is theirs: no cap on the steps.
+      const double crossings = AutomaticCrossings * scale.extent / scale.maxSpeed;
+      const double framed = FrameSteps * std::max(count - 1, 1) * dt;
+      line.duration = stepInCellLengths ? std::min(crossings, framed) : crossings;
+    }
+  }
+  if (automatic && unsteady && stepKnown)
+  {
+    double longest = 0.0;
+    for (std::size_t k = 1; k < inputTimes.size(); ++k)
+    {
+      longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
+    }
+    const double frames = std::ceil(longest / (FrameSteps * dt) - 1e-9);
+    line.framesPerInterval = int(std::min(std::max(frames, 1.0), double(MaxFramesPerInterval)));
+  }
+  if (!stepKnown)
+  {
+    return line;
+  }
+  // The velocity's scale against the grid's units and the time range.
+  const double span = unsteady ? inputTimes.back() - inputTimes.front() : line.duration;
+  std::ostringstream w;
+  if (scale.maxSpeed * dt > scale.extent)
+  {
+    w << "At the field's top speed (" << scale.maxSpeed << ") an element crosses the whole field ("
+      << scale.extent << " long) in less than one step (" << dt
+      << "): the velocity's units may not match the grid's (e.g. m/s on a grid in degrees or "
+         "kilometres). Check the units, or set Step Size in Cell Length.";
+  }
+  else if (span > 0.0 && scale.maxSpeed * span < scale.cellLength)
+  {
+    w << "At the field's top speed (" << scale.maxSpeed << ") an element moves less than one cell ("
+      << scale.cellLength << ") over the whole time range (" << span
+      << "): the velocity's units may not match the grid's or the time's (e.g. m/s on a grid in "
+         "degrees, or time in hours). Check the units"
+      << (unsteady ? "." : ", or lengthen Duration.");
+  }
+  if (!w.str().empty())
+  {
+    line.warnings.push_back(w.str());
+  }
+  return line;
 }
 
 } // namespace bp

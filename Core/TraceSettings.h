@@ -67,6 +67,43 @@ struct Resolution
 /// Resolves `settings` against `field`: the engine's parameters, or an error.
 Resolution resolveSettings(const TraceSettings& settings, const FieldFacts& field);
 
+/// The field's scale as the time line needs it, probed before the first
+/// update (the filter's RequestInformation); valid only with a top speed > 0.
+struct TimeScale
+{
+  double maxSpeed = 0.0;   ///< the largest speed of the time step probed
+  double extent = 0.0;     ///< the field's longest side (over axes with cells)
+  double cellLength = 0.0; ///< the mean cell length, as FieldFacts::cellLength
+  bool valid() const { return maxSpeed > 0.0 && extent > 0.0 && cellLength > 0.0; }
+};
+
+/// The time line the tracer offers the animation.
+struct TimeLine
+{
+  double duration = 0.0;             ///< a steady input's time range [0, duration]
+  int framesPerInterval = 1;         ///< an unsteady input's frames per input time step
+  std::vector<std::string> warnings; ///< velocity scale and grid units that look mismatched
+};
+
+/// Automatic time line: a steady input lasts as long as the fastest flow takes
+/// to cross the field AutomaticCrossings times, but (with the step in cell
+/// lengths) no longer than frames of FrameSteps steps each; an unsteady input
+/// gets as many frames per input time step as keep a frame within FrameSteps steps.
+constexpr double AutomaticCrossings = 5.0;
+constexpr double FrameSteps = 10.0;
+/// A steady input's Duration when the field cannot be probed (or is still).
+constexpr double FallbackDuration = 10.0;
+/// The most frames per input time step the automatic time line offers.
+constexpr int MaxFramesPerInterval = 1000;
+
+/**
+ * The time line for `settings` (duration <= 0 and framesPerInterval <= 0 are
+ * automatic) given the field's `scale` and the input's time steps (fewer than
+ * two: a steady input offered `count` times).
+ */
+TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, double stepSize,
+  bool stepInCellLengths, const std::vector<double>& inputTimes, const TimeScale& scale);
+
 } // namespace bp
 
 #endif

@@ -246,7 +246,8 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
   for (int a = 0; a < 3; ++a)
   {
     this->Degenerate[a] = grid.dims[a] <= 1;
-    this->Origin[a] = float(grid.origin[a]);
+    this->Origin[a] = float(grid.origin[a] - grid.firstIndex[a] * grid.spacing[a]);
+    this->IndexShift[a] = float(grid.firstIndex[a]);
     this->InverseSpacing[a] = this->Degenerate[a] ? 0.0f : float(1.0 / grid.spacing[a]);
     this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
     this->LastCell[a] = std::max(grid.dims[a] - 2, 0);
@@ -391,12 +392,8 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
   return c;
 }
 
-bool VectorField::outsideCellAt(const float p[3], float weight) const
+std::size_t VectorField::cellIndexAt(const float p[3]) const
 {
-  if (!this->FirstOutside && !this->SecondOutside)
-  {
-    return false;
-  }
   std::size_t base = 0;
   for (int a = 0; a < 3; ++a)
   {
@@ -405,6 +402,16 @@ bool VectorField::outsideCellAt(const float p[3], float weight) const
     this->locate(a, p[a], i, f);
     base += i * this->Stride[a];
   }
+  return base;
+}
+
+bool VectorField::outsideCellAt(const float p[3], float weight) const
+{
+  if (!this->FirstOutside && !this->SecondOutside)
+  {
+    return false;
+  }
+  const std::size_t base = this->cellIndexAt(p);
   return (this->FirstOutside && this->FirstOutside[base]) ||
     (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);
 }

@@ -45,6 +45,10 @@ struct GridGeometry
   std::array<double, 3> spacing = { 1, 1, 1 };
   /// Empty for a uniform axis; otherwise one strictly increasing value per point.
   std::array<std::vector<double>, 3> coordinates;
+  /// A piece of a distributed run: the index of its point 0 in the whole grid
+  /// (0 for a whole grid). Uniform axes then locate from the whole grid's
+  /// first point and shift by it, so every piece rounds as the whole does.
+  std::array<int, 3> firstIndex = { 0, 0, 0 };
 
   /// Makes axis a rectilinear with these point coordinates (dims, origin and
   /// the mean spacing follow from them).
@@ -153,6 +157,9 @@ public:
   /// Whether the cell that holds p is outside the flow's domain in the
   /// first slice, or in the second where it weighs anything (DomainMask.h).
   bool outsideCellAt(const float p[3], float weight) const;
+  /// The index of the cell that holds p (clamped to the grid), as its lowest
+  /// corner's point index: how outsideCells and release masks are indexed.
+  std::size_t cellIndexAt(const float p[3]) const;
   /// Whether any slice marks cells outside the domain.
   bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
   /// The grid's bounds as a Domain.
@@ -225,7 +232,8 @@ private:
   FieldSlice First;
   FieldSlice Second;
   // Precomputed for the hot loop.
-  float Origin[3];
+  float Origin[3];     ///< the whole grid's first point (GridGeometry::firstIndex)
+  float IndexShift[3]; ///< GridGeometry::firstIndex
   float InverseSpacing[3];
   float MaxIndex[3];
   int LastCell[3]; ///< the last cell's index (0 on a plane)
@@ -249,7 +257,10 @@ inline void VectorField::locate(int a, float x, std::size_t& cell, float& fracti
     this->locateRectilinear(a, x, cell, fraction);
     return;
   }
-  float g = (x - this->Origin[a]) * this->InverseSpacing[a];
+  // From the whole grid's first point, then shifted to this piece's indices:
+  // exact (g >= IndexShift, both multiples of g's last place), so a piece
+  // finds the whole grid's cell and fraction to the bit.
+  float g = (x - this->Origin[a]) * this->InverseSpacing[a] - this->IndexShift[a];
   // Clamped so that NaN lands on 0 rather than indexing out of the grid.
   g = g > 0.0f ? g : 0.0f;
   g = g < this->MaxIndex[a] ? g : this->MaxIndex[a];

@@ -137,6 +137,7 @@ void PieceLayout::requestInput(vtkInformation* inInfo)
 std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
   std::array<double, 3>& offset)
 {
+  std::copy(extent, extent + 6, this->PieceExtent);
   const int* owned = this->OwnedExtent;
   const bool owns = owned[0] <= owned[1] && owned[2] <= owned[3] && owned[4] <= owned[5];
   constexpr int Values = 8; // box, status, smallest cell width
@@ -251,6 +252,61 @@ bp::ExchangeFunction PieceLayout::exchange() const
 std::array<double, 6> PieceLayout::domainBounds(const bp::GridGeometry& local) const
 {
   return this->distributed() && this->Partition ? this->Partition->domain() : local.bounds();
+}
+
+bp::ReleaseMaskFunction PieceLayout::releaseMask() const
+{
+  return [this](const bp::VectorField& piece, float minSpeed)
+  {
+    const bp::GridGeometry& local = piece.grid();
+    bp::GridGeometry whole;
+    int shift[3], cells[3][2]; // piece-to-whole index shift; this block's cells
+    for (int a = 0; a < 3; ++a)
+    {
+      whole.dims[a] = this->WholeExtent[2 * a + 1] - this->WholeExtent[2 * a] + 1;
+      whole.spacing[a] = local.spacing[a];
+      shift[a] = this->PieceExtent[2 * a] - this->WholeExtent[2 * a];
+      const int lastCell = std::max(whole.dims[a] - 2, 0);
+      cells[a][0] = this->OwnedExtent[2 * a] - this->WholeExtent[2 * a];
+      cells[a][1] = std::min(this->OwnedExtent[2 * a + 1] - this->WholeExtent[2 * a], lastCell);
+    }
+    // Engine coordinates start at the whole grid's first point (share()).
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!local.isRectilinear(a))
+      {
+        continue;
+      }
+      // Each piece gives its points; the others -inf, so the largest is the one.
+      std::vector<double> mine(std::size_t(whole.dims[a]), -std::numeric_limits<double>::max());
+      for (int i = 0; i < local.dims[a]; ++i)
+      {
+        mine[std::size_t(i + shift[a])] = local.coordinate(a, i);
+      }
+      std::vector<double> all(mine.size());
+      this->Controller->AllReduce(
+        mine.data(), all.data(), vtkIdType(mine.size()), vtkCommunicator::MAX_OP);
+      whole.setCoordinates(a, std::move(all));
+    }
+    const auto localUnfit = bp::releaseUnfitCells(piece, minSpeed);
+    std::vector<std::uint8_t> mine(whole.pointCount(), 0);
+    const int nx = local.dims[0], ny = local.dims[1];
+    for (int k = cells[2][0]; localUnfit && k <= cells[2][1]; ++k)
+      for (int j = cells[1][0]; j <= cells[1][1]; ++j)
+        for (int i = cells[0][0]; i <= cells[0][1]; ++i)
+        {
+          const std::size_t at = std::size_t(i - shift[0]) +
+            std::size_t(nx) * (std::size_t(j - shift[1]) + std::size_t(ny) * (k - shift[2]));
+          mine[std::size_t(i) +
+            std::size_t(whole.dims[0]) * (std::size_t(j) + std::size_t(whole.dims[1]) * k)] =
+            (*localUnfit)[at];
+        }
+    auto unfit = std::make_shared<std::vector<std::uint8_t>>(mine.size());
+    this->Controller->AllReduce(
+      mine.data(), unfit->data(), vtkIdType(mine.size()), vtkCommunicator::MAX_OP);
+    const bool any = std::find(unfit->begin(), unfit->end(), 1) != unfit->end();
+    return bp::ReleaseMask{ whole, any ? unfit : nullptr };
+  };
 }
 
 double PieceLayout::cellLength(const bp::GridGeometry& local) const

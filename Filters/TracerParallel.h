@@ -15,6 +15,7 @@
 #ifndef BoundParticles_TracerParallel_h
 #define BoundParticles_TracerParallel_h
 
+#include "DomainMask.h"
 #include "Partition.h"
 #include "VectorField.h"
 
@@ -61,6 +62,14 @@ public:
   /// The element exchange through the controller (DistributedStepper).
   bp::ExchangeFunction exchange() const;
 
+  /**
+   * The whole field's release mask (bp::releaseUnfitCells) from this
+   * process's piece: each process marks the cells of its block, and all
+   * combine them (collective; one byte per grid point travels). The whole
+   * grid's rectilinear axes are gathered the same way.
+   */
+  bp::ReleaseMaskFunction releaseMask() const;
+
   bool distributed() const { return this->Controller != nullptr; }
   /// Whether this process outputs nothing: a piece other than 0 of several
   /// asked for without a process per piece.
@@ -78,8 +87,9 @@ public:
   int GhostCells = 2;     ///< around the owned block; grown at a replay if too few
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
-  std::unique_ptr<bp::Partition> Partition; ///< every piece's block, grid-local
-  bp::Domain Domain;                        ///< the whole field's, grid-local
+  int PieceExtent[6] = { 0, -1, 0, -1, 0, -1 }; ///< the extent this process read (with ghosts)
+  std::unique_ptr<bp::Partition> Partition;     ///< every piece's block, grid-local
+  bp::Domain Domain;                            ///< the whole field's, grid-local
   double DomainCellLength = 1.0, DomainSmallestCell = 1.0;
 };
 

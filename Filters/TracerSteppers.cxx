@@ -38,7 +38,8 @@ void TracerSteppers::select(bool gpu, vtkInformation* outInfo, const PieceLayout
   }
   if (pieces.distributed() && !this->Distributed)
   {
-    this->Distributed.reset(new bp::DistributedStepper(smpRunner(), pieces.exchange()));
+    this->Distributed.reset(
+      new bp::DistributedStepper(smpRunner(), pieces.exchange(), pieces.releaseMask()));
   }
   this->Active = this->Queue ? static_cast<bp::Stepper*>(this->Queue.get())
     : pieces.distributed()   ? static_cast<bp::Stepper*>(this->Distributed.get())

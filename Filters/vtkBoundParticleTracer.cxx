@@ -4,8 +4,10 @@
 #include "ElementTemplate.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
+#include "TracerTimeScale.h"
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
@@ -161,7 +163,9 @@ int vtkBoundParticleTracer::RequestInformation(
     const double* steps = inInfo->Get(SDDP::TIME_STEPS());
     inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
   }
-  const std::string error = I.Plan.setTimes(inputTimes, this->Duration, this->NumberOfTimeSteps);
+  const bp::TimeLine line = this->ResolveTimeLine(inInfo, inputTimes);
+  const std::string error =
+    I.Plan.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -174,6 +178,31 @@ int vtkBoundParticleTracer::RequestInformation(
   const double range[2] = { times.front(), times.back() };
   outInfo->Set(SDDP::TIME_RANGE(), range, 2);
   return 1;
+}
+
+bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
+  vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  const bool unsteady = inputTimes.size() >= 2;
+  const bool automatic = unsteady ? this->FramesPerInputStep <= 0 : this->Duration <= 0.0;
+  // Only an automatic time line needs the field's scale: no data is read for
+  // a time line the user set.
+  const bp::TimeScale scale = automatic && inInfo->Has(vtkDataObject::DATA_OBJECT())
+    ? bpvtk::probeTimeScale(this->GetInputConnection(0, 0), inInfo, inputTimes,
+        [this](vtkDataObject* data, int& association)
+        {
+          // Only a dataset has arrays to choose from (readSlice says what else came).
+          return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
+                                                : nullptr;
+        })
+    : bp::TimeScale();
+  const bp::TimeLine line = bp::resolveTimeLine(this->Duration, this->FramesPerInputStep,
+    this->NumberOfTimeSteps, this->StepSize, this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
+  for (const std::string& warning : line.warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  return line;
 }
 
 int vtkBoundParticleTracer::RequestUpdateExtent(
@@ -379,7 +408,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
-     << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+     << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps
+     << ", FramesPerInputStep: " << this->FramesPerInputStep << "\n";
   os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
   os << indent << "Engine: " << (this->Engine == GPU ? "GPU" : "CPU") << "\n";
 }

@@ -49,6 +49,7 @@ class vtkPolyData;
 namespace bp
 {
 struct TraceSettings;
+struct TimeLine;
 }
 #endif
 
@@ -173,7 +174,8 @@ public:
 
   ///@{
   /// Lifetimes are drawn uniformly from [min, max] (time units). (0, 0), the
-  /// default, picks half to all of the animation's time range.
+  /// default, picks half to all of the time the fastest flow takes to cross
+  /// the field's longest side, within the animation's time range.
   vtkSetVector2Macro(LifetimeRange, double);
   vtkGetVector2Macro(LifetimeRange, double);
   ///@}
@@ -259,11 +261,21 @@ public:
 
   ///@{
   /// For a steady input: the time range [0, Duration] and the number of time
-  /// values the filter offers to the animation.
+  /// values the filter offers to the animation. Duration 0 (the default) is
+  /// automatic: as long as the fastest flow takes to cross the field five
+  /// times, but at most 10 steps per offered time (bp::resolveTimeLine).
   vtkSetMacro(Duration, double);
   vtkGetMacro(Duration, double);
   vtkSetMacro(NumberOfTimeSteps, int);
   vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
+  /// For an unsteady input: the frames offered per input time step (the
+  /// input's times, and evenly between them). 0 (the default) is automatic:
+  /// as many as keep a frame within 10 steps.
+  vtkSetClampMacro(FramesPerInputStep, int, 0, 1000);
+  vtkGetMacro(FramesPerInputStep, int);
   ///@}
 
   ///@{
@@ -360,6 +372,9 @@ protected:
 #ifndef __VTK_WRAP__
   /// The properties as the VTK-free core takes them.
   bp::TraceSettings Settings() const;
+  /// The time line to offer: Duration or FramesPerInputStep, automatic ones
+  /// from the field's scale (probed upstream); warns of mismatched units.
+  bp::TimeLine ResolveTimeLine(vtkInformation* inInfo, const std::vector<double>& inputTimes);
 #endif
 
   int ElementShape = STRIP8;
@@ -386,8 +401,9 @@ protected:
   int ResetWhen = CENTER_LEAVES;
   double MinimumReleaseSpeed = 0.01;
   int Seed = 0;
-  double Duration = 10.0;
+  double Duration = 0.0;
   int NumberOfTimeSteps = 101;
+  int FramesPerInputStep = 0;
   int ColoringAxis = 2;
   vtkTypeBool ComputeVorticity = true;
   int Engine = CPU;

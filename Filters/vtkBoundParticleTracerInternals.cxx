@@ -157,6 +157,10 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   {
     // Every process reads in this pass: agree on the pieces (and fail together).
     error = this->Layout.share(error, grid, extent, offset);
+    for (int a = 0; a < 3; ++a)
+    {
+      grid.firstIndex[a] = extent[2 * a] - this->Layout.WholeExtent[2 * a];
+    }
   }
   if (!error.empty())
   {

@@ -64,6 +64,19 @@ TightUnpack::~TightUnpack()
   }
 }
 
+GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes)
+{
+  GLuint name = 0;
+  glGenTextures(1, &name);
+  glBindTexture(GL_TEXTURE_3D, name);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  TightUnpack unpack;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of one byte per texel, not padded to 4
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, nx, ny, nz, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes);
+  return GlTexture(name);
+}
+
 GlTexture makeTexture2D(int width, int height, const float* data)
 {
   GlTexture texture = newTexture2D();

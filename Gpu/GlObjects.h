@@ -122,6 +122,10 @@ private:
 /// `data` (null: undefined texels) is read with the current unpack state.
 GlTexture makeTexture2D(int width, int height, const float* data = nullptr);
 
+/// An R8UI 3D texture of one byte per texel (x fastest, rows not padded),
+/// sampled with texelFetch only: the cell masks.
+GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes);
+
 /// A `width` x `height` texture of per-element values, 4 per element
 /// (element e at (e % width, e / width), so row-major texel order is element
 /// order), zero padded.

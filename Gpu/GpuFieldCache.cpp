@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuFieldCache.h"
 
+#include "DomainMask.h"
+
 #include "GpuPasses.h"
 
 #include <algorithm>
@@ -175,33 +177,39 @@ void GpuFieldCache::applyTo(GpuPass& pass) const
   pass.texture("bpOutside1", this->outsideTextureOf(next), GL_TEXTURE_3D);
 }
 
+void GpuFieldCache::applyReleaseMaskTo(GpuPass& pass, float minSpeed)
+{
+  const VectorField* field = this->Field.get();
+  if (field &&
+    (field->firstSlice().velocity != this->ReleaseFirst ||
+      field->secondSlice().velocity != this->ReleaseSecond || minSpeed != this->ReleaseSpeed))
+  {
+    const auto unfit = releaseUnfitCells(*field, minSpeed);
+    const auto& dims = field->grid().dims;
+    this->ReleaseTexture = unfit
+      ? makeByteTexture3D(dims[0], dims[1], std::max(dims[2], 1), unfit->data())
+      : GlTexture();
+    this->ReleaseFirst = field->firstSlice().velocity;
+    this->ReleaseSecond = field->secondSlice().velocity;
+    this->ReleaseSpeed = minSpeed;
+  }
+  const bool masked = field && this->ReleaseTexture;
+  pass.setInt("bpReleaseMasked", masked ? 1 : 0);
+  pass.texture("bpReleaseUnfit", masked ? this->ReleaseTexture.get() : this->NoOutsideTexture.get(),
+    GL_TEXTURE_3D);
+}
+
 GLuint GpuFieldCache::outsideTextureOf(const Slot& slot) const
 {
   return slot.outside ? slot.outsideTexture.get() : this->NoOutsideTexture.get();
 }
-
-namespace
-{
-GlTexture makeOutsideTexture(int nx, int ny, int nz, const std::uint8_t* cells)
-{
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_3D, name);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  TightUnpack unpack;
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of one byte per cell, not padded to 4
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, nx, ny, nz, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, cells);
-  return GlTexture(name);
-}
-} // namespace
 
 void GpuFieldCache::uploadOutside(Slot& slot, const GridGeometry& grid, const FieldSlice& slice)
 {
   if (!this->NoOutsideTexture)
   {
     const std::uint8_t inside = 0;
-    this->NoOutsideTexture = makeOutsideTexture(1, 1, 1, &inside);
+    this->NoOutsideTexture = makeByteTexture3D(1, 1, 1, &inside);
   }
   if (slot.outside == slice.outsideCells)
   {
@@ -211,7 +219,7 @@ void GpuFieldCache::uploadOutside(Slot& slot, const GridGeometry& grid, const Fi
   slot.outsideTexture = GlTexture();
   if (slot.outside && slot.outside->size() == grid.pointCount())
   {
-    slot.outsideTexture = makeOutsideTexture(
+    slot.outsideTexture = makeByteTexture3D(
       grid.dims[0], grid.dims[1], std::max(grid.dims[2], 1), slot.outside->data());
   }
   else

@@ -62,6 +62,10 @@ public:
   /// steps and the axes' lookups. Only with a field set.
   void applyTo(GpuPass& pass) const;
 
+  /// Binds where releases may not land (releaseUnfitCells of the current
+  /// field at `minSpeed`, made once per field and speed) for the reset pass.
+  void applyReleaseMaskTo(GpuPass& pass, float minSpeed);
+
 private:
   /// A time step resident, or arriving a slab of z layers at a time. Held by
   /// its data, so a freed and reused address can never pass for it.
@@ -93,7 +97,11 @@ private:
   int CurrentSlots[2] = { -1, -1 }; ///< the current field's first and second time step
 
   GlTexture NoOutsideTexture; ///< one cell, inside
-  GlTexture AxesTexture;      ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
+  /// The release mask and what it was made from (a field is its time steps).
+  GlTexture ReleaseTexture;
+  std::shared_ptr<const std::vector<float>> ReleaseFirst, ReleaseSecond;
+  float ReleaseSpeed = -1.0f;
+  GlTexture AxesTexture; ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
   std::array<std::vector<float>, 3> AxesTables; ///< what AxesTexture was made from
   int Bins[3] = { 1, 1, 1 };
   float BinScale[3] = { 0, 0, 0 }; ///< bins per unit of length

@@ -122,6 +122,8 @@ void GpuSystem::reset(bool initialize)
   pass.texture("bpOrientations", s.orientations.current());
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
+  pass.setInt("bpPlaneAxis", this->parameters.randomOrientation ? this->parameters.planeAxis : -1);
+  this->fieldCache.applyReleaseMaskTo(pass, this->parameters.releaseMinSpeed);
   pass.runPerElement({ s.elements.next(), s.centers.next(), s.orientations.next() });
   s.elements.flip();
   s.centers.flip();
@@ -136,6 +138,8 @@ void GpuSystem::advect(bool placeOnly, double t, double h)
   GpuPass pass = this->begin(this->passes.programs.advect);
   pass.texture("bpState", s.particles.current());
   pass.texture("bpElementState", s.elements.current());
+  pass.texture("bpCenters", s.centers.current());
+  pass.texture("bpOrientations", s.orientations.current());
   pass.texture("bpRest", this->shapeTables.rest.get());
   pass.texture("bpParticleInfo", this->shapeTables.particleInfo.get());
   pass.setInt("bpPlaceOnly", placeOnly ? 1 : 0);

@@ -2,6 +2,8 @@
 // for elements reset in this step) and after advection (Engine::advectParticle).
 uniform sampler2D bpState;        // positions (xyz) and force (w) after the last step
 uniform sampler2D bpElementState; // after the reset pass
+uniform sampler2D bpCenters;      // release centres, after the reset pass
+uniform sampler2D bpOrientations; // release orientations, after the reset pass
 uniform sampler2D bpRest;         // n x 1: template rest positions
 uniform sampler2D bpParticleInfo; // n x 2: (spring offset, count, 1/degree, pinned), (triangle offset, count, 0, 0)
 uniform int bpIntegrator;         // 0 Euler, 1 RK2 (midpoint), 2 RK4
@@ -41,8 +43,10 @@ void main()
     return;
   }
   vec4 element = texelFetch(bpElementState, bpElementTexel(e), 0);
-  vec3 p = element.z > 0.5 ? bpPlace(e, element.y, texelFetch(bpRest, ivec2(i, 0), 0).xyz)
-                           : texelFetch(bpState, ivec2(gl_FragCoord.xy), 0).xyz;
+  vec3 p = element.z > 0.5
+    ? bpPlace(texelFetch(bpCenters, bpElementTexel(e), 0).xyz,
+        texelFetch(bpOrientations, bpElementTexel(e), 0), texelFetch(bpRest, ivec2(i, 0), 0).xyz)
+    : texelFetch(bpState, ivec2(gl_FragCoord.xy), 0).xyz;
   outBefore = vec4(p, 0.0);
   bool pinned = texelFetch(bpParticleInfo, ivec2(i, 0), 0).w > 0.5;
   outAdvected = vec4((bpPlaceOnly || pinned) ? p : integrate(p), 0.0);

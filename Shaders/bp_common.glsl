@@ -76,14 +76,34 @@ int bpDrawElement(int e)
   return bpLinked ? 0 : e;
 }
 
+// Engine::releaseCenter: candidate k of a release (candidateDraw).
+vec3 bpCandidate(int e, float generation, int k)
+{
+  uint d = k == 0 ? 0u : uint(8 + 3 * (k - 1));
+  vec3 u = vec3(bpDraw(e, generation, d), bpDraw(e, generation, d + 1u),
+    bpDraw(e, generation, d + 2u));
+  return bpEmitterMin + u * (bpEmitterMax - bpEmitterMin);
+}
+
+// Where releases may not land (releaseUnfitCells), per cell of the field.
+uniform usampler3D bpReleaseUnfit;
+uniform bool bpReleaseMasked;
+const int BP_RELEASE_TRIES = 64; // ReleaseTries
+
+bool bpReleaseFits(vec3 c);
+
 vec3 bpCenterOf(int e, float generation)
 {
   if (bpLinked)
   {
     return texelFetch(bpLatticeSites, bpElementTexel(e), 0).xyz;
   }
-  vec3 u = vec3(bpDraw(e, generation, 0u), bpDraw(e, generation, 1u), bpDraw(e, generation, 2u));
-  return bpEmitterMin + u * (bpEmitterMax - bpEmitterMin);
+  vec3 c = bpCandidate(e, generation, 0);
+  for (int k = 1; bpReleaseMasked && k < BP_RELEASE_TRIES && !bpReleaseFits(c); ++k)
+  {
+    c = bpCandidate(e, generation, k);
+  }
+  return c;
 }
 
 float bpLifetimeOf(int e, float generation)
@@ -93,20 +113,15 @@ float bpLifetimeOf(int e, float generation)
 }
 
 // Position of template particle `rest` in element e of the given generation.
-vec3 bpPlace(int e, float generation, vec3 rest)
+// A particle at `rest` of an element placed at its release centre c with the
+// orientation q the reset pass drew (the frame's rows without random orientation).
+vec3 bpPlace(vec3 c, vec4 q, vec3 rest)
 {
-  vec3 c = bpCenterOf(e, generation);
   vec3 r0 = bpFrameRow0, r1 = bpFrameRow1, r2 = bpFrameRow2;
   if (bpRandomOrientation)
   {
-    // Shoemake's uniform random rotation (rotationFromUniforms).
-    int d = bpDrawElement(e);
-    float u1 = bpDraw(d, generation, 3u);
-    float u2 = bpDraw(d, generation, 4u);
-    float u3 = bpDraw(d, generation, 5u);
-    float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
-    float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
-    float x = s1 * sin(a), y = s1 * cos(a), z = s2 * sin(b), w = s2 * cos(b);
+    // The reset pass's quaternion as a matrix (quaternionToMatrix).
+    float x = q.x, y = q.y, z = q.z, w = q.w;
     r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
     r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
     r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
@@ -243,6 +258,16 @@ bool bpOutsideCell(vec3 p, float weight)
   bpLocate(2, p.z, a.z, f.z);
   return (bpMasked0 && texelFetch(bpOutside0, a, 0).r != 0u) ||
     (weight > 0.0 && bpMasked1 && texelFetch(bpOutside1, a, 0).r != 0u);
+}
+
+bool bpReleaseFits(vec3 c)
+{
+  ivec3 a;
+  vec3 f;
+  bpLocate(0, c.x, a.x, f.x);
+  bpLocate(1, c.y, a.y, f.y);
+  bpLocate(2, c.z, a.z, f.z);
+  return bpContains(c) && texelFetch(bpReleaseUnfit, a, 0).r == 0u;
 }
 
 // Engine::inDomain: in the bounds and in a cell inside the flow's domain.

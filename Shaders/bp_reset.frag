@@ -7,6 +7,7 @@ uniform sampler2D bpCenters;
 uniform sampler2D bpOrientations;
 uniform bool bpInitialize; // place every element as generation 0
 uniform vec4 bpFrameQuaternion;
+uniform int bpPlaneAxis; // Parameters::planeAxis
 
 layout(location = 0) out vec4 outState;
 layout(location = 1) out vec4 outCenter;
@@ -30,7 +31,19 @@ void main()
     outState = vec4(bpLifetimeOf(e, generation), generation, 1.0, 0.0);
     outCenter = vec4(bpCenterOf(e, generation), 0.0);
     outOrientation = bpFrameQuaternion;
-    if (bpRandomOrientation)
+    if (bpRandomOrientation && bpPlaneAxis >= 0)
+    {
+      // A turn about the flat field's axis after the frame (inPlaneQuaternion).
+      float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, 3u);
+      vec4 r = vec4(0.0, 0.0, 0.0, cos(turn)); // half the angle
+      r[bpPlaneAxis] = sin(turn);
+      vec4 q = bpFrameQuaternion;
+      outOrientation = vec4(r.w * q.x + r.x * q.w + r.y * q.z - r.z * q.y,
+        r.w * q.y - r.x * q.z + r.y * q.w + r.z * q.x,
+        r.w * q.z + r.x * q.y - r.y * q.x + r.z * q.w,
+        r.w * q.w - r.x * q.x - r.y * q.y - r.z * q.z);
+    }
+    else if (bpRandomOrientation)
     {
       // Shoemake's quaternion (quaternionFromUniforms).
       int d = bpDrawElement(e);

@@ -10,8 +10,9 @@ to the middle of the offered time range. Prints one row per data set:
 - masked: the share of element centres whose nearest grid point is outside
   the domain (vtkValidPointMask 0, or a non-finite vector);
 - time values, top speed, and the messages the tracer printed.
-Targets (issue 17): steps/frame <= 20, moving >= 80%, masked <= 5%.
-With --pictures DIR it also writes one picture per data set there.
+Targets (issue 17): steps/frame <= 20, moving >= 80%, masked <= 5%; with
+--check a miss fails the run (ctest python.RealDataDefaults). With
+--pictures DIR it also writes one picture per data set there.
 
     with-display.sh pvpython bench/real_data.py --plugin BoundParticles.so --data ../shared/data
 """
@@ -29,7 +30,8 @@ parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
 parser.add_argument("--data", required=True)
 parser.add_argument("--pictures", help="write <data set>.png here")
-parser.add_argument("--engine", default="CPU", choices=["CPU", "GPU"])
+parser.add_argument("--check", action="store_true",
+                    help="exit 1 when a data set misses a target (the ctest python.RealDataDefaults)")
 args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
@@ -66,7 +68,7 @@ def nearest_points(image, xyz):
 def measure(name):
     reader = OpenDataFile(os.path.join(args.data, name))
     reader.UpdatePipeline()
-    tracer = BoundParticleTracer(Input=reader, Engine=args.engine)
+    tracer = BoundParticleTracer(Input=reader)
     times = list(tracer.TimestepValues)
     middle = times[len(times) // 2]
     messages = []
@@ -138,3 +140,8 @@ for r in rows:
         r["name"], r["frames"], r["steps"], 100 * r["moving"], 100 * r["masked"], r["top"],
         " | ".join(m[:100] for m in r["messages"]) or "-"))
 print("targets: steps/frame <= 20, moving >= 80%, masked <= 5%")
+missed = [r["name"] for r in rows
+          if not (r["steps"] <= 20 and r["moving"] >= 0.8 and r["masked"] <= 0.05)]
+if args.check and missed:
+    print("FAILED: targets missed on %s" % ", ".join(missed))
+    raise SystemExit(1)

@@ -27,4 +27,8 @@ bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scal
 # How evenly 2 and 4 ranks share the elements over a hurricane run.
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_balance.py" \
   --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_balance.txt"
-echo "bench: wrote $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/parallel_scaling.txt, $out/parallel_balance.txt"
+# What the defaults show on the shared real data (table and one picture each).
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
+  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" \
+  --data "$root/../shared/data" --pictures "$out/real-data" | tee "$out/real_data.txt"
+echo "bench: wrote $out/real_data.txt, $out/real-data/*.png, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/parallel_scaling.txt, $out/parallel_balance.txt"

@@ -186,3 +186,53 @@ TEST(Engine, OnlyTheFirstStepAfterAReleaseIsTestedForStagnation)
     EXPECT_EQ(engine.resetFlags()[0], 0) << "step " << s;
   }
 }
+
+TEST(DomainMask, ReleasesAvoidCellsOutsideTheDomainAndStagnantOnes)
+{
+  // x < 0 still, x >= 0 moving; the points at x = 1 outside.
+  bp::GridGeometry g = bptest::grid(5);
+  auto v = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 2; i < 5; ++i)
+        (*v)[3 * pointId(g, i, j, k)] = i == 4 ? NAN : 1.0f;
+  const bp::DomainMask mask = bp::maskOutsidePoints(g, *v, nullptr);
+  const bp::VectorField field(g, bp::FieldSlice{ 0.0, v, mask.outsideCells });
+  const auto unfit = bp::releaseUnfitCells(field, 0.5f);
+  ASSERT_TRUE(unfit);
+  for (int i = 0; i < 4; ++i)
+  {
+    // Cell 0 has no moving corner; cell 1 has (x = 0); cell 3 touches x = 1.
+    const bool expected = i == 0 || i == 3;
+    EXPECT_EQ((*unfit)[pointId(g, i, 2, 2)], expected ? 1 : 0) << "cell " << i;
+  }
+  EXPECT_FALSE(bp::releaseUnfitCells(
+    bp::VectorField(
+      g, bp::FieldSlice{ 0.0, std::make_shared<std::vector<float>>(uniformVelocity(g, 1.0f)) }),
+    0.5f));
+
+  // Every release lands in a fit cell: x in [-0.5, 0.5).
+  bp::Parameters p;
+  p.numberOfElements = 500;
+  p.elementSize = 0.1f;
+  p.emitterMin = { -1, -1, -1 };
+  p.emitterMax = { 1, 1, 1 };
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.setReleaseMask(g, unfit);
+  engine.initialize(bp::serialRunner());
+  int outsideFit = 0;
+  for (std::size_t e = 0; e < 500; ++e)
+  {
+    const float x = engine.initialCenters()[3 * e];
+    outsideFit += !(x >= -0.5f && x <= 0.5f);
+  }
+  EXPECT_EQ(outsideFit, 0);
+  // Without the mask, three quarters of the box would take them.
+  engine.setReleaseMask(g, nullptr);
+  engine.initialize(bp::serialRunner());
+  int spread = 0;
+  for (std::size_t e = 0; e < 500; ++e)
+    spread += std::abs(engine.initialCenters()[3 * e]) > 0.5f;
+  EXPECT_GT(spread, 150);
+}

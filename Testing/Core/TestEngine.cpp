@@ -451,3 +451,26 @@ TEST(StepSchedule, BreaksNearGridPointsAreLandedOnExactly)
   EXPECT_NEAR(near.next(0.6), 0.9000001, 1e-15);
   EXPECT_NEAR(near.next(0.9000001), 1.2, 1e-12);
 }
+
+TEST(Engine, InPlaneOrientationsKeepTheTemplateInTheFieldsPlane)
+{
+  // Released on the plane y = 0 of a field flat in y: every particle stays there.
+  bp::Parameters p = centralParameters(200, 0.3f);
+  p.emitterMin[1] = p.emitterMax[1] = 0.0f;
+  p.planeAxis = 1;
+  p.frame = bp::rotationFromDegrees(-90, 0, 0);
+  bp::Engine engine = configured(bp::BuiltinShape::Cross, p);
+  double worst = 0.0, turned = 0.0;
+  for (std::size_t k = 0; k < engine.positions().size(); k += 3)
+    worst = std::max(worst, double(std::abs(engine.positions()[k + 1])));
+  EXPECT_LT(worst, 1e-6);
+  // ... at angles all round the plane's normal.
+  for (std::size_t e = 0; e < 200; ++e)
+    turned = std::max(turned, double(std::abs(engine.orientations()[4 * e + 3])));
+  EXPECT_LT(turned, 1.0); // not all the frame's own orientation
+  const auto first = engine.orientations();
+  bool differ = false;
+  for (std::size_t e = 1; e < 200; ++e)
+    differ = differ || std::abs(first[4 * e + 1] - first[1]) > 1e-3f;
+  EXPECT_TRUE(differ);
+}

@@ -173,3 +173,17 @@ TEST(FieldCache, FieldBetweenTwoHeldSteps)
   EXPECT_FALSE(between.isSteady());
   EXPECT_FLOAT_EQ(between.timeWeight(5.0), 0.5f);
 }
+
+TEST(TracePlan, FramesBetweenTheInputsTimeSteps)
+{
+  bp::TracePlan plan;
+  EXPECT_EQ(plan.setTimes({ 0.0, 6.0, 9.0 }, 0.0, 101, 3), "");
+  const std::vector<double> expected = { 0, 2, 4, 6, 7, 8, 9 };
+  ASSERT_EQ(plan.outputTimes().size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    EXPECT_NEAR(plan.outputTimes()[k], expected[k], 1e-12);
+  EXPECT_EQ(plan.outputTimes()[3], 6.0); // the input's own times exactly
+  // Between two input steps, the field is the interval's.
+  EXPECT_EQ(plan.intervalAt(4.0, true), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(plan.intervalAt(7.0, true), (std::vector<int>{ 1, 2 }));
+}

@@ -87,13 +87,17 @@ TEST(TraceSettings, AnyParticleLeavesKeepsElementsWholeInside)
   EXPECT_NE(r.warnings[0].find("do not fit in the field along X"), std::string::npos);
 }
 
-TEST(TraceSettings, AutomaticLifetimesSpanHalfToAllOfTheAnimation)
+TEST(TraceSettings, AutomaticLifetimesSpanHalfToAllOfACrossingWithinTheAnimation)
 {
+  // The fastest flow (2) crosses the longest side (8) in 4, within the span 6.
   bp::Resolution r = bp::resolveSettings(bp::TraceSettings(), box());
-  EXPECT_FLOAT_EQ(r.parameters.lifetimeMin, 3.0f);
-  EXPECT_FLOAT_EQ(r.parameters.lifetimeMax, 6.0f);
+  EXPECT_FLOAT_EQ(r.parameters.lifetimeMin, 2.0f);
+  EXPECT_FLOAT_EQ(r.parameters.lifetimeMax, 4.0f);
   bp::FieldFacts f = box();
+  f.timeSpan = 3.0; // a shorter animation bounds it
+  EXPECT_FLOAT_EQ(bp::resolveSettings(bp::TraceSettings(), f).parameters.lifetimeMax, 3.0f);
   f.timeSpan = 0.0;
+  f.maxSpeed = 0.0; // a still field: 100 steps (at unit speed)
   r = bp::resolveSettings(bp::TraceSettings(), f);
   EXPECT_FLOAT_EQ(r.parameters.lifetimeMax, float(100.0 * r.dt));
   bp::TraceSettings s;
@@ -150,4 +154,83 @@ TEST(TraceSettings, MinimumReleaseSpeedIsAFractionOfTheTopSpeed)
     s.minimumReleaseSpeed = bad;
     EXPECT_NE(bp::resolveSettings(s, box()).error.find("MinimumReleaseSpeed"), std::string::npos);
   }
+}
+
+namespace
+{
+/// A field 40 units long with cells of 0.5 and a top speed of 2.
+bp::TimeScale scaleOfBox()
+{
+  bp::TimeScale s;
+  s.maxSpeed = 2.0;
+  s.extent = 40.0;
+  s.cellLength = 0.5;
+  return s;
+}
+} // namespace
+
+TEST(TimeLine, AutomaticDurationCrossesTheFieldFiveTimesWithinTenStepsAFrame)
+{
+  // Five crossings take 5 * 40 / 2 = 100; a step of half a cell at top speed
+  // is 0.125, so 100 frames of 10 steps span 125: the crossings decide.
+  const bp::TimeLine line = bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, scaleOfBox());
+  EXPECT_DOUBLE_EQ(line.duration, 100.0);
+  EXPECT_TRUE(line.warnings.empty());
+  // Ten frames cannot hold 100 in steps of 10 each: 10 * 9 * 0.125.
+  EXPECT_DOUBLE_EQ(bp::resolveTimeLine(0.0, 0, 10, 0.5, true, {}, scaleOfBox()).duration, 11.25);
+  // The user's Duration stays; an unprobed field falls back.
+  EXPECT_DOUBLE_EQ(bp::resolveTimeLine(7.0, 0, 101, 0.5, true, {}, scaleOfBox()).duration, 7.0);
+  EXPECT_DOUBLE_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, bp::TimeScale()).duration,
+    bp::FallbackDuration);
+}
+
+TEST(TimeLine, AutomaticFramesKeepEachWithinTenSteps)
+{
+  // Input steps 6 apart, steps of 0.125: 48 steps, so 5 frames of <= 10 steps.
+  const std::vector<double> times = { 0, 6, 12 };
+  EXPECT_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, scaleOfBox()).framesPerInterval, 5);
+  EXPECT_EQ(bp::resolveTimeLine(0.0, 3, 101, 0.5, true, times, scaleOfBox()).framesPerInterval, 3);
+  // A slow field needs no frames between the input's.
+  bp::TimeScale slow = scaleOfBox();
+  slow.maxSpeed = 0.01;
+  EXPECT_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, slow).framesPerInterval, 1);
+  EXPECT_EQ(
+    bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, bp::TimeScale()).framesPerInterval, 1);
+}
+
+TEST(TimeLine, WarnsWhenTheVelocitysScaleDoesNotFitTheGridsUnits)
+{
+  // A step of 50 time units at speed 2 crosses the 40-unit field in one step.
+  const bp::TimeLine fast = bp::resolveTimeLine(10.0, 0, 101, 50.0, false, {}, scaleOfBox());
+  ASSERT_EQ(fast.warnings.size(), 1u);
+  EXPECT_NE(fast.warnings[0].find("less than one step"), std::string::npos);
+  // Over a range of 0.1 the fastest element moves 0.2 < one cell of 0.5.
+  const std::vector<double> times = { 0, 0.05, 0.1 };
+  const bp::TimeLine still = bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, scaleOfBox());
+  ASSERT_EQ(still.warnings.size(), 1u);
+  EXPECT_NE(still.warnings[0].find("less than one cell"), std::string::npos);
+  EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, scaleOfBox()).warnings.empty());
+}
+
+TEST(TraceSettings, AFlatFieldTurnsElementsInItsPlaneOnly)
+{
+  for (int flat = 0; flat < 3; ++flat)
+  {
+    bp::FieldFacts f = box();
+    f.dims[flat] = 1;
+    f.bounds[2 * flat + 1] = f.bounds[2 * flat];
+    const bp::Resolution r = bp::resolveSettings(bp::TraceSettings(), f);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.parameters.planeAxis, flat);
+    // The frame takes the template's normal (z) onto the flat axis.
+    for (int row = 0; row < 3; ++row)
+      EXPECT_NEAR(r.parameters.frame[3 * row + 2], row == flat ? 1.0f : 0.0f, 1e-6f);
+  }
+  // A 3D field, or orientations the user fixed, turn freely / not at all.
+  EXPECT_EQ(bp::resolveSettings(bp::TraceSettings(), box()).parameters.planeAxis, -1);
+  bp::FieldFacts f = box();
+  f.dims[2] = 1;
+  bp::TraceSettings fixed;
+  fixed.engine.randomOrientation = false;
+  EXPECT_EQ(bp::resolveSettings(fixed, f).parameters.planeAxis, -1);
 }

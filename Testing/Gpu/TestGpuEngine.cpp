@@ -78,6 +78,7 @@ struct Case
   bool linearMatching = false;
   bool masked = false;      // a block of points outside the domain, releases in slow flow retried
   bool anyParticle = false; // Reset When = Any Particle Leaves
+  int planeAxis = -1;       // random turns about this axis only
 };
 
 /// The slice with the points in x > 0.3, y < 0.2 outside the domain (NaN),
@@ -147,6 +148,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.releaseMinSpeed = float(0.3 * field.maxSpeed()); // a third of the box and more
   if (c.anyParticle)
     p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
+  if (c.planeAxis >= 0)
+  {
+    p.planeAxis = c.planeAxis;
+    p.frame = bp::rotationFromDegrees(c.planeAxis == 1 ? -90 : 0, c.planeAxis == 0 ? 90 : 0, 0);
+  }
   bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
   if (pinSome)
   {
@@ -157,6 +163,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
 
   bp::Engine cpu;
   ASSERT_EQ(cpu.configure(shape, p), "");
+  // What CpuStepper::setField gives the engine; the GPU makes its own.
+  cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed));
   cpu.initialize(bp::serialRunner());
   bp::GpuEngine gpu;
   ASSERT_EQ(gpu.configure(shape, p), "");
@@ -275,6 +283,18 @@ TEST(GpuEngine, MatchesWithCellsOutsideTheDomainAndStagnantReleases)
   unsteady.restoration = bp::Restoration::AveragedJacobi;
   unsteady.anyParticle = true;
   compare(unsteady, 150);
+}
+
+TEST(GpuEngine, MatchesWithInPlaneOrientations)
+{
+  for (int axis : { 0, 1, 2 })
+  {
+    SCOPED_TRACE(axis);
+    Case c{ bp::BuiltinShape::Cross, 300, bp::Integrator::RK2, bp::Restoration::ShapeMatching,
+      false };
+    c.planeAxis = axis;
+    compare(c, 100);
+  }
 }
 
 TEST(GpuEngine, MatchesWithLinearShapeMatching)

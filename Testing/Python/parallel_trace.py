@@ -89,6 +89,10 @@ def placement_traces():
         cases["carotid"] = (BoundParticleTracer(
             Input=carotid, ElementShape="Strip4", NumberOfElements=600, Seed=9, Duration=1.0,
             NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"]), [0.5, 1.0])
+        # The automatic Duration from the field's scale, probed on every rank.
+        combustor = XMLImageDataReader(FileName=[os.path.join(args.data, "combustor.vti")])
+        cases["combustor"] = (BoundParticleTracer(
+            Input=combustor, ElementShape="Strip4", NumberOfElements=600, Seed=10), None)
     return cases
 
 
@@ -101,8 +105,10 @@ def all_traces():
 result = {}
 for name, (tracer, times) in all_traces().items():
     ids = ProcessIdScalars(Input=tracer)
+    steps = list(tracer.TimestepValues)
+    # The offered time line: automatic ones come from the field's scale.
+    result[name + "_times"] = numpy.array(steps)
     if times is None:
-        steps = list(tracer.TimestepValues)
         times = [steps[2], steps[-1]]
     for k, t in enumerate(times):
         ids.UpdatePipeline(t)

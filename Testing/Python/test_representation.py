@@ -76,8 +76,10 @@ def compare_paths(cpu, gpu, color, scalar_range, name, frames=(), time=1.0, **di
 
 
 def tracer(shape, engine, count):
+    # The baselines show the time line [0, 10] with lifetimes in [5, 10].
     return BoundParticleTracer(Input=flow, ElementShape=shape, NumberOfElements=count,
-                               ElementSize=0.3, Seed=3, Engine=engine)
+                               ElementSize=0.3, Seed=3, Engine=engine, Duration=10.0,
+                               LifetimeRange=[5.0, 10.0])
 
 
 # The representation is offered for the tracer's output.
