@@ -184,6 +184,12 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   {
     return "the plane axis must be -1 (none) or an axis 0 to 2";
   }
+  if (p.seedPoints.size() % 3 != 0 || p.seedPoints.size() / 3 > MaxSeedPoints ||
+    !std::all_of(
+      p.seedPoints.begin(), p.seedPoints.end(), [](float x) { return std::isfinite(x); }))
+  {
+    return "the seed points must be finite, at most " + std::to_string(MaxSeedPoints);
+  }
   for (int k = 0; k < 3; ++k)
   {
     if (!(std::isfinite(p.emitterMin[k]) && std::isfinite(p.emitterMax[k]) &&
@@ -381,6 +387,13 @@ void Engine::place(std::size_t e)
 void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
 {
   const Parameters& P = this->Params;
+  if (!P.seedPoints.empty())
+  {
+    const std::uint64_t count = P.seedPoints.size() / 3;
+    const std::uint64_t release = std::uint64_t(generation) * P.numberOfElements + element;
+    std::copy_n(P.seedPoints.data() + 3 * (release % count), 3, c);
+    return;
+  }
   auto candidate = [&](int k)
   {
     for (int a = 0; a < 3; ++a)

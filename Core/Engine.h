@@ -68,6 +68,10 @@ enum class ResetWhen
 /// The most particles a system may hold (about 2 GiB of state and output).
 constexpr std::size_t MaxParticles = std::size_t(1) << 26;
 
+/// The most seed points a system releases from (Parameters::seedPoints): a
+/// release's index is taken modulo their count in 32-bit arithmetic on the GPU.
+constexpr std::size_t MaxSeedPoints = 65536;
+
 /// How many candidate centres a release draws before it takes the last one
 /// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
 constexpr int ReleaseTries = 64;
@@ -115,6 +119,11 @@ struct Parameters
   int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
   float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  /// Release centres, 3 floats per point (at most MaxSeedPoints): release r
+  /// = generation * numberOfElements + id of an element is at point r modulo
+  /// their count, so releases take the points in order, cycling. Empty: the
+  /// emitter box.
+  std::vector<float> seedPoints;
   /// An element whose centre moves slower than this over its first step
   /// (in world units per time unit) was released where the flow stands
   /// still, and is released again at the next step; 0 keeps every release.

@@ -61,7 +61,7 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkInternals)
 {
   preferThreadedBackend();
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
   // By default the active point vectors (or, failing that, the first
   // 3-component point array).
@@ -130,6 +130,12 @@ int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* i
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  if (port == 2)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
@@ -232,6 +238,18 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   // every algorithm upstream run again (a reader re-read its time step and
   // ParaView gathered its data information, every frame).
   inInfo->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
+  // The template and the seed points are whole on every process: each
+  // process places elements anywhere, and a piece of them would differ.
+  for (int port = 1; port < 3; ++port)
+  {
+    if (vtkInformation* whole = inputVector[port]->GetInformationObject(0))
+    {
+      whole->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+      whole->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+      whole->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+      whole->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
+    }
+  }
   if (I.Plan.unsteady())
   {
     inInfo->Set(SDDP::UPDATE_TIME_STEP(), I.Plan.inputTimes()[I.RequestIndex]);

@@ -129,6 +129,12 @@ public:
   /// (with the optional cell array "Stiffness" in [0, 1]); the optional point
   /// array "Pinned" (non-zero) pins particles in place.
   void SetTemplateConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+  /// The optional third input: any vtkDataSet whose points are the release
+  /// centres, taken in order and cycling (release r = generation *
+  /// NumberOfElements + element id is at point r modulo their count; at most
+  /// 65,536), instead of the emitter box. Minimum Release Speed does not apply.
+  void SetSeedSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetTemplateData(vtkPolyData* shape);
   ///@}
 

@@ -301,6 +301,42 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   return configured;
 }
 
+void vtkBoundParticleTracer::vtkInternals::seedPoints(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::Parameters& p) const
+{
+  if (self->GetNumberOfInputConnections(2) == 0)
+  {
+    return;
+  }
+  vtkDataSet* seeds = vtkDataSet::GetData(inputVector[2], 0);
+  const vtkIdType count = seeds ? seeds->GetNumberOfPoints() : 0;
+  if (count == 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, "The Seed Source has no points; elements are released in the emitter box.");
+    return;
+  }
+  const vtkIdType used = std::min<vtkIdType>(count, vtkIdType(bp::MaxSeedPoints));
+  if (used < count)
+  {
+    vtkWarningWithObjectMacro(
+      self, "The Seed Source has " << count << " points; releases take the first " << used << ".");
+  }
+  p.seedPoints.resize(3 * std::size_t(used));
+  for (vtkIdType i = 0; i < used; ++i)
+  {
+    double x[3];
+    seeds->GetPoint(i, x);
+    for (int a = 0; a < 3; ++a)
+    {
+      // Engine coordinates; a non-finite point fails the engine's check.
+      p.seedPoints[3 * std::size_t(i) + a] = float(x[a] - this->Offset[a]);
+    }
+  }
+  // The user chose where releases land: no release is retried for its speed.
+  p.releaseMinSpeed = 0.0f;
+}
+
 vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   vtkBoundParticleTracer* self, vtkInformationVector** inputVector, const bp::VectorField& field,
   const bp::Resolution& resolved)
@@ -312,6 +348,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
     return Pass::fail(templateError);
   }
   bp::Parameters p = resolved.parameters;
+  this->seedPoints(self, inputVector, p);
   // The engine's own checks first: they name the setting to change.
   const std::string invalid = bp::Engine::validate(shape, p);
   if (!invalid.empty())

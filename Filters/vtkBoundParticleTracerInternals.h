@@ -149,6 +149,9 @@ private:
   /// The field's facts for parameter resolution (collective in parallel).
   bp::FieldFacts fieldFacts(const bp::VectorField& field);
   /// The element template: the built-in shape or the template input.
+  /// The Seed Source's points (input 2) as release centres, if connected.
+  void seedPoints(
+    vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::Parameters& p) const;
   std::string elementTemplate(
     vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
   /// Points the stepper at the start of a new trace.

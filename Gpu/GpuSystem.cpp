@@ -33,6 +33,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   // The super set's lattice, the same table the CPU engine builds.
   this->state.make(this->layout,
     makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax));
+  // Release centres of a seed source (bp_common.glsl: 256 a row); one texel
+  // when there is none, since the reset pass binds it.
+  std::vector<float> seeds(4 * std::max<std::size_t>(p.seedPoints.size() / 3, 1), 0.0f);
+  for (std::size_t k = 0; k < p.seedPoints.size() / 3; ++k)
+  {
+    std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
+  }
+  this->SeedPoints = makeListTexture(seeds, 256);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
@@ -124,6 +132,8 @@ void GpuSystem::reset(bool initialize)
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
   pass.setInt("bpPlaneAxis", this->parameters.randomOrientation ? this->parameters.planeAxis : -1);
   this->fieldCache.applyReleaseMaskTo(pass, this->parameters.releaseMinSpeed);
+  pass.setInt("bpSeedCount", int(this->parameters.seedPoints.size() / 3));
+  pass.texture("bpSeedPoints", this->SeedPoints.get());
   pass.runPerElement({ s.elements.next(), s.centers.next(), s.orientations.next() });
   s.elements.flip();
   s.centers.flip();

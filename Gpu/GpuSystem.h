@@ -75,6 +75,8 @@ private:
 
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+  /// parameters.seedPoints, 256 texels a row (one texel when there are none).
+  GlTexture SeedPoints;
 };
 
 } // namespace bp

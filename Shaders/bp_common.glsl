@@ -92,11 +92,22 @@ const int BP_RELEASE_TRIES = 64; // ReleaseTries
 
 bool bpReleaseFits(vec3 c);
 
+// Release centres from a seed source (Parameters::seedPoints), 256 a row.
+uniform sampler2D bpSeedPoints;
+uniform int bpSeedCount; // 0: the emitter box
+
 vec3 bpCenterOf(int e, float generation)
 {
   if (bpLinked)
   {
     return texelFetch(bpLatticeSites, bpElementTexel(e), 0).xyz;
+  }
+  if (bpSeedCount > 0)
+  {
+    // (generation * E + e) mod S in 32 bits: S <= 2^16 keeps each product exact.
+    uint S = uint(bpSeedCount);
+    uint r = ((uint(generation) % S) * (uint(bpElements) % S) + uint(e) % S) % S;
+    return texelFetch(bpSeedPoints, ivec2(int(r % 256u), int(r / 256u)), 0).xyz;
   }
   vec3 c = bpCandidate(e, generation, 0);
   for (int k = 1; bpReleaseMasked && k < BP_RELEASE_TRIES && !bpReleaseFits(c); ++k)

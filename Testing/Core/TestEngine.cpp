@@ -474,3 +474,31 @@ TEST(Engine, InPlaneOrientationsKeepTheTemplateInTheFieldsPlane)
     differ = differ || std::abs(first[4 * e + 1] - first[1]) > 1e-3f;
   EXPECT_TRUE(differ);
 }
+
+TEST(Engine, ASeedSourceIsTakenInOrderCycling)
+{
+  bp::Parameters p = centralParameters(5, 0.1f);
+  p.seedPoints = { 0.1f, 0, 0, 0.2f, 0, 0, 0.3f, 0, 0 };
+  bp::Engine engine = configured(bp::BuiltinShape::Strip4, p);
+  // Releases 0-4 of generation 0 take points 0, 1, 2, 0, 1.
+  const float expected[5] = { 0.1f, 0.2f, 0.3f, 0.1f, 0.2f };
+  for (std::size_t e = 0; e < 5; ++e)
+    EXPECT_FLOAT_EQ(engine.initialCenters()[3 * e], expected[e]) << e;
+  // Generation 1 of element e is release 5 + e: points 2, 0, 1, 2, 0.
+  p.lifetimeMin = p.lifetimeMax = 1.5e-3f; // due after two steps
+  bp::Engine renewed = configured(bp::BuiltinShape::Strip4, p);
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(5));
+  for (int s = 0; s < 3; ++s)
+    renewed.step(field, s * 1e-3, 1e-3, bp::serialRunner());
+  const float next[5] = { 0.3f, 0.1f, 0.2f, 0.3f, 0.1f };
+  for (std::size_t e = 0; e < 5; ++e)
+  {
+    EXPECT_EQ(renewed.generations()[e], 1u);
+    EXPECT_FLOAT_EQ(renewed.initialCenters()[3 * e], next[e]) << e;
+  }
+  p.seedPoints.push_back(NAN);
+  p.seedPoints.push_back(0);
+  p.seedPoints.push_back(0);
+  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+}

@@ -79,6 +79,7 @@ struct Case
   bool masked = false;      // a block of points outside the domain, releases in slow flow retried
   bool anyParticle = false; // Reset When = Any Particle Leaves
   int planeAxis = -1;       // random turns about this axis only
+  int seeds = 0;            // release from this many seed points instead of the box
 };
 
 /// The slice with the points in x > 0.3, y < 0.2 outside the domain (NaN),
@@ -148,6 +149,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.releaseMinSpeed = float(0.3 * field.maxSpeed()); // a third of the box and more
   if (c.anyParticle)
     p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
+  for (int k = 0; k < c.seeds; ++k)
+    for (int a = 0; a < 3; ++a) // spread over the inner half of the box
+      p.seedPoints.push_back(float(box[2 * a] +
+        (box[2 * a + 1] - box[2 * a]) *
+          (0.25 + 0.5 * std::fmod(0.618034 * (k + 1) * (a + 1), 1.0))));
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -295,6 +301,15 @@ TEST(GpuEngine, MatchesWithInPlaneOrientations)
     c.planeAxis = axis;
     compare(c, 100);
   }
+}
+
+TEST(GpuEngine, MatchesWithASeedSource)
+{
+  // 37 seed points taken in order, cycling, by 300 elements over several lives.
+  Case c{ bp::BuiltinShape::Strip8, 300, bp::Integrator::RK2, bp::Restoration::AveragedJacobi,
+    true };
+  c.seeds = 37;
+  compare(c, 150);
 }
 
 TEST(GpuEngine, MatchesWithLinearShapeMatching)

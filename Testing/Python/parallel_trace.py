@@ -57,6 +57,10 @@ def placement_traces():
     hurricane = AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24])
     cases["hurricane"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
                                               NumberOfElements=800, Seed=4), [0.5, 1.0])
+    # Releases from a Seed Source: every process takes the whole line's points.
+    line = Line(Point1=[-0.9, -0.8, -0.7], Point2=[0.9, 0.8, 0.7], Resolution=40)
+    cases["seeded"] = (BoundParticleTracer(Input=hurricane, SeedSource=line, ElementShape="Cross",
+                                           NumberOfElements=400, Seed=4), [0.5, 1.0])
     far = AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
                        Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8])
     cases["far_x"] = (BoundParticleTracer(Input=far, ElementShape="Strip4", NumberOfElements=600,

@@ -2,6 +2,8 @@
 import os
 import sys
 
+import numpy
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
 from paraview import servermanager  # noqa: E402
@@ -117,6 +119,26 @@ matched.LinearShapeMatchingBeta = 0.8
 linear = points(matched, 1.0)
 bptest.check(rigid is not None and linear is not None and rigid.shape == linear.shape and
              abs(rigid - linear).max() > 1e-4, "linear shape matching changes the trace")
+
+# A Seed Source: a Line's 10 points are the release positions, in order.
+line = Line(Point1=[0.5, 0.2, -0.5], Point2=[3.5, 0.8, 0.5], Resolution=9)
+seeded = BoundParticleTracer(Input=flow, SeedSource=line, ElementShape="Square",
+                             NumberOfElements=20, Seed=4)
+start = seeded.TimestepValues[0]
+placed = points(seeded, start).reshape(20, 4, 3).mean(axis=1)
+line_points = vtk_to_numpy(servermanager.Fetch(line).GetPoints().GetData())
+expected = numpy.vstack([line_points, line_points])  # 20 elements cycle the 10 points
+bptest.check(abs(placed - expected).max() < 1e-5,
+             "elements start at the seed points in order (worst %.3g)" %
+             abs(placed - expected).max())
+seeded.SeedSource = None
+unseeded = points(seeded, start).reshape(20, 4, 3).mean(axis=1)
+bptest.check(abs(unseeded - expected).max() > 0.1, "without it, the emitter box again")
+# The same for the Element Template: cleared, the built-in shape again.
+seeded.ElementTemplate = Plane(XResolution=2, YResolution=2)
+bptest.check(points(seeded, start).shape == (20 * 9, 3), "a 3 x 3 plane as the element")
+seeded.ElementTemplate = None
+bptest.check(points(seeded, start).shape == (20 * 4, 3), "cleared, Square elements again")
 
 Delete(view)
 del view
