@@ -392,19 +392,6 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
   return c;
 }
 
-std::size_t VectorField::cellIndexAt(const float p[3]) const
-{
-  std::size_t base = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    std::size_t i;
-    float f;
-    this->locate(a, p[a], i, f);
-    base += i * this->Stride[a];
-  }
-  return base;
-}
-
 bool VectorField::outsideCellAt(const float p[3], float weight) const
 {
   if (!this->FirstOutside && !this->SecondOutside)

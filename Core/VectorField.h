@@ -159,7 +159,7 @@ public:
   bool outsideCellAt(const float p[3], float weight) const;
   /// The index of the cell that holds p (clamped to the grid), as its lowest
   /// corner's point index: how outsideCells and release masks are indexed.
-  std::size_t cellIndexAt(const float p[3]) const;
+  inline std::size_t cellIndexAt(const float p[3]) const;
   /// Whether any slice marks cells outside the domain.
   bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
   /// The grid's bounds as a Domain.
@@ -323,9 +323,8 @@ inline __m128 VectorField::interpolateLanes(
 }
 #endif
 
-inline void VectorField::prefetch(const float p[3]) const
+inline std::size_t VectorField::cellIndexAt(const float p[3]) const
 {
-#if defined(__GNUC__)
   std::size_t base = 0;
   for (int a = 0; a < 3; ++a)
   {
@@ -334,6 +333,13 @@ inline void VectorField::prefetch(const float p[3]) const
     this->locate(a, p[a], i, f);
     base += i * this->Stride[a];
   }
+  return base;
+}
+
+inline void VectorField::prefetch(const float p[3]) const
+{
+#if defined(__GNUC__)
+  const std::size_t base = this->cellIndexAt(p);
   const std::size_t sy = this->Stride[1], sz = this->Stride[2];
   for (const float* data : { this->FirstData, this->SecondData })
   {

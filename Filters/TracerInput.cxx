@@ -153,10 +153,32 @@ std::vector<std::uint8_t> validPointMask(vtkDataSet* data)
     [](double v) { return std::uint8_t(v != 0.0 ? 1 : 0); });
   return valid;
 }
+/// The error for a Vectors name the input lacks, with the arrays it has.
+std::string missingArray(vtkDataSet* data, const std::string& requested)
+{
+  std::ostringstream err;
+  err << "The input has no array '" << requested << "' for Vectors";
+  vtkPointData* pd = data->GetPointData();
+  std::string names;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* a = pd->GetArray(i);
+    if (a && a->GetNumberOfComponents() == 3 && a->GetName())
+    {
+      names += std::string(names.empty() ? "" : ", ") + "'" + a->GetName() + "'";
+    }
+  }
+  err << (names.empty() ? "; it has no 3-component point array."
+                        : "; its 3-component point arrays are " + names + ".")
+      << " Choose one in Vectors (pvpython: Vectors = ['POINTS', 'name']; a tracer made while "
+         "another source is active takes that source's arrays as its default).";
+  return err.str();
+}
 } // namespace
 
 std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
-  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints)
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
+  const std::string& requested)
 {
   nonFinitePoints = 0;
   std::ostringstream err;
@@ -184,6 +206,10 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   }
   const int* dataExtent = image ? image->GetExtent() : rectilinear->GetExtent();
   std::copy(dataExtent, dataExtent + 6, extent);
+  if (!vectors && !requested.empty())
+  {
+    return missingArray(dataSet, requested);
+  }
   if (!vectors && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     // No array chosen and no active vectors: take the first 3-component point array.

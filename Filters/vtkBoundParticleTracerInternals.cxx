@@ -33,6 +33,16 @@ std::uint64_t nextProducerId()
   std::lock_guard<std::mutex> lock(m);
   return ++next;
 }
+
+/// The array name the Vectors property asks for; empty when none is set.
+std::string vectorsName(vtkBoundParticleTracer* self)
+{
+  vtkInformation* info = self->GetInputArrayInformation(0);
+  const char* name = info && info->Has(vtkDataObject::FIELD_NAME())
+    ? info->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  return name ? name : "";
+}
 } // namespace
 
 vtkBoundParticleTracer::vtkInternals::vtkInternals()
@@ -141,7 +151,8 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     : nullptr;
   int extent[6];
   std::size_t nonFinite = 0;
-  std::string error = bpvtk::readSlice(input, vectors, association, grid, slice, extent, nonFinite);
+  std::string error = bpvtk::readSlice(
+    input, vectors, association, grid, slice, extent, nonFinite, vectorsName(self));
   if (error.empty() && nonFinite > 0 && !this->WarnedNonFinite)
   {
     // Once per configuration: an unsteady input would say it every frame.

@@ -34,7 +34,7 @@ if args.worker:
     flow.UpdatePipeline()
     # Long lifetimes, so elements stay where the flow takes them instead of
     # being released again uniformly.
-    tracer = BoundParticleTracer(Input=flow, ElementShape="Cross",
+    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"], ElementShape="Cross",
                                  NumberOfElements=args.elements, Seed=2,
                                  Duration=args.duration, NumberOfTimeSteps=args.frames,
                                  LifetimeRange=[args.duration, args.duration])

@@ -38,7 +38,8 @@ if args.worker:
     # steps takes exactly k simulation steps.
     dt = 0.002
     tracer = BoundParticleTracer(
-        Input=flow, ElementShape="Strip16", NumberOfElements=args.elements, Seed=1,
+        Input=flow, Vectors=["POINTS", "velocity"], ElementShape="Strip16",
+        NumberOfElements=args.elements, Seed=1,
         StepSizeUnit="Time", StepSize=dt, Duration=dt * 10000, NumberOfTimeSteps=10001,
         LifetimeRange=[50.0, 100.0])
     t = 0.0

@@ -52,7 +52,8 @@ DRAWN = ["Normals", "Force"]
 
 
 def new_tracer(count, engine, arrays=ALL):
-    tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=count,
+    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                 ElementShape="Strip16", NumberOfElements=count,
                                  StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
                                  Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
                                  Engine=engine)

@@ -34,7 +34,8 @@ times = list(flow.TimestepValues)
 
 
 def ours():
-    tracer = BoundParticleTracer(Input=flow, ElementShape="Point", NumberOfElements=args.seeds,
+    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                 ElementShape="Point", NumberOfElements=args.seeds,
                                  Integrator="Runge-Kutta 4", StepSizeUnit="Time",
                                  StepSize=(times[1] - times[0]) / 2, LifetimeRange=[1e9, 1e9],
                                  EmitterCenter=[1, 0.5, 0.01], EmitterSize=[1.8, 0.9, 0],
@@ -132,7 +133,8 @@ for _ in range(args.repeats):
     took = time.perf_counter() - start
     stream_rates.append(streams.GetDataInformation().GetNumberOfPoints() / took)
     Delete(streams)
-    tracer = BoundParticleTracer(Input=steady, ElementShape="Point", NumberOfElements=args.seeds,
+    tracer = BoundParticleTracer(Input=steady, Vectors=["POINTS", "velocity"],
+                                 ElementShape="Point", NumberOfElements=args.seeds,
                                  Integrator="Runge-Kutta 4", StepSizeUnit="Time", StepSize=0.001,
                                  Duration=0.04, NumberOfTimeSteps=2, LifetimeRange=[1e9, 1e9],
                                  EmitterCenter=[1, 0.5, 0.01], EmitterSize=[1.8, 0.9, 0], Seed=1,

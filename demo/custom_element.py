@@ -20,12 +20,14 @@ def main():
     flow.UpdatePipeline()
     # A 6 x 6 cloth patch whose springs follow its edges only, so it folds.
     cloth = Plane(XResolution=6, YResolution=6)
-    patches = BoundParticleTracer(Input=flow, ElementTemplate=cloth, TemplateSprings="Edges",
+    patches = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                  ElementTemplate=cloth, TemplateSprings="Edges",
                                   NumberOfElements=60, ElementSize=0.35, Seed=2,
                                   Integrator="Runge-Kutta 4", RestorationIterations=4)
     # Rigid blobs: every pair of a coarse sphere's points is a spring.
     blob = Sphere(ThetaResolution=10, PhiResolution=8)
-    blobs = BoundParticleTracer(Input=flow, ElementTemplate=blob, TemplateSprings="All Pairs",
+    blobs = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                ElementTemplate=blob, TemplateSprings="All Pairs",
                                 NumberOfElements=40, ElementSize=0.15, Seed=5,
                                 Integrator="Runge-Kutta 4")
     time = 1.5

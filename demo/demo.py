@@ -26,7 +26,8 @@ def main():
     LoadPlugin(args.plugin, ns=globals())
     flow = AnalyticFlow(Flow="Hurricane", Resolution=[48, 48, 24], Bounds=[-1, 1, -1, 1, 0, 0.6])
     flow.UpdatePipeline()
-    tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16",
+    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                 ElementShape="Strip16",
                                  NumberOfElements=args.elements, Seed=3)
     # Strips start upright in a slab around mid-height, so their folding and
     # turning show the vortex's shear; an element's height at release colours it.
@@ -37,6 +38,10 @@ def main():
     tracer.ElementRotation = [90, 0, 0]
     tracer.Integrator = "Runge-Kutta 4"
     tracer.ResetWhen = "Any Particle Leaves"
+    # A ten-second time line with lives of 5-10 s: at --time every strip is
+    # still the one released at the start, so its colour is its release height.
+    tracer.Duration = 10.0
+    tracer.LifetimeRange = [5.0, 10.0]
     tracer.UpdatePipeline(args.time)
 
     view = dark_view(args.time)

@@ -19,12 +19,14 @@ def main():
     flow = AnalyticFlow(Flow="ABC", Resolution=[40, 40, 40])
     flow.UpdatePipeline()
     # A 32 x 20 cloth of points: only the links hold it together.
-    cloth = BoundParticleTracer(Input=flow, ElementShape="Point", NumberOfElements=640,
+    cloth = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                                ElementShape="Point", NumberOfElements=640,
                                 Linking="Sheet", LatticeWidth=32, EmitterCenter=[-0.2, 0.1, 0.3],
                                 EmitterSize=[1.2, 0.8, 0.0], Integrator="Runge-Kutta 4",
                                 RestorationIterations=8, LifetimeRange=[100, 100])
     # A necklace: a ring of 40 crosses linked particle to particle.
-    ring = BoundParticleTracer(Input=flow, ElementShape="Cross", NumberOfElements=40,
+    ring = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                               ElementShape="Cross", NumberOfElements=40,
                                Linking="Ring", ElementSize=0.12, EmitterCenter=[0.4, -0.3, -0.3],
                                EmitterSize=[1.0, 1.0, 0.0], RandomOrientation=0,
                                Integrator="Runge-Kutta 4", RestorationIterations=4,

@@ -401,6 +401,16 @@ TEST(BoundParticleTracer, BadInputGivesAClearErrorAndEmptyOutput)
   }
   expectRejected(vtkSmartPointer<vtkImageData>::New(), "empty");
   {
+    // A Vectors name the input lacks is an error naming what it has, not the
+    // active vectors in its place.
+    auto img = image(5, 5, 5);
+    img->GetPointData()->SetVectors(array("velocity", 3, 125, 1.0f));
+    expectRejected(img,
+      "no array 'Velocity' for Vectors; its 3-component point arrays are 'velocity'",
+      [](vtkBoundParticleTracer* t)
+      { t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Velocity"); });
+  }
+  {
     auto img = image(1, 1, 1);
     img->GetPointData()->SetVectors(array("v", 3, 1, 1.0f));
     expectRejected(img, "single point");

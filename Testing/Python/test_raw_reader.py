@@ -121,7 +121,9 @@ try:
         bptest.check((a == field(2).reshape(-1, 3).astype(numpy.float32)).all(), "layered values")
 
     # The tracer plays over the series.
-    tracer = BoundParticleTracer(Input=reader, NumberOfElements=30, ElementShape="Cross",
+    # Vectors named: the active source (the layered reader) has 'wind'.
+    tracer = BoundParticleTracer(Input=reader, Vectors=["POINTS", "velocity"],
+                                 NumberOfElements=30, ElementShape="Cross",
                                  EmitterCenter=[1.0, 1.2, 1.0], EmitterSize=[0.4, 0.4, 0.4])
     with bptest.CapturedMessages() as log:
         for t in times:

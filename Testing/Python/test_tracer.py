@@ -12,6 +12,10 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 args = bptest.arguments()
 LoadPlugin(args.plugin, ns=globals())
+# Named on every tracer: pvpython takes the default from the active source,
+# often another tracer (whose output has 'Velocity'), and a name the input
+# lacks is an error.
+VELOCITY = ["POINTS", "velocity"]
 
 
 def points(proxy, time):
@@ -24,7 +28,7 @@ def points(proxy, time):
 
 flow = AnalyticFlow(Flow="Shear Layer", Resolution=[24, 24, 24], Bounds=[0, 4, 0, 1, -1, 1])
 flow.UpdatePipeline()
-tracer = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+tracer = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Paddlewheel", NumberOfElements=300,
                              Seed=5, Duration=5.0, NumberOfTimeSteps=51)
 
 # A steady input gets time steps, and the animation plays through them.
@@ -46,12 +50,12 @@ bptest.check(abs(frames[1] - frames[0]).max() > 1e-3 and abs(frames[2] - frames[
              "elements move while the animation plays")
 
 # Forward continues; the result equals a fresh run. Backward replays.
-fresh = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+fresh = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Paddlewheel", NumberOfElements=300,
                             Seed=5, Duration=5.0, NumberOfTimeSteps=51)
 continued = points(tracer, 1.7)
 bptest.check((continued == points(fresh, 1.7)).all(), "forward in time equals a fresh run")
 back = points(tracer, 0.4)
-fresh2 = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=300,
+fresh2 = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Paddlewheel", NumberOfElements=300,
                              Seed=5, Duration=5.0, NumberOfTimeSteps=51)
 bptest.check((back == points(fresh2, 0.4)).all(), "backward in time equals a fresh run")
 
@@ -85,7 +89,7 @@ bptest.check(tracer.GetDataInformation().GetNumberOfPoints() == 2400, "recovers 
 
 # Any source is an element editor: a sphere as the template.
 sphere = Sphere(ThetaResolution=8, PhiResolution=6)
-blobs = BoundParticleTracer(Input=flow, ElementTemplate=sphere, NumberOfElements=20,
+blobs = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementTemplate=sphere, NumberOfElements=20,
                             TemplateSprings="All Pairs")
 blobs.UpdatePipeline(0.5)
 info = blobs.GetDataInformation()
@@ -97,7 +101,7 @@ bptest.check(info.GetNumberOfCells() == 20 * sphereInfo.GetNumberOfCells(),
 
 # Super sets: a 4 x 3 sheet of crosses, its links output as lines (12 per
 # link, one per particle), its elements released on the lattice together.
-sheet = BoundParticleTracer(Input=flow, ElementShape="Cross", NumberOfElements=12,
+sheet = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Cross", NumberOfElements=12,
                             Linking="Sheet", LatticeWidth=4, EmitterCenter=[2, 0.5, 0],
                             EmitterSize=[2, 0.5, 0], RandomOrientation=0)
 sheet.UpdatePipeline(0.5)
@@ -111,7 +115,7 @@ sheet.Linking = "Torus"
 sheet.UpdatePipeline(0.5)
 bptest.check(servermanager.Fetch(sheet).GetNumberOfLines() == 12 * 24, "a torus closes")
 # Linear shape matching runs and differs from the rigid fit.
-matched = BoundParticleTracer(Input=flow, ElementShape="Paddlewheel", NumberOfElements=50,
+matched = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Paddlewheel", NumberOfElements=50,
                               Restoration="Shape Matching", Seed=2)
 rigid = points(matched, 1.0)
 matched.ShapeMatchingMode = "Linear"
@@ -122,7 +126,7 @@ bptest.check(rigid is not None and linear is not None and rigid.shape == linear.
 
 # A Seed Source: a Line's 10 points are the release positions, in order.
 line = Line(Point1=[0.5, 0.2, -0.5], Point2=[3.5, 0.8, 0.5], Resolution=9)
-seeded = BoundParticleTracer(Input=flow, SeedSource=line, ElementShape="Square",
+seeded = BoundParticleTracer(Input=flow, Vectors=VELOCITY, SeedSource=line, ElementShape="Square",
                              NumberOfElements=20, Seed=4)
 start = seeded.TimestepValues[0]
 placed = points(seeded, start).reshape(20, 4, 3).mean(axis=1)
