@@ -180,6 +180,10 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   {
     return "ElementSize must be positive";
   }
+  if (!(p.releaseStart <= p.releaseStop))
+  {
+    return "the release window must not end before it starts";
+  }
   if (p.planeAxis < -1 || p.planeAxis > 2)
   {
     return "the plane axis must be -1 (none) or an axis 0 to 2";
@@ -336,7 +340,7 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   return std::string();
 }
 
-void Engine::place(std::size_t e)
+void Engine::place(std::size_t e, bool releasing)
 {
   const Parameters& P = this->Params;
   // A super set is released as one: every element draws as element 0 does,
@@ -381,7 +385,7 @@ void Engine::place(std::size_t e)
   }
   std::fill_n(this->Forces.data() + e * n, n, 0.0f);
   this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
-  this->ResetFlags[e] = 0;
+  this->ResetFlags[e] = releasing ? 0 : ReleaseHidden;
 }
 
 void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
@@ -423,15 +427,16 @@ void Engine::setReleaseMask(
   this->ReleaseGrid = fits ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;
 }
 
-void Engine::initialize(const RangeRunner& run)
+void Engine::initialize(const RangeRunner& run, double startTime)
 {
   std::fill(this->Generations.begin(), this->Generations.end(), 0u);
+  const bool releasing = this->releasesAt(startTime, 0.0);
   run(this->elementCount(),
-    [this](std::size_t begin, std::size_t end)
+    [this, releasing](std::size_t begin, std::size_t end)
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        this->place(e);
+        this->place(e, releasing);
         this->normalsOf(e);
       }
     });
@@ -665,17 +670,18 @@ void Engine::restoreOnce(float* p, float* scratch, float* orientation) const
 
 Engine::StepWeights Engine::StepWeights::of(const VectorField& field, double t, double h)
 {
-  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h) };
+  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h), true,
+    true };
 }
 
 void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
   double h, float* before, float* advected)
 {
   const std::size_t n = this->Shape.particleCount();
-  if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
+  if (weights.resets && (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f))
   {
     ++this->Generations[e];
-    this->place(e);
+    this->place(e, weights.releasing);
   }
   float* p = this->Positions.data() + 3 * e * n;
   std::copy_n(p, 3 * n, before);
@@ -755,7 +761,10 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   }
   // A super set's element stays (and keeps its last good positions when they
   // turn non-finite): resetting it alone would tear the structure.
-  this->ResetFlags[e] = leave && this->Links.empty() ? 1 : 0;
+  // A hidden element stays hidden, and due (even in a super set, which is
+  // released whole when the window opens).
+  const std::uint8_t hidden = this->ResetFlags[e] & ReleaseHidden;
+  this->ResetFlags[e] = std::uint8_t((leave && this->Links.empty() ? ResetDue : 0) | hidden);
   this->Lifetimes[e] -= float(h);
 }
 
@@ -832,7 +841,12 @@ void Engine::restoreLinks(std::size_t e)
 void Engine::stepLinked(const VectorField& field, double t, double h, const RangeRunner& run)
 {
   const std::size_t n = this->Shape.particleCount(), E = this->elementCount();
-  const StepWeights weights = StepWeights::of(field, t, h);
+  StepWeights weights = StepWeights::of(field, t, h);
+  weights.releasing = this->releasesAt(t, h);
+  // After resetDue() (a distributed step) nothing is left to place; a hidden
+  // element, due at every step, would otherwise be placed twice.
+  weights.resets = !this->ResetsDone;
+  this->ResetsDone = false;
   run(E,
     [&](std::size_t begin, std::size_t end)
     {
@@ -892,7 +906,12 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
     return;
   }
   const std::size_t n = this->Shape.particleCount();
-  const StepWeights weights = StepWeights::of(field, t, h);
+  StepWeights weights = StepWeights::of(field, t, h);
+  weights.releasing = this->releasesAt(t, h);
+  // After resetDue() (a distributed step) nothing is left to place; a hidden
+  // element, due at every step, would otherwise be placed twice.
+  weights.resets = !this->ResetsDone;
+  this->ResetsDone = false;
   const std::vector<std::uint32_t>& order = this->visitOrder(field);
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)
@@ -1030,17 +1049,19 @@ void Engine::setDomain(const Domain& domain)
   this->DomainBox = domain;
 }
 
-void Engine::resetDue(const RangeRunner& run)
+void Engine::resetDue(const RangeRunner& run, double t, double h)
 {
+  const bool releasing = this->releasesAt(t, h);
+  this->ResetsDone = true;
   run(this->elementCount(),
-    [this](std::size_t begin, std::size_t end)
+    [this, releasing](std::size_t begin, std::size_t end)
     {
       for (std::size_t e = begin; e < end; ++e)
       {
         if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
         {
           ++this->Generations[e];
-          this->place(e);
+          this->place(e, releasing);
         }
       }
     });
@@ -1181,7 +1202,7 @@ std::string Engine::exchange(
     const std::uint32_t* r = records.data() + (source - held) * words;
     ids[k] = r[0];
     generations[k] = r[1];
-    flags[k] = std::uint8_t(r[2] != 0);
+    flags[k] = std::uint8_t(r[2] & (ResetDue | ReleaseHidden));
     lifetimes[k] = bitsFloat(r[3]);
     const std::uint32_t* values = r + 4;
     auto floats = [&values](float* out, std::size_t count)

@@ -37,6 +37,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,6 +72,12 @@ constexpr std::size_t MaxParticles = std::size_t(1) << 26;
 /// The most seed points a system releases from (Parameters::seedPoints): a
 /// release's index is taken modulo their count in 32-bit arithmetic on the GPU.
 constexpr std::size_t MaxSeedPoints = 65536;
+
+/// Engine::resetFlags(): bit 0, due for reset (the reposition test); bit 1,
+/// placed outside the release window: hidden (not drawn, no cells in the
+/// output) and due again at every step.
+constexpr std::uint8_t ResetDue = 1;
+constexpr std::uint8_t ReleaseHidden = 2;
 
 /// How many candidate centres a release draws before it takes the last one
 /// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
@@ -124,12 +131,28 @@ struct Parameters
   /// their count, so releases take the points in order, cycling. Empty: the
   /// emitter box.
   std::vector<float> seedPoints;
+  /// The release window: an element is released (placed and shown) only in
+  /// a step that overlaps [releaseStart, releaseStop] (releasesAt). One due
+  /// outside it is placed hidden (ReleaseHidden) and is due again at every
+  /// step, so the window's first step releases it.
+  double releaseStart = -std::numeric_limits<double>::infinity();
+  double releaseStop = std::numeric_limits<double>::infinity();
   /// An element whose centre moves slower than this over its first step
   /// (in world units per time unit) was released where the flow stands
   /// still, and is released again at the next step; 0 keeps every release.
   float releaseMinSpeed = 0.0f;
   std::uint32_t seed = 0;
 };
+
+/// Whether the step [t, t + h) releases elements: it overlaps the release
+/// window (so a window of one instant releases in the one step that holds
+/// it); the initialisation (h = 0) releases when t is in the window. Both
+/// engines decide it so, once per step.
+inline bool releasesAt(const Parameters& p, double t, double h)
+{
+  return h > 0.0 ? t <= p.releaseStop && t + h > p.releaseStart
+                 : p.releaseStart <= t && t <= p.releaseStop;
+}
 
 /**
  * The largest Jacobi relaxation factor that is stable for `shape`: Jacobi
@@ -171,8 +194,12 @@ public:
   /// The checks configure() makes, without allocating anything.
   static std::string validate(const ElementTemplate& shape, const Parameters& parameters);
 
-  /// Places every element (generation 0) and computes its normals.
-  void initialize(const RangeRunner& run);
+  /// Places every element (generation 0) and computes its normals; at
+  /// `startTime` (the release window's test).
+  void initialize(const RangeRunner& run, double startTime = 0.0);
+
+  /// Whether the step [t, t + h) releases elements (bp::releasesAt).
+  bool releasesAt(double t, double h) const { return bp::releasesAt(this->Params, t, h); }
 
   /**
    * Where releases may land: `unfit` (releaseUnfitCells(), DomainMask.h) per
@@ -225,7 +252,7 @@ public:
   /// The bounds of the reposition test (by default the sampled field's).
   void setDomain(const Domain& domain);
   /// Step 1 of a step on its own: resets the elements that are due.
-  void resetDue(const RangeRunner& run);
+  void resetDue(const RangeRunner& run, double t, double h);
   /// The mean of element e's particle positions.
   std::array<float, 3> centerOf(std::size_t e) const;
   /// The 32-bit words of one element's state (normals are recomputed).
@@ -253,13 +280,16 @@ private:
     float shareA, shareB; ///< part of the correction each end takes (pinned ends take none)
   };
 
-  void place(std::size_t e);
+  /// Places element e's next generation, hidden unless `releasing`.
+  void place(std::size_t e, bool releasing);
   /// The release centre of element `element`'s generation (Engine::place).
   void releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// The second slice's weight at t, t + h/2 and t + h: once per step.
   struct StepWeights
   {
     float start, middle, end;
+    bool releasing; ///< the step overlaps the release window (releasesAt)
+    bool resets;    ///< due elements are placed in this step (not done by resetDue())
     static StepWeights of(const VectorField& field, double t, double h);
   };
   /// Steps 1 and 2 for element e: reset when due, then advect; keeps the
@@ -342,6 +372,8 @@ private:
   std::vector<float> InitialCenters;
   /// Where releases may land (setReleaseMask): the grid (a field without
   /// time steps, for locating cells only) and its unfit cells.
+  /// resetDue() placed the due elements of the step about to be taken.
+  bool ResetsDone = false;
   std::shared_ptr<const VectorField> ReleaseGrid;
   std::shared_ptr<const std::vector<std::uint8_t>> ReleaseUnfit;
   std::vector<float> Orientations;

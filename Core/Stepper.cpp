@@ -40,9 +40,9 @@ ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
   return { field.grid(), releaseUnfitCells(field, minSpeed) };
 }
 
-void CpuStepper::initialize()
+void CpuStepper::initialize(double startTime)
 {
-  this->Current.initialize(this->Run);
+  this->Current.initialize(this->Run, startTime);
   this->NormalsCurrent = false;
 }
 
@@ -96,9 +96,9 @@ void DistributedStepper::setPieces(const Partition& partition, const Domain& dom
   this->Piece = piece;
 }
 
-void DistributedStepper::initialize()
+void DistributedStepper::initialize(double startTime)
 {
-  this->CpuStepper::initialize();
+  this->CpuStepper::initialize(startTime);
   // The reposition test takes the whole field's domain, not the ghosted piece's.
   this->engine().setDomain(this->WholeDomain);
   keepOwned(this->engine(), *this->Pieces, this->Piece);
@@ -110,7 +110,7 @@ void DistributedStepper::step(double t, double h)
   // before it samples the field; then the exchange; then the step proper,
   // which has nothing left to reset.
   Engine& engine = this->engine();
-  engine.resetDue(this->runner());
+  engine.resetDue(this->runner(), t, h);
   std::string error;
   const long long left = migrate(engine, *this->Pieces, this->Piece, this->Exchange, error);
   this->Migrated += std::max(left, 0LL);

@@ -54,8 +54,8 @@ public:
   virtual std::string configure(const ElementTemplate& shape, const Parameters& parameters) = 0;
   /// The field later steps sample; empty on success.
   virtual std::string setField(const VectorField& field) = 0;
-  /// Places every element (generation 0).
-  virtual void initialize() = 0;
+  /// Places every element (generation 0) at `startTime` (the release window's test).
+  virtual void initialize(double startTime) = 0;
   /// One step of size h from time t on the field last set.
   virtual void step(double t, double h) = 0;
   /// Keeps a copy of the state, so a short step can be shown and taken back.
@@ -85,7 +85,7 @@ public:
 
   std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
   std::string setField(const VectorField& field) override;
-  void initialize() override;
+  void initialize(double startTime) override;
   void step(double t, double h) override;
   void save() override;
   void restore() override;
@@ -129,7 +129,7 @@ public:
   void setPieces(const Partition& partition, const Domain& domain, int piece);
 
   /// Places every element, then keeps those whose centres lie in this piece.
-  void initialize() override;
+  void initialize(double startTime) override;
   /// Resets, exchanges elements with the other pieces, then steps.
   void step(double t, double h) override;
 

@@ -12,7 +12,7 @@ std::string EngineCall::applyTo(Stepper& target) const
     case Kind::SetField:
       return target.setField(*this->field);
     case Kind::Initialize:
-      target.initialize();
+      target.initialize(this->t);
       break;
     case Kind::Step:
       target.step(this->t, this->h);
@@ -53,10 +53,11 @@ std::string WorkQueue::setField(const VectorField& field)
   return std::string();
 }
 
-void WorkQueue::initialize()
+void WorkQueue::initialize(double startTime)
 {
   EngineCall call;
   call.kind = EngineCall::Kind::Initialize;
+  call.t = startTime;
   this->Pending.push_back(call);
 }
 

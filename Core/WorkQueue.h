@@ -84,7 +84,7 @@ public:
   // system no engine could run is refused before it is recorded.
   std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
   std::string setField(const VectorField& field) override;
-  void initialize() override;
+  void initialize(double startTime) override;
   void step(double t, double h) override;
   void save() override;
   void restore() override;

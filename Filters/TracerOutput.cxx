@@ -52,9 +52,11 @@ vtkSmartPointer<vtkCellArray> buildLinkCells(const bp::LinkTable& links, std::si
   return cells;
 }
 
+/// The cells of the `shown` elements (their indices, increasing).
 vtkSmartPointer<vtkCellArray> buildCells(
-  const bp::ElementTemplate& shape, std::size_t elements, int& kind)
+  const bp::ElementTemplate& shape, const std::vector<std::uint32_t>& shown, int& kind)
 {
+  const std::size_t elements = shown.size();
   const std::size_t n = shape.particleCount();
   int cellSize;
   std::vector<std::uint32_t> local;
@@ -99,7 +101,7 @@ vtkSmartPointer<vtkCellArray> buildCells(
     {
       for (vtkIdType e = begin; e < end; ++e)
       {
-        const vtkIdType offset = e * vtkIdType(n);
+        const vtkIdType offset = vtkIdType(shown[std::size_t(e)]) * vtkIdType(n);
         vtkIdType* o = out + e * vtkIdType(local.size());
         for (std::size_t k = 0; k < local.size(); ++k)
           o[k] = offset + local[k];
@@ -429,11 +431,28 @@ namespace bpvtk
 void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine)
 {
   const std::size_t E = engine.elementCount();
-  if (!this->Cells || this->Elements != E)
+  // An element placed outside the release window keeps its points but has
+  // no cells: it is not drawn.
+  std::vector<std::uint8_t> hidden(E);
+  const std::vector<std::uint8_t>& flags = engine.resetFlags();
+  std::transform(flags.begin(), flags.end(), hidden.begin(),
+    [](std::uint8_t f) { return std::uint8_t((f & bp::ReleaseHidden) != 0); });
+  if (!this->Cells || this->Elements != E || hidden != this->Hidden)
   {
     this->Elements = E; // in parallel, the count changes as elements move
-    this->Cells = buildCells(engine.shape(), E, this->Kind);
-    this->LinkCells = engine.links().empty()
+    this->Hidden = std::move(hidden);
+    std::vector<std::uint32_t> shown;
+    shown.reserve(E);
+    for (std::size_t e = 0; e < E; ++e)
+    {
+      if (!this->Hidden[e])
+      {
+        shown.push_back(std::uint32_t(e));
+      }
+    }
+    this->Cells = buildCells(engine.shape(), shown, this->Kind);
+    // A super set is released whole: hidden, it has no links either.
+    this->LinkCells = engine.links().empty() || shown.size() < E
       ? nullptr
       : buildLinkCells(engine.links(), engine.particlesPerElement());
     if (this->LinkCells && this->Kind == 1)

@@ -84,6 +84,7 @@ private:
   vtkSmartPointer<vtkCellArray> LinkCells; ///< a super set's links, as lines
   int Kind = -1; ///< 0 vertices, 1 lines, 2 triangles, 3 one triangle strip per element
   std::size_t Elements = 0;
+  std::vector<std::uint8_t> Hidden; ///< per element, placed outside the release window
   /// Per array of the table (by id), then the points' storage last.
   std::array<std::vector<vtkSmartPointer<vtkDataArray>>, std::size_t(bp::OutputArrayId::Count) + 1>
     Kept;

@@ -121,6 +121,11 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = float(this->LinkStiffness);
   p.resetWhen = bp::ResetWhen(this->ResetWhen);
+  if (this->ReleaseWindow)
+  {
+    p.releaseStart = this->ReleaseStart;
+    p.releaseStop = this->ReleaseStop;
+  }
   p.seed = std::uint32_t(this->Seed);
   return s;
 }
@@ -424,6 +429,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
+  os << indent << "ReleaseWindow: " << this->ReleaseWindow << " [" << this->ReleaseStart << ", "
+     << this->ReleaseStop << "]\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps

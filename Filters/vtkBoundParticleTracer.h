@@ -260,6 +260,20 @@ public:
   ///@}
 
   ///@{
+  /// The release window: with ReleaseWindow on, elements are released only
+  /// at steps that start at a time in [ReleaseStart, ReleaseStop]; one due
+  /// outside it waits hidden (not drawn, no cells in the output) until then,
+  /// so a burst can be released (ReleaseStart = ReleaseStop) and followed.
+  vtkSetMacro(ReleaseWindow, int);
+  vtkGetMacro(ReleaseWindow, int);
+  vtkBooleanMacro(ReleaseWindow, int);
+  vtkSetMacro(ReleaseStart, double);
+  vtkGetMacro(ReleaseStart, double);
+  vtkSetMacro(ReleaseStop, double);
+  vtkGetMacro(ReleaseStop, double);
+  ///@}
+
+  ///@{
   /// Seed of the counter-based random numbers: the same seed, the same trace.
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
@@ -406,6 +420,9 @@ protected:
   double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
   double MinimumReleaseSpeed = 0.01;
+  int ReleaseWindow = 0;
+  double ReleaseStart = 0.0;
+  double ReleaseStop = 0.0;
   int Seed = 0;
   double Duration = 0.0;
   int NumberOfTimeSteps = 101;

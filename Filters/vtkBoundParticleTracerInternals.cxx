@@ -400,7 +400,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
     this->Steppers.distributed().setPieces(
       *this->Layout.Partition, this->Layout.Domain, this->Layout.Piece);
   }
-  stepper.initialize();
+  stepper.initialize(this->Plan.startTime());
   this->Parameters = p;
   this->ParticlesPerElement = shape.particleCount();
   if (this->Steppers.queue())

@@ -102,9 +102,9 @@ int GpuEngine::residentTimeSteps() const
   return this->I->system.fieldCache.residentTimeSteps();
 }
 
-void GpuEngine::initialize()
+void GpuEngine::initialize(double startTime)
 {
-  this->I->system.initialize();
+  this->I->system.initialize(startTime);
 }
 
 void GpuEngine::step(double t, double h)
@@ -170,8 +170,8 @@ void GpuEngine::read(
 }
 
 void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
-  std::vector<float>* centers, std::vector<float>* orientations,
-  std::vector<float>* resetFlags) const
+  std::vector<float>* centers, std::vector<float>* orientations, std::vector<float>* resetFlags,
+  std::vector<float>* hidden) const
 {
   const GpuSystem& S = this->I->system;
   const int elements = S.layout.elementCount;
@@ -194,12 +194,20 @@ void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* 
     for (int e = 0; e < elements; ++e)
       (*columns[c])[e] = texels[4 * e + c];
   }
-  if (centers)
+  if (centers || hidden)
   {
+    // Per element: the release centre, and whether it is hidden.
     readPerElement(S.state.centers.current());
-    centers->resize(std::size_t(elements) * 3);
-    for (int e = 0; e < elements; ++e)
+    for (int e = 0; centers && e < elements; ++e)
+    {
+      centers->resize(std::size_t(elements) * 3);
       std::copy(&texels[4 * e], &texels[4 * e] + 3, centers->begin() + 3 * e);
+    }
+    for (int e = 0; hidden && e < elements; ++e)
+    {
+      hidden->resize(std::size_t(elements));
+      (*hidden)[e] = texels[4 * e + 3];
+    }
   }
 }
 

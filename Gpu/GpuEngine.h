@@ -71,7 +71,7 @@ public:
   int residentTimeSteps() const;
 
   /// Places every element (generation 0).
-  void initialize();
+  void initialize(double startTime = 0.0);
 
   /// One step of size h from time t, on the field last set.
   void step(double t, double h);
@@ -82,9 +82,10 @@ public:
   /// The state in the CPU engine's element-major order (null to skip).
   void read(
     std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const;
+  /// `hidden`: 1 for an element placed outside the release window, else 0.
   void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
     std::vector<float>* centers, std::vector<float>* orientations = nullptr,
-    std::vector<float>* resetFlags = nullptr) const;
+    std::vector<float>* resetFlags = nullptr, std::vector<float>* hidden = nullptr) const;
 
   /// Keeps a copy of the state (particles, elements, centres, orientations):
   /// a step to a time between two step boundaries is shown, then taken back

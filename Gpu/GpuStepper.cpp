@@ -14,9 +14,9 @@ std::string GpuStepper::setField(const VectorField& field)
   return this->Gpu.setField(field);
 }
 
-void GpuStepper::initialize()
+void GpuStepper::initialize(double startTime)
 {
-  this->Gpu.initialize();
+  this->Gpu.initialize(startTime);
 }
 
 void GpuStepper::step(double t, double h)

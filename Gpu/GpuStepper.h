@@ -25,7 +25,7 @@ class GpuStepper : public Stepper
 public:
   std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
   std::string setField(const VectorField& field) override;
-  void initialize() override;
+  void initialize(double startTime) override;
   void step(double t, double h) override;
   /// GpuEngine::saveState(): a copy in textures.
   void save() override;

@@ -54,10 +54,10 @@ std::string GpuSystem::checkTextureSize(const ParticleLayout&, int textureSizeLi
   return gpuTextureError(this->shape, this->parameters.numberOfElements, maxSize);
 }
 
-void GpuSystem::initialize()
+void GpuSystem::initialize(double startTime)
 {
   // Place every element as generation 0 ...
-  this->reset(true);
+  this->reset(true, releasesAt(this->parameters, startTime, 0.0));
   this->advect(true, 0.0, 0.0);
   // ... with no flag set and zero force, as Engine::initialize leaves them.
   const GLuint placed = this->state.advected.get();
@@ -69,7 +69,7 @@ void GpuSystem::initialize()
 void GpuSystem::step(double t, double h)
 {
   // 1. Reset.
-  this->reset(false);
+  this->reset(false, releasesAt(this->parameters, t, h));
   // 2. Advect.
   this->advect(false, t, h);
   // 3. Restore: K iterations of the elements' own restoration, each followed,
@@ -121,7 +121,7 @@ GpuPass GpuSystem::begin(const GlProgram& program) const
 }
 
 /// The reset pass: places flagged (or, initialising, all) elements.
-void GpuSystem::reset(bool initialize)
+void GpuSystem::reset(bool initialize, bool releasing)
 {
   GpuState& s = this->state;
   GpuPass pass = this->begin(this->passes.programs.reset);
@@ -129,6 +129,7 @@ void GpuSystem::reset(bool initialize)
   pass.texture("bpCenters", s.centers.current());
   pass.texture("bpOrientations", s.orientations.current());
   pass.setInt("bpInitialize", initialize ? 1 : 0);
+  pass.setInt("bpReleasing", releasing ? 1 : 0);
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
   pass.setInt("bpPlaneAxis", this->parameters.randomOrientation ? this->parameters.planeAxis : -1);
   this->fieldCache.applyReleaseMaskTo(pass, this->parameters.releaseMinSpeed);

@@ -41,7 +41,7 @@ public:
     int textureSizeLimit, bool generatedSprings);
 
   /// Places every element (generation 0), as Engine::initialize leaves them.
-  void initialize();
+  void initialize(double startTime);
   /// One step of size h from time t, on the field last set.
   void step(double t, double h);
   /// Recomputes the normals texture from the positions.
@@ -61,7 +61,8 @@ private:
   GpuPass begin(const GlProgram& program) const;
   std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
 
-  void reset(bool initialize);
+  /// `releasing`: the step overlaps the release window (releasesAt).
+  void reset(bool initialize, bool releasing);
   void advect(bool placeOnly, double t, double h);
   GLuint restoreOnce(GLuint positions, int& restorationPass);
   GLuint matchShapes(GLuint positions, int& restorationPass);

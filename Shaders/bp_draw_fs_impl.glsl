@@ -1,3 +1,7 @@
+  if (bpHiddenVSOutput > 0.5)
+  {
+    discard;
+  }
   if (bpScalarMode != BP_COLOR_SOLID)
   {
     float bpU = clamp(bpScalarVSOutput, 0.0, 1.0);

@@ -6,7 +6,7 @@ uniform sampler2D bpPositions; // per particle: grid-local position, force
 uniform sampler2D bpNormals;   // per particle: unit normal
 uniform sampler2D bpSamples;   // per particle: velocity, |curl v|
 uniform sampler2D bpElements;  // per element: lifetime, generation, flags
-uniform sampler2D bpCenters;   // per element: the generation's initial centre
+uniform sampler2D bpCenters;   // per element: the generation's initial centre, hidden
 uniform ivec2 bpElementGrid;
 uniform int bpBlocksPerRow;
 uniform vec3 bpOffset;         // world position of the grid-local origin
@@ -16,6 +16,7 @@ uniform vec2 bpScalarRange;    // the lookup table's range
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
 out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
+out float bpHiddenVSOutput;    // 1: the element was placed outside the release window
 vec4 bpVertexMC;
 vec3 bpNormalMC;
 

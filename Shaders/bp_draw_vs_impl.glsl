@@ -7,4 +7,6 @@
     float bpWidth = bpScalarRange.y - bpScalarRange.x;
     float bpScalar = bpScalarOf(gl_InstanceID, gl_VertexID, bpTexel, bpState);
     bpScalarVSOutput = bpWidth > 0.0 ? (bpScalar - bpScalarRange.x) / bpWidth : 0.5;
+    ivec2 bpElementTexel = ivec2(gl_InstanceID % bpElementGrid.x, gl_InstanceID / bpElementGrid.x);
+    bpHiddenVSOutput = texelFetch(bpCenters, bpElementTexel, 0).w;
   }

@@ -1,11 +1,13 @@
 // Step 1, per element: reset the elements flagged by the previous step or out
 // of lifetime (Engine::stepElement, Engine::place). Writes the element state
-// (lifetime, generation, placed now, 0), the element's release centre and its
+// (lifetime, generation, placed now, 0), the element's release centre with
+// whether it is hidden (outside the release window; Engine::place) and its
 // orientation quaternion (kept by shape matching).
 uniform sampler2D bpElementState; // (lifetime, generation, flag, non-finite) after the last step
 uniform sampler2D bpCenters;
 uniform sampler2D bpOrientations;
 uniform bool bpInitialize; // place every element as generation 0
+uniform bool bpReleasing;  // the step overlaps the release window (releasesAt)
 uniform vec4 bpFrameQuaternion;
 uniform int bpPlaneAxis; // Parameters::planeAxis
 
@@ -25,11 +27,14 @@ void main()
     return;
   }
   vec4 state = texelFetch(bpElementState, texel, 0);
-  if (bpInitialize || state.z > 0.5 || state.x <= 0.0)
+  vec4 center = texelFetch(bpCenters, texel, 0);
+  // A hidden element (placed outside the release window) is due at every step.
+  bool hidden = center.w > 0.5;
+  if (bpInitialize || state.z > 0.5 || state.x <= 0.0 || hidden)
   {
     float generation = bpInitialize ? 0.0 : state.y + 1.0;
     outState = vec4(bpLifetimeOf(e, generation), generation, 1.0, 0.0);
-    outCenter = vec4(bpCenterOf(e, generation), 0.0);
+    outCenter = vec4(bpCenterOf(e, generation), bpReleasing ? 0.0 : 1.0);
     outOrientation = bpFrameQuaternion;
     if (bpRandomOrientation && bpPlaneAxis >= 0)
     {
@@ -58,7 +63,7 @@ void main()
   else
   {
     outState = vec4(state.x, state.y, 0.0, 0.0);
-    outCenter = texelFetch(bpCenters, texel, 0);
+    outCenter = center;
     outOrientation = texelFetch(bpOrientations, texel, 0);
   }
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -500,5 +501,43 @@ TEST(Engine, ASeedSourceIsTakenInOrderCycling)
   p.seedPoints.push_back(NAN);
   p.seedPoints.push_back(0);
   p.seedPoints.push_back(0);
+  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+}
+
+TEST(Engine, AReleaseWindowHidesElementsUntilItOpensAndAfterItCloses)
+{
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(9));
+  bp::Parameters p = centralParameters(50, 0.2f);
+  p.lifetimeMin = 0.02f;
+  p.lifetimeMax = 0.06f;
+  p.releaseStart = 0.055; // inside the step [0.05, 0.06)
+  p.releaseStop = 0.1;
+  bp::Engine engine = configured(bp::BuiltinShape::Strip4, p);
+  auto hiddenCount = [&engine]()
+  {
+    int count = 0;
+    for (std::uint8_t f : engine.resetFlags())
+      count += (f & bp::ReleaseHidden) != 0;
+    return count;
+  };
+  EXPECT_EQ(hiddenCount(), 50); // initialised at t = 0, before the window
+  const double dt = 0.01;
+  int s = 0;
+  for (; s * dt < 0.05 - 1e-9; ++s)
+    engine.step(field, s * dt, dt, bp::serialRunner());
+  EXPECT_EQ(hiddenCount(), 50) << "still hidden before t = 0.05";
+  EXPECT_EQ(engine.generations()[0], 5u) << "placed anew at each step while waiting";
+  engine.step(field, s * dt, dt, bp::serialRunner()); // [0.05, 0.06) holds 0.055
+  ++s;
+  EXPECT_EQ(hiddenCount(), 0) << "all released when the window opens";
+  for (; s * dt < 0.3; ++s)
+    engine.step(field, s * dt, dt, bp::serialRunner());
+  EXPECT_EQ(hiddenCount(), 50) << "lives of at most 0.06 have all ended after the window";
+  // A burst: released at t = 0 only.
+  p.releaseStart = p.releaseStop = 0.0;
+  bp::Engine burst = configured(bp::BuiltinShape::Strip4, p);
+  EXPECT_EQ(std::count(burst.resetFlags().begin(), burst.resetFlags().end(), 0), 50);
+  p.releaseStop = -1.0;
   EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
 }

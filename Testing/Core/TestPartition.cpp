@@ -177,7 +177,7 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
         bp::keepOwned(engine, partition, k);
         for (int s = 0; s < steps; ++s)
         {
-          engine.resetDue(bp::serialRunner());
+          engine.resetDue(bp::serialRunner(), s * dt, dt);
           std::string error;
           const long long left = bp::migrate(engine, partition, k, exchange.forPiece(k), error);
           moved[std::size_t(k)] += std::max(left, 0LL);

@@ -80,6 +80,7 @@ struct Case
   bool anyParticle = false; // Reset When = Any Particle Leaves
   int planeAxis = -1;       // random turns about this axis only
   int seeds = 0;            // release from this many seed points instead of the box
+  bool window = false;      // release only while 0.3 <= t <= 0.8
 };
 
 /// The slice with the points in x > 0.3, y < 0.2 outside the domain (NaN),
@@ -154,6 +155,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
       p.seedPoints.push_back(float(box[2 * a] +
         (box[2 * a + 1] - box[2 * a]) *
           (0.25 + 0.5 * std::fmod(0.618034 * (k + 1) * (a + 1), 1.0))));
+  if (c.window)
+  {
+    p.releaseStart = 0.3;
+    p.releaseStop = 0.8;
+  }
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -171,7 +177,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
   ASSERT_EQ(cpu.configure(shape, p), "");
   // What CpuStepper::setField gives the engine; the GPU makes its own.
   cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed));
-  cpu.initialize(bp::serialRunner());
+  cpu.initialize(bp::serialRunner(), 0.0);
   bp::GpuEngine gpu;
   ASSERT_EQ(gpu.configure(shape, p), "");
   ASSERT_EQ(gpu.setField(field), "");
@@ -188,8 +194,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
 
   std::vector<float> positions, forces, normals, lifetimes, generations, centers;
   gpu.read(&positions, &forces, &normals);
-  std::vector<float> orientations;
-  gpu.readElements(&lifetimes, &generations, &centers, &orientations);
+  std::vector<float> orientations, hidden;
+  gpu.readElements(&lifetimes, &generations, &centers, &orientations, nullptr, &hidden);
   gpu.release();
 
   // Tolerance: 1e-4 of the field's diagonal (issue 3).
@@ -210,6 +216,14 @@ void compare(const Case& c, int steps, bool pinSome = false)
     EXPECT_NEAR(lifetimes[e], cpu.lifetimes()[e], 1e-5) << "element " << e;
   }
   EXPECT_EQ(generationMismatches, 0);
+  int hiddenMismatches = 0, hiddenCount = 0;
+  for (std::size_t e = 0; e < c.elements; ++e)
+  {
+    const bool cpuHidden = (cpu.resetFlags()[e] & bp::ReleaseHidden) != 0;
+    hiddenMismatches += (hidden[e] > 0.5f) != cpuHidden;
+    hiddenCount += cpuHidden;
+  }
+  EXPECT_EQ(hiddenMismatches, 0) << "elements hidden on one engine only";
   // The generation's initial centres (Layer and Radius colouring).
   double worstCenter = 0.0;
   for (std::size_t k = 0; k < centers.size(); ++k)
@@ -228,6 +242,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
     unsteady ? "unsteady" : "steady", worst, tolerance);
   if (c.rectilinear)
     std::printf("  on a rectilinear grid\n");
+  if (c.window)
+    std::printf("  released in [0.3, 0.8]: %d hidden at the end\n", hiddenCount);
   if (c.linking != bp::Linking::None)
     std::printf(
       "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
@@ -301,6 +317,25 @@ TEST(GpuEngine, MatchesWithInPlaneOrientations)
     c.planeAxis = axis;
     compare(c, 100);
   }
+}
+
+TEST(GpuEngine, MatchesWithAReleaseWindow)
+{
+  // Hidden until t = 0.3, released until 0.8, hidden again as they fall due:
+  // compared at 0.2 (all hidden), 0.5 and 1.5.
+  for (int steps : { 20, 50, 150 })
+  {
+    SCOPED_TRACE(steps);
+    Case c{ bp::BuiltinShape::Strip8, 300, bp::Integrator::RK2, bp::Restoration::AveragedJacobi,
+      true };
+    c.window = true;
+    compare(c, steps);
+  }
+  Case linked{ bp::BuiltinShape::Cross, 16, bp::Integrator::Euler, bp::Restoration::AveragedJacobi,
+    false };
+  linked.linking = bp::Linking::Sheet;
+  linked.window = true;
+  compare(linked, 50);
 }
 
 TEST(GpuEngine, MatchesWithASeedSource)
@@ -623,7 +658,7 @@ void trace(bp::Stepper& stepper, const UnsteadySystem& s)
 {
   ASSERT_EQ(stepper.configure(s.shape, s.p), "");
   ASSERT_EQ(stepper.setField(s.field), "");
-  stepper.initialize();
+  stepper.initialize(0.0);
   schedule([&](double t, double h) { stepper.step(t, h); }, [&] { stepper.save(); },
     [&] { stepper.restore(); });
 }

@@ -43,7 +43,7 @@ public:
       this->Stepper.reset(this->Cpu = new bp::CpuStepper(bp::serialRunner()));
     EXPECT_EQ(this->Stepper->configure(shape, p), "");
     EXPECT_EQ(this->Stepper->setField(field), "");
-    this->Stepper->initialize();
+    this->Stepper->initialize(0.0);
   }
   ~System()
   {

@@ -61,6 +61,11 @@ def placement_traces():
     line = Line(Point1=[-0.9, -0.8, -0.7], Point2=[0.9, 0.8, 0.7], Resolution=40)
     cases["seeded"] = (BoundParticleTracer(Input=hurricane, SeedSource=line, ElementShape="Cross",
                                            NumberOfElements=400, Seed=4), [0.5, 1.0])
+    # A release window: hidden elements cross pieces and are released together.
+    cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
+                                           NumberOfElements=600, Seed=5, ReleaseWindow=1,
+                                           ReleaseStart=0.3, ReleaseStop=0.6,
+                                           LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
     far = AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
                        Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8])
     cases["far_x"] = (BoundParticleTracer(Input=far, ElementShape="Strip4", NumberOfElements=600,
@@ -127,6 +132,7 @@ for name, (tracer, times) in all_traces().items():
         result[key + "_particle"] = particle[order]
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
         result[key + "_process"] = vtk_to_numpy(pd.GetArray("ProcessId"))[order].astype(int)
+        result[key + "_cells"] = numpy.array([data.GetNumberOfCells()])
         per_process = data.GetFieldData().GetArray("ElementsPerProcess")
         if per_process is not None:
             result[key + "_per_process"] = vtk_to_numpy(per_process).astype(int)

@@ -170,6 +170,9 @@ def compare(reference, result, name, ranks):
         bptest.check(False, "%s wrote no trace" % name)
         return
     for key in reference.files:
+        if key.endswith("_cells") and key in result.files:
+            bptest.check((reference[key] == result[key]).all(), "%s %s: %d cells, built in %d" %
+                         (name, key, result[key][0], reference[key][0]))
         if key.endswith("_times"):
             same = (reference[key].shape == result[key].shape and
                     numpy.allclose(reference[key], result[key], rtol=1e-12, atol=0))

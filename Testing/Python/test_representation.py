@@ -81,9 +81,9 @@ def compare_paths(cpu, gpu, color, scalar_range, name, frames=(), time=1.0, **di
 
 def tracer(shape, engine, count):
     # The baselines show the time line [0, 10] with lifetimes in [5, 10].
-    return BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape=shape, NumberOfElements=count,
-                               ElementSize=0.3, Seed=3, Engine=engine, Duration=10.0,
-                               LifetimeRange=[5.0, 10.0])
+    return BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape=shape,
+                               NumberOfElements=count, ElementSize=0.3, Seed=3, Engine=engine,
+                               Duration=10.0, LifetimeRange=[5.0, 10.0])
 
 
 # The representation is offered for the tracer's output.
@@ -115,6 +115,29 @@ for shape in ["Strip16", "Cross", "Paddlewheel", "Fish"]:
                      "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
     Delete(cpu)
     Delete(gpu)
+
+# A release window hides the elements due outside it on both engines: at
+# t = 1 the window [1.5, 2] has not opened (nothing drawn); at t = 2 the
+# elements released in it are drawn the same by both.
+cpu = tracer("Cross", "CPU", 40)
+gpu = tracer("Cross", "GPU", 40)
+for proxy in (cpu, gpu):
+    proxy.ReleaseWindow = 1
+    proxy.ReleaseStart = 1.5
+    proxy.ReleaseStop = 2.0
+    proxy.LifetimeRange = [0.3, 0.6]
+before = compare_paths(cpu, gpu, None, None, "Window_before", time=1.0)
+bptest.check(bptest.covered_fraction(before) == 0.0,
+             "before the window nothing is drawn (%.4f)" % bptest.covered_fraction(before))
+during = compare_paths(cpu, gpu, None, None, "Window_during", time=2.0)
+bptest.check(bptest.covered_fraction(during) > 0.005,
+             "in the window the elements are drawn (%.4f)" % bptest.covered_fraction(during))
+after = compare_paths(cpu, gpu, None, None, "Window_after", time=3.0)
+bptest.check(bptest.covered_fraction(after) == 0.0,
+             "lives of at most 0.6 after the window: nothing drawn (%.4f)" %
+             bptest.covered_fraction(after))
+Delete(cpu)
+Delete(gpu)
 
 # Every other array of the CPU output colours the GPU path the same way.
 cpu = tracer("Paddlewheel", "CPU", 40)

@@ -144,6 +144,25 @@ bptest.check(points(seeded, start).shape == (20 * 9, 3), "a 3 x 3 plane as the e
 seeded.ElementTemplate = None
 bptest.check(points(seeded, start).shape == (20 * 4, 3), "cleared, Square elements again")
 
+# A release window: one burst at t = 0.5, followed; before it nothing is drawn
+# (the elements' points are there, without cells).
+burst = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Square",
+                            NumberOfElements=40, Seed=6, Duration=5.0, NumberOfTimeSteps=51,
+                            LifetimeRange=[10.0, 10.0], ReleaseWindow=1, ReleaseStart=0.5,
+                            ReleaseStop=0.5)
+counts = {}
+for t in (0.5, 0.6, 1.5):
+    burst.UpdatePipeline(t)
+    data = servermanager.Fetch(burst)
+    counts[t] = (data.GetNumberOfPoints(), data.GetNumberOfCells())
+# The step that holds t = 0.5 releases them: the state at 0.5 comes before it.
+bptest.check(counts[0.5] == (160, 0), "before the burst: no cells (%s)" % (counts[0.5],))
+# Those that leave the field are not released again: a burst only thins out.
+bptest.check(counts[0.6][0] == 160 and 30 < counts[0.6][1] <= 40,
+             "after the burst: about 40 squares (%s)" % (counts[0.6],))
+bptest.check(0 < counts[1.5][1] <= counts[0.6][1],
+             "followed at t = 1.5: %d squares" % counts[1.5][1])
+
 Delete(view)
 del view
 bptest.finish()
