@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "pqBoundParticleDefaults.h"
+
+#include "pqApplicationCore.h"
+#include "pqPipelineSource.h"
+#include "pqServerManagerModel.h"
+#include "vtkCommand.h"
+#include "vtkSMProperty.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMSourceProxy.h"
+
+#include <cstring>
+
+namespace
+{
+/// No array named in Vectors: its default found no input arrays.
+bool lacksVectors(vtkSMProxy* tracer)
+{
+  const char* name = vtkSMPropertyHelper(tracer, "Vectors").GetAsString(4);
+  return !name || !*name;
+}
+
+/// Emitter Size -2 -2 -2: the extents of bounds never set ([1, -1] per axis).
+bool placeholderBox(vtkSMProxy* tracer)
+{
+  vtkSMPropertyHelper size(tracer, "EmitterSize");
+  return size.GetNumberOfElements() == 3 && size.GetAsDouble(0) == -2.0 &&
+    size.GetAsDouble(1) == -2.0 && size.GetAsDouble(2) == -2.0;
+}
+} // namespace
+
+pqBoundParticleDefaults::pqBoundParticleDefaults(QObject* parent)
+  : QObject(parent)
+{
+}
+
+void pqBoundParticleDefaults::onStartup()
+{
+  pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
+  QObject::connect(model, &pqServerManagerModel::sourceAdded, this,
+    [](pqPipelineSource* source) { pqBoundParticleDefaults::complete(source); });
+}
+
+void pqBoundParticleDefaults::complete(pqPipelineSource* source)
+{
+  vtkSMProxy* tracer = source ? source->getProxy() : nullptr;
+  if (!tracer || !tracer->GetXMLName() || std::strcmp(tracer->GetXMLName(), "BoundParticleTracer"))
+  {
+    return;
+  }
+  const bool vectors = lacksVectors(tracer), box = placeholderBox(tracer);
+  auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(tracer, "Input").GetAsProxy());
+  if ((!vectors && !box) || !input)
+  {
+    return;
+  }
+  // What making the tracer after an update would have seen.
+  input->UpdatePipeline();
+  // The domains that depend on the input (arrays, bounds) look at its data
+  // again when the input property says it changed.
+  tracer->GetProperty("Input")->InvokeEvent(vtkCommand::UncheckedPropertyModifiedEvent);
+  if (vectors)
+  {
+    tracer->GetProperty("Vectors")->ResetToDomainDefaults();
+  }
+  if (box && !placeholderBox(tracer))
+  {
+    return; // someone set the box meanwhile
+  }
+  if (box)
+  {
+    tracer->GetProperty("EmitterCenter")->ResetToDomainDefaults();
+    tracer->GetProperty("EmitterSize")->ResetToDomainDefaults();
+  }
+  tracer->UpdateVTKObjects();
+}

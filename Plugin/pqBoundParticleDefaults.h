@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class pqBoundParticleDefaults
+ * @brief Completes the defaults of a Bound Particle Tracer made before its
+ * input had data (from the Python shell).
+ *
+ * ParaView picks a filter's data-dependent defaults (the Vectors array, the
+ * emitter box from the input's bounds) when the filter is made. From the
+ * Python shell that is usually before the input has run, so the panel showed
+ * no Vectors and an Emitter Size of -2 -2 -2 (the extents of bounds never
+ * set) for good. This autostart watches the tracers that get registered;
+ * one that holds those placeholders has its input updated and the two
+ * properties set from its data, as if it had been made after the update.
+ */
+#ifndef pqBoundParticleDefaults_h
+#define pqBoundParticleDefaults_h
+
+#include <QObject>
+
+class pqPipelineSource;
+
+class pqBoundParticleDefaults : public QObject
+{
+public:
+  explicit pqBoundParticleDefaults(QObject* parent = nullptr);
+  ~pqBoundParticleDefaults() override = default;
+
+  void onStartup();
+  void onShutdown() {}
+
+  /// Sets the data-dependent defaults of `source` if it is a tracer that
+  /// holds the placeholders of a proxy made before its input had data.
+  static void complete(pqPipelineSource* source);
+};
+
+#endif
