@@ -726,6 +726,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   // Summed in float, particle by particle, as the GPU engine sums it.
   float c[3] = { 0, 0, 0 };
   bool anyOutside = false;
+  const bool byParticle = this->Params.resetWhen == ResetWhen::AnyParticleLeaves;
   for (std::size_t i = 0; i < n; ++i)
   {
     const float* q = p + 3 * i;
@@ -740,7 +741,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     {
       c[k] += q[k];
     }
-    anyOutside = anyOutside || !this->inDomain(field, q, weights.end);
+    anyOutside = anyOutside || (byParticle && !this->inDomain(field, q, weights.end));
   }
   bool leave;
   if (!finite)
@@ -754,9 +755,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   {
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
-    leave = this->Params.resetWhen == ResetWhen::AnyParticleLeaves
-      ? anyOutside
-      : !this->inDomain(field, center, weights.end);
+    leave = byParticle ? anyOutside : !this->inDomain(field, center, weights.end);
     leave = leave || this->releasedStagnant(e, center, h);
   }
   // A super set's element stays (and keeps its last good positions when they

@@ -247,10 +247,12 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
   {
     this->Degenerate[a] = grid.dims[a] <= 1;
     this->Origin[a] = float(grid.origin[a] - grid.firstIndex[a] * grid.spacing[a]);
-    this->IndexShift[a] = float(grid.firstIndex[a]);
+    this->IndexShift[a] = grid.firstIndex[a];
     this->InverseSpacing[a] = this->Degenerate[a] ? 0.0f : float(1.0 / grid.spacing[a]);
     this->MaxIndex[a] = float(std::max(grid.dims[a] - 1, 0));
-    this->LastCell[a] = std::max(grid.dims[a] - 2, 0);
+    this->LowIndex[a] = float(grid.firstIndex[a]);
+    this->HighIndex[a] = float(grid.firstIndex[a] + std::max(grid.dims[a] - 1, 0));
+    this->LastCell[a] = grid.firstIndex[a] + std::max(grid.dims[a] - 2, 0);
     this->Rectilinear[a] = false;
     this->Lower[a] = float(grid.coordinate(a, 0));
     this->Upper[a] = float(grid.coordinate(a, std::max(grid.dims[a] - 1, 0)));
@@ -392,12 +394,8 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
   return c;
 }
 
-bool VectorField::outsideCellAt(const float p[3], float weight) const
+bool VectorField::outsideCellOf(const float p[3], float weight) const
 {
-  if (!this->FirstOutside && !this->SecondOutside)
-  {
-    return false;
-  }
   const std::size_t base = this->cellIndexAt(p);
   return (this->FirstOutside && this->FirstOutside[base]) ||
     (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);

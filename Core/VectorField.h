@@ -156,7 +156,10 @@ public:
   bool contains(const float p[3]) const { return this->Bounds.contains(p); }
   /// Whether the cell that holds p is outside the flow's domain in the
   /// first slice, or in the second where it weighs anything (DomainMask.h).
-  bool outsideCellAt(const float p[3], float weight) const;
+  bool outsideCellAt(const float p[3], float weight) const
+  {
+    return (this->FirstOutside || this->SecondOutside) && this->outsideCellOf(p, weight);
+  }
   /// The index of the cell that holds p (clamped to the grid), as its lowest
   /// corner's point index: how outsideCells and release masks are indexed.
   inline std::size_t cellIndexAt(const float p[3]) const;
@@ -200,6 +203,8 @@ public:
   const std::vector<float>& axisTable(int a) const { return this->AxisTable[a]; }
 
 private:
+  /// outsideCellAt() where a slice has outside cells.
+  bool outsideCellOf(const float p[3], float weight) const;
   /// The MaxVelocity and MaxGradient checks, given the largest |component|.
   std::string checkVelocityScale(float largest) const;
 
@@ -232,11 +237,13 @@ private:
   FieldSlice First;
   FieldSlice Second;
   // Precomputed for the hot loop.
-  float Origin[3];     ///< the whole grid's first point (GridGeometry::firstIndex)
-  float IndexShift[3]; ///< GridGeometry::firstIndex
+  float Origin[3];   ///< the whole grid's first point (GridGeometry::firstIndex)
+  int IndexShift[3]; ///< GridGeometry::firstIndex: this grid's first point in the whole's
+  float LowIndex[3]; ///< this grid's first and last points, in the whole grid's indices
+  float HighIndex[3];
   float InverseSpacing[3];
-  float MaxIndex[3];
-  int LastCell[3]; ///< the last cell's index (0 on a plane)
+  float MaxIndex[3]; ///< this grid's last point index (samplingConstants)
+  int LastCell[3];   ///< the last cell's index in the whole grid's (IndexShift on a plane)
   bool Rectilinear[3];
   float Lower[3];
   float Upper[3];
@@ -257,18 +264,19 @@ inline void VectorField::locate(int a, float x, std::size_t& cell, float& fracti
     this->locateRectilinear(a, x, cell, fraction);
     return;
   }
-  // From the whole grid's first point, then shifted to this piece's indices:
-  // exact (g >= IndexShift, both multiples of g's last place), so a piece
-  // finds the whole grid's cell and fraction to the bit.
-  float g = (x - this->Origin[a]) * this->InverseSpacing[a] - this->IndexShift[a];
-  // Clamped so that NaN lands on 0 rather than indexing out of the grid.
-  g = g > 0.0f ? g : 0.0f;
-  g = g < this->MaxIndex[a] ? g : this->MaxIndex[a];
+  // In the whole grid's indices, from its first point, so that a piece of a
+  // distributed run finds the whole grid's cell and fraction to the bit; the
+  // piece's own index is then an integer shift away.
+  float g = (x - this->Origin[a]) * this->InverseSpacing[a];
+  // Clamped to this grid's points, so that NaN lands on the first rather
+  // than indexing out of the grid.
+  g = g > this->LowIndex[a] ? g : this->LowIndex[a];
+  g = g < this->HighIndex[a] ? g : this->HighIndex[a];
   // g >= 0, so truncation is floor; the last cell takes points on the upper
   // boundary, so i + 1 stays valid.
   const int i = std::min(int(g), this->LastCell[a]);
   fraction = g - float(i);
-  cell = std::size_t(i);
+  cell = std::size_t(i - this->IndexShift[a]);
 }
 
 inline std::array<const float*, 8> VectorField::cornersOf(const float* data, std::size_t base) const
