@@ -180,19 +180,30 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   {
     return "ElementSize must be positive";
   }
+  if (std::isnan(p.releaseStart) || std::isnan(p.releaseStop))
+  {
+    return "ReleaseStart and ReleaseStop must be numbers (one is NaN)";
+  }
   if (!(p.releaseStart <= p.releaseStop))
   {
-    return "the release window must not end before it starts";
+    std::ostringstream err;
+    err << "the release window must not end before it starts: ReleaseStart " << p.releaseStart
+        << " is after ReleaseStop " << p.releaseStop;
+    return err.str();
   }
   if (p.planeAxis < -1 || p.planeAxis > 2)
   {
     return "the plane axis must be -1 (none) or an axis 0 to 2";
   }
-  if (p.seedPoints.size() % 3 != 0 || p.seedPoints.size() / 3 > MaxSeedPoints ||
-    !std::all_of(
-      p.seedPoints.begin(), p.seedPoints.end(), [](float x) { return std::isfinite(x); }))
+  if (p.seedPoints.size() % 3 != 0 || p.seedPoints.size() / 3 > MaxSeedPoints)
   {
-    return "the seed points must be finite, at most " + std::to_string(MaxSeedPoints);
+    return "there must be at most " + std::to_string(MaxSeedPoints) + " seed points, 3 floats each";
+  }
+  if (!std::all_of(
+        p.seedPoints.begin(), p.seedPoints.end(), [](float x) { return std::isfinite(x); }))
+  {
+    return "the Seed Source has a point that is not finite (NaN or Inf), or one too far from the "
+           "field's first point for float coordinates";
   }
   for (int k = 0; k < 3; ++k)
   {
@@ -391,11 +402,23 @@ void Engine::place(std::size_t e, bool releasing)
 void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
 {
   const Parameters& P = this->Params;
+  // Where a release may land: in the field's bounds and, with a mask, in a fit cell.
+  auto fits = [this](const float* x)
+  {
+    return this->ReleaseGrid->contains(x) &&
+      !(this->ReleaseUnfit && (*this->ReleaseUnfit)[this->ReleaseGrid->cellIndexAt(x)]);
+  };
   if (!P.seedPoints.empty())
   {
+    // Seed point r, or the next ones in turn where it does not fit.
     const std::uint64_t count = P.seedPoints.size() / 3;
-    const std::uint64_t release = std::uint64_t(generation) * P.numberOfElements + element;
-    std::copy_n(P.seedPoints.data() + 3 * (release % count), 3, c);
+    const std::uint64_t first = (std::uint64_t(generation) * P.numberOfElements + element) % count;
+    auto seed = [&](int k) { std::copy_n(P.seedPoints.data() + 3 * ((first + k) % count), 3, c); };
+    seed(0);
+    for (int k = 1; this->ReleaseGrid && k < ReleaseTries && !fits(c); ++k)
+    {
+      seed(k);
+    }
     return;
   }
   auto candidate = [&](int k)
@@ -411,9 +434,7 @@ void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, floa
   {
     return;
   }
-  const VectorField& grid = *this->ReleaseGrid;
-  const std::vector<std::uint8_t>& unfit = *this->ReleaseUnfit;
-  for (int k = 1; k < ReleaseTries && !(grid.contains(c) && !unfit[grid.cellIndexAt(c)]); ++k)
+  for (int k = 1; k < ReleaseTries && !fits(c); ++k)
   {
     candidate(k);
   }
@@ -424,7 +445,9 @@ void Engine::setReleaseMask(
 {
   const bool fits = unfit && unfit->size() == grid.pointCount();
   this->ReleaseUnfit = fits ? std::move(unfit) : nullptr;
-  this->ReleaseGrid = fits ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;
+  // The grid alone bounds seed points (FieldSlice-less: it locates, never samples).
+  this->ReleaseGrid =
+    grid.pointCount() > 0 ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;
 }
 
 void Engine::initialize(const RangeRunner& run, double startTime)

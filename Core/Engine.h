@@ -205,7 +205,9 @@ public:
    * Where releases may land: `unfit` (releaseUnfitCells(), DomainMask.h) per
    * cell of `grid`, the whole field's grid in engine coordinates. A release
    * draws up to ReleaseTries candidate centres and takes the first inside the
-   * grid's bounds in a fit cell (or else the last). Null: the first candidate.
+   * grid's bounds in a fit cell (or else the last); null `unfit`: the first
+   * candidate. Seed points that do not fit (outside the bounds or, with a
+   * mask, in an unfit cell) give way to the next ones in turn.
    */
   void setReleaseMask(
     const GridGeometry& grid, std::shared_ptr<const std::vector<std::uint8_t>> unfit);

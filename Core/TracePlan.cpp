@@ -67,12 +67,17 @@ std::string TracePlan::setTimes(
     this->OutputTimes.push_back(inputTimes.back());
     return std::string();
   }
-  if (!(duration > 0.0) || !std::isfinite(duration) || count < 2 || count > MaxSteadyTimeSteps)
+  if (count < 2 || count > MaxSteadyTimeSteps)
   {
     std::ostringstream err;
-    err << "For a steady input, Duration must be positive and finite and NumberOfTimeSteps "
-           "between 2 and "
-        << MaxSteadyTimeSteps << " (they are " << duration << " and " << count << ").";
+    err << "For a steady input, NumberOfTimeSteps must be between 2 and " << MaxSteadyTimeSteps
+        << " (it is " << count << ").";
+    return err.str();
+  }
+  if (!(duration > 0.0) || !std::isfinite(duration))
+  {
+    std::ostringstream err;
+    err << "For a steady input, Duration must be positive and finite (it is " << duration << ").";
     return err.str();
   }
   for (int k = 0; k < count; ++k)

@@ -251,6 +251,14 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
     }
     const double frames = std::ceil(longest / (FrameSteps * dt) - 1e-9);
     line.framesPerInterval = int(std::min(std::max(frames, 1.0), double(MaxFramesPerInterval)));
+    if (frames > double(MaxFramesPerInterval))
+    {
+      std::ostringstream w;
+      w << "Even at " << MaxFramesPerInterval << " frames per input time step a frame takes up to "
+        << std::ceil(longest / (MaxFramesPerInterval * dt))
+        << " steps; check the velocity's units, or set Step Size in time units.";
+      line.warnings.push_back(w.str());
+    }
   }
   if (!stepKnown)
   {

@@ -233,6 +233,11 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   {
     err << "The array '" << name
         << "' is not point data; choose a point array (or apply Cell Data to Point Data).";
+    if (dataSet->GetPointData()->GetArray(name))
+    {
+      err << " The input has a point array '" << name << "' too: Vectors = ['POINTS', '" << name
+          << "'].";
+    }
     return err.str();
   }
   if (vectors->GetNumberOfComponents() != 3)

@@ -366,7 +366,10 @@ void fillElementState(const bp::OutputArray& row, vtkDataArray* out, const FillC
   switch (row.id)
   {
     case bp::OutputArrayId::Lifetime:
-      perElement(floats(out), engine, [&](std::size_t e) { return engine.lifetimes()[e]; });
+      // An element whose life ended in the last step is released at the next:
+      // none left, not a negative time.
+      perElement(
+        floats(out), engine, [&](std::size_t e) { return std::max(engine.lifetimes()[e], 0.0f); });
       break;
     case bp::OutputArrayId::ElementId:
       perElement(static_cast<vtkIdTypeArray*>(out)->GetPointer(0), engine,

@@ -195,7 +195,16 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
   vtkInformation* inInfo, const std::vector<double>& inputTimes)
 {
   const bool unsteady = inputTimes.size() >= 2;
-  const bool automatic = unsteady ? this->FramesPerInputStep <= 0 : this->Duration <= 0.0;
+  const bool framesOutOfRange =
+    this->FramesPerInputStep < 0 || this->FramesPerInputStep > bp::MaxFramesPerInterval;
+  if (unsteady && framesOutOfRange)
+  {
+    vtkErrorMacro("FramesPerInputStep must be 0 (automatic) to "
+      << bp::MaxFramesPerInterval << " (it is " << this->FramesPerInputStep
+      << "); using automatic frames.");
+  }
+  const bool automatic =
+    unsteady ? this->FramesPerInputStep <= 0 || framesOutOfRange : this->Duration <= 0.0;
   // Only an automatic time line needs the field's scale: no data is read for
   // a time line the user set.
   const bp::TimeScale scale = automatic && inInfo->Has(vtkDataObject::DATA_OBJECT())
@@ -207,8 +216,9 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
                                                 : nullptr;
         })
     : bp::TimeScale();
-  const bp::TimeLine line = bp::resolveTimeLine(this->Duration, this->FramesPerInputStep,
-    this->NumberOfTimeSteps, this->StepSize, this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
+  const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
+    framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
+    this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
   for (const std::string& warning : line.warnings)
   {
     vtkWarningMacro(<< warning);
@@ -252,6 +262,11 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
       whole->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
       whole->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
       whole->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+      // An image's own whole extent (the field's would crop it).
+      if (whole->Has(SDDP::WHOLE_EXTENT()))
+      {
+        whole->Set(SDDP::UPDATE_EXTENT(), whole->Get(SDDP::WHOLE_EXTENT()), 6);
+      }
       whole->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
     }
   }

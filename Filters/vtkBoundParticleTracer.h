@@ -255,7 +255,7 @@ public:
   /// Releases avoid stagnant flow: an element whose centre moves slower than
   /// this fraction of the field's top speed (at the start) over its first
   /// step is released again. 0 keeps every release.
-  vtkSetClampMacro(MinimumReleaseSpeed, double, 0.0, 1.0);
+  vtkSetMacro(MinimumReleaseSpeed, double);
   vtkGetMacro(MinimumReleaseSpeed, double);
   ///@}
 
@@ -294,7 +294,7 @@ public:
   /// For an unsteady input: the frames offered per input time step (the
   /// input's times, and evenly between them). 0 (the default) is automatic:
   /// as many as keep a frame within 10 steps.
-  vtkSetClampMacro(FramesPerInputStep, int, 0, 1000);
+  vtkSetMacro(FramesPerInputStep, int);
   vtkGetMacro(FramesPerInputStep, int);
   ///@}
 

@@ -346,6 +346,34 @@ void vtkBoundParticleTracer::vtkInternals::seedPoints(
   }
   // The user chose where releases land: no release is retried for its speed.
   p.releaseMinSpeed = 0.0f;
+  // Releases skip the points outside the field (and in cells outside the
+  // flow's domain): say how many there are.
+  const std::array<double, 6> b = this->Layout.domainBounds(this->Grid);
+  std::size_t outside = 0;
+  for (std::size_t i = 0; i < std::size_t(used); ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = p.seedPoints[3 * i + a];
+      if (this->Grid.dims[a] > 1 && !(x >= b[2 * a] && x <= b[2 * a + 1]))
+      {
+        ++outside;
+        break;
+      }
+    }
+  }
+  if (outside == std::size_t(used))
+  {
+    vtkWarningWithObjectMacro(self,
+      "None of the Seed Source's " << used
+                                   << " points lies in the field: "
+                                      "no element can be released.");
+  }
+  else if (outside > 0)
+  {
+    vtkWarningWithObjectMacro(self, << outside << " of the Seed Source's " << used
+                                    << " points lie outside the field; releases skip them.");
+  }
 }
 
 vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
@@ -360,6 +388,14 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   }
   bp::Parameters p = resolved.parameters;
   this->seedPoints(self, inputVector, p);
+  const std::vector<double>& times = this->Plan.outputTimes();
+  if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
+  {
+    vtkWarningWithObjectMacro(self,
+      "No element is released: the Release Window ["
+        << p.releaseStart << ", " << p.releaseStop << "] lies outside the offered times ["
+        << times.front() << ", " << times.back() << "].");
+  }
   // The engine's own checks first: they name the setting to change.
   const std::string invalid = bp::Engine::validate(shape, p);
   if (!invalid.empty())

@@ -92,6 +92,9 @@ const int BP_RELEASE_TRIES = 64; // ReleaseTries
 
 bool bpReleaseFits(vec3 c);
 
+// A seed point fits in the field's bounds and, with a mask, in a fit cell.
+bool bpSeedFits(vec3 c);
+
 // Release centres from a seed source (Parameters::seedPoints), 256 a row.
 uniform sampler2D bpSeedPoints;
 uniform int bpSeedCount; // 0: the emitter box
@@ -104,10 +107,17 @@ vec3 bpCenterOf(int e, float generation)
   }
   if (bpSeedCount > 0)
   {
-    // (generation * E + e) mod S in 32 bits: S <= 2^16 keeps each product exact.
+    // (generation * E + e) mod S in 32 bits: S <= 2^16 keeps each product
+    // exact. A seed point that does not fit gives way to the next ones.
     uint S = uint(bpSeedCount);
     uint r = ((uint(generation) % S) * (uint(bpElements) % S) + uint(e) % S) % S;
-    return texelFetch(bpSeedPoints, ivec2(int(r % 256u), int(r / 256u)), 0).xyz;
+    vec3 c = texelFetch(bpSeedPoints, ivec2(int(r % 256u), int(r / 256u)), 0).xyz;
+    for (int k = 1; k < BP_RELEASE_TRIES && !bpSeedFits(c); ++k)
+    {
+      uint q = (r + uint(k)) % S;
+      c = texelFetch(bpSeedPoints, ivec2(int(q % 256u), int(q / 256u)), 0).xyz;
+    }
+    return c;
   }
   vec3 c = bpCandidate(e, generation, 0);
   for (int k = 1; bpReleaseMasked && k < BP_RELEASE_TRIES && !bpReleaseFits(c); ++k)
@@ -279,6 +289,11 @@ bool bpReleaseFits(vec3 c)
   bpLocate(1, c.y, a.y, f.y);
   bpLocate(2, c.z, a.z, f.z);
   return bpContains(c) && texelFetch(bpReleaseUnfit, a, 0).r == 0u;
+}
+
+bool bpSeedFits(vec3 c)
+{
+  return bpContains(c) && (!bpReleaseMasked || bpReleaseFits(c));
 }
 
 // Engine::inDomain: in the bounds and in a cell inside the flow's domain.

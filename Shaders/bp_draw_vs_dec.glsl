@@ -32,7 +32,7 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
   if (bpScalarMode == BP_COLOR_FORCE)
     return state.w;
   if (bpScalarMode == BP_COLOR_LIFETIME)
-    return texelFetch(bpElements, elementTexel, 0).x;
+    return max(texelFetch(bpElements, elementTexel, 0).x, 0.0); // none left, as the CPU output
   if (bpScalarMode == BP_COLOR_VELOCITY)
   {
     vec3 v = texelFetch(bpSamples, texel, 0).xyz;

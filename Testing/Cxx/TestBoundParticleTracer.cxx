@@ -900,6 +900,13 @@ TEST(BoundParticleTracer, AutomaticTimeLineKeepsAFrameWithinTenSteps)
   EXPECT_NE(std::find(times.begin(), times.end(), 0.5), times.end());
   at(tracer, 1.0);
   EXPECT_LE((times[1] - times[0]) / tracer->GetResolvedTimeStep(), 10.0 + 1e-9);
+  // Out of range: an error, and the automatic frames.
+  {
+    ErrorLog errors(tracer);
+    tracer->SetFramesPerInputStep(5000);
+    EXPECT_EQ(offeredTimes(tracer), times);
+    EXPECT_TRUE(errors.mentions("FramesPerInputStep must be 0 (automatic) to 1000 (it is 5000)"));
+  }
   // The user's choices stay.
   tracer->SetFramesPerInputStep(1);
   EXPECT_EQ(offeredTimes(tracer), (std::vector<double>{ 0.0, 0.5, 1.0 }));

@@ -138,6 +138,28 @@ bptest.check(abs(placed - expected).max() < 1e-5,
 seeded.SeedSource = None
 unseeded = points(seeded, start).reshape(20, 4, 3).mean(axis=1)
 bptest.check(abs(unseeded - expected).max() > 0.1, "without it, the emitter box again")
+# An image as the Seed Source is read whole (not cut to the field's extent):
+# 30^3 seed points over a 24^3 field, one Point element on each.
+image_seeds = ResampleToImage(Input=flow, SamplingDimensions=[30, 30, 30])
+whole = BoundParticleTracer(Input=flow, Vectors=VELOCITY, SeedSource=image_seeds,
+                            ElementShape="Point", NumberOfElements=27000, Seed=1)
+with bptest.CapturedMessages() as log:
+    centres = points(whole, whole.TimestepValues[0])
+bptest.check(not log.messages, "an image Seed Source: no messages (%s)" % log.messages[:1])
+distinct = len(numpy.unique(numpy.round(centres, 5), axis=0))
+bptest.check(distinct == 27000, "all 27,000 seed points used (%d)" % distinct)
+Delete(whole)
+# Seed points outside the field are skipped, and the tracer says how many.
+half_out = Line(Point1=[2.0, 0.5, 0.0], Point2=[6.0, 0.5, 0.0], Resolution=9)
+skipping = BoundParticleTracer(Input=flow, Vectors=VELOCITY, SeedSource=half_out,
+                               ElementShape="Square", NumberOfElements=20, Seed=4)
+with bptest.CapturedMessages() as log:
+    placed = points(skipping, skipping.TimestepValues[0]).reshape(20, 4, 3).mean(axis=1)
+bptest.check(log.mentions("5 of the Seed Source's 10 points lie outside the field"),
+             "the outside seed points are counted: %s" % log.messages)
+bptest.check((placed[:, 0] <= 4.0).all(), "no element starts outside (x up to %.3f)" %
+             placed[:, 0].max())
+Delete(skipping)
 # The same for the Element Template: cleared, the built-in shape again.
 seeded.ElementTemplate = Plane(XResolution=2, YResolution=2)
 bptest.check(points(seeded, start).shape == (20 * 9, 3), "a 3 x 3 plane as the element")
@@ -157,6 +179,21 @@ for t in (0.5, 0.6, 1.5):
     counts[t] = (data.GetNumberOfPoints(), data.GetNumberOfCells())
 # The step that holds t = 0.5 releases them: the state at 0.5 comes before it.
 bptest.check(counts[0.5] == (160, 0), "before the burst: no cells (%s)" % (counts[0.5],))
+# Lifetimes left are never negative, even for those whose life just ended.
+lifetimes = vtk_to_numpy(servermanager.Fetch(burst).GetPointData().GetArray("Lifetime"))
+bptest.check(lifetimes.min() >= 0.0, "Lifetime >= 0 (%g)" % lifetimes.min())
+# A window outside the offered times says that nothing will be released.
+late = BoundParticleTracer(Input=flow, Vectors=VELOCITY, NumberOfElements=10, Duration=5.0,
+                           ReleaseWindow=1, ReleaseStart=100.0, ReleaseStop=200.0)
+with bptest.CapturedMessages() as log:
+    late.UpdatePipeline(1.0)
+bptest.check(log.mentions("No element is released"), "a window out of range: %s" % log.messages)
+late.ReleaseStart = float("nan")
+with bptest.CapturedMessages() as log:
+    late.UpdatePipeline(1.0)
+bptest.check(log.mentions("ReleaseStart and ReleaseStop must be numbers"),
+             "a NaN window: %s" % log.messages)
+Delete(late)
 # Those that leave the field are not released again: a burst only thins out.
 bptest.check(counts[0.6][0] == 160 and 30 < counts[0.6][1] <= 40,
              "after the burst: about 40 squares (%s)" % (counts[0.6],))
