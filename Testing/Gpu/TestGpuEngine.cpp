@@ -76,11 +76,12 @@ struct Case
   bool rectilinear = false; // y and z axes stretched
   bp::Linking linking = bp::Linking::None;
   bool linearMatching = false;
-  bool masked = false;      // a block of points outside the domain, releases in slow flow retried
-  bool anyParticle = false; // Reset When = Any Particle Leaves
-  int planeAxis = -1;       // random turns about this axis only
-  int seeds = 0;            // release from this many seed points instead of the box
-  bool window = false;      // release only while 0.3 <= t <= 0.8
+  bool masked = false;       // a block of points outside the domain, releases in slow flow retried
+  bool anyParticle = false;  // Reset When = Any Particle Leaves
+  int planeAxis = -1;        // random turns about this axis only
+  int seeds = 0;             // release from this many seed points instead of the box
+  bool seedsOutside = false; // every third seed point outside the field
+  bool window = false;       // release only while 0.3 <= t <= 0.8
 };
 
 /// The slice with the points in x > 0.3, y < 0.2 outside the domain (NaN),
@@ -154,7 +155,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
     for (int a = 0; a < 3; ++a) // spread over the inner half of the box
       p.seedPoints.push_back(float(box[2 * a] +
         (box[2 * a + 1] - box[2 * a]) *
-          (0.25 + 0.5 * std::fmod(0.618034 * (k + 1) * (a + 1), 1.0))));
+          (0.25 + 0.5 * std::fmod(0.618034 * (k + 1) * (a + 1), 1.0) +
+            (c.seedsOutside && k % 3 == 0 && a == 0 ? 2.0 : 0.0))));
   if (c.window)
   {
     p.releaseStart = 0.3;
@@ -229,6 +231,13 @@ void compare(const Case& c, int steps, bool pinSome = false)
   for (std::size_t k = 0; k < centers.size(); ++k)
     worstCenter = std::max(worstCenter, double(std::abs(centers[k] - cpu.initialCenters()[k])));
   EXPECT_LT(worstCenter, 1e-6 * g.diagonal()) << "initial centres differ by up to " << worstCenter;
+  if (c.seedsOutside)
+  {
+    float farthest = -1e30f;
+    for (std::size_t e = 0; e < c.elements; ++e)
+      farthest = std::max(farthest, cpu.initialCenters()[3 * e]);
+    EXPECT_LE(farthest, float(box[1])) << "a release at a seed point outside the field";
+  }
   double worstOrientation = 0.0;
   for (std::size_t k = 0; k < orientations.size(); ++k)
     worstOrientation =
@@ -344,6 +353,9 @@ TEST(GpuEngine, MatchesWithASeedSource)
   Case c{ bp::BuiltinShape::Strip8, 300, bp::Integrator::RK2, bp::Restoration::AveragedJacobi,
     true };
   c.seeds = 37;
+  compare(c, 150);
+  // Seed points outside the field give way to the next ones on both engines.
+  c.seedsOutside = true;
   compare(c, 150);
 }
 
