@@ -64,6 +64,31 @@ struct ReleaseMask
   std::shared_ptr<const std::vector<std::uint8_t>> unfit;
 };
 
+/// What a release mask was made from: a field's time steps (held, so that a
+/// freed and reused address never passes for them) and the minimum speed.
+class ReleaseMaskSource
+{
+public:
+  /// Whether the mask must be made again for `field` at `minSpeed`; then
+  /// remembers them as the source of the mask about to be made.
+  bool changes(const VectorField& field, float minSpeed)
+  {
+    if (field.firstSlice().velocity == this->First &&
+      field.secondSlice().velocity == this->Second && minSpeed == this->Speed)
+    {
+      return false;
+    }
+    this->First = field.firstSlice().velocity;
+    this->Second = field.secondSlice().velocity;
+    this->Speed = minSpeed;
+    return true;
+  }
+
+private:
+  std::shared_ptr<const std::vector<float>> First, Second;
+  float Speed = -1.0f;
+};
+
 /// The release mask of the whole field given this process's piece of it (a
 /// distributed run gathers every piece's cells; collective).
 using ReleaseMaskFunction = std::function<ReleaseMask(const VectorField& piece, float minSpeed)>;

@@ -359,8 +359,9 @@ void Engine::place(std::size_t e, bool releasing)
   const bool linked = !this->Links.empty();
   const std::uint32_t element = linked ? 0u : this->Ids[e];
   const std::uint32_t generation = this->Generations[e];
+  // Draws 3-6 (the centre's are releaseCenter()'s).
   float u[7];
-  for (std::uint32_t d = 0; d < 7; ++d)
+  for (std::uint32_t d = 3; d < 7; ++d)
   {
     u[d] = uniformDraw(P.seed, element, generation, d);
   }
@@ -691,10 +692,14 @@ void Engine::restoreOnce(float* p, float* scratch, float* orientation) const
   }
 }
 
-Engine::StepWeights Engine::StepWeights::of(const VectorField& field, double t, double h)
+Engine::StepWeights Engine::beginStep(const VectorField& field, double t, double h)
 {
-  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h), true,
-    true };
+  // After resetDue() (a distributed step) nothing is left to place; a hidden
+  // element, due at every step, would otherwise be placed twice.
+  const bool resets = !this->ResetsDone;
+  this->ResetsDone = false;
+  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h),
+    this->releasesAt(t, h), resets };
 }
 
 void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
@@ -797,19 +802,20 @@ bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
   {
     return false;
   }
-  // In its first step an element's lifetime is still the one drawn at its
-  // placement (compared with half a step's slack, so that both engines'
-  // roundings agree), and the centre it was placed at is its release centre.
-  const float drawn = P.lifetimeMin +
-    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
-  if (!(drawn - this->Lifetimes[e] < 0.5f * float(h)))
-  {
-    return false;
-  }
+  // Slower than the minimum since its release (the cheap test first) ...
   const float* start = this->InitialCenters.data() + 3 * e;
   const float d[3] = { c[0] - start[0], c[1] - start[1], c[2] - start[2] };
   const float reach = P.releaseMinSpeed * float(h);
-  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach;
+  if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach))
+  {
+    return false;
+  }
+  // ... and in its first step: its lifetime is still the one drawn at its
+  // placement (compared with half a step's slack, so that both engines'
+  // roundings agree).
+  const float drawn = P.lifetimeMin +
+    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
+  return drawn - this->Lifetimes[e] < 0.5f * float(h);
 }
 
 void Engine::restoreLinks(std::size_t e)
@@ -863,12 +869,7 @@ void Engine::restoreLinks(std::size_t e)
 void Engine::stepLinked(const VectorField& field, double t, double h, const RangeRunner& run)
 {
   const std::size_t n = this->Shape.particleCount(), E = this->elementCount();
-  StepWeights weights = StepWeights::of(field, t, h);
-  weights.releasing = this->releasesAt(t, h);
-  // After resetDue() (a distributed step) nothing is left to place; a hidden
-  // element, due at every step, would otherwise be placed twice.
-  weights.resets = !this->ResetsDone;
-  this->ResetsDone = false;
+  const StepWeights weights = this->beginStep(field, t, h);
   run(E,
     [&](std::size_t begin, std::size_t end)
     {
@@ -928,12 +929,7 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
     return;
   }
   const std::size_t n = this->Shape.particleCount();
-  StepWeights weights = StepWeights::of(field, t, h);
-  weights.releasing = this->releasesAt(t, h);
-  // After resetDue() (a distributed step) nothing is left to place; a hidden
-  // element, due at every step, would otherwise be placed twice.
-  weights.resets = !this->ResetsDone;
-  this->ResetsDone = false;
+  const StepWeights weights = this->beginStep(field, t, h);
   const std::vector<std::uint32_t>& order = this->visitOrder(field);
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)

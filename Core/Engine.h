@@ -286,14 +286,16 @@ private:
   void place(std::size_t e, bool releasing);
   /// The release centre of element `element`'s generation (Engine::place).
   void releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
-  /// The second slice's weight at t, t + h/2 and t + h: once per step.
+  /// What a step decides once for every element: the second slice's weight
+  /// at t, t + h/2 and t + h, the release window, and who resets.
   struct StepWeights
   {
     float start, middle, end;
     bool releasing; ///< the step overlaps the release window (releasesAt)
     bool resets;    ///< due elements are placed in this step (not done by resetDue())
-    static StepWeights of(const VectorField& field, double t, double h);
   };
+  /// The step [t, t + h)'s StepWeights; takes back resetDue()'s mark.
+  StepWeights beginStep(const VectorField& field, double t, double h);
   /// Steps 1 and 2 for element e: reset when due, then advect; keeps the
   /// positions before the step and after advection (3n floats each;
   /// `advected` may be null when nothing restores).

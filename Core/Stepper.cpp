@@ -23,13 +23,9 @@ std::string CpuStepper::setField(const VectorField& field)
   // A field is a grid and shared time steps: copying it copies no velocities.
   this->Field = std::make_shared<const VectorField>(field);
   const float speed = this->Current.parameters().releaseMinSpeed;
-  if (field.firstSlice().velocity != this->ReleaseFirst ||
-    field.secondSlice().velocity != this->ReleaseSecond || speed != this->ReleaseSpeed)
+  if (this->ReleaseFrom.changes(field, speed))
   {
     this->Release = this->releaseMaskOf(field, speed);
-    this->ReleaseFirst = field.firstSlice().velocity;
-    this->ReleaseSecond = field.secondSlice().velocity;
-    this->ReleaseSpeed = speed;
   }
   this->Current.setReleaseMask(this->Release.grid, this->Release.unfit);
   return std::string();

@@ -106,10 +106,8 @@ private:
   Engine Saved;
   std::shared_ptr<const VectorField> Field;
   bool NormalsCurrent = false;
-  /// The release mask and what it was made from (a field is its time steps).
   ReleaseMask Release;
-  std::shared_ptr<const std::vector<float>> ReleaseFirst, ReleaseSecond;
-  float ReleaseSpeed = -1.0f;
+  ReleaseMaskSource ReleaseFrom;
 };
 
 /**

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuFieldCache.h"
 
-#include "DomainMask.h"
-
 #include "GpuPasses.h"
 
 #include <algorithm>
@@ -180,18 +178,13 @@ void GpuFieldCache::applyTo(GpuPass& pass) const
 void GpuFieldCache::applyReleaseMaskTo(GpuPass& pass, float minSpeed)
 {
   const VectorField* field = this->Field.get();
-  if (field &&
-    (field->firstSlice().velocity != this->ReleaseFirst ||
-      field->secondSlice().velocity != this->ReleaseSecond || minSpeed != this->ReleaseSpeed))
+  if (field && this->ReleaseFrom.changes(*field, minSpeed))
   {
     const auto unfit = releaseUnfitCells(*field, minSpeed);
     const auto& dims = field->grid().dims;
     this->ReleaseTexture = unfit
       ? makeByteTexture3D(dims[0], dims[1], std::max(dims[2], 1), unfit->data())
       : GlTexture();
-    this->ReleaseFirst = field->firstSlice().velocity;
-    this->ReleaseSecond = field->secondSlice().velocity;
-    this->ReleaseSpeed = minSpeed;
   }
   const bool masked = field && this->ReleaseTexture;
   pass.setInt("bpReleaseMasked", masked ? 1 : 0);

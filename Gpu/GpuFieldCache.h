@@ -22,6 +22,7 @@
 #ifndef BoundParticles_GpuFieldCache_h
 #define BoundParticles_GpuFieldCache_h
 
+#include "DomainMask.h"
 #include "GlObjects.h"
 #include "VectorField.h"
 
@@ -97,10 +98,8 @@ private:
   int CurrentSlots[2] = { -1, -1 }; ///< the current field's first and second time step
 
   GlTexture NoOutsideTexture; ///< one cell, inside
-  /// The release mask and what it was made from (a field is its time steps).
-  GlTexture ReleaseTexture;
-  std::shared_ptr<const std::vector<float>> ReleaseFirst, ReleaseSecond;
-  float ReleaseSpeed = -1.0f;
+  GlTexture ReleaseTexture;   ///< the release mask, or none
+  ReleaseMaskSource ReleaseFrom;
   GlTexture AxesTexture; ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
   std::array<std::vector<float>, 3> AxesTables; ///< what AxesTexture was made from
   int Bins[3] = { 1, 1, 1 };

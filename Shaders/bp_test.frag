@@ -18,13 +18,9 @@ bool bpReleasedStagnant(int e, vec4 state, vec3 c)
   {
     return false;
   }
-  if (!(bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep))
-  {
-    return false;
-  }
   vec3 d = c - texelFetch(bpCenters, bpElementTexel(e), 0).xyz;
   float reach = bpReleaseMinSpeed * bpStep;
-  return dot(d, d) < reach * reach;
+  return dot(d, d) < reach * reach && bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep;
 }
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
 
