@@ -312,8 +312,8 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   return configured;
 }
 
-void vtkBoundParticleTracer::vtkInternals::seedPoints(
-  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::Parameters& p) const
+void vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* self,
+  vtkInformationVector** inputVector, const bp::VectorField& field, bp::Parameters& p) const
 {
   if (self->GetNumberOfInputConnections(2) == 0)
   {
@@ -348,19 +348,11 @@ void vtkBoundParticleTracer::vtkInternals::seedPoints(
   p.releaseMinSpeed = 0.0f;
   // Releases skip the points outside the field (and in cells outside the
   // flow's domain): say how many there are.
-  const std::array<double, 6> b = this->Layout.domainBounds(this->Grid);
+  const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
   std::size_t outside = 0;
   for (std::size_t i = 0; i < std::size_t(used); ++i)
   {
-    for (int a = 0; a < 3; ++a)
-    {
-      const double x = p.seedPoints[3 * i + a];
-      if (this->Grid.dims[a] > 1 && !(x >= b[2 * a] && x <= b[2 * a + 1]))
-      {
-        ++outside;
-        break;
-      }
-    }
+    outside += domain.contains(&p.seedPoints[3 * i]) ? 0 : 1;
   }
   if (outside == std::size_t(used))
   {
@@ -387,7 +379,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
     return Pass::fail(templateError);
   }
   bp::Parameters p = resolved.parameters;
-  this->seedPoints(self, inputVector, p);
+  this->seedPoints(self, inputVector, field, p);
   const std::vector<double>& times = this->Plan.outputTimes();
   if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
   {

@@ -150,8 +150,8 @@ private:
   bp::FieldFacts fieldFacts(const bp::VectorField& field);
   /// The element template: the built-in shape or the template input.
   /// The Seed Source's points (input 2) as release centres, if connected.
-  void seedPoints(
-    vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::Parameters& p) const;
+  void seedPoints(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
+    const bp::VectorField& field, bp::Parameters& p) const;
   std::string elementTemplate(
     vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
   /// Points the stepper at the start of a new trace.
