@@ -2,6 +2,7 @@
 #include "Engine.h"
 
 #include "CounterHash.h"
+#include "Pose.h"
 #include "ShapeMatching.h"
 
 #include <Eigen/Eigenvalues>
@@ -341,6 +342,13 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   assignLarge(this->InitialCenters, 3 * E, 0.0f);
   assignLarge(this->ResetFlags, E, std::uint8_t(0));
   assignLarge(this->Orientations, 4 * E, 0.0f);
+  assignLarge(this->Poses, 4 * E, 0.0f);
+  assignLarge(this->Spins, 4 * E, 0.0f);
+  const std::size_t slots = std::size_t(std::max(p.trailLength, 0));
+  assignLarge(this->TrailPositions, slots * 3 * E * n, 0.0f);
+  assignLarge(this->TrailGenerations, slots * E, NoTrailPose);
+  this->TrailTimes.assign(slots, -std::numeric_limits<double>::infinity());
+  this->TrailNewest = -1;
   this->FrameQuaternion = quaternionFromRotation(p.frame);
   this->RestMomentInverse = restMomentInverse(shape, p.elementSize);
   this->Links = makeLinkTable(p.linking, E, p.latticeWidth, p.emitterMin, p.emitterMax);
@@ -379,6 +387,11 @@ void Engine::place(std::size_t e, bool releasing)
     : P.planeAxis >= 0 ? inPlaneQuaternion(P.planeAxis, u[3], this->FrameQuaternion)
                        : quaternionFromUniforms(u[3], u[4], u[5]);
   std::copy(q.begin(), q.end(), this->Orientations.begin() + 4 * e);
+  // One particle has no orientation to show: its pose stays the identity.
+  const bool oriented = this->Shape.particleCount() > 1;
+  const std::array<float, 4> pose = oriented ? q : std::array<float, 4>{ 0, 0, 0, 1 };
+  std::copy(pose.begin(), pose.end(), this->Poses.begin() + 4 * e);
+  std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
   std::array<float, 9> R = P.frame;
   if (P.randomOrientation)
   {
@@ -451,9 +464,37 @@ void Engine::setReleaseMask(
     grid.pointCount() > 0 ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;
 }
 
+int Engine::trailSlot(int k) const
+{
+  const int slots = int(this->TrailTimes.size());
+  return ((this->TrailNewest - k) % slots + slots) % slots;
+}
+
+void Engine::recordTrail(double t)
+{
+  const int slots = int(this->TrailTimes.size());
+  if (slots == 0)
+  {
+    return;
+  }
+  if (this->TrailNewest < 0 || this->TrailTimes[std::size_t(this->TrailNewest)] != t)
+  {
+    this->TrailNewest = (this->TrailNewest + 1) % slots;
+  }
+  const std::size_t slot = std::size_t(this->TrailNewest), E = this->elementCount();
+  this->TrailTimes[slot] = t;
+  std::copy(this->Positions.begin(), this->Positions.end(),
+    this->TrailPositions.begin() + std::ptrdiff_t(slot * this->Positions.size()));
+  std::copy(this->Generations.begin(), this->Generations.end(),
+    this->TrailGenerations.begin() + std::ptrdiff_t(slot * E));
+}
+
 void Engine::initialize(const RangeRunner& run, double startTime)
 {
   std::fill(this->Generations.begin(), this->Generations.end(), 0u);
+  std::fill(this->TrailGenerations.begin(), this->TrailGenerations.end(), NoTrailPose);
+  std::fill(this->TrailTimes.begin(), this->TrailTimes.end(), -std::numeric_limits<double>::infinity());
+  this->TrailNewest = -1;
   const bool releasing = this->releasesAt(startTime, 0.0);
   run(this->elementCount(),
     [this, releasing](std::size_t begin, std::size_t end)
@@ -546,33 +587,8 @@ void Engine::matchShape(float* p, float* orientation) const
   // centre (Müller et al. 2005, equal masses); particles move towards them.
   const std::size_t n = this->Shape.particleCount();
   const float size = this->Params.elementSize;
-  float c[3] = { 0, 0, 0 };
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] += p[3 * i + k];
-    }
-  }
-  const float count = float(n);
-  for (float& v : c)
-  {
-    v = v / count;
-  }
-  float A[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const auto& r = this->Shape.rest[i];
-    const float q[3] = { size * r[0], size * r[1], size * r[2] };
-    for (int row = 0; row < 3; ++row)
-    {
-      const float d = p[3 * i + row] - c[row];
-      for (int col = 0; col < 3; ++col)
-      {
-        A[3 * row + col] += d * q[col];
-      }
-    }
-  }
+  float c[3], A[9];
+  momentOf(p, n, this->Shape.rest, size, c, A);
   extractRotation(A, orientation);
   float R[9];
   quaternionToMatrix(orientation, R);
@@ -786,6 +802,10 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     leave = byParticle ? anyOutside : !this->inDomain(field, center, weights.end);
     leave = leave || this->releasedStagnant(e, center, h);
   }
+  if (this->Params.trackPoses)
+  {
+    this->updatePose(e, field, weights, h, finite);
+  }
   // A super set's element stays (and keeps its last good positions when they
   // turn non-finite): resetting it alone would tear the structure.
   // A hidden element stays hidden, and due (even in a super set, which is
@@ -793,6 +813,28 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   const std::uint8_t hidden = this->ResetFlags[e] & ReleaseHidden;
   this->ResetFlags[e] = std::uint8_t((leave && this->Links.empty() ? ResetDue : 0) | hidden);
   this->Lifetimes[e] -= float(h);
+}
+
+void Engine::updatePose(
+  std::size_t e, const VectorField& field, const StepWeights& weights, double h, bool finite)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* spin = this->Spins.data() + 4 * e;
+  if (!finite || n < 2)
+  {
+    // Back at the positions before the step (or no orientation): no turn.
+    std::fill_n(spin, 4, 0.0f);
+    return;
+  }
+  float* pose = this->Poses.data() + 4 * e;
+  const float before[4] = { pose[0], pose[1], pose[2], pose[3] };
+  float center[3];
+  fitPose(this->Positions.data() + 3 * e * n, n, this->Shape.rest, this->Params.elementSize, pose,
+    center);
+  spinBetween(before, pose, float(h), spin);
+  float velocity[3], curl[3];
+  field.sampleWithCurl(center, weights.end, velocity, curl);
+  spin[3] = spinVorticityRatio(spin, curl, float(h));
 }
 
 bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
@@ -923,6 +965,10 @@ void Engine::stepLinked(const VectorField& field, double t, double h, const Rang
 
 void Engine::step(const VectorField& field, double t, double h, const RangeRunner& run)
 {
+  if (!this->ResetsDone && recordsTrailAt(this->Params, t))
+  {
+    this->recordTrail(t); // resetDue() recorded it in a distributed step
+  }
   if (!this->Links.empty())
   {
     this->stepLinked(field, t, h, run);
@@ -1070,6 +1116,11 @@ void Engine::setDomain(const Domain& domain)
 void Engine::resetDue(const RangeRunner& run, double t, double h)
 {
   const bool releasing = this->releasesAt(t, h);
+  // The trail pose is recorded before any reset, as step() alone records it.
+  if (recordsTrailAt(this->Params, t))
+  {
+    this->recordTrail(t);
+  }
   this->ResetsDone = true;
   run(this->elementCount(),
     [this, releasing](std::size_t begin, std::size_t end)
@@ -1124,7 +1175,8 @@ float bitsFloat(std::uint32_t u)
 
 std::size_t Engine::recordWords() const
 {
-  return RecordHeaderWords + 4 * this->Shape.particleCount();
+  const std::size_t n = this->Shape.particleCount(), slots = this->TrailTimes.size();
+  return RecordHeaderWords + 8 + 4 * n + slots * (1 + 3 * n);
 }
 
 void Engine::packElement(std::size_t e, std::vector<std::uint32_t>& out) const
@@ -1143,8 +1195,17 @@ void Engine::packElement(std::size_t e, std::vector<std::uint32_t>& out) const
   };
   floats(this->InitialCenters.data() + 3 * e, 3);
   floats(this->Orientations.data() + 4 * e, 4);
+  floats(this->Poses.data() + 4 * e, 4);
+  floats(this->Spins.data() + 4 * e, 4);
   floats(this->Positions.data() + 3 * e * n, 3 * n);
   floats(this->Forces.data() + e * n, n);
+  // Its trail, slot by slot.
+  const std::size_t E = this->elementCount();
+  for (std::size_t slot = 0; slot < this->TrailTimes.size(); ++slot)
+  {
+    out.push_back(this->TrailGenerations[slot * E + e]);
+    floats(this->TrailPositions.data() + 3 * (slot * E + e) * n, 3 * n);
+  }
 }
 
 std::string Engine::exchange(
@@ -1200,8 +1261,11 @@ std::string Engine::exchange(
   const std::size_t n = this->Shape.particleCount(), E = order.size();
   std::vector<std::uint32_t> ids(E), generations(E);
   std::vector<std::uint8_t> flags(E);
-  std::vector<float> lifetimes(E), centers(3 * E), orientations(4 * E), positions(3 * E * n),
-    forces(E * n);
+  std::vector<float> lifetimes(E), centers(3 * E), orientations(4 * E), poses(4 * E), spins(4 * E),
+    positions(3 * E * n), forces(E * n);
+  const std::size_t slots = this->TrailTimes.size();
+  std::vector<float> trailPositions(slots * 3 * E * n);
+  std::vector<std::uint32_t> trailGenerations(slots * E);
   for (std::size_t k = 0; k < E; ++k)
   {
     const std::size_t source = order[k].second;
@@ -1213,8 +1277,16 @@ std::string Engine::exchange(
       lifetimes[k] = this->Lifetimes[source];
       std::copy_n(this->InitialCenters.data() + 3 * source, 3, centers.data() + 3 * k);
       std::copy_n(this->Orientations.data() + 4 * source, 4, orientations.data() + 4 * k);
+      std::copy_n(this->Poses.data() + 4 * source, 4, poses.data() + 4 * k);
+      std::copy_n(this->Spins.data() + 4 * source, 4, spins.data() + 4 * k);
       std::copy_n(this->Positions.data() + 3 * source * n, 3 * n, positions.data() + 3 * k * n);
       std::copy_n(this->Forces.data() + source * n, n, forces.data() + k * n);
+      for (std::size_t slot = 0; slot < slots; ++slot)
+      {
+        trailGenerations[slot * E + k] = this->TrailGenerations[slot * held + source];
+        std::copy_n(this->TrailPositions.data() + 3 * (slot * held + source) * n, 3 * n,
+          trailPositions.data() + 3 * (slot * E + k) * n);
+      }
       continue;
     }
     const std::uint32_t* r = records.data() + (source - held) * words;
@@ -1232,8 +1304,15 @@ std::string Engine::exchange(
     };
     floats(centers.data() + 3 * k, 3);
     floats(orientations.data() + 4 * k, 4);
+    floats(poses.data() + 4 * k, 4);
+    floats(spins.data() + 4 * k, 4);
     floats(positions.data() + 3 * k * n, 3 * n);
     floats(forces.data() + k * n, n);
+    for (std::size_t slot = 0; slot < slots; ++slot)
+    {
+      trailGenerations[slot * E + k] = *values++;
+      floats(trailPositions.data() + 3 * (slot * E + k) * n, 3 * n);
+    }
   }
   this->Ids = std::move(ids);
   this->VisitOrder.clear();
@@ -1242,8 +1321,12 @@ std::string Engine::exchange(
   this->Lifetimes = std::move(lifetimes);
   this->InitialCenters = std::move(centers);
   this->Orientations = std::move(orientations);
+  this->Poses = std::move(poses);
+  this->Spins = std::move(spins);
   this->Positions = std::move(positions);
   this->Forces = std::move(forces);
+  this->TrailPositions = std::move(trailPositions);
+  this->TrailGenerations = std::move(trailGenerations);
   // Recomputed from the positions before they are shown.
   this->Normals.assign(3 * E * n, 0.0f);
   return std::string();
@@ -1252,10 +1335,14 @@ std::string Engine::exchange(
 void Engine::normalsOf(std::size_t e)
 {
   const std::size_t n = this->Shape.particleCount();
-  const float* p = this->Positions.data() + 3 * e * n;
-  float* nr = this->Normals.data() + 3 * e * n;
+  elementNormals(this->Shape, this->Positions.data() + 3 * e * n, this->Normals.data() + 3 * e * n);
+}
+
+void elementNormals(const ElementTemplate& shape, const float* p, float* nr)
+{
+  const std::size_t n = shape.particleCount();
   std::fill_n(nr, 3 * n, 0.0f);
-  for (const auto& tri : this->Shape.triangles)
+  for (const auto& tri : shape.triangles)
   {
     const float* a = p + 3 * tri[0];
     const float* b = p + 3 * tri[1];

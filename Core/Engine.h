@@ -21,7 +21,10 @@
  *     domain (DomainMask.h), when in its first step its centre moved slower
  *     than releaseMinSpeed (released where the flow stands still), or when a
  *     position became non-finite (then the element keeps its positions from
- *     before the step, so no NaN is ever visible); decrease the lifetime by h.
+ *     before the step, so no NaN is ever visible); decrease the lifetime by h;
+ *  6. with Parameters::trackPoses, the pose: the best rigid fit of the
+ *     particles, warm-started from the pose before, and the spin, the turn
+ *     from one to the other over h (Pose.h).
  *
  * Elements touch disjoint memory, so a step runs over element ranges in
  * parallel and gives the same bits for any number of threads.
@@ -35,6 +38,7 @@
 #include "VectorField.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -142,7 +146,37 @@ struct Parameters
   /// still, and is released again at the next step; 0 keeps every release.
   float releaseMinSpeed = 0.0f;
   std::uint32_t seed = 0;
+  /// Fit every element's pose and spin at the end of every step (Pose.h;
+  /// Engine::poses(), spins()). Off, they stay as placed (spin 0): the fit
+  /// costs the CPU engine about a quarter of a Strip16 step, so it runs only
+  /// for an output that shows them. Nothing else depends on it.
+  bool trackPoses = false;
+  /// Motion trails: each element's last trailLength poses (0: none), one
+  /// recorded at the start of every step that starts on trailStart + k *
+  /// trailInterval (recordsTrailAt), so a trail's poses are a fixed number
+  /// of steps apart and strictly older than the state shown.
+  int trailLength = 0;
+  double trailStart = 0.0;
+  double trailInterval = 0.0;
 };
+
+/// The most poses a trail keeps (Parameters::trailLength).
+constexpr int MaxTrailLength = 64;
+/// Trail generation of a slot that holds no pose of the element
+/// (Engine::trailGenerations()).
+constexpr std::uint32_t NoTrailPose = 0xffffffffu;
+
+/// Whether a step starting at `t` records a trail pose first: t is within
+/// 1e-6 of an interval of trailStart + k * trailInterval, k >= 0.
+inline bool recordsTrailAt(const Parameters& p, double t)
+{
+  if (p.trailLength <= 0 || !(p.trailInterval > 0.0) || t < p.trailStart - 1e-6 * p.trailInterval)
+  {
+    return false;
+  }
+  const double k = std::round((t - p.trailStart) / p.trailInterval);
+  return std::abs(t - (p.trailStart + k * p.trailInterval)) <= 1e-6 * p.trailInterval;
+}
 
 /// Whether the step [t, t + h) releases elements: it overlaps the release
 /// window (so a window of one instant releases in the one step that holds
@@ -234,10 +268,35 @@ public:
   const std::vector<std::uint32_t>& generations() const { return this->Generations; }
   /// The centre each element was last placed at: 3 floats per element.
   const std::vector<float>& initialCenters() const { return this->InitialCenters; }
-  /// Each element's orientation (x, y, z, w), kept by shape matching.
+  /// Each element's orientation (x, y, z, w) as placed, kept up to date by
+  /// shape matching (the warm start of its fit).
   const std::vector<float>& orientations() const { return this->Orientations; }
+  /// Each element's pose (x, y, z, w): its rotation from the template by the
+  /// best rigid fit of its particles at the end of the last step (Pose.h),
+  /// for every restoration method; the identity for one-particle elements.
+  const std::vector<float>& poses() const { return this->Poses; }
+  /// Each element's spin over the last step, 4 floats: the angular velocity
+  /// (radians per time unit, world axes) and the SpinVorticityRatio reading
+  /// against the field at its centre at the step's end (Pose.h); 0 when
+  /// placed, for one particle, and for a step whose positions turned non-finite.
+  const std::vector<float>& spins() const { return this->Spins; }
   /// Elements flagged for reset at the next step.
   const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
+  /// @name Motion trails (Parameters::trailLength slots, a ring)
+  /// Slot s holds every element's positions (element-major, as positions())
+  /// at trailTimes()[s], and each element's generation then (NoTrailPose:
+  /// none); a slot's pose belongs to an element's trail while its generation
+  /// is the element's own. Slots from newest to oldest: trailSlot(0), ...
+  ///@{
+  const std::vector<float>& trailPositions() const { return this->TrailPositions; }
+  const std::vector<std::uint32_t>& trailGenerations() const { return this->TrailGenerations; }
+  const std::vector<double>& trailTimes() const { return this->TrailTimes; }
+  /// The slot of the k-th newest pose (k < trailLength).
+  int trailSlot(int k) const;
+  /// Records the current poses at time t (a time recorded last is replaced:
+  /// a step taken back and taken again records once).
+  void recordTrail(double t);
+  ///@}
   /// The super set's links (empty without Linking).
   const LinkTable& links() const { return this->Links; }
 
@@ -325,6 +384,10 @@ private:
   {
     return this->domainOf(field).contains(p) && !field.outsideCellAt(p, weight);
   }
+  /// The pose fit and spin at the end of a step (Pose.h); `finite`: the
+  /// positions after the step were finite (otherwise they are the ones before).
+  void updatePose(
+    std::size_t e, const VectorField& field, const StepWeights& weights, double h, bool finite);
   /// Whether element e, in its first step since it was placed, moved its
   /// centre `c` slower than releaseMinSpeed.
   bool releasedStagnant(std::size_t e, const float c[3], double h) const;
@@ -381,12 +444,19 @@ private:
   std::shared_ptr<const VectorField> ReleaseGrid;
   std::shared_ptr<const std::vector<std::uint8_t>> ReleaseUnfit;
   std::vector<float> Orientations;
+  std::vector<float> Poses; ///< poses(): 4 floats per element
+  std::vector<float> Spins; ///< spins(): 4 floats per element
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::vector<std::uint8_t> ResetFlags;
   std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
 
   std::vector<std::uint32_t> VisitOrder;
   int StepsSinceOrdered = 0;
+
+  std::vector<float> TrailPositions;
+  std::vector<std::uint32_t> TrailGenerations;
+  std::vector<double> TrailTimes;
+  int TrailNewest = -1; ///< the slot written last, -1 before any
 
   LinkTable Links;
   // A super set's step runs in phases over all elements: its before, advected
@@ -454,6 +524,10 @@ struct ParticleLayout
  * the spring and triangle lists 4096 wide). Otherwise which one does not.
  */
 std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
+
+/// The normals of one element of `shape` at positions `p` (3n floats) into
+/// `normals` (3n floats), as Engine::updateNormals() computes them.
+void elementNormals(const ElementTemplate& shape, const float* p, float* normals);
 
 /// Velocity and |curl v| sampled at `count` positions (3 floats each);
 /// `vorticity` may be null.

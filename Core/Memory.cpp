@@ -63,8 +63,13 @@ double traceBytes(const ElementTemplate& shape, const Parameters& p)
   const double cells = !shape.triangles.empty() ? double(shape.triangles.size())
     : !shape.springs.empty()                    ? double(shape.springs.size())
                                                 : n;
-  const double perElement = 2 * 48 + 8 * (corners + cells);
-  return elements * (n * perParticle + perElement);
+  // Poses and spins (32 bytes), twice, and their output (8 floats a particle).
+  const double perElement = 2 * 48 + 2 * 32 + 8 * (corners + cells);
+  // A trail: per pose, the positions and generation (twice: the shown copy),
+  // and in the output its points with a copy of every array, and its cells.
+  const double trail = std::max(p.trailLength, 0) *
+    (2 * (12 * n + 4) + n * (perParticle - 2 * 28 + 4) + 8 * (corners + cells));
+  return elements * (n * (perParticle + 8 * 4) + perElement + trail);
 }
 
 std::string checkAllocatable(double bytes, const std::string& what)

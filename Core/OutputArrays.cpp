@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OutputArrays.h"
 
+#include "Pose.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -18,24 +20,33 @@ const std::vector<OutputArray>& outputArrays()
   using R = RangeSource;
   static const std::vector<OutputArray> table = {
     { Id::Normals, "Normals", 3, V::Float, Role::Normals, Src::ParticleState, C::Solid, false,
-      R::UnitComponents },
+      R::UnitComponents, true, false },
     { Id::Velocity, "Velocity", 3, V::Float, Role::Vectors, Src::FieldSample, C::Velocity, false,
-      R::SignedSpeed },
-    { Id::Speed, "Speed", 1, V::Float, Role::Plain, Src::Derived, C::Velocity, true, R::Speed },
+      R::SignedSpeed, true, false },
+    { Id::Speed, "Speed", 1, V::Float, Role::Plain, Src::Derived, C::Velocity, true, R::Speed, true,
+      false },
     { Id::Force, "Force", 1, V::Float, Role::Plain, Src::ParticleState, C::Force, false,
-      R::StepMotion },
+      R::StepMotion, true, false },
     { Id::Lifetime, "Lifetime", 1, V::Float, Role::Plain, Src::ElementState, C::Lifetime, false,
-      R::Lifetime },
+      R::Lifetime, true, false },
     { Id::ElementId, "ElementId", 1, V::IdType, Role::Plain, Src::ElementState, C::ElementIndex,
-      false, R::Elements },
+      false, R::Elements, true, false },
     { Id::ParticleIndex, "ParticleIndex", 1, V::Int, Role::Plain, Src::TemplateIndex,
-      C::ParticleIndex, false, R::Particles },
+      C::ParticleIndex, false, R::Particles, true, false },
     { Id::Vorticity, "Vorticity", 1, V::Float, Role::Plain, Src::FieldSample, C::Vorticity, false,
-      R::Vorticity },
+      R::Vorticity, true, false },
     { Id::Layer, "Layer", 1, V::Float, Role::Plain, Src::ElementState, C::Layer, false,
-      R::EmitterAxis },
+      R::EmitterAxis, true, false },
     { Id::Radius, "Radius", 1, V::Float, Role::Plain, Src::ElementState, C::Radius, false,
-      R::EmitterRadius },
+      R::EmitterRadius, true, false },
+    { Id::ElementOrientation, "ElementOrientation", 4, V::Float, Role::Plain, Src::ElementState,
+      C::Orientation, false, R::UnitComponents, false, true },
+    { Id::ElementSpin, "ElementSpin", 3, V::Float, Role::Plain, Src::ElementState, C::Spin, false,
+      R::HalfVorticity, false, true },
+    { Id::SpinVorticityRatio, "SpinVorticityRatio", 1, V::Float, Role::Plain, Src::ElementState,
+      C::SpinRatio, false, R::SpinRatio, false, true },
+    { Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, false, R::TrailAge, true,
+      false },
   };
   return table;
 }
@@ -60,7 +71,8 @@ const OutputArray* findOutputArray(const std::string& name)
 std::string colorSourceDefinitions()
 {
   static const char* const names[] = { "SOLID", "FORCE", "LIFETIME", "VELOCITY", "VORTICITY",
-    "LAYER", "RADIUS", "ELEMENT_INDEX", "PARTICLE_INDEX" };
+    "LAYER", "RADIUS", "ELEMENT_INDEX", "PARTICLE_INDEX", "ORIENTATION", "SPIN", "SPIN_RATIO",
+    "AGE" };
   static_assert(sizeof(names) / sizeof(names[0]) == std::size_t(ColorSource::Count),
     "a name per colour source");
   std::ostringstream out;
@@ -115,6 +127,7 @@ RangeFacts rangeFactsOf(const VectorField& field, const Parameters& p, double dt
   }
   f.elements = double(p.numberOfElements);
   f.particlesPerElement = double(particlesPerElement);
+  f.trailSpan = std::max(p.trailLength, 0) * p.trailInterval;
   return f;
 }
 
@@ -142,6 +155,12 @@ std::array<double, 2> expectedRange(const OutputArray& array, const RangeFacts& 
       return { 0.0, f.elements - 1.0 };
     case RangeSource::Particles:
       return { 0.0, f.particlesPerElement - 1.0 };
+    case RangeSource::HalfVorticity:
+      return { -0.5 * f.maxVorticity, 0.5 * f.maxVorticity };
+    case RangeSource::SpinRatio:
+      return { -double(MaxSpinVorticityRatio), double(MaxSpinVorticityRatio) };
+    case RangeSource::TrailAge:
+      return { 0.0, f.trailSpan };
   }
   return { 0.0, 1.0 };
 }

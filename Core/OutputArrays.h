@@ -45,6 +45,10 @@ enum class OutputArrayId
   Vorticity,
   Layer,
   Radius,
+  ElementOrientation,
+  ElementSpin,
+  SpinVorticityRatio,
+  Age,
   Count ///< not an array: how many there are
 };
 
@@ -70,7 +74,8 @@ enum class ArraySource
   FieldSample,   ///< the field sampled at each particle at the output's time
   Derived,       ///< from another array of the same particle
   ElementState,  ///< per element, written on each of its particles
-  TemplateIndex  ///< the particle's index in its element's template
+  TemplateIndex, ///< the particle's index in its element's template
+  TrailAge       ///< 0 on the elements, how long ago on their trails' poses
 };
 
 /// What the GPU display's draw shader colours by (bpScalarMode).
@@ -85,6 +90,10 @@ enum class ColorSource
   Radius,
   ElementIndex,
   ParticleIndex,
+  Orientation,   ///< a component of the pose quaternion, or its magnitude
+  Spin,          ///< a component of the spin, or its magnitude
+  SpinRatio,     ///< SpinVorticityRatio
+  Age,           ///< of a trail's pose (0 on the elements)
   Count
 };
 
@@ -100,7 +109,10 @@ enum class RangeSource
   EmitterAxis,    ///< the emitter box along the colouring axis
   EmitterRadius,  ///< [0, farthest emitter corner from the colouring axis]
   Elements,       ///< [0, elements - 1]
-  Particles       ///< [0, template particles - 1]
+  Particles,      ///< [0, template particles - 1]
+  HalfVorticity,  ///< [-max |curl v| / 2, max |curl v| / 2]: a fluid parcel's spin
+  SpinRatio,      ///< [-MaxSpinVorticityRatio, MaxSpinVorticityRatio]
+  TrailAge        ///< [0, trail length * trail interval]
 };
 
 struct OutputArray
@@ -114,6 +126,11 @@ struct OutputArray
   ColorSource color;    ///< Solid: the GPU display cannot colour by it
   bool colorsMagnitude; ///< colours the magnitude of a vector's colour source
   RangeSource range;
+  /// Ticked in Output Arrays by default: the pose arrays are not, since
+  /// they make the CPU engine fit every element every step (trackPoses).
+  bool onByDefault;
+  /// Needs Parameters::trackPoses.
+  bool needsPoses;
 };
 
 /// Every output array, in output order.
@@ -136,6 +153,7 @@ struct RangeFacts
   double emitterRadius = 0.0;
   double elements = 1.0;
   double particlesPerElement = 1.0;
+  double trailSpan = 0.0; ///< trail length * interval: the oldest pose's age
 };
 
 /// The facts of a configured trace: `offset` is the world position of the

@@ -205,6 +205,20 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     return failure("MinimumReleaseSpeed must be a fraction of the top speed in [0, 1].");
   }
   r.parameters.releaseMinSpeed = float(s.minimumReleaseSpeed * std::max(f.maxSpeed, 0.0));
+  if (s.trailLength < 0 || s.trailLength > MaxTrailLength)
+  {
+    return failure("TrailLength must be in [1, " + std::to_string(MaxTrailLength) +
+      "] poses (it is " + std::to_string(s.trailLength) + ").");
+  }
+  if (s.trailSpacing < 1)
+  {
+    return failure(
+      "TrailSpacing must be at least 1 step (it is " + std::to_string(s.trailSpacing) + ").");
+  }
+  // A pose every TrailSpacing steps of the schedule (recordsTrailAt); the
+  // schedule's start is the tracer's (Parameters::trailStart).
+  r.parameters.trailLength = s.trailLength;
+  r.parameters.trailInterval = s.trailSpacing * r.dt;
   resolveEmitter(s, f, r);
   const std::string emitterError = checkEmitter(s, f, r.parameters);
   if (!emitterError.empty())

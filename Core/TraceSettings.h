@@ -38,6 +38,9 @@ struct TraceSettings
   /// Releases slower than this fraction of the top speed are released again
   /// (Parameters::releaseMinSpeed).
   double minimumReleaseSpeed = 0.01;
+  /// Motion trails: poses kept per element (0: none), and steps between two.
+  int trailLength = 0;
+  int trailSpacing = 4;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
   /// resolveSettings() fills in the rest of it.

@@ -469,6 +469,13 @@ void VectorField::gradientLanes(
 
 float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3]) const
 {
+  float curl[3];
+  this->sampleWithCurl(p, weight, v, curl);
+  return std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]);
+}
+
+void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const
+{
   std::size_t base = 0;
   float f[3], w[3];
   for (int a = 0; a < 3; ++a)
@@ -522,10 +529,9 @@ float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3
       }
     }
   }
-  const float cx = d[1][2] - d[2][1];
-  const float cy = d[2][0] - d[0][2];
-  const float cz = d[0][1] - d[1][0];
-  return std::sqrt(cx * cx + cy * cy + cz * cz);
+  curl[0] = d[1][2] - d[2][1];
+  curl[1] = d[2][0] - d[0][2];
+  curl[2] = d[0][1] - d[1][0];
 }
 
 float VectorField::vorticityMagnitude(const float p[3], double t) const

@@ -149,6 +149,8 @@ public:
    * same eight grid points. Flat axes add no derivative.
    */
   float sampleWithVorticity(const float p[3], float weight, float v[3]) const;
+  /// Velocity at p and curl v there, as sampleWithVorticity().
+  void sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const;
   /// |curl v| at p and time t (sampleWithVorticity).
   float vorticityMagnitude(const float p[3], double t) const;
 

@@ -216,17 +216,57 @@ void primeRanges(vtkDataArray* array, const bp::RangeRunner& run)
   }
 }
 
+/// A pose of an element's trail that the output shows.
+struct TrailPose
+{
+  std::size_t slot;    ///< in the engine's trail ring
+  std::size_t element; ///< whose pose it is
+  float age;           ///< how long before the time shown
+};
+
+/**
+ * The trail poses to show at `time`, newest first: those of each shown
+ * element's own generation (a released element starts a new trail), strictly
+ * older than the time shown (a step taken back leaves none ahead of it).
+ */
+std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
+{
+  std::vector<TrailPose> poses;
+  const int length = int(engine.trailTimes().size());
+  const std::size_t E = engine.elementCount();
+  for (int k = 0; k < length; ++k)
+  {
+    const std::size_t slot = std::size_t(engine.trailSlot(k));
+    const double recorded = engine.trailTimes()[slot];
+    if (!(recorded < time))
+    {
+      continue;
+    }
+    for (std::size_t e = 0; e < E; ++e)
+    {
+      if (engine.trailGenerations()[slot * E + e] == engine.generations()[e] &&
+        !(engine.resetFlags()[e] & bp::ReleaseHidden))
+      {
+        poses.push_back({ slot, e, float(time - recorded) });
+      }
+    }
+  }
+  return poses;
+}
+
 /**
  * World positions: grid-local ones plus the grid's offset, in double where
  * float would lose more than 1e-4 of a cell at the field's coordinates.
  */
 void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::OutputFrame& frame,
-  bpvtk::OutputStorage& storage, const bp::RangeRunner& run)
+  const std::vector<TrailPose>& trail, bpvtk::OutputStorage& storage, const bp::RangeRunner& run)
 {
   const bool doubles = frame.reach * std::ldexp(1.0, -23) > 1e-4 * frame.cellLength;
   const vtkIdType N = vtkIdType(engine.particleCount());
+  const std::size_t n = engine.particlesPerElement(), E = engine.elementCount();
   vtkNew<vtkPoints> points;
-  points->SetData(storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, N));
+  points->SetData(
+    storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, N + vtkIdType(trail.size() * n)));
   const float* local = engine.positions().data();
   const double offset[3] = { frame.offset[0], frame.offset[1], frame.offset[2] };
   // Written through the array's own pointer: a virtual call per component
@@ -242,6 +282,16 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
           coords[k] = Coordinate(double(local[k]) + offset[k % 3]);
         }
       });
+    // The trails' poses after the elements, a block of n points each.
+    for (std::size_t j = 0; j < trail.size(); ++j)
+    {
+      const float* p = engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
+      Coordinate* out = coords + 3 * (std::size_t(N) + j * n);
+      for (std::size_t k = 0; k < 3 * n; ++k)
+      {
+        out[k] = Coordinate(double(p[k]) + offset[k % 3]);
+      }
+    }
   };
   if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
   {
@@ -264,10 +314,31 @@ struct FillContext
   const bp::VectorField& field;
   const bpvtk::OutputFrame& frame;
   const bp::RangeRunner& run;
+  const std::vector<TrailPose>& trail;
   std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> arrays;
 
   vtkDataArray* array(bp::OutputArrayId id) const { return this->arrays[std::size_t(id)]; }
 };
+
+/// Writes `count` floats of element e's `stride` at `values` on every
+/// particle of every element e.
+void perElementTuple(
+  float* out, const bp::Engine& engine, const float* values, int stride, int count)
+{
+  const std::size_t n = engine.particlesPerElement();
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(engine.elementCount()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType e = begin; e < end; ++e)
+      {
+        const float* v = values + std::size_t(e) * std::size_t(stride);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          std::copy_n(v, count, out + (std::size_t(e) * n + i) * std::size_t(count));
+        }
+      }
+    });
+}
 
 /// Writes value(e) on every particle of every element e.
 template <typename T, typename Value>
@@ -343,7 +414,7 @@ void fillDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContex
       v = sampled.data();
     }
     float* speed = floats(out);
-    vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
+    vtkSMPTools::For(vtkIdType(0), vtkIdType(c.engine.particleCount()),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -384,6 +455,15 @@ void fillElementState(const bp::OutputArray& row, vtkDataArray* out, const FillC
         [&](std::size_t e)
         { return std::hypot(centres[3 * e + u] - cu, centres[3 * e + v] - cv); });
       break;
+    case bp::OutputArrayId::ElementOrientation:
+      perElementTuple(floats(out), engine, engine.poses().data(), 4, 4);
+      break;
+    case bp::OutputArrayId::ElementSpin:
+      perElementTuple(floats(out), engine, engine.spins().data(), 4, 3);
+      break;
+    case bp::OutputArrayId::SpinVorticityRatio:
+      perElementTuple(floats(out), engine, engine.spins().data() + 3, 4, 1);
+      break;
     default:
       break;
   }
@@ -401,6 +481,18 @@ void fillTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const Fill
         for (vtkIdType i = begin; i < end; ++i)
           index[i] = int(i % n);
       });
+  }
+}
+
+/// Age: 0 on the elements, each trail pose's age on its points.
+void fillTrailAge(const bp::OutputArray&, vtkDataArray* out, const FillContext& c)
+{
+  float* age = floats(out);
+  const std::size_t N = c.engine.particleCount(), n = c.engine.particlesPerElement();
+  std::fill_n(age, N, 0.0f);
+  for (std::size_t j = 0; j < c.trail.size(); ++j)
+  {
+    std::fill_n(age + N + j * n, n, c.trail[j].age);
   }
 }
 
@@ -424,6 +516,41 @@ void fillArray(const bp::OutputArray& row, vtkDataArray* out, const FillContext&
     case bp::ArraySource::TemplateIndex:
       fillTemplateIndex(row, out, c);
       break;
+    case bp::ArraySource::TrailAge:
+      fillTrailAge(row, out, c);
+      break;
+  }
+}
+
+/**
+ * The values of a trail pose's points: its element's (the pose is drawn
+ * coloured as its element is now), but Age (filled) and Normals (of the pose).
+ */
+void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  const std::size_t N = c.engine.particleCount(), n = c.engine.particlesPerElement();
+  const std::size_t E = c.engine.elementCount();
+  if (row.source == bp::ArraySource::TrailAge || c.trail.empty())
+  {
+    return;
+  }
+  if (row.id == bp::OutputArrayId::Normals)
+  {
+    float* normals = floats(out);
+    for (std::size_t j = 0; j < c.trail.size(); ++j)
+    {
+      const TrailPose& t = c.trail[j];
+      bp::elementNormals(c.engine.shape(),
+        c.engine.trailPositions().data() + 3 * (t.slot * E + t.element) * n,
+        normals + 3 * (N + j * n));
+    }
+    return;
+  }
+  auto* bytes = static_cast<unsigned char*>(out->GetVoidPointer(0));
+  const std::size_t tuple = std::size_t(out->GetDataTypeSize() * out->GetNumberOfComponents());
+  for (std::size_t j = 0; j < c.trail.size(); ++j)
+  {
+    std::memcpy(bytes + (N + j * n) * tuple, bytes + c.trail[j].element * n * tuple, n * tuple);
   }
 }
 } // namespace
@@ -431,7 +558,7 @@ void fillArray(const bp::OutputArray& row, vtkDataArray* out, const FillContext&
 namespace bpvtk
 {
 
-void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine)
+void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine, std::size_t trailPoses)
 {
   const std::size_t E = engine.elementCount();
   // An element placed outside the release window keeps its points but has
@@ -464,19 +591,34 @@ void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine)
       this->Cells->Append(this->LinkCells);
     }
   }
+  vtkSmartPointer<vtkCellArray> cells = this->Cells;
+  if (trailPoses > 0)
+  {
+    // The trail poses' points follow the elements' as E + j: their cells
+    // are made anew each time, the elements' appended to the kept ones.
+    std::vector<std::uint32_t> poses(trailPoses);
+    for (std::size_t j = 0; j < trailPoses; ++j)
+    {
+      poses[j] = std::uint32_t(E + j);
+    }
+    int kind = this->Kind;
+    cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->Append(this->Cells);
+    cells->Append(buildCells(engine.shape(), poses, kind));
+  }
   switch (this->Kind)
   {
     case 0:
-      output->SetVerts(this->Cells);
+      output->SetVerts(cells);
       break;
     case 1:
-      output->SetLines(this->Cells);
+      output->SetLines(cells);
       break;
     case 3:
-      output->SetStrips(this->Cells);
+      output->SetStrips(cells);
       break;
     default:
-      output->SetPolys(this->Cells);
+      output->SetPolys(cells);
   }
   if (this->LinkCells && this->Kind != 1)
   {
@@ -523,16 +665,19 @@ vtkSmartPointer<vtkDataArray> OutputStorage::pointData(int dataType, vtkIdType c
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
   const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run)
 {
-  setPoints(output, engine, frame, storage, run);
-  storage.applyCells(output, engine);
-  const vtkIdType N = vtkIdType(engine.particleCount());
-  FillContext context{ engine, field, frame, run, {} };
+  const std::vector<TrailPose> trail = trailPoses(engine, frame.time);
+  setPoints(output, engine, frame, trail, storage, run);
+  storage.applyCells(output, engine, trail.size());
+  const vtkIdType points = vtkIdType(engine.particleCount() + trail.size() * engine.particlesPerElement());
+  FillContext context{ engine, field, frame, run, trail, {} };
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    if (frame.wants(row))
+    // Age only with trails: without, it would be 0 everywhere.
+    const bool trails = !engine.trailTimes().empty();
+    if (frame.wants(row) && (row.source != bp::ArraySource::TrailAge || trails))
     {
-      arrays.push_back(storage.array(row, N));
+      arrays.push_back(storage.array(row, points));
       context.arrays[std::size_t(row.id)] = arrays.back();
     }
   }
@@ -542,6 +687,7 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
     if (vtkDataArray* array = context.array(row.id))
     {
       fillArray(row, array, context);
+      extendToTrail(row, array, context);
       addToPointData(pd, row, array);
     }
   }

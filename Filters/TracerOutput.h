@@ -65,8 +65,9 @@ class OutputStorage
 {
 public:
   /// Sets `output`'s cells for `engine`'s elements, built again only when
-  /// the element count changed (or after reset()).
-  void applyCells(vtkPolyData* output, const bp::Engine& engine);
+  /// the element count changed (or after reset()), and for `trailPoses`
+  /// poses of trails whose points follow the elements' (built each time).
+  void applyCells(vtkPolyData* output, const bp::Engine& engine, std::size_t trailPoses = 0);
   /// An array for `row` with `tuples` tuples, reused when free, marked modified.
   vtkSmartPointer<vtkDataArray> array(const bp::OutputArray& row, vtkIdType tuples);
   /// Points' storage of `dataType` (VTK_FLOAT or VTK_DOUBLE) for `count` points.

@@ -63,6 +63,13 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   preferThreadedBackend();
   this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    if (!row.onByDefault)
+    {
+      this->OmittedArrays.emplace_back(row.name); // the pose arrays: they cost a fit a step
+    }
+  }
   // By default the active point vectors (or, failing that, the first
   // 3-component point array).
   this->SetInputArrayToProcess(
@@ -108,6 +115,8 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.stepSize = this->StepSize;
   s.stepInCellLengths = this->StepSizeUnit == CELL_LENGTH;
   s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
+  s.trailLength = this->Trails ? this->TrailLength : 0;
+  s.trailSpacing = this->TrailSpacing;
   bp::Parameters& p = s.engine;
   p.randomOrientation = this->RandomOrientation != 0;
   p.integrator = bp::Integrator(this->Integrator);
@@ -127,6 +136,14 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
     p.releaseStop = this->ReleaseStop;
   }
   p.seed = std::uint32_t(this->Seed);
+  // The engine fits poses only for an output that shows them.
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    p.trackPoses = p.trackPoses ||
+      (row.needsPoses &&
+        std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), row.name) ==
+          this->OmittedArrays.end());
+  }
   return s;
 }
 
@@ -444,6 +461,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
+  os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
+     << this->TrailSpacing << " steps)\n";
   os << indent << "ReleaseWindow: " << this->ReleaseWindow << " [" << this->ReleaseStart << ", "
      << this->ReleaseStop << "]\n";
   os << indent << "Seed: " << this->Seed << "\n";

@@ -274,6 +274,20 @@ public:
   ///@}
 
   ///@{
+  /// Motion trails: with Trails on, each element also shows its last
+  /// TrailLength poses, one every TrailSpacing steps, as extra cells whose
+  /// points carry their pose's Age (time before the one shown) and their
+  /// element's values of the other arrays; a released element starts anew.
+  vtkSetMacro(Trails, int);
+  vtkGetMacro(Trails, int);
+  vtkBooleanMacro(Trails, int);
+  vtkSetMacro(TrailLength, int);
+  vtkGetMacro(TrailLength, int);
+  vtkSetMacro(TrailSpacing, int);
+  vtkGetMacro(TrailSpacing, int);
+  ///@}
+
+  ///@{
   /// Seed of the counter-based random numbers: the same seed, the same trace.
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
@@ -423,6 +437,9 @@ protected:
   int ReleaseWindow = 0;
   double ReleaseStart = 0.0;
   double ReleaseStop = 0.0;
+  int Trails = 0;
+  int TrailLength = 8;
+  int TrailSpacing = 4;
   int Seed = 0;
   double Duration = 0.0;
   int NumberOfTimeSteps = 101;

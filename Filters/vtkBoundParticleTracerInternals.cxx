@@ -379,6 +379,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
     return Pass::fail(templateError);
   }
   bp::Parameters p = resolved.parameters;
+  p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
   this->seedPoints(self, inputVector, field, p);
   const std::vector<double>& times = this->Plan.outputTimes();
   if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))

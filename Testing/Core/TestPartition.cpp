@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <condition_variable>
 #include <map>
 #include <mutex>
@@ -135,6 +136,10 @@ bp::Parameters parameters()
   p.integrator = bp::Integrator::RK4;
   p.restoration = bp::Restoration::ShapeMatching;
   p.seed = 11;
+  // Poses, spins and trails travel with the elements.
+  p.trackPoses = true;
+  p.trailLength = 3;
+  p.trailInterval = 0.1; // every 5 steps of 0.02
   return p;
 }
 
@@ -142,7 +147,31 @@ struct Element
 {
   std::uint32_t generation;
   std::vector<float> positions;
+  std::vector<float> poseAndSpin;                ///< 8 floats
+  std::vector<std::uint32_t> trailGenerations;   ///< per slot, newest first
+  std::vector<float> trailPositions;             ///< per slot, newest first
 };
+
+/// Element e's state in `engine`.
+Element elementOf(const bp::Engine& engine, std::size_t e)
+{
+  const std::size_t n = engine.particlesPerElement(), E = engine.elementCount();
+  Element d;
+  d.generation = engine.generations()[e];
+  const float* p = engine.positions().data() + 3 * e * n;
+  d.positions.assign(p, p + 3 * n);
+  d.poseAndSpin.assign(engine.poses().begin() + 4 * e, engine.poses().begin() + 4 * e + 4);
+  d.poseAndSpin.insert(
+    d.poseAndSpin.end(), engine.spins().begin() + 4 * e, engine.spins().begin() + 4 * e + 4);
+  for (int k = 0; k < engine.parameters().trailLength; ++k)
+  {
+    const std::size_t slot = std::size_t(engine.trailSlot(k));
+    d.trailGenerations.push_back(engine.trailGenerations()[slot * E + e]);
+    const float* t = engine.trailPositions().data() + 3 * (slot * E + e) * n;
+    d.trailPositions.insert(d.trailPositions.end(), t, t + 3 * n);
+  }
+  return d;
+}
 
 /// Runs the system on `pieces` threads; the state by element id, and the
 /// number of elements that changed pieces.
@@ -196,13 +225,11 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
     EXPECT_EQ(errors[std::size_t(k)], "");
     migrated += moved[std::size_t(k)];
     const bp::Engine& engine = engines[std::size_t(k)];
-    const std::size_t n = engine.particlesPerElement();
     for (std::size_t e = 0; e < engine.elementCount(); ++e)
     {
       const std::uint32_t id = engine.elementIds()[e];
       EXPECT_EQ(state.count(id), 0u) << "element " << id << " is held twice";
-      const float* p = engine.positions().data() + 3 * e * n;
-      state[id] = { engine.generations()[e], std::vector<float>(p, p + 3 * n) };
+      state[id] = elementOf(engine, e);
     }
   }
   return state;
@@ -297,14 +324,25 @@ TEST(Partition, PiecesReproduceTheSingleProcessRun)
       ASSERT_EQ(state.size(), serial.elementCount());
       // Elements crossed between pieces, and some were reset (lifetimes end).
       EXPECT_GT(migrated, 100) << pieces << " pieces";
-      float worst = 0.0f;
+      float worst = 0.0f, worstPose = 0.0f;
+      int trailPoses = 0;
       for (std::size_t e = 0; e < serial.elementCount(); ++e)
       {
         const Element& d = state.at(std::uint32_t(e));
-        EXPECT_EQ(d.generation, serial.generations()[e]);
+        const Element s = elementOf(serial, e);
+        EXPECT_EQ(d.generation, s.generation);
         for (std::size_t i = 0; i < 3 * n; ++i)
-          worst = std::max(worst, std::abs(d.positions[i] - serial.positions()[3 * e * n + i]));
+          worst = std::max(worst, std::abs(d.positions[i] - s.positions[i]));
+        for (std::size_t i = 0; i < 8; ++i)
+          worstPose = std::max(worstPose, std::abs(d.poseAndSpin[i] - s.poseAndSpin[i]));
+        EXPECT_EQ(d.trailGenerations, s.trailGenerations);
+        for (std::size_t i = 0; i < d.trailPositions.size(); ++i)
+          worst = std::max(worst, std::abs(d.trailPositions[i] - s.trailPositions[i]));
+        trailPoses += int(std::count(
+          s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
       }
+      EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
+      EXPECT_LE(worstPose, ghosted ? 1e-2f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
       // The whole field on every piece gives the same bits; ghosted pieces
       // locate cells from their own origin, which rounds differently.
       EXPECT_LE(worst, ghosted ? 1e-4f : 0.0f) << pieces << " pieces, ghosted " << ghosted;

@@ -1,10 +1,16 @@
-# Run from the GUI's Python shell by panel.xml after Vorticity was unticked in
-# Output Arrays: when the first tracer's output has Force but not Vorticity,
-# sets its Coloring Axis to X, which panel.xml then checks in the panel.
+# Run from the GUI's Python shell by panel.xml after Vorticity was unticked and
+# ElementSpin ticked in Output Arrays: when the first tracer's output has Force
+# and ElementSpin but neither Vorticity nor ElementOrientation (a pose array
+# off by default), sets its Coloring Axis to X, which panel.xml then checks.
 from paraview.simple import FindSource
 
 tracer = FindSource("BoundParticleTracer1")
 arrays = tracer.GetPointDataInformation()
 names = [arrays.GetArray(i).GetName() for i in range(arrays.GetNumberOfArrays())]
-if "Force" in names and "Vorticity" not in names:
+if (
+    "Force" in names
+    and "ElementSpin" in names
+    and "Vorticity" not in names
+    and "ElementOrientation" not in names
+):
     tracer.ColoringAxis = 0
