@@ -181,6 +181,13 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   {
     return "ElementSize must be positive";
   }
+  if (p.trailLength < 0 || p.trailLength > MaxTrailLength ||
+    (p.trailLength > 0 && !(std::isfinite(p.trailInterval) && p.trailInterval > 0.0 &&
+                            std::isfinite(p.trailStart))))
+  {
+    return "TrailLength must be in [0, " + std::to_string(MaxTrailLength) +
+      "] poses, with a positive, finite interval between two";
+  }
   if (std::isnan(p.releaseStart) || std::isnan(p.releaseStop))
   {
     return "ReleaseStart and ReleaseStop must be numbers (one is NaN)";

@@ -710,6 +710,13 @@ TEST(Engine, TrailsKeepThePosesOfEveryFewStepsOfTheElementsOwnGeneration)
   // Short lifetimes: some trail poses are of an earlier generation (not shown).
   EXPECT_GT(ownGeneration, 0);
   EXPECT_LT(ownGeneration, int(3 * E));
+  // Trails too long, or without an interval, are refused with a reason.
+  bp::Parameters bad = p;
+  bad.trailLength = bp::MaxTrailLength + 1;
+  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Cross), bad), "");
+  bad.trailLength = 2;
+  bad.trailInterval = 0.0;
+  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Cross), bad), "");
   // A step taken again from a time already recorded replaces that pose.
   bp::Engine again = trailed;
   again.recordTrail(20 * dt);
