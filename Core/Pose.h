@@ -131,16 +131,8 @@ inline void trackRotation(const float A[9], float q[4])
     const float w[3] = { (c00 * g[0] + c01 * g[1] + c02 * g[2]) * half,
       (c01 * g[0] + c11 * g[1] + c12 * g[2]) * half,
       (c02 * g[0] + c12 * g[1] + c22 * g[2]) * half };
-    // q = (w, 1) * q (Hamilton product), then normalised.
-    const float n[4] = { q[0] + w[0] * q[3] + w[1] * q[2] - w[2] * q[1],
-      q[1] - w[0] * q[2] + w[1] * q[3] + w[2] * q[0],
-      q[2] + w[0] * q[1] - w[1] * q[0] + w[2] * q[3],
-      q[3] - w[0] * q[0] - w[1] * q[1] - w[2] * q[2] };
-    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
-    for (int k = 0; k < 4; ++k)
-    {
-      q[k] = n[k] / length;
-    }
+    const float turn[4] = { w[0], w[1], w[2], 1.0f };
+    turnQuaternion(turn, q);
   }
 }
 

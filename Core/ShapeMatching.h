@@ -37,6 +37,20 @@ inline void quaternionToMatrix(const float q[4], float R[9])
   R[8] = 1 - 2 * (x * x + y * y);
 }
 
+/// q = d * q (Hamilton product), then normalised: q turned by d.
+inline void turnQuaternion(const float d[4], float q[4])
+{
+  const float n[4] = { d[3] * q[0] + d[0] * q[3] + d[1] * q[2] - d[2] * q[1],
+    d[3] * q[1] - d[0] * q[2] + d[1] * q[3] + d[2] * q[0],
+    d[3] * q[2] + d[0] * q[1] - d[1] * q[0] + d[2] * q[3],
+    d[3] * q[3] - d[0] * q[0] - d[1] * q[1] - d[2] * q[2] };
+  const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
+  for (int k = 0; k < 4; ++k)
+  {
+    q[k] = n[k] / length;
+  }
+}
+
 /// Turns q towards the rotation closest to the row-major matrix A.
 inline void extractRotation(const float A[9], float q[4])
 {
@@ -65,16 +79,7 @@ inline void extractRotation(const float A[9], float q[4])
     }
     const float s = std::sin(0.5f * angle) / angle, c = std::cos(0.5f * angle);
     const float d[4] = { omega[0] * s, omega[1] * s, omega[2] * s, c };
-    // q = d * q (Hamilton product), then normalised.
-    const float n[4] = { d[3] * q[0] + d[0] * q[3] + d[1] * q[2] - d[2] * q[1],
-      d[3] * q[1] - d[0] * q[2] + d[1] * q[3] + d[2] * q[0],
-      d[3] * q[2] + d[0] * q[1] - d[1] * q[0] + d[2] * q[3],
-      d[3] * q[3] - d[0] * q[0] - d[1] * q[1] - d[2] * q[2] };
-    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
-    for (int k = 0; k < 4; ++k)
-    {
-      q[k] = n[k] / length;
-    }
+    turnQuaternion(d, q);
   }
 }
 
