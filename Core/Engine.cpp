@@ -182,8 +182,8 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
     return "ElementSize must be positive";
   }
   if (p.trailLength < 0 || p.trailLength > MaxTrailLength ||
-    (p.trailLength > 0 && !(std::isfinite(p.trailInterval) && p.trailInterval > 0.0 &&
-                            std::isfinite(p.trailStart))))
+    (p.trailLength > 0 &&
+      !(std::isfinite(p.trailInterval) && p.trailInterval > 0.0 && std::isfinite(p.trailStart))))
   {
     return "TrailLength must be in [0, " + std::to_string(MaxTrailLength) +
       "] poses, with a positive, finite interval between two";
@@ -500,7 +500,8 @@ void Engine::initialize(const RangeRunner& run, double startTime)
 {
   std::fill(this->Generations.begin(), this->Generations.end(), 0u);
   std::fill(this->TrailGenerations.begin(), this->TrailGenerations.end(), NoTrailPose);
-  std::fill(this->TrailTimes.begin(), this->TrailTimes.end(), -std::numeric_limits<double>::infinity());
+  std::fill(
+    this->TrailTimes.begin(), this->TrailTimes.end(), -std::numeric_limits<double>::infinity());
   this->TrailNewest = -1;
   const bool releasing = this->releasesAt(startTime, 0.0);
   run(this->elementCount(),

@@ -90,10 +90,10 @@ enum class ColorSource
   Radius,
   ElementIndex,
   ParticleIndex,
-  Orientation,   ///< a component of the pose quaternion, or its magnitude
-  Spin,          ///< a component of the spin, or its magnitude
-  SpinRatio,     ///< SpinVorticityRatio
-  Age,           ///< of a trail's pose (0 on the elements)
+  Orientation, ///< a component of the pose quaternion, or its magnitude
+  Spin,        ///< a component of the spin, or its magnitude
+  SpinRatio,   ///< SpinVorticityRatio
+  Age,         ///< of a trail's pose (0 on the elements)
   Count
 };
 

@@ -7,8 +7,8 @@
  * Shared operation for operation by the CPU engine (Engine::settle) and the
  * GPU engine's pose pass (Shaders/bp_pose.frag). Every restoration method
  * gets a pose this way, not only shape matching: at the end of every step the
- * fit (ShapeMatching.h's extractRotation, warm-started from the pose of the
- * step before) gives the new pose, and the rotation from the old pose to the
+ * fit (trackRotation's Newton steps, warm-started from the pose of the step
+ * before) gives the new pose, and the rotation from the old pose to the
  * new one, divided by the step, gives the spin. An element of one particle
  * has no orientation: its pose stays the identity and its spin zero.
  */

@@ -285,7 +285,8 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
     // The trails' poses after the elements, a block of n points each.
     for (std::size_t j = 0; j < trail.size(); ++j)
     {
-      const float* p = engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
+      const float* p =
+        engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
       Coordinate* out = coords + 3 * (std::size_t(N) + j * n);
       for (std::size_t k = 0; k < 3 * n; ++k)
       {
@@ -558,7 +559,8 @@ void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillCont
 namespace bpvtk
 {
 
-void OutputStorage::applyCells(vtkPolyData* output, const bp::Engine& engine, std::size_t trailPoses)
+void OutputStorage::applyCells(
+  vtkPolyData* output, const bp::Engine& engine, std::size_t trailPoses)
 {
   const std::size_t E = engine.elementCount();
   // An element placed outside the release window keeps its points but has
@@ -668,7 +670,8 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
   const std::vector<TrailPose> trail = trailPoses(engine, frame.time);
   setPoints(output, engine, frame, trail, storage, run);
   storage.applyCells(output, engine, trail.size());
-  const vtkIdType points = vtkIdType(engine.particleCount() + trail.size() * engine.particlesPerElement());
+  const vtkIdType points =
+    vtkIdType(engine.particleCount() + trail.size() * engine.particlesPerElement());
   FillContext context{ engine, field, frame, run, trail, {} };
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;
   for (const bp::OutputArray& row : bp::outputArrays())

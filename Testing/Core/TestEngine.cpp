@@ -556,8 +556,8 @@ std::array<float, 4> turnedAboutZ(const float* q, double angle)
 /// 1 - |q . r|: 0 for the same rotation (q and -q are one).
 double rotationDistance(const float* q, const float* r)
 {
-  return 1.0 - std::abs(double(q[0]) * r[0] + double(q[1]) * r[1] + double(q[2]) * r[2] +
-                 double(q[3]) * r[3]);
+  return 1.0 -
+    std::abs(double(q[0]) * r[0] + double(q[1]) * r[1] + double(q[2]) * r[2] + double(q[3]) * r[3]);
 }
 } // namespace
 
@@ -597,7 +597,8 @@ TEST(Engine, PosesAndSpinsFollowSolidBodyRotationForEveryRestoration)
       worstSpin = std::max(worstSpin, std::hypot(s[0], s[1], s[2] - 1.0));
       worstRatio = std::max(worstRatio, std::abs(s[3] - 1.0));
       const auto expected = turnedAboutZ(placed.data() + 4 * e, steps * dt);
-      worstPose = std::max(worstPose, rotationDistance(engine.poses().data() + 4 * e, expected.data()));
+      worstPose =
+        std::max(worstPose, rotationDistance(engine.poses().data() + 4 * e, expected.data()));
     }
     EXPECT_LT(worstSpin, 0.02);
     EXPECT_LT(worstRatio, 0.02);

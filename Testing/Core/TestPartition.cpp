@@ -147,9 +147,9 @@ struct Element
 {
   std::uint32_t generation;
   std::vector<float> positions;
-  std::vector<float> poseAndSpin;                ///< 8 floats
-  std::vector<std::uint32_t> trailGenerations;   ///< per slot, newest first
-  std::vector<float> trailPositions;             ///< per slot, newest first
+  std::vector<float> poseAndSpin;              ///< 8 floats
+  std::vector<std::uint32_t> trailGenerations; ///< per slot, newest first
+  std::vector<float> trailPositions;           ///< per slot, newest first
 };
 
 /// Element e's state in `engine`.
@@ -338,8 +338,8 @@ TEST(Partition, PiecesReproduceTheSingleProcessRun)
         EXPECT_EQ(d.trailGenerations, s.trailGenerations);
         for (std::size_t i = 0; i < d.trailPositions.size(); ++i)
           worst = std::max(worst, std::abs(d.trailPositions[i] - s.trailPositions[i]));
-        trailPoses += int(std::count(
-          s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
+        trailPoses +=
+          int(std::count(s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
       }
       EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
       EXPECT_LE(worstPose, ghosted ? 1e-2f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
