@@ -24,7 +24,9 @@
 
 #include <epoxy/gl.h>
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace bp
@@ -100,6 +102,43 @@ using GlTexture = GlObject<GlTextureTraits>;
 using GlFramebuffer = GlObject<GlFramebufferTraits>;
 using GlProgram = GlObject<GlProgramTraits>;
 using GlVertexArray = GlObject<GlVertexArrayTraits>;
+
+/**
+ * A list of textures that deletes them when another list is assigned over
+ * it, as GlObject does; a std::vector<GlTexture> would only forget them (its
+ * move assignment destroys the old elements, and ~GlObject calls no GL).
+ */
+class GlTextureList
+{
+public:
+  GlTextureList() = default;
+  GlTextureList(GlTextureList&&) noexcept = default;
+  GlTextureList& operator=(GlTextureList&& other) noexcept
+  {
+    if (this != &other)
+    {
+      this->clear();
+      this->Textures = std::move(other.Textures);
+    }
+    return *this;
+  }
+
+  /// Deletes every texture (the context must be current) and empties the list.
+  void clear()
+  {
+    for (GlTexture& texture : this->Textures)
+    {
+      texture.reset();
+    }
+    this->Textures.clear();
+  }
+  void add(GlTexture texture) { this->Textures.push_back(std::move(texture)); }
+  std::size_t size() const { return this->Textures.size(); }
+  GLuint operator[](std::size_t k) const { return this->Textures[k].get(); }
+
+private:
+  std::vector<GlTexture> Textures;
+};
 
 GlFramebuffer makeFramebuffer();
 GlVertexArray makeVertexArray();

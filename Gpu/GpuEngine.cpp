@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace bp
 {
@@ -147,12 +148,73 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   d.samples = S.state.samples.get();
   d.elements = S.state.elements.current();
   d.centers = S.state.centers.current();
+  d.poses = S.state.poses.current();
+  d.spins = S.state.spins.current();
   d.elementGrid[0] = S.layout.elementGrid[0];
   d.elementGrid[1] = S.layout.elementGrid[1];
   d.blocksPerRow = S.layout.blocksPerRow;
   d.elementCount = S.layout.elementCount;
   d.particlesPerElement = S.layout.particlesPerElement;
+  const TrailRing& trail = S.state.trail;
+  d.trailLength = trail.length();
+  for (int k = 0; k < trail.length(); ++k)
+  {
+    const std::size_t slot = std::size_t(trail.slot(k));
+    d.trail.push_back({ trail.particles[slot], trail.elements[slot], trail.times[slot] });
+  }
   return d;
+}
+
+void GpuEngine::readPoses(std::vector<float>* poses, std::vector<float>* spins) const
+{
+  const GpuSystem& S = this->I->system;
+  const std::size_t values = 4 * std::size_t(S.layout.elementCount);
+  std::vector<float> texels;
+  const std::pair<GLuint, std::vector<float>*> reads[] = { { S.state.poses.current(), poses },
+    { S.state.spins.current(), spins } };
+  for (const auto& read : reads)
+  {
+    if (read.second)
+    {
+      // Element e is texel e in row-major order.
+      S.passes.readTexture(read.first, S.layout.elementGrid[0], S.layout.elementGrid[1], texels);
+      read.second->assign(texels.begin(), texels.begin() + std::ptrdiff_t(values));
+    }
+  }
+}
+
+int GpuEngine::trailLength() const
+{
+  return this->I->system.state.trail.length();
+}
+
+double GpuEngine::trailTime(int k) const
+{
+  const TrailRing& trail = this->I->system.state.trail;
+  return trail.times[std::size_t(trail.slot(k))];
+}
+
+void GpuEngine::readTrail(
+  int k, std::vector<float>* positions, std::vector<std::uint32_t>* generations) const
+{
+  const GpuSystem& S = this->I->system;
+  const std::size_t slot = std::size_t(S.state.trail.slot(k));
+  if (positions)
+  {
+    S.passes.readParticles(S.state.trail.particles[slot], S.layout, positions, nullptr);
+  }
+  if (generations)
+  {
+    std::vector<float> texels;
+    S.passes.readTexture(
+      S.state.trail.elements[slot], S.layout.elementGrid[0], S.layout.elementGrid[1], texels);
+    generations->resize(std::size_t(S.layout.elementCount));
+    for (std::size_t e = 0; e < generations->size(); ++e)
+    {
+      const float g = texels[4 * e + 1];
+      (*generations)[e] = g < 0.0f ? NoTrailPose : std::uint32_t(g);
+    }
+  }
 }
 
 void GpuEngine::read(

@@ -6,7 +6,9 @@
  *
  * The same step as bp::Engine, computed per texel by the GLSL passes in
  * Shaders/ (reset, advect, K restoration iterations, reposition test,
- * finalize; normals on demand), ping-ponging RGBA32F textures. Particle state
+ * finalize, and with Parameters::trackPoses the pose fit; normals on
+ * demand), ping-ponging RGBA32F textures; a motion trail is a ring of
+ * copies of the state textures, recorded by blits. Particle state
  * is laid out in blocks of one template particle index each (thesis §3.5.1),
  * every block a near-square grid of elements, so the texture is near square
  * and no count needs to be a power of two; the limit is GL_MAX_TEXTURE_SIZE.
@@ -32,6 +34,7 @@
 #include "Engine.h"
 #include "VectorField.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -87,7 +90,25 @@ public:
     std::vector<float>* centers, std::vector<float>* orientations = nullptr,
     std::vector<float>* resetFlags = nullptr, std::vector<float>* hidden = nullptr) const;
 
-  /// Keeps a copy of the state (particles, elements, centres, orientations):
+  /// Each element's pose (x, y, z, w) and spin (angular velocity xyz,
+  /// SpinVorticityRatio), 4 floats per element in the CPU engine's order, as
+  /// Engine::poses() and Engine::spins() (null to skip either).
+  void readPoses(std::vector<float>* poses, std::vector<float>* spins) const;
+
+  /// @name Motion trails (Parameters::trailLength): k = 0 the newest pose, k < trailLength()
+  ///@{
+  int trailLength() const;
+  /// When the k-th newest pose was recorded; -infinity: not yet.
+  double trailTime(int k) const;
+  /// The k-th newest pose's positions (as read()) and each element's
+  /// generation then (NoTrailPose where nothing is recorded), as the CPU
+  /// engine's trailPositions() and trailGenerations() of trailSlot(k).
+  void readTrail(
+    int k, std::vector<float>* positions, std::vector<std::uint32_t>* generations) const;
+  ///@}
+
+  /// Keeps a copy of the state (particles, elements, centres, orientations,
+  /// poses, spins, and the trail's times and the slot a step records into):
   /// a step to a time between two step boundaries is shown, then taken back
   /// with restoreState(), as the CPU filter steps a copy.
   void saveState();
@@ -109,10 +130,22 @@ public:
     unsigned samples = 0;   ///< per particle: velocity, |curl v| (updateFieldSamples)
     unsigned elements = 0;  ///< per element: lifetime, generation, flags
     unsigned centers = 0;   ///< per element: the generation's initial centre
+    unsigned poses = 0;     ///< per element: pose quaternion (x, y, z, w)
+    unsigned spins = 0;     ///< per element: angular velocity xyz, SpinVorticityRatio
     int elementGrid[2] = { 0, 0 };
     int blocksPerRow = 0;
     int elementCount = 0;
     int particlesPerElement = 0;
+    /// One pose of the motion trail: an element's trail pose is shown while
+    /// its generation there (elements' .y; -1 where none) is the element's own.
+    struct TrailSlot
+    {
+      unsigned positions = 0; ///< per particle: position, force, as `positions`
+      unsigned elements = 0;  ///< per element: lifetime, generation, flags, as `elements`
+      double time = 0.0;      ///< when it was recorded; -infinity: not yet
+    };
+    int trailLength = 0;
+    std::vector<TrailSlot> trail; ///< trailLength slots, newest first
   };
   DrawInputs drawInputs() const;
 

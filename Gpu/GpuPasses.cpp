@@ -197,7 +197,7 @@ std::string GpuPasses::compile(const std::string& springSumCode)
     { bpShaderMatchApplyFrag, &p.matchApply }, { bpShaderGaussSeidelFrag, &p.gaussSeidel },
     { bpShaderTestFrag, &p.test }, { bpShaderFinalizeFrag, &p.finalize },
     { bpShaderNormalsFrag, &p.normals }, { bpShaderSamplesFrag, &p.samples },
-    { bpShaderLinkFrag, &p.link } };
+    { bpShaderLinkFrag, &p.link }, { bpShaderPoseFrag, &p.pose } };
   for (const auto& pass : passes)
   {
     const std::string error = linkPass(pass.first, *pass.second);
@@ -280,10 +280,33 @@ void GpuPasses::readParticles(
     }
 }
 
+void GpuPasses::clearTexture(GLuint texture, const float* value) const
+{
+  glBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer.get());
+  attach(GL_FRAMEBUFFER, 0, texture);
+  for (int j = 1; j < 4; ++j)
+  {
+    attach(GL_FRAMEBUFFER, j, 0);
+  }
+  const GLenum buffer = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &buffer);
+  // A clear obeys the scissor test and the colour mask: a render window's
+  // state may be anything.
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearBufferfv(GL_COLOR, 0, value);
+}
+
 void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
 {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, this->Framebuffer.get());
   attach(GL_READ_FRAMEBUFFER, 0, from);
+  // A framebuffer is as large as its smallest attachment: a per-element
+  // texture left attached by the last pass would crop a particle texture.
+  for (int j = 1; j < 4; ++j)
+  {
+    attach(GL_READ_FRAMEBUFFER, j, 0);
+  }
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->CopyTarget.get());
   attach(GL_DRAW_FRAMEBUFFER, 0, to);

@@ -115,6 +115,8 @@ public:
     GLuint texture, const GpuLayout& layout, std::vector<float>* xyz, std::vector<float>* w) const;
   /// Copies a texture's texels into another of the same size (a blit: GL 3.3).
   void copyTexture(GLuint from, GLuint to, int width, int height) const;
+  /// Sets every texel of a texture to `value` (4 floats), without an upload.
+  void clearTexture(GLuint texture, const float* value) const;
 
   /// The passes (Shaders/bp_*.frag), in the order a step runs them.
   struct Programs
@@ -129,6 +131,7 @@ public:
     GlProgram test;        ///< the reposition test
     GlProgram finalize;    ///< the new state
     GlProgram normals;     ///< per particle, from the template's triangles
+    GlProgram pose;        ///< the pose fit and spin (Parameters::trackPoses)
     GlProgram samples;     ///< the field at every particle, for colouring
   };
   Programs programs;

@@ -2,6 +2,7 @@
 #include "GpuState.h"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace bp
@@ -16,7 +17,13 @@ void TexturePair::make(int width, int height)
   this->Current = 0;
 }
 
-void GpuState::make(const GpuLayout& layout, const LinkTable& links)
+int TrailRing::slot(int k) const
+{
+  const int slots = this->length();
+  return ((this->newest - k) % slots + slots) % slots;
+}
+
+void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLength)
 {
   const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
   const int w = layout.elementGrid[0], h = layout.elementGrid[1];
@@ -33,6 +40,8 @@ void GpuState::make(const GpuLayout& layout, const LinkTable& links)
   this->elements.make(w, h);
   this->centers.make(w, h);
   this->orientations.make(w, h);
+  this->poses.make(w, h);
+  this->spins.make(w, h);
   this->matchCenters = makeTexture2D(w, h);
   for (GlTexture& texture : this->matchLinear)
   {
@@ -52,26 +61,116 @@ void GpuState::make(const GpuLayout& layout, const LinkTable& links)
     this->linkRest = makeElementTexture(w, h, links.rest);
     this->linkNeighbours = makeElementIndexTexture(w, h, links.neighbours);
   }
+
+  const int slots = std::max(trailLength, 0);
+  this->trail.particles.clear();
+  this->trail.elements.clear();
+  for (int k = 0; k < slots; ++k)
+  {
+    this->trail.particles.add(makeTexture2D(pw, ph));
+    this->trail.elements.add(makeTexture2D(w, h));
+  }
+  this->trail.times.assign(std::size_t(slots), -std::numeric_limits<double>::infinity());
+  this->trail.newest = -1;
+}
+
+void GpuState::clearTrail(const GpuPasses& passes)
+{
+  const float zero[4] = { 0, 0, 0, 0 }, noGeneration[4] = { 0, -1, 0, 0 };
+  for (int k = 0; k < this->trail.length(); ++k)
+  {
+    passes.clearTexture(this->trail.particles[std::size_t(k)], zero);
+    passes.clearTexture(this->trail.elements[std::size_t(k)], noGeneration);
+  }
+  std::fill(
+    this->trail.times.begin(), this->trail.times.end(), -std::numeric_limits<double>::infinity());
+  this->trail.newest = -1;
+}
+
+void GpuState::recordTrail(const GpuPasses& passes, const GpuLayout& layout, double t)
+{
+  TrailRing& r = this->trail;
+  const int slots = r.length();
+  if (slots == 0)
+  {
+    return;
+  }
+  const bool replaces = r.newest >= 0 && r.times[std::size_t(r.newest)] == t;
+  const int slot = replaces ? r.newest : (r.newest + 1) % slots;
+  if (this->Copy.watchesTrail && this->Copy.trailSlot < 0)
+  {
+    // A step after save(): keep what this slot held, for restore().
+    this->copyTrailSlot(passes, layout, slot, true);
+    this->Copy.trailSlot = slot;
+  }
+  r.newest = slot;
+  r.times[std::size_t(slot)] = t;
+  passes.copyTexture(this->particles.current(), r.particles[std::size_t(slot)],
+    layout.particleTextureWidth, layout.particleTextureHeight);
+  passes.copyTexture(this->elements.current(), r.elements[std::size_t(slot)], layout.elementGrid[0],
+    layout.elementGrid[1]);
+}
+
+void GpuState::copyTrailSlot(
+  const GpuPasses& passes, const GpuLayout& layout, int slot, bool intoCopy)
+{
+  const GLuint live[2] = { this->trail.particles[std::size_t(slot)],
+    this->trail.elements[std::size_t(slot)] };
+  const GLuint copy[2] = { this->Copy.trailParticles.get(), this->Copy.trailElements.get() };
+  const int width[2] = { layout.particleTextureWidth, layout.elementGrid[0] };
+  const int height[2] = { layout.particleTextureHeight, layout.elementGrid[1] };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (intoCopy)
+      passes.copyTexture(live[k], copy[k], width[k], height[k]);
+    else
+      passes.copyTexture(copy[k], live[k], width[k], height[k]);
+  }
 }
 
 void GpuState::save(const GpuPasses& passes, const GpuLayout& layout)
 {
+  const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
+  const int w = layout.elementGrid[0], h = layout.elementGrid[1];
   if (!this->Copy.particles)
   {
-    this->Copy.particles = makeTexture2D(layout.particleTextureWidth, layout.particleTextureHeight);
-    this->Copy.elements = makeTexture2D(layout.elementGrid[0], layout.elementGrid[1]);
-    this->Copy.centers = makeTexture2D(layout.elementGrid[0], layout.elementGrid[1]);
-    this->Copy.orientations = makeTexture2D(layout.elementGrid[0], layout.elementGrid[1]);
+    this->Copy.particles = makeTexture2D(pw, ph);
+    this->Copy.elements = makeTexture2D(w, h);
+    this->Copy.centers = makeTexture2D(w, h);
+    this->Copy.orientations = makeTexture2D(w, h);
+    this->Copy.poses = makeTexture2D(w, h);
+    this->Copy.spins = makeTexture2D(w, h);
+    if (this->trail.length() > 0)
+    {
+      this->Copy.trailParticles = makeTexture2D(pw, ph);
+      this->Copy.trailElements = makeTexture2D(w, h);
+    }
   }
   this->copySaved(passes, layout, true);
+  // A step records into at most one slot of the trail: recordTrail() keeps
+  // that one before it overwrites it, so a save costs no copy of the ring.
+  this->Copy.trailTimes = this->trail.times;
+  this->Copy.trailNewest = this->trail.newest;
+  this->Copy.trailSlot = -1;
+  this->Copy.watchesTrail = this->trail.length() > 0;
 }
 
 void GpuState::restore(const GpuPasses& passes, const GpuLayout& layout)
 {
-  if (this->Copy.particles)
+  if (!this->Copy.particles)
   {
-    this->copySaved(passes, layout, false);
+    return;
   }
+  this->copySaved(passes, layout, false);
+  // Without this a short step taken back would leave its record: the oldest
+  // pose lost and a pose at the shown state's own time in the trail.
+  if (this->Copy.trailSlot >= 0)
+  {
+    this->copyTrailSlot(passes, layout, this->Copy.trailSlot, false);
+  }
+  this->trail.times = this->Copy.trailTimes;
+  this->trail.newest = this->Copy.trailNewest;
+  this->Copy.watchesTrail = false; // the steps from here on are kept
 }
 
 void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool intoCopy) const
@@ -87,7 +186,9 @@ void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool 
   const Kept kept[] = { { this->particles.current(), this->Copy.particles.get(), pw, ph },
     { this->elements.current(), this->Copy.elements.get(), w, h },
     { this->centers.current(), this->Copy.centers.get(), w, h },
-    { this->orientations.current(), this->Copy.orientations.get(), w, h } };
+    { this->orientations.current(), this->Copy.orientations.get(), w, h },
+    { this->poses.current(), this->Copy.poses.get(), w, h },
+    { this->spins.current(), this->Copy.spins.get(), w, h } };
   for (const Kept& k : kept)
   {
     if (intoCopy)

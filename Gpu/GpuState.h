@@ -6,8 +6,10 @@
  * A pass never reads the texture it writes, so what a step carries over
  * lives in pairs: a pass reads one and writes the other, which then becomes
  * current. Each pair flips on its own (the centres only when elements are
- * placed, the orientations only with shape matching). The scratch textures
- * hold a step's intermediate positions and shape-matching fits.
+ * placed, the orientations only with shape matching, the poses and spins
+ * together in the pose pass). The scratch textures hold a step's
+ * intermediate positions and shape-matching fits. Motion trails are a ring
+ * of copies of the particle and element textures (TrailRing).
  *
  * Needs the GL context current; the textures are deleted as GlObjects.h says.
  */
@@ -19,6 +21,7 @@
 #include "SuperSet.h"
 
 #include <array>
+#include <vector>
 
 namespace bp
 {
@@ -37,17 +40,48 @@ private:
   int Current = 0;
 };
 
+/**
+ * Motion trails (Parameters::trailLength): slot s holds the particle texture
+ * and the element texture (generation in .y) as they were at the start of a
+ * step at times[s] (Engine::recordTrail). The slot times and the newest slot
+ * live on the host; the textures are copied by blits, never read back.
+ */
+struct TrailRing
+{
+  GlTextureList particles;   ///< per slot: position, force
+  GlTextureList elements;    ///< per slot: lifetime, generation (-1: none), flags
+  std::vector<double> times; ///< per slot; -infinity: nothing recorded
+  int newest = -1;           ///< the slot written last, -1 before any
+
+  int length() const { return int(this->times.size()); }
+  /// The slot of the k-th newest pose (Engine::trailSlot).
+  int slot(int k) const;
+};
+
 class GpuState
 {
 public:
-  /// Makes every texture for `layout` (and the super set's, from `links`);
-  /// the saved copy waits for the first save().
-  void make(const GpuLayout& layout, const LinkTable& links);
+  /// Makes every texture for `layout` (and the super set's, from `links`,
+  /// and a trail ring of `trailLength` slots); the saved copy waits for the
+  /// first save().
+  void make(const GpuLayout& layout, const LinkTable& links, int trailLength);
 
   /// Keeps a copy of what a step carries over; restore() goes back to it.
+  /// The trail ring is kept by its slot times and, copied when a step is
+  /// about to overwrite it, the one slot a step records into (recordTrail).
   void save(const GpuPasses& passes, const GpuLayout& layout);
-  /// Goes back to the copy of save(); nothing before the first save.
+  /// Goes back to the copy of save(); nothing before the first save. The
+  /// trail comes back whole when the steps since save() recorded at most one
+  /// new slot, as the one short step the tracer takes back does.
   void restore(const GpuPasses& passes, const GpuLayout& layout);
+
+  /// Empties the trail ring (Engine::initialize): no time recorded, every
+  /// slot's generations -1 and positions 0.
+  void clearTrail(const GpuPasses& passes);
+  /// Records the current particle and element textures at time t into the
+  /// next slot, or into the newest one when it holds t already (a step taken
+  /// back and taken again records once), as Engine::recordTrail.
+  void recordTrail(const GpuPasses& passes, const GpuLayout& layout, double t);
 
   // Per particle, a texel each (GpuLayout::particleTexel).
   TexturePair particles;             ///< grid-local position, force
@@ -61,6 +95,8 @@ public:
   TexturePair elements;                 ///< lifetime, generation, reset flag, non-finite
   TexturePair centers;                  ///< the generation's initial centre
   TexturePair orientations;             ///< rotation as placed, then as fitted: a quaternion
+  TexturePair poses;                    ///< Engine::poses(): a quaternion
+  TexturePair spins;                    ///< Engine::spins(): angular velocity, SpinVorticityRatio
   GlTexture matchCenters;               ///< shape matching: the fit's centre
   std::array<GlTexture, 2> matchLinear; ///< linear shape matching: the goal matrix, packed
 
@@ -70,14 +106,24 @@ public:
   GlTexture linkNeighbours;
   GlTexture linkRest;
 
+  TrailRing trail;
+
 private:
   /// Copies the pairs' current textures into the saved copy, or back.
   void copySaved(const GpuPasses& passes, const GpuLayout& layout, bool intoCopy) const;
+  /// Copies trail slot `slot` into the saved copy, or back.
+  void copyTrailSlot(const GpuPasses& passes, const GpuLayout& layout, int slot, bool intoCopy);
 
-  /// The copy save() keeps of the current textures of the pairs.
+  /// The copy save() keeps of the current textures of the pairs, and of the
+  /// trail ring the times and the one slot a step since save() overwrote.
   struct Saved
   {
-    GlTexture particles, elements, centers, orientations;
+    GlTexture particles, elements, centers, orientations, poses, spins;
+    GlTexture trailParticles, trailElements;
+    std::vector<double> trailTimes;
+    int trailNewest = -1;
+    int trailSlot = -1;        ///< the slot held in trailParticles / trailElements, -1: none
+    bool watchesTrail = false; ///< from save() to restore(): keep the first slot overwritten
   };
   Saved Copy;
 };

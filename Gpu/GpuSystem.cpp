@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace bp
 {
@@ -24,6 +25,12 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   {
     return error;
   }
+  if (p.trailLength > MaxTrailLength)
+  {
+    // Each slot is a copy of the particle texture.
+    return "the GPU engine keeps at most " + std::to_string(MaxTrailLength) +
+      " poses of a motion trail, not " + std::to_string(p.trailLength);
+  }
   this->shapeTables.upload(this->shape, p.elementSize, generatedSprings);
   error = this->passes.compile(this->shapeTables.springSumCode);
   if (!error.empty())
@@ -32,7 +39,8 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   }
   // The super set's lattice, the same table the CPU engine builds.
   this->state.make(this->layout,
-    makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax));
+    makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax),
+    p.trailLength);
   // Release centres of a seed source (bp_common.glsl: 256 a row); one texel
   // when there is none, since the reset pass binds it.
   std::vector<float> seeds(4 * std::max<std::size_t>(p.seedPoints.size() / 3, 1), 0.0f);
@@ -63,11 +71,20 @@ void GpuSystem::initialize(double startTime)
   const GLuint placed = this->state.advected.get();
   this->test(placed, true, 0.0, 0.0f);
   this->finalize(placed);
+  // Every spin 0 (the reset pass placed every pose), and no trail yet.
+  const float zero[4] = { 0, 0, 0, 0 };
+  this->passes.clearTexture(this->state.spins.current(), zero);
+  this->state.clearTrail(this->passes);
   this->updateNormals();
 }
 
 void GpuSystem::step(double t, double h)
 {
+  // The trail's pose, recorded before anything moves (Engine::step).
+  if (recordsTrailAt(this->parameters, t))
+  {
+    this->state.recordTrail(this->passes, this->layout, t);
+  }
   // 1. Reset.
   this->reset(false, releasesAt(this->parameters, t, h));
   // 2. Advect.
@@ -82,8 +99,14 @@ void GpuSystem::step(double t, double h)
   }
   // 5. Reposition test, then the new state.
   const VectorField* field = this->fieldCache.field();
-  this->test(positions, false, h, field ? field->timeWeight(t + h) : 0.0f);
+  const float endWeight = field ? field->timeWeight(t + h) : 0.0f;
+  this->test(positions, false, h, endWeight);
   this->finalize(positions);
+  // 6. Poses and spins.
+  if (this->parameters.trackPoses)
+  {
+    this->updatePoses(h, endWeight);
+  }
 }
 
 void GpuSystem::updateNormals()
@@ -128,6 +151,7 @@ void GpuSystem::reset(bool initialize, bool releasing)
   pass.texture("bpElementState", s.elements.current());
   pass.texture("bpCenters", s.centers.current());
   pass.texture("bpOrientations", s.orientations.current());
+  pass.texture("bpPoses", s.poses.current());
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setInt("bpReleasing", releasing ? 1 : 0);
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
@@ -135,10 +159,12 @@ void GpuSystem::reset(bool initialize, bool releasing)
   this->fieldCache.applyReleaseMaskTo(pass, this->parameters.releaseMinSpeed);
   pass.setInt("bpSeedCount", int(this->parameters.seedPoints.size() / 3));
   pass.texture("bpSeedPoints", this->SeedPoints.get());
-  pass.runPerElement({ s.elements.next(), s.centers.next(), s.orientations.next() });
+  pass.runPerElement(
+    { s.elements.next(), s.centers.next(), s.orientations.next(), s.poses.next() });
   s.elements.flip();
   s.centers.flip();
   s.orientations.flip();
+  s.poses.flip();
 }
 
 /// The advect pass: positions before the step (placed anew where reset) and
@@ -303,6 +329,23 @@ void GpuSystem::finalize(GLuint restored)
   pass.texture("bpElementState", s.elements.current());
   pass.runPerParticle({ s.particles.next() });
   s.particles.flip();
+}
+
+/// The pose pass: every element's pose fitted to its particles after the
+/// step and its spin over the step (Engine::updatePose).
+void GpuSystem::updatePoses(double h, float endWeight)
+{
+  GpuState& s = this->state;
+  GpuPass pass = this->begin(this->passes.programs.pose);
+  pass.texture("bpState", s.particles.current());
+  pass.texture("bpElementState", s.elements.current());
+  pass.texture("bpPoses", s.poses.current());
+  pass.texture("bpRest", this->shapeTables.rest.get());
+  pass.setFloat("bpStep", float(h));
+  pass.setFloat("bpEndWeight", endWeight);
+  pass.runPerElement({ s.poses.next(), s.spins.next() });
+  s.poses.flip();
+  s.spins.flip();
 }
 
 } // namespace bp

@@ -6,9 +6,10 @@
  * What GpuEngine::configure() makes: the template's tables, the compiled
  * passes and the state textures, with the field's resident time steps. A step
  * runs the passes in the order of docs/engine-specification.md, as the CPU
- * engine (Core/Engine.h) runs its stages: reset, advect, K restoration
+ * engine (Core/Engine.h) runs its stages: the trail's record (a copy, when
+ * the step starts on the trail's interval), reset, advect, K restoration
  * iterations (each followed, in a super set, by a pass over the links), the
- * reposition test, finalize.
+ * reposition test, finalize, and with Parameters::trackPoses the pose pass.
  *
  * Needs the GL context current. Assigning an empty system over one deletes
  * every GL object it holds (GlObjects.h): that is how GpuEngine releases.
@@ -73,6 +74,8 @@ private:
   /// `endWeight`: the second time step's weight at the step's end.
   void test(GLuint positions, bool settleOnly, double h, float endWeight);
   void finalize(GLuint restored);
+  /// `endWeight`: as test()'s, for the curl at the centres.
+  void updatePoses(double h, float endWeight);
 
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };

@@ -281,6 +281,62 @@ bool bpOutsideCell(vec3 p, float weight)
     (weight > 0.0 && bpMasked1 && texelFetch(bpOutside1, a, 0).r != 0u);
 }
 
+// ---- The field's curl (VectorField::sampleWithCurl) ------------------------
+// d[a][k] = d v_k / d x_a in the cell at `a` (its first corner) with
+// fractions f; w[a] is the fraction's derivative along axis a.
+void bpGradient(sampler3D field, ivec3 a, vec3 f, vec3 w, out vec3 d[3])
+{
+  ivec3 s = bpNextCorner;
+  vec3 c000 = texelFetch(field, a, 0).xyz;
+  vec3 c100 = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;
+  vec3 c010 = texelFetch(field, a + ivec3(0, s.y, 0), 0).xyz;
+  vec3 c110 = texelFetch(field, a + ivec3(s.x, s.y, 0), 0).xyz;
+  vec3 c001 = texelFetch(field, a + ivec3(0, 0, s.z), 0).xyz;
+  vec3 c101 = texelFetch(field, a + ivec3(s.x, 0, s.z), 0).xyz;
+  vec3 c011 = texelFetch(field, a + ivec3(0, s.y, s.z), 0).xyz;
+  vec3 c111 = texelFetch(field, a + s, 0).xyz;
+  vec3 x0 = (c100 - c000) + f.y * ((c110 - c010) - (c100 - c000));
+  vec3 x1 = (c101 - c001) + f.y * ((c111 - c011) - (c101 - c001));
+  d[0] = (x0 + f.z * (x1 - x0)) * w.x;
+  vec3 y0 = (c010 - c000) + f.x * ((c110 - c100) - (c010 - c000));
+  vec3 y1 = (c011 - c001) + f.x * ((c111 - c101) - (c011 - c001));
+  d[1] = (y0 + f.z * (y1 - y0)) * w.y;
+  vec3 z0 = (c001 - c000) + f.x * ((c101 - c100) - (c001 - c000));
+  vec3 z1 = (c011 - c010) + f.x * ((c111 - c110) - (c011 - c010));
+  d[2] = (z0 + f.y * (z1 - z0)) * w.z;
+}
+
+// curl v at p: the curl of the trilinear interpolant in the cell that holds
+// p, each time step's gradient blended with `weight` as bpSample blends the
+// values. Used by the colouring samples and the pose pass's vorticity meter.
+vec3 bpCurl(vec3 p, float weight)
+{
+  ivec3 a;
+  vec3 f, w;
+  for (int k = 0; k < 3; ++k)
+  {
+    int cell;
+    float fraction;
+    bpLocate(k, p[k], cell, fraction);
+    a[k] = cell;
+    f[k] = fraction;
+    // 0 along a flat axis (its inverse spacing is 0), where nothing varies.
+    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(cell, k), 0).y : bpInverseSpacing[k];
+  }
+  vec3 d[3];
+  bpGradient(bpField0, a, f, w, d);
+  if (bpUnsteady && weight > 0.0)
+  {
+    vec3 d1[3];
+    bpGradient(bpField1, a, f, w, d1);
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] += weight * (d1[k] - d[k]);
+    }
+  }
+  return vec3(d[1][2] - d[2][1], d[2][0] - d[0][2], d[0][1] - d[1][0]);
+}
+
 bool bpReleaseFits(vec3 c)
 {
   ivec3 a;
@@ -354,4 +410,119 @@ vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
     q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
   }
   return q;
+}
+
+// ---- Poses and spins (Core/Pose.h) ------------------------------------------
+const int bpPoseIterations = 2;            // PoseIterations
+const float bpPoseDamping = 1.0e-3;        // PoseDamping
+const float bpMinVorticityStep = 1.0e-4;   // MinVorticityStep
+const float bpMaxSpinVorticityRatio = 2.0; // MaxSpinVorticityRatio
+
+// momentOf: the centre c of element e's particles in `positions` and their
+// moment A = sum (x_i - c)(s r_i)^T against the rest shape, by rows.
+void bpMomentOf(sampler2D positions, sampler2D rest, int e, out vec3 c, out vec3 a0, out vec3 a1,
+  out vec3 a2)
+{
+  c = vec3(0.0);
+  for (int i = 0; i < bpParticles; ++i)
+  {
+    c += texelFetch(positions, bpParticleTexel(e, i), 0).xyz;
+  }
+  c = c / float(bpParticles);
+  a0 = vec3(0.0);
+  a1 = vec3(0.0);
+  a2 = vec3(0.0);
+  for (int i = 0; i < bpParticles; ++i)
+  {
+    vec3 d = texelFetch(positions, bpParticleTexel(e, i), 0).xyz - c;
+    vec3 q = bpElementSize * texelFetch(rest, ivec2(i, 0), 0).xyz;
+    a0 += d.x * q;
+    a1 += d.y * q;
+    a2 += d.z * q;
+  }
+}
+
+// The Hamilton product a * b of quaternions (x, y, z, w).
+vec4 bpQuaternionProduct(vec4 a, vec4 b)
+{
+  return vec4(a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+    a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+    a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+}
+
+// trackRotation: Newton steps towards the rotation R closest to A (the
+// maximum of tr(R^T A)): with P = sum_c r_c a_c^T over the columns of R and
+// A, the turn w = H^-1 g, g = sum_c r_c x a_c, H = tr(P) I - sym(P) (+
+// damping), solved by H's cofactors and applied as the quaternion (w / 2, 1),
+// normalised.
+vec4 bpTrackRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
+{
+  for (int iteration = 0; iteration < bpPoseIterations; ++iteration)
+  {
+    vec3 r0, r1, r2;
+    bpQuaternionRows(q, r0, r1, r2);
+    vec3 g = vec3(0.0);
+    vec3 p0 = vec3(0.0), p1 = vec3(0.0), p2 = vec3(0.0); // rows of P
+    for (int c = 0; c < 3; ++c)
+    {
+      vec3 r = vec3(r0[c], r1[c], r2[c]);
+      vec3 a = vec3(a0[c], a1[c], a2[c]);
+      g.x += r.y * a.z - r.z * a.y;
+      g.y += r.z * a.x - r.x * a.z;
+      g.z += r.x * a.y - r.y * a.x;
+      p0 += r.x * a;
+      p1 += r.y * a;
+      p2 += r.z * a;
+    }
+    float trace = p0.x + p1.y + p2.z;
+    float d = trace + bpPoseDamping * abs(trace);
+    float h00 = d - p0.x, h11 = d - p1.y, h22 = d - p2.z;
+    float h01 = -0.5 * (p0.y + p1.x), h02 = -0.5 * (p0.z + p2.x), h12 = -0.5 * (p1.z + p2.y);
+    float c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
+    float c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12, c22 = h00 * h11 - h01 * h01;
+    float det = h00 * c00 + h01 * c01 + h02 * c02;
+    if (!(det > 0.0))
+    {
+      break; // A is zero or far from q: keep the pose
+    }
+    float halfInverse = 0.5 / det; // "half" is reserved in GLSL
+    vec3 w = vec3((c00 * g.x + c01 * g.y + c02 * g.z) * halfInverse,
+      (c01 * g.x + c11 * g.y + c12 * g.z) * halfInverse,
+      (c02 * g.x + c12 * g.y + c22 * g.z) * halfInverse);
+    // q = (w, 1) * q (Hamilton product), then normalised.
+    vec4 n = vec4(q.x + w.x * q.w + w.y * q.z - w.z * q.y, q.y - w.x * q.z + w.y * q.w + w.z * q.x,
+      q.z + w.x * q.y - w.y * q.x + w.z * q.w, q.w - w.x * q.x - w.y * q.y - w.z * q.z);
+    float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
+    q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
+  }
+  return q;
+}
+
+// spinBetween: the angular velocity that turns `before` into `after` in time
+// h, the short way round.
+vec3 bpSpinBetween(vec4 before, vec4 after, float h)
+{
+  vec4 d = bpQuaternionProduct(after, vec4(-before.x, -before.y, -before.z, before.w));
+  if (d.w < 0.0)
+  {
+    d = -d;
+  }
+  float s = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  float rate = s > 0.0 ? 2.0 * atan(s, d.w) / (s * h) : 0.0;
+  return vec3(d.x * rate, d.y * rate, d.z * rate);
+}
+
+// spinVorticityRatio: 2 (spin . curl) / |curl|^2, 0 where |curl| h is below
+// the meter's floor (or not finite), clamped to +-bpMaxSpinVorticityRatio.
+float bpSpinVorticityRatio(vec3 spin, vec3 curl, float h)
+{
+  float c2 = curl.x * curl.x + curl.y * curl.y + curl.z * curl.z;
+  float lowest = bpMinVorticityStep / h;
+  if (!(c2 >= lowest * lowest))
+  {
+    return 0.0;
+  }
+  float ratio = 2.0 * (spin.x * curl.x + spin.y * curl.y + spin.z * curl.z) / c2;
+  return max(-bpMaxSpinVorticityRatio, min(bpMaxSpinVorticityRatio, ratio));
 }

@@ -1,7 +1,8 @@
 // Step 3 with shape matching, per element (Engine::matchShape): the centre of
-// the particles and the rotation of the best rigid fit to the rest shape; in
-// the linear mode also the goal matrix M = beta * A Aqq^-1 + (1 - beta) * R,
-// packed row by row into outCenter.w, outLinear0 and outLinear1.
+// the particles and their moment (bpMomentOf), and the rotation of the best
+// rigid fit to the rest shape; in the linear mode also the goal matrix
+// M = beta * A Aqq^-1 + (1 - beta) * R, packed row by row into outCenter.w,
+// outLinear0 and outLinear1.
 uniform sampler2D bpPositions;
 uniform sampler2D bpRest;
 uniform sampler2D bpOrientations;
@@ -28,21 +29,8 @@ void main()
     outOrientation = vec4(0.0);
     return;
   }
-  vec3 c = vec3(0.0);
-  for (int i = 0; i < bpParticles; ++i)
-  {
-    c += texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz;
-  }
-  c = c / float(bpParticles);
-  vec3 a0 = vec3(0.0), a1 = vec3(0.0), a2 = vec3(0.0);
-  for (int i = 0; i < bpParticles; ++i)
-  {
-    vec3 d = texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz - c;
-    vec3 q = bpElementSize * texelFetch(bpRest, ivec2(i, 0), 0).xyz;
-    a0 += d.x * q;
-    a1 += d.y * q;
-    a2 += d.z * q;
-  }
+  vec3 c, a0, a1, a2;
+  bpMomentOf(bpPositions, bpRest, e, c, a0, a1, a2);
   outCenter = vec4(c, 0.0);
   outOrientation = bpExtractRotation(a0, a1, a2, texelFetch(bpOrientations, texel, 0));
   if (bpLinearMatching)

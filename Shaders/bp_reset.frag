@@ -1,11 +1,14 @@
 // Step 1, per element: reset the elements flagged by the previous step or out
 // of lifetime (Engine::stepElement, Engine::place). Writes the element state
 // (lifetime, generation, placed now, 0), the element's release centre with
-// whether it is hidden (outside the release window; Engine::place) and its
-// orientation quaternion (kept by shape matching).
+// whether it is hidden (outside the release window; Engine::place), its
+// orientation quaternion (kept by shape matching) and its pose (the
+// orientation, or the identity for one particle). Spins need nothing here:
+// they are 0 until the pose pass writes every element's at the step's end.
 uniform sampler2D bpElementState; // (lifetime, generation, flag, non-finite) after the last step
 uniform sampler2D bpCenters;
 uniform sampler2D bpOrientations;
+uniform sampler2D bpPoses;
 uniform bool bpInitialize; // place every element as generation 0
 uniform bool bpReleasing;  // the step overlaps the release window (releasesAt)
 uniform vec4 bpFrameQuaternion;
@@ -14,6 +17,7 @@ uniform int bpPlaneAxis; // Parameters::planeAxis
 layout(location = 0) out vec4 outState;
 layout(location = 1) out vec4 outCenter;
 layout(location = 2) out vec4 outOrientation;
+layout(location = 3) out vec4 outPose;
 
 void main()
 {
@@ -24,6 +28,7 @@ void main()
     outState = vec4(0.0);
     outCenter = vec4(0.0);
     outOrientation = vec4(0.0);
+    outPose = vec4(0.0);
     return;
   }
   vec4 state = texelFetch(bpElementState, texel, 0);
@@ -59,11 +64,14 @@ void main()
       float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
       outOrientation = vec4(s1 * sin(a), s1 * cos(a), s2 * sin(b), s2 * cos(b));
     }
+    // One particle has no orientation to show: its pose stays the identity.
+    outPose = bpParticles > 1 ? outOrientation : vec4(0.0, 0.0, 0.0, 1.0);
   }
   else
   {
     outState = vec4(state.x, state.y, 0.0, 0.0);
     outCenter = center;
     outOrientation = texelFetch(bpOrientations, texel, 0);
+    outPose = texelFetch(bpPoses, texel, 0);
   }
 }

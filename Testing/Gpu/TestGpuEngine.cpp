@@ -8,11 +8,14 @@
 #include "GpuEngine.h"
 #include "GpuStepper.h"
 #include "HeadlessContext.h"
+#include "Pose.h"
 #include "WorkQueue.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 
@@ -82,7 +85,117 @@ struct Case
   int seeds = 0;             // release from this many seed points instead of the box
   bool seedsOutside = false; // every third seed point outside the field
   bool window = false;       // release only while 0.3 <= t <= 0.8
+  bool poses = false;        // Parameters::trackPoses, and a trail of 4 poses every 3 steps
 };
+
+/// The largest difference of a quaternion's components, taking the GPU's q
+/// or -q, whichever is nearer the CPU's (both are the same rotation).
+double quaternionDifference(const float* gpu, const float* cpu)
+{
+  double dot = 0.0;
+  for (int k = 0; k < 4; ++k)
+    dot += double(gpu[k]) * cpu[k];
+  const double sign = dot < 0.0 ? -1.0 : 1.0;
+  double worst = 0.0;
+  for (int k = 0; k < 4; ++k)
+    worst = std::max(worst, std::abs(sign * gpu[k] - cpu[k]));
+  return worst;
+}
+
+/// The spins' agreement. A spin is a difference quotient, 2 (q_after -
+/// q_before) / h in the small, so poses that differ between the engines by
+/// dq per step's worth of rounding give spins differing by 2 dq / h: position
+/// differences of about 1e-6 on elements of size 0.1 turn them by 1e-5 rad,
+/// so 2e-5 / h; the relative part covers the rate's own rounding.
+constexpr double PoseRounding = 1e-5, SpinRelative = 1e-3;
+
+/**
+ * Poses, spins and SpinVorticityRatio of the two engines after a step that
+ * ended at `t` with size h: within 1e-3 per quaternion component, and
+ * 2 PoseRounding / h + SpinRelative * |spin| (the norm of the difference).
+ * The ratio 2 spin . curl / |curl|^2 amplifies a spin difference by at most
+ * 2 / |curl| (clamping never amplifies it), so its bar is the spin's times
+ * 2 / |curl| at the element's CPU centre, plus 1e-4; elements within 1% of
+ * the meter's floor (|curl| h = MinVorticityStep, where the reading jumps to
+ * 0) are left out.
+ */
+void comparePoses(
+  const bp::Engine& cpu, const bp::GpuEngine& gpu, const bp::VectorField& field, double t, double h)
+{
+  std::vector<float> poses, spins;
+  gpu.readPoses(&poses, &spins);
+  const std::size_t E = cpu.elementCount(), n = cpu.particlesPerElement();
+  ASSERT_EQ(poses.size(), 4 * E);
+  ASSERT_EQ(spins.size(), 4 * E);
+  double worstPose = 0.0, worstSpin = 0.0, worstRatio = 0.0, largestSpin = 0.0;
+  double spinShare = 0.0, ratioShare = 0.0; // the largest share of its bar
+  int spinsOver = 0, ratiosOver = 0, read = 0;
+  for (std::size_t e = 0; e < E; ++e)
+  {
+    worstPose = std::max(worstPose, quaternionDifference(&poses[4 * e], &cpu.poses()[4 * e]));
+    const float* a = &spins[4 * e];
+    const float* b = &cpu.spins()[4 * e];
+    const double spin = std::hypot(b[0], b[1], b[2]);
+    const double d = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    const double bar = 2 * PoseRounding / h + SpinRelative * spin;
+    largestSpin = std::max(largestSpin, spin);
+    worstSpin = std::max(worstSpin, d);
+    spinsOver += d > bar;
+    spinShare = std::max(spinShare, d / bar);
+    // The curl at the CPU's centre, at the step's end.
+    float c[3] = { 0, 0, 0 }, v[3], curl[3];
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k)
+        c[k] += cpu.positions()[3 * (e * n + i) + k] / float(n);
+    field.sampleWithCurl(c, field.timeWeight(t), v, curl);
+    const double vorticity = std::hypot(curl[0], curl[1], curl[2]);
+    const double step = vorticity * h / bp::MinVorticityStep;
+    if (step > 0.99 && step < 1.01)
+      continue;
+    const double dr = std::abs(a[3] - b[3]);
+    worstRatio = std::max(worstRatio, dr);
+    read += b[3] != 0.0f;
+    const double ratioBar = 2 * bar / std::max(vorticity, 1e-30) + 1e-4;
+    ratiosOver += dr > ratioBar;
+    ratioShare = std::max(ratioShare, dr / ratioBar);
+  }
+  EXPECT_LT(worstPose, 1e-3) << "poses differ by up to " << worstPose;
+  EXPECT_EQ(spinsOver, 0) << "spins differ by up to " << worstSpin;
+  EXPECT_EQ(ratiosOver, 0) << "spin-vorticity ratios differ by up to " << worstRatio;
+  std::printf("  poses: max |dq| %.3g; spins: max |d spin| %.3g (largest spin %.3g, %.0f%% of a "
+              "bar); ratios: max |d| %.3g (%d read, %.0f%% of a bar)\n",
+    worstPose, worstSpin, largestSpin, 100 * spinShare, worstRatio, read, 100 * ratioShare);
+}
+
+/// The trail ring of the two engines: every slot's time equal, generations
+/// equal, positions within `tolerance`.
+void compareTrails(const bp::Engine& cpu, const bp::GpuEngine& gpu, double tolerance)
+{
+  const int length = cpu.parameters().trailLength;
+  ASSERT_EQ(gpu.trailLength(), length);
+  const std::size_t E = cpu.elementCount(), values = cpu.positions().size();
+  double worst = 0.0;
+  int recorded = 0;
+  for (int k = 0; k < length; ++k)
+  {
+    const std::size_t slot = std::size_t(cpu.trailSlot(k));
+    EXPECT_EQ(gpu.trailTime(k), cpu.trailTimes()[slot]) << "slot " << k;
+    recorded += std::isfinite(cpu.trailTimes()[slot]);
+    std::vector<float> positions;
+    std::vector<std::uint32_t> generations;
+    gpu.readTrail(k, &positions, &generations);
+    ASSERT_EQ(generations.size(), E);
+    EXPECT_TRUE(std::equal(generations.begin(), generations.end(),
+      cpu.trailGenerations().begin() + std::ptrdiff_t(slot * E)))
+      << "generations of the " << k << "-th newest trail pose differ";
+    ASSERT_EQ(positions.size(), values);
+    for (std::size_t j = 0; j < values; ++j)
+      worst =
+        std::max(worst, double(std::abs(positions[j] - cpu.trailPositions()[slot * values + j])));
+  }
+  EXPECT_LT(worst, tolerance) << "trail positions differ by up to " << worst;
+  std::printf("  trail: %d of %d poses recorded, max |dx| %.3g\n", recorded, length, worst);
+}
 
 /// The slice with the points in x > 0.3, y < 0.2 outside the domain (NaN),
 /// as DomainMask.h makes them.
@@ -98,6 +211,14 @@ bp::FieldSlice withOutsideBlock(bp::FieldSlice s, const bp::GridGeometry& g)
   s.velocity = velocity;
   return s;
 }
+
+/// Releases an engine's GL objects when it goes out of scope (the shared
+/// context is current throughout the tests).
+struct Released
+{
+  bp::GpuEngine& gpu;
+  ~Released() { this->gpu.release(); }
+};
 
 /// Runs both engines `steps` steps and returns the largest position difference.
 void compare(const Case& c, int steps, bool pinSome = false)
@@ -162,6 +283,14 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.releaseStart = 0.3;
     p.releaseStop = 0.8;
   }
+  const double dt = 0.01;
+  if (c.poses)
+  {
+    p.trackPoses = true;
+    p.trailLength = 4;
+    p.trailStart = 0.02;
+    p.trailInterval = 3 * dt;
+  }
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -181,11 +310,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
   cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed));
   cpu.initialize(bp::serialRunner(), 0.0);
   bp::GpuEngine gpu;
+  const Released released{ gpu }; // also when an assertion returns early
   ASSERT_EQ(gpu.configure(shape, p), "");
   ASSERT_EQ(gpu.setField(field), "");
   gpu.initialize();
 
-  const double dt = 0.01;
   for (int s = 0; s < steps; ++s)
   {
     cpu.step(field, s * dt, dt, bp::serialRunner());
@@ -198,10 +327,9 @@ void compare(const Case& c, int steps, bool pinSome = false)
   gpu.read(&positions, &forces, &normals);
   std::vector<float> orientations, hidden;
   gpu.readElements(&lifetimes, &generations, &centers, &orientations, nullptr, &hidden);
-  gpu.release();
-
   // Tolerance: 1e-4 of the field's diagonal (issue 3).
   const double tolerance = 1e-4 * g.diagonal();
+
   double worst = 0.0, worstForce = 0.0, worstNormal = 0.0;
   ASSERT_EQ(positions.size(), cpu.positions().size());
   for (std::size_t k = 0; k < positions.size(); ++k)
@@ -256,6 +384,10 @@ void compare(const Case& c, int steps, bool pinSome = false)
   if (c.linking != bp::Linking::None)
     std::printf(
       "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
+  // Untracked, the poses stay as placed and the spins 0 on both engines.
+  comparePoses(cpu, gpu, field, steps * dt, dt);
+  if (c.poses)
+    compareTrails(cpu, gpu, tolerance);
 }
 } // namespace
 
@@ -399,6 +531,36 @@ TEST(GpuEngine, SuperSetsMatchTheCpuEngine)
   compare(points, 150, false);
 }
 
+TEST(GpuEngine, PosesSpinsAndTrailsMatchTheCpuEngine)
+{
+  // With trackPoses and a trail of 4 poses every 3 steps, over lifetimes of
+  // 0.3 to 1.2 (every element placed again several times). Shape matching
+  // fits its own rotation besides the pose's; the strips and the cross are
+  // flat (a moment of rank 2); hidden elements (a release window) are fitted
+  // too; a super set's elements and one-particle elements keep the identity.
+  Case solid{ bp::BuiltinShape::Strip16, 300, bp::Integrator::RK4, bp::Restoration::ShapeMatching,
+    false };
+  Case windowed{ bp::BuiltinShape::Paddlewheel, 300, bp::Integrator::RK2,
+    bp::Restoration::ShapeMatching, true };
+  windowed.window = true;
+  Case flat{ bp::BuiltinShape::Strip8, 300, bp::Integrator::Euler, bp::Restoration::GaussSeidel,
+    true };
+  Case springs{ bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    true };
+  Case tube{ bp::BuiltinShape::Strip4, 300, bp::Integrator::RK2, bp::Restoration::Jacobi, true };
+  tube.linking = bp::Linking::Tube;
+  Case points{ bp::BuiltinShape::Point, 400, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    false };
+  Case torus = points;
+  torus.linking = bp::Linking::Torus;
+  for (Case c : { solid, windowed, flat, springs, tube, points, torus })
+  {
+    SCOPED_TRACE(bp::builtinTemplate(c.shape).name);
+    c.poses = true;
+    compare(c, 200);
+  }
+}
+
 TEST(GpuEngine, GaussSeidelWithPinnedParticles)
 {
   compare({ bp::BuiltinShape::Fish, 300, bp::Integrator::RK4, bp::Restoration::GaussSeidel, true },
@@ -494,6 +656,49 @@ TEST(GpuEngine, RestoreTakesBackAShortStep)
   EXPECT_LT(worst, 1e-4 * s.g.diagonal());
   for (std::size_t e = 0; e < lifetimes.size(); ++e)
     EXPECT_NEAR(lifetimes[e], cpu.lifetimes()[e], 1e-5);
+}
+
+TEST(GpuEngine, RestoreTakesBackPosesSpinsAndTrailRecords)
+{
+  // A short step from a time on the trail's interval records a pose: taken
+  // back, the trail must be as before it (the slot it overwrote, the times),
+  // not hold a pose at the shown state's own time. Compared right after
+  // each restoreState(), before the next step could record over it; the
+  // steps from 0.04 and 0.18 record, the ring's empty slot and then its
+  // oldest pose.
+  ASSERT_NE(context(), nullptr);
+  UnsteadySystem s;
+  s.shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  s.p.trackPoses = true;
+  s.p.trailLength = 3;
+  s.p.trailInterval = 0.02;
+  bp::Engine cpu;
+  bp::GpuEngine gpu;
+  const Released released{ gpu };
+  s.start(cpu, gpu);
+  const double dt = 0.01;
+  for (int k = 0; k < 60; ++k)
+  {
+    cpu.step(s.field, k * dt, dt, bp::serialRunner());
+    gpu.step(k * dt, dt);
+    if (k % 7 == 3)
+    {
+      SCOPED_TRACE(k);
+      gpu.saveState();
+      gpu.step((k + 1) * dt, 0.3 * dt);
+      gpu.restoreState();
+      // The pose pass ran last before the save: its per-element targets
+      // must not crop the copy of the particle texture.
+      std::vector<float> positions;
+      gpu.read(&positions, nullptr, nullptr);
+      double worst = 0.0;
+      for (std::size_t j = 0; j < positions.size(); ++j)
+        worst = std::max(worst, double(std::abs(positions[j] - cpu.positions()[j])));
+      EXPECT_LT(worst, 1e-4 * s.g.diagonal()) << "positions differ by up to " << worst;
+      comparePoses(cpu, gpu, s.field, (k + 1) * dt, dt);
+      compareTrails(cpu, gpu, 1e-4 * s.g.diagonal());
+    }
+  }
 }
 
 TEST(GpuEngine, FieldSamplesMatchTheCpuOutputArrays)
@@ -620,6 +825,10 @@ struct Readback
 {
   std::vector<float> positions, forces, normals;
   std::vector<float> lifetimes, generations, centers, orientations, resetFlags;
+  std::vector<float> poses, spins;
+  std::vector<float> trailPositions;           ///< every slot's, newest first
+  std::vector<std::uint32_t> trailGenerations; ///< every slot's, newest first
+  std::vector<double> trailTimes;              ///< newest first
 
   explicit Readback(bp::GpuEngine& gpu)
   {
@@ -627,6 +836,16 @@ struct Readback
     gpu.read(&this->positions, &this->forces, &this->normals);
     gpu.readElements(
       &this->lifetimes, &this->generations, &this->centers, &this->orientations, &this->resetFlags);
+    gpu.readPoses(&this->poses, &this->spins);
+    for (int k = 0; k < gpu.trailLength(); ++k)
+    {
+      std::vector<float> x;
+      std::vector<std::uint32_t> g;
+      gpu.readTrail(k, &x, &g);
+      this->trailPositions.insert(this->trailPositions.end(), x.begin(), x.end());
+      this->trailGenerations.insert(this->trailGenerations.end(), g.begin(), g.end());
+      this->trailTimes.push_back(gpu.trailTime(k));
+    }
   }
 };
 
@@ -642,9 +861,24 @@ void expectSameBits(const Readback& a, const Readback& b)
     { "forces", &Readback::forces }, { "normals", &Readback::normals },
     { "lifetimes", &Readback::lifetimes }, { "generations", &Readback::generations },
     { "centers", &Readback::centers }, { "orientations", &Readback::orientations },
-    { "reset flags", &Readback::resetFlags } };
+    { "reset flags", &Readback::resetFlags }, { "poses", &Readback::poses },
+    { "spins", &Readback::spins }, { "trail positions", &Readback::trailPositions } };
   for (const auto& array : arrays)
     EXPECT_TRUE(sameBits(a.*array.second, b.*array.second)) << array.first << " differ";
+  EXPECT_EQ(a.trailGenerations, b.trailGenerations);
+  EXPECT_EQ(a.trailTimes, b.trailTimes);
+}
+
+/// A system whose poses, spins and trail change too (every third step a
+/// trail pose, so the short steps from 0.06 and 0.36 record one, taken back).
+UnsteadySystem tracked()
+{
+  UnsteadySystem s;
+  s.p.restoration = bp::Restoration::ShapeMatching; // orientations change too
+  s.p.trackPoses = true;
+  s.p.trailLength = 3;
+  s.p.trailInterval = 0.03;
+  return s;
 }
 
 /// A trace's steps along the schedule, and now and then a short step shown
@@ -679,8 +913,7 @@ void trace(bp::Stepper& stepper, const UnsteadySystem& s)
 TEST(GpuStepper, GivesTheBitsOfTheEngineDrivenDirectly)
 {
   ASSERT_NE(context(), nullptr);
-  UnsteadySystem s;
-  s.p.restoration = bp::Restoration::ShapeMatching; // orientations change too
+  const UnsteadySystem s = tracked();
   bp::GpuEngine direct;
   ASSERT_EQ(direct.configure(s.shape, s.p), "");
   ASSERT_EQ(direct.setField(s.field), "");
@@ -702,7 +935,7 @@ TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
   // What the renderer does: the tracer records into a queue, the renderer
   // applies each call to its own stepper in its GL context.
   ASSERT_NE(context(), nullptr);
-  UnsteadySystem s;
+  const UnsteadySystem s = tracked();
   bp::GpuStepper direct;
   trace(direct, s);
   const Readback expected(direct.engine());

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -62,6 +64,9 @@ public:
     this->Gpu->engine().read(&p, nullptr, nullptr);
     return p;
   }
+  /// Engine::poses() and Engine::spins(): 4 floats per element.
+  std::vector<float> poses() const { return this->elementQuantity(true); }
+  std::vector<float> spins() const { return this->elementQuantity(false); }
   std::vector<float> flags() const
   {
     if (this->Cpu)
@@ -73,6 +78,15 @@ public:
   }
 
 private:
+  std::vector<float> elementQuantity(bool poses) const
+  {
+    if (this->Cpu)
+      return poses ? this->Cpu->engine().poses() : this->Cpu->engine().spins();
+    std::vector<float> q;
+    this->Gpu->engine().readPoses(poses ? &q : nullptr, poses ? nullptr : &q);
+    return q;
+  }
+
   std::unique_ptr<bp::Stepper> Stepper;
   bp::CpuStepper* Cpu = nullptr; // the stepper, when it is this kind
   bp::GpuStepper* Gpu = nullptr;
@@ -120,6 +134,29 @@ double unwrap(double delta)
   while (delta < -Pi)
     delta += 2 * Pi;
   return delta;
+}
+
+/// The mean of element e's n particles.
+std::array<float, 3> centerOf(const std::vector<float>& x, std::size_t e, std::size_t n)
+{
+  std::array<float, 3> c = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k)
+      c[std::size_t(k)] += x[3 * (e * n + i) + std::size_t(k)] / float(n);
+  return c;
+}
+
+/// The rotation (x, y, z, w) by `angle` about z after `q`.
+std::array<double, 4> turnedAboutZ(const float* q, double angle)
+{
+  const double s = std::sin(0.5 * angle), c = std::cos(0.5 * angle);
+  return { c * q[0] - s * q[1], c * q[1] + s * q[0], c * q[2] + s * q[3], c * q[3] - s * q[2] };
+}
+
+/// 1 - |q . r|: 0 for the same rotation (q and -q are one).
+double rotationDistance(const float* q, const std::array<double, 4>& r)
+{
+  return 1.0 - std::abs(q[0] * r[0] + q[1] * r[1] + q[2] * r[2] + q[3] * r[3]);
 }
 
 class Physics : public ::testing::TestWithParam<bool>
@@ -190,6 +227,7 @@ TEST_P(Physics, ShearLayerPaddlewheelsTurnAtHalfTheVorticity)
     p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
     p.restoration = bp::Restoration::ShapeMatching;
     p.integrator = bp::Integrator::RK4;
+    p.trackPoses = true;
     System system(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Paddlewheel), p, field);
     const int steps = 100;
     const double dt = 0.01;
@@ -217,7 +255,105 @@ TEST_P(Physics, ShearLayerPaddlewheelsTurnAtHalfTheVorticity)
       GetParam() ? "GPU" : "CPU", level, mean, halfVorticity);
     EXPECT_GT(mean * halfVorticity, 0.0) << "turns the wrong way at z = " << level;
     EXPECT_NEAR(mean, halfVorticity, 0.1 * std::abs(halfVorticity)) << "at z = " << level;
+    // The pose fit's spin over the last step is half the vorticity vector
+    // (the field's curl at the centre, about +y), and the meter reads 1.
+    const std::vector<float> spins = system.spins();
+    double worstSpin = 0.0, lowRatio = 2.0, highRatio = -2.0;
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    {
+      const std::array<float, 3> c = centerOf(x, e, 8);
+      float v[3], curl[3];
+      field.sampleWithCurl(c.data(), 0.0f, v, curl);
+      const float* w = &spins[4 * e];
+      const double off =
+        std::hypot(w[0] - 0.5 * curl[0], w[1] - 0.5 * curl[1], w[2] - 0.5 * curl[2]);
+      worstSpin = std::max(worstSpin, off / (0.5 * std::hypot(curl[0], curl[1], curl[2])));
+      lowRatio = std::min(lowRatio, double(w[3]));
+      highRatio = std::max(highRatio, double(w[3]));
+    }
+    std::printf("  spins within %.2f%% of half the curl; SpinVorticityRatio in [%.4f, %.4f]\n",
+      100 * worstSpin, lowRatio, highRatio);
+    EXPECT_LT(worstSpin, 0.1) << "at z = " << level;
+    EXPECT_GE(lowRatio, 0.9) << "at z = " << level;
+    EXPECT_LE(highRatio, 1.1) << "at z = " << level;
   }
+}
+
+// Solid-body rotation at unit rate about z turns every element, however it
+// lies, at the spin (0, 0, 1), half the vorticity (0, 0, 2): the vorticity
+// meter reads 1, and the pose is the placed one turned by the time elapsed.
+TEST_P(Physics, SolidBodyRotationSpinsEveryElementAtTheFieldsRate)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
+  // A flat element held by springs, and a solid one by shape matching.
+  for (auto shape : { bp::BuiltinShape::Cross, bp::BuiltinShape::Paddlewheel })
+  {
+    const bp::ElementTemplate element = bp::builtinTemplate(shape);
+    SCOPED_TRACE(element.name);
+    bp::Parameters p = placed(40, 0.25f, { -0.5f, -0.5f, -0.5f }, { 0.5f, 0.5f, 0.5f });
+    p.integrator = bp::Integrator::RK4; // randomly oriented
+    p.trackPoses = true;
+    if (shape == bp::BuiltinShape::Paddlewheel)
+      p.restoration = bp::Restoration::ShapeMatching;
+    System system(GetParam(), element, p, field);
+    const std::vector<float> start = system.poses();
+    const int steps = 100;
+    const double dt = 2 * Pi / 400;
+    double worstSpin = 0.0, worstRatio = 0.0;
+    for (int s = 0; s < steps; ++s)
+    {
+      system.step(s * dt, dt);
+      if ((s + 1) % 10)
+        continue;
+      const std::vector<float> spins = system.spins();
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      {
+        const float* w = &spins[4 * e];
+        worstSpin = std::max(worstSpin, std::hypot(w[0], w[1], w[2] - 1.0));
+        worstRatio = std::max(worstRatio, std::abs(w[3] - 1.0));
+      }
+    }
+    const std::vector<float> poses = system.poses();
+    double worstPose = 0.0;
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      worstPose = std::max(
+        worstPose, rotationDistance(&poses[4 * e], turnedAboutZ(&start[4 * e], steps * dt)));
+    std::printf("%s %s: spins within %.2e of (0, 0, 1), ratios within %.2e of 1, poses within "
+                "%.2e\n",
+      GetParam() ? "GPU" : "CPU", element.name.c_str(), worstSpin, worstRatio, worstPose);
+    EXPECT_LE(worstSpin, 0.02);
+    EXPECT_LE(worstRatio, 0.02);
+    EXPECT_LT(worstPose, 1e-4);
+  }
+}
+
+// An element of one particle has no orientation: its pose stays the identity
+// and its spin 0, however it was placed (random orientations) and replaced.
+TEST_P(Physics, OneParticleElementsHaveNoPoseOrSpin)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ABC, { 17, 17, 17 }, { -1, 1, -1, 1, -1, 1 });
+  bp::Parameters p = placed(50, 0.2f, { -0.5f, -0.5f, -0.5f }, { 0.5f, 0.5f, 0.5f });
+  p.lifetimeMin = 0.05f; // placed again every few steps
+  p.lifetimeMax = 0.2f;
+  p.trackPoses = true;
+  System system(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Point), p, field);
+  int others = 0;
+  for (int s = 0; s <= 40; ++s)
+  {
+    if (s > 0)
+      system.step((s - 1) * 0.02, 0.02);
+    const std::vector<float> poses = system.poses(), spins = system.spins();
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    {
+      const float* q = &poses[4 * e];
+      const float* w = &spins[4 * e];
+      others += !(q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 1);
+      others += !(w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0);
+    }
+  }
+  EXPECT_EQ(others, 0) << "poses other than the identity or spins other than 0";
 }
 
 // Vertical shear (thesis Fig. 4.4): strips lying in horizontal planes ride the
