@@ -6,7 +6,11 @@ namespace bp
 
 std::string GpuStepper::configure(const ElementTemplate& shape, const Parameters& parameters)
 {
-  return this->Gpu.configure(shape, parameters);
+  // A display colours by the pose arrays whatever the tracer's Output
+  // Arrays hold: the GPU engine fits poses always (one pass per element).
+  Parameters p = parameters;
+  p.trackPoses = true;
+  return this->Gpu.configure(shape, p);
 }
 
 std::string GpuStepper::setField(const VectorField& field)

@@ -23,6 +23,7 @@ namespace bp
 class GpuStepper : public Stepper
 {
 public:
+  /// GpuEngine::configure() with Parameters::trackPoses on.
   std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
   std::string setField(const VectorField& field) override;
   void initialize(double startTime) override;
