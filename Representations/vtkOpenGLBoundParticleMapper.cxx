@@ -5,6 +5,7 @@
 #include "GpuEngine.h"
 #include "GpuStepper.h"
 #include "OutputArrays.h"
+#include "SuperSet.h"
 #include "WorkQueue.h"
 
 #include "vtkActor.h"
@@ -18,6 +19,7 @@
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -110,8 +112,11 @@ constexpr GLenum GLStateGuard::Capabilities[5];
 
 /// The template as VTK polydata: its triangles (or springs as lines, or the
 /// lone particle as a vertex) over n points, so VTK builds one index buffer
-/// whose indices are template particle indices.
-vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, float size)
+/// whose indices are template particle indices. With `links`, a template
+/// without lines gets one stand-in line cell, so that VTK also builds its
+/// line shader, which draws the super set's links; the cell itself is never
+/// drawn.
+vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, float size, bool links)
 {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -152,7 +157,39 @@ vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, floa
     }
     mesh->SetVerts(cells);
   }
+  if (links && mesh->GetNumberOfLines() == 0)
+  {
+    vtkNew<vtkCellArray> standIn;
+    const vtkIdType ids[2] = { 0, 0 };
+    standIn->InsertNextCell(2, ids);
+    mesh->SetLines(standIn);
+  }
   return mesh;
+}
+
+/// The links of a super set as the CPU output has them (TracerOutput.cxx's
+/// link cells): for each element in order, its +u and then its +v link, each
+/// link once, as pairs of element indices.
+std::vector<int> linkPairs(const bp::Parameters& p)
+{
+  const bp::LinkTable table =
+    bp::makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax);
+  std::vector<int> pairs;
+  pairs.reserve(2 * table.linkCount());
+  const std::size_t elements = table.sites.size() / 3;
+  for (std::size_t e = 0; e < elements; ++e)
+  {
+    for (int d : { 0, 2 }) // +u and +v
+    {
+      const std::int32_t f = table.neighbours[bp::LinkDirections * e + d];
+      if (f >= 0)
+      {
+        pairs.push_back(int(e));
+        pairs.push_back(int(f));
+      }
+    }
+  }
+  return pairs;
 }
 } // namespace
 
@@ -176,7 +213,20 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   double ColorTableRange[2] = { 0, 1 };
   static constexpr int ColorTableSize = 256;
 
-  int Units[5] = { -1, -1, -1, -1, -1 }; // texture units of the engine's textures while drawing
+  /// A super set's links, as pairs of element indices, and their texture
+  /// (RG32I, LinksPerRow a row); made once per configuration.
+  std::vector<int> LinkPairs;
+  bool LinksUploaded = false;
+  vtkNew<vtkTextureObject> LinkTable;
+  int LinksPerRow = 1;
+  /// The template's own cells are lines (springs), not a stand-in for the links.
+  bool TemplateLines = false;
+  /// Binds no vertex arrays: the link draw's vertex IDs go beyond the template's
+  /// vertex buffer, which its shader does not read anyway.
+  vtkNew<vtkOpenGLVertexArrayObject> LinkVAO;
+
+  static constexpr int TextureCount = 6;
+  int Units[TextureCount] = { -1, -1, -1, -1, -1, -1 }; // units of the textures while drawing
 };
 
 vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
@@ -245,6 +295,17 @@ double* vtkOpenGLBoundParticleMapper::GetBounds()
   return this->Bounds;
 }
 
+bool vtkOpenGLBoundParticleMapper::HasTranslucentPolygonalGeometry()
+{
+  if (!this->ScalarVisibility || this->Internals->ScalarMode == bp::ColorSource::Solid)
+  {
+    return false;
+  }
+  vtkScalarsToColors* lut = this->GetLookupTable();
+  lut->Build();
+  return lut->IsOpaque() == 0;
+}
+
 void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& I = *this->Internals;
@@ -296,7 +357,11 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
       else if (configure)
       {
         I.Configured = true;
-        this->SetInputData(templateMesh(*call.shape, call.parameters.elementSize));
+        I.LinkPairs = linkPairs(call.parameters);
+        I.LinksUploaded = false;
+        I.TemplateLines = call.shape->triangles.empty() && !call.shape->springs.empty();
+        this->SetInputData(
+          templateMesh(*call.shape, call.parameters.elementSize, !I.LinkPairs.empty()));
       }
     }
     if (I.Configured && !I.Failed)
@@ -341,14 +406,30 @@ void vtkOpenGLBoundParticleMapper::ReplaceShaderValues(
 {
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
-  // A tag of our own after VTK's colour code, so ours runs after it.
+  // Tags of our own after VTK's colour code and its gl_Position, so ours runs after them.
   vtkShaderProgram::Substitute(fs, "//VTK::Color::Impl", "//VTK::Color::Impl\n//BP::Color::Impl");
   vtkShaderProgram::Substitute(fs, "//VTK::Color::Dec", "//VTK::Color::Dec\n//BP::Color::Dec");
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::PositionVC::Impl", "//VTK::PositionVC::Impl\n//BP::PositionVC::Impl");
+  // With a geometry shader (wide lines where the GL has none of its own) the
+  // fragment shader's inputs are renamed to come from it (VSOutput becomes
+  // GSOutput): it must pass the scalar on, as VTK's colour code does.
+  std::string gs = shaders[vtkShader::Geometry]->GetSource();
+  vtkShaderProgram::Substitute(gs, "//VTK::Color::Impl", "//VTK::Color::Impl\n//BP::Color::Impl");
+  vtkShaderProgram::Substitute(gs, "//VTK::Color::Dec", "//VTK::Color::Dec\n//BP::Color::Dec");
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Geometry]->SetSource(gs);
   shaders[vtkShader::Fragment]->SetSource(fs);
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
   vs = shaders[vtkShader::Vertex]->GetSource();
+  gs = shaders[vtkShader::Geometry]->GetSource();
   fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(
+    gs, "//BP::Color::Dec", "in float bpScalarVSOutput[];\nout float bpScalarGSOutput;", false);
+  vtkShaderProgram::Substitute(
+    gs, "//BP::Color::Impl", "bpScalarGSOutput = bpScalarVSOutput[i];", false);
+  shaders[vtkShader::Geometry]->SetSource(gs);
   // The colour modes' numbers, from the table of output arrays.
   const std::string colorModes = bp::colorSourceDefinitions();
   // Every use of the vertex and normal attributes reads the fetched values;
@@ -360,6 +441,7 @@ void vtkOpenGLBoundParticleMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(vs, "in vec3 bpNormalMC;", "in vec3 normalMC;", false);
   vtkShaderProgram::Substitute(
     vs, "void main()\n{", std::string("void main()\n{\n") + bpShaderDrawVSImpl, false);
+  vtkShaderProgram::Substitute(vs, "//BP::PositionVC::Impl", "  bpClipHidden();", false);
   vtkShaderProgram::Substitute(fs, "//BP::Color::Dec", colorModes + bpShaderDrawFSDec, false);
   vtkShaderProgram::Substitute(fs, "//BP::Color::Impl", bpShaderDrawFSImpl, false);
   shaders[vtkShader::Vertex]->SetSource(vs);
@@ -372,11 +454,16 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkInternals& I = *this->Internals;
   vtkShaderProgram* program = cellBO.Program;
-  const char* samplers[5] = { "bpPositions", "bpNormals", "bpSamples", "bpElements", "bpCenters" };
-  for (int k = 0; k < 5; ++k)
+  // Every sampler on a unit of its own, bpLinks included when nothing is
+  // linked: samplers of different types on one unit make a draw fail.
+  const char* samplers[vtkInternals::TextureCount] = { "bpPositions", "bpNormals", "bpSamples",
+    "bpElements", "bpCenters", "bpLinks" };
+  for (int k = 0; k < vtkInternals::TextureCount; ++k)
   {
     program->SetUniformi(samplers[k], I.Units[k]);
   }
+  program->SetUniformi("bpLinksPerRow", I.LinksPerRow);
+  program->SetUniformi("bpDrawLinks", 0);
   program->SetUniform2i("bpElementGrid", I.Inputs.elementGrid);
   program->SetUniformi("bpBlocksPerRow", I.Inputs.blocksPerRow);
   const auto& d = I.Queue->draw;
@@ -427,11 +514,41 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   }
   I.ColorTable->Activate();
 
+  // A super set's links, once per configuration: nothing about them changes
+  // while the engine steps.
+  if (!I.LinkPairs.empty() && (!I.LinksUploaded || !I.LinkTable->GetHandle()))
+  {
+    I.LinksUploaded = true;
+    const int links = int(I.LinkPairs.size() / 2);
+    const int maxSize = I.Queue->maxTextureSize > 0 ? I.Queue->maxTextureSize : 4096;
+    I.LinksPerRow = std::min(links, maxSize);
+    const int rows = (links + I.LinksPerRow - 1) / I.LinksPerRow;
+    if (rows > maxSize)
+    {
+      I.LinkPairs.clear();
+      vtkWarningMacro(<< links
+                      << " links are too many for one texture; the display draws the "
+                         "elements without their links.");
+    }
+    else
+    {
+      std::vector<int> texels(std::size_t(2) * I.LinksPerRow * rows, 0);
+      std::copy(I.LinkPairs.begin(), I.LinkPairs.end(), texels.begin());
+      I.LinkTable->SetContext(window);
+      I.LinkTable->SetInternalFormat(GL_RG32I);
+      I.LinkTable->SetFormat(GL_RG_INTEGER);
+      I.LinkTable->Create2DFromRaw(
+        unsigned(I.LinksPerRow), unsigned(rows), 2, VTK_INT, texels.data());
+    }
+  }
+  const GLsizei linkCount = GLsizei(I.LinkPairs.size() / 2);
+
   // The engine's textures on units VTK hands out.
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  const unsigned textures[5] = { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples,
-    I.Inputs.elements, I.Inputs.centers };
-  for (int k = 0; k < 5; ++k)
+  const unsigned textures[vtkInternals::TextureCount] = { I.Inputs.positions, I.Inputs.normals,
+    I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
+    linkCount > 0 ? I.LinkTable->GetHandle() : 0u };
+  for (int k = 0; k < vtkInternals::TextureCount; ++k)
   {
     I.Units[k] = units->Allocate();
     state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[k]));
@@ -444,7 +561,10 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
     this->DrawingVertices = false;
     this->DrawingSelection = false;
     vtkOpenGLHelper& helper = this->Primitives[p];
-    if (!helper.IBO->IndexCount)
+    // The line shader also draws the links; a stand-in line cell is not drawn.
+    const bool elementCells = p != PrimitiveLines || I.TemplateLines;
+    const bool linkCells = p == PrimitiveLines && linkCount > 0;
+    if (!helper.IBO->IndexCount || !(elementCells || linkCells))
     {
       continue;
     }
@@ -463,13 +583,26 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
     {
       state->vtkglLineWidth(act->GetProperty()->GetLineWidth());
     }
-    helper.IBO->Bind();
-    glDrawElementsInstanced(mode, GLsizei(helper.IBO->IndexCount), GL_UNSIGNED_INT, nullptr,
-      GLsizei(I.Inputs.elementCount));
-    helper.IBO->Release();
+    if (elementCells)
+    {
+      helper.IBO->Bind();
+      glDrawElementsInstanced(mode, GLsizei(helper.IBO->IndexCount), GL_UNSIGNED_INT, nullptr,
+        GLsizei(I.Inputs.elementCount));
+      helper.IBO->Release();
+    }
+    if (linkCells)
+    {
+      // One instance per link, two vertices per template particle: the
+      // vertex shader fetches both ends from the state textures.
+      helper.Program->SetUniformi("bpDrawLinks", 1);
+      I.LinkVAO->Bind();
+      glDrawArraysInstanced(mode, 0, 2 * I.Inputs.particlesPerElement, linkCount);
+      helper.VAO->Bind(); // as VTK left it: RenderPieceFinish releases it
+      helper.Program->SetUniformi("bpDrawLinks", 0);
+    }
   }
 
-  for (int k = 0; k < 5; ++k)
+  for (int k = 0; k < vtkInternals::TextureCount; ++k)
   {
     state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[k]));
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -500,6 +633,9 @@ void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   I.ColorTable->ReleaseGraphicsResources(window);
+  I.LinkTable->ReleaseGraphicsResources(window);
+  I.LinksUploaded = false;
+  I.LinkVAO->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

@@ -13,6 +13,14 @@
  * in the Surface representation, with the vertex position, normal and colour
  * scalar fetched from the engine's textures. Nothing per particle is uploaded.
  *
+ * A super set's links are drawn as the CPU output has them, a line from
+ * particle i of an element to particle i of each lattice neighbour: a second
+ * instanced draw with VTK's line shader, one instance per link, whose vertices
+ * fetch both ends from the same textures. The pairs of linked elements are a
+ * texture made once per configuration. An element placed outside the release
+ * window is not drawn, nor are its links: their vertices are moved outside
+ * the clip volume, so that depth peeling never sees their fragments.
+ *
  * Colouring by a scalar goes through the mapper's lookup table (its range
  * and colours, sampled into a table texture): any array of the tracer's
  * output that has a colour source in Core/OutputArrays.h (every one but
@@ -61,6 +69,15 @@ public:
   /// The field's bounds: elements never leave them for long.
   using vtkOpenGLPolyDataMapper::GetBounds;
   double* GetBounds() override;
+
+  /**
+   * Whether the colour map makes the elements translucent (ParaView's opacity
+   * mapping), so that the actor is drawn in the translucent pass with depth
+   * peeling. VTK decides from the input's scalars, and this mapper's input,
+   * the template, has none: the decision is the lookup table's, as VTK makes
+   * it for the CPU output's scalars.
+   */
+  bool HasTranslucentPolygonalGeometry() override;
 
   /// Runs the queued engine work, then draws.
   void Render(vtkRenderer* ren, vtkActor* act) override;

@@ -1,7 +1,6 @@
 // Drawing: the scalar colouring through the display's lookup table, sampled
 // from a table texture as VTK does when it interpolates scalars before mapping.
 in float bpScalarVSOutput;
-in float bpHiddenVSOutput; // an element placed outside the release window is not drawn
 uniform int bpScalarMode;
 uniform sampler2D bpColorTable;
 uniform float bpColorTableSize;

@@ -1,7 +1,3 @@
-  if (bpHiddenVSOutput > 0.5)
-  {
-    discard;
-  }
   if (bpScalarMode != BP_COLOR_SOLID)
   {
     float bpU = clamp(bpScalarVSOutput, 0.0, 1.0);

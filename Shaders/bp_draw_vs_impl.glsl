@@ -1,12 +1,26 @@
-  // Bound particles: this vertex is particle gl_VertexID of element gl_InstanceID.
+  // Bound particles: which particle of which element this vertex is.
   {
-    ivec2 bpTexel = bpDrawTexel(gl_InstanceID, gl_VertexID);
+    int bpElement = gl_InstanceID;
+    int bpParticle = gl_VertexID;
+    if (bpDrawLinks != 0)
+    {
+      // Link gl_InstanceID joins particle i of its two elements, as the CPU
+      // output's line cell does; drawn only when both elements are.
+      ivec2 bpLink = texelFetch(bpLinks,
+        ivec2(gl_InstanceID % bpLinksPerRow, gl_InstanceID / bpLinksPerRow), 0).xy;
+      bpParticle = gl_VertexID / 2;
+      bpElement = gl_VertexID % 2 == 0 ? bpLink.x : bpLink.y;
+      bpHidden = bpHiddenElement(bpLink.x) || bpHiddenElement(bpLink.y);
+    }
+    else
+    {
+      bpHidden = bpHiddenElement(bpElement);
+    }
+    ivec2 bpTexel = bpDrawTexel(bpElement, bpParticle);
     vec4 bpState = texelFetch(bpPositions, bpTexel, 0);
     bpVertexMC = vec4(bpState.xyz + bpOffset, 1.0);
     bpNormalMC = texelFetch(bpNormals, bpTexel, 0).xyz;
     float bpWidth = bpScalarRange.y - bpScalarRange.x;
-    float bpScalar = bpScalarOf(gl_InstanceID, gl_VertexID, bpTexel, bpState);
+    float bpScalar = bpScalarOf(bpElement, bpParticle, bpTexel, bpState);
     bpScalarVSOutput = bpWidth > 0.0 ? (bpScalar - bpScalarRange.x) / bpWidth : 0.5;
-    ivec2 bpElementTexel = ivec2(gl_InstanceID % bpElementGrid.x, gl_InstanceID / bpElementGrid.x);
-    bpHiddenVSOutput = texelFetch(bpCenters, bpElementTexel, 0).w;
   }

@@ -58,10 +58,10 @@ class CapturedMessages:
         return any(part in m for m in self.messages)
 
 
-def image_difference(path_a, path_b):
+def image_difference(path_a, path_b, threshold=32):
     """(mean absolute difference per channel, fraction of pixels that differ by
-    more than 32 in some channel) of two images of one size, or None when the
-    sizes differ."""
+    more than `threshold` in some channel) of two images of one size, or None
+    when the sizes differ."""
     from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy
@@ -80,7 +80,7 @@ def image_difference(path_a, path_b):
     if dims_a != dims_b:
         return None
     d = numpy.abs(a - b)
-    return float(d.mean()), float((d.max(axis=1) > 32).mean())
+    return float(d.mean()), float((d.max(axis=1) > threshold).mean())
 
 
 def covered_fraction(path):
