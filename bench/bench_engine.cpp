@@ -429,6 +429,41 @@ int main(int argc, char** argv)
       points * steps / engine / 1e6, points * steps / plain / 1e6, engine / plain);
     std::fflush(stdout);
   }
+  // What seeing rotation costs the CPU engine (issue 19): the pose fit of
+  // every element every step (trackPoses, the pose arrays ticked) and a trail
+  // of 8 poses recorded every 4 steps, against the plain step, measured in
+  // turn so the machine's noise falls on all three alike.
+  std::printf("\nStrip16, 2 threads, steady: seeing rotation against the plain step\n");
+  std::printf("%9s %16s %16s %16s\n", "elements", "plain steps/s", "poses steps/s",
+    "trail steps/s");
+  for (std::size_t elements : { std::size_t(4096), std::size_t(65536) })
+  {
+    const double dt = 0.5 * h / steady.maxSpeed();
+    const int steps = elements > 4096 ? 8 : 80;
+    auto rate = [&](bool poses, bool trail)
+    {
+      bp::Parameters p = parametersFor(steady, elements);
+      p.trackPoses = poses;
+      p.trailLength = trail ? 8 : 0;
+      p.trailInterval = 4 * dt;
+      return median(
+        [&]
+        {
+          bp::Engine e;
+          e.configure(bp::builtinTemplate(bp::BuiltinShape::Strip16), p);
+          const bp::RangeRunner run = bp::poolRunner(2);
+          e.initialize(run);
+          const auto start = Clock::now();
+          for (int s = 0; s < steps; ++s)
+            e.step(steady, s * dt, dt, run);
+          return seconds(start);
+        });
+    };
+    const double plain = rate(false, false), poses = rate(true, false), trail = rate(false, true);
+    std::printf("%9zu %16.1f %16.1f %16.1f\n", elements, steps / plain, steps / poses,
+      steps / trail);
+    std::fflush(stdout);
+  }
   std::printf("peak resident memory: %.1f MiB\n", peakRssKiB() / 1024.0);
   if (csv)
     std::fclose(csv);
