@@ -61,6 +61,11 @@ def placement_traces():
     line = Line(Point1=[-0.9, -0.8, -0.7], Point2=[0.9, 0.8, 0.7], Resolution=40)
     cases["seeded"] = (BoundParticleTracer(Input=hurricane, SeedSource=line, ElementShape="Cross",
                                            NumberOfElements=400, Seed=4), [0.5, 1.0])
+    # Spins and trails: each element's poses travel with it between pieces.
+    trails = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                                 Seed=6, Trails=1, TrailLength=3, TrailSpacing=2)
+    trails.OutputArrays = list(trails.OutputArrays) + ["ElementSpin"]
+    cases["trails"] = (trails, [0.5, 1.0])
     # A release window: hidden elements cross pieces and are released together.
     cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,
@@ -125,7 +130,10 @@ for name, (tracer, times) in all_traces().items():
         pd = data.GetPointData()
         element = vtk_to_numpy(pd.GetArray("ElementId")).astype(numpy.int64)
         particle = vtk_to_numpy(pd.GetArray("ParticleIndex")).astype(numpy.int64)
-        order = numpy.lexsort((particle, element))
+        # Trails repeat an element's particles once per pose, by Age.
+        age = pd.GetArray("Age")
+        age = vtk_to_numpy(age) if age is not None else numpy.zeros(len(element))
+        order = numpy.lexsort((particle, age, element))
         key = "%s_%d" % (name, k)
         result[key + "_points"] = vtk_to_numpy(data.GetPoints().GetData())[order].astype(float)
         result[key + "_element"] = element[order]
@@ -133,6 +141,9 @@ for name, (tracer, times) in all_traces().items():
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
         result[key + "_process"] = vtk_to_numpy(pd.GetArray("ProcessId"))[order].astype(int)
         result[key + "_cells"] = numpy.array([data.GetNumberOfCells()])
+        for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin")):
+            if pd.GetArray(name_in) is not None:
+                result[key + suffix] = vtk_to_numpy(pd.GetArray(name_in))[order].astype(float)
         per_process = data.GetFieldData().GetArray("ElementsPerProcess")
         if per_process is not None:
             result[key + "_per_process"] = vtk_to_numpy(per_process).astype(int)

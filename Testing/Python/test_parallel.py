@@ -200,6 +200,14 @@ def compare(reference, result, name, ranks):
                   (name, base, array, error, scale))
             bptest.check(error <= share * scale, "%s %s%s differ by %g" %
                          (name, base, array, error))
+        for array in ("_age", "_spin"):
+            if base + array in reference.files:
+                scale = max(float(abs(reference[base + array]).max()), 1e-9)
+                error = float(abs(result[base + array] - reference[base + array]).max())
+                print("%s %s%s: largest difference %.3g (scale %.3g)" %
+                      (name, base, array, error, scale))
+                bptest.check(error <= 1e-3 * scale, "%s %s%s differ by %g" %
+                             (name, base, array, error))
         process = result[base + "_process"]
         counts = numpy.bincount(process, minlength=ranks)
         print("%s %s: elements' particles per rank %s" % (name, base, counts.tolist()))
