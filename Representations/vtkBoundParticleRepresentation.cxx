@@ -2,6 +2,7 @@
 #include "vtkBoundParticleRepresentation.h"
 
 #include "BoundParticleWorkQueues.h"
+#include "OutputArrays.h"
 #include "WorkQueue.h"
 #include "vtkBoundParticleTracer.h"
 #include "vtkOpenGLBoundParticleMapper.h"
@@ -19,6 +20,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
@@ -312,6 +314,13 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {
+      // The GPU output's Age spans [0, the oldest trail pose's age]: the
+      // mapper knows from it that trails make the actor translucent before
+      // it runs the configuration queued for this frame.
+      vtkDataArray* age =
+        I.Cache->GetPointData()->GetArray(bp::outputArray(bp::OutputArrayId::Age).name);
+      I.GpuMapper->SetExpectedTrailSpan(
+        age && age->GetNumberOfTuples() > 0 ? age->GetRange(0)[1] : 0.0);
       I.Actor->SetMapper(I.GpuMapper);
     }
     else

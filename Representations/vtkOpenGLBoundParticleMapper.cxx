@@ -191,6 +191,42 @@ std::vector<int> linkPairs(const bp::Parameters& p)
   }
   return pairs;
 }
+
+/**
+ * For each template particle, the triangles it is a corner of, so the draw
+ * shader can compute a trail pose's normals from the pose's positions as
+ * bp::elementNormals does: row i holds the corners (in the triangle's own
+ * order, so the normal's sign is the mesh's) of each triangle with i among
+ * them, then (-1, -1, -1) where the row ends early. `width` is the longest
+ * row (1 for a template without triangles: its rows are all ends).
+ */
+std::vector<int> cornerTable(const bp::ElementTemplate& shape, int& width)
+{
+  const std::size_t n = shape.rest.size();
+  std::vector<std::vector<std::array<int, 3>>> rows(n);
+  for (const auto& t : shape.triangles)
+  {
+    const std::array<int, 3> corners = { int(t[0]), int(t[1]), int(t[2]) };
+    for (std::uint32_t i : t)
+    {
+      rows[i].push_back(corners);
+    }
+  }
+  width = 1;
+  for (const auto& row : rows)
+  {
+    width = std::max(width, int(row.size()));
+  }
+  std::vector<int> texels(std::size_t(4) * width * n, -1);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (std::size_t k = 0; k < rows[i].size(); ++k)
+    {
+      std::copy(rows[i][k].begin(), rows[i][k].end(), texels.begin() + 4 * (i * width + k));
+    }
+  }
+  return texels;
+}
 } // namespace
 
 struct vtkOpenGLBoundParticleMapper::vtkInternals
@@ -225,8 +261,38 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   /// vertex buffer, which its shader does not read anyway.
   vtkNew<vtkOpenGLVertexArrayObject> LinkVAO;
 
-  static constexpr int TextureCount = 6;
-  int Units[TextureCount] = { -1, -1, -1, -1, -1, -1 }; // units of the textures while drawing
+  /// Motion trails, from the configuration run: how many poses, how far apart
+  /// in time; TrailSpan is their product, the oldest pose's age.
+  int TrailLength = 0;
+  double TrailInterval = 0.0;
+  double TrailSpan = 0.0;
+  /// The span the display's input expects (SetExpectedTrailSpan): ahead of
+  /// the configuration run when the input changed.
+  double ExpectedTrailSpan = 0.0;
+  /// Per template particle, the triangles it is a corner of (cornerTable):
+  /// made once per configuration, uploaded as RGBA32I.
+  std::vector<int> CornerTexels;
+  int CornerWidth = 0; ///< texels a row; 0 when the table does not fit a texture
+  bool CornersUploaded = false;
+  vtkNew<vtkTextureObject> CornerTable;
+
+  /// The samplers' names, in the order of `Units` (Trail* are bound per slot).
+  enum Texture
+  {
+    Positions,
+    Normals,
+    Samples,
+    Elements,
+    Centers,
+    Links,
+    Poses,
+    Spins,
+    TrailPositions,
+    TrailElements,
+    Corners,
+    TextureCount
+  };
+  int Units[TextureCount] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }; // while drawing
 };
 
 vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
@@ -257,8 +323,10 @@ bool vtkOpenGLBoundParticleMapper::SetColorArray(const char* name, int component
   const bp::OutputArray* row = name && *name ? bp::findOutputArray(name) : nullptr;
   const bool known = !(name && *name) || (row && row->color != bp::ColorSource::Solid);
   const bp::ColorSource mode = row ? row->color : bp::ColorSource::Solid;
-  const int comp =
-    row && row->components == 3 && !row->colorsMagnitude && component >= 0 && component < 3
+  // A component of a vector source (Velocity, ElementSpin, ElementOrientation), or
+  // the magnitude; a one-component array's component is the array itself.
+  const int comp = row && row->components > 1 && !row->colorsMagnitude && component >= 0 &&
+      component < row->components
     ? component
     : -1;
   if (mode != I.ScalarMode || comp != I.Component)
@@ -295,7 +363,17 @@ double* vtkOpenGLBoundParticleMapper::GetBounds()
   return this->Bounds;
 }
 
-bool vtkOpenGLBoundParticleMapper::HasTranslucentPolygonalGeometry()
+void vtkOpenGLBoundParticleMapper::SetExpectedTrailSpan(double span)
+{
+  vtkInternals& I = *this->Internals;
+  if (I.ExpectedTrailSpan != span)
+  {
+    I.ExpectedTrailSpan = span;
+    this->Modified();
+  }
+}
+
+bool vtkOpenGLBoundParticleMapper::ColorMapIsTranslucent()
 {
   if (!this->ScalarVisibility || this->Internals->ScalarMode == bp::ColorSource::Solid)
   {
@@ -304,6 +382,16 @@ bool vtkOpenGLBoundParticleMapper::HasTranslucentPolygonalGeometry()
   vtkScalarsToColors* lut = this->GetLookupTable();
   lut->Build();
   return lut->IsOpaque() == 0;
+}
+
+bool vtkOpenGLBoundParticleMapper::HasTranslucentPolygonalGeometry()
+{
+  // Trails fade, by the colour map's opacity or by the display's own. The
+  // configuration queued for this frame has not run yet when VTK asks: the
+  // input's expectation counts as well (one translucent frame too many when
+  // trails are switched off, none too few when they are switched on).
+  const vtkInternals& I = *this->Internals;
+  return I.TrailSpan > 0.0 || I.ExpectedTrailSpan > 0.0 || this->ColorMapIsTranslucent();
 }
 
 void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
@@ -360,6 +448,12 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
         I.LinkPairs = linkPairs(call.parameters);
         I.LinksUploaded = false;
         I.TemplateLines = call.shape->triangles.empty() && !call.shape->springs.empty();
+        I.TrailLength = std::max(call.parameters.trailLength, 0);
+        I.TrailInterval = call.parameters.trailInterval;
+        I.TrailSpan = I.TrailLength * I.TrailInterval;
+        I.CornerTexels =
+          I.TrailLength > 0 ? cornerTable(*call.shape, I.CornerWidth) : std::vector<int>();
+        I.CornersUploaded = false;
         this->SetInputData(
           templateMesh(*call.shape, call.parameters.elementSize, !I.LinkPairs.empty()));
       }
@@ -387,6 +481,8 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
     GLStateGuard guard;
     I.Engine.stageSliceWithin(I.Queue->upcoming, StagingSecondsPerFrame);
   }
+  // Orientation and spin need nothing here: the display's engine fits the
+  // poses every step (GpuStepper turns Parameters::trackPoses on).
   if (I.ScalarMode == bp::ColorSource::Velocity || I.ScalarMode == bp::ColorSource::Vorticity)
   {
     if (I.SamplesSerial != I.Queue->draw.serial)
@@ -457,13 +553,19 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   // Every sampler on a unit of its own, bpLinks included when nothing is
   // linked: samplers of different types on one unit make a draw fail.
   const char* samplers[vtkInternals::TextureCount] = { "bpPositions", "bpNormals", "bpSamples",
-    "bpElements", "bpCenters", "bpLinks" };
+    "bpElements", "bpCenters", "bpLinks", "bpPoses", "bpSpins", "bpTrailPositions",
+    "bpTrailElements", "bpAdjacency" };
   for (int k = 0; k < vtkInternals::TextureCount; ++k)
   {
     program->SetUniformi(samplers[k], I.Units[k]);
   }
   program->SetUniformi("bpLinksPerRow", I.LinksPerRow);
   program->SetUniformi("bpDrawLinks", 0);
+  program->SetUniformi("bpAdjacencyWidth", I.CornerWidth);
+  // The elements themselves; the trail draws change these three per slot.
+  program->SetUniformi("bpTrail", 0);
+  program->SetUniformf("bpTrailAge", 0.0f);
+  program->SetUniformf("bpFade", 1.0f);
   program->SetUniform2i("bpElementGrid", I.Inputs.elementGrid);
   program->SetUniformi("bpBlocksPerRow", I.Inputs.blocksPerRow);
   const auto& d = I.Queue->draw;
@@ -543,11 +645,62 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   }
   const GLsizei linkCount = GLsizei(I.LinkPairs.size() / 2);
 
+  // The corner table for the trails' normals, once per configuration.
+  if (!I.CornerTexels.empty() && (!I.CornersUploaded || !I.CornerTable->GetHandle()))
+  {
+    I.CornersUploaded = true;
+    const int rows = int(I.CornerTexels.size() / (4 * std::size_t(I.CornerWidth)));
+    const int maxSize = I.Queue->maxTextureSize > 0 ? I.Queue->maxTextureSize : 4096;
+    if (rows > maxSize || I.CornerWidth > maxSize)
+    {
+      I.CornerTexels.clear();
+      I.CornerWidth = 0; // every trail normal then reads (0, 0, 1)
+      vtkWarningMacro(<< "The template's " << rows
+                      << " particles are too many for one texture; the display lights its "
+                         "trails with a fixed normal.");
+    }
+    else
+    {
+      I.CornerTable->SetContext(window);
+      I.CornerTable->SetInternalFormat(GL_RGBA32I);
+      I.CornerTable->SetFormat(GL_RGBA_INTEGER);
+      I.CornerTable->Create2DFromRaw(
+        unsigned(I.CornerWidth), unsigned(rows), 4, VTK_INT, I.CornerTexels.data());
+    }
+  }
+
+  // The trail's slots to draw, newest first: those recorded strictly before
+  // the time shown (a step shown and taken back leaves none ahead of it), as
+  // the CPU output's trailPoses(). Their opacity falls with age, by the
+  // colour map where it maps opacity (colouring by Age, say), otherwise by
+  // the display's own fade, 1 - age / (span + interval): the newest pose,
+  // one interval old, at L / (L + 1), the oldest at 1 / (L + 1).
+  struct TrailDraw
+  {
+    unsigned positions, elements;
+    float age, fade;
+  };
+  std::vector<TrailDraw> trailDraws;
+  const bool mapFades = this->ColorMapIsTranslucent();
+  const double fadeSpan = I.TrailSpan + I.TrailInterval;
+  for (const auto& slot : I.Inputs.trail)
+  {
+    const double time = I.Queue->draw.time;
+    if (slot.time < time && slot.positions && slot.elements)
+    {
+      const double age = time - slot.time;
+      const double fade = mapFades || !(fadeSpan > 0.0) ? 1.0 : 1.0 - age / fadeSpan;
+      trailDraws.push_back(
+        { slot.positions, slot.elements, float(age), float(std::min(std::max(fade, 0.0), 1.0)) });
+    }
+  }
+
   // The engine's textures on units VTK hands out.
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
   const unsigned textures[vtkInternals::TextureCount] = { I.Inputs.positions, I.Inputs.normals,
     I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
-    linkCount > 0 ? I.LinkTable->GetHandle() : 0u };
+    linkCount > 0 ? I.LinkTable->GetHandle() : 0u, I.Inputs.poses, I.Inputs.spins, 0u, 0u,
+    I.CornerWidth > 0 ? I.CornerTable->GetHandle() : 0u };
   for (int k = 0; k < vtkInternals::TextureCount; ++k)
   {
     I.Units[k] = units->Allocate();
@@ -588,6 +741,27 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
       helper.IBO->Bind();
       glDrawElementsInstanced(mode, GLsizei(helper.IBO->IndexCount), GL_UNSIGNED_INT, nullptr,
         GLsizei(I.Inputs.elementCount));
+      // Each trail pose shown: the same cells again, positions from the
+      // slot's copy of the particle texture (the engine's ring, nothing
+      // uploaded); elements of another generation there are clipped.
+      for (const TrailDraw& t : trailDraws)
+      {
+        state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[vtkInternals::TrailPositions]));
+        glBindTexture(GL_TEXTURE_2D, t.positions);
+        state->vtkglActiveTexture(GLenum(GL_TEXTURE0 + I.Units[vtkInternals::TrailElements]));
+        glBindTexture(GL_TEXTURE_2D, t.elements);
+        helper.Program->SetUniformi("bpTrail", 1);
+        helper.Program->SetUniformf("bpTrailAge", t.age);
+        helper.Program->SetUniformf("bpFade", t.fade);
+        glDrawElementsInstanced(mode, GLsizei(helper.IBO->IndexCount), GL_UNSIGNED_INT, nullptr,
+          GLsizei(I.Inputs.elementCount));
+      }
+      if (!trailDraws.empty())
+      {
+        helper.Program->SetUniformi("bpTrail", 0);
+        helper.Program->SetUniformf("bpTrailAge", 0.0f);
+        helper.Program->SetUniformf("bpFade", 1.0f);
+      }
       helper.IBO->Release();
     }
     if (linkCells)
@@ -635,6 +809,8 @@ void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
   I.ColorTable->ReleaseGraphicsResources(window);
   I.LinkTable->ReleaseGraphicsResources(window);
   I.LinksUploaded = false;
+  I.CornerTable->ReleaseGraphicsResources(window);
+  I.CornersUploaded = false;
   I.LinkVAO->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -644,4 +820,5 @@ void vtkOpenGLBoundParticleMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ScalarMode: " << int(this->Internals->ScalarMode) << "\n";
   os << indent << "Configured: " << this->Internals->Configured << "\n";
+  os << indent << "TrailSpan: " << this->Internals->TrailSpan << "\n";
 }

@@ -24,7 +24,18 @@
  * Colouring by a scalar goes through the mapper's lookup table (its range
  * and colours, sampled into a table texture): any array of the tracer's
  * output that has a colour source in Core/OutputArrays.h (every one but
- * Normals; Velocity by magnitude or a component).
+ * Normals; Velocity, ElementOrientation and ElementSpin by magnitude or a
+ * component).
+ *
+ * Motion trails (Parameters::trailLength) are drawn from the engine's ring of
+ * past state textures: for each slot recorded before the time shown, newest
+ * first, the element draw again with the slot's positions, normals computed
+ * in the vertex shader from them (as the CPU output computes a pose's), the
+ * colour of the element now (Age: the pose's age), and elements whose
+ * generation in the slot is not their own clipped, as hidden ones are. The
+ * poses fade with age, by the colour map's opacity where it maps opacity,
+ * otherwise by 1 - age / (span + interval); with trails the actor is always
+ * drawn in the translucent pass, so they composite with depth peeling.
  */
 #ifndef vtkOpenGLBoundParticleMapper_h
 #define vtkOpenGLBoundParticleMapper_h
@@ -79,6 +90,14 @@ public:
    */
   bool HasTranslucentPolygonalGeometry() override;
 
+  /**
+   * The age of the oldest trail pose the display expects (0: no trails), from
+   * the range of Age on its input: VTK decides whether the actor is
+   * translucent before the mapper runs the configuration queued for the
+   * frame, so a frame that switches trails on must know from its input.
+   */
+  void SetExpectedTrailSpan(double span);
+
   /// Runs the queued engine work, then draws.
   void Render(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -96,6 +115,9 @@ protected:
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
 private:
+  /// Whether the colour map (ParaView's opacity mapping) makes anything translucent.
+  bool ColorMapIsTranslucent();
+
   vtkOpenGLBoundParticleMapper(const vtkOpenGLBoundParticleMapper&) = delete;
   void operator=(const vtkOpenGLBoundParticleMapper&) = delete;
 

@@ -4,3 +4,4 @@ in float bpScalarVSOutput;
 uniform int bpScalarMode;
 uniform sampler2D bpColorTable;
 uniform float bpColorTableSize;
+uniform float bpFade; // a trail pose's opacity factor: 1 on the elements

@@ -7,3 +7,4 @@
     diffuseColor = diffuseIntensity * bpColor.rgb;
     opacity = opacity * bpColor.a;
   }
+  opacity = opacity * bpFade;

@@ -3,20 +3,30 @@
 // template particle; the link draw of a super set is one instance per link,
 // vertices 2i and 2i + 1 being particle i of its two elements. Either way the
 // position and normal come from the GPU engine's state textures (vertex
-// texture fetch), never from a buffer uploaded per frame.
+// texture fetch), never from a buffer uploaded per frame. A motion trail's
+// pose is the element draw again (bpTrail 1) with the positions of one slot
+// of the engine's trail ring and normals computed here from them.
 uniform sampler2D bpPositions; // per particle: grid-local position, force
 uniform sampler2D bpNormals;   // per particle: unit normal
 uniform sampler2D bpSamples;   // per particle: velocity, |curl v|
 uniform sampler2D bpElements;  // per element: lifetime, generation, flags
 uniform sampler2D bpCenters;   // per element: the generation's initial centre, hidden
 uniform isampler2D bpLinks;    // per link: its two elements (the CPU output's link cells)
+uniform sampler2D bpPoses;     // per element: pose quaternion (x, y, z, w)
+uniform sampler2D bpSpins;     // per element: angular velocity xyz, SpinVorticityRatio
+uniform sampler2D bpTrailPositions; // per particle, in the trail draw: the slot's positions
+uniform sampler2D bpTrailElements;  // per element, in the trail draw: the slot's generation (.y)
+uniform isampler2D bpAdjacency; // per template particle (row): the triangles it is a corner of
+uniform int bpAdjacencyWidth;  // texels a row; a row ends early at a corner index of -1
+uniform int bpTrail;           // 1 in a trail pose's draw, 0 otherwise
+uniform float bpTrailAge;      // in a trail pose's draw: the shown time minus the slot's
 uniform int bpLinksPerRow;
 uniform int bpDrawLinks;       // 1 in the link draw, 0 in the element draw
 uniform ivec2 bpElementGrid;
 uniform int bpBlocksPerRow;
 uniform vec3 bpOffset;         // world position of the grid-local origin
 uniform int bpScalarMode;      // a BP_COLOR_* of Core/OutputArrays.h (ColorSource)
-uniform int bpComponent;       // for Velocity: 0-2, or -1 for the magnitude
+uniform int bpComponent;       // for vector sources: a component, or -1 for the magnitude
 uniform vec2 bpScalarRange;    // the lookup table's range
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
@@ -74,5 +84,50 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
     return float(e);
   if (bpScalarMode == BP_COLOR_PARTICLE_INDEX)
     return float(i);
+  if (bpScalarMode == BP_COLOR_ORIENTATION)
+  {
+    vec4 q = texelFetch(bpPoses, elementTexel, 0);
+    return bpComponent >= 0 ? q[bpComponent] : length(q);
+  }
+  if (bpScalarMode == BP_COLOR_SPIN)
+  {
+    vec3 w = texelFetch(bpSpins, elementTexel, 0).xyz;
+    return bpComponent >= 0 ? w[bpComponent] : length(w);
+  }
+  if (bpScalarMode == BP_COLOR_SPIN_RATIO)
+    return texelFetch(bpSpins, elementTexel, 0).w;
+  if (bpScalarMode == BP_COLOR_AGE)
+    return bpTrail != 0 ? bpTrailAge : 0.0;
   return 0.0;
+}
+
+// Whether element e has no pose in the trail slot drawn: the slot holds
+// another generation's (a released element starts a new trail), or none.
+bool bpNotInTrail(int e)
+{
+  ivec2 elementTexel = ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+  return texelFetch(bpTrailElements, elementTexel, 0).y != texelFetch(bpElements, elementTexel, 0).y;
+}
+
+// Particle i's normal in element e's trail pose, as the CPU output computes a
+// pose's normals (bp::elementNormals): the sum of the unit normals of the
+// triangles it is a corner of, normalized; (0, 0, 1) where there are none.
+vec3 bpTrailNormal(int e, int i)
+{
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < bpAdjacencyWidth; ++k)
+  {
+    ivec4 corners = texelFetch(bpAdjacency, ivec2(k, i), 0);
+    if (corners.x < 0)
+      break;
+    vec3 a = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.x), 0).xyz;
+    vec3 b = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.y), 0).xyz;
+    vec3 c = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.z), 0).xyz;
+    vec3 x = cross(b - a, c - a);
+    float len = length(x);
+    if (len > 0.0)
+      sum += x / len;
+  }
+  float total = length(sum);
+  return total > 0.0 ? sum / total : vec3(0.0, 0.0, 1.0);
 }

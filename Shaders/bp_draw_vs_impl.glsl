@@ -14,12 +14,22 @@
     }
     else
     {
-      bpHidden = bpHiddenElement(bpElement);
+      bpHidden = bpHiddenElement(bpElement) || (bpTrail != 0 && bpNotInTrail(bpElement));
     }
     ivec2 bpTexel = bpDrawTexel(bpElement, bpParticle);
     vec4 bpState = texelFetch(bpPositions, bpTexel, 0);
-    bpVertexMC = vec4(bpState.xyz + bpOffset, 1.0);
-    bpNormalMC = texelFetch(bpNormals, bpTexel, 0).xyz;
+    if (bpTrail != 0)
+    {
+      // A trail pose: the slot's position and the pose's own normal; the
+      // colour scalar below is the element's now (but Age), as on the CPU.
+      bpVertexMC = vec4(texelFetch(bpTrailPositions, bpTexel, 0).xyz + bpOffset, 1.0);
+      bpNormalMC = bpTrailNormal(bpElement, bpParticle);
+    }
+    else
+    {
+      bpVertexMC = vec4(bpState.xyz + bpOffset, 1.0);
+      bpNormalMC = texelFetch(bpNormals, bpTexel, 0).xyz;
+    }
     float bpWidth = bpScalarRange.y - bpScalarRange.x;
     float bpScalar = bpScalarOf(bpElement, bpParticle, bpTexel, bpState);
     bpScalarVSOutput = bpWidth > 0.0 ? (bpScalar - bpScalarRange.x) / bpWidth : 0.5;

@@ -10,7 +10,14 @@ data, and motion trails, as pvpython users meet them.
   carry Age, up to Trail Length poses Trail Spacing steps apart, none of
   another generation; the Surface picture of demo/trails.py (Age mapped to
   colour and opacity) matches its baseline and differs from the picture
-  without trails. --update-baselines writes the baseline instead.
+  without trails.
+- The Bound Particles display (GPU engine) draws the same trails from the
+  engine's ring: its picture of demo/trails.py is close to the CPU Surface
+  picture, covers the trails' region, differs from its picture without
+  trails, and matches its own baseline; with the colour map opaque the
+  display fades the trails itself. Coloured by ElementSpin's Y component, it
+  matches the CPU output drawn as Surface.
+--update-baselines writes the baselines instead.
 """
 import os
 import shutil
@@ -35,6 +42,17 @@ LoadPlugin(args.plugin, ns=trails.__dict__)
 paraview.simple._DisableFirstRenderCameraReset()
 os.makedirs(args.output, exist_ok=True)
 BASE_MEAN, BASE_PIXELS = 1.0, 0.005
+# The GPU display against the CPU output drawn as Surface, as test_representation.py,
+# trails included: with the colour map mapping opacity, the display fades them
+# by the same map (measured on llvmpipe: mean 0.004, no pixel off by more
+# than 32), so the colour tolerance holds; a pose missing or misplaced moves
+# about as many pixels as the trails cover (without trails: 0.005).
+CPU_MEAN, CPU_PIXELS = 0.5, 0.002
+# The display's own fade, 1 - age / (span + interval), against the demo's
+# opacity map, 1 - 0.575 age: alike by design (measured: mean 0.01, no pixel
+# off by more than 32). Trails drawn opaque would move most of the pixels
+# the trails cover; a tenth of them is allowed.
+FADE_PIXELS = 0.0005
 
 
 def fetch(proxy, time):
@@ -151,5 +169,146 @@ else:
     mean, pixels = bptest.image_difference(baseline, with_trails)
     bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
                  "trails differ from the baseline: mean %.3f, pixels %.4f" % (mean, pixels))
+
+
+def keep_baseline(image, name):
+    baseline = os.path.join(args.baselines, name + ".png")
+    if args.update_baselines:
+        shutil.copyfile(image, baseline)
+    elif not os.path.exists(baseline):
+        bptest.check(False, "no baseline %s (the image is %s)" % (baseline, image))
+    else:
+        mean, pixels = bptest.image_difference(baseline, image)
+        bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
+                     "%s differs from the baseline: mean %.3f, pixels %.4f" %
+                     (name, mean, pixels))
+
+
+# --- Trails in the Bound Particles display ------------------------------------
+flow_g, gpu_trailed = trails.trails_scene(engine="GPU")
+
+
+def display_trails_picture(path, with_trails, opacity_mapping=True):
+    """demo/trails.py's picture of the GPU trace in the Bound Particles display."""
+    gpu_trailed.Trails = 1 if with_trails else 0
+    view = picture.dark_view(trails.TIME, (480, 270))
+    view.EnableRenderOnInteraction = 0
+    Show(flow_g, view).SetRepresentationType("Outline")
+    display = trails.show_trails(gpu_trailed, view, "Bound Particles")
+    lut = GetColorTransferFunction("Age")
+    lut.EnableOpacityMapping = 1 if opacity_mapping else 0
+    trails.place_camera(view)
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=[480, 270])
+    lut.EnableOpacityMapping = 1
+    Delete(display)
+    Delete(view)
+
+
+def pixels_of(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    values = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3].astype(np.int32)
+    return values.reshape(height, width, 3)
+
+
+gpu_with = os.path.join(args.output, "Trails_BoundParticles.png")
+gpu_without = os.path.join(args.output, "Trails_BoundParticles_off.png")
+gpu_own_fade = os.path.join(args.output, "Trails_BoundParticles_fade.png")
+display_trails_picture(gpu_with, True)
+display_trails_picture(gpu_without, False)
+display_trails_picture(gpu_own_fade, True, opacity_mapping=False)
+mean, pixels = bptest.image_difference(with_trails, gpu_with)
+bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+             "GPU trails vs CPU Surface trails: mean %.3f, pixels %.4f" % (mean, pixels))
+print("GPU vs CPU trails: mean %.3f, pixels %.4f" % (mean, pixels))
+mean, pixels = bptest.image_difference(gpu_with, gpu_without)
+bptest.check(pixels > 0.002, "the GPU display's trails show: %.4f of the pixels differ" % pixels)
+# Where the CPU picture has trail poses and no element (it differs from the
+# picture without trails), the GPU picture is not background either.
+cpu_on, cpu_off, gpu_on = pixels_of(with_trails), pixels_of(without), pixels_of(gpu_with)
+background = gpu_on[0, 0]
+trail_region = np.abs(cpu_on - cpu_off).max(axis=2) > 32
+covered = (np.abs(gpu_on - background).max(axis=2) > 8)[trail_region].mean()
+bptest.check(trail_region.sum() > 0 and covered > 0.98,
+             "the GPU display covers the trails' region (%d pixels): %.4f" %
+             (trail_region.sum(), covered))
+# The colour map opaque: the display's own fade keeps the trails translucent,
+# close to the demo's opacity map.
+mean, pixels = bptest.image_difference(gpu_own_fade, gpu_with)
+bptest.check(mean <= CPU_MEAN and pixels <= FADE_PIXELS,
+             "the display's own fade vs the colour map's: mean %.3f, pixels %.4f" %
+             (mean, pixels))
+mean, pixels = bptest.image_difference(gpu_own_fade, gpu_without)
+bptest.check(pixels > 0.002, "the display's own fade shows the trails: %.4f" % pixels)
+keep_baseline(gpu_with, "Trails_BoundParticles")
+Delete(gpu_trailed)
+Delete(flow_g)
+
+
+# --- Colouring the display by spin --------------------------------------------
+def spin_picture(source, representation, name, color, component, scalar_range):
+    """The shear layer's paddlewheels coloured by `color` (its `component`, or
+    None for a scalar), in the camera and colours test_representation.py uses."""
+    view = CreateRenderView(ViewSize=[320, 240])
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.1, 0.1, 0.15]
+    view.CameraPosition = [2.2, 1.6, 3.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30
+    view.ViewTime = 0.5
+    shown = Show(source, view)
+    shown.SetRepresentationType(representation)
+    ColorBy(shown, ("POINTS", color))
+    lut = GetColorTransferFunction(color)
+    lut.ApplyPreset("Cool to Warm", True)
+    if component is not None:
+        lut.VectorMode = "Component"
+        lut.VectorComponent = component
+    lut.RescaleTransferFunction(*scalar_range)
+    shown.Specular = 0.3
+    Render(view)
+    path = os.path.join(args.output, name + ".png")
+    SaveScreenshot(path, view)
+    Delete(shown)
+    Delete(view)
+    return path
+
+
+def spin_tracer(engine):
+    t = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
+                            ElementShape="Paddlewheel", NumberOfElements=60, ElementSize=0.15,
+                            EmitterCenter=[0, 0, 0], EmitterSize=[1.0, 1.0, 1.4],
+                            Integrator="Runge-Kutta 4", RestorationIterations=4,
+                            StepSizeUnit="Time", StepSize=0.02, Duration=1.0,
+                            LifetimeRange=[100, 100], Seed=5, Engine=engine)
+    t.OutputArrays = ["ElementOrientation", "ElementSpin", "SpinVorticityRatio", "Normals"]
+    return t
+
+
+cpu_spin, gpu_spin = spin_tracer("CPU"), spin_tracer("GPU")
+# Spin about y is -z here; the ratio reads about 1; the pose's w is the cosine
+# of half the turn from the template (the wheels start randomly oriented).
+for color, component, scalar_range, name in (
+        ("ElementSpin", 1, (-0.7, 0.7), "Spin"),
+        ("SpinVorticityRatio", None, (0.0, 2.0), "SpinRatio"),
+        ("ElementOrientation", 3, (-1.0, 1.0), "OrientationW")):
+    cpu_image = spin_picture(cpu_spin, "Surface", name + "_Surface", color, component,
+                             scalar_range)
+    gpu_image = spin_picture(gpu_spin, "Bound Particles", name + "_BoundParticles", color,
+                             component, scalar_range)
+    mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+    bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+                 "%s: GPU vs CPU differ: mean %.3f, pixels %.4f" % (name, mean, pixels))
+    bptest.check(bptest.covered_fraction(gpu_image) > 0.005,
+                 "%s: the picture shows elements (%.4f)" %
+                 (name, bptest.covered_fraction(gpu_image)))
+    print("%s: GPU vs CPU mean %.3f, pixels %.4f" % (name, mean, pixels))
 
 bptest.finish()
