@@ -94,3 +94,21 @@ def covered_fraction(path):
     reader.Update()
     values = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
     return float((numpy.abs(values - values[0]).max(axis=1) > 8).mean())
+
+
+def check_baseline(image, baselines, name, update, mean_bar=1.0, pixel_bar=0.005):
+    """Compares `image` with the baseline `name`.png in `baselines` (the same
+    Mesa must draw the same picture), or writes it there when `update`."""
+    import os
+    import shutil
+
+    baseline = os.path.join(baselines, name + ".png")
+    if update:
+        shutil.copyfile(image, baseline)
+        return
+    if not os.path.exists(baseline):
+        check(False, "no baseline %s (the image is %s)" % (baseline, image))
+        return
+    mean, pixels = image_difference(baseline, image)
+    check(mean <= mean_bar and pixels <= pixel_bar,
+          "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))

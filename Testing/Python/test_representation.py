@@ -7,7 +7,6 @@ image in Testing/Data/Baseline. --update-baselines writes the baselines
 instead (look at them before committing them).
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -103,16 +102,8 @@ for shape in ["Strip16", "Cross", "Paddlewheel", "Fish"]:
         gpu_image = compare_paths(cpu, gpu, color, scalar_range, name)
         covered = bptest.covered_fraction(gpu_image)
         bptest.check(covered > 0.005, "%s: the GPU image shows elements (%.4f)" % (name, covered))
-        baseline = os.path.join(args.baselines, name + ".png")
-        if args.update_baselines:
-            shutil.copyfile(gpu_image, baseline)
-            continue
-        if not os.path.exists(baseline):
-            bptest.check(False, "no baseline %s (the image is %s)" % (baseline, gpu_image))
-            continue
-        mean, pixels = bptest.image_difference(baseline, gpu_image)
-        bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
-                     "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
+        bptest.check_baseline(gpu_image, args.baselines, name, args.update_baselines, BASE_MEAN,
+                              BASE_PIXELS)
     Delete(cpu)
     Delete(gpu)
 

@@ -18,7 +18,6 @@ in Testing/Data/Baseline instead of comparing with them (look at them before
 committing them).
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -90,16 +89,8 @@ def render(scene, name, time, camera):
 
 
 def check_baseline(image, name):
-    baseline = os.path.join(args.baselines, name + ".png")
-    if args.update_baselines:
-        shutil.copyfile(image, baseline)
-        return
-    if not os.path.exists(baseline):
-        bptest.check(False, "no baseline %s (the image is %s)" % (baseline, image))
-        return
-    mean, pixels = bptest.image_difference(baseline, image)
-    bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
-                 "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
+    bptest.check_baseline(image, args.baselines, name, args.update_baselines, BASE_MEAN,
+                          BASE_PIXELS)
 
 
 def check_same(cpu_image, gpu_image, name, solid):

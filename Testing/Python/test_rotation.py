@@ -20,7 +20,6 @@ data, and motion trails, as pvpython users meet them.
 --update-baselines writes the baselines instead.
 """
 import os
-import shutil
 import sys
 
 import numpy as np
@@ -160,28 +159,13 @@ trails_picture(with_trails, True)
 trails_picture(without, False)
 mean, pixels = bptest.image_difference(with_trails, without)
 bptest.check(pixels > 0.002, "the trails show: %.4f of the pixels differ" % pixels)
-baseline = os.path.join(args.baselines, "Trails_Surface.png")
-if args.update_baselines:
-    shutil.copyfile(with_trails, baseline)
-elif not os.path.exists(baseline):
-    bptest.check(False, "no baseline %s (the image is %s)" % (baseline, with_trails))
-else:
-    mean, pixels = bptest.image_difference(baseline, with_trails)
-    bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
-                 "trails differ from the baseline: mean %.3f, pixels %.4f" % (mean, pixels))
+bptest.check_baseline(with_trails, args.baselines, "Trails_Surface", args.update_baselines,
+                      BASE_MEAN, BASE_PIXELS)
 
 
 def keep_baseline(image, name):
-    baseline = os.path.join(args.baselines, name + ".png")
-    if args.update_baselines:
-        shutil.copyfile(image, baseline)
-    elif not os.path.exists(baseline):
-        bptest.check(False, "no baseline %s (the image is %s)" % (baseline, image))
-    else:
-        mean, pixels = bptest.image_difference(baseline, image)
-        bptest.check(mean <= BASE_MEAN and pixels <= BASE_PIXELS,
-                     "%s differs from the baseline: mean %.3f, pixels %.4f" %
-                     (name, mean, pixels))
+    bptest.check_baseline(image, args.baselines, name, args.update_baselines, BASE_MEAN,
+                          BASE_PIXELS)
 
 
 # --- Trails in the Bound Particles display ------------------------------------
