@@ -94,3 +94,32 @@ TEST(ValueRanges, IntegersAndEmptyArrays)
   const bp::ValueRanges none = bp::valueRanges(ids.data(), 0, 1, bp::serialRunner());
   EXPECT_GT(none.component[0][0], none.component[0][1]); // nothing counted
 }
+
+TEST(ValueRanges, EveryComponentCountMatchesVtksRules)
+{
+  // 1 to 4 components take the register path, 5 the general one; an odd
+  // tuple count leaves one tuple past the last pair.
+  std::mt19937 random(5);
+  std::normal_distribution<float> value(0.0f, 3.0f);
+  for (int components = 1; components <= 5; ++components)
+  {
+    SCOPED_TRACE(components);
+    std::vector<float> values(std::size_t(components) * 1001);
+    for (float& v : values)
+      v = value(random);
+    values[7] = std::numeric_limits<float>::quiet_NaN();
+    values.back() = 99.0f; // in the last, unpaired tuple
+    const Naive expected = naive(values, components);
+    const bp::ValueRanges r = bp::valueRanges(
+      values.data(), values.size() / std::size_t(components), components, bp::serialRunner());
+    for (std::size_t c = 0; c < std::size_t(components); ++c)
+    {
+      EXPECT_EQ(r.component[c], expected.component[c]) << c;
+      EXPECT_EQ(r.finiteComponent[c], expected.finiteComponent[c]) << c;
+    }
+    if (components > 1)
+    {
+      EXPECT_EQ(r.magnitude, expected.magnitude);
+    }
+  }
+}
