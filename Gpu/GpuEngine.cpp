@@ -149,7 +149,7 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   d.elements = S.state.elements.current();
   d.centers = S.state.centers.current();
   d.poses = S.state.poses.current();
-  d.spins = S.state.spins.current();
+  d.spins = S.state.spins.get();
   d.elementGrid[0] = S.layout.elementGrid[0];
   d.elementGrid[1] = S.layout.elementGrid[1];
   d.blocksPerRow = S.layout.blocksPerRow;
@@ -171,7 +171,7 @@ void GpuEngine::readPoses(std::vector<float>* poses, std::vector<float>* spins) 
   const std::size_t values = 4 * std::size_t(S.layout.elementCount);
   std::vector<float> texels;
   const std::pair<GLuint, std::vector<float>*> reads[] = { { S.state.poses.current(), poses },
-    { S.state.spins.current(), spins } };
+    { S.state.spins.get(), spins } };
   for (const auto& read : reads)
   {
     if (read.second)

@@ -41,7 +41,7 @@ void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLe
   this->centers.make(w, h);
   this->orientations.make(w, h);
   this->poses.make(w, h);
-  this->spins.make(w, h);
+  this->spins = makeTexture2D(w, h);
   this->matchCenters = makeTexture2D(w, h);
   for (GlTexture& texture : this->matchLinear)
   {
@@ -188,7 +188,7 @@ void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool 
     { this->centers.current(), this->Copy.centers.get(), w, h },
     { this->orientations.current(), this->Copy.orientations.get(), w, h },
     { this->poses.current(), this->Copy.poses.get(), w, h },
-    { this->spins.current(), this->Copy.spins.get(), w, h } };
+    { this->spins.get(), this->Copy.spins.get(), w, h } };
   for (const Kept& k : kept)
   {
     if (intoCopy)

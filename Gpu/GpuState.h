@@ -6,8 +6,9 @@
  * A pass never reads the texture it writes, so what a step carries over
  * lives in pairs: a pass reads one and writes the other, which then becomes
  * current. Each pair flips on its own (the centres only when elements are
- * placed, the orientations only with shape matching, the poses and spins
- * together in the pose pass). The scratch textures hold a step's
+ * placed, the orientations only with shape matching, the poses in the
+ * reset and pose passes; the spins, which no pass reads, are one texture
+ * the pose pass writes). The scratch textures hold a step's
  * intermediate positions and shape-matching fits. Motion trails are a ring
  * of copies of the particle and element textures (TrailRing).
  *
@@ -96,7 +97,7 @@ public:
   TexturePair centers;                  ///< the generation's initial centre
   TexturePair orientations;             ///< rotation as placed, then as fitted: a quaternion
   TexturePair poses;                    ///< Engine::poses(): a quaternion
-  TexturePair spins;                    ///< Engine::spins(): angular velocity, SpinVorticityRatio
+  GlTexture spins;                      ///< Engine::spins(): angular velocity, SpinVorticityRatio
   GlTexture matchCenters;               ///< shape matching: the fit's centre
   std::array<GlTexture, 2> matchLinear; ///< linear shape matching: the goal matrix, packed
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <sstream>
-#include <string>
 
 namespace bp
 {
@@ -24,12 +23,6 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   if (!error.empty())
   {
     return error;
-  }
-  if (p.trailLength > MaxTrailLength)
-  {
-    // Each slot is a copy of the particle texture.
-    return "the GPU engine keeps at most " + std::to_string(MaxTrailLength) +
-      " poses of a motion trail, not " + std::to_string(p.trailLength);
   }
   this->shapeTables.upload(this->shape, p.elementSize, generatedSprings);
   error = this->passes.compile(this->shapeTables.springSumCode);
@@ -73,7 +66,7 @@ void GpuSystem::initialize(double startTime)
   this->finalize(placed);
   // Every spin 0 (the reset pass placed every pose), and no trail yet.
   const float zero[4] = { 0, 0, 0, 0 };
-  this->passes.clearTexture(this->state.spins.current(), zero);
+  this->passes.clearTexture(this->state.spins.get(), zero);
   this->state.clearTrail(this->passes);
   this->updateNormals();
 }
@@ -343,9 +336,9 @@ void GpuSystem::updatePoses(double h, float endWeight)
   pass.texture("bpRest", this->shapeTables.rest.get());
   pass.setFloat("bpStep", float(h));
   pass.setFloat("bpEndWeight", endWeight);
-  pass.runPerElement({ s.poses.next(), s.spins.next() });
+  // No pass reads the spins before the step: they need no pair.
+  pass.runPerElement({ s.poses.next(), s.spins.get() });
   s.poses.flip();
-  s.spins.flip();
 }
 
 } // namespace bp
