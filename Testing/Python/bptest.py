@@ -112,3 +112,19 @@ def check_baseline(image, baselines, name, update, mean_bar=1.0, pixel_bar=0.005
     mean, pixels = image_difference(baseline, image)
     check(mean <= mean_bar and pixels <= pixel_bar,
           "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
+
+
+def element_view(size):
+    """The display image tests' view: no axes, a dark background, the camera
+    on the [-1, 1] box from above one corner."""
+    from paraview.simple import CreateRenderView
+
+    view = CreateRenderView(ViewSize=list(size))
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.1, 0.1, 0.15]
+    view.CameraPosition = [2.2, 1.6, 3.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30
+    return view

@@ -35,14 +35,7 @@ flow.UpdatePipeline()
 
 def render(source, representation, color, scalar_range, name, time=1.0, size=(320, 240),
            frames=(), **display):
-    view = CreateRenderView(ViewSize=list(size))
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.1, 0.1, 0.15]
-    view.CameraPosition = [2.2, 1.6, 3.2]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraViewAngle = 30
+    view = bptest.element_view(size)
     shown = Show(source, view)
     shown.SetRepresentationType(representation)
     for key, value in display.items():

@@ -238,14 +238,7 @@ Delete(flow_g)
 def spin_picture(source, representation, name, color, component, scalar_range):
     """The shear layer's paddlewheels coloured by `color` (its `component`, or
     None for a scalar), in the camera and colours test_representation.py uses."""
-    view = CreateRenderView(ViewSize=[320, 240])
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.1, 0.1, 0.15]
-    view.CameraPosition = [2.2, 1.6, 3.2]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraViewAngle = 30
+    view = bptest.element_view((320, 240))
     view.ViewTime = 0.5
     shown = Show(source, view)
     shown.SetRepresentationType(representation)
