@@ -2,6 +2,7 @@
 #include "Parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -79,7 +80,11 @@ public:
   }
   void run(std::size_t count, const RangeFunction& f)
   {
-    if (this->Workers.empty() || count < this->Chunks)
+    // A call from inside a job (nested) or from a second thread while the
+    // workers are busy runs on its caller alone rather than wait for them.
+    bool idle = false;
+    if (this->Workers.empty() || count < this->Chunks ||
+      !this->Busy.compare_exchange_strong(idle, true))
     {
       if (count > 0)
       {
@@ -98,6 +103,7 @@ public:
     f(0, count / this->Chunks); // the caller's own chunk
     std::unique_lock<std::mutex> lock(this->Mutex);
     this->Done.wait(lock, [this] { return this->Pending == 0; });
+    this->Busy = false;
   }
 
 private:
@@ -130,6 +136,7 @@ private:
 
   const std::size_t Chunks;
   std::vector<std::thread> Workers;
+  std::atomic<bool> Busy{ false }; ///< while the workers serve a call
   std::mutex Mutex;
   std::condition_variable Wake, Done;
   const RangeFunction* Job = nullptr;

@@ -30,8 +30,9 @@ RangeRunner serialRunner();
 RangeRunner threadRunner(unsigned threads);
 
 /// The same chunks on a pool of `threads - 1` persistent workers and the
-/// calling thread, as vtkSMPTools' thread pool runs them. The pool lives as
-/// long as the returned runner (and its copies).
+/// calling thread. The pool lives as long as the returned runner (and its
+/// copies). A call made while the workers serve another (from inside a job,
+/// or from another thread) runs on its caller alone.
 RangeRunner poolRunner(unsigned threads);
 
 } // namespace bp

@@ -9,26 +9,35 @@
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace bpvtk
 {
-bp::RangeRunner smpRunner()
+void SmpPool::refresh()
 {
-  return [](std::size_t count, const bp::RangeFunction& f)
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  if (threads != this->Current->threads)
   {
-    vtkSMPTools::For(vtkIdType(0), vtkIdType(count),
-      [&f](vtkIdType begin, vtkIdType end) { f(std::size_t(begin), std::size_t(end)); });
-  };
+    this->Current->threads = threads;
+    this->Current->run = bp::poolRunner(unsigned(threads));
+  }
+}
+
+bp::RangeRunner SmpPool::runner() const
+{
+  return [state = this->Current](std::size_t count, const bp::RangeFunction& f)
+  { state->run(count, f); };
 }
 
 TracerSteppers::TracerSteppers()
-  : Cpu(smpRunner())
+  : Cpu(Pool.runner())
 {
 }
 
 void TracerSteppers::select(bool gpu, vtkInformation* outInfo, const PieceLayout& pieces)
 {
+  this->Pool.refresh(); // once an update: the user may have changed the thread count
   this->Queue = nullptr;
   // The GPU engine's state lives in the GL context that draws it: only a
   // display in this process, in a run of one process, can take it.
@@ -39,7 +48,7 @@ void TracerSteppers::select(bool gpu, vtkInformation* outInfo, const PieceLayout
   if (pieces.distributed() && !this->Distributed)
   {
     this->Distributed.reset(
-      new bp::DistributedStepper(smpRunner(), pieces.exchange(), pieces.releaseMask()));
+      new bp::DistributedStepper(this->Pool.runner(), pieces.exchange(), pieces.releaseMask()));
   }
   this->Active = this->Queue ? static_cast<bp::Stepper*>(this->Queue.get())
     : pieces.distributed()   ? static_cast<bp::Stepper*>(this->Distributed.get())

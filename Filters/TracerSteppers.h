@@ -26,8 +26,30 @@ namespace bpvtk
 {
 class PieceLayout;
 
-/// Runs element ranges through vtkSMPTools (the engine's parallel loops).
-bp::RangeRunner smpRunner();
+/**
+ * Runs element ranges on persistent threads, as many as vtkSMPTools would
+ * use (its backend and thread count: one thread on the Sequential backend).
+ * VTK 9.2's STDThread backend starts and joins its threads in every parallel
+ * loop, which cost a 4,096-element update more time than its engine step
+ * (issue 16); these threads wait between loops instead.
+ */
+class SmpPool
+{
+public:
+  SmpPool() { this->refresh(); }
+  /// Follows a change of vtkSMPTools' thread count (call between loops).
+  void refresh();
+  /// Runs ranges on this pool, as resized by refresh().
+  bp::RangeRunner runner() const;
+
+private:
+  struct State
+  {
+    int threads = 0;
+    bp::RangeRunner run;
+  };
+  std::shared_ptr<State> Current = std::make_shared<State>();
+};
 
 class TracerSteppers
 {
@@ -56,7 +78,11 @@ public:
   /// The distributed stepper (valid while the pieces are distributed).
   bp::DistributedStepper& distributed() { return *this->Distributed; }
 
+  /// What runs the engines' parallel loops, for the output's as well.
+  bp::RangeRunner runner() const { return this->Pool.runner(); }
+
 private:
+  SmpPool Pool; // before the steppers, which take its runner
   bp::CpuStepper Cpu;
   std::unique_ptr<bp::DistributedStepper> Distributed;
   std::shared_ptr<bp::WorkQueue> Queue;

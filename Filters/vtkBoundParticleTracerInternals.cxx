@@ -599,7 +599,8 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::show(
       frame.wanted[std::size_t(row.id)] = self->GetOutputArrayStatus(row.name) != 0 &&
         (row.id != bp::OutputArrayId::Vorticity || self->ComputeVorticity);
     }
-    bpvtk::fillParticleOutput(output, *particles, field, frame, this->Storage, bpvtk::smpRunner());
+    bpvtk::fillParticleOutput(
+      output, *particles, field, frame, this->Storage, this->Steppers.runner());
   }
   else
   {
