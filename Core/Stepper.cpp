@@ -14,7 +14,6 @@ CpuStepper::CpuStepper(RangeRunner run)
 
 std::string CpuStepper::configure(const ElementTemplate& shape, const Parameters& parameters)
 {
-  this->NormalsCurrent = false;
   return this->Current.configure(shape, parameters);
 }
 
@@ -39,13 +38,11 @@ ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
 void CpuStepper::initialize(double startTime)
 {
   this->Current.initialize(this->Run, startTime);
-  this->NormalsCurrent = false;
 }
 
 void CpuStepper::step(double t, double h)
 {
   this->Current.step(*this->Field, t, h, this->Run);
-  this->NormalsCurrent = false;
 }
 
 void CpuStepper::save()
@@ -57,17 +54,10 @@ void CpuStepper::save()
 void CpuStepper::restore()
 {
   std::swap(this->Current, this->Saved);
-  this->NormalsCurrent = false;
 }
 
 const Engine* CpuStepper::particles()
 {
-  if (!this->NormalsCurrent)
-  {
-    // Normals do not feed back into the simulation: computed for output only.
-    this->Current.updateNormals(this->Run);
-    this->NormalsCurrent = true;
-  }
   return &this->Current;
 }
 

@@ -63,8 +63,10 @@ public:
   /// Goes back to the copy save() kept.
   virtual void restore() = 0;
 
-  /// The particles as data in this process, with their normals up to date;
-  /// null where they live elsewhere (in a renderer's GPU textures).
+  /// The particles as data in this process; null where they live elsewhere
+  /// (in a renderer's GPU textures). Their normals are not kept up to date:
+  /// they do not feed back into the simulation, and the output computes
+  /// them from the positions as it writes them (Engine::updateNormals()).
   virtual const Engine* particles() { return nullptr; }
 
   /// Whether the tracer should read the next field time step ahead of need
@@ -105,7 +107,6 @@ private:
   Engine Current;
   Engine Saved;
   std::shared_ptr<const VectorField> Field;
-  bool NormalsCurrent = false;
   ReleaseMask Release;
   ReleaseMaskSource ReleaseFrom;
 };

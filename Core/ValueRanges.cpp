@@ -222,30 +222,49 @@ void scanFinite(
   }
 }
 
-} // namespace
-
+/// The ranges of tuples [begin, end) into `part`.
 template <typename T>
-ValueRanges valueRanges(const T* values, std::size_t tuples, int components, const RangeRunner& run)
+void scanBlock(const T* values, std::size_t begin, std::size_t end, std::size_t n, Partial<T>& part)
+{
+  Partial<T> found{ static_cast<int>(n) };
+  scanAll(values, begin, end, n, found);
+  bool infinite = n > 1 && hasInfiniteEnd(found.squared);
+  for (const MinMax<T>& m : found.all)
+    infinite = infinite || hasInfiniteEnd(m);
+  if (infinite)
+  {
+    scanFinite(values, begin, end, n, found);
+  }
+  else
+  {
+    found.finite = found.all; // no infinity in the block
+    found.finiteSquared = found.squared;
+  }
+  part.merge(found);
+}
+
+/// valueRanges() and writeWithRanges(): `write` may be null (nothing to write).
+template <typename T>
+ValueRanges rangesOf(T* values, std::size_t tuples, std::size_t align, int components,
+  const RangeRunner& run, const BlockWriter* write)
 {
   Partial<T> total(components);
   std::mutex merging;
   const std::size_t n = std::size_t(components);
-  run(tuples,
-    [&](std::size_t begin, std::size_t end)
+  // About 2,048 tuples a block: written and scanned while in the core's cache.
+  const std::size_t block = std::max<std::size_t>(1, 2048 / align) * align;
+  run(tuples / align,
+    [&](std::size_t first, std::size_t last)
     {
       Partial<T> part(components);
-      scanAll(values, begin, end, n, part);
-      bool infinite = n > 1 && hasInfiniteEnd(part.squared);
-      for (const MinMax<T>& m : part.all)
-        infinite = infinite || hasInfiniteEnd(m);
-      if (infinite)
+      for (std::size_t begin = first * align; begin < last * align; begin += block)
       {
-        scanFinite(values, begin, end, n, part);
-      }
-      else
-      {
-        part.finite = part.all; // no infinity in the chunk
-        part.finiteSquared = part.squared;
+        const std::size_t end = std::min(begin + block, last * align);
+        if (write)
+        {
+          (*write)(begin, end);
+        }
+        scanBlock(values, begin, end, n, part);
       }
       std::lock_guard<std::mutex> lock(merging);
       total.merge(part);
@@ -261,9 +280,52 @@ ValueRanges valueRanges(const T* values, std::size_t tuples, int components, con
   return r;
 }
 
+void widen(Range& into, const Range& more)
+{
+  into = { std::min(into[0], more[0]), std::max(into[1], more[1]) };
+}
+
+} // namespace
+
+template <typename T>
+ValueRanges valueRanges(const T* values, std::size_t tuples, int components, const RangeRunner& run)
+{
+  // Nothing is written through the pointer without a writer.
+  return rangesOf(const_cast<T*>(values), tuples, 1, components, run, nullptr);
+}
+
+template <typename T>
+ValueRanges writeWithRanges(T* values, std::size_t tuples, std::size_t align, int components,
+  const RangeRunner& run, const BlockWriter& write)
+{
+  return rangesOf(values, tuples, std::max<std::size_t>(1, align), components, run, &write);
+}
+
+void mergeRanges(ValueRanges& into, const ValueRanges& more)
+{
+  // An empty range is {max, lowest}: taking the min and max of the ends
+  // leaves the other range as it is.
+  for (std::size_t c = 0; c < into.component.size() && c < more.component.size(); ++c)
+  {
+    widen(into.component[c], more.component[c]);
+    widen(into.finiteComponent[c], more.finiteComponent[c]);
+  }
+  widen(into.magnitude, more.magnitude);
+  widen(into.finiteMagnitude, more.finiteMagnitude);
+}
+
 template ValueRanges valueRanges<float>(const float*, std::size_t, int, const RangeRunner&);
 template ValueRanges valueRanges<double>(const double*, std::size_t, int, const RangeRunner&);
 template ValueRanges valueRanges<int>(const int*, std::size_t, int, const RangeRunner&);
 template ValueRanges valueRanges<long long>(const long long*, std::size_t, int, const RangeRunner&);
+
+template ValueRanges writeWithRanges<float>(
+  float*, std::size_t, std::size_t, int, const RangeRunner&, const BlockWriter&);
+template ValueRanges writeWithRanges<double>(
+  double*, std::size_t, std::size_t, int, const RangeRunner&, const BlockWriter&);
+template ValueRanges writeWithRanges<int>(
+  int*, std::size_t, std::size_t, int, const RangeRunner&, const BlockWriter&);
+template ValueRanges writeWithRanges<long long>(
+  long long*, std::size_t, std::size_t, int, const RangeRunner&, const BlockWriter&);
 
 } // namespace bp

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace bp
@@ -39,6 +40,23 @@ struct ValueRanges
 template <typename T>
 ValueRanges valueRanges(
   const T* values, std::size_t tuples, int components, const RangeRunner& run);
+
+/// Writes tuples [begin, end) of an array; called on disjoint blocks, in parallel.
+using BlockWriter = std::function<void(std::size_t begin, std::size_t end)>;
+
+/**
+ * Has `write` fill `tuples` tuples of `values` and returns their ranges. It
+ * is called on blocks of whole multiples of `align` tuples (`tuples` is one
+ * too), small enough to stay in cache, and each block's ranges are taken
+ * right after it is written: one pass over the array's memory, not two.
+ */
+template <typename T>
+ValueRanges writeWithRanges(T* values, std::size_t tuples, std::size_t align, int components,
+  const RangeRunner& run, const BlockWriter& write);
+
+/// Widens `into` to hold the values `more` was taken over as well (both of
+/// arrays with the same number of components).
+void mergeRanges(ValueRanges& into, const ValueRanges& more);
 
 } // namespace bp
 

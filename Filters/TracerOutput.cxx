@@ -22,7 +22,9 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -172,48 +174,77 @@ void storeComponentRanges(
 }
 
 /**
- * Hands `array` its ranges, computed now while the values are warm, in the
- * information keys where VTK caches them: VTK uses them until the array is
- * next modified. ParaView's data information asks for all of them after each
- * update, which cost 40% of a frame when VTK computed them (issue 16). Call it
- * after the array's last Modified().
+ * Calls f with `array`'s values as T* for the value types the output writes
+ * (float, double, int, vtkIdType); false for any other.
  */
-void primeRanges(vtkDataArray* array, const bp::RangeRunner& run)
+template <typename F>
+bool withValues(vtkDataArray* array, F&& f)
 {
-  const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
-  const int n = array->GetNumberOfComponents();
-  if (tuples == 0)
-  {
-    return;
-  }
-  const void* values = array->GetVoidPointer(0);
-  bp::ValueRanges r;
+  void* values = array->GetVoidPointer(0);
   switch (array->GetDataType())
   {
     case VTK_FLOAT:
-      r = bp::valueRanges(static_cast<const float*>(values), tuples, n, run);
-      break;
+      f(static_cast<float*>(values));
+      return true;
     case VTK_DOUBLE:
-      r = bp::valueRanges(static_cast<const double*>(values), tuples, n, run);
-      break;
+      f(static_cast<double*>(values));
+      return true;
     case VTK_INT:
-      r = bp::valueRanges(static_cast<const int*>(values), tuples, n, run);
-      break;
+      f(static_cast<int*>(values));
+      return true;
     case VTK_ID_TYPE:
       static_assert(std::is_same<vtkIdType, long long>::value, "ValueRanges has long long");
-      r = bp::valueRanges(static_cast<const long long*>(values), tuples, n, run);
-      break;
+      f(static_cast<long long*>(values));
+      return true;
     default:
-      return; // VTK computes it when asked
+      return false;
   }
+}
+
+/**
+ * Hands `array` its ranges in the information keys where VTK caches them:
+ * VTK uses them until the array is next modified. ParaView's data
+ * information asks for all of them after each update, which cost 40% of a
+ * frame when VTK computed them (issue 16). Call it after the array's last
+ * Modified().
+ */
+void storeRanges(vtkDataArray* array, const bp::ValueRanges& r)
+{
   vtkInformation* info = array->GetInformation();
   storeComponentRanges(info, vtkAbstractArray::PER_COMPONENT(), r.component);
   storeComponentRanges(info, vtkAbstractArray::PER_FINITE_COMPONENT(), r.finiteComponent);
-  if (n > 1)
+  if (array->GetNumberOfComponents() > 1)
   {
     info->Set(vtkDataArray::L2_NORM_RANGE(), r.magnitude.data(), 2);
     info->Set(vtkDataArray::L2_NORM_FINITE_RANGE(), r.finiteMagnitude.data(), 2);
   }
+}
+
+/**
+ * Writes an array's `particles` tuples with `write` (blocks of whole
+ * elements of `n` particles) and its tuples after them (the trails) with
+ * `extend`, and returns the ranges of all of them: the particles' taken
+ * block by block as they are written, while in cache.
+ */
+bp::ValueRanges writeRanged(vtkDataArray* array, std::size_t particles, std::size_t n,
+  const bp::RangeRunner& run, const bp::BlockWriter& write, const std::function<void()>& extend)
+{
+  const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
+  const int components = array->GetNumberOfComponents();
+  bp::ValueRanges r;
+  withValues(array,
+    [&](auto* values)
+    {
+      r = bp::writeWithRanges(values, particles, n, components, run, write);
+      if (tuples > particles)
+      {
+        extend();
+        bp::mergeRanges(r,
+          bp::valueRanges(
+            values + particles * std::size_t(components), tuples - particles, components, run));
+      }
+    });
+  return r;
 }
 
 /// A pose of an element's trail that the output shows.
@@ -262,47 +293,43 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
   const std::vector<TrailPose>& trail, bpvtk::OutputStorage& storage, const bp::RangeRunner& run)
 {
   const bool doubles = frame.reach * std::ldexp(1.0, -23) > 1e-4 * frame.cellLength;
-  const vtkIdType N = vtkIdType(engine.particleCount());
+  const std::size_t N = engine.particleCount();
   const std::size_t n = engine.particlesPerElement(), E = engine.elementCount();
   vtkNew<vtkPoints> points;
   points->SetData(
-    storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, N + vtkIdType(trail.size() * n)));
-  const float* local = engine.positions().data();
+    storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, vtkIdType(N + trail.size() * n)));
+  vtkDataArray* data = points->GetData();
   const double offset[3] = { frame.offset[0], frame.offset[1], frame.offset[2] };
   // Written through the array's own pointer: a virtual call per component
   // made this copy cost half an engine step (12 ms at a million particles).
-  auto shift = [&](auto* coords)
+  auto shifted = [&](auto* coords, const float* local, std::size_t begin, std::size_t end)
   {
     using Coordinate = std::remove_pointer_t<decltype(coords)>;
-    vtkSMPTools::For(vtkIdType(0), 3 * N,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType k = begin; k < end; ++k)
-        {
-          coords[k] = Coordinate(double(local[k]) + offset[k % 3]);
-        }
-      });
-    // The trails' poses after the elements, a block of n points each.
-    for (std::size_t j = 0; j < trail.size(); ++j)
+    for (std::size_t k = 3 * begin; k < 3 * end; ++k)
     {
-      const float* p =
-        engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
-      Coordinate* out = coords + 3 * (std::size_t(N) + j * n);
-      for (std::size_t k = 0; k < 3 * n; ++k)
-      {
-        out[k] = Coordinate(double(p[k]) + offset[k % 3]);
-      }
+      coords[k] = Coordinate(double(local[k - 3 * begin]) + offset[k % 3]);
     }
   };
-  if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
-  {
-    shift(d->GetPointer(0));
-  }
-  else
-  {
-    shift(floats(points->GetData()));
-  }
-  primeRanges(points->GetData(), run);
+  bp::ValueRanges ranges;
+  withValues(data,
+    [&](auto* coords)
+    {
+      const float* local = engine.positions().data();
+      ranges = writeRanged(
+        data, N, 1, run,
+        [&](std::size_t begin, std::size_t end) { shifted(coords, local + 3 * begin, begin, end); },
+        [&]
+        {
+          // The trails' poses after the elements, a block of n points each.
+          for (std::size_t j = 0; j < trail.size(); ++j)
+          {
+            const float* p =
+              engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
+            shifted(coords, p, N + j * n, N + (j + 1) * n);
+          }
+        });
+    });
+  storeRanges(data, ranges);
   output->SetPoints(points);
 }
 
@@ -317,119 +344,125 @@ struct FillContext
   const bp::RangeRunner& run;
   const std::vector<TrailPose>& trail;
   std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> arrays;
+  const bp::RangeRunner serial = bp::serialRunner(); ///< inside a block
 
   vtkDataArray* array(bp::OutputArrayId id) const { return this->arrays[std::size_t(id)]; }
 };
 
-/// Writes `count` floats of element e's `stride` at `values` on every
-/// particle of every element e.
-void perElementTuple(
-  float* out, const bp::Engine& engine, const float* values, int stride, int count)
+/// Normals (of whole elements: the block's ends are whole elements) and Force.
+void writeParticleState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
-  const std::size_t n = engine.particlesPerElement();
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(engine.elementCount()),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType e = begin; e < end; ++e)
-      {
-        const float* v = values + std::size_t(e) * std::size_t(stride);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-          std::copy_n(v, count, out + (std::size_t(e) * n + i) * std::size_t(count));
-        }
-      }
-    });
-}
-
-/// Writes value(e) on every particle of every element e.
-template <typename T, typename Value>
-void perElement(T* out, const bp::Engine& engine, const Value& value)
-{
-  const vtkIdType n = vtkIdType(engine.particlesPerElement());
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(engine.elementCount()),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType e = begin; e < end; ++e)
-      {
-        std::fill_n(out + e * n, n, T(value(std::size_t(e))));
-      }
-    });
-}
-
-void fillParticleState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
-{
-  const std::size_t N = c.engine.particleCount();
+  const std::size_t n = c.engine.particlesPerElement();
   switch (row.id)
   {
     case bp::OutputArrayId::Normals:
-      std::memcpy(floats(out), c.engine.normals().data(), sizeof(float) * 3 * N);
+      // From the positions, straight into the output: the engine's own
+      // normals would cost a pass and a copy more (issue 16).
+      for (std::size_t e = begin / n; e < end / n; ++e)
+      {
+        bp::elementNormals(
+          c.engine.shape(), c.engine.positions().data() + 3 * e * n, floats(out) + 3 * e * n);
+      }
       break;
     case bp::OutputArrayId::Force:
-      std::memcpy(floats(out), c.engine.forces().data(), sizeof(float) * N);
+      std::copy(
+        c.engine.forces().data() + begin, c.engine.forces().data() + end, floats(out) + begin);
       break;
     default:
       break;
   }
 }
 
+/// The field's velocity at particles [begin, end) into `velocity` (3 floats
+/// each, from its first), and |curl| into `vorticity` (may be null).
+void sampleParticles(
+  const FillContext& c, std::size_t begin, std::size_t end, float* velocity, float* vorticity)
+{
+  bp::sampleAtPositions(c.field, c.frame.time, c.engine.positions().data() + 3 * begin, end - begin,
+    velocity, vorticity, c.serial);
+}
+
 /**
  * Velocity, and Vorticity from the same cell, in one pass: the Velocity row
- * fills both, and the Vorticity row alone only when Velocity is left out.
+ * writes both (the table lists it first), and the Vorticity row only when
+ * Velocity is left out.
  */
-void fillFieldSample(const bp::OutputArray& row, vtkDataArray* /*out*/, const FillContext& c)
+void writeFieldSample(const bp::OutputArray& row, vtkDataArray* /*out*/, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
   vtkDataArray* velocityArray = c.array(bp::OutputArrayId::Velocity);
   vtkDataArray* vorticityArray = c.array(bp::OutputArrayId::Vorticity);
   if (row.id == bp::OutputArrayId::Vorticity && velocityArray)
   {
-    return; // filled with Velocity
+    return; // written with Velocity
   }
-  const std::size_t N = c.engine.particleCount();
-  const float* positions = c.engine.positions().data();
-  std::vector<float> scratch;
-  float* velocity = velocityArray ? floats(velocityArray) : nullptr;
-  if (!velocity)
+  float* vorticity = vorticityArray ? floats(vorticityArray) + begin : nullptr;
+  if (velocityArray)
   {
-    scratch.resize(3 * N);
-    velocity = scratch.data();
+    sampleParticles(c, begin, end, floats(velocityArray) + 3 * begin, vorticity);
   }
-  float* vorticity = vorticityArray ? floats(vorticityArray) : nullptr;
-  bp::sampleAtPositions(c.field, c.frame.time, positions, N, velocity, vorticity, c.run);
+  else
+  {
+    std::vector<float> velocity(3 * (end - begin));
+    sampleParticles(c, begin, end, velocity.data(), vorticity);
+  }
 }
 
-void fillDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+/// Speed: |Velocity|, from the Velocity array where the output has it.
+void writeDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
-  if (row.id == bp::OutputArrayId::Speed)
+  if (row.id != bp::OutputArrayId::Speed)
   {
-    std::vector<float> sampled; // Velocity's values when the output leaves it out
-    const float* v = nullptr;
-    if (vtkDataArray* velocity = c.array(bp::OutputArrayId::Velocity))
-    {
-      v = floats(velocity);
-    }
-    else
-    {
-      sampled.resize(3 * c.engine.particleCount());
-      bp::sampleAtPositions(c.field, c.frame.time, c.engine.positions().data(),
-        c.engine.particleCount(), sampled.data(), nullptr, c.run);
-      v = sampled.data();
-    }
-    float* speed = floats(out);
-    vtkSMPTools::For(vtkIdType(0), vtkIdType(c.engine.particleCount()),
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const float* w = v + 3 * i;
-          speed[i] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        }
-      });
+    return;
+  }
+  std::vector<float> sampled; // Velocity's values when the output leaves it out
+  const float* v;
+  if (vtkDataArray* velocity = c.array(bp::OutputArrayId::Velocity))
+  {
+    v = floats(velocity) + 3 * begin;
+  }
+  else
+  {
+    sampled.resize(3 * (end - begin));
+    sampleParticles(c, begin, end, sampled.data(), nullptr);
+    v = sampled.data();
+  }
+  float* speed = floats(out) + begin;
+  for (std::size_t i = 0; i < end - begin; ++i)
+  {
+    const float* w = v + 3 * i;
+    speed[i] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   }
 }
 
-void fillElementState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+/// Writes value(e) on particles [begin, end), e being each one's element.
+template <typename T, typename Value>
+void perElement(T* out, std::size_t n, std::size_t begin, std::size_t end, const Value& value)
+{
+  for (std::size_t e = begin / n; e < end / n; ++e)
+  {
+    std::fill_n(out + e * n, n, T(value(e)));
+  }
+}
+
+/// Writes `count` floats of each element's tuple of `stride` at `values` on
+/// particles [begin, end).
+void perElementTuple(float* out, std::size_t n, std::size_t begin, std::size_t end,
+  const float* values, std::size_t stride, std::size_t count)
+{
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    std::copy_n(values + (i / n) * stride, count, out + i * count);
+  }
+}
+
+void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
   const bp::Engine& engine = c.engine;
+  const std::size_t n = engine.particlesPerElement();
   const int axis = c.frame.coloringAxis;
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const auto& b = c.frame.domain;
@@ -440,99 +473,93 @@ void fillElementState(const bp::OutputArray& row, vtkDataArray* out, const FillC
     case bp::OutputArrayId::Lifetime:
       // An element whose life ended in the last step is released at the next:
       // none left, not a negative time.
-      perElement(
-        floats(out), engine, [&](std::size_t e) { return std::max(engine.lifetimes()[e], 0.0f); });
+      perElement(floats(out), n, begin, end,
+        [&](std::size_t e) { return std::max(engine.lifetimes()[e], 0.0f); });
       break;
     case bp::OutputArrayId::ElementId:
-      perElement(static_cast<vtkIdTypeArray*>(out)->GetPointer(0), engine,
+      perElement(static_cast<vtkIdTypeArray*>(out)->GetPointer(0), n, begin, end,
         [&](std::size_t e) { return engine.elementIds()[e]; });
       break;
     case bp::OutputArrayId::Layer: // the release centre along the colouring axis
-      perElement(floats(out), engine,
+      perElement(floats(out), n, begin, end,
         [&](std::size_t e) { return double(centres[3 * e + axis]) + c.frame.offset[axis]; });
       break;
     case bp::OutputArrayId::Radius: // the release centre's distance from the axis
-      perElement(floats(out), engine,
+      perElement(floats(out), n, begin, end,
         [&](std::size_t e)
         { return std::hypot(centres[3 * e + u] - cu, centres[3 * e + v] - cv); });
       break;
     case bp::OutputArrayId::ElementOrientation:
-      perElementTuple(floats(out), engine, engine.poses().data(), 4, 4);
+      perElementTuple(floats(out), n, begin, end, engine.poses().data(), 4, 4);
       break;
     case bp::OutputArrayId::ElementSpin:
-      perElementTuple(floats(out), engine, engine.spins().data(), 4, 3);
+      perElementTuple(floats(out), n, begin, end, engine.spins().data(), 4, 3);
       break;
     case bp::OutputArrayId::SpinVorticityRatio:
-      perElementTuple(floats(out), engine, engine.spins().data() + 3, 4, 1);
+      perElementTuple(floats(out), n, begin, end, engine.spins().data() + 3, 4, 1);
       break;
     default:
       break;
   }
 }
 
-void fillTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+void writeTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
   if (row.id == bp::OutputArrayId::ParticleIndex)
   {
     int* index = static_cast<vtkIntArray*>(out)->GetPointer(0);
-    const vtkIdType n = vtkIdType(c.engine.particlesPerElement());
-    vtkSMPTools::For(vtkIdType(0), out->GetNumberOfTuples(),
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-          index[i] = int(i % n);
-      });
+    const std::size_t n = c.engine.particlesPerElement();
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      index[i] = int(i % n);
+    }
   }
 }
 
-/// Age: 0 on the elements, each trail pose's age on its points.
-void fillTrailAge(const bp::OutputArray&, vtkDataArray* out, const FillContext& c)
-{
-  float* age = floats(out);
-  const std::size_t N = c.engine.particleCount(), n = c.engine.particlesPerElement();
-  std::fill_n(age, N, 0.0f);
-  for (std::size_t j = 0; j < c.trail.size(); ++j)
-  {
-    std::fill_n(age + N + j * n, n, c.trail[j].age);
-  }
-}
-
-/// Fills `out` as its row's source says.
-void fillArray(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+/// Writes particles [begin, end) of `out` as its row's source says (the
+/// block's ends are whole elements).
+void writeParticles(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
 {
   switch (row.source)
   {
     case bp::ArraySource::ParticleState:
-      fillParticleState(row, out, c);
+      writeParticleState(row, out, c, begin, end);
       break;
     case bp::ArraySource::FieldSample:
-      fillFieldSample(row, out, c);
+      writeFieldSample(row, out, c, begin, end);
       break;
     case bp::ArraySource::Derived:
-      fillDerived(row, out, c);
+      writeDerived(row, out, c, begin, end);
       break;
     case bp::ArraySource::ElementState:
-      fillElementState(row, out, c);
+      writeElementState(row, out, c, begin, end);
       break;
     case bp::ArraySource::TemplateIndex:
-      fillTemplateIndex(row, out, c);
+      writeTemplateIndex(row, out, c, begin, end);
       break;
-    case bp::ArraySource::TrailAge:
-      fillTrailAge(row, out, c);
+    case bp::ArraySource::TrailAge: // 0 on the elements themselves
+      std::fill(floats(out) + begin, floats(out) + end, 0.0f);
       break;
   }
 }
 
 /**
  * The values of a trail pose's points: its element's (the pose is drawn
- * coloured as its element is now), but Age (filled) and Normals (of the pose).
+ * coloured as its element is now), but Age (each pose's own) and Normals
+ * (of the pose).
  */
 void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
 {
   const std::size_t N = c.engine.particleCount(), n = c.engine.particlesPerElement();
   const std::size_t E = c.engine.elementCount();
-  if (row.source == bp::ArraySource::TrailAge || c.trail.empty())
+  if (row.source == bp::ArraySource::TrailAge)
   {
+    for (std::size_t j = 0; j < c.trail.size(); ++j)
+    {
+      std::fill_n(floats(out) + N + j * n, n, c.trail[j].age);
+    }
     return;
   }
   if (row.id == bp::OutputArrayId::Normals)
@@ -554,6 +581,7 @@ void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillCont
     std::memcpy(bytes + (N + j * n) * tuple, bytes + c.trail[j].element * n * tuple, n * tuple);
   }
 }
+
 } // namespace
 
 namespace bpvtk
@@ -684,22 +712,25 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
       context.arrays[std::size_t(row.id)] = arrays.back();
     }
   }
+  // In the table's order: a row may read the arrays of rows before it.
   vtkPointData* pd = output->GetPointData();
+  std::vector<std::pair<vtkDataArray*, bp::ValueRanges>> ranged;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     if (vtkDataArray* array = context.array(row.id))
     {
-      fillArray(row, array, context);
-      extendToTrail(row, array, context);
+      ranged.emplace_back(array,
+        writeRanged(
+          array, engine.particleCount(), engine.particlesPerElement(), run,
+          [&](std::size_t begin, std::size_t end)
+          { writeParticles(row, array, context, begin, end); },
+          [&] { extendToTrail(row, array, context); }));
       addToPointData(pd, row, array);
     }
   }
-  for (vtkDataArray* array : context.arrays)
+  for (const auto& arrayRanges : ranged)
   {
-    if (array)
-    {
-      primeRanges(array, run); // every value written
-    }
+    storeRanges(arrayRanges.first, arrayRanges.second); // after the last Modified()
   }
 }
 

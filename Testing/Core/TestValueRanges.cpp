@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -122,4 +124,82 @@ TEST(ValueRanges, EveryComponentCountMatchesVtksRules)
       EXPECT_EQ(r.magnitude, expected.magnitude);
     }
   }
+}
+
+TEST(ValueRanges, WrittenBlockByBlockAsIfWrittenFirst)
+{
+  // 10,007 elements of 7 particles: blocks of whole elements, the last one
+  // short, on every runner, the pool included.
+  const std::size_t align = 7, tuples = align * 10007;
+  std::mt19937 random(11);
+  std::normal_distribution<float> value(0.0f, 5.0f);
+  std::vector<float> source(3 * tuples);
+  for (float& v : source)
+    v = value(random);
+  source[40] = std::numeric_limits<float>::quiet_NaN();
+  source[41] = std::numeric_limits<float>::infinity();
+  const Naive expected = naive(source, 3);
+  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::threadRunner(3), bp::poolRunner(2) })
+  {
+    std::vector<float> out(source.size(), -1.0f);
+    std::vector<int> writes(tuples, 0);
+    bool aligned = true;
+    const bp::ValueRanges r = bp::writeWithRanges(out.data(), tuples, align, 3, run,
+      [&](std::size_t begin, std::size_t end)
+      {
+        aligned = aligned && begin % align == 0 && end % align == 0 && begin < end;
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          ++writes[i];
+          std::copy_n(source.data() + 3 * i, 3, out.data() + 3 * i);
+        }
+      });
+    EXPECT_TRUE(aligned);
+    EXPECT_EQ(std::count(writes.begin(), writes.end(), 1), std::ptrdiff_t(tuples));
+    EXPECT_EQ(0, std::memcmp(out.data(), source.data(), sizeof(float) * out.size()));
+    for (std::size_t c = 0; c < 3; ++c)
+    {
+      EXPECT_EQ(r.component[c], expected.component[c]) << c;
+      EXPECT_EQ(r.finiteComponent[c], expected.finiteComponent[c]) << c;
+    }
+    EXPECT_EQ(r.magnitude, expected.magnitude);
+    EXPECT_EQ(r.finiteMagnitude, expected.finiteMagnitude);
+  }
+}
+
+TEST(ValueRanges, MergedRangesCoverBothParts)
+{
+  std::vector<float> values = { 1, 2, -4, 8, 3, 0.5f };
+  const bp::ValueRanges whole = bp::valueRanges(values.data(), 3, 2, bp::serialRunner());
+  bp::ValueRanges merged = bp::valueRanges(values.data(), 2, 2, bp::serialRunner());
+  bp::mergeRanges(merged, bp::valueRanges(values.data() + 4, 1, 2, bp::serialRunner()));
+  EXPECT_EQ(merged.component, whole.component);
+  EXPECT_EQ(merged.finiteComponent, whole.finiteComponent);
+  EXPECT_EQ(merged.magnitude, whole.magnitude);
+  // An empty part changes nothing.
+  bp::mergeRanges(merged, bp::valueRanges(values.data(), 0, 2, bp::serialRunner()));
+  EXPECT_EQ(merged.component, whole.component);
+  EXPECT_EQ(merged.magnitude, whole.magnitude);
+}
+
+TEST(Parallel, APoolCalledFromItsOwnJobRunsTheInnerCallOnItsCaller)
+{
+  // The output's writers run inside pool jobs; a nested call must neither
+  // deadlock nor lose a range.
+  const bp::RangeRunner run = bp::poolRunner(2);
+  std::vector<int> hits(1000, 0);
+  run(10,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        run(100,
+          [&, k](std::size_t b, std::size_t e)
+          {
+            for (std::size_t i = b; i < e; ++i)
+              ++hits[k * 100 + i];
+          });
+      }
+    });
+  EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), 1000);
 }
