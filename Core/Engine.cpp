@@ -1346,61 +1346,14 @@ void Engine::normalsOf(std::size_t e)
   elementNormals(this->Shape, this->Positions.data() + 3 * e * n, this->Normals.data() + 3 * e * n);
 }
 
-void elementNormals(const ElementTemplate& shape, const float* p, float* nr)
-{
-  const std::size_t n = shape.particleCount();
-  std::fill_n(nr, 3 * n, 0.0f);
-  for (const auto& tri : shape.triangles)
-  {
-    const float* a = p + 3 * tri[0];
-    const float* b = p + 3 * tri[1];
-    const float* c = p + 3 * tri[2];
-    const float u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const float v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    const float x[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-      u[0] * v[1] - u[1] * v[0] };
-    const float len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    if (!(len > 0.0f))
-    {
-      continue;
-    }
-    for (std::uint32_t idx : tri)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        nr[3 * idx + k] += x[k] / len;
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    float* q = nr + 3 * i;
-    const float len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-    if (len > 0.0f)
-    {
-      q[0] /= len;
-      q[1] /= len;
-      q[2] /= len;
-    }
-    else
-    {
-      // No (non-degenerate) triangle: a fixed normal keeps the output finite.
-      q[0] = 0.0f;
-      q[1] = 0.0f;
-      q[2] = 1.0f;
-    }
-  }
-}
-
 void Engine::updateNormals(const RangeRunner& run)
 {
+  const std::size_t n = this->particlesPerElement();
   run(this->elementCount(),
-    [this](std::size_t begin, std::size_t end)
+    [this, n](std::size_t begin, std::size_t end)
     {
-      for (std::size_t e = begin; e < end; ++e)
-      {
-        this->normalsOf(e);
-      }
+      elementsNormals(this->Shape, this->Positions.data() + 3 * begin * n,
+        this->Normals.data() + 3 * begin * n, end - begin);
     });
 }
 

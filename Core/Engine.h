@@ -32,6 +32,7 @@
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
 
+#include "ElementNormals.h"
 #include "ElementTemplate.h"
 #include "Parallel.h"
 #include "SuperSet.h"
@@ -524,10 +525,6 @@ struct ParticleLayout
  * the spring and triangle lists 4096 wide). Otherwise which one does not.
  */
 std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
-
-/// The normals of one element of `shape` at positions `p` (3n floats) into
-/// `normals` (3n floats), as Engine::updateNormals() computes them.
-void elementNormals(const ElementTemplate& shape, const float* p, float* normals);
 
 /// Velocity and |curl v| sampled at `count` positions (3 floats each);
 /// `vorticity` may be null.
