@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ValueRanges.h"
 
+#include <emmintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -157,6 +159,99 @@ void scanTuples(const T* values, std::size_t begin, std::size_t end, Partial<T>&
   }
 }
 
+/// Folds four SSE lanes of running ends into `into` (a lane that saw only
+/// NaN has counted nothing).
+void foldLanes(__m128 low, __m128 high, MinMax<float>& into)
+{
+  alignas(16) float lows[4], highs[4];
+  _mm_store_ps(lows, low);
+  _mm_store_ps(highs, high);
+  for (int l = 0; l < 4; ++l)
+  {
+    MinMax<float> lane;
+    lane.low = lows[l];
+    lane.high = highs[l];
+    if (lane.counted())
+      into.merge(lane);
+  }
+}
+
+/**
+ * scanTuples() of float tuples of 1 or 3 components in SSE lanes, four
+ * tuples a round. _mm_min_ps(v, low) is v < low ? v : low, the scalar rule
+ * (NaN never wins), and a squared magnitude adds x², y², z² in the scalar
+ * order, so the ends are the scalar path's bit for bit. Three components are
+ * read as 12 floats and transposed to x, y, z registers (lane = tuple).
+ */
+template <std::size_t N>
+void scanFloatTuples(const float* values, std::size_t begin, std::size_t end, Partial<float>& part)
+{
+  static_assert(N == 1 || N == 3, "lanes for 1 or 3 components");
+  const __m128 max = _mm_set1_ps(std::numeric_limits<float>::max());
+  const __m128 lowest = _mm_set1_ps(std::numeric_limits<float>::lowest());
+  __m128 low[N], high[N], lowSquared = max, highSquared = lowest;
+  for (std::size_t c = 0; c < N; ++c)
+  {
+    low[c] = max;
+    high[c] = lowest;
+  }
+  std::size_t i = begin;
+  for (; i + 4 <= end; i += 4)
+  {
+    const float* t = values + N * i;
+    if constexpr (N == 1)
+    {
+      const __m128 v = _mm_loadu_ps(t);
+      low[0] = _mm_min_ps(v, low[0]);
+      high[0] = _mm_max_ps(v, high[0]);
+    }
+    else
+    {
+      // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3
+      const __m128 a = _mm_loadu_ps(t), b = _mm_loadu_ps(t + 4), c = _mm_loadu_ps(t + 8);
+      const __m128 xs = _mm_shuffle_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 2, 3, 0)),
+        _mm_shuffle_ps(b, c, _MM_SHUFFLE(1, 1, 2, 2)), _MM_SHUFFLE(2, 0, 1, 0));
+      const __m128 ys = _mm_shuffle_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 1, 1)),
+        _mm_shuffle_ps(b, c, _MM_SHUFFLE(2, 2, 3, 3)), _MM_SHUFFLE(2, 0, 2, 0));
+      const __m128 zs = _mm_shuffle_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(1, 1, 2, 2)),
+        _mm_shuffle_ps(c, c, _MM_SHUFFLE(3, 3, 0, 0)), _MM_SHUFFLE(2, 0, 2, 0));
+      const __m128 v[3] = { xs, ys, zs };
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        low[k] = _mm_min_ps(v[k], low[k]);
+        high[k] = _mm_max_ps(v[k], high[k]);
+      }
+      const __m128 squared =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(xs, xs), _mm_mul_ps(ys, ys)), _mm_mul_ps(zs, zs));
+      lowSquared = _mm_min_ps(squared, lowSquared);
+      highSquared = _mm_max_ps(squared, highSquared);
+    }
+  }
+  for (std::size_t c = 0; c < N; ++c)
+  {
+    foldLanes(low[c], high[c], part.all[c]);
+  }
+  if constexpr (N > 1)
+  {
+    foldLanes(lowSquared, highSquared, part.squared);
+  }
+  scanTuples<float, N>(values, i, end, part); // the last tuples, fewer than four
+}
+
+/// Tuples of N components: in SSE lanes where there is a lane path.
+template <typename T, std::size_t N>
+void scanTuplesFast(const T* values, std::size_t begin, std::size_t end, Partial<T>& part)
+{
+  if constexpr (std::is_same<T, float>::value && (N == 1 || N == 3))
+  {
+    scanFloatTuples<N>(values, begin, end, part);
+  }
+  else
+  {
+    scanTuples<T, N>(values, begin, end, part);
+  }
+}
+
 /// The chunk's ranges of all values; the finite ones copy them, and are
 /// computed apart only where an infinity made an end infinite.
 template <typename T>
@@ -167,13 +262,13 @@ void scanAll(const T* values, std::size_t begin, std::size_t end, std::size_t n,
   switch (n)
   {
     case 1:
-      scanTuples<T, 1>(values, begin, end, part);
+      scanTuplesFast<T, 1>(values, begin, end, part);
       return;
     case 2:
       scanTuples<T, 2>(values, begin, end, part);
       return;
     case 3:
-      scanTuples<T, 3>(values, begin, end, part);
+      scanTuplesFast<T, 3>(values, begin, end, part);
       return;
     case 4:
       scanTuples<T, 4>(values, begin, end, part);
