@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -98,15 +99,42 @@ public:
       this->Count = count;
       this->Pending = this->Workers.size();
       ++this->Generation;
+      this->Posted = this->Generation;
+      this->Remaining = this->Workers.size();
     }
     this->Wake.notify_all();
     f(0, count / this->Chunks); // the caller's own chunk
+    spinWhile([this] { return this->Remaining.load(std::memory_order_acquire) > 0; });
     std::unique_lock<std::mutex> lock(this->Mutex);
     this->Done.wait(lock, [this] { return this->Pending == 0; });
     this->Busy = false;
   }
 
 private:
+  /**
+   * Waits up to SpinTime while `busy()` holds, awake: the tracer's loops
+   * come in bursts (a step's phases, the output's arrays one after another),
+   * and a thread woken from sleep starts tens of microseconds late, which
+   * cost a 4,096-element update about a tenth of its time (issue 16).
+   */
+  template <typename Busy>
+  static void spinWhile(const Busy& busy)
+  {
+    constexpr auto SpinTime = std::chrono::microseconds(50);
+    const auto until = std::chrono::steady_clock::now() + SpinTime;
+    while (busy())
+    {
+      for (int k = 0; k < 64 && busy(); ++k)
+      {
+        std::this_thread::yield();
+      }
+      if (std::chrono::steady_clock::now() > until)
+      {
+        return;
+      }
+    }
+  }
+
   void work(unsigned index)
   {
     std::size_t seen = 0;
@@ -114,6 +142,7 @@ private:
     {
       const RangeFunction* job;
       std::size_t count;
+      spinWhile([&] { return this->Posted.load(std::memory_order_acquire) == seen; });
       {
         std::unique_lock<std::mutex> lock(this->Mutex);
         this->Wake.wait(lock, [&] { return this->Generation != seen; });
@@ -129,6 +158,7 @@ private:
       {
         std::lock_guard<std::mutex> lock(this->Mutex);
         --this->Pending;
+        --this->Remaining;
       }
       this->Done.notify_one();
     }
@@ -137,6 +167,8 @@ private:
   const std::size_t Chunks;
   std::vector<std::thread> Workers;
   std::atomic<bool> Busy{ false }; ///< while the workers serve a call
+  /// Generation and Pending, for the spinning threads to read unlocked.
+  std::atomic<std::size_t> Posted{ 0 }, Remaining{ 0 };
   std::mutex Mutex;
   std::condition_variable Wake, Done;
   const RangeFunction* Job = nullptr;

@@ -11,11 +11,20 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 
 namespace bpvtk
 {
 void SmpPool::refresh()
 {
+  // VTK 9.2 asks the system for its processors on every call (a file read):
+  // at most once a second.
+  const auto now = std::chrono::steady_clock::now();
+  if (this->Current->threads > 0 && now - this->Checked < std::chrono::seconds(1))
+  {
+    return;
+  }
+  this->Checked = now;
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   if (threads != this->Current->threads)
   {

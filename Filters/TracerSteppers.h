@@ -17,6 +17,7 @@
 #include "Stepper.h"
 #include "WorkQueue.h"
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -37,7 +38,8 @@ class SmpPool
 {
 public:
   SmpPool() { this->refresh(); }
-  /// Follows a change of vtkSMPTools' thread count (call between loops).
+  /// Follows a change of vtkSMPTools' thread count (call between loops;
+  /// it looks at most once a second).
   void refresh();
   /// Runs ranges on this pool, as resized by refresh().
   bp::RangeRunner runner() const;
@@ -49,6 +51,7 @@ private:
     bp::RangeRunner run;
   };
   std::shared_ptr<State> Current = std::make_shared<State>();
+  std::chrono::steady_clock::time_point Checked;
 };
 
 class TracerSteppers
