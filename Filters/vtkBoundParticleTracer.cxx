@@ -285,6 +285,12 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
         whole->Set(SDDP::UPDATE_EXTENT(), whole->Get(SDDP::WHOLE_EXTENT()), 6);
       }
       whole->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
+      if (!whole->Has(SDDP::TIME_STEPS()))
+      {
+        // The time copied from downstream means nothing to a source without
+        // time steps, but a new one would run it again on every update.
+        whole->Remove(SDDP::UPDATE_TIME_STEP());
+      }
     }
   }
   if (I.Plan.unsteady())
