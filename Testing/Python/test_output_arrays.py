@@ -5,9 +5,11 @@ Vorticity from one cell, array memory reused between frames); this checks
 that nothing a user colours by changed for it:
 - every array's values against numpy: Velocity and Vorticity from the field's
   grid points (trilinear, and the curl of the cell's trilinear interpolant,
-  blended between time steps), Speed from Velocity;
+  blended between time steps), Speed from Velocity, Normals from the
+  triangles of the output's strips;
 - every range ParaView reads (per component, finite, magnitude) against numpy,
-  and a Surface display coloured by each array rescales to that range;
+  with trails too (their points follow the elements'), and a Surface display
+  coloured by each array rescales to that range;
 - an earlier frame held by someone else is never overwritten;
 - Output Arrays: only the arrays asked for, the same values, the same trace.
 """
@@ -96,6 +98,31 @@ def check_ranges(name, array, values):
                      "%s magnitude: range %s, numpy %s" % (name, got, magnitude))
 
 
+def reference_normals(out):
+    """Each particle's normal the slow way: the mean of the unit normals of
+    the triangles of its element's strip (VTK's strip order), normalised."""
+    points = vtk_to_numpy(out.GetPoints().GetData()).astype(np.float64)
+    strips = out.GetStrips()
+    offsets = vtk_to_numpy(strips.GetOffsetsArray())
+    ids = vtk_to_numpy(strips.GetConnectivityArray())
+    sums = np.zeros_like(points)
+    for c in range(len(offsets) - 1):
+        strip = ids[offsets[c]:offsets[c + 1]]
+        for j in range(len(strip) - 2):
+            a, b, d = strip[j], strip[j + 1], strip[j + 2]
+            if j % 2:
+                a, b = b, a
+            normal = np.cross(points[b] - points[a], points[d] - points[a])
+            length = np.linalg.norm(normal)
+            if length > 0:
+                sums[[a, b, d]] += normal / length
+    lengths = np.linalg.norm(sums, axis=1)
+    normals = np.tile([0.0, 0.0, 1.0], (len(points), 1))
+    used = lengths > 0
+    normals[used] = sums[used] / lengths[used, None]
+    return normals
+
+
 def check_frame(label, tracer, flow, t):
     tracer.UpdatePipeline(t)
     out = tracer.GetClientSideObject().GetOutputDataObject(0)
@@ -113,6 +140,9 @@ def check_frame(label, tracer, flow, t):
     speed = vtk_to_numpy(pd.GetArray("Speed")).astype(np.float64)
     bptest.check(np.allclose(speed, np.linalg.norm(got_velocity, axis=1), rtol=1e-6, atol=1e-7),
                  "%s: Speed is |Velocity|" % label)
+    normals = vtk_to_numpy(pd.GetArray("Normals")).astype(np.float64)
+    worst = np.abs(normals - reference_normals(out)).max()
+    bptest.check(worst <= 1e-5, "%s: Normals off by %.3g" % (label, worst))
     check_ranges("%s Points" % label, out.GetPoints().GetData(), vtk_to_numpy(out.GetPoints().GetData()))
     for i in range(pd.GetNumberOfArrays()):
         array = pd.GetArray(i)
@@ -159,6 +189,20 @@ for flow_name in ("Shear Layer", "Double Gyre"):
     Delete(view)
     Delete(tracer)
     Delete(flow)
+
+# With trails, the ranges cover the trail poses' points as well as the elements'.
+flow = AnalyticFlow(Flow="Shear Layer", Resolution=[24, 20, 12])
+tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4,
+                             Engine="CPU", Trails=1, TrailLength=4, TrailSpacing=1)
+tracer.UpdatePipeline(list(tracer.TimestepValues)[6])
+out = tracer.GetClientSideObject().GetOutputDataObject(0)
+bptest.check(out.GetNumberOfPoints() > 300 * 16, "trails add points (%d)" % out.GetNumberOfPoints())
+check_ranges("trails Points", out.GetPoints().GetData(), vtk_to_numpy(out.GetPoints().GetData()))
+for i in range(out.GetPointData().GetNumberOfArrays()):
+    array = out.GetPointData().GetArray(i)
+    check_ranges("trails %s" % array.GetName(), array, vtk_to_numpy(array))
+Delete(tracer)
+Delete(flow)
 
 # Output Arrays: only the arrays asked for, each as in the full output; the
 # trace itself is the same whatever is asked for.
