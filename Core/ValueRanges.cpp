@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <type_traits>
 
@@ -338,41 +339,76 @@ void scanBlock(const T* values, std::size_t begin, std::size_t end, std::size_t 
   part.merge(found);
 }
 
-/// valueRanges() and writeWithRanges(): `write` may be null (nothing to write).
-template <typename T>
-ValueRanges rangesOf(T* values, std::size_t tuples, std::size_t align, int components,
-  const RangeRunner& run, const BlockWriter* write)
+/// The running ranges of one array of a pass, type-erased.
+class Scanner
 {
-  Partial<T> total(components);
-  std::mutex merging;
-  const std::size_t n = std::size_t(components);
-  // About 2,048 tuples a block: written and scanned while in the core's cache.
-  const std::size_t block = std::max<std::size_t>(1, 2048 / align) * align;
-  run(tuples / align,
-    [&](std::size_t first, std::size_t last)
-    {
-      Partial<T> part(components);
-      for (std::size_t begin = first * align; begin < last * align; begin += block)
-      {
-        const std::size_t end = std::min(begin + block, last * align);
-        if (write)
-        {
-          (*write)(begin, end);
-        }
-        scanBlock(values, begin, end, n, part);
-      }
-      std::lock_guard<std::mutex> lock(merging);
-      total.merge(part);
-    });
-  ValueRanges r;
-  for (std::size_t c = 0; c < n; ++c)
+public:
+  virtual ~Scanner() = default;
+  /// Writes tuples [begin, end) (when there is a writer) and takes their ranges.
+  virtual void block(std::size_t begin, std::size_t end) = 0;
+  /// A new, empty scanner of the same array (one per thread's range).
+  virtual std::unique_ptr<Scanner> fresh() const = 0;
+  /// Adds what `other` (from fresh()) found.
+  virtual void merge(const Scanner& other) = 0;
+  virtual ValueRanges ranges() const = 0;
+};
+
+template <typename T>
+class TypedScanner : public Scanner
+{
+public:
+  TypedScanner(const T* values, int components, const BlockWriter* write)
+    : Values(values)
+    , Components(components)
+    , Write(write)
+    , Part(components)
   {
-    r.component.push_back(toRange(total.all[c]));
-    r.finiteComponent.push_back(toRange(total.finite[c]));
   }
-  r.magnitude = rootOf(total.squared);
-  r.finiteMagnitude = rootOf(total.finiteSquared);
-  return r;
+  void block(std::size_t begin, std::size_t end) override
+  {
+    if (this->Write && *this->Write)
+    {
+      (*this->Write)(begin, end);
+    }
+    scanBlock(this->Values, begin, end, std::size_t(this->Components), this->Part);
+  }
+  std::unique_ptr<Scanner> fresh() const override
+  {
+    return std::make_unique<TypedScanner>(this->Values, this->Components, this->Write);
+  }
+  void merge(const Scanner& other) override
+  {
+    this->Part.merge(static_cast<const TypedScanner&>(other).Part);
+  }
+  ValueRanges ranges() const override
+  {
+    ValueRanges r;
+    for (std::size_t c = 0; c < std::size_t(this->Components); ++c)
+    {
+      r.component.push_back(toRange(this->Part.all[c]));
+      r.finiteComponent.push_back(toRange(this->Part.finite[c]));
+    }
+    r.magnitude = rootOf(this->Part.squared);
+    r.finiteMagnitude = rootOf(this->Part.finiteSquared);
+    return r;
+  }
+
+private:
+  const T* Values;
+  int Components;
+  const BlockWriter* Write;
+  Partial<T> Part;
+};
+
+std::unique_ptr<Scanner> scannerOf(const WrittenArray& a)
+{
+  if (a.floats)
+    return std::make_unique<TypedScanner<float>>(a.floats, a.components, &a.write);
+  if (a.doubles)
+    return std::make_unique<TypedScanner<double>>(a.doubles, a.components, &a.write);
+  if (a.ints)
+    return std::make_unique<TypedScanner<int>>(a.ints, a.components, &a.write);
+  return std::make_unique<TypedScanner<long long>>(a.longs, a.components, &a.write);
 }
 
 void widen(Range& into, const Range& more)
@@ -382,18 +418,67 @@ void widen(Range& into, const Range& more)
 
 } // namespace
 
+std::vector<ValueRanges> writeTogether(const std::vector<WrittenArray>& arrays, std::size_t tuples,
+  std::size_t align, const RangeRunner& run)
+{
+  align = std::max<std::size_t>(1, align);
+  std::vector<std::unique_ptr<Scanner>> total;
+  for (const WrittenArray& a : arrays)
+  {
+    total.push_back(scannerOf(a));
+  }
+  std::mutex merging;
+  // About 2,048 tuples a block: written and scanned while in the core's cache.
+  const std::size_t block = std::max<std::size_t>(1, 2048 / align) * align;
+  run(tuples / align,
+    [&](std::size_t first, std::size_t last)
+    {
+      std::vector<std::unique_ptr<Scanner>> part;
+      for (const auto& t : total)
+      {
+        part.push_back(t->fresh());
+      }
+      for (std::size_t begin = first * align; begin < last * align; begin += block)
+      {
+        const std::size_t end = std::min(begin + block, last * align);
+        for (const auto& p : part)
+        {
+          p->block(begin, end);
+        }
+      }
+      std::lock_guard<std::mutex> lock(merging);
+      for (std::size_t k = 0; k < part.size(); ++k)
+      {
+        total[k]->merge(*part[k]);
+      }
+    });
+  std::vector<ValueRanges> r;
+  for (const auto& t : total)
+  {
+    r.push_back(t->ranges());
+  }
+  return r;
+}
+
 template <typename T>
 ValueRanges valueRanges(const T* values, std::size_t tuples, int components, const RangeRunner& run)
 {
   // Nothing is written through the pointer without a writer.
-  return rangesOf(const_cast<T*>(values), tuples, 1, components, run, nullptr);
+  WrittenArray a;
+  a.setValues(const_cast<T*>(values));
+  a.components = components;
+  return writeTogether({ a }, tuples, 1, run).front();
 }
 
 template <typename T>
 ValueRanges writeWithRanges(T* values, std::size_t tuples, std::size_t align, int components,
   const RangeRunner& run, const BlockWriter& write)
 {
-  return rangesOf(values, tuples, std::max<std::size_t>(1, align), components, run, &write);
+  WrittenArray a;
+  a.setValues(values);
+  a.components = components;
+  a.write = write;
+  return writeTogether({ a }, tuples, align, run).front();
 }
 
 void mergeRanges(ValueRanges& into, const ValueRanges& more)

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <vector>
 
 namespace bp
@@ -53,6 +54,45 @@ using BlockWriter = std::function<void(std::size_t begin, std::size_t end)>;
 template <typename T>
 ValueRanges writeWithRanges(T* values, std::size_t tuples, std::size_t align, int components,
   const RangeRunner& run, const BlockWriter& write);
+
+/// One array of a pass that writes several (writeTogether).
+struct WrittenArray
+{
+  /// Exactly one of these is set: the array's values.
+  float* floats = nullptr;
+  double* doubles = nullptr;
+  int* ints = nullptr;
+  long long* longs = nullptr;
+  int components = 1;
+  BlockWriter write; ///< may be empty: the values are already there
+
+  /// Sets the pointer of T's type.
+  template <typename T>
+  void setValues(T* values)
+  {
+    if constexpr (std::is_same<T, float>::value)
+      this->floats = values;
+    else if constexpr (std::is_same<T, double>::value)
+      this->doubles = values;
+    else if constexpr (std::is_same<T, int>::value)
+      this->ints = values;
+    else
+    {
+      static_assert(std::is_same<T, long long>::value, "float, double, int or long long");
+      this->longs = values;
+    }
+  }
+};
+
+/**
+ * writeWithRanges() for several arrays of `tuples` tuples in one parallel
+ * pass: for each block of whole multiples of `align` tuples, each array in
+ * order is written and its block's ranges taken, so a writer may read the
+ * same block of an array before it in the list. One round of the threads
+ * instead of one per array. Returns the ranges in the arrays' order.
+ */
+std::vector<ValueRanges> writeTogether(const std::vector<WrittenArray>& arrays, std::size_t tuples,
+  std::size_t align, const RangeRunner& run);
 
 /// Widens `into` to hold the values `more` was taken over as well (both of
 /// arrays with the same number of components).

@@ -220,31 +220,52 @@ void storeRanges(vtkDataArray* array, const bp::ValueRanges& r)
   }
 }
 
-/**
- * Writes an array's `particles` tuples with `write` (blocks of whole
- * elements of `n` particles) and its tuples after them (the trails) with
- * `extend`, and returns the ranges of all of them: the particles' taken
- * block by block as they are written, while in cache.
- */
-bp::ValueRanges writeRanged(vtkDataArray* array, std::size_t particles, std::size_t n,
-  const bp::RangeRunner& run, const bp::BlockWriter& write, const std::function<void()>& extend)
+/// An output array in the pass that writes them all: what writes its
+/// particles' tuples (blocks of whole elements) and what writes the tuples
+/// after them (the trails', may be empty when there are none).
+struct OutputWrite
 {
-  const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
-  const int components = array->GetNumberOfComponents();
-  bp::ValueRanges r;
-  withValues(array,
-    [&](auto* values)
+  vtkDataArray* array;
+  bp::BlockWriter particles;
+  std::function<void()> trail;
+};
+
+/**
+ * Writes every array in one parallel pass over blocks of whole elements of
+ * `n` particles, each block's ranges taken as it is written (while in
+ * cache), then the trails' tuples, and hands each array its ranges.
+ */
+void writeAll(const std::vector<OutputWrite>& writes, std::size_t particles, std::size_t n,
+  const bp::RangeRunner& run)
+{
+  std::vector<bp::WrittenArray> pass(writes.size());
+  for (std::size_t k = 0; k < writes.size(); ++k)
+  {
+    withValues(writes[k].array, [&](auto* values) { pass[k].setValues(values); });
+    pass[k].components = writes[k].array->GetNumberOfComponents();
+    pass[k].write = writes[k].particles;
+  }
+  std::vector<bp::ValueRanges> ranges = bp::writeTogether(pass, particles, n, run);
+  for (std::size_t k = 0; k < writes.size(); ++k)
+  {
+    vtkDataArray* array = writes[k].array;
+    const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
+    if (tuples > particles)
     {
-      r = bp::writeWithRanges(values, particles, n, components, run, write);
-      if (tuples > particles)
-      {
-        extend();
-        bp::mergeRanges(r,
-          bp::valueRanges(
-            values + particles * std::size_t(components), tuples - particles, components, run));
-      }
-    });
-  return r;
+      writes[k].trail();
+      const std::size_t c = std::size_t(array->GetNumberOfComponents());
+      withValues(array,
+        [&](auto* values)
+        {
+          bp::mergeRanges(
+            ranges[k], bp::valueRanges(values + particles * c, tuples - particles, int(c), run));
+        });
+    }
+  }
+  for (std::size_t k = 0; k < writes.size(); ++k)
+  {
+    storeRanges(writes[k].array, ranges[k]); // after the arrays' last Modified()
+  }
 }
 
 /// A pose of an element's trail that the output shows.
@@ -286,11 +307,13 @@ std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
 }
 
 /**
- * World positions: grid-local ones plus the grid's offset, in double where
- * float would lose more than 1e-4 of a cell at the field's coordinates.
+ * The output's points, and how to write them: world positions, grid-local
+ * ones plus the grid's offset, in double where float would lose more than
+ * 1e-4 of a cell at the field's coordinates.
  */
-void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::OutputFrame& frame,
-  const std::vector<TrailPose>& trail, bpvtk::OutputStorage& storage, const bp::RangeRunner& run)
+OutputWrite setPoints(vtkPolyData* output, const bp::Engine& engine,
+  const bpvtk::OutputFrame& frame, const std::vector<TrailPose>& trail,
+  bpvtk::OutputStorage& storage)
 {
   const bool doubles = frame.reach * std::ldexp(1.0, -23) > 1e-4 * frame.cellLength;
   const std::size_t N = engine.particleCount();
@@ -298,56 +321,52 @@ void setPoints(vtkPolyData* output, const bp::Engine& engine, const bpvtk::Outpu
   vtkNew<vtkPoints> points;
   points->SetData(
     storage.pointData(doubles ? VTK_DOUBLE : VTK_FLOAT, vtkIdType(N + trail.size() * n)));
+  output->SetPoints(points);
   vtkDataArray* data = points->GetData();
-  const double offset[3] = { frame.offset[0], frame.offset[1], frame.offset[2] };
   // Written through the array's own pointer: a virtual call per component
   // made this copy cost half an engine step (12 ms at a million particles).
   // Four points (12 values) a round against the offset repeated four times:
   // a loop the compiler turns into packed conversions and additions.
-  double tiled[12];
-  for (int k = 0; k < 12; ++k)
+  std::array<double, 12> tiled;
+  for (std::size_t k = 0; k < 12; ++k)
   {
-    tiled[k] = offset[k % 3];
+    tiled[k] = frame.offset[k % 3];
   }
-  auto shifted = [&](auto* coords, const float* local, std::size_t begin, std::size_t end)
+  auto shift = [tiled, data](const float* local, std::size_t begin, std::size_t end)
   {
-    using Coordinate = std::remove_pointer_t<decltype(coords)>;
-    Coordinate* out = coords + 3 * begin;
-    const std::size_t values = 3 * (end - begin);
-    std::size_t k = 0;
-    for (; k + 12 <= values; k += 12)
-    {
-      for (std::size_t j = 0; j < 12; ++j)
+    withValues(data,
+      [&](auto* coords)
       {
-        out[k + j] = Coordinate(double(local[k + j]) + tiled[j]);
-      }
-    }
-    for (; k < values; ++k)
-    {
-      out[k] = Coordinate(double(local[k]) + offset[k % 3]);
-    }
-  };
-  bp::ValueRanges ranges;
-  withValues(data,
-    [&](auto* coords)
-    {
-      const float* local = engine.positions().data();
-      ranges = writeRanged(
-        data, N, 1, run,
-        [&](std::size_t begin, std::size_t end) { shifted(coords, local + 3 * begin, begin, end); },
-        [&]
+        using Coordinate = std::remove_pointer_t<decltype(coords)>;
+        Coordinate* out = coords + 3 * begin;
+        const std::size_t values = 3 * (end - begin);
+        std::size_t k = 0;
+        for (; k + 12 <= values; k += 12)
         {
-          // The trails' poses after the elements, a block of n points each.
-          for (std::size_t j = 0; j < trail.size(); ++j)
+          for (std::size_t j = 0; j < 12; ++j)
           {
-            const float* p =
-              engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
-            shifted(coords, p, N + j * n, N + (j + 1) * n);
+            out[k + j] = Coordinate(double(local[k + j]) + tiled[j]);
           }
-        });
-    });
-  storeRanges(data, ranges);
-  output->SetPoints(points);
+        }
+        for (; k < values; ++k)
+        {
+          out[k] = Coordinate(double(local[k]) + tiled[k % 3]);
+        }
+      });
+  };
+  const float* local = engine.positions().data();
+  return { data,
+    [shift, local](std::size_t begin, std::size_t end) { shift(local + 3 * begin, begin, end); },
+    [shift, &engine, &trail, N, n, E]
+    {
+      // The trails' poses after the elements, a block of n points each.
+      for (std::size_t j = 0; j < trail.size(); ++j)
+      {
+        const float* p =
+          engine.trailPositions().data() + 3 * (trail[j].slot * E + trail[j].element) * n;
+        shift(p, N + j * n, N + (j + 1) * n);
+      }
+    } };
 }
 
 /// What filling an array may read: the engine, the field, the frame, and the
@@ -710,7 +729,7 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
   const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run)
 {
   const std::vector<TrailPose> trail = trailPoses(engine, frame.time);
-  setPoints(output, engine, frame, trail, storage, run);
+  std::vector<OutputWrite> writes = { setPoints(output, engine, frame, trail, storage) };
   storage.applyCells(output, engine, trail.size());
   const vtkIdType points =
     vtkIdType(engine.particleCount() + trail.size() * engine.particlesPerElement());
@@ -728,24 +747,18 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
   }
   // In the table's order: a row may read the arrays of rows before it.
   vtkPointData* pd = output->GetPointData();
-  std::vector<std::pair<vtkDataArray*, bp::ValueRanges>> ranged;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     if (vtkDataArray* array = context.array(row.id))
     {
-      ranged.emplace_back(array,
-        writeRanged(
-          array, engine.particleCount(), engine.particlesPerElement(), run,
-          [&](std::size_t begin, std::size_t end)
-          { writeParticles(row, array, context, begin, end); },
-          [&] { extendToTrail(row, array, context); }));
+      writes.push_back({ array,
+        [&row, array, &context](std::size_t begin, std::size_t end)
+        { writeParticles(row, array, context, begin, end); },
+        [&row, array, &context] { extendToTrail(row, array, context); } });
       addToPointData(pd, row, array);
     }
   }
-  for (const auto& arrayRanges : ranged)
-  {
-    storeRanges(arrayRanges.first, arrayRanges.second); // after the last Modified()
-  }
+  writeAll(writes, engine.particleCount(), engine.particlesPerElement(), run);
 }
 
 void fillRangeOutput(
