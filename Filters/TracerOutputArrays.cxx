@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TracerOutputArrays.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace bpvtk
+{
+namespace
+{
+float* floats(vtkDataArray* a)
+{
+  return static_cast<vtkFloatArray*>(a)->GetPointer(0);
+}
+
+/// Normals (of whole elements: the block's ends are whole elements) and Force.
+void writeParticleState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  const std::size_t n = c.engine.particlesPerElement();
+  switch (row.id)
+  {
+    case bp::OutputArrayId::Normals:
+      // From the positions, straight into the output: the engine's own
+      // normals would cost a pass and a copy more (issue 16).
+      bp::elementsNormals(c.engine.shape(), c.engine.positions().data() + 3 * begin,
+        floats(out) + 3 * begin, (end - begin) / n);
+      break;
+    case bp::OutputArrayId::Force:
+      std::copy(
+        c.engine.forces().data() + begin, c.engine.forces().data() + end, floats(out) + begin);
+      break;
+    default:
+      break;
+  }
+}
+
+/// The field's velocity at particles [begin, end) into `velocity` (3 floats
+/// each, from its first), and |curl| into `vorticity` (may be null).
+void sampleParticles(
+  const FillContext& c, std::size_t begin, std::size_t end, float* velocity, float* vorticity)
+{
+  bp::sampleAtPositions(c.field, c.frame.time, c.engine.positions().data() + 3 * begin, end - begin,
+    velocity, vorticity, c.serial);
+}
+
+/**
+ * Velocity, and Vorticity from the same cell, in one pass: the Velocity row
+ * writes both (the table lists it first), and the Vorticity row only when
+ * Velocity is left out.
+ */
+void writeFieldSample(const bp::OutputArray& row, vtkDataArray* /*out*/, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  vtkDataArray* velocityArray = c.array(bp::OutputArrayId::Velocity);
+  vtkDataArray* vorticityArray = c.array(bp::OutputArrayId::Vorticity);
+  if (row.id == bp::OutputArrayId::Vorticity && velocityArray)
+  {
+    return; // written with Velocity
+  }
+  float* vorticity = vorticityArray ? floats(vorticityArray) + begin : nullptr;
+  if (velocityArray)
+  {
+    sampleParticles(c, begin, end, floats(velocityArray) + 3 * begin, vorticity);
+  }
+  else
+  {
+    std::vector<float> velocity(3 * (end - begin));
+    sampleParticles(c, begin, end, velocity.data(), vorticity);
+  }
+}
+
+/// Speed: |Velocity|, from the Velocity array where the output has it.
+void writeDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  if (row.id != bp::OutputArrayId::Speed)
+  {
+    return;
+  }
+  std::vector<float> sampled; // Velocity's values when the output leaves it out
+  const float* v;
+  if (vtkDataArray* velocity = c.array(bp::OutputArrayId::Velocity))
+  {
+    v = floats(velocity) + 3 * begin;
+  }
+  else
+  {
+    sampled.resize(3 * (end - begin));
+    sampleParticles(c, begin, end, sampled.data(), nullptr);
+    v = sampled.data();
+  }
+  float* speed = floats(out) + begin;
+  for (std::size_t i = 0; i < end - begin; ++i)
+  {
+    const float* w = v + 3 * i;
+    speed[i] = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  }
+}
+
+/// Writes value(e) on particles [begin, end), e being each one's element.
+template <typename T, typename Value>
+void perElement(T* out, std::size_t n, std::size_t begin, std::size_t end, const Value& value)
+{
+  for (std::size_t e = begin / n; e < end / n; ++e)
+  {
+    std::fill_n(out + e * n, n, T(value(e)));
+  }
+}
+
+/// Writes `count` floats of each element's tuple of `stride` at `values` on
+/// particles [begin, end).
+void perElementTuple(float* out, std::size_t n, std::size_t begin, std::size_t end,
+  const float* values, std::size_t stride, std::size_t count)
+{
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    std::copy_n(values + (i / n) * stride, count, out + i * count);
+  }
+}
+
+void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  const bp::Engine& engine = c.engine;
+  const std::size_t n = engine.particlesPerElement();
+  const int axis = c.frame.coloringAxis;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto& b = c.frame.domain;
+  const double cu = 0.5 * (b[2 * u] + b[2 * u + 1]), cv = 0.5 * (b[2 * v] + b[2 * v + 1]);
+  const float* centres = engine.initialCenters().data();
+  switch (row.id)
+  {
+    case bp::OutputArrayId::Lifetime:
+      // An element whose life ended in the last step is released at the next:
+      // none left, not a negative time.
+      perElement(floats(out), n, begin, end,
+        [&](std::size_t e) { return std::max(engine.lifetimes()[e], 0.0f); });
+      break;
+    case bp::OutputArrayId::ElementId:
+      perElement(static_cast<vtkIdTypeArray*>(out)->GetPointer(0), n, begin, end,
+        [&](std::size_t e) { return engine.elementIds()[e]; });
+      break;
+    case bp::OutputArrayId::Layer: // the release centre along the colouring axis
+      perElement(floats(out), n, begin, end,
+        [&](std::size_t e) { return double(centres[3 * e + axis]) + c.frame.offset[axis]; });
+      break;
+    case bp::OutputArrayId::Radius: // the release centre's distance from the axis
+      perElement(floats(out), n, begin, end,
+        [&](std::size_t e)
+        { return std::hypot(centres[3 * e + u] - cu, centres[3 * e + v] - cv); });
+      break;
+    case bp::OutputArrayId::ElementOrientation:
+      perElementTuple(floats(out), n, begin, end, engine.poses().data(), 4, 4);
+      break;
+    case bp::OutputArrayId::ElementSpin:
+      perElementTuple(floats(out), n, begin, end, engine.spins().data(), 4, 3);
+      break;
+    case bp::OutputArrayId::SpinVorticityRatio:
+      perElementTuple(floats(out), n, begin, end, engine.spins().data() + 3, 4, 1);
+      break;
+    default:
+      break;
+  }
+}
+
+void writeTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  if (row.id == bp::OutputArrayId::ParticleIndex)
+  {
+    int* index = static_cast<vtkIntArray*>(out)->GetPointer(0);
+    const std::size_t n = c.engine.particlesPerElement();
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      index[i] = int(i % n);
+    }
+  }
+}
+} // namespace
+
+std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
+{
+  std::vector<TrailPose> poses;
+  const int length = int(engine.trailTimes().size());
+  const std::size_t E = engine.elementCount();
+  for (int k = 0; k < length; ++k)
+  {
+    const std::size_t slot = std::size_t(engine.trailSlot(k));
+    const double recorded = engine.trailTimes()[slot];
+    if (!(recorded < time))
+    {
+      continue;
+    }
+    for (std::size_t e = 0; e < E; ++e)
+    {
+      if (engine.trailGenerations()[slot * E + e] == engine.generations()[e] &&
+        !(engine.resetFlags()[e] & bp::ReleaseHidden))
+      {
+        poses.push_back({ slot, e, float(time - recorded) });
+      }
+    }
+  }
+  return poses;
+}
+
+void writeParticles(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end)
+{
+  switch (row.source)
+  {
+    case bp::ArraySource::ParticleState:
+      writeParticleState(row, out, c, begin, end);
+      break;
+    case bp::ArraySource::FieldSample:
+      writeFieldSample(row, out, c, begin, end);
+      break;
+    case bp::ArraySource::Derived:
+      writeDerived(row, out, c, begin, end);
+      break;
+    case bp::ArraySource::ElementState:
+      writeElementState(row, out, c, begin, end);
+      break;
+    case bp::ArraySource::TemplateIndex:
+      writeTemplateIndex(row, out, c, begin, end);
+      break;
+    case bp::ArraySource::TrailAge: // 0 on the elements themselves
+      std::fill(floats(out) + begin, floats(out) + end, 0.0f);
+      break;
+  }
+}
+
+void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c)
+{
+  const std::size_t N = c.engine.particleCount(), n = c.engine.particlesPerElement();
+  const std::size_t E = c.engine.elementCount();
+  if (row.source == bp::ArraySource::TrailAge)
+  {
+    for (std::size_t j = 0; j < c.trail.size(); ++j)
+    {
+      std::fill_n(floats(out) + N + j * n, n, c.trail[j].age);
+    }
+    return;
+  }
+  if (row.id == bp::OutputArrayId::Normals)
+  {
+    float* normals = floats(out);
+    for (std::size_t j = 0; j < c.trail.size(); ++j)
+    {
+      const TrailPose& t = c.trail[j];
+      bp::elementNormals(c.engine.shape(),
+        c.engine.trailPositions().data() + 3 * (t.slot * E + t.element) * n,
+        normals + 3 * (N + j * n));
+    }
+    return;
+  }
+  auto* bytes = static_cast<unsigned char*>(out->GetVoidPointer(0));
+  const std::size_t tuple = std::size_t(out->GetDataTypeSize() * out->GetNumberOfComponents());
+  for (std::size_t j = 0; j < c.trail.size(); ++j)
+  {
+    std::memcpy(bytes + (N + j * n) * tuple, bytes + c.trail[j].element * n * tuple, n * tuple);
+  }
+}
+
+} // namespace bpvtk

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerOutputArrays.h
+ * @brief How each row of bp::outputArrays() is written into the tracer's
+ * output: a block of whole elements at a time, inside the one pass that
+ * writes every array (TracerOutput.cxx), and the trails' tuples after them.
+ */
+#ifndef BoundParticles_TracerOutputArrays_h
+#define BoundParticles_TracerOutputArrays_h
+
+#include "TracerOutput.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+class vtkDataArray;
+
+namespace bpvtk
+{
+
+/// A pose of an element's trail that the output shows.
+struct TrailPose
+{
+  std::size_t slot;    ///< in the engine's trail ring
+  std::size_t element; ///< whose pose it is
+  float age;           ///< how long before the time shown
+};
+
+/**
+ * The trail poses to show at `time`, newest first: those of each shown
+ * element's own generation (a released element starts a new trail), strictly
+ * older than the time shown (a step taken back leaves none ahead of it).
+ */
+std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time);
+
+/// What filling an array may read: the engine, the field, the frame, and the
+/// output's arrays by id (null where the frame does not want one); those of
+/// earlier rows are filled.
+struct FillContext
+{
+  const bp::Engine& engine;
+  const bp::VectorField& field;
+  const OutputFrame& frame;
+  const bp::RangeRunner& run;
+  const std::vector<TrailPose>& trail;
+  std::array<vtkDataArray*, std::size_t(bp::OutputArrayId::Count)> arrays;
+  const bp::RangeRunner serial = bp::serialRunner(); ///< inside a block
+
+  vtkDataArray* array(bp::OutputArrayId id) const { return this->arrays[std::size_t(id)]; }
+};
+
+/// Writes particles [begin, end) of `out` as its row's source says (the
+/// block's ends are whole elements).
+void writeParticles(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
+  std::size_t begin, std::size_t end);
+
+/**
+ * The values of a trail pose's points: its element's (the pose is drawn
+ * coloured as its element is now), but Age (each pose's own) and Normals
+ * (of the pose).
+ */
+void extendToTrail(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c);
+
+} // namespace bpvtk
+
+#endif
