@@ -99,12 +99,10 @@ public:
       this->Count = count;
       this->Pending = this->Workers.size();
       ++this->Generation;
-      this->Posted = this->Generation;
-      this->Remaining = this->Workers.size();
     }
     this->Wake.notify_all();
     f(0, count / this->Chunks); // the caller's own chunk
-    spinWhile([this] { return this->Remaining.load(std::memory_order_acquire) > 0; });
+    spinWhile([this] { return this->Pending.load() > 0; });
     std::unique_lock<std::mutex> lock(this->Mutex);
     this->Done.wait(lock, [this] { return this->Pending == 0; });
     this->Busy = false;
@@ -142,7 +140,7 @@ private:
     {
       const RangeFunction* job;
       std::size_t count;
-      spinWhile([&] { return this->Posted.load(std::memory_order_acquire) == seen; });
+      spinWhile([&] { return this->Generation.load() == seen; });
       {
         std::unique_lock<std::mutex> lock(this->Mutex);
         this->Wake.wait(lock, [&] { return this->Generation != seen; });
@@ -158,7 +156,6 @@ private:
       {
         std::lock_guard<std::mutex> lock(this->Mutex);
         --this->Pending;
-        --this->Remaining;
       }
       this->Done.notify_one();
     }
@@ -167,12 +164,12 @@ private:
   const std::size_t Chunks;
   std::vector<std::thread> Workers;
   std::atomic<bool> Busy{ false }; ///< while the workers serve a call
-  /// Generation and Pending, for the spinning threads to read unlocked.
-  std::atomic<std::size_t> Posted{ 0 }, Remaining{ 0 };
   std::mutex Mutex;
   std::condition_variable Wake, Done;
   const RangeFunction* Job = nullptr;
-  std::size_t Count = 0, Pending = 0, Generation = 0;
+  std::size_t Count = 0;
+  /// Changed under Mutex; atomic so that spinning threads may read them unlocked.
+  std::atomic<std::size_t> Pending{ 0 }, Generation{ 0 };
   bool Stop = false;
 };
 } // namespace
