@@ -2,6 +2,7 @@
 #include "GlObjects.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace bp
 {

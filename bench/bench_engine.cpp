@@ -17,6 +17,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -434,8 +435,8 @@ int main(int argc, char** argv)
   // of 8 poses recorded every 4 steps, against the plain step, measured in
   // turn so the machine's noise falls on all three alike.
   std::printf("\nStrip16, 2 threads, steady: seeing rotation against the plain step\n");
-  std::printf("%9s %16s %16s %16s\n", "elements", "plain steps/s", "poses steps/s",
-    "trail steps/s");
+  std::printf(
+    "%9s %16s %16s %16s\n", "elements", "plain steps/s", "poses steps/s", "trail steps/s");
   for (std::size_t elements : { std::size_t(4096), std::size_t(65536) })
   {
     const double dt = 0.5 * h / steady.maxSpeed();
@@ -460,8 +461,8 @@ int main(int argc, char** argv)
         });
     };
     const double plain = rate(false, false), poses = rate(true, false), trail = rate(false, true);
-    std::printf("%9zu %16.1f %16.1f %16.1f\n", elements, steps / plain, steps / poses,
-      steps / trail);
+    std::printf(
+      "%9zu %16.1f %16.1f %16.1f\n", elements, steps / plain, steps / poses, steps / trail);
     std::fflush(stdout);
   }
   std::printf("peak resident memory: %.1f MiB\n", peakRssKiB() / 1024.0);

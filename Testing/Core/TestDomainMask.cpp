@@ -6,6 +6,7 @@
 #include "Engine.h"
 #include "TestHelpers.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 #include "ElementTemplate.h"
 #include "Engine.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <algorithm>

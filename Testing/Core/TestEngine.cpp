@@ -4,6 +4,7 @@
 #include "CounterHash.h"
 #include "Pose.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 #include "Partition.h"
 #include "TestHelpers.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -5,6 +5,7 @@
 #include "Engine.h"
 #include "SuperSet.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -4,6 +4,7 @@
 #include "FieldCache.h"
 #include "TracePlan.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <cmath>

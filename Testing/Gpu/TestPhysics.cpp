@@ -7,6 +7,7 @@
 #include "HeadlessContext.h"
 #include "Stepper.h"
 
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include <algorithm>
