@@ -31,10 +31,16 @@
 #include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
 #include "vtkUnsignedCharArray.h"
+// VTK 9.4 replaced GLEW by glad as its OpenGL loader.
+#if __has_include("vtk_glad.h")
+#include "vtk_glad.h"
+#else
 #include "vtk_glew.h"
+#endif
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 
 namespace

@@ -11,24 +11,25 @@ out="$(realpath -m "${1:-$root/bench-output}")"
 shift || true
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 mkdir -p "$out"
+plugin="$(ls "$build"/lib/paraview-*/plugins/BoundParticles/BoundParticles.so | head -n 1)"
 "$build/bin/BoundParticlesBench" --csv "$out/engines.csv" "$@" | tee "$out/engines.txt"
 /usr/bin/python3 "$root/bench/plot.py" "$out/engines.csv" "$out/engines.png"
 # ParaView's own Particle Tracer on the same job, side by side.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/vs_paraview.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/vs_paraview.txt"
+  --plugin "$plugin" | tee "$out/vs_paraview.txt"
 # What one frame of Play costs (frame, update, step, draw), both engines and displays.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" \
+  --plugin "$plugin" \
   --csv "$out/play_frames.csv" | tee "$out/play_frames.txt"
 /usr/bin/python3 "$root/bench/plot_play.py" "$out/play_frames.csv" "$out/play_frames.png"
 # Steps per second under pvbatch with 1, 2 and 4 MPI ranks (and 1 rank of 2 threads).
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scaling.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_scaling.txt"
+  --plugin "$plugin" | tee "$out/parallel_scaling.txt"
 # How evenly 2 and 4 ranks share the elements over a hurricane run.
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_balance.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" | tee "$out/parallel_balance.txt"
+  --plugin "$plugin" | tee "$out/parallel_balance.txt"
 # What the defaults show on the shared real data (table and one picture each).
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
-  --plugin "$build/lib/paraview-5.11/plugins/BoundParticles/BoundParticles.so" \
+  --plugin "$plugin" \
   --data "$root/../shared/data" --pictures "$out/real-data" | tee "$out/real_data.txt"
 echo "bench: wrote $out/real_data.txt, $out/real-data/*.png, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/parallel_scaling.txt, $out/parallel_balance.txt"
