@@ -221,13 +221,16 @@ def run_case(name):
     points = data.GetNumberOfPoints() if data else 0
     finite = True
     if points:
-        finite = bool(numpy.isfinite(vtk_to_numpy(data.GetPoints().GetData())).all())
+        finite = numpy.isfinite(vtk_to_numpy(data.GetPoints().GetData())).all()
         pd = data.GetPointData()
         for k in range(pd.GetNumberOfArrays()):
             a = pd.GetArray(k)
             if a is not None:
-                finite = finite and bool(numpy.isfinite(vtk_to_numpy(a)).all())
-    print("RESULT " + json.dumps({"points": points, "finite": finite, "messages": log.messages}))
+                finite = finite and numpy.isfinite(vtk_to_numpy(a)).all()
+    # Plain Python values for json: under ParaView 5.13 with numpy 2 a numpy.bool
+    # reached the result after a Programmable Source ran, and json refuses those.
+    print("RESULT " + json.dumps({"points": int(points), "finite": True if finite else False,
+                                  "messages": [str(m) for m in log.messages]}))
 
 
 if args.case:
