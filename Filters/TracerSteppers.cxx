@@ -8,13 +8,85 @@
 #include "vtkInformation.h"
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkSMPTools.h"
+#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
 
 namespace bpvtk
 {
+namespace
+{
+/// The process runs vtkSMPTools sequentially only because that is the build's
+/// default (Debian's VTK), not because the user asked for it.
+bool sequentialByDefault()
+{
+  const char* backend = vtkSMPTools::GetBackend();
+  return !std::getenv("VTK_SMP_BACKEND_IN_USE") && backend && std::string(backend) == "Sequential";
+}
+
+/// The threads the STDThread backend would use: VTK_SMP_MAX_THREADS, else
+/// one per core.
+int threadsPerCore()
+{
+  const char* max = std::getenv("VTK_SMP_MAX_THREADS");
+  const int asked = max ? std::atoi(max) : 0;
+  return asked > 0 ? asked : std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+/// VTK 9.3+ keeps its STDThread and TBB threads between loops.
+constexpr bool VtkKeepsThreads = VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0);
+
+bool useVtkLoops()
+{
+  const char* pick = std::getenv("BOUNDPARTICLES_SMP_LOOPS");
+  if (pick && std::string(pick) == "pool")
+  {
+    return false;
+  }
+  if (pick && std::string(pick) == "vtk")
+  {
+    return true;
+  }
+  return VtkKeepsThreads;
+}
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+/// The loop through vtkSMPTools; on STDThread for its duration when the
+/// process is sequential by default (a local scope: restored right after).
+bp::RangeRunner vtkRunner(int threads, bool scopeStdThread)
+{
+  return [threads, scopeStdThread](std::size_t count, const bp::RangeFunction& f)
+  {
+    const auto loop = [&] {
+      vtkSMPTools::For(0, vtkIdType(count), [&](vtkIdType begin, vtkIdType end) { f(begin, end); });
+    };
+    if (scopeStdThread)
+    {
+      vtkSMPTools::LocalScope(
+        vtkSMPTools::Config(threads, "STDThread", vtkSMPTools::GetNestedParallelism()), loop);
+    }
+    else
+    {
+      loop();
+    }
+  };
+}
+#else
+bp::RangeRunner vtkRunner(int, bool)
+{
+  // VTK 9.2 cannot scope a backend to these loops; its own loops as they are.
+  return [](std::size_t count, const bp::RangeFunction& f) {
+    vtkSMPTools::For(0, vtkIdType(count), [&](vtkIdType begin, vtkIdType end) { f(begin, end); });
+  };
+}
+#endif
+} // namespace
+
 void SmpPool::refresh()
 {
   // VTK 9.2 asks the system for its processors on every call (a file read):
@@ -25,11 +97,16 @@ void SmpPool::refresh()
     return;
   }
   this->Checked = now;
-  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-  if (threads != this->Current->threads)
+  const bool byDefault = sequentialByDefault();
+  const int threads =
+    byDefault ? threadsPerCore() : std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  const bool vtkLoops = useVtkLoops();
+  if (threads != this->Current->threads || vtkLoops != this->Current->vtkLoops)
   {
     this->Current->threads = threads;
-    this->Current->run = bp::poolRunner(unsigned(threads));
+    this->Current->vtkLoops = vtkLoops;
+    this->Current->run =
+      vtkLoops ? vtkRunner(threads, byDefault) : bp::poolRunner(unsigned(threads));
   }
 }
 

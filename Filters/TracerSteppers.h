@@ -28,26 +28,38 @@ namespace bpvtk
 class PieceLayout;
 
 /**
- * Runs element ranges on persistent threads, as many as vtkSMPTools would
- * use (its backend and thread count: one thread on the Sequential backend).
- * VTK 9.2's STDThread backend starts and joins its threads in every parallel
- * loop, which cost a 4,096-element update more time than its engine step
- * (issue 16); these threads wait between loops instead.
+ * Runs the tracer's parallel loops (the engine's and the output's) on
+ * threads, without changing the process's SMP backend for anyone else.
+ *
+ * Which threads: the process's backend and thread count (vtkSMPTools), except
+ * that a process on the Sequential backend only because it is Debian's
+ * default (VTK_SMP_BACKEND_IN_USE unset) still gets one thread per core for
+ * these loops, as the STDThread backend would give.
+ *
+ * How: on VTK 9.3 and later through vtkSMPTools itself, whose STDThread and
+ * TBB backends keep their threads between loops (a local scope picks
+ * STDThread for these loops only). On VTK 9.2 (ParaView 5.11) through a pool
+ * of persistent threads of the core's (bp::poolRunner): 9.2's STDThread
+ * backend starts and joins its threads in every loop, which cost a
+ * 4,096-element update more time than its engine step (issue 16). The pool
+ * can go with ParaView 5.11. BOUNDPARTICLES_SMP_LOOPS=pool or =vtk picks one
+ * of the two where both exist (benchmarks: bench/smp_loops.py).
  */
 class SmpPool
 {
 public:
   SmpPool() { this->refresh(); }
-  /// Follows a change of vtkSMPTools' thread count (call between loops;
-  /// it looks at most once a second).
+  /// Follows a change of vtkSMPTools' backend or thread count (call between
+  /// loops; it looks at most once a second).
   void refresh();
-  /// Runs ranges on this pool, as resized by refresh().
+  /// Runs ranges as the last refresh() decided.
   bp::RangeRunner runner() const;
 
 private:
   struct State
   {
     int threads = 0;
+    bool vtkLoops = false;
     bp::RangeRunner run;
   };
   std::shared_ptr<State> Current = std::make_shared<State>();

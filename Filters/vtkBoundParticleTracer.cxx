@@ -15,31 +15,11 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <mutex>
+#include <cstdint>
 #include <new>
-
-namespace
-{
-/// Debian's VTK starts on the Sequential SMP backend; the engine is parallel
-/// over elements, so take the threaded one unless the user chose a backend.
-void preferThreadedBackend()
-{
-  static std::once_flag once;
-  std::call_once(once,
-    []
-    {
-      if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
-      {
-        vtkSMPTools::SetBackend("STDThread");
-      }
-    });
-}
-} // namespace
 
 // The request key's DataKey is where the output keeps the value it was made for.
 class vtkInformationGpuWorkQueueRequestKey : public vtkInformationIntegerRequestKey
@@ -60,7 +40,6 @@ vtkStandardNewMacro(vtkBoundParticleTracer);
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkInternals)
 {
-  preferThreadedBackend();
   this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
   for (const bp::OutputArray& row : bp::outputArrays())
