@@ -8,5 +8,5 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$(realpath -m "${1:-$root/demo-output}")"
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 plugin="$(ls "$build"/lib/paraview-*/plugins/BoundParticles/BoundParticles.so | head -n 1)"
-bash "$root/scripts/with-display.sh" \
+bash "$root/scripts/with-display.sh" --unless-egl \
   pvpython "$root/demo/demo.py" --plugin "$plugin" --output "$out"

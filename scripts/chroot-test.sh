@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Builds BoundParticles and runs its whole test suite against the ParaView of
+# another Debian suite, in a chroot made from Debian's archive:
+#
+#   bash scripts/chroot-test.sh trixie    # ParaView 5.13, VTK 9.3, Qt 6
+#   bash scripts/chroot-test.sh forky     # ParaView 6.1,  VTK 9.6, Qt 6
+#
+# The chroot is kept between runs in $BOUNDPARTICLES_CHROOT_DIR (default
+# /var/cache/boundparticles/chroots/SUITE); a kept one is updated only when
+# scripts/setup.sh asks for packages it lacks. Inside, the repository and the
+# shared data beside it are bind-mounted read-only and the build folder is kept
+# in the chroot (/build), so a second run rebuilds only what changed.
+# Every failure is printed with the suite's name. Needs root.
+set -euo pipefail
+
+suite="${1:?usage: chroot-test.sh SUITE (trixie or forky)}"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+shared="$(cd "$root/.." && pwd)/shared"
+chroots="${BOUNDPARTICLES_CHROOT_DIR:-/var/cache/boundparticles/chroots}"
+dir="$chroots/$suite"
+
+say() { echo "chroot-test[$suite]: $*"; }
+fail() {
+  say "FAILED: $*" >&2
+  exit 1
+}
+
+# The Debian mirror this machine's own apt sources name.
+mirror() {
+  local uri
+  uri="$(grep -hsE '^(URIs:|deb )' /etc/apt/sources.list.d/*.sources /etc/apt/sources.list \
+    | grep -m1 -E 'debian/?( |$)' | sed -E 's/^URIs: *//; s/^deb +(\[[^]]*\] +)?//; s/ .*//')"
+  echo "${uri:-http://deb.debian.org/debian}"
+}
+
+mounted=()
+unmount_all() {
+  local i
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
+    umount -l "${mounted[$i]}" 2>/dev/null || true
+  done
+}
+trap unmount_all EXIT
+
+bind() { # bind SOURCE TARGET [ro]
+  mkdir -p "$2"
+  mount --bind "$1" "$2"
+  mounted+=("$2")
+  if [ "${3:-}" = ro ]; then
+    mount -o remount,bind,ro "$2"
+  fi
+}
+
+make_chroot() {
+  command -v debootstrap >/dev/null || {
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null
+  }
+  # A suite newer than this machine's debootstrap uses sid's script.
+  local script=()
+  [ -e "/usr/share/debootstrap/scripts/$suite" ] || script=(/usr/share/debootstrap/scripts/sid)
+  say "debootstrap into $dir"
+  rm -rf "$dir.partial"
+  mkdir -p "$chroots"
+  debootstrap --variant=minbase "$suite" "$dir.partial" "$(mirror)" "${script[@]}" \
+    >"$chroots/$suite-debootstrap.log" 2>&1 \
+    || { tail -n 30 "$chroots/$suite-debootstrap.log" >&2; fail "debootstrap"; }
+  # An archive snapshot may serve a Release past its Valid-Until date.
+  echo 'Acquire::Check-Valid-Until "false";' >"$dir.partial/etc/apt/apt.conf.d/99boundparticles"
+  mv "$dir.partial" "$dir"
+}
+
+start=$SECONDS
+[ -d "$dir" ] || make_chroot
+cp /etc/resolv.conf "$dir/etc/resolv.conf" 2>/dev/null || true
+# Packages installed inside start no services (there is no init to run them).
+printf '#!/bin/sh\nexit 101\n' >"$dir/usr/sbin/policy-rc.d"
+chmod +x "$dir/usr/sbin/policy-rc.d"
+
+bind /proc "$dir/proc"
+bind /sys "$dir/sys"
+bind /dev "$dir/dev"
+bind /dev/pts "$dir/dev/pts"
+mkdir -p "$dir/dev/shm"
+bind "$root" "$dir/work/main" ro
+if [ -d "$shared" ]; then
+  bind "$shared" "$dir/work/shared" ro
+fi
+
+# Inside: install what the suite needs (scripts/setup.sh knows each suite's
+# packages), then build in /build and run ctest: the README's test command.
+say "build and test (chroot ready after $((SECONDS - start)) s)"
+if ! chroot "$dir" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+  HOME=/root LANG=C.UTF-8 BOUNDPARTICLES_BUILD_DIR=/build CI="${CI:-}" \
+  bash /work/main/scripts/test.sh; then
+  fail "the build or the test suite failed (see above; build logs in $dir/build)"
+fi
+say "passed in $((SECONDS - start)) s"
