@@ -29,6 +29,18 @@ def dark_view(time, size=(1280, 720)):
     return view
 
 
+def apply_preset(lut, name):
+    """Applies a colour-map preset by its ParaView 5 name: ParaView 6 names the
+    matplotlib maps without the " (matplotlib)" suffix ("Viridis")."""
+    from paraview import servermanager
+    presets = servermanager.vtkSMTransferFunctionPresets.GetInstance()
+    for candidate in (name, name.replace(" (matplotlib)", "")):
+        if presets.HasPreset(candidate):
+            lut.ApplyPreset(candidate, True)
+            return
+    raise ValueError("no colour-map preset named %r" % name)
+
+
 def save_tracers_picture(flow, layers, time, camera_position, path, line_width=1.0):
     """The field's outline and each (tracer, array, preset) of `layers`
     coloured by its array, seen from `camera_position` towards the origin,
@@ -41,7 +53,7 @@ def save_tracers_picture(flow, layers, time, camera_position, path, line_width=1
         tracer.UpdatePipeline(time)
         display = Show(tracer, view)
         ColorBy(display, ("POINTS", array))
-        GetColorTransferFunction(array).ApplyPreset(preset, True)
+        apply_preset(GetColorTransferFunction(array), preset)
         display.Specular = 0.3
         display.LineWidth = line_width
     Render(view)

@@ -11,7 +11,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import dark_view, picture_arguments  # noqa: E402
+from picture import apply_preset, dark_view, picture_arguments  # noqa: E402
 
 TIME = 1.6
 
@@ -49,7 +49,7 @@ def show_trails(tracer, view, representation="Surface"):
     display.SetRepresentationType(representation)
     ColorBy(display, ("POINTS", "Age"))
     lut = GetColorTransferFunction("Age")
-    lut.ApplyPreset("Viridis (matplotlib)", True)
+    apply_preset(lut, "Viridis (matplotlib)")
     lut.InvertTransferFunction()  # the element itself bright, its past fading to dark
     lut.EnableOpacityMapping = 1
     pwf = GetOpacityTransferFunction("Age")

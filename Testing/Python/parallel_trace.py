@@ -116,9 +116,13 @@ def all_traces():
     return cases
 
 
+# The filter that writes each point's rank: Process Id Scalars up to 5.13,
+# Process Ids (its successor, the only one in 6.x) after.
+process_ids = globals().get("ProcessIdScalars") or globals()["ProcessIds"]
+
 result = {}
 for name, (tracer, times) in all_traces().items():
-    ids = ProcessIdScalars(Input=tracer)
+    ids = process_ids(Input=tracer)
     steps = list(tracer.TimestepValues)
     # The offered time line: automatic ones come from the field's scale.
     result[name + "_times"] = numpy.array(steps)
