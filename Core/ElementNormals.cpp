@@ -1,12 +1,21 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ElementNormals.h"
 
-#include <emmintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+// Four elements in SSE2 lanes where the target has SSE2 (every x86-64 does).
+// Elsewhere (aarch64), or with BOUNDPARTICLES_NO_SIMD defined (to test this
+// path on x86-64), each element takes the scalar path: the same bits, since
+// the lanes are defined as equal to it.
+#if defined(__SSE2__) && !defined(BOUNDPARTICLES_NO_SIMD)
+#include <emmintrin.h>
+#define BOUNDPARTICLES_SSE2_LANES 1
+#else
+#define BOUNDPARTICLES_SSE2_LANES 0
+#endif
 
 namespace bp
 {
@@ -68,6 +77,7 @@ void elementNormalsVia(
   }
 }
 
+#if BOUNDPARTICLES_SSE2_LANES
 /**
  * elementNormalsVia() for four consecutive elements, one per lane: the same
  * IEEE operations in the same order (SSE2, no fused multiply-add), so the
@@ -148,6 +158,7 @@ void fourElementNormals(
     }
   }
 }
+#endif
 } // namespace
 
 void elementNormals(const ElementTemplate& shape, const float* p, float* nr)
@@ -169,14 +180,16 @@ void elementsNormals(
   const ElementTemplate& shape, const float* positions, float* normals, std::size_t count)
 {
   const std::size_t n = shape.particleCount(), stride = 3 * n;
+  std::size_t e = 0;
+#if BOUNDPARTICLES_SSE2_LANES
   float local[12 * LocalParticles];
   std::vector<float> large(n > LocalParticles ? 12 * n : 0);
   float* sum = n > LocalParticles ? large.data() : local;
-  std::size_t e = 0;
   for (; e + 4 <= count; e += 4)
   {
     fourElementNormals(shape, positions + e * stride, sum, normals + e * stride);
   }
+#endif
   for (; e < count; ++e)
   {
     elementNormals(shape, positions + e * stride, normals + e * stride);

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && !defined(BOUNDPARTICLES_NO_SIMD)
 #include <emmintrin.h>
 #define BOUNDPARTICLES_SSE2 1
 #else
