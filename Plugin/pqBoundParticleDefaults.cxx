@@ -20,12 +20,23 @@ bool lacksVectors(vtkSMProxy* tracer)
   return !name || !*name;
 }
 
-/// Emitter Size -2 -2 -2: the extents of bounds never set ([1, -1] per axis).
+/// The emitter box its domains give before the input has bounds: Emitter
+/// Size -2 -2 -2 in ParaView 5.11 and 5.13 (the extents of bounds [1, -1] per
+/// axis), a box of size 0 at the origin in ParaView 6.
 bool placeholderBox(vtkSMProxy* tracer)
 {
-  vtkSMPropertyHelper size(tracer, "EmitterSize");
-  return size.GetNumberOfElements() == 3 && size.GetAsDouble(0) == -2.0 &&
-    size.GetAsDouble(1) == -2.0 && size.GetAsDouble(2) == -2.0;
+  vtkSMPropertyHelper size(tracer, "EmitterSize"), center(tracer, "EmitterCenter");
+  if (size.GetNumberOfElements() != 3 || center.GetNumberOfElements() != 3)
+  {
+    return false;
+  }
+  bool unset = true, empty = true;
+  for (unsigned int k = 0; k < 3; ++k)
+  {
+    unset = unset && size.GetAsDouble(k) == -2.0;
+    empty = empty && size.GetAsDouble(k) == 0.0 && center.GetAsDouble(k) == 0.0;
+  }
+  return unset || empty;
 }
 } // namespace
 

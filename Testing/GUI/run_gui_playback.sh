@@ -5,6 +5,10 @@
 # ($PARAVIEW_DATA_ROOT in the events is DATA_DIR.)
 # An event on a widget that does not exist, or a failed check, makes ParaView
 # exit non-zero, and so this script.
+#
+# The events are recorded in ParaView 5.11. From ParaView 6 on, a box
+# widget's Translate, Rotate and Scale fields sit on the "Fields" page of a
+# tab widget: their object paths are rewritten for the ParaView that plays.
 set -u
 plugin_dir="$1"
 data_dir="$2"
@@ -13,6 +17,12 @@ export PV_PLUGIN_PATH="$plugin_dir"
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
 trap 'rm -rf "$HOME"' EXIT
+major="$(pvpython --version 2>/dev/null | sed -nE 's/.*version ([0-9]+).*/\1/p')"
+if [ "${major:-0}" -ge 6 ]; then
+  sed -E 's#(BoundParticleEmitterBox)/((translate|rotate|scale)[XYZ])#\1/tabWidget/qt_tabwidget_stackedwidget/fieldsPage/\2#g' \
+    "$script" >"$HOME/$(basename "$script")"
+  script="$HOME/$(basename "$script")"
+fi
 timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
   paraview --dr --data-directory="$data_dir" --test-directory="$HOME" \
   --test-script="$script" --exit

@@ -116,9 +116,13 @@ def all_traces():
     return cases
 
 
-# The filter that writes each point's rank: Process Id Scalars up to 5.13,
-# Process Ids (its successor, the only one in 6.x) after.
-process_ids = globals().get("ProcessIdScalars") or globals()["ProcessIds"]
+# The filter that writes each point's rank, and its array: Process Id Scalars
+# ("ProcessId") up to 5.13, Process Ids ("PointProcessIds", its successor and
+# the only one in 6.x) after.
+if "ProcessIdScalars" in globals():
+    process_ids, process_array = ProcessIdScalars, "ProcessId"
+else:
+    process_ids, process_array = ProcessIds, "PointProcessIds"
 
 result = {}
 for name, (tracer, times) in all_traces().items():
@@ -143,7 +147,7 @@ for name, (tracer, times) in all_traces().items():
         result[key + "_element"] = element[order]
         result[key + "_particle"] = particle[order]
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
-        result[key + "_process"] = vtk_to_numpy(pd.GetArray("ProcessId"))[order].astype(int)
+        result[key + "_process"] = vtk_to_numpy(pd.GetArray(process_array))[order].astype(int)
         result[key + "_cells"] = numpy.array([data.GetNumberOfCells()])
         for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin")):
             if pd.GetArray(name_in) is not None:
