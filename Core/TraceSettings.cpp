@@ -47,6 +47,16 @@ void resolveEmitter(const TraceSettings& s, const FieldFacts& f, Resolution& r)
     p.emitterMin[a] = float(std::min(std::max(lo, inLo), inHi));
     p.emitterMax[a] = float(std::max(std::min(hi, inHi), inLo));
   }
+  if (s.emitterSize[0] == 0.0 && s.emitterSize[1] == 0.0 && s.emitterSize[2] == 0.0)
+  {
+    // ParaView 6 gives a tracer made before its input has run a box of size
+    // 0 at the origin: say what that does rather than trace from one point.
+    std::ostringstream w;
+    w << "The emitter box has size 0 along every axis: every element is released at ("
+      << s.emitterCenter[0] << ", " << s.emitterCenter[1] << ", " << s.emitterCenter[2]
+      << "). Give Emitter Size a negative value to span the field, or press Reset Bounds.";
+    r.warnings.push_back(w.str());
+  }
 }
 
 /// An error when the emitter box misses the field on an axis: elements
@@ -200,11 +210,13 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
   resolvePlane(f, r.parameters);
   r.parameters.elementSize = float(r.elementSize);
-  if (!(s.minimumReleaseSpeed >= 0.0 && s.minimumReleaseSpeed <= 1.0))
+  if (!s.seeded && !(s.minimumReleaseSpeed >= 0.0 && s.minimumReleaseSpeed <= 1.0))
   {
     return failure("MinimumReleaseSpeed must be a fraction of the top speed in [0, 1].");
   }
-  r.parameters.releaseMinSpeed = float(s.minimumReleaseSpeed * std::max(f.maxSpeed, 0.0));
+  // The user chose where seeded releases land: none is retried for its speed.
+  r.parameters.releaseMinSpeed =
+    s.seeded ? 0.0f : float(s.minimumReleaseSpeed * std::max(f.maxSpeed, 0.0));
   if (s.trailLength < 0 || s.trailLength > MaxTrailLength)
   {
     return failure("TrailLength must be in [1, " + std::to_string(MaxTrailLength) +
@@ -219,11 +231,14 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   // schedule's start is the tracer's (Parameters::trailStart).
   r.parameters.trailLength = s.trailLength;
   r.parameters.trailInterval = s.trailSpacing * r.dt;
-  resolveEmitter(s, f, r);
-  const std::string emitterError = checkEmitter(s, f, r.parameters);
-  if (!emitterError.empty())
+  if (!s.seeded)
   {
-    return failure(emitterError);
+    resolveEmitter(s, f, r);
+    const std::string emitterError = checkEmitter(s, f, r.parameters);
+    if (!emitterError.empty())
+    {
+      return failure(emitterError);
+    }
   }
   const std::string lifetimeError = resolveLifetimes(s, f, r);
   if (!lifetimeError.empty())

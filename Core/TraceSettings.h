@@ -41,6 +41,9 @@ struct TraceSettings
   /// Motion trails: poses kept per element (0: none), and steps between two.
   int trailLength = 0;
   int trailSpacing = 4;
+  /// Releases take a Seed Source's points: the emitter box and the minimum
+  /// release speed are not used, so neither is checked.
+  bool seeded = false;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
   /// resolveSettings() fills in the rest of it.

@@ -279,7 +279,11 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   }
   const bp::VectorField field = this->Cache.field(this->Grid, ids);
   const bp::FieldFacts facts = this->fieldFacts(field);
-  const bp::Resolution resolved = bp::resolveSettings(self->Settings(), facts);
+  bp::TraceSettings settings = self->Settings();
+  vtkDataSet* seeds =
+    self->GetNumberOfInputConnections(2) ? vtkDataSet::GetData(inputVector[2], 0) : nullptr;
+  settings.seeded = seeds && seeds->GetNumberOfPoints() > 0;
+  const bp::Resolution resolved = bp::resolveSettings(settings, facts);
   for (const std::string& warning : resolved.warnings)
   {
     vtkWarningWithObjectMacro(self, << warning);
@@ -345,8 +349,6 @@ void vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* se
       p.seedPoints[3 * std::size_t(i) + a] = float(x[a] - this->Offset[a]);
     }
   }
-  // The user chose where releases land: no release is retried for its speed.
-  p.releaseMinSpeed = 0.0f;
   // Releases skip the points outside the field (and in cells outside the
   // flow's domain): say how many there are.
   const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();

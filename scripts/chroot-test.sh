@@ -4,6 +4,8 @@
 #
 #   bash scripts/chroot-test.sh trixie    # ParaView 5.13, VTK 9.3, Qt 6
 #   bash scripts/chroot-test.sh forky     # ParaView 6.1,  VTK 9.6, Qt 6
+#   bash scripts/chroot-test.sh forky COMMAND...   # build, then run COMMAND
+#                                                  # inside (in the repository)
 #
 # The chroot is kept between runs in $BOUNDPARTICLES_CHROOT_DIR (default
 # /var/cache/boundparticles/chroots/SUITE); a kept one is updated only when
@@ -13,7 +15,8 @@
 # Every failure is printed with the suite's name. Needs root.
 set -euo pipefail
 
-suite="${1:?usage: chroot-test.sh SUITE (trixie or forky)}"
+suite="${1:?usage: chroot-test.sh SUITE [COMMAND...] (SUITE: trixie or forky)}"
+shift
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 shared="$(cd "$root/.." && pwd)/shared"
 chroots="${BOUNDPARTICLES_CHROOT_DIR:-/var/cache/boundparticles/chroots}"
@@ -89,10 +92,16 @@ fi
 
 # Inside: install what the suite needs (scripts/setup.sh knows each suite's
 # packages), then build in /build and run ctest: the README's test command.
+inside() {
+  chroot "$dir" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    HOME=/root LANG=C.UTF-8 BOUNDPARTICLES_BUILD_DIR=/build CI="${CI:-}" "$@"
+}
+if [ $# -gt 0 ]; then
+  inside bash -c 'cd /work/main && bash scripts/build.sh >/dev/null && exec "$@"' command "$@"
+  exit
+fi
 say "build and test (chroot ready after $((SECONDS - start)) s)"
-if ! chroot "$dir" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-  HOME=/root LANG=C.UTF-8 BOUNDPARTICLES_BUILD_DIR=/build CI="${CI:-}" \
-  bash /work/main/scripts/test.sh; then
+if ! inside bash /work/main/scripts/test.sh; then
   fail "the build or the test suite failed (see above; build logs in $dir/build)"
 fi
 say "passed in $((SECONDS - start)) s"

@@ -72,6 +72,33 @@ TEST(TraceSettings, EmitterIsTheWholeFieldOrTheUsersBoxInLocalCoordinates)
   EXPECT_FLOAT_EQ(r.parameters.emitterMin[2], 0.75f);
 }
 
+TEST(TraceSettings, APointEmitterWarnsWhereEveryElementIsReleased)
+{
+  bp::TraceSettings s;
+  s.emitterCenter = { 11, 21, 31 };
+  s.emitterSize = { 0, 0, 0 };
+  const bp::Resolution r = bp::resolveSettings(s, box());
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("released at (11, 21, 31)"), std::string::npos);
+  s.emitterSize = { 0, 0, 1 }; // a line emitter is a choice, not a placeholder
+  EXPECT_TRUE(bp::resolveSettings(s, box()).warnings.empty());
+}
+
+TEST(TraceSettings, ASeedSourceLeavesTheEmitterAndReleaseSpeedUnchecked)
+{
+  bp::TraceSettings s;
+  s.emitterCenter = { 1e6, 0, 0 }; // a stale box, far outside the field
+  s.emitterSize = { 0, 0, 0 };
+  s.minimumReleaseSpeed = 5.0;
+  EXPECT_NE(bp::resolveSettings(s, box()).error, "");
+  s.seeded = true;
+  const bp::Resolution r = bp::resolveSettings(s, box());
+  EXPECT_EQ(r.error, "");
+  EXPECT_TRUE(r.warnings.empty());
+  EXPECT_EQ(r.parameters.releaseMinSpeed, 0.0f);
+}
+
 TEST(TraceSettings, AnyParticleLeavesKeepsElementsWholeInside)
 {
   bp::TraceSettings s;

@@ -34,15 +34,22 @@ else:
     LoadPlugin(args.plugin, ns=globals())
 
 
+def updated(source):
+    """The source, run: a tracer made on it takes the field's bounds as its
+    emitter box (ParaView 6 gives a box of size 0 at the origin before)."""
+    source.UpdatePipeline()
+    return source
+
+
 def traces():
     """Steady ABC with crosses reset as they leave; unsteady double gyre with points."""
-    abc = AnalyticFlow(Flow="ABC", Resolution=[40, 36, 32], Bounds=[0, 2, 0, 1.8, 0, 1.6])
+    abc = updated(AnalyticFlow(Flow="ABC", Resolution=[40, 36, 32], Bounds=[0, 2, 0, 1.8, 0, 1.6]))
     crosses = BoundParticleTracer(
         Input=abc, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
         NumberOfTimeSteps=11, LifetimeRange=[0.2, 0.5], Integrator="Runge-Kutta 4",
         Restoration="Shape Matching", StepSize=0.5)
-    gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[48, 24, 2], Bounds=[0, 2, 0, 1, 0, 0.1],
-                        NumberOfTimeSteps=6)
+    gyre = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[48, 24, 2],
+                                Bounds=[0, 2, 0, 1, 0, 0.1], NumberOfTimeSteps=6))
     points = BoundParticleTracer(Input=gyre, ElementShape="Point", NumberOfElements=2000, Seed=9,
                                  LifetimeRange=[1.0, 3.0])
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
@@ -54,7 +61,7 @@ def placement_traces():
     coordinates on every axis; thin, long boxes of anisotropic cells that the
     block split cuts along X, Y and Z in turn; steady and unsteady."""
     cases = {}
-    hurricane = AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24])
+    hurricane = updated(AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24]))
     cases["hurricane"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
                                               NumberOfElements=800, Seed=4), [0.5, 1.0])
     # Releases from a Seed Source: every process takes the whole line's points.
@@ -71,18 +78,18 @@ def placement_traces():
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,
                                            ReleaseStart=0.3, ReleaseStop=0.6,
                                            LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
-    far = AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
-                       Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8])
+    far = updated(AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
+                               Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8]))
     cases["far_x"] = (BoundParticleTracer(Input=far, ElementShape="Strip4", NumberOfElements=600,
                                           Seed=5, Duration=1.0, NumberOfTimeSteps=11,
                                           LifetimeRange=[0.3, 0.6]), [0.5, 1.0])
-    negative = AnalyticFlow(Flow="Shear Layer", Resolution=[10, 40, 12],
-                            Bounds=[-7, -6, -9, -5, -3, -2.5])
+    negative = updated(AnalyticFlow(Flow="Shear Layer", Resolution=[10, 40, 12],
+                                    Bounds=[-7, -6, -9, -5, -3, -2.5]))
     cases["negative_y"] = (BoundParticleTracer(Input=negative, ElementShape="Square",
                                                NumberOfElements=500, Seed=6, Duration=2.0,
                                                NumberOfTimeSteps=11), [1.0, 2.0])
-    gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[12, 8, 40],
-                        Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5)
+    gyre = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[12, 8, 40],
+                                Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5))
     cases["unsteady_z"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
                                                NumberOfElements=1200, Seed=7), [1.0, 2.0])
     if args.rectilinear:
@@ -104,7 +111,8 @@ def placement_traces():
             Input=carotid, ElementShape="Strip4", NumberOfElements=600, Seed=9, Duration=1.0,
             NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"]), [0.5, 1.0])
         # The automatic Duration from the field's scale, probed on every rank.
-        combustor = XMLImageDataReader(FileName=[os.path.join(args.data, "combustor.vti")])
+        combustor = updated(XMLImageDataReader(
+            FileName=[os.path.join(args.data, "combustor.vti")]))
         cases["combustor"] = (BoundParticleTracer(
             Input=combustor, ElementShape="Strip4", NumberOfElements=600, Seed=10), None)
     return cases
