@@ -30,7 +30,7 @@ case "$codename" in
       libvtk9-dev libtbb-dev libxml2-dev libexpat1-dev libhdf5-dev libboost-dev
       libfreetype-dev libjpeg-dev libpng-dev liblzma-dev zlib1g-dev libx11-dev libexprtk-dev
       libjsoncpp-dev libproj-dev libogg-dev libsqlite3-dev nlohmann-json3-dev python3-mpi4py
-      xsltproc)
+      xsltproc libvtk9-qt-dev)
     ;;
 esac
 PACKAGES=("${COMMON[@]}" "${SUITE[@]}")
