@@ -5,13 +5,53 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace bp
 {
+
+namespace
+{
+/**
+ * The first exception thrown by any range of one call. An exception must not
+ * leave a thread's function (that calls std::terminate, ending the user's
+ * session over a bad_alloc), so every range runs under `guard` and the caller
+ * rethrows once all of them have ended. The others are dropped: one message
+ * ends the update.
+ */
+class FirstError
+{
+public:
+  template <typename Body>
+  void guard(const Body& body) noexcept
+  {
+    try
+    {
+      body();
+    }
+    catch (...)
+    {
+      // Locked only here, off the path of a call that does not throw.
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->Error)
+      {
+        this->Error = std::current_exception();
+      }
+    }
+  }
+  /// Unlocked: only once every thread that ran a guarded range is done.
+  std::exception_ptr take() { return std::exchange(this->Error, nullptr); }
+
+private:
+  std::mutex Mutex;
+  std::exception_ptr Error;
+};
+} // namespace
 
 RangeRunner serialRunner()
 {
@@ -38,17 +78,35 @@ RangeRunner threadRunner(unsigned threads)
       }
       return;
     }
+    FirstError error;
     std::vector<std::thread> workers;
     workers.reserve(chunks);
-    for (std::size_t c = 0; c < chunks; ++c)
+    std::size_t c = 0;
+    try
     {
-      const std::size_t begin = count * c / chunks;
-      const std::size_t end = count * (c + 1) / chunks;
-      workers.emplace_back([&f, begin, end] { f(begin, end); });
+      for (; c < chunks; ++c)
+      {
+        const std::size_t begin = count * c / chunks;
+        const std::size_t end = count * (c + 1) / chunks;
+        workers.emplace_back([&f, &error, begin, end] { error.guard([&] { f(begin, end); }); });
+      }
+    }
+    catch (...)
+    {
+      // Out of threads (or memory for one): the caller runs the chunks left,
+      // as a loop's result does not depend on its thread count.
+    }
+    for (; c < chunks; ++c)
+    {
+      error.guard([&] { f(count * c / chunks, count * (c + 1) / chunks); });
     }
     for (auto& w : workers)
     {
       w.join();
+    }
+    if (std::exception_ptr first = error.take())
+    {
+      std::rethrow_exception(first);
     }
   };
 }
@@ -59,12 +117,21 @@ class Pool
 {
 public:
   explicit Pool(unsigned threads)
-    : Chunks(threads)
   {
-    for (unsigned w = 1; w < threads; ++w)
+    this->Workers.reserve(threads - 1);
+    try
     {
-      this->Workers.emplace_back([this, w] { this->work(w); });
+      for (unsigned w = 1; w < threads; ++w)
+      {
+        this->Workers.emplace_back([this, w] { this->work(w); });
+      }
     }
+    catch (...)
+    {
+      // Out of threads: the workers started so far take the chunks (they
+      // read Chunks only once a job, published under Mutex, wakes them).
+    }
+    this->Chunks = this->Workers.size() + 1;
   }
   ~Pool()
   {
@@ -101,11 +168,21 @@ public:
       ++this->Generation;
     }
     this->Wake.notify_all();
-    f(0, count / this->Chunks); // the caller's own chunk
+    // Even if the caller's own chunk throws, the workers still use `f` (the
+    // caller's) and the pool stays Busy until they are done: wait for them.
+    this->Errors.guard([&] { f(0, count / this->Chunks); });
     spinWhile([this] { return this->Pending.load() > 0; });
-    std::unique_lock<std::mutex> lock(this->Mutex);
-    this->Done.wait(lock, [this] { return this->Pending == 0; });
+    {
+      std::unique_lock<std::mutex> lock(this->Mutex);
+      this->Done.wait(lock, [this] { return this->Pending == 0; });
+    }
+    // Taken before the pool is free: the next job's errors are its own.
+    std::exception_ptr error = this->Errors.take();
     this->Busy = false;
+    if (error)
+    {
+      std::rethrow_exception(error);
+    }
   }
 
 private:
@@ -152,7 +229,8 @@ private:
         job = this->Job;
         count = this->Count;
       }
-      (*job)(count * index / this->Chunks, count * (index + 1) / this->Chunks);
+      this->Errors.guard(
+        [&] { (*job)(count * index / this->Chunks, count * (index + 1) / this->Chunks); });
       {
         std::lock_guard<std::mutex> lock(this->Mutex);
         --this->Pending;
@@ -161,13 +239,14 @@ private:
     }
   }
 
-  const std::size_t Chunks;
+  std::size_t Chunks = 1;
   std::vector<std::thread> Workers;
   std::atomic<bool> Busy{ false }; ///< while the workers serve a call
   std::mutex Mutex;
   std::condition_variable Wake, Done;
   const RangeFunction* Job = nullptr;
   std::size_t Count = 0;
+  FirstError Errors; ///< of the job being served
   /// Changed under Mutex; atomic so that spinning threads may read them unlocked.
   std::atomic<std::size_t> Pending{ 0 }, Generation{ 0 };
   bool Stop = false;

@@ -19,20 +19,31 @@ namespace bp
 /// Processes items [begin, end).
 using RangeFunction = std::function<void(std::size_t begin, std::size_t end)>;
 
-/// Calls the function on ranges that together cover [0, count) exactly once.
+/**
+ * Calls the function on ranges that together cover [0, count) exactly once.
+ *
+ * If the function throws, the runners below wait until every range of the
+ * call has ended, then rethrow the first exception on the calling thread (the
+ * others are dropped), and stay usable: an allocation that fails in a loop
+ * ends the update with a message instead of terminating the process. Every
+ * range that did not throw has then been processed in full, one that threw up
+ * to where it threw.
+ */
 using RangeRunner = std::function<void(std::size_t count, const RangeFunction&)>;
 
-/// Runs the whole range on the calling thread.
+/// Runs the whole range on the calling thread; an exception simply propagates.
 RangeRunner serialRunner();
 
 /// Splits the range into contiguous chunks over `threads` std::threads,
-/// started anew for every call (simple; costly for small ranges).
+/// started anew for every call (simple; costly for small ranges). Chunks that
+/// get no thread (the system is out of them) run on the caller.
 RangeRunner threadRunner(unsigned threads);
 
 /// The same chunks on a pool of `threads - 1` persistent workers and the
 /// calling thread. The pool lives as long as the returned runner (and its
 /// copies). A call made while the workers serve another (from inside a job,
-/// or from another thread) runs on its caller alone.
+/// or from another thread) runs on its caller alone. If fewer threads can be
+/// started, the pool has as many chunks as it got threads.
 RangeRunner poolRunner(unsigned threads);
 
 } // namespace bp

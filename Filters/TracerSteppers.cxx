@@ -14,6 +14,8 @@
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
+#include <exception>
+#include <mutex>
 #include <string>
 #include <thread>
 
@@ -55,6 +57,31 @@ bool useVtkLoops()
   return VtkKeepsThreads;
 }
 
+/// Ranges through vtkSMPTools::For. A throw must not leave a worker thread
+/// (std::terminate): the first is kept and rethrown once every range ended.
+void smpFor(std::size_t count, const bp::RangeFunction& f)
+{
+  std::exception_ptr first;
+  std::mutex firstLock;
+  vtkSMPTools::For(0, vtkIdType(count),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      try
+      {
+        f(std::size_t(begin), std::size_t(end));
+      }
+      catch (...)
+      {
+        const std::lock_guard<std::mutex> lock(firstLock);
+        first = first ? first : std::current_exception();
+      }
+    });
+  if (first)
+  {
+    std::rethrow_exception(first);
+  }
+}
+
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
 /// The loop through vtkSMPTools; on STDThread for its duration when the
 /// process is sequential by default (a local scope: restored right after).
@@ -62,17 +89,15 @@ bp::RangeRunner vtkRunner(int threads, bool scopeStdThread)
 {
   return [threads, scopeStdThread](std::size_t count, const bp::RangeFunction& f)
   {
-    const auto loop = [&] {
-      vtkSMPTools::For(0, vtkIdType(count), [&](vtkIdType begin, vtkIdType end) { f(begin, end); });
-    };
     if (scopeStdThread)
     {
       vtkSMPTools::LocalScope(
-        vtkSMPTools::Config(threads, "STDThread", vtkSMPTools::GetNestedParallelism()), loop);
+        vtkSMPTools::Config(threads, "STDThread", vtkSMPTools::GetNestedParallelism()),
+        [&] { smpFor(count, f); });
     }
     else
     {
-      loop();
+      smpFor(count, f);
     }
   };
 }
@@ -80,9 +105,7 @@ bp::RangeRunner vtkRunner(int threads, bool scopeStdThread)
 bp::RangeRunner vtkRunner(int, bool)
 {
   // VTK 9.2 cannot scope a backend to these loops; its own loops as they are.
-  return [](std::size_t count, const bp::RangeFunction& f) {
-    vtkSMPTools::For(0, vtkIdType(count), [&](vtkIdType begin, vtkIdType end) { f(begin, end); });
-  };
+  return smpFor;
 }
 #endif
 } // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -143,11 +144,14 @@ TEST(ValueRanges, WrittenBlockByBlockAsIfWrittenFirst)
   {
     std::vector<float> out(source.size(), -1.0f);
     std::vector<int> writes(tuples, 0);
-    bool aligned = true;
+    std::atomic<bool> aligned(true); // written from every chunk's thread
     const bp::ValueRanges r = bp::writeWithRanges(out.data(), tuples, align, 3, run,
       [&](std::size_t begin, std::size_t end)
       {
-        aligned = aligned && begin % align == 0 && end % align == 0 && begin < end;
+        if (!(begin % align == 0 && end % align == 0 && begin < end))
+        {
+          aligned = false;
+        }
         for (std::size_t i = begin; i < end; ++i)
         {
           ++writes[i];
