@@ -7,6 +7,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArrayRange.h"
 #include "vtkImageData.h"
@@ -298,6 +299,67 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   slice.outsideCells = mask.outsideCells;
   grid = g;
   return std::string();
+}
+
+vtkPolyData* templateMesh(vtkDataObject* data, std::string& error)
+{
+  error.clear();
+  if (auto* mesh = vtkPolyData::SafeDownCast(data))
+  {
+    return mesh;
+  }
+  if (vtkCompositeDataSet::SafeDownCast(data))
+  {
+    error = std::string("The Element Template input is a ") + data->GetClassName() +
+      "; give it one polydata (Extract Block picks one, Merge Blocks then Extract Surface "
+      "joins them).";
+  }
+  else if (vtkDataSet::SafeDownCast(data))
+  {
+    error = std::string("The Element Template input is a ") + data->GetClassName() +
+      "; give it a polydata (Extract Surface makes one).";
+  }
+  else if (data && data->GetNumberOfElements(vtkDataObject::ROW) > 0)
+  {
+    error = std::string("The Element Template input is a ") + data->GetClassName() +
+      ", which has no points; give it a polydata.";
+  }
+  return nullptr;
+}
+
+std::string appendSeedPoints(vtkDataObject* data, std::vector<double>& xyz)
+{
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      const std::string error = appendSeedPoints(it->GetCurrentDataObject(), xyz);
+      if (!error.empty())
+      {
+        return error;
+      }
+    }
+    return std::string();
+  }
+  if (auto* points = vtkDataSet::SafeDownCast(data))
+  {
+    const vtkIdType n = points->GetNumberOfPoints();
+    xyz.reserve(xyz.size() + 3 * std::size_t(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      points->GetPoint(i, x);
+      xyz.insert(xyz.end(), x, x + 3);
+    }
+    return std::string();
+  }
+  if (data && data->GetNumberOfElements(vtkDataObject::ROW) > 0)
+  {
+    return std::string("The Seed Source gives a ") + data->GetClassName() +
+      ", which has no points; give it a dataset (or a multiblock of datasets).";
+  }
+  return std::string(); // no data: no points
 }
 
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out)

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 class vtkDataArray;
 class vtkDataObject;
@@ -39,6 +40,21 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
 
 /// The element template of a polydata (TemplateSprings: `mode`).
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out);
+
+/**
+ * The Element Template input's data as a polydata: `data` itself, or null
+ * with `error` set when it is another kind of data (a multiblock, an image)
+ * that says how to make a polydata of it. Null with no error when there is no
+ * data at all (a process given nothing).
+ */
+vtkPolyData* templateMesh(vtkDataObject* data, std::string& error);
+
+/**
+ * Appends the points of `data` (world coordinates, 3 doubles each) to `xyz`:
+ * a dataset's, or every dataset's of a composite in traversal order. Nothing
+ * for no data. Returns an error for data that has no points to give (a table).
+ */
+std::string appendSeedPoints(vtkDataObject* data, std::vector<double>& xyz);
 
 } // namespace bpvtk
 

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace
@@ -243,6 +244,41 @@ std::vector<long long> PieceLayout::gather(long long count) const
   std::vector<long long> all(std::size_t(this->Pieces), 0);
   this->Controller->AllGather(&count, all.data(), 1);
   return all;
+}
+
+std::string PieceLayout::agree(const std::string& error) const
+{
+  const std::vector<long long> lengths = this->gather((long long)error.size());
+  for (int q = 0; q < this->Pieces; ++q)
+  {
+    const long long length = lengths[std::size_t(q)];
+    if (length > 0)
+    {
+      std::string first(q == this->Piece ? error : std::string(std::size_t(length), ' '));
+      this->Controller->Broadcast(&first[0], vtkIdType(length), q);
+      return first;
+    }
+  }
+  return std::string();
+}
+
+int PieceLayout::shareFirst(std::vector<double>& values) const
+{
+  const std::vector<long long> counts = this->gather((long long)values.size());
+  const auto first = std::find_if(counts.begin(), counts.end(), [](long long n) { return n > 0; });
+  if (first == counts.end())
+  {
+    return 0;
+  }
+  const int root = int(first - counts.begin());
+  int others = 0;
+  for (int q = root + 1; q < this->Pieces; ++q)
+  {
+    others += counts[std::size_t(q)] > 0 && counts[std::size_t(q)] != *first ? 1 : 0;
+  }
+  values.resize(std::size_t(*first));
+  this->Controller->Broadcast(values.data(), vtkIdType(*first), root);
+  return others;
 }
 
 bp::ExchangeFunction PieceLayout::exchange() const

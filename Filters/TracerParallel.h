@@ -59,6 +59,21 @@ public:
   /// Every process's `count`, in process order (collective).
   std::vector<long long> gather(long long count) const;
 
+  /**
+   * Where one process failed and the others did not, every process must fail
+   * before the next collective call, or the others would wait in it forever:
+   * the first failing process's `error` (collective; empty when none failed).
+   */
+  std::string agree(const std::string& error) const;
+
+  /**
+   * Gives every process the same values: those of the first process whose
+   * `values` are not empty (collective). A source filled on one process only
+   * (a trivial producer) then serves all. Returns how many processes had
+   * other, non-empty values.
+   */
+  int shareFirst(std::vector<double>& values) const;
+
   /// The element exchange through the controller (DistributedStepper).
   bp::ExchangeFunction exchange() const;
 

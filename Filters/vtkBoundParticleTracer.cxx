@@ -128,23 +128,17 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
 
 int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-    return 1;
-  }
-  if (port == 2)
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-    return 1;
-  }
-  // Any data object is accepted here, so that a wrong type gets an error that
-  // says what to do rather than the pipeline's generic type mismatch, and a
-  // composite input (a multiblock) reaches the tracer whole: the composite
-  // pipeline would otherwise run this multi-pass update once per block.
+  // Any data object on every port, so that a wrong type gets an error that
+  // says what to do rather than the pipeline's generic type mismatch, and
+  // composite data (a multiblock) reaches the tracer whole: the composite
+  // pipeline would otherwise run this multi-pass update once per block. A
+  // process given no data at all still takes part in the collective steps of
+  // a distributed update, instead of leaving the others waiting.
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  if (port == 1 || port == 2)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
@@ -269,6 +263,13 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
         // The time copied from downstream means nothing to a source without
         // time steps, but a new one would run it again on every update.
         whole->Remove(SDDP::UPDATE_TIME_STEP());
+      }
+      else if (I.Plan.hasTimes())
+      {
+        // A time-varying template or seed source gives what it holds at the
+        // trace's start: the same trace whatever time was shown before
+        // (the time copied from downstream made a replay depend on it).
+        whole->Set(SDDP::UPDATE_TIME_STEP(), I.Plan.startTime());
       }
     }
   }

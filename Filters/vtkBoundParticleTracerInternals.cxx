@@ -259,8 +259,40 @@ std::string vtkBoundParticleTracer::vtkInternals::elementTemplate(
   {
     return std::string();
   }
-  return bpvtk::templateFromPolyData(
-    vtkPolyData::GetData(inputVector[1], 0), bp::MeshSprings(self->TemplateSprings), shape);
+  std::string error;
+  vtkPolyData* mesh = bpvtk::templateMesh(vtkDataObject::GetData(inputVector[1], 0), error);
+  return error.empty()
+    ? bpvtk::templateFromPolyData(mesh, bp::MeshSprings(self->TemplateSprings), shape)
+    : error;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::readSeeds(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, std::vector<double>& xyz) const
+{
+  xyz.clear();
+  if (self->GetNumberOfInputConnections(2) == 0)
+  {
+    return std::string();
+  }
+  std::string error = bpvtk::appendSeedPoints(vtkDataObject::GetData(inputVector[2], 0), xyz);
+  if (!this->Layout.distributed())
+  {
+    return error;
+  }
+  // Collective from here: every process takes part whatever it read.
+  error = this->Layout.agree(error);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (this->Layout.shareFirst(xyz) > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      "The Seed Source gives a different number of points on different processes; every "
+      "process releases from the first process's "
+        << xyz.size() / 3 << ".");
+  }
+  return std::string();
 }
 
 vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
@@ -277,12 +309,21 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
     return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
       std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
   }
+  std::vector<double> seeds;
+  const std::string seedError = this->readSeeds(self, inputVector, seeds);
+  if (!seedError.empty())
+  {
+    return Pass::fail(seedError);
+  }
+  if (self->GetNumberOfInputConnections(2) > 0 && seeds.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, "The Seed Source has no points; elements are released in the emitter box.");
+  }
   const bp::VectorField field = this->Cache.field(this->Grid, ids);
   const bp::FieldFacts facts = this->fieldFacts(field);
   bp::TraceSettings settings = self->Settings();
-  vtkDataSet* seeds =
-    self->GetNumberOfInputConnections(2) ? vtkDataSet::GetData(inputVector[2], 0) : nullptr;
-  settings.seeded = seeds && seeds->GetNumberOfPoints() > 0;
+  settings.seeded = !seeds.empty();
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
   for (const std::string& warning : resolved.warnings)
   {
@@ -309,7 +350,7 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
       return Pass::need(ids.front());
     }
   }
-  const Pass configured = this->configureStepper(self, inputVector, field, resolved);
+  const Pass configured = this->configureStepper(self, inputVector, field, resolved, seeds);
   if (configured.kind == Pass::Done)
   {
     this->startTrace();
@@ -317,73 +358,95 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   return configured;
 }
 
-void vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* self,
-  vtkInformationVector** inputVector, const bp::VectorField& field, bp::Parameters& p) const
+std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* self,
+  const std::vector<double>& xyz, const bp::VectorField& field, bp::Parameters& p) const
 {
-  if (self->GetNumberOfInputConnections(2) == 0)
-  {
-    return;
-  }
-  vtkDataSet* seeds = vtkDataSet::GetData(inputVector[2], 0);
-  const vtkIdType count = seeds ? seeds->GetNumberOfPoints() : 0;
-  if (count == 0)
-  {
-    vtkWarningWithObjectMacro(
-      self, "The Seed Source has no points; elements are released in the emitter box.");
-    return;
-  }
-  const vtkIdType used = std::min<vtkIdType>(count, vtkIdType(bp::MaxSeedPoints));
-  if (used < count)
-  {
-    vtkWarningWithObjectMacro(
-      self, "The Seed Source has " << count << " points; releases take the first " << used << ".");
-  }
-  p.seedPoints.resize(3 * std::size_t(used));
-  for (vtkIdType i = 0; i < used; ++i)
-  {
-    double x[3];
-    seeds->GetPoint(i, x);
-    for (int a = 0; a < 3; ++a)
-    {
-      // Engine coordinates; a non-finite point fails the engine's check.
-      p.seedPoints[3 * std::size_t(i) + a] = float(x[a] - this->Offset[a]);
-    }
-  }
-  // Releases skip the points outside the field (and in cells outside the
-  // flow's domain): say how many there are.
-  const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
-  std::size_t outside = 0;
-  for (std::size_t i = 0; i < std::size_t(used); ++i)
-  {
-    outside += domain.contains(&p.seedPoints[3 * i]) ? 0 : 1;
-  }
-  if (outside == std::size_t(used))
+  const std::size_t count = xyz.size() / 3;
+  if (count > bp::MaxSeedPoints)
   {
     vtkWarningWithObjectMacro(self,
-      "None of the Seed Source's " << used
-                                   << " points lies in the field: "
-                                      "no element can be released.");
+      "The Seed Source has " << count << " points; releases take the first " << bp::MaxSeedPoints
+                             << ".");
   }
-  else if (outside > 0)
+  // Releases take only the points in the field: one outside (or one too far
+  // to hold in the engine's floats) would place an element where no flow is.
+  // Every process decides alike, from the whole field's bounds.
+  const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
+  std::size_t outside = 0, noFlow = 0, nonFinite = 0;
+  p.seedPoints.clear();
+  for (std::size_t i = 0; i < std::min(count, bp::MaxSeedPoints); ++i)
   {
-    vtkWarningWithObjectMacro(self, << outside << " of the Seed Source's " << used
-                                    << " points lie outside the field; releases skip them.");
+    float x[3];
+    bool finite = true;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double local = xyz[3 * i + std::size_t(a)] - this->Offset[a];
+      finite = finite && std::isfinite(local) && std::abs(local) < 1e30;
+      x[a] = finite ? float(local) : 0.0f;
+    }
+    if (!finite)
+    {
+      ++nonFinite;
+      continue;
+    }
+    if (!domain.contains(x))
+    {
+      ++outside;
+      continue;
+    }
+    // Releases pass over points in cells outside the flow's domain (masked or
+    // NaN) at their time; count those at the start (one process sees them all).
+    noFlow += !this->Layout.distributed() && field.outsideCellAt(x, 0.0f) ? 1 : 0;
+    p.seedPoints.insert(p.seedPoints.end(), x, x + 3);
   }
+  const std::size_t used = std::min(count, bp::MaxSeedPoints);
+  if (p.seedPoints.empty() || noFlow == p.seedPoints.size() / 3)
+  {
+    std::ostringstream err;
+    err << "None of the Seed Source's " << used << " points lies in the flow (" << outside
+        << " outside the field, " << noFlow << " in cells outside the flow's domain";
+    if (nonFinite > 0)
+    {
+      err << ", " << nonFinite << " not finite";
+    }
+    err << "): no element can be released. Move the seeds into the field.";
+    return err.str();
+  }
+  if (outside + nonFinite > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << outside + nonFinite << " of the Seed Source's " << used
+            << " points lie outside the field" << (nonFinite ? " or are not finite" : "")
+            << "; releases take only the other " << p.seedPoints.size() / 3 << ".");
+  }
+  if (noFlow > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << noFlow << " of the Seed Source's points lie in cells outside the flow's domain "
+            << "(vtkValidPointMask 0 or a non-finite vector) at the start; releases pass over them "
+            << "to the next point in the flow.");
+  }
+  return std::string();
 }
 
-vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
-  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, const bp::VectorField& field,
-  const bp::Resolution& resolved)
+std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(vtkBoundParticleTracer* self,
+  vtkInformationVector** inputVector, const bp::VectorField& field,
+  const std::vector<double>& seeds, bp::ElementTemplate& shape, bp::Parameters& p)
 {
-  bp::ElementTemplate shape;
   const std::string templateError = this->elementTemplate(self, inputVector, shape);
   if (!templateError.empty())
   {
-    return Pass::fail(templateError);
+    return templateError;
   }
-  bp::Parameters p = resolved.parameters;
   p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
-  this->seedPoints(self, inputVector, field, p);
+  if (!seeds.empty())
+  {
+    const std::string seedError = this->seedPoints(self, seeds, field, p);
+    if (!seedError.empty())
+    {
+      return seedError;
+    }
+  }
   const std::vector<double>& times = this->Plan.outputTimes();
   if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
   {
@@ -396,14 +459,14 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   const std::string invalid = bp::Engine::validate(shape, p);
   if (!invalid.empty())
   {
-    return Pass::fail(invalid + ".");
+    return invalid + ".";
   }
   const std::string memoryError = bp::checkAllocatable(bp::traceBytes(shape, p),
     std::to_string(p.numberOfElements) + " elements of " + std::to_string(shape.particleCount()) +
       " particles");
   if (!memoryError.empty())
   {
-    return Pass::fail(memoryError + "; use fewer elements or a smaller template.");
+    return memoryError + "; use fewer elements or a smaller template.";
   }
   const float stable = bp::stableRelaxation(shape);
   if (p.restoration == bp::Restoration::Jacobi && p.relaxation > stable)
@@ -420,9 +483,29 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   {
     vtkErrorWithObjectMacro(self, << fallback);
   }
+  const std::string error = this->stepper().configure(shape, p);
+  return error.empty() ? error : error + ".";
+}
+
+vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
+  vtkBoundParticleTracer* self, vtkInformationVector** inputVector, const bp::VectorField& field,
+  const bp::Resolution& resolved, const std::vector<double>& seeds)
+{
+  bp::ElementTemplate shape;
+  bp::Parameters p = resolved.parameters;
+  std::string error = this->checkConfiguration(self, inputVector, field, seeds, shape, p);
+  if (this->Layout.distributed())
+  {
+    // The checks above are each process's own (its template, its memory);
+    // what follows is collective.
+    error = this->Layout.agree(error);
+  }
+  if (!error.empty())
+  {
+    return Pass::fail(error);
+  }
   bp::Stepper& stepper = this->stepper();
-  std::string error = stepper.configure(shape, p);
-  error = error.empty() ? stepper.setField(field) : error;
+  error = stepper.setField(field);
   if (!error.empty())
   {
     return Pass::fail(error + ".");
@@ -506,6 +589,12 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
     if (aborted)
     {
       return { Pass::Aborted, -1, std::string() };
+    }
+    if (committed < intervalEnd && intervalEnd - committed <= this->Schedule->epsilon())
+    {
+      // Input times closer than the schedule resolves (epsilon): no step
+      // lands inside such an interval, so the trace stands at its end.
+      committed = intervalEnd;
     }
     if (limit >= target || committed < intervalEnd - this->Schedule->epsilon())
     {

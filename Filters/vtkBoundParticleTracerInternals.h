@@ -139,19 +139,30 @@ private:
   void invalidate();
   /// Drops the active trace and the held time steps.
   void clear();
-  /// The stepper set up for a new trace: the template, its checks (engine,
-  /// memory, stable relaxation, the GPU's limits), configure, field, placement.
+  /// The stepper set up for a new trace: the checks of checkConfiguration()
+  /// (agreed between processes), then the field and the placement.
   Pass configureStepper(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    const bp::VectorField& field, const bp::Resolution& resolved);
+    const bp::VectorField& field, const bp::Resolution& resolved, const std::vector<double>& seeds);
+  /// This process's checks of a new trace: the template, the seeds, the
+  /// engine's limits, memory, a stable relaxation, the GPU's limits; then
+  /// the stepper configured. Returns the error, if any.
+  std::string checkConfiguration(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
+    const bp::VectorField& field, const std::vector<double>& seeds, bp::ElementTemplate& shape,
+    bp::Parameters& p);
   /// The grid check and the cache insert for a time step just read.
   std::string keepTimeStep(
     bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);
   /// The field's facts for parameter resolution (collective in parallel).
   bp::FieldFacts fieldFacts(const bp::VectorField& field);
-  /// The element template: the built-in shape or the template input.
-  /// The Seed Source's points (input 2) as release centres, if connected.
-  void seedPoints(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
+  /// The Seed Source's points (input 2), world coordinates, 3 doubles each:
+  /// the same on every process (collective in parallel). Returns the error.
+  std::string readSeeds(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
+    std::vector<double>& xyz) const;
+  /// The seed points in the field, as release centres in engine coordinates;
+  /// an error when none lies in the flow.
+  std::string seedPoints(vtkBoundParticleTracer* self, const std::vector<double>& xyz,
     const bp::VectorField& field, bp::Parameters& p) const;
+  /// The element template: the built-in shape or the template input.
   std::string elementTemplate(
     vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
   /// Points the stepper at the start of a new trace.
