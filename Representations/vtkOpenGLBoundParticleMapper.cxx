@@ -13,8 +13,12 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -299,6 +303,11 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
     TextureCount
   };
   int Units[TextureCount] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }; // while drawing
+
+  /// The camera matrices with the grid-local origin composed in
+  /// (SetCameraShaderParameters; kept, not allocated per draw).
+  vtkNew<vtkMatrix4x4> ModelToWorld;
+  vtkNew<vtkMatrix4x4> ModelToView;
 };
 
 vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
@@ -306,8 +315,10 @@ vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
 vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
   : Internals(new vtkInternals)
 {
-  // Positions come from the engine's textures in world coordinates: VTK must
-  // not shift and scale the template's buffer and fold that into the matrices.
+  // Positions come from the engine's textures, grid-local, and the draw's
+  // own translation to world coordinates goes into the camera matrices
+  // (SetCameraShaderParameters): VTK must not shift and scale the template's
+  // buffer (which the shaders do not read) and fold that in as well.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   this->SetScalarVisibility(0);
 }
@@ -575,18 +586,99 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   program->SetUniform2i("bpElementGrid", I.Inputs.elementGrid);
   program->SetUniformi("bpBlocksPerRow", I.Inputs.blocksPerRow);
   const auto& d = I.Queue->draw;
-  const float offset[3] = { float(d.offset[0]), float(d.offset[1]), float(d.offset[2]) };
-  program->SetUniform3f("bpOffset", offset);
   const bp::ColorSource mode = this->ScalarVisibility ? I.ScalarMode : bp::ColorSource::Solid;
   program->SetUniformi("bpScalarMode", int(mode));
   program->SetUniformi("bpComponent", I.Component);
-  const float range[2] = { float(I.ColorTableRange[0]), float(I.ColorTableRange[1]) };
+  // Layer is a world coordinate, the engine's centres are grid-local: the
+  // range moves to grid-local coordinates here, in double, so the shader
+  // compares grid-local floats that keep their precision far from the origin.
+  const double shift = mode == bp::ColorSource::Layer && d.coloringAxis >= 0 && d.coloringAxis < 3
+    ? d.offset[std::size_t(d.coloringAxis)]
+    : 0.0;
+  const float range[2] = { float(I.ColorTableRange[0] - shift),
+    float(I.ColorTableRange[1] - shift) };
   program->SetUniform2f("bpScalarRange", range);
   program->SetUniformi("bpColoringAxis", d.coloringAxis);
   const float center[2] = { float(d.radialCenter[0]), float(d.radialCenter[1]) };
   program->SetUniform2f("bpRadialCenter", center);
   program->SetUniformi("bpColorTable", I.ColorTable->GetTextureUnit());
   program->SetUniformf("bpColorTableSize", float(vtkInternals::ColorTableSize));
+
+  // The superclass gives the clipping planes in world (data) coordinates,
+  // the shader tests them on grid-local positions: a plane n.x + c = 0 over
+  // x = local + offset is n.local + (c + n.offset) = 0, moved in double.
+  const int planes = std::min(this->GetNumberOfClippingPlanes(), 6);
+  const bool shifted = d.offset[0] != 0.0 || d.offset[1] != 0.0 || d.offset[2] != 0.0;
+  if (shifted && planes > 0 && program->IsUniformUsed("numClipPlanes") &&
+    program->IsUniformUsed("clipPlanes"))
+  {
+    float equations[6][4] = {};
+    vtkNew<vtkMatrix4x4> propMatrix;
+    act->GetModelToWorldMatrix(propMatrix);
+    for (int k = 0; k < planes; ++k)
+    {
+      double plane[4];
+      this->GetClippingPlaneInDataCoords(propMatrix, k, plane);
+      equations[k][0] = float(plane[0]);
+      equations[k][1] = float(plane[1]);
+      equations[k][2] = float(plane[2]);
+      equations[k][3] =
+        float(plane[3] + plane[0] * d.offset[0] + plane[1] * d.offset[1] + plane[2] * d.offset[2]);
+    }
+    program->SetUniform4fv("clipPlanes", 6, equations);
+  }
+}
+
+void vtkOpenGLBoundParticleMapper::SetCameraShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // Every camera uniform as for model coordinates that are world ones (the
+  // template's buffer is never shifted); then the three that hold the model
+  // coordinates' origin again, with the grid-local origin composed in.
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
+  vtkInternals& I = *this->Internals;
+  const auto& offset = I.Queue->draw.offset;
+  if (offset[0] == 0.0 && offset[1] == 0.0 && offset[2] == 0.0)
+  {
+    return; // grid-local is world: the superclass's matrices are the ones
+  }
+  vtkShaderProgram* program = cellBO.Program;
+  vtkMatrix4x4* wcdc;
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* norms;
+  vtkMatrix4x4* vcdc;
+  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
+    ->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
+  // VTK's key matrices are transposed (they act on row vectors: the
+  // translation is the last row, and Multiply4x4(a, b) applies a first), as
+  // its VBO shift and scale matrix is. The products are taken in double: the
+  // offset and the camera's distance from the world origin cancel here, and
+  // what reaches the shader as float is the field's position relative to
+  // the camera.
+  vtkMatrix4x4* toWorld = I.ModelToWorld;
+  toWorld->Identity();
+  for (int k = 0; k < 3; ++k)
+  {
+    toWorld->SetElement(3, k, offset[std::size_t(k)]);
+  }
+  if (!act->GetIsIdentity())
+  {
+    vtkMatrix4x4* mcwc;
+    vtkMatrix3x3* anorms;
+    static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(mcwc, anorms);
+    vtkMatrix4x4::Multiply4x4(toWorld, mcwc, toWorld); // normals: translation-free, as set
+  }
+  if (program->IsUniformUsed("MCWCMatrix"))
+  {
+    program->SetUniformMatrix("MCWCMatrix", toWorld);
+  }
+  vtkMatrix4x4::Multiply4x4(toWorld, wcdc, I.ModelToView);
+  program->SetUniformMatrix("MCDCMatrix", I.ModelToView);
+  if (program->IsUniformUsed("MCVCMatrix"))
+  {
+    vtkMatrix4x4::Multiply4x4(toWorld, wcvc, I.ModelToView);
+    program->SetUniformMatrix("MCVCMatrix", I.ModelToView);
+  }
 }
 
 void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)

@@ -36,6 +36,14 @@
  * poses fade with age, by the colour map's opacity where it maps opacity,
  * otherwise by 1 - age / (span + interval); with trails the actor is always
  * drawn in the translucent pass, so they composite with depth peeling.
+ *
+ * The model coordinates of the draw are the engine's grid-local ones: the
+ * world position of their origin (the field's first point) is added only in
+ * the camera matrices, computed in double, so the elements are drawn as
+ * precisely a million or a hundred million units from the world origin as
+ * at it (float world positions would be 0.5 apart at 6.4e6, Earth-centred
+ * coordinates, and 8 apart at 1e8). Clipping planes and the Layer colour
+ * range are moved to grid-local coordinates the same way.
  */
 #ifndef vtkOpenGLBoundParticleMapper_h
 #define vtkOpenGLBoundParticleMapper_h
@@ -112,6 +120,14 @@ protected:
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /**
+   * The engine's positions are grid-local (relative to the field's first
+   * point, the draw settings' offset): the model-to-view and model-to-display
+   * matrices get the translation by the offset composed in, in double, as
+   * VTK composes its VBO shift and scale. Float positions then keep the
+   * precision the field's own extent needs wherever the field lies.
+   */
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
 private:

@@ -6,6 +6,12 @@
 // texture fetch), never from a buffer uploaded per frame. A motion trail's
 // pose is the element draw again (bpTrail 1) with the positions of one slot
 // of the engine's trail ring and normals computed here from them.
+//
+// Model coordinates are the engine's grid-local ones, as fetched: the mapper
+// composes the translation to world coordinates into MCDCMatrix and
+// MCVCMatrix in double (vtkOpenGLBoundParticleMapper::SetCameraShaderParameters).
+// Adding the offset here, in float, would round a field 6.4e6 from the
+// origin to 0.5 and one 1e8 away to 8.
 uniform sampler2D bpPositions; // per particle: grid-local position, force
 uniform sampler2D bpNormals;   // per particle: unit normal
 uniform sampler2D bpSamples;   // per particle: velocity, |curl v|
@@ -24,10 +30,9 @@ uniform int bpLinksPerRow;
 uniform int bpDrawLinks;       // 1 in the link draw, 0 in the element draw
 uniform ivec2 bpElementGrid;
 uniform int bpBlocksPerRow;
-uniform vec3 bpOffset;         // world position of the grid-local origin
 uniform int bpScalarMode;      // a BP_COLOR_* of Core/OutputArrays.h (ColorSource)
 uniform int bpComponent;       // for vector sources: a component, or -1 for the magnitude
-uniform vec2 bpScalarRange;    // the lookup table's range
+uniform vec2 bpScalarRange;    // the lookup table's range (Layer's: grid-local)
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
 out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
@@ -74,7 +79,7 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
     return texelFetch(bpSamples, texel, 0).w;
   vec3 c = texelFetch(bpCenters, elementTexel, 0).xyz;
   if (bpScalarMode == BP_COLOR_LAYER)
-    return c[bpColoringAxis] + bpOffset[bpColoringAxis];
+    return c[bpColoringAxis]; // grid-local, as bpScalarRange is for Layer
   if (bpScalarMode == BP_COLOR_RADIUS)
   {
     vec2 d = vec2(c[(bpColoringAxis + 1) % 3], c[(bpColoringAxis + 2) % 3]) - bpRadialCenter;

@@ -22,12 +22,12 @@
     {
       // A trail pose: the slot's position and the pose's own normal; the
       // colour scalar below is the element's now (but Age), as on the CPU.
-      bpVertexMC = vec4(texelFetch(bpTrailPositions, bpTexel, 0).xyz + bpOffset, 1.0);
+      bpVertexMC = vec4(texelFetch(bpTrailPositions, bpTexel, 0).xyz, 1.0);
       bpNormalMC = bpTrailNormal(bpElement, bpParticle);
     }
     else
     {
-      bpVertexMC = vec4(bpState.xyz + bpOffset, 1.0);
+      bpVertexMC = vec4(bpState.xyz, 1.0);
       bpNormalMC = texelFetch(bpNormals, bpTexel, 0).xyz;
     }
     float bpWidth = bpScalarRange.y - bpScalarRange.x;
