@@ -62,6 +62,32 @@ DomainMask maskOutsidePoints(
   return mask;
 }
 
+bool leavesNoCell(const ReleaseMask& mask)
+{
+  if (!mask.unfit)
+  {
+    return false;
+  }
+  const GridGeometry& grid = mask.grid;
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  // Cells are indexed by their lowest corner; along an axis of one point, by it.
+  for (int k = 0; k < std::max(nz - 1, 1); ++k)
+  {
+    for (int j = 0; j < std::max(ny - 1, 1); ++j)
+    {
+      for (int i = 0; i < std::max(nx - 1, 1); ++i)
+      {
+        if (!(*mask
+                 .unfit)[std::size_t(i) + std::size_t(nx) * (std::size_t(j) + std::size_t(ny) * k)])
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
 std::shared_ptr<const std::vector<std::uint8_t>> releaseUnfitCells(
   const VectorField& field, float minSpeed)
 {

@@ -64,6 +64,10 @@ struct ReleaseMask
   std::shared_ptr<const std::vector<std::uint8_t>> unfit;
 };
 
+/// Whether `mask` leaves no cell of its grid where a release may land (and
+/// so no element could be released anywhere).
+bool leavesNoCell(const ReleaseMask& mask);
+
 /// What a release mask was made from: a field's time steps (held, so that a
 /// freed and reused address never passes for them) and the minimum speed.
 class ReleaseMaskSource

@@ -163,6 +163,9 @@ struct Parameters
 
 /// The most poses a trail keeps (Parameters::trailLength).
 constexpr int MaxTrailLength = 64;
+/// The most steps between two trail poses: recordsTrailAt() matches a step
+/// within 1e-6 of an interval, which must stay well below one step.
+constexpr int MaxTrailSpacing = 1000;
 /// Trail generation of a slot that holds no pose of the element
 /// (Engine::trailGenerations()).
 constexpr std::uint32_t NoTrailPose = 0xffffffffu;

@@ -5,7 +5,7 @@
  *
  * The engine's work is split into ranges of elements that touch disjoint
  * memory. A RangeRunner decides how ranges are scheduled: the filter passes one
- * built on vtkSMPTools, the unit tests pass serial or std::thread runners.
+ * built on vtkSMPTools or on poolRunner(), the unit tests serial, thread or pool runners.
  */
 #ifndef BoundParticles_Parallel_h
 #define BoundParticles_Parallel_h

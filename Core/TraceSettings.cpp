@@ -222,10 +222,10 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     return failure("TrailLength must be in [1, " + std::to_string(MaxTrailLength) +
       "] poses (it is " + std::to_string(s.trailLength) + ").");
   }
-  if (s.trailSpacing < 1)
+  if (s.trailLength > 0 && (s.trailSpacing < 1 || s.trailSpacing > MaxTrailSpacing))
   {
-    return failure(
-      "TrailSpacing must be at least 1 step (it is " + std::to_string(s.trailSpacing) + ").");
+    return failure("TrailSpacing must be in [1, " + std::to_string(MaxTrailSpacing) +
+      "] steps (it is " + std::to_string(s.trailSpacing) + ").");
   }
   // A pose every TrailSpacing steps of the schedule (recordsTrailAt); the
   // schedule's start is the tracer's (Parameters::trailStart).

@@ -124,6 +124,17 @@ std::string GridGeometry::checkScale() const
           << " the engine's arithmetic supports; rescale the coordinates";
       return err.str();
     }
+    // The output's world coordinates are doubles: far enough from the world
+    // origin, points a cell apart become one (1e25 + 1 == 1e25).
+    const double far = std::max(std::abs(this->origin[a]), std::abs(this->origin[a] + length));
+    if (!(cell >= far * MinCellWidthPerDistance))
+    {
+      err << "the field lies at " << far << " along "
+          << "XYZ"[a] << ", too far from the world origin for its cells of " << cell
+          << ": double-precision coordinates there cannot tell its points apart; translate the "
+             "data nearer the origin";
+      return err.str();
+    }
     if (!(cell >= MinCellWidth) || !(cell >= length * MinRelativeCellWidth))
     {
       err << "the field's cells along "

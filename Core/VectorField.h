@@ -66,6 +66,9 @@ struct GridGeometry
   /// arithmetic supports, and the narrowest cells it resolves (absolute, and
   /// relative to the axis's span).
   static constexpr double MaxCoordinate = 1e30;
+  /// Cells at least this share of their distance from the world origin:
+  /// 2^-40, some 4,000 double steps apart there.
+  static constexpr double MinCellWidthPerDistance = 9.094947017729282e-13;
   static constexpr double MinCellWidth = 1e-30;
   static constexpr double MinRelativeCellWidth = 1e-6;
 

@@ -3,6 +3,7 @@
 
 #include "DomainMask.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -138,21 +139,47 @@ namespace bpvtk
 namespace
 {
 /// The input's vtkValidPointMask (ParaView's resampling writes it: 0 where a
-/// point lies outside the source's domain) as one byte per point; empty
-/// without one, or with one of another length or width.
-std::vector<std::uint8_t> validPointMask(vtkDataSet* data)
+/// point lies outside the source's domain) as one byte per point: 1 where
+/// the value is non-zero and not NaN. Empty without a usable one; `problem`
+/// then says why one of that name was not used.
+std::vector<std::uint8_t> validPointMask(vtkDataSet* data, std::string& problem)
 {
-  vtkDataArray* mask = data->GetPointData()->GetArray("vtkValidPointMask");
   std::vector<std::uint8_t> valid;
-  if (!mask || mask->GetNumberOfComponents() != 1 ||
-    mask->GetNumberOfTuples() != data->GetNumberOfPoints())
+  vtkAbstractArray* named = data->GetPointData()->GetAbstractArray("vtkValidPointMask");
+  vtkDataArray* mask = vtkDataArray::SafeDownCast(named);
+  std::ostringstream why;
+  if (!named)
+  {
+    if (data->GetCellData()->GetAbstractArray("vtkValidPointMask"))
+    {
+      why << "is cell data; it must be point data";
+    }
+  }
+  else if (!mask)
+  {
+    why << "is a " << named->GetClassName() << "; it must be numbers";
+  }
+  else if (mask->GetNumberOfComponents() != 1)
+  {
+    why << "has " << mask->GetNumberOfComponents() << " components; it must have one";
+  }
+  else if (mask->GetNumberOfTuples() != data->GetNumberOfPoints())
+  {
+    why << "has " << mask->GetNumberOfTuples() << " values for " << data->GetNumberOfPoints()
+        << " points";
+  }
+  problem = why.str().empty() ? std::string()
+                              : "The input's vtkValidPointMask " + why.str() +
+      " (0 outside the flow's domain, 1 inside); it is ignored, every point counts as inside.";
+  if (!mask || !problem.empty())
   {
     return valid;
   }
   valid.resize(std::size_t(mask->GetNumberOfTuples()));
   const auto values = vtk::DataArrayValueRange<1>(mask);
+  // NaN is no answer to "inside?": outside, as a NaN vector is.
   std::transform(values.begin(), values.end(), valid.begin(),
-    [](double v) { return std::uint8_t(v != 0.0 ? 1 : 0); });
+    [](double v) { return std::uint8_t(v != 0.0 && !std::isnan(v) ? 1 : 0); });
   return valid;
 }
 /// The error for a Vectors name the input lacks, with the arrays it has.
@@ -180,7 +207,7 @@ std::string missingArray(vtkDataSet* data, const std::string& requested)
 
 std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
   bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
-  const std::string& requested)
+  const std::string& requested, std::string* maskProblem)
 {
   nonFinitePoints = 0;
   std::ostringstream err;
@@ -286,7 +313,12 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   {
     CopyToFloat{}(vectors, *values);
   }
-  const std::vector<std::uint8_t> valid = validPointMask(dataSet);
+  std::string maskIgnored;
+  const std::vector<std::uint8_t> valid = validPointMask(dataSet, maskIgnored);
+  if (maskProblem)
+  {
+    *maskProblem = maskIgnored;
+  }
   const bp::DomainMask mask =
     bp::maskOutsidePoints(g, *values, valid.empty() ? nullptr : valid.data());
   nonFinitePoints = mask.nonFinitePoints;

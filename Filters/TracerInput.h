@@ -32,11 +32,13 @@ namespace bpvtk
  * name the Vectors property asks for: one the input lacks is an error that
  * lists what it has (only without a name does the first vector array serve). Points where the
  * input's vtkValidPointMask is 0 or the vector is not finite are outside the flow's domain
- * (bp::maskOutsidePoints); `nonFinitePoints` counts the latter.
+ * (bp::maskOutsidePoints); `nonFinitePoints` counts the latter. A vtkValidPointMask that
+ * cannot be used (cell data, several components, another length, not numbers) is ignored and
+ * `maskProblem` says why; a NaN in it counts as 0.
  */
 std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
   bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
-  const std::string& requested = std::string());
+  const std::string& requested = std::string(), std::string* maskProblem = nullptr);
 
 /// The element template of a polydata (TemplateSprings: `mode`).
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out);

@@ -26,6 +26,31 @@ vtkMultiProcessController* pieceController(int pieces)
   return pieces > 1 && c && c->GetNumberOfProcesses() == pieces ? c : nullptr;
 }
 
+/// Whether the block split gives each of `pieces` a block with cells.
+bool splitsIntoBlocks(const int whole[6], int pieces)
+{
+  vtkNew<vtkExtentTranslator> translator;
+  for (int piece = 0; piece < pieces; ++piece)
+  {
+    int block[6];
+    if (!translator->PieceToExtentThreadSafe(
+          piece, pieces, 0, const_cast<int*>(whole), block, vtkExtentTranslator::BLOCK_MODE, 0))
+    {
+      return false;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      // A block needs cells along every axis that has them.
+      if (block[2 * a + 1] < block[2 * a] ||
+        (whole[2 * a + 1] > whole[2 * a] && block[2 * a + 1] == block[2 * a]))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 /// Sends each process its records, pairwise in one global order of pairs (so
 /// blocking sends never wait on each other in a cycle); only pairs with
 /// something to send talk.
@@ -84,7 +109,7 @@ bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
 namespace bpvtk
 {
 
-bool PieceLayout::takeRequest(vtkInformation* outInfo)
+bool PieceLayout::takeRequest(vtkInformation* outInfo, vtkInformation* inInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
@@ -93,6 +118,10 @@ bool PieceLayout::takeRequest(vtkInformation* outInfo)
   this->RequestedPiece =
     outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
   vtkMultiProcessController* controller = pieceController(pieces);
+  // Every process decides alike, from the whole extent.
+  this->TooSmall = controller && inInfo->Has(SDDP::WHOLE_EXTENT()) &&
+    !splitsIntoBlocks(inInfo->Get(SDDP::WHOLE_EXTENT()), pieces);
+  controller = this->TooSmall ? nullptr : controller;
   const bool changed =
     controller != this->Controller || (controller && this->Piece != this->RequestedPiece);
   this->Controller = controller;

@@ -37,8 +37,12 @@ public:
    * Takes the pieces the output request asks for (UPDATE_PIECE_NUMBER,
    * UPDATE_NUMBER_OF_PIECES). Returns true when they differ from the last
    * request's: a change of pieces is a change of input, so the trace replays.
+   * A field too small to give every process a block of cells (`inInfo`'s
+   * whole extent) is traced whole by piece 0, as without a process per piece.
    */
-  bool takeRequest(vtkInformation* outInfo);
+  bool takeRequest(vtkInformation* outInfo, vtkInformation* inInfo);
+  /// Whether piece 0 traces alone because the field has too few cells to split.
+  bool tooSmallToSplit() const { return this->TooSmall; }
 
   /// Asks the input for the whole extent (one process) or this process's
   /// block with GhostCells layers (the executive splits it).
@@ -99,6 +103,7 @@ public:
   int Piece = 0;
   int Pieces = 1;
   int RequestedPiece = 0; ///< the output piece asked for (without a controller)
+  bool TooSmall = false;  ///< processes to split among, but too few cells
   int GhostCells = 2;     ///< around the owned block; grown at a replay if too few
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <new>
 
 // The request key's DataKey is where the output keeps the value it was made for.
@@ -36,6 +37,40 @@ vtkInformationKeySubclassMacro(
   vtkBoundParticleTracer, GPU_WORK_QUEUE, GpuWorkQueueRequest, IntegerRequest);
 
 vtkStandardNewMacro(vtkBoundParticleTracer);
+
+// vtkSetClampMacro, but a value out of range (from a script or a saved state
+// file) is said, not silently changed. NaN takes the minimum.
+#define BP_CLAMPED_SETTER(name, type, low, high)                                                   \
+  void vtkBoundParticleTracer::Set##name(type value)                                               \
+  {                                                                                                \
+    const type lowest = static_cast<type>(low), highest = static_cast<type>(high);                 \
+    const type clamped = !(value >= lowest) ? lowest : (value > highest ? highest : value);        \
+    if (!(clamped == value))                                                                       \
+    {                                                                                              \
+      vtkWarningMacro(<< #name " " << value << " is outside [" << lowest << ", " << highest        \
+                      << "]; using " << clamped << ".");                                           \
+    }                                                                                              \
+    if (this->name != clamped)                                                                     \
+    {                                                                                              \
+      this->name = clamped;                                                                        \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }
+BP_CLAMPED_SETTER(ElementShape, int, POINT, FISH)
+BP_CLAMPED_SETTER(TemplateSprings, int, EDGES, ALL_PAIRS)
+BP_CLAMPED_SETTER(StepSizeUnit, int, CELL_LENGTH, TIME)
+BP_CLAMPED_SETTER(Integrator, int, EULER, RUNGE_KUTTA_4)
+BP_CLAMPED_SETTER(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING)
+BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
+BP_CLAMPED_SETTER(ShapeMatchingMode, int, RIGID, LINEAR)
+BP_CLAMPED_SETTER(LinearShapeMatchingBeta, double, 0.0, 1.0)
+BP_CLAMPED_SETTER(Linking, int, NO_LINKING, TORUS)
+BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
+BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
+BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
+BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
+BP_CLAMPED_SETTER(Engine, int, CPU, GPU)
+#undef BP_CLAMPED_SETTER
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkInternals)
@@ -224,7 +259,7 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
 
-  if (I.Layout.takeRequest(outInfo))
+  if (I.Layout.takeRequest(outInfo, inInfo))
   {
     // A change of pieces is a change of input: replay.
     I.forgetTrace();
@@ -349,6 +384,13 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   if (!I.Continuing)
   {
     I.begin(this);
+    if (I.ReplayPending && I.Layout.tooSmallToSplit())
+    {
+      vtkWarningMacro("The field has too few cells to give each of the "
+        << vtkStreamingDemandDrivenPipeline::GetUpdateNumberOfPieces(
+             outputVector->GetInformationObject(0))
+        << " processes a block; process 0 traces it alone.");
+    }
   }
   const std::string error = I.takeTimeStep(this, inputVector);
   if (!error.empty())
@@ -396,6 +438,20 @@ int vtkBoundParticleTracer::GetOutputArrayStatus(const char* name)
 
 void vtkBoundParticleTracer::SetOutputArrayStatus(const char* name, int status)
 {
+  const auto& rows = bp::outputArrays();
+  if (name &&
+    std::none_of(rows.begin(), rows.end(),
+      [name](const bp::OutputArray& row) { return std::strcmp(row.name, name) == 0; }))
+  {
+    std::string offered;
+    for (const bp::OutputArray& row : rows)
+    {
+      offered += (offered.empty() ? "" : ", ") + std::string(row.name);
+    }
+    vtkWarningMacro(
+      "Output Arrays has no array named '" << name << "'; it offers " << offered << ".");
+    return;
+  }
   if (!name || this->GetOutputArrayStatus(name) == (status ? 1 : 0))
   {
     return;

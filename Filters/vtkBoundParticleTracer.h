@@ -118,7 +118,7 @@ public:
 
   ///@{
   /// The built-in element shape (thesis Fig. 3.4). Default STRIP8.
-  vtkSetClampMacro(ElementShape, int, POINT, FISH);
+  virtual void SetElementShape(int value); // clamped to [POINT, FISH], with a warning
   vtkGetMacro(ElementShape, int);
   ///@}
 
@@ -142,7 +142,7 @@ public:
   /// Springs of a template mesh that has no lines: its EDGES, plus across
   /// every shared edge the far corners (EDGES_AND_DIAGONALS, default), or
   /// ALL_PAIRS (rigid).
-  vtkSetClampMacro(TemplateSprings, int, EDGES, ALL_PAIRS);
+  virtual void SetTemplateSprings(int value); // clamped to [EDGES, ALL_PAIRS], with a warning
   vtkGetMacro(TemplateSprings, int);
   ///@}
 
@@ -192,13 +192,13 @@ public:
   /// units it is the step in the data's time units. Must be positive.
   vtkSetMacro(StepSize, double);
   vtkGetMacro(StepSize, double);
-  vtkSetClampMacro(StepSizeUnit, int, CELL_LENGTH, TIME);
+  virtual void SetStepSizeUnit(int value); // clamped to [CELL_LENGTH, TIME], with a warning
   vtkGetMacro(StepSizeUnit, int);
   ///@}
 
   ///@{
   /// Advection integrator: EULER (thesis eq. 2.2, default), RUNGE_KUTTA_2, RUNGE_KUTTA_4.
-  vtkSetClampMacro(Integrator, int, EULER, RUNGE_KUTTA_4);
+  virtual void SetIntegrator(int value); // clamped to [EULER, RUNGE_KUTTA_4], with a warning
   vtkGetMacro(Integrator, int);
   ///@}
 
@@ -207,13 +207,14 @@ public:
   /// corrections times RelaxationFactor), GAUSS_SEIDEL, or SHAPE_MATCHING (best
   /// rigid fit, Müller et al. 2005, goals blended by ShapeMatchingStiffness);
   /// RestorationIterations iterations per step (default 1).
-  vtkSetClampMacro(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING);
+  virtual void SetRestoration(
+    int value); // clamped to [AVERAGED_JACOBI, SHAPE_MATCHING], with a warning
   vtkGetMacro(Restoration, int);
   vtkSetMacro(RestorationIterations, int);
   vtkGetMacro(RestorationIterations, int);
   vtkSetMacro(RelaxationFactor, double);
   vtkGetMacro(RelaxationFactor, double);
-  vtkSetClampMacro(ShapeMatchingStiffness, double, 0.0, 1.0);
+  virtual void SetShapeMatchingStiffness(double value); // clamped to [0.0, 1.0], with a warning
   vtkGetMacro(ShapeMatchingStiffness, double);
   ///@}
 
@@ -221,9 +222,9 @@ public:
   /// Shape matching's fit: RIGID (default) or LINEAR (Müller et al. 2005,
   /// §4.3: goals from beta * A + (1 - beta) * R, A the best affine fit, so
   /// elements may also shear and stretch). LinearShapeMatchingBeta is beta.
-  vtkSetClampMacro(ShapeMatchingMode, int, RIGID, LINEAR);
+  virtual void SetShapeMatchingMode(int value); // clamped to [RIGID, LINEAR], with a warning
   vtkGetMacro(ShapeMatchingMode, int);
-  vtkSetClampMacro(LinearShapeMatchingBeta, double, 0.0, 1.0);
+  virtual void SetLinearShapeMatchingBeta(double value); // clamped to [0.0, 1.0], with a warning
   vtkGetMacro(LinearShapeMatchingBeta, double);
   ///@}
 
@@ -236,18 +237,19 @@ public:
   /// from lattice sites filling the emitter box, with one orientation and one
   /// lifetime, and lives out its lifetime even where it leaves the field. The
   /// links are output as lines.
-  vtkSetClampMacro(Linking, int, NO_LINKING, TORUS);
+  virtual void SetLinking(int value); // clamped to [NO_LINKING, TORUS], with a warning
   vtkGetMacro(Linking, int);
-  vtkSetClampMacro(LatticeWidth, int, 0, VTK_INT_MAX);
+  virtual void SetLatticeWidth(int value); // clamped to [0, VTK_INT_MAX], with a warning
   vtkGetMacro(LatticeWidth, int);
-  vtkSetClampMacro(LinkStiffness, double, 0.0, 1.0);
+  virtual void SetLinkStiffness(double value); // clamped to [0.0, 1.0], with a warning
   vtkGetMacro(LinkStiffness, double);
   ///@}
 
   ///@{
   /// When an element is put back into the emitter besides running out of
   /// lifetime: its centre leaves the field (thesis) or any particle does.
-  vtkSetClampMacro(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES);
+  virtual void SetResetWhen(
+    int value); // clamped to [CENTER_LEAVES, ANY_PARTICLE_LEAVES], with a warning
   vtkGetMacro(ResetWhen, int);
   ///@}
 
@@ -316,7 +318,7 @@ public:
   /// The axis (0, 1, 2) for the Layer colouring (an element's initial centre
   /// along it) and the Radius colouring (distance of that centre from the axis
   /// line through the field's centre). Default 2 (Z).
-  vtkSetClampMacro(ColoringAxis, int, 0, 2);
+  virtual void SetColoringAxis(int value); // clamped to [0, 2], with a warning
   vtkGetMacro(ColoringAxis, int);
   ///@}
 
@@ -359,7 +361,7 @@ public:
   /// render window and this filter only records the work (see
   /// GPU_WORK_QUEUE()); every other consumer (Surface, writers, other filters)
   /// still gets the CPU result, so nothing downstream ever sees a stale trace.
-  vtkSetClampMacro(Engine, int, CPU, GPU);
+  virtual void SetEngine(int value); // clamped to [CPU, GPU], with a warning
   vtkGetMacro(Engine, int);
   ///@}
 

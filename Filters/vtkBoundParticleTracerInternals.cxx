@@ -55,6 +55,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
 {
   ++this->Configuration;
   this->WarnedNonFinite = false;
+  this->WarnedMask = false;
   this->Steppers.invalidate();
 }
 
@@ -152,8 +153,14 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     : nullptr;
   int extent[6];
   std::size_t nonFinite = 0;
+  std::string maskProblem;
   std::string error = bpvtk::readSlice(
-    input, vectors, association, grid, slice, extent, nonFinite, vectorsName(self));
+    input, vectors, association, grid, slice, extent, nonFinite, vectorsName(self), &maskProblem);
+  if (error.empty() && !maskProblem.empty() && !this->WarnedMask)
+  {
+    this->WarnedMask = true; // once per configuration, as below
+    vtkWarningWithObjectMacro(self, << maskProblem);
+  }
   if (error.empty() && nonFinite > 0 && !this->WarnedNonFinite)
   {
     // Once per configuration: an unsteady input would say it every frame.
@@ -323,7 +330,14 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   const bp::VectorField field = this->Cache.field(this->Grid, ids);
   const bp::FieldFacts facts = this->fieldFacts(field);
   bp::TraceSettings settings = self->Settings();
-  settings.seeded = !seeds.empty();
+  settings.seeded = !seeds.empty() && self->Linking == NO_LINKING;
+  if (!seeds.empty() && self->Linking != NO_LINKING)
+  {
+    vtkWarningWithObjectMacro(self,
+      "Linking places each super set as one structure in the emitter box: the Seed Source is "
+      "not used. Set Linking to None to release from the seeds.");
+    seeds.clear();
+  }
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
   for (const std::string& warning : resolved.warnings)
   {
@@ -372,7 +386,7 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   // to hold in the engine's floats) would place an element where no flow is.
   // Every process decides alike, from the whole field's bounds.
   const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
-  std::size_t outside = 0, noFlow = 0, nonFinite = 0;
+  std::size_t outside = 0, noFlow = 0, nonFinite = 0, atBoundary = 0;
   p.seedPoints.clear();
   for (std::size_t i = 0; i < std::min(count, bp::MaxSeedPoints); ++i)
   {
@@ -397,6 +411,15 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
     // Releases pass over points in cells outside the flow's domain (masked or
     // NaN) at their time; count those at the start (one process sees them all).
     noFlow += !this->Layout.distributed() && field.outsideCellAt(x, 0.0f) ? 1 : 0;
+    bool nearBoundary = false;
+    for (int a = 0; a < 3; ++a)
+    {
+      const float radius = 0.5f * p.elementSize;
+      nearBoundary = nearBoundary ||
+        (!domain.degenerate[a] &&
+          (x[a] - domain.lower[a] < radius || domain.upper[a] - x[a] < radius));
+    }
+    atBoundary += nearBoundary ? 1 : 0;
     p.seedPoints.insert(p.seedPoints.end(), x, x + 3);
   }
   const std::size_t used = std::min(count, bp::MaxSeedPoints);
@@ -418,6 +441,14 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
       self, << outside + nonFinite << " of the Seed Source's " << used
             << " points lie outside the field" << (nonFinite ? " or are not finite" : "")
             << "; releases take only the other " << p.seedPoints.size() / 3 << ".");
+  }
+  if (atBoundary > 0 && p.resetWhen == bp::ResetWhen::AnyParticleLeaves)
+  {
+    vtkWarningWithObjectMacro(
+      self, << atBoundary << " of the Seed Source's points lie within half an element of the "
+            << "field's boundary: with Reset When = Any Particle Leaves, elements released there "
+            << "leave at once and are released again every step. Move the seeds inward, or reset "
+            << "when the centre leaves.");
   }
   if (noFlow > 0)
   {
@@ -454,6 +485,14 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(vtkBoundPar
       "No element is released: the Release Window ["
         << p.releaseStart << ", " << p.releaseStop << "] lies outside the offered times ["
         << times.front() << ", " << times.back() << "].");
+  }
+  else if (times.size() > 1 && p.releaseStart == times.back())
+  {
+    // A step releases what is due in [t, t + h): the last offered time ends
+    // the last step, so a window that starts there releases in none.
+    vtkWarningWithObjectMacro(self,
+      "No element is shown released: the Release Window starts at the last offered time ("
+        << times.back() << "), after the last step. Start it earlier.");
   }
   // The engine's own checks first: they name the setting to change.
   const std::string invalid = bp::Engine::validate(shape, p);
@@ -503,6 +542,17 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   if (!error.empty())
   {
     return Pass::fail(error);
+  }
+  // A mask that leaves no cell inside the flow's domain (masked or NaN
+  // corners everywhere in the start's interval): no release could land.
+  const bp::ReleaseMask inside = this->Layout.distributed()
+    ? this->Layout.releaseMask()(field, 0.0f)
+    : bp::ReleaseMask{ field.grid(), bp::releaseUnfitCells(field, 0.0f) };
+  if (bp::leavesNoCell(inside))
+  {
+    return Pass::fail("No cell of the field lies inside the flow's domain at the start (every "
+                      "cell has a corner where vtkValidPointMask is 0 or the vector is NaN or "
+                      "Inf, in one of its time steps): there is nowhere to release elements.");
   }
   bp::Stepper& stepper = this->stepper();
   error = stepper.setField(field);

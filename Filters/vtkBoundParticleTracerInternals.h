@@ -73,6 +73,7 @@ struct vtkBoundParticleTracer::vtkInternals
   /// older configuration replays.
   std::uint64_t Configuration = 1;
   bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
+  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
   const std::uint64_t ProducerId;
 
   // The update in progress.

@@ -203,6 +203,10 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
     error = readNumbers(root["z_coordinates"], "z_coordinates", series.zCoordinates);
     if (!error.empty())
       return error;
+    // Given but empty is a mistake, not a request for uniform z (leave the key out for that).
+    if (series.zCoordinates.empty())
+      return "has an empty 'z_coordinates'; give one z per layer, or leave the key out for "
+             "uniform spacing";
   }
 
   if (root.isMember("array_name"))

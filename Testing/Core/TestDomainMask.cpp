@@ -96,6 +96,39 @@ TEST(DomainMask, APlaneMarksItsOneLayerOfCells)
   EXPECT_FALSE(field.outsideCellAt(middle, 0.0f));
 }
 
+TEST(DomainMask, AMaskWithOneValidPointOrFlippingHalvesLeavesNoCell)
+{
+  const bp::GridGeometry g = bptest::grid(4);
+  auto field = [&](const std::vector<std::uint8_t>& first, const std::vector<std::uint8_t>& second)
+  {
+    bp::FieldSlice slices[2];
+    const std::vector<std::uint8_t>* valid[2] = { &first, &second };
+    for (int s = 0; s < 2; ++s)
+    {
+      std::vector<float> v = uniformVelocity(g, 1.0f);
+      const bp::DomainMask mask = bp::maskOutsidePoints(g, v, valid[s]->data());
+      slices[s] =
+        bp::FieldSlice{ double(s), std::make_shared<std::vector<float>>(v), mask.outsideCells };
+    }
+    return bp::VectorField(g, slices[0], slices[1]);
+  };
+  auto leavesNoCell = [&](const bp::VectorField& f) {
+    return bp::leavesNoCell(bp::ReleaseMask{ g, bp::releaseUnfitCells(f, 0.0f) });
+  };
+  std::vector<std::uint8_t> all(g.pointCount(), 1), one(g.pointCount(), 0);
+  one[pointId(g, 1, 1, 1)] = 1;
+  EXPECT_FALSE(leavesNoCell(field(all, all)));
+  EXPECT_TRUE(leavesNoCell(field(one, one)));
+  // Valid in the lower half of x, then in the upper: no cell in both.
+  std::vector<std::uint8_t> lower(g.pointCount(), 0), upper(g.pointCount(), 0);
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        (i < 2 ? lower : upper)[pointId(g, i, j, k)] = 1;
+  EXPECT_FALSE(leavesNoCell(field(lower, lower)));
+  EXPECT_TRUE(leavesNoCell(field(lower, upper)));
+}
+
 TEST(VectorField, TheSecondTimeStepsOutsideCellsCountOnlyWhereItWeighs)
 {
   bp::GridGeometry g = bptest::grid(5);

@@ -99,6 +99,21 @@ TEST(TraceSettings, ASeedSourceLeavesTheEmitterAndReleaseSpeedUnchecked)
   EXPECT_EQ(r.parameters.releaseMinSpeed, 0.0f);
 }
 
+TEST(TraceSettings, TrailSpacingIsCheckedOnlyWithTrailsAndUpToTheLimit)
+{
+  bp::TraceSettings s;
+  s.trailSpacing = 0; // trails off: not used, so not checked
+  EXPECT_EQ(bp::resolveSettings(s, box()).error, "");
+  s.trailLength = 8;
+  for (int bad : { 0, -3, bp::MaxTrailSpacing + 1, 10000000 })
+  {
+    s.trailSpacing = bad;
+    EXPECT_NE(bp::resolveSettings(s, box()).error.find("TrailSpacing"), std::string::npos) << bad;
+  }
+  s.trailSpacing = bp::MaxTrailSpacing;
+  EXPECT_EQ(bp::resolveSettings(s, box()).error, "");
+}
+
 TEST(TraceSettings, AnyParticleLeavesKeepsElementsWholeInside)
 {
   bp::TraceSettings s;

@@ -103,6 +103,12 @@ TEST(VectorField, ValidateRejectsBadFields)
   EXPECT_NE(huge.validate().find("at most"), std::string::npos);
   bp::GridGeometry empty;
   EXPECT_NE(empty.validate().find("no points"), std::string::npos);
+  // Unit cells at 1e25: the doubles there are 2e9 apart, every point one.
+  bp::GridGeometry far = bptest::grid(4);
+  far.origin = { 1e25, 0, 0 };
+  EXPECT_NE(far.validate().find("too far from the world origin"), std::string::npos);
+  far.origin = { 6.4e6, -2e6, 1e8 }; // projected or Earth-centred coordinates are fine
+  EXPECT_EQ(far.validate(), "");
 
   const bp::GridGeometry g = bptest::grid(4);
   bp::FieldSlice s = linearSlice(g, 0.0, 0.0f);

@@ -360,6 +360,9 @@ TEST_F(RawVectorVolumeSeriesReaderTest, BrokenDescriptorsGiveAnErrorNamingTheFil
     { "z.bpvol",
       head + "\"byte_order\": \"little\", \"z_coordinates\": [0, 1], \"files\": " + files + "}",
       "z_coordinates has 2 values" },
+    { "noz.bpvol",
+      head + "\"byte_order\": \"little\", \"z_coordinates\": [], \"files\": " + files + "}",
+      "empty 'z_coordinates'" },
     { "empty.bpvol", "", "is empty" },
   };
   for (const Case& c : cases)

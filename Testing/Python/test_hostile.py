@@ -97,6 +97,55 @@ def polygon(sides):
     return source
 
 
+def masked_flow(mask_script):
+    """An ABC flow with a vtkValidPointMask made by `mask_script` from the
+    points' coordinates xyz (numpy, n x 3); it assigns `mask`, or leaves the
+    array to the script (name `out`)."""
+    f = ProgrammableFilter(Input=AnalyticFlow(Flow="ABC", Resolution=[16, 16, 16]),
+                           OutputDataSetType="vtkImageData")
+    f.Script = ("import numpy\n"
+                "from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy\n"
+                "out = self.GetOutput(); out.ShallowCopy(self.GetInput())\n"
+                "n = out.GetNumberOfPoints()\n"
+                "xyz = numpy.array([out.GetPoint(i) for i in range(n)])\n"
+                "mask = None\n" + mask_script + "\n"
+                "if mask is not None:\n"
+                "    a = numpy_to_vtk(numpy.ascontiguousarray(mask), deep=True)\n"
+                "    a.SetName('vtkValidPointMask')\n"
+                "    out.GetPointData().AddArray(a)\n")
+    return f
+
+
+def string_mask_flow():
+    """A vtkValidPointMask of strings."""
+    return masked_flow(
+        "from vtkmodules.vtkCommonCore import vtkStringArray\n"
+        "s = vtkStringArray(); s.SetName('vtkValidPointMask')\n"
+        "for i in range(n): s.InsertNextValue('1')\n"
+        "out.GetPointData().AddArray(s)")
+
+
+def cell_mask_flow():
+    """A vtkValidPointMask given as cell data."""
+    return masked_flow(
+        "c = numpy_to_vtk(numpy.ones(out.GetNumberOfCells(), dtype=numpy.uint8), deep=True)\n"
+        "c.SetName('vtkValidPointMask'); out.GetCellData().AddArray(c)")
+
+
+def table_source():
+    """A table: data with no points."""
+    source = ProgrammableSource(OutputDataSetType="vtkTable")
+    source.Script = ("from vtkmodules.vtkCommonCore import vtkFloatArray\n"
+                     "a = vtkFloatArray(); a.SetName('x'); a.InsertNextValue(1.0)\n"
+                     "self.GetOutput().AddColumn(a)\n")
+    return source
+
+
+def two_lines():
+    return GroupDatasets(Input=[Line(Point1=[-0.5, -0.5, 0], Point2=[0.5, -0.5, 0]),
+                                Line(Point1=[-0.5, 0.5, 0], Point2=[0.5, 0.5, 0])])
+
+
 def overflowing_bpvol():
     """A .bpvol whose dimensions multiply to 2^64 points, with an empty data file."""
     folder = args.scratch or tempfile.mkdtemp()
@@ -190,6 +239,87 @@ CASES = {
     "GPU template of 20k points": (lambda: gpu_display(20000), 1.0, "GL_MAX_TEXTURE_SIZE"),
     "GPU template of 200k points": (lambda: gpu_display(200000), 1.0, "GL_MAX_TEXTURE_SIZE"),
     "GPU template of 2k points": (lambda: gpu_display(2000), 1.0, None),
+    # Issue 27: seeds, templates and masks of any kind of data.
+    "multiblock seed source, unsteady input": (
+        lambda: tracer(flow(Flow="Double Gyre"), SeedSource=two_lines()), 0.5, None,
+        lambda r: r["class"] == "vtkPolyData" and r["points"] == 200 * 8),
+    "multiblock seed source, steady input": (
+        lambda: tracer(flow(Flow="ABC"), SeedSource=two_lines()), 0.5, None,
+        lambda r: r["class"] == "vtkPolyData" and r["points"] == 200 * 8),
+    "multiblock element template": (
+        lambda: tracer(flow(), ElementTemplate=GroupDatasets(Input=[Sphere(), Sphere()])), 1.0,
+        "Extract Block"),
+    "table as seed source": (lambda: tracer(flow(), SeedSource=table_source()), 1.0,
+                             "no points"),
+    "seed image larger than the field": (
+        lambda: tracer(flow(), SeedSource=Wavelet()), 1.0, "outside the field",
+        lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"])),
+    "every seed outside the field": (
+        lambda: tracer(flow(), SeedSource=Line(Point1=[5, 5, 5], Point2=[6, 6, 6])), 1.0,
+        "None of the Seed Source", lambda r: r["points"] == 0),
+    "seeds at 1e30": (
+        lambda: tracer(flow(), SeedSource=Line(Point1=[1e30] * 3, Point2=[2e30] * 3)), 1.0,
+        "None of the Seed Source", lambda r: r["points"] == 0),
+    "every seed in masked cells": (
+        lambda: tracer(masked_flow("mask = (xyz[:, 0] > 0).astype(numpy.uint8)"),
+                       Vectors=["POINTS", "velocity"],
+                       SeedSource=Line(Point1=[-0.9, 0, 0], Point2=[-0.2, 0, 0])), 1.0,
+        "cells outside the flow", lambda r: r["points"] == 0),
+    "some seeds in masked cells": (
+        lambda: tracer(masked_flow("mask = (xyz[:, 0] > 0).astype(numpy.uint8)"),
+                       Vectors=["POINTS", "velocity"],
+                       SeedSource=Line(Point1=[-0.9, 0, 0], Point2=[0.9, 0, 0])), 1.0,
+        "cells outside the flow", lambda r: r["points"] > 0),
+    "mask with one valid point": (
+        lambda: tracer(masked_flow("mask = numpy.zeros(n, numpy.uint8); mask[n // 2] = 1"),
+                       Vectors=["POINTS", "velocity"]), 1.0, "No cell of the field",
+        lambda r: r["points"] == 0),
+    "mask of 3 components": (
+        lambda: tracer(masked_flow("mask = numpy.ones((n, 3), numpy.uint8)"),
+                       Vectors=["POINTS", "velocity"]), 1.0, "3 components",
+        lambda r: r["points"] > 0),
+    "mask of the wrong length": (
+        lambda: tracer(masked_flow("mask = numpy.ones(n // 2, numpy.uint8)"),
+                       Vectors=["POINTS", "velocity"]), 1.0, "values for", lambda r: r["points"] > 0),
+    "mask as cell data": (lambda: tracer(cell_mask_flow(), Vectors=["POINTS", "velocity"]), 1.0,
+                          "cell data", lambda r: r["points"] > 0),
+    "mask of strings": (lambda: tracer(string_mask_flow(), Vectors=["POINTS", "velocity"]), 1.0,
+                        "vtkStringArray", lambda r: r["points"] > 0),
+    "mask of NaN": (
+        lambda: tracer(masked_flow("mask = numpy.full(n, numpy.nan)"),
+                       Vectors=["POINTS", "velocity"]), 1.0, "outside the flow's domain",
+        lambda r: r["points"] == 0),
+    "input times 1e-7 apart": (lambda: tracer(times_source([0, 1, 1 + 1e-7, 2]),
+                                              Vectors=["POINTS", "v"]), 1.5, None),
+    "input times 1e-7 apart, GPU": (
+        lambda: (tracer(times_source([0, 1, 1 + 1e-7, 2]), Vectors=["POINTS", "v"],
+                        Engine="GPU"), "Bound Particles"), 2.0, None),
+    "trail spacing 1e7": (lambda: tracer(flow(), Trails=1, TrailSpacing=10000000), 1.0,
+                          "TrailSpacing", lambda r: r["points"] == 0),
+    "trail spacing 0 with trails off": (lambda: tracer(flow(), Trails=0, TrailSpacing=0), 1.0,
+                                        None),
+    "seeds with Linking": (
+        lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
+        "Seed Source is not used", lambda r: r["points"] > 0),
+    "seeds with a stale emitter box": (
+        lambda: tracer(flow(), EmitterCenter=[50, 50, 50], EmitterSize=[0.1, 0.1, 0.1],
+                       MinimumReleaseSpeed=0.5, SeedSource=Line()), 1.0, None),
+    "seeds on the boundary with Any Particle": (
+        lambda: tracer(flow(), ResetWhen="Any Particle Leaves",
+                       SeedSource=Line(Point1=[-1, -1, -1], Point2=[1, -1, -1])), 1.0,
+        "half an element"),
+    "unknown output array": (
+        lambda: tracer(flow(), OutputArrays=["Velocity", "NoSuchArray"]), 1.0,
+        "no array named 'NoSuchArray'", lambda r: r["points"] > 0),
+    "burst at the last offered time": (
+        lambda: tracer(flow(), Duration=2.0, NumberOfTimeSteps=5, ReleaseWindow=1,
+                       ReleaseStart=2.0, ReleaseStop=2.0), 2.0, "last offered time"),
+    "stiffness out of range (state file)": (
+        lambda: tracer(flow(), Restoration="Shape Matching", ShapeMatchingStiffness=5.0), 1.0,
+        "outside [0, 1]", lambda r: r["points"] > 0),
+    "origin 1e25": (lambda: tracer(masked_flow("out.SetOrigin(1e25, 0, 0)"),
+                                   Vectors=["POINTS", "velocity"]), 1.0,
+                    "too far from the world origin", lambda r: r["points"] == 0),
 }
 
 
@@ -200,7 +330,7 @@ def run_case(name):
     from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy
     LoadPlugin(args.plugin, ns=globals())
-    build, t, _ = CASES[name]
+    build, t = CASES[name][:2]
     with bptest.CapturedMessages() as log:
         made = build()
         proxy, display = made if isinstance(made, tuple) else (made, None)
@@ -218,7 +348,8 @@ def run_case(name):
             Delete(shown)
             Delete(view)
             del view
-    points = data.GetNumberOfPoints() if data else 0
+    points = data.GetNumberOfPoints() if data and data.IsA("vtkDataSet") else 0
+    bounds = list(data.GetBounds()) if points else []
     finite = True
     if points:
         finite = numpy.isfinite(vtk_to_numpy(data.GetPoints().GetData())).all()
@@ -230,6 +361,8 @@ def run_case(name):
     # Plain Python values for json: under ParaView 5.13 with numpy 2 a numpy.bool
     # reached the result after a Programmable Source ran, and json refuses those.
     print("RESULT " + json.dumps({"points": int(points), "finite": True if finite else False,
+                                  "class": str(data.GetClassName()) if data else "",
+                                  "bounds": [float(b) for b in bounds],
                                   "messages": [str(m) for m in log.messages]}))
 
 
@@ -263,7 +396,9 @@ def run_case_process(name, scratch):
 
 scratch_folder = tempfile.TemporaryDirectory(prefix="bp-hostile-")
 scratch = scratch_folder.name
-for name, (_, _, refusal) in CASES.items():
+for name, case in CASES.items():
+    refusal = case[2]
+    expect = case[3] if len(case) > 3 else None
     status, out, seconds = run_case_process(name, scratch)
     result = None
     for line in out.splitlines():
@@ -287,8 +422,11 @@ for name, (_, _, refusal) in CASES.items():
         bptest.check(refusal in said, "%s: refused without naming '%s' (messages: %s)" %
                      (name, refusal, said[:300] or "none"))
         print("    " + (result["messages"] or ["(no message)"])[-1][-240:].strip())
-    else:
+    elif expect is None:
         bptest.check(result["points"] > 0, "%s: traced nothing (messages: %s)" %
                      (name, said[:300] or "none"))
+    if expect is not None:
+        bptest.check(expect(result), "%s: unexpected output (%s %d points, bounds %s)" % (
+            name, result["class"], result["points"], result["bounds"]))
 scratch_folder.cleanup()
 bptest.finish()

@@ -1,0 +1,146 @@
+"""Hostile input under MPI never hangs: each case runs under pvbatch with 2 and
+4 ranks within a time limit, and must end on every rank (mpiexec returns only
+then) with exit status 0, printing its result from rank 0. A case where one
+process's input differs from the others' (data on rank 0 only) must not leave
+the others waiting in a collective step: it traces, or every rank fails with
+the message (issue 27, items 2 and 11).
+
+Run as the driver; it runs itself under pvbatch with `--case NAME`.
+"""
+import argparse
+import os
+import signal
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--case")
+parser.add_argument("--pvbatch", default="pvbatch")
+parser.add_argument("--mpiexec", default="mpiexec")
+args = parser.parse_args()
+
+TIME_LIMIT = 90
+
+
+def rank0_points(script):
+    """A PVTrivialProducer whose polydata (points made by `script` from numpy,
+    assigning xyz) is filled on rank 0 only: the other ranks have no data."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    import numpy  # noqa: F401
+    producer = PVTrivialProducer()
+    data = vtkPolyData()
+    scope = {"numpy": numpy}
+    exec(script, scope)
+    points = vtkPoints()
+    for x in scope["xyz"]:
+        points.InsertNextPoint(*x)
+    data.SetPoints(points)
+    producer.GetClientSideObject().SetOutput(data)
+    return producer
+
+
+def rank0_table():
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    from vtkmodules.vtkCommonDataModel import vtkTable
+    producer = PVTrivialProducer()
+    table = vtkTable()
+    column = vtkFloatArray()
+    column.SetName("x")
+    column.InsertNextValue(1.0)
+    table.AddColumn(column)
+    producer.GetClientSideObject().SetOutput(table)
+    return producer
+
+
+def flow(**properties):
+    properties.setdefault("Resolution", [24, 24, 24])
+    source = AnalyticFlow(**properties)
+    source.UpdatePipeline()
+    return source
+
+
+def tracer(input_proxy, **properties):
+    properties.setdefault("NumberOfElements", 200)
+    return BoundParticleTracer(Input=input_proxy, Vectors=["POINTS", "velocity"], **properties)
+
+
+# name: (what to build, time, whether it must trace something)
+CASES = {
+    "seeds on rank 0 only": (lambda: tracer(flow(Flow="ABC"), SeedSource=rank0_points(
+        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.2) for i in range(20)]")), 0.5, True),
+    "unsteady input, seeds on rank 0 only": (lambda: tracer(flow(Flow="Double Gyre"),
+                                                            SeedSource=rank0_points(
+        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.0) for i in range(20)]")), 0.5, True),
+    "a table on rank 0 only as seeds": (lambda: tracer(flow(), SeedSource=rank0_table()), 0.5,
+                                        False),
+    "seeds outside the field on rank 0 only": (lambda: tracer(flow(), SeedSource=rank0_points(
+        "xyz = [(5, 5, 5)]")), 0.5, False),
+    "a 2x2x2 field": (lambda: tracer(flow(Resolution=[2, 2, 2])), 0.5, True),
+    "a field of 3 cells along x": (lambda: tracer(flow(Resolution=[4, 2, 2])), 0.5, True),
+}
+
+
+def run_case(name):
+    from paraview import servermanager
+    build, t, _ = CASES[name]
+    proxy = build()
+    proxy.UpdatePipeline(t)
+    data = servermanager.Fetch(proxy)
+    print("RESULT %d" % (data.GetNumberOfPoints() if data else 0), flush=True)
+
+
+if args.case:
+    # The builders above name paraview.simple's functions and the plugin's proxies.
+    from paraview.simple import *  # noqa: F401,F403
+    LoadPlugin(args.plugin, ns=globals())
+    run_case(args.case)  # pvbatch ends with status 1 on sys.exit(), so fall through
+
+
+def drive():
+    """Runs every case under 2 and 4 ranks and checks how each ended."""
+    # pvpython initialises MPI as a singleton; its variables would make a child
+    # mpiexec believe it runs inside that job.
+    environment = {k: v for k, v in os.environ.items()
+                   if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
+    for name, (_, _, traces) in CASES.items():
+        for ranks in (2, 4):
+            command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
+                       args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
+                       "--case", name]
+            started = time.time()
+            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                       text=True, env=environment, start_new_session=True)
+            try:
+                out, _ = process.communicate(timeout=TIME_LIMIT)
+            except subprocess.TimeoutExpired:
+                os.killpg(process.pid, signal.SIGKILL)
+                out, _ = process.communicate()
+            seconds = time.time() - started
+            points = [int(line.split()[1]) for line in out.splitlines() if line.startswith("RESULT ")]
+            messages = [line[line.find("vtkBoundParticleTracer"):][:200] for line in out.splitlines()
+                        if "ERR|" in line or "WARN|" in line]
+            print("%-40s %d ranks: exit %s, %.1f s, %s" % (
+                name, ranks, process.returncode, seconds,
+                "points %d" % points[0] if points else "no result"))
+            for m in sorted(set(messages))[:3]:
+                print("    " + m)
+            bptest.check(seconds < TIME_LIMIT, "%s, %d ranks: ran past %d s (a hang)" % (
+                name, ranks, TIME_LIMIT))
+            bptest.check(process.returncode == 0 and points, "%s, %d ranks: exited with %s%s" % (
+                name, ranks, process.returncode, "" if points else ", no result"))
+            if points:
+                bptest.check((points[0] > 0) == traces, "%s, %d ranks: %d points" % (
+                    name, ranks, points[0]))
+                bptest.check(traces or messages, "%s, %d ranks: refused without a message" % (
+                    name, ranks))
+    bptest.finish()
+
+
+if not args.case:
+    drive()
