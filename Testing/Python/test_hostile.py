@@ -246,6 +246,10 @@ CASES = {
     "multiblock seed source, steady input": (
         lambda: tracer(flow(Flow="ABC"), SeedSource=two_lines()), 0.5, None,
         lambda r: r["class"] == "vtkPolyData" and r["points"] == 200 * 8),
+    "multiblock seed source, Bound Particles display": (
+        lambda: (tracer(flow(Flow="ABC"), SeedSource=two_lines(), Engine="GPU"),
+                 "Bound Particles"), 0.5, None,
+        lambda r: r["class"] == "vtkPolyData" and r["points"] > 0),
     "multiblock element template": (
         lambda: tracer(flow(), ElementTemplate=GroupDatasets(Input=[Sphere(), Sphere()])), 1.0,
         "Extract Block"),
