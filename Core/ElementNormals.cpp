@@ -1,21 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ElementNormals.h"
+#include "Simd.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-// Four elements in SSE2 lanes where the target has SSE2 (every x86-64 does).
-// Elsewhere (aarch64), or with BOUNDPARTICLES_NO_SIMD defined (to test this
-// path on x86-64), each element takes the scalar path: the same bits, since
-// the lanes are defined as equal to it.
-#if defined(__SSE2__) && !defined(BOUNDPARTICLES_NO_SIMD)
-#include <emmintrin.h>
-#define BOUNDPARTICLES_SSE2_LANES 1
-#else
-#define BOUNDPARTICLES_SSE2_LANES 0
-#endif
 
 namespace bp
 {
@@ -77,7 +67,7 @@ void elementNormalsVia(
   }
 }
 
-#if BOUNDPARTICLES_SSE2_LANES
+#if BOUNDPARTICLES_SSE2
 /**
  * elementNormalsVia() for four consecutive elements, one per lane: the same
  * IEEE operations in the same order (SSE2, no fused multiply-add), so the
@@ -181,7 +171,7 @@ void elementsNormals(
 {
   const std::size_t n = shape.particleCount(), stride = 3 * n;
   std::size_t e = 0;
-#if BOUNDPARTICLES_SSE2_LANES
+#if BOUNDPARTICLES_SSE2
   float local[12 * LocalParticles];
   std::vector<float> large(n > LocalParticles ? 12 * n : 0);
   float* sum = n > LocalParticles ? large.data() : local;

@@ -28,7 +28,7 @@ void elementNormals(const ElementTemplate& shape, const float* p, float* normals
 /**
  * The normals of `count` consecutive elements (3n floats each at
  * `positions` and at `normals`), bit for bit as elementNormals() gives
- * them, four elements at a time in SSE lanes.
+ * them, four elements at a time in SSE2 lanes where there are some (Simd.h).
  */
 void elementsNormals(
   const ElementTemplate& shape, const float* positions, float* normals, std::size_t count);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ValueRanges.h"
+#include "Simd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,17 +8,6 @@
 #include <memory>
 #include <mutex>
 #include <type_traits>
-
-// Float tuples in SSE2 lanes where the target has SSE2 (every x86-64 does).
-// Elsewhere (aarch64), or with BOUNDPARTICLES_NO_SIMD defined (to test this
-// path on x86-64), scanTuples() takes them: the same ends, since the lanes
-// keep its rules.
-#if defined(__SSE2__) && !defined(BOUNDPARTICLES_NO_SIMD)
-#include <emmintrin.h>
-#define BOUNDPARTICLES_SSE2_LANES 1
-#else
-#define BOUNDPARTICLES_SSE2_LANES 0
-#endif
 
 namespace bp
 {
@@ -169,7 +159,7 @@ void scanTuples(const T* values, std::size_t begin, std::size_t end, Partial<T>&
   }
 }
 
-#if BOUNDPARTICLES_SSE2_LANES
+#if BOUNDPARTICLES_SSE2
 /// Folds four SSE lanes of running ends into `into` (a lane that saw only
 /// NaN has counted nothing).
 void foldLanes(__m128 low, __m128 high, MinMax<float>& into)
@@ -254,7 +244,7 @@ void scanFloatTuples(const float* values, std::size_t begin, std::size_t end, Pa
 template <typename T, std::size_t N>
 void scanTuplesFast(const T* values, std::size_t begin, std::size_t end, Partial<T>& part)
 {
-#if BOUNDPARTICLES_SSE2_LANES
+#if BOUNDPARTICLES_SSE2
   if constexpr (std::is_same<T, float>::value && (N == 1 || N == 3))
   {
     scanFloatTuples<N>(values, begin, end, part);

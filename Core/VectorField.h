@@ -18,6 +18,8 @@
 #ifndef BoundParticles_VectorField_h
 #define BoundParticles_VectorField_h
 
+#include "Simd.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,13 +27,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-
-#if defined(__SSE2__) && !defined(BOUNDPARTICLES_NO_SIMD)
-#include <emmintrin.h>
-#define BOUNDPARTICLES_SSE2 1
-#else
-#define BOUNDPARTICLES_SSE2 0
-#endif
 
 namespace bp
 {

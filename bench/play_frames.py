@@ -18,11 +18,16 @@ Force, 1024x768.
     with-display.sh pvpython bench/play_frames.py --plugin BoundParticles.so
 """
 import argparse
+import os
 import statistics
+import sys
 import time
 
 import paraview.simple
 from paraview.simple import *  # noqa: F401,F403
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tracer_costs import update_and_step_ms  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -78,20 +83,9 @@ def new_view():
 def engine_costs(count, arrays=ALL):
     """update and step of the CPU engine, nothing shown."""
     tracer = new_tracer(count, "CPU", arrays)
-    times = list(tracer.TimestepValues)
-    tracer.UpdatePipeline(times[0])
-    updates = []
-    for k in range(1, warmup + UPDATES + 1):
-        start = time.perf_counter()
-        tracer.UpdatePipeline(times[k])
-        updates.append(time.perf_counter() - start)
-    steps_of_long = []
-    for r in range(1, REPEATS + 1):
-        start = time.perf_counter()
-        tracer.UpdatePipeline(times[warmup + UPDATES + r * LONG])
-        steps_of_long.append((time.perf_counter() - start) / LONG)
+    costs = update_and_step_ms(tracer, warmup, UPDATES, LONG, REPEATS)
     Delete(tracer)
-    return median_ms(updates[warmup:]), median_ms(steps_of_long)
+    return costs
 
 
 def display_costs(count, engine, representation, arrays=ALL):

@@ -14,10 +14,14 @@ drawn.
 import argparse
 import os
 import statistics
+import sys
 import time
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tracer_costs import update_and_step_ms  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -41,20 +45,9 @@ def costs(count):
                                  StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
                                  Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
                                  Engine="CPU", OutputArrays=["Normals", "Force"])
-    times = list(tracer.TimestepValues)
-    tracer.UpdatePipeline(times[0])
-    updates = []
-    for k in range(1, WARMUP + UPDATES + 1):
-        start = time.perf_counter()
-        tracer.UpdatePipeline(times[k])
-        updates.append(time.perf_counter() - start)
-    long_steps = []
-    for r in range(1, REPEATS + 1):
-        start = time.perf_counter()
-        tracer.UpdatePipeline(times[WARMUP + UPDATES + r * LONG])
-        long_steps.append((time.perf_counter() - start) / LONG)
+    result = update_and_step_ms(tracer, WARMUP, UPDATES, LONG, REPEATS)
     Delete(tracer)
-    return 1e3 * statistics.median(updates[WARMUP:]), 1e3 * statistics.median(long_steps)
+    return result
 
 
 pm = servermanager.vtkSMProxyManager.GetProxyManager()

@@ -114,6 +114,31 @@ def check_baseline(image, baselines, name, update, mean_bar=1.0, pixel_bar=0.005
           "%s: differs from its baseline: mean %.3f, pixels %.4f" % (name, mean, pixels))
 
 
+def colour_display(shown, color, scalar_range):
+    """The tests' look of a display: `color` mapped with Cool to Warm over
+    `scalar_range`, or with no `color` a solid sand colour; a little specular."""
+    from paraview.simple import ColorBy, GetColorTransferFunction
+    if color:
+        ColorBy(shown, ("POINTS", color))
+        lut = GetColorTransferFunction(color)
+        lut.ApplyPreset("Cool to Warm", True)
+        lut.RescaleTransferFunction(*scalar_range)
+    else:
+        ColorBy(shown, ("POINTS", None))
+        shown.DiffuseColor = [0.9, 0.85, 0.7]
+    shown.Specular = 0.3
+
+
+def save_picture(view, folder, name):
+    """Saves `view` as folder/name.png and deletes it; returns the path."""
+    import os
+    from paraview.simple import Delete, SaveScreenshot
+    path = os.path.join(folder, name + ".png")
+    SaveScreenshot(path, view)
+    Delete(view)
+    return path
+
+
 def element_view(size):
     """The display image tests' view: no axes, a dark background, the camera
     on the [-1, 1] box from above one corner."""

@@ -71,22 +71,10 @@ def render(source, representation, color, scalar_range, offset, name, time=1.0):
     view.CameraFocalPoint = [c + offset for c in view.CameraFocalPoint]
     shown = Show(source, view)
     shown.SetRepresentationType(representation)
-    if color:
-        ColorBy(shown, ("POINTS", color))
-        lut = GetColorTransferFunction(color)
-        lut.ApplyPreset("Cool to Warm", True)
-        lut.RescaleTransferFunction(*scalar_range)
-    else:
-        ColorBy(shown, ("POINTS", None))
-        shown.DiffuseColor = [0.9, 0.85, 0.7]
-    shown.Specular = 0.3
+    bptest.colour_display(shown, color, scalar_range)
     view.ViewTime = time
     Render(view)
-    path = os.path.join(args.output, name + ".png")
-    SaveScreenshot(path, view)
-    Delete(view)
-    del view
-    return path
+    return bptest.save_picture(view, args.output, name)
 
 
 def label(offset):

@@ -40,23 +40,11 @@ def render(source, representation, color, scalar_range, name, time=1.0, size=(32
     shown.SetRepresentationType(representation)
     for key, value in display.items():
         setattr(shown, key, value)
-    if color:
-        ColorBy(shown, ("POINTS", color))
-        lut = GetColorTransferFunction(color)
-        lut.ApplyPreset("Cool to Warm", True)
-        lut.RescaleTransferFunction(*scalar_range)
-    else:
-        ColorBy(shown, ("POINTS", None))
-        shown.DiffuseColor = [0.9, 0.85, 0.7]
-    shown.Specular = 0.3
+    bptest.colour_display(shown, color, scalar_range)
     for frame in list(frames) + [time]:  # played up to `time`, one frame after another
         view.ViewTime = frame
         Render(view)
-    path = os.path.join(args.output, name + ".png")
-    SaveScreenshot(path, view)
-    Delete(view)
-    del view
-    return path
+    return bptest.save_picture(view, args.output, name)
 
 
 def compare_paths(cpu, gpu, color, scalar_range, name, frames=(), time=1.0, **display):
