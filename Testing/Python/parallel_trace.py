@@ -124,13 +124,25 @@ def all_traces():
     return cases
 
 
-# The filter that writes each point's rank, and its array: Process Id Scalars
-# ("ProcessId") up to 5.13, Process Ids ("PointProcessIds", its successor and
-# the only one in 6.x) after.
-if "ProcessIdScalars" in globals():
-    process_ids, process_array = ProcessIdScalars, "ProcessId"
-else:
-    process_ids, process_array = ProcessIds, "PointProcessIds"
+# Each point's rank, from the rank itself: ParaView's own filters for it differ
+# between versions (Process Id Scalars up to 5.13; 6.1's Process Ids wrote no
+# array under pvbatch on 2 ranks).
+RANK_SCRIPT = (
+    "from vtkmodules.vtkCommonCore import vtkIntArray\n"
+    "from vtkmodules.vtkParallelCore import vtkMultiProcessController\n"
+    "out = self.GetOutput(); out.ShallowCopy(self.GetInput())\n"
+    "c = vtkMultiProcessController.GetGlobalController()\n"
+    "a = vtkIntArray(); a.SetName('ProcessId')\n"
+    "a.SetNumberOfTuples(out.GetNumberOfPoints())\n"
+    "a.Fill(c.GetLocalProcessId() if c else 0)\n"
+    "out.GetPointData().AddArray(a)\n")
+
+
+def process_ids(Input):
+    return ProgrammableFilter(Input=Input, Script=RANK_SCRIPT)
+
+
+process_array = "ProcessId"
 
 result = {}
 for name, (tracer, times) in all_traces().items():
