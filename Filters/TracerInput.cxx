@@ -205,36 +205,44 @@ std::string missingArray(vtkDataSet* data, const std::string& requested)
 }
 } // namespace
 
-std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
-  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
-  const std::string& requested, std::string* maskProblem)
+namespace
 {
-  nonFinitePoints = 0;
+/// The field's dataset (an image or a rectilinear grid with points), or
+/// null with `error` saying what the input is instead.
+vtkDataSet* fieldDataSet(vtkDataObject* input, std::string& error)
+{
   std::ostringstream err;
-  vtkImageData* image = vtkImageData::SafeDownCast(input);
-  vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(input);
-  vtkDataSet* dataSet = image ? static_cast<vtkDataSet*>(image) : rectilinear;
+  vtkDataSet* dataSet = vtkImageData::SafeDownCast(input)
+    ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(input))
+    : vtkRectilinearGrid::SafeDownCast(input);
   if (vtkCompositeDataSet::SafeDownCast(input))
   {
     err << "The input is a " << input->GetClassName()
         << " (a composite of several datasets); Bound Particle Tracer traces one grid. Pick one "
            "block with Extract Block, or merge them onto one grid with Resample To Image.";
-    return err.str();
   }
-  if (!dataSet)
+  else if (!dataSet)
   {
     err << "The input is a " << (input ? input->GetClassName() : "null data object")
         << "; Bound Particle Tracer needs a vtkImageData (a uniform grid) or a "
            "vtkRectilinearGrid. Resample the data onto an image first, e.g. with the Resample To "
            "Image filter.";
-    return err.str();
   }
-  if (dataSet->GetNumberOfPoints() == 0)
+  else if (dataSet->GetNumberOfPoints() == 0)
   {
-    return "The input grid is empty: it has no points.";
+    err << "The input grid is empty: it has no points.";
   }
-  const int* dataExtent = image ? image->GetExtent() : rectilinear->GetExtent();
-  std::copy(dataExtent, dataExtent + 6, extent);
+  error = err.str();
+  return error.empty() ? dataSet : nullptr;
+}
+
+/// The vector array to trace: `vectors` as selected, or without a selection
+/// the first 3-component point array; an error unless it is a 3-component
+/// point array of one tuple per point.
+std::string chooseVectors(
+  vtkDataSet* dataSet, vtkDataArray*& vectors, int association, const std::string& requested)
+{
+  std::ostringstream err;
   if (!vectors && !requested.empty())
   {
     return missingArray(dataSet, requested);
@@ -267,19 +275,40 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
       err << " The input has a point array '" << name << "' too: Vectors = ['POINTS', '" << name
           << "'].";
     }
-    return err.str();
   }
-  if (vectors->GetNumberOfComponents() != 3)
+  else if (vectors->GetNumberOfComponents() != 3)
   {
     err << "The array '" << name << "' has " << vectors->GetNumberOfComponents()
         << " component(s); Bound Particle Tracer needs a 3-component vector array.";
-    return err.str();
   }
-  if (vectors->GetNumberOfTuples() != dataSet->GetNumberOfPoints())
+  else if (vectors->GetNumberOfTuples() != dataSet->GetNumberOfPoints())
   {
     err << "The array '" << name << "' has " << vectors->GetNumberOfTuples() << " tuples for "
         << dataSet->GetNumberOfPoints() << " points.";
-    return err.str();
+  }
+  return err.str();
+}
+} // namespace
+
+std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int association,
+  bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
+  const std::string& requested, std::string* maskProblem)
+{
+  nonFinitePoints = 0;
+  std::string error;
+  vtkDataSet* dataSet = fieldDataSet(input, error);
+  if (!dataSet)
+  {
+    return error;
+  }
+  vtkImageData* image = vtkImageData::SafeDownCast(dataSet);
+  vtkRectilinearGrid* rectilinear = vtkRectilinearGrid::SafeDownCast(dataSet);
+  const int* dataExtent = image ? image->GetExtent() : rectilinear->GetExtent();
+  std::copy(dataExtent, dataExtent + 6, extent);
+  error = chooseVectors(dataSet, vectors, association, requested);
+  if (!error.empty())
+  {
+    return error;
   }
   bp::GridGeometry g;
   if (image)

@@ -73,8 +73,9 @@ public:
   /**
    * Gives every process the same values: those of the first process whose
    * `values` are not empty (collective). A source filled on one process only
-   * (a trivial producer) then serves all. Returns how many processes had
-   * other, non-empty values.
+   * (a trivial producer) then serves all. Returns how many later processes
+   * had a different, non-zero number of values (values of the same count are
+   * not compared).
    */
   int shareFirst(std::vector<double>& values) const;
 

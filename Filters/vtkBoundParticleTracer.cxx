@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <new>
 
 // The request key's DataKey is where the output keeps the value it was made for.
@@ -335,6 +336,11 @@ int vtkBoundParticleTracer::RequestData(
     vtkErrorMacro("Out of memory while tracing "
       << this->NumberOfElements
       << " elements; use fewer elements or a smaller template, or close other data.");
+  }
+  catch (const std::exception& e)
+  {
+    // Nothing else is thrown on purpose: end the update, keep the session.
+    vtkErrorMacro("The trace failed: " << e.what() << "; please report this with the input.");
   }
   vtkInternals& I = *this->Internals;
   I.endFailedUpdate();

@@ -118,7 +118,8 @@ public:
 
   ///@{
   /// The built-in element shape (thesis Fig. 3.4). Default STRIP8.
-  virtual void SetElementShape(int value); // clamped to [POINT, FISH], with a warning
+  /// Clamped to [POINT, FISH]; a value outside warns.
+  virtual void SetElementShape(int value);
   vtkGetMacro(ElementShape, int);
   ///@}
 
@@ -142,7 +143,8 @@ public:
   /// Springs of a template mesh that has no lines: its EDGES, plus across
   /// every shared edge the far corners (EDGES_AND_DIAGONALS, default), or
   /// ALL_PAIRS (rigid).
-  virtual void SetTemplateSprings(int value); // clamped to [EDGES, ALL_PAIRS], with a warning
+  /// Clamped to [EDGES, ALL_PAIRS]; a value outside warns.
+  virtual void SetTemplateSprings(int value);
   vtkGetMacro(TemplateSprings, int);
   ///@}
 
@@ -192,13 +194,15 @@ public:
   /// units it is the step in the data's time units. Must be positive.
   vtkSetMacro(StepSize, double);
   vtkGetMacro(StepSize, double);
-  virtual void SetStepSizeUnit(int value); // clamped to [CELL_LENGTH, TIME], with a warning
+  /// Clamped to [CELL_LENGTH, TIME]; a value outside warns.
+  virtual void SetStepSizeUnit(int value);
   vtkGetMacro(StepSizeUnit, int);
   ///@}
 
   ///@{
   /// Advection integrator: EULER (thesis eq. 2.2, default), RUNGE_KUTTA_2, RUNGE_KUTTA_4.
-  virtual void SetIntegrator(int value); // clamped to [EULER, RUNGE_KUTTA_4], with a warning
+  /// Clamped to [EULER, RUNGE_KUTTA_4]; a value outside warns.
+  virtual void SetIntegrator(int value);
   vtkGetMacro(Integrator, int);
   ///@}
 
@@ -207,14 +211,15 @@ public:
   /// corrections times RelaxationFactor), GAUSS_SEIDEL, or SHAPE_MATCHING (best
   /// rigid fit, Müller et al. 2005, goals blended by ShapeMatchingStiffness);
   /// RestorationIterations iterations per step (default 1).
-  virtual void SetRestoration(
-    int value); // clamped to [AVERAGED_JACOBI, SHAPE_MATCHING], with a warning
+  /// Clamped to [AVERAGED_JACOBI, SHAPE_MATCHING]; a value outside warns.
+  virtual void SetRestoration(int value);
   vtkGetMacro(Restoration, int);
   vtkSetMacro(RestorationIterations, int);
   vtkGetMacro(RestorationIterations, int);
   vtkSetMacro(RelaxationFactor, double);
   vtkGetMacro(RelaxationFactor, double);
-  virtual void SetShapeMatchingStiffness(double value); // clamped to [0.0, 1.0], with a warning
+  /// Clamped to [0.0, 1.0]; a value outside warns.
+  virtual void SetShapeMatchingStiffness(double value);
   vtkGetMacro(ShapeMatchingStiffness, double);
   ///@}
 
@@ -222,9 +227,11 @@ public:
   /// Shape matching's fit: RIGID (default) or LINEAR (Müller et al. 2005,
   /// §4.3: goals from beta * A + (1 - beta) * R, A the best affine fit, so
   /// elements may also shear and stretch). LinearShapeMatchingBeta is beta.
-  virtual void SetShapeMatchingMode(int value); // clamped to [RIGID, LINEAR], with a warning
+  /// Clamped to [RIGID, LINEAR]; a value outside warns.
+  virtual void SetShapeMatchingMode(int value);
   vtkGetMacro(ShapeMatchingMode, int);
-  virtual void SetLinearShapeMatchingBeta(double value); // clamped to [0.0, 1.0], with a warning
+  /// Clamped to [0.0, 1.0]; a value outside warns.
+  virtual void SetLinearShapeMatchingBeta(double value);
   vtkGetMacro(LinearShapeMatchingBeta, double);
   ///@}
 
@@ -237,19 +244,22 @@ public:
   /// from lattice sites filling the emitter box, with one orientation and one
   /// lifetime, and lives out its lifetime even where it leaves the field. The
   /// links are output as lines.
-  virtual void SetLinking(int value); // clamped to [NO_LINKING, TORUS], with a warning
+  /// Clamped to [NO_LINKING, TORUS]; a value outside warns.
+  virtual void SetLinking(int value);
   vtkGetMacro(Linking, int);
-  virtual void SetLatticeWidth(int value); // clamped to [0, VTK_INT_MAX], with a warning
+  /// Clamped to [0, VTK_INT_MAX]; a value outside warns.
+  virtual void SetLatticeWidth(int value);
   vtkGetMacro(LatticeWidth, int);
-  virtual void SetLinkStiffness(double value); // clamped to [0.0, 1.0], with a warning
+  /// Clamped to [0.0, 1.0]; a value outside warns.
+  virtual void SetLinkStiffness(double value);
   vtkGetMacro(LinkStiffness, double);
   ///@}
 
   ///@{
   /// When an element is put back into the emitter besides running out of
   /// lifetime: its centre leaves the field (thesis) or any particle does.
-  virtual void SetResetWhen(
-    int value); // clamped to [CENTER_LEAVES, ANY_PARTICLE_LEAVES], with a warning
+  /// Clamped to [CENTER_LEAVES, ANY_PARTICLE_LEAVES]; a value outside warns.
+  virtual void SetResetWhen(int value);
   vtkGetMacro(ResetWhen, int);
   ///@}
 
@@ -318,7 +328,8 @@ public:
   /// The axis (0, 1, 2) for the Layer colouring (an element's initial centre
   /// along it) and the Radius colouring (distance of that centre from the axis
   /// line through the field's centre). Default 2 (Z).
-  virtual void SetColoringAxis(int value); // clamped to [0, 2], with a warning
+  /// Clamped to [0, 2]; a value outside warns.
+  virtual void SetColoringAxis(int value);
   vtkGetMacro(ColoringAxis, int);
   ///@}
 
@@ -361,7 +372,8 @@ public:
   /// render window and this filter only records the work (see
   /// GPU_WORK_QUEUE()); every other consumer (Surface, writers, other filters)
   /// still gets the CPU result, so nothing downstream ever sees a stale trace.
-  virtual void SetEngine(int value); // clamped to [CPU, GPU], with a warning
+  /// Clamped to [CPU, GPU]; a value outside warns.
+  virtual void SetEngine(int value);
   vtkGetMacro(Engine, int);
   ///@}
 

@@ -197,7 +197,10 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
                                     << "; using it as time " << slice.time << ".");
     }
   }
-  return this->keepTimeStep(grid, offset, slice);
+  const std::string kept = this->keepTimeStep(grid, offset, slice);
+  // Each process checks its own piece (its velocities, its grid): one
+  // process's failure must be every process's before the next collective step.
+  return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
 }
 
 std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
@@ -421,6 +424,15 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
     }
     atBoundary += nearBoundary ? 1 : 0;
     p.seedPoints.insert(p.seedPoints.end(), x, x + 3);
+  }
+  // Where releases land: the seeds' box (the GPU display's colour ranges of
+  // Layer and Radius are taken over the emitter box).
+  for (std::size_t i = 0; i < p.seedPoints.size(); ++i)
+  {
+    const int a = int(i % 3);
+    const float x = p.seedPoints[i];
+    p.emitterMin[a] = i < 3 ? x : std::min(p.emitterMin[a], x);
+    p.emitterMax[a] = i < 3 ? x : std::max(p.emitterMax[a], x);
   }
   const std::size_t used = std::min(count, bp::MaxSeedPoints);
   if (p.seedPoints.empty() || noFlow == p.seedPoints.size() / 3)

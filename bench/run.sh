@@ -11,7 +11,7 @@ out="$(realpath -m "${1:-$root/bench-output}")"
 shift || true
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 mkdir -p "$out"
-plugin="$(ls "$build"/lib/paraview-*/plugins/BoundParticles/BoundParticles.so | head -n 1)"
+plugin="$(cat "$build/plugin-path.txt")"
 "$build/bin/BoundParticlesBench" --csv "$out/engines.csv" "$@" | tee "$out/engines.txt"
 /usr/bin/python3 "$root/bench/plot.py" "$out/engines.csv" "$out/engines.png"
 # ParaView's own Particle Tracer on the same job, side by side.

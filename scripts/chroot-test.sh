@@ -45,9 +45,10 @@ unmount_all() {
 }
 trap unmount_all EXIT
 
-bind() { # bind SOURCE TARGET [ro]
+bind() { # bind SOURCE TARGET [ro]: a recursive bind (/dev brings /dev/pts and /dev/shm)
   mkdir -p "$2"
-  mount --bind "$1" "$2"
+  mount --rbind "$1" "$2"
+  mount --make-rslave "$2"
   mounted+=("$2")
   if [ "${3:-}" = ro ]; then
     mount -o remount,bind,ro "$2"
@@ -63,7 +64,9 @@ make_chroot() {
   local script=()
   [ -e "/usr/share/debootstrap/scripts/$suite" ] || script=(/usr/share/debootstrap/scripts/sid)
   say "debootstrap into $dir"
-  rm -rf "$dir.partial"
+  # A debootstrap killed midway may have left its own mounts there.
+  umount -R "$dir.partial/proc" "$dir.partial/sys" 2>/dev/null || true
+  rm -rf --one-file-system "$dir.partial"
   mkdir -p "$chroots"
   debootstrap --variant=minbase "$suite" "$dir.partial" "$(mirror)" "${script[@]}" \
     >"$chroots/$suite-debootstrap.log" 2>&1 \
@@ -74,6 +77,10 @@ make_chroot() {
 }
 
 start=$SECONDS
+mkdir -p "$chroots"
+# One run per suite at a time: two would share the chroot's /build.
+exec 9>"$chroots/$suite.lock"
+flock 9
 [ -d "$dir" ] || make_chroot
 cp /etc/resolv.conf "$dir/etc/resolv.conf" 2>/dev/null || true
 # Packages installed inside start no services (there is no init to run them).
@@ -83,8 +90,6 @@ chmod +x "$dir/usr/sbin/policy-rc.d"
 bind /proc "$dir/proc"
 bind /sys "$dir/sys"
 bind /dev "$dir/dev"
-bind /dev/pts "$dir/dev/pts"
-mkdir -p "$dir/dev/shm"
 bind "$root" "$dir/work/main" ro
 if [ -d "$shared" ]; then
   bind "$shared" "$dir/work/shared" ro
@@ -96,6 +101,8 @@ inside() {
   chroot "$dir" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
     HOME=/root LANG=C.UTF-8 BOUNDPARTICLES_BUILD_DIR=/build CI="${CI:-}" "$@"
 }
+# An install interrupted in an earlier run leaves packages half-configured.
+inside dpkg --configure -a >/dev/null 2>&1 || true
 if [ $# -gt 0 ]; then
   inside bash -c 'cd /work/main && bash scripts/build.sh >/dev/null && exec "$@"' command "$@"
   exit

@@ -7,6 +7,6 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$(realpath -m "${1:-$root/demo-output}")"
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
-plugin="$(ls "$build"/lib/paraview-*/plugins/BoundParticles/BoundParticles.so | head -n 1)"
+plugin="$(cat "$build/plugin-path.txt")"
 bash "$root/scripts/with-display.sh" --unless-egl \
   pvpython "$root/demo/demo.py" --plugin "$plugin" --output "$out"

@@ -25,12 +25,18 @@ case "$codename" in
       libxml2-dev libexpat1-dev libhdf5-dev libboost-dev libfreetype-dev libjpeg-dev
       libpng-dev liblzma-dev zlib1g-dev libx11-dev python3-mpi4py)
     ;;
-  *) # forky, sid: ParaView 6 builds on the system VTK (with TBB).
+  forky | sid) # ParaView 6 builds on the system VTK (with TBB).
     SUITE=(qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-5compat-dev qt6-svg-dev
       libvtk9-dev libtbb-dev libxml2-dev libexpat1-dev libhdf5-dev libboost-dev
       libfreetype-dev libjpeg-dev libpng-dev liblzma-dev zlib1g-dev libx11-dev libexprtk-dev
       libjsoncpp-dev libproj-dev libogg-dev libsqlite3-dev nlohmann-json3-dev python3-mpi4py
       xsltproc libvtk9-qt-dev)
+    ;;
+  *)
+    echo "setup: Debian 12 (bookworm), 13 (trixie) or forky/sid is needed; this is" \
+      "'${codename:-unknown}'. Install ParaView's development files yourself and build" \
+      "with cmake (README: ParaView versions)." >&2
+    exit 1
     ;;
 esac
 PACKAGES=("${COMMON[@]}" "${SUITE[@]}")

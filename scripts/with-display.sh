@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Runs a command with a private Xvfb display of 24-bit colour (Debian's VTK is
-# GLX-only, so pvpython, pvbatch and the GUI need one). Xvfb picks a free
-# display number itself (-displayfd), so parallel runs cannot collide, and no
-# temporary X authority is involved, so nothing is left to clean up.
+# Runs a command with a private Xvfb display of 24-bit colour (ParaView 5.11
+# and 5.13 from Debian are GLX-only, so pvpython, pvbatch and the GUI need
+# one). Xvfb picks a free display number itself (-displayfd), so parallel runs
+# cannot collide, and no temporary X authority is involved, so nothing is left
+# to clean up.
 #
 #   with-display.sh [--unless-egl] COMMAND...
 #

@@ -70,25 +70,42 @@ def tracer(input_proxy, **properties):
     return BoundParticleTracer(Input=input_proxy, Vectors=["POINTS", "velocity"], **properties)
 
 
-# name: (what to build, time, whether it must trace something)
+def spiked_flow():
+    """An ABC flow with one vector of 1e30 in the last rank's block only: that
+    rank alone finds its piece unusable."""
+    f = ProgrammableFilter(Input=flow(), OutputDataSetType="vtkImageData")
+    f.Script = ("from vtkmodules.vtkParallelCore import vtkMultiProcessController\n"
+                "out = self.GetOutput(); out.DeepCopy(self.GetInput())\n"
+                "c = vtkMultiProcessController.GetGlobalController()\n"
+                "if c and c.GetLocalProcessId() == c.GetNumberOfProcesses() - 1:\n"
+                "    out.GetPointData().GetArray('velocity').SetTuple3(0, 1e30, 0, 0)\n")
+    return f
+
+
+# name: (what to build, time, whether it must trace something, what a
+# refusal or warning must say)
 CASES = {
     "seeds on rank 0 only": (lambda: tracer(flow(Flow="ABC"), SeedSource=rank0_points(
-        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.2) for i in range(20)]")), 0.5, True),
+        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.2) for i in range(20)]")), 0.5, True, None),
     "unsteady input, seeds on rank 0 only": (lambda: tracer(flow(Flow="Double Gyre"),
                                                             SeedSource=rank0_points(
-        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.0) for i in range(20)]")), 0.5, True),
+        "xyz = [(-0.5 + 0.05 * i, 0.1, 0.0) for i in range(20)]")), 0.5, True, None),
     "a table on rank 0 only as seeds": (lambda: tracer(flow(), SeedSource=rank0_table()), 0.5,
-                                        False),
+                                        False, "has no points"),
     "seeds outside the field on rank 0 only": (lambda: tracer(flow(), SeedSource=rank0_points(
-        "xyz = [(5, 5, 5)]")), 0.5, False),
-    "a 2x2x2 field": (lambda: tracer(flow(Resolution=[2, 2, 2])), 0.5, True),
-    "a field of 3 cells along x": (lambda: tracer(flow(Resolution=[4, 2, 2])), 0.5, True),
+        "xyz = [(5, 5, 5)]")), 0.5, False, "None of the Seed Source"),
+    "a template on rank 0 only": (lambda: tracer(flow(), ElementTemplate=rank0_points(
+        "xyz = [(0, 0, 0), (0.1, 0, 0)]")), 0.5, False, "Element Template"),
+    "one rank's field unusable": (lambda: tracer(spiked_flow()), 0.5, False,
+                                  "vector array holds values up to 1e+30"),
+    "a 2x2x2 field": (lambda: tracer(flow(Resolution=[2, 2, 2])), 0.5, True, "too few cells"),
+    "a field of 3 cells along x": (lambda: tracer(flow(Resolution=[4, 2, 2])), 0.5, True, None),
 }
 
 
 def run_case(name):
     from paraview import servermanager
-    build, t, _ = CASES[name]
+    build, t = CASES[name][:2]
     proxy = build()
     proxy.UpdatePipeline(t)
     data = servermanager.Fetch(proxy)
@@ -108,7 +125,7 @@ def drive():
     # mpiexec believe it runs inside that job.
     environment = {k: v for k, v in os.environ.items()
                    if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
-    for name, (_, _, traces) in CASES.items():
+    for name, (_, _, traces, says) in CASES.items():
         for ranks in (2, 4):
             command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
                        args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
@@ -123,7 +140,7 @@ def drive():
                 out, _ = process.communicate()
             seconds = time.time() - started
             points = [int(line.split()[1]) for line in out.splitlines() if line.startswith("RESULT ")]
-            messages = [line[line.find("vtkBoundParticleTracer"):][:200] for line in out.splitlines()
+            messages = [line[line.find("vtkBoundParticleTracer"):][:400] for line in out.splitlines()
                         if "ERR|" in line or "WARN|" in line]
             print("%-40s %d ranks: exit %s, %.1f s, %s" % (
                 name, ranks, process.returncode, seconds,
@@ -137,8 +154,9 @@ def drive():
             if points:
                 bptest.check((points[0] > 0) == traces, "%s, %d ranks: %d points" % (
                     name, ranks, points[0]))
-                bptest.check(traces or messages, "%s, %d ranks: refused without a message" % (
-                    name, ranks))
+            said = " | ".join(messages)
+            bptest.check(not says or says in said, "%s, %d ranks: no message saying '%s' (%s)" % (
+                name, ranks, says, said[:300] or "none"))
     bptest.finish()
 
 

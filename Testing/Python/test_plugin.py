@@ -8,6 +8,10 @@ import bptest  # noqa: E402
 
 args = bptest.arguments("--from-plugin-path")
 import paraview.simple as simple  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkSMPTools  # noqa: E402
+
+# The process's SMP backend is the user's: the tracer never changes it.
+backend = vtkSMPTools.GetBackend()
 
 if args.from_plugin_path is None:
     simple.LoadPlugin(args.plugin, ns=globals())
@@ -42,4 +46,6 @@ bptest.check(tracer.Vectors[1] == "velocity", "Vectors %s" % tracer.Vectors)
 tracer.UpdatePipeline(0.5)
 bptest.check(tracer.GetDataInformation().GetNumberOfPoints() == 8000,
              "1000 Strip8 elements give %d points" % tracer.GetDataInformation().GetNumberOfPoints())
+bptest.check(vtkSMPTools.GetBackend() == backend, "the SMP backend changed from %s to %s" % (
+    backend, vtkSMPTools.GetBackend()))
 bptest.finish()
