@@ -40,9 +40,15 @@ int threadsPerCore()
   return asked > 0 ? asked : std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-/// VTK 9.3+ keeps its STDThread and TBB threads between loops.
-constexpr bool VtkKeepsThreads = VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0);
-
+/**
+ * Whether the loops run through vtkSMPTools rather than the core's pool:
+ * where that was measured as fast (bench/smp_loops.py, docs/performance.md),
+ * that is VTK's TBB backend (VTK 9.3 and later; Debian forky's default). On
+ * VTK 9.2 every loop starts and joins threads; VTK 9.3's persistent STDThread
+ * backend still took 27% longer over a 4,096-element update than the pool;
+ * and the Sequential backend, Debian's default up to trixie, has one thread.
+ * BOUNDPARTICLES_SMP_LOOPS=pool or =vtk overrides this (for benchmarks).
+ */
 bool useVtkLoops()
 {
   const char* pick = std::getenv("BOUNDPARTICLES_SMP_LOOPS");
@@ -54,7 +60,9 @@ bool useVtkLoops()
   {
     return true;
   }
-  return VtkKeepsThreads;
+  const char* backend = vtkSMPTools::GetBackend();
+  return VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) && backend &&
+    std::string(backend) == "TBB";
 }
 
 /// Ranges through vtkSMPTools::For. A throw must not leave a worker thread
@@ -82,32 +90,6 @@ void smpFor(std::size_t count, const bp::RangeFunction& f)
   }
 }
 
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
-/// The loop through vtkSMPTools; on STDThread for its duration when the
-/// process is sequential by default (a local scope: restored right after).
-bp::RangeRunner vtkRunner(int threads, bool scopeStdThread)
-{
-  return [threads, scopeStdThread](std::size_t count, const bp::RangeFunction& f)
-  {
-    if (scopeStdThread)
-    {
-      vtkSMPTools::LocalScope(
-        vtkSMPTools::Config(threads, "STDThread", vtkSMPTools::GetNestedParallelism()),
-        [&] { smpFor(count, f); });
-    }
-    else
-    {
-      smpFor(count, f);
-    }
-  };
-}
-#else
-bp::RangeRunner vtkRunner(int, bool)
-{
-  // VTK 9.2 cannot scope a backend to these loops; its own loops as they are.
-  return smpFor;
-}
-#endif
 } // namespace
 
 void SmpPool::refresh()
@@ -128,8 +110,7 @@ void SmpPool::refresh()
   {
     this->Current->threads = threads;
     this->Current->vtkLoops = vtkLoops;
-    this->Current->run =
-      vtkLoops ? vtkRunner(threads, byDefault) : bp::poolRunner(unsigned(threads));
+    this->Current->run = vtkLoops ? bp::RangeRunner(smpFor) : bp::poolRunner(unsigned(threads));
   }
 }
 

@@ -36,14 +36,15 @@ class PieceLayout;
  * default (VTK_SMP_BACKEND_IN_USE unset) still gets one thread per core for
  * these loops, as the STDThread backend would give.
  *
- * How: on VTK 9.3 and later through vtkSMPTools itself, whose STDThread and
- * TBB backends keep their threads between loops (a local scope picks
- * STDThread for these loops only). On VTK 9.2 (ParaView 5.11) through a pool
- * of persistent threads of the core's (bp::poolRunner): 9.2's STDThread
- * backend starts and joins its threads in every loop, which cost a
- * 4,096-element update more time than its engine step (issue 16). The pool
- * can go with ParaView 5.11. BOUNDPARTICLES_SMP_LOOPS=pool or =vtk picks one
- * of the two where both exist (benchmarks: bench/smp_loops.py).
+ * How: through vtkSMPTools where the process's backend is TBB (VTK 9.3 and
+ * later), else through a pool of persistent threads of the core's
+ * (bp::poolRunner), measured side by side (bench/smp_loops.py): VTK 9.2's
+ * STDThread backend starts and joins its threads in every loop, which cost a
+ * 4,096-element update more than its engine step (issue 16), and VTK 9.3's
+ * persistent STDThread backend still took 27% longer over such an update;
+ * with TBB both take the same time. The pool can go once the ParaView
+ * versions this plugin supports default to TBB (6.x on Debian forky does).
+ * BOUNDPARTICLES_SMP_LOOPS=pool or =vtk picks one (benchmarks).
  */
 class SmpPool
 {
