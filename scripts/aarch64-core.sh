@@ -4,11 +4,11 @@
 # without x86's SSE2 (it then takes its scalar paths). Needs neither ParaView
 # nor the GPU engine, nor an arm64 machine. Installs what is missing (as root
 # or through sudo); builds in $BOUNDPARTICLES_AARCH64_DIR (default
-# /tmp/boundparticles-aarch64), kept between runs so a second run rebuilds
+# build-aarch64/ in the repository), kept between runs so a second run rebuilds
 # only what changed.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-dir="${BOUNDPARTICLES_AARCH64_DIR:-/tmp/boundparticles-aarch64}"
+dir="${BOUNDPARTICLES_AARCH64_DIR:-$root/build-aarch64}"
 toolchain="$root/scripts/aarch64-toolchain.cmake"
 jobs="${BOUNDPARTICLES_JOBS:-$(nproc)}"
 
