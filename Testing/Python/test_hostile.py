@@ -61,16 +61,9 @@ def scaled_flow(factor):
 
 def int64_flow():
     """An ABC flow's velocity as int64 values of 2^62."""
-    f = ProgrammableFilter(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 12, 12]),
-                           OutputDataSetType="vtkImageData")
-    f.Script = ("import numpy\n"
-                "from vtkmodules.util.numpy_support import numpy_to_vtk\n"
-                "out = self.GetOutput(); out.ShallowCopy(self.GetInput())\n"
-                "n = out.GetNumberOfPoints()\n"
-                "a = numpy_to_vtk(numpy.full((n, 3), 2**62, dtype=numpy.int64), deep=True)\n"
-                "a.SetName('v')\n"
-                "out.GetPointData().AddArray(a)\n")
-    return f
+    return masked_flow(
+        "a = numpy_to_vtk(numpy.full((n, 3), 2**62, dtype=numpy.int64), deep=True)\n"
+        "a.SetName('v'); out.GetPointData().AddArray(a)", resolution=12)
 
 
 def wrapped_template():
@@ -97,11 +90,11 @@ def polygon(sides):
     return source
 
 
-def masked_flow(mask_script):
-    """An ABC flow with a vtkValidPointMask made by `mask_script` from the
-    points' coordinates xyz (numpy, n x 3); it assigns `mask`, or leaves the
-    array to the script (name `out`)."""
-    f = ProgrammableFilter(Input=AnalyticFlow(Flow="ABC", Resolution=[16, 16, 16]),
+def masked_flow(mask_script, resolution=16):
+    """An ABC flow changed by `mask_script`: it sees the output image `out`,
+    its point count n and coordinates xyz (numpy, n x 3), and assigns `mask`
+    to add it as vtkValidPointMask, or changes `out` itself."""
+    f = ProgrammableFilter(Input=AnalyticFlow(Flow="ABC", Resolution=[resolution] * 3),
                            OutputDataSetType="vtkImageData")
     f.Script = ("import numpy\n"
                 "from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy\n"
