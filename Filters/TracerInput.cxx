@@ -337,11 +337,7 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
     }
   }
   auto values = std::make_shared<std::vector<float>>();
-  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
-  if (!Dispatch::Execute(vectors, CopyToFloat{}, *values))
-  {
-    CopyToFloat{}(vectors, *values);
-  }
+  copyToFloats(vectors, *values);
   std::string maskIgnored;
   const std::vector<std::uint8_t> valid = validPointMask(dataSet, maskIgnored);
   if (maskProblem)
@@ -360,6 +356,15 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   slice.outsideCells = mask.outsideCells;
   grid = g;
   return std::string();
+}
+
+void copyToFloats(vtkDataArray* array, std::vector<float>& out)
+{
+  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
+  if (!Dispatch::Execute(array, CopyToFloat{}, out))
+  {
+    CopyToFloat{}(array, out);
+  }
 }
 
 vtkPolyData* templateMesh(vtkDataObject* data, std::string& error)

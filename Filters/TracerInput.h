@@ -40,6 +40,9 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
   const std::string& requested = std::string(), std::string* maskProblem = nullptr);
 
+/// Every value of `array` (all components, tuple by tuple) as floats.
+void copyToFloats(vtkDataArray* array, std::vector<float>& out);
+
 /// The element template of a polydata (TemplateSprings: `mode`).
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out);
 

@@ -2,10 +2,13 @@
 #include "TracerParallel.h"
 
 #include "vtkCommunicator.h"
+#include "vtkDataArray.h"
 #include "vtkExtentTranslator.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
@@ -109,6 +112,30 @@ bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
 namespace bpvtk
 {
 
+std::string agreeOnError(vtkMultiProcessController* controller, const std::string& error)
+{
+  if (!controller)
+  {
+    return error;
+  }
+  const int processes = controller->GetNumberOfProcesses();
+  std::vector<long long> lengths(std::size_t(processes), 0);
+  const long long mine = (long long)error.size();
+  controller->AllGather(&mine, lengths.data(), 1);
+  for (int q = 0; q < processes; ++q)
+  {
+    const long long length = lengths[std::size_t(q)];
+    if (length > 0)
+    {
+      std::string first(
+        q == controller->GetLocalProcessId() ? error : std::string(std::size_t(length), ' '));
+      controller->Broadcast(&first[0], vtkIdType(length), q);
+      return first;
+    }
+  }
+  return std::string();
+}
+
 bool PieceLayout::takeRequest(vtkInformation* outInfo, vtkInformation* inInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
@@ -135,14 +162,19 @@ void PieceLayout::requestInput(vtkInformation* inInfo)
   using SDDP = vtkStreamingDemandDrivenPipeline;
   if (!inInfo->Has(SDDP::WHOLE_EXTENT()))
   {
+    // A mesh (resampled by the tracer): each process reads its piece of
+    // cells, without ghosts; the whole grid is known once they are read.
+    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), this->Piece);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), this->Pieces);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     return;
   }
   // The whole extent: in parallel, the executive of a source that can
   // produce sub-extents splits it by piece (blocks, as below) and adds the
   // ghost layers.
   int* whole = inInfo->Get(SDDP::WHOLE_EXTENT());
-  std::copy(whole, whole + 6, this->WholeExtent);
   inInfo->Set(SDDP::UPDATE_EXTENT(), whole, 6);
+  this->setWholeExtent(whole);
   if (!this->distributed())
   {
     // Piece 0 traces the whole field: ask for all of it.
@@ -152,9 +184,18 @@ void PieceLayout::requestInput(vtkInformation* inInfo)
     return;
   }
   inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), this->GhostCells);
+}
+
+void PieceLayout::setWholeExtent(const int whole[6])
+{
+  std::copy(whole, whole + 6, this->WholeExtent);
+  if (!this->distributed())
+  {
+    return;
+  }
   vtkNew<vtkExtentTranslator> translator;
-  if (!translator->PieceToExtentThreadSafe(
-        this->Piece, this->Pieces, 0, whole, this->OwnedExtent, vtkExtentTranslator::BLOCK_MODE, 0))
+  if (!translator->PieceToExtentThreadSafe(this->Piece, this->Pieces, 0, this->WholeExtent,
+        this->OwnedExtent, vtkExtentTranslator::BLOCK_MODE, 0))
   {
     // More processes than blocks: this one owns nothing.
     for (int a = 0; a < 3; ++a)
@@ -163,6 +204,52 @@ void PieceLayout::requestInput(vtkInformation* inInfo)
       this->OwnedExtent[2 * a + 1] = whole[2 * a];
     }
   }
+}
+
+vtkSmartPointer<vtkImageData> PieceLayout::cutPiece(vtkImageData* whole)
+{
+  this->setWholeExtent(whole->GetExtent());
+  if (!this->distributed())
+  {
+    return whole;
+  }
+  // This process's block with GhostCells layers, as an image source gives it.
+  int piece[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    piece[2 * a] = std::max(this->OwnedExtent[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
+    piece[2 * a + 1] =
+      std::min(this->OwnedExtent[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
+  }
+  auto cut = vtkSmartPointer<vtkImageData>::New();
+  cut->SetOrigin(whole->GetOrigin());
+  cut->SetSpacing(whole->GetSpacing());
+  cut->SetExtent(piece);
+  vtkPointData* from = whole->GetPointData();
+  for (int i = 0; i < from->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = from->GetArray(i);
+    auto part = vtk::TakeSmartPointer(array->NewInstance());
+    part->SetName(array->GetName());
+    part->SetNumberOfComponents(array->GetNumberOfComponents());
+    part->SetNumberOfTuples(cut->GetNumberOfPoints());
+    vtkIdType to = 0;
+    for (int k = piece[4]; k <= piece[5]; ++k)
+    {
+      for (int j = piece[2]; j <= piece[3]; ++j)
+      {
+        const int first[3] = { piece[0], j, k };
+        const vtkIdType row = whole->ComputePointId(const_cast<int*>(first));
+        const vtkIdType n = piece[1] - piece[0] + 1;
+        for (vtkIdType t = 0; t < n; ++t)
+        {
+          part->SetTuple(to++, row + t, array);
+        }
+      }
+    }
+    cut->GetPointData()->AddArray(part);
+  }
+  return cut;
 }
 
 std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
@@ -277,18 +364,7 @@ std::vector<long long> PieceLayout::gather(long long count) const
 
 std::string PieceLayout::agree(const std::string& error) const
 {
-  const std::vector<long long> lengths = this->gather((long long)error.size());
-  for (int q = 0; q < this->Pieces; ++q)
-  {
-    const long long length = lengths[std::size_t(q)];
-    if (length > 0)
-    {
-      std::string first(q == this->Piece ? error : std::string(std::size_t(length), ' '));
-      this->Controller->Broadcast(&first[0], vtkIdType(length), q);
-      return first;
-    }
-  }
-  return std::string();
+  return agreeOnError(this->Controller, error);
 }
 
 int PieceLayout::shareFirst(std::vector<double>& values) const

@@ -24,11 +24,22 @@
 #include <string>
 #include <vector>
 
+#include "vtkSmartPointer.h"
+
+class vtkImageData;
 class vtkInformation;
 class vtkMultiProcessController;
 
 namespace bpvtk
 {
+
+/**
+ * Where one process failed and the others did not, every process must fail
+ * before the next collective call, or the others would wait in it forever:
+ * the first failing process's `error` (collective over `controller`; empty
+ * when none failed). Without a controller, `error` itself.
+ */
+std::string agreeOnError(vtkMultiProcessController* controller, const std::string& error);
 
 class PieceLayout
 {
@@ -45,8 +56,19 @@ public:
   bool tooSmallToSplit() const { return this->TooSmall; }
 
   /// Asks the input for the whole extent (one process) or this process's
-  /// block with GhostCells layers (the executive splits it).
+  /// block with GhostCells layers (the executive splits it); a mesh (no
+  /// whole extent) for this process's piece, without ghosts.
   void requestInput(vtkInformation* inInfo);
+
+  /// Takes the whole grid's extent and this process's block of it.
+  void setWholeExtent(const int whole[6]);
+
+  /**
+   * The piece of `whole` (the whole grid, resampled from a mesh) that this
+   * process would have read from an image: its block with GhostCells layers.
+   * `whole` itself outside a distributed run.
+   */
+  vtkSmartPointer<vtkImageData> cutPiece(vtkImageData* whole);
 
   /**
    * Gathers every process's block of the field (its owned extent's bounds)
@@ -63,11 +85,7 @@ public:
   /// Every process's `count`, in process order (collective).
   std::vector<long long> gather(long long count) const;
 
-  /**
-   * Where one process failed and the others did not, every process must fail
-   * before the next collective call, or the others would wait in it forever:
-   * the first failing process's `error` (collective; empty when none failed).
-   */
+  /// agreeOnError() among this layout's processes.
   std::string agree(const std::string& error) const;
 
   /**

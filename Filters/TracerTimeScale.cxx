@@ -47,20 +47,21 @@ vtkDataObject* updateInput(vtkAlgorithmOutput* connection, vtkInformation* inInf
 }
 
 /// This process's share: (top speed, -lower, upper per axis, cell length).
-std::array<double, 8> localScale(vtkDataObject* data, const VectorsOf& vectorsOf)
+std::array<double, 8> localScale(vtkDataObject* data, const GridOf& gridOf)
 {
   std::array<double, 8> local = { 0, -1e300, -1e300, -1e300, -1e300, -1e300, -1e300, 0 };
-  if (!data)
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkSmartPointer<vtkDataObject> field;
+  vtkDataArray* vectors = gridOf(data, field, association);
+  if (!field)
   {
     return local;
   }
-  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* vectors = vectorsOf(data, association);
   bp::GridGeometry grid;
   bp::FieldSlice slice;
   int extent[6];
   std::size_t nonFinite = 0;
-  if (!readSlice(data, vectors, association, grid, slice, extent, nonFinite).empty() ||
+  if (!readSlice(field, vectors, association, grid, slice, extent, nonFinite).empty() ||
     !grid.validate().empty())
   {
     return local;
@@ -78,13 +79,13 @@ std::array<double, 8> localScale(vtkDataObject* data, const VectorsOf& vectorsOf
 } // namespace
 
 bp::TimeScale probeTimeScale(vtkAlgorithmOutput* input, vtkInformation* inInfo,
-  const std::vector<double>& inputTimes, const VectorsOf& vectorsOf)
+  const std::vector<double>& inputTimes, const GridOf& gridOf)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int pieces = controller ? std::max(controller->GetNumberOfProcesses(), 1) : 1;
   const int piece = controller ? controller->GetLocalProcessId() : 0;
   std::array<double, 8> scale =
-    localScale(updateInput(input, inInfo, inputTimes, piece, pieces), vectorsOf);
+    localScale(updateInput(input, inInfo, inputTimes, piece, pieces), gridOf);
   if (pieces > 1)
   {
     std::array<double, 8> global;

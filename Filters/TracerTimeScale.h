@@ -7,7 +7,7 @@
  * data flows; an automatic Duration (or frames per input time step) needs the
  * field's top speed and extent. So the probe updates the input once there
  * (this process's piece, at the first input time step), reads the selected
- * vectors as an update would (masks and NaN included), and, under MPI, takes
+ * vectors as an update would (a mesh resampled, masks and NaN included), and, under MPI, takes
  * the largest speed and the whole field's extent over every process (a
  * collective call, as every pipeline pass of a distributed run is).
  */
@@ -16,25 +16,33 @@
 
 #include "TraceSettings.h"
 
+#include "vtkDataObject.h"
+#include "vtkSmartPointer.h"
+
 #include <functional>
 #include <vector>
 
 class vtkAlgorithmOutput;
 class vtkDataArray;
-class vtkDataObject;
 class vtkInformation;
 
 namespace bpvtk
 {
 
-/// The filter's choice of vectors in the input data (and their association).
-using VectorsOf = std::function<vtkDataArray*(vtkDataObject*, int& association)>;
+/**
+ * The filter's reading of the delivered data: sets `grid` to the grid it
+ * traces (the data itself, or the mesh resampled, which `grid` keeps alive)
+ * and returns its vectors (and their association). Called on every process,
+ * as resampling is collective.
+ */
+using GridOf = std::function<vtkDataArray*(
+  vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)>;
 
 /// The scale of the field `input` (the filter's input connection, `inInfo`
 /// its information) delivers; invalid (bp::TimeScale::valid()) when it cannot
 /// be read or does not move.
 bp::TimeScale probeTimeScale(vtkAlgorithmOutput* input, vtkInformation* inInfo,
-  const std::vector<double>& inputTimes, const VectorsOf& vectorsOf);
+  const std::vector<double>& inputTimes, const GridOf& gridOf);
 
 } // namespace bpvtk
 

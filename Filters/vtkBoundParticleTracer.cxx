@@ -235,8 +235,13 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
   // a time line the user set.
   const bp::TimeScale scale = automatic && inInfo->Has(vtkDataObject::DATA_OBJECT())
     ? bpvtk::probeTimeScale(this->GetInputConnection(0, 0), inInfo, inputTimes,
-        [this](vtkDataObject* data, int& association)
+        [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
         {
+          if (bpvtk::FieldResampler::needed(data))
+          {
+            return this->Internals->probeGrid(this, data, grid);
+          }
+          grid = data;
           // Only a dataset has arrays to choose from (readSlice says what else came).
           return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
                                                 : nullptr;

@@ -117,6 +117,21 @@ public:
   };
 
   ///@{
+  /**
+   * Points per axis of the uniform grid that any input other than an image or
+   * a rectilinear grid (an unstructured, curvilinear or polygonal mesh, a
+   * multiblock or partitioned collection) is resampled onto
+   * (TracerResample.h). 0 on an axis (default 0 0 0) chooses it: about as
+   * many points as the input has cells, cells close to cubes over the data's
+   * bounds. An axis along which the data is flat always has one point. The
+   * grid used is in the output's field data (ResampledDimensions,
+   * ResampledSpacing). Images and rectilinear grids are traced as they are.
+   */
+  vtkSetVector3Macro(ResampleDimensions, int);
+  vtkGetVector3Macro(ResampleDimensions, int);
+  ///@}
+
+  ///@{
   /// The built-in element shape (thesis Fig. 3.4). Default STRIP8.
   /// Clamped to [POINT, FISH]; a value outside warns.
   virtual void SetElementShape(int value);
@@ -425,6 +440,7 @@ protected:
   bp::TimeLine ResolveTimeLine(vtkInformation* inInfo, const std::vector<double>& inputTimes);
 #endif
 
+  int ResampleDimensions[3] = { 0, 0, 0 };
   int ElementShape = STRIP8;
   int TemplateSprings = EDGES_AND_DIAGONALS;
   vtkIdType NumberOfElements = 1000;

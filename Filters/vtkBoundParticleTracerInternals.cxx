@@ -11,12 +11,16 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -56,6 +60,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   ++this->Configuration;
   this->WarnedNonFinite = false;
   this->WarnedMask = false;
+  this->WarnedResample = false;
   this->Steppers.invalidate();
 }
 
@@ -147,15 +152,28 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   bp::GridGeometry grid;
   bp::FieldSlice slice;
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  std::string requested = vectorsName(self);
+  vtkSmartPointer<vtkImageData> resampled;
+  if (bpvtk::FieldResampler::needed(input))
+  {
+    const std::string resampleError = this->resampleInput(self, input, resampled);
+    if (!resampleError.empty())
+    {
+      return resampleError; // every process fails alike
+    }
+    input = resampled;
+    requested = this->Resampler.arrayName();
+  }
   // Only a dataset has point data to choose from (readSlice says what else came).
-  vtkDataArray* vectors = vtkDataSet::SafeDownCast(input)
-    ? self->GetInputArrayToProcess(0, inputVector, association)
-    : nullptr;
+  vtkDataArray* vectors = resampled ? resampled->GetPointData()->GetArray(requested.c_str())
+    : vtkDataSet::SafeDownCast(input) ? self->GetInputArrayToProcess(0, inputVector, association)
+                                      : nullptr;
   int extent[6];
   std::size_t nonFinite = 0;
   std::string maskProblem;
   std::string error = bpvtk::readSlice(
-    input, vectors, association, grid, slice, extent, nonFinite, vectorsName(self), &maskProblem);
+    input, vectors, association, grid, slice, extent, nonFinite, requested, &maskProblem);
+  this->Resampled = resampled != nullptr;
   if (error.empty() && !maskProblem.empty() && !this->WarnedMask)
   {
     this->WarnedMask = true; // once per configuration, as below
@@ -201,6 +219,58 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   // Each process checks its own piece (its velocities, its grid): one
   // process's failure must be every process's before the next collective step.
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
+}
+
+bpvtk::VectorsChoice vtkBoundParticleTracer::vtkInternals::vectorsChoice(
+  vtkBoundParticleTracer* self)
+{
+  bpvtk::VectorsChoice choice;
+  choice.name = vectorsName(self);
+  vtkInformation* info = self->GetInputArrayInformation(0);
+  choice.association = info && info->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  return choice;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
+  vtkBoundParticleTracer* self, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece)
+{
+  vtkNew<vtkImageData> whole;
+  std::string warning;
+  const int* dims = self->ResampleDimensions;
+  const std::string error = this->Resampler.resample(input, vectorsChoice(self),
+    { dims[0], dims[1], dims[2] }, this->Layout.Controller, this->Steppers.runner(), whole, warning);
+  if (!warning.empty() && !this->WarnedResample)
+  {
+    this->WarnedResample = true; // once per configuration, as the mask's
+    vtkWarningWithObjectMacro(self, << warning);
+  }
+  if (error.empty())
+  {
+    piece = this->Layout.cutPiece(whole);
+  }
+  return error;
+}
+
+vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
+  vtkBoundParticleTracer* self, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid)
+{
+  vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
+  vtkMultiProcessController* controller =
+    global && global->GetNumberOfProcesses() > 1 ? global : nullptr;
+  vtkNew<vtkImageData> image;
+  std::string warning;
+  const int* dims = self->ResampleDimensions;
+  if (!this->Resampler
+         .resample(data, vectorsChoice(self), { dims[0], dims[1], dims[2] }, controller,
+           this->Steppers.runner(), image, warning)
+         .empty())
+  {
+    return nullptr; // the update says why
+  }
+  grid = image;
+  return image->GetPointData()->GetArray(this->Resampler.arrayName().c_str());
 }
 
 std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
@@ -796,6 +866,22 @@ void vtkBoundParticleTracer::vtkInternals::addSettingsFieldData(vtkPolyData* out
   bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);
   bpvtk::addFieldValue(output, "ElementSize", this->ResolvedElementSize);
   bpvtk::addFieldValue(output, "SimulationTime", this->target());
+  if (this->Resampled)
+  {
+    // The grid a mesh was resampled onto (TracerResample.h).
+    const bp::ResampleGrid& g = this->Resampler.grid();
+    vtkNew<vtkIntArray> dims;
+    dims->SetName("ResampledDimensions");
+    vtkNew<vtkDoubleArray> spacing;
+    spacing->SetName("ResampledSpacing");
+    for (int a = 0; a < 3; ++a)
+    {
+      dims->InsertNextValue(g.dims[a]);
+      spacing->InsertNextValue(g.spacing[a]);
+    }
+    output->GetFieldData()->AddArray(dims);
+    output->GetFieldData()->AddArray(spacing);
+  }
   if (this->Layout.distributed())
   {
     // This process's share: ghost layers read, elements sent to other pieces;

@@ -27,8 +27,10 @@
 #include "TraceSettings.h"
 #include "TracerOutput.h"
 #include "TracerParallel.h"
+#include "TracerResample.h"
 #include "TracerSteppers.h"
 
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 
 #include <array>
@@ -37,6 +39,8 @@
 #include <string>
 #include <vector>
 
+class vtkDataArray;
+class vtkImageData;
 class vtkInformation;
 class vtkInformationVector;
 class vtkPolyData;
@@ -74,6 +78,11 @@ struct vtkBoundParticleTracer::vtkInternals
   std::uint64_t Configuration = 1;
   bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
   bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
+  bool WarnedResample = false;  ///< blocks without the Vectors were reported for it
+  /// Any input but an image or a rectilinear grid, on a uniform grid; its
+  /// located cells and weights are kept while the mesh stays the same.
+  bpvtk::FieldResampler Resampler;
+  bool Resampled = false; ///< the field came through the Resampler
   const std::uint64_t ProducerId;
 
   // The update in progress.
@@ -135,6 +144,11 @@ struct vtkBoundParticleTracer::vtkInternals
   /// update; collective in parallel, as every step), then builds the output.
   Pass show(vtkBoundParticleTracer* self, vtkPolyData* output);
 
+  /// For the time line's probe: `data` (a mesh) resampled whole on every
+  /// process (collective over the global controller) into `grid`; its vectors.
+  vtkDataArray* probeGrid(
+    vtkBoundParticleTracer* self, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
+
 private:
   /// Forgets every trace: each stepper's cursor, and pending GPU work.
   void invalidate();
@@ -150,6 +164,12 @@ private:
   std::string checkConfiguration(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
     const bp::VectorField& field, const std::vector<double>& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);
+  /// The Vectors property's choice: array name and point or cell data.
+  static bpvtk::VectorsChoice vectorsChoice(vtkBoundParticleTracer* self);
+  /// `input` (a mesh) resampled (collective in parallel): `piece` gets this
+  /// process's piece of the grid. Returns the error, if any.
+  std::string resampleInput(
+    vtkBoundParticleTracer* self, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece);
   /// The grid check and the cache insert for a time step just read.
   std::string keepTimeStep(
     bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);

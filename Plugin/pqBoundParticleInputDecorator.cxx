@@ -11,6 +11,7 @@
 #include "vtkSMProxy.h"
 #include "vtkSMSourceProxy.h"
 #include "vtkSMUncheckedPropertyHelper.h"
+#include "vtkType.h"
 
 #include <cstring>
 
@@ -80,6 +81,20 @@ bool pqBoundParticleInputDecorator::conditionHolds() const
       return true;
     }
     return (info->GetNumberOfTimeSteps() >= 2) == (when == "unsteady");
+  }
+  if (when == "resampled")
+  {
+    // As FieldResampler::needed(): anything but an image or a rectilinear grid.
+    vtkPVDataInformation* info =
+      source ? source->GetDataInformation(input.GetOutputPort()) : nullptr;
+    if (!info || (info->GetNumberOfPoints() == 0 && !info->IsCompositeDataSet()))
+    {
+      return true;
+    }
+    const int type = info->GetDataSetType();
+    return info->IsCompositeDataSet() ||
+      (type != VTK_IMAGE_DATA && type != VTK_STRUCTURED_POINTS && type != VTK_UNIFORM_GRID &&
+        type != VTK_RECTILINEAR_GRID);
   }
   return true;
 }

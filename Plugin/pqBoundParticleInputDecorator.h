@@ -7,7 +7,9 @@
  * input="Input" when="steady" mode="visibility"/>`, where `input` names an
  * input property of the proxy and `when` is one of
  *  - `steady` / `unsteady`: that input has fewer than two / at least two time steps;
- *  - `connected` / `unconnected`: that input is connected / not.
+ *  - `connected` / `unconnected`: that input is connected / not;
+ *  - `resampled`: that input is traced through a resampled grid (a mesh, a
+ *    composite: anything but an image or a rectilinear grid).
  * `mode` is `visibility` (hide the widget otherwise) or `enabled_state`
  * (grey it out otherwise). So Duration shows only for a steady field, and
  * Element Shape greys out once an Element Template is connected.

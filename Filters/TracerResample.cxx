@@ -1,0 +1,575 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TracerResample.h"
+
+#include "Memory.h"
+#include "TracerInput.h"
+#include "TracerParallel.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellTypes.h"
+#include "vtkCharArray.h"
+#include "vtkCommunicator.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkOverlappingAMR.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <sstream>
+
+namespace
+{
+/// The datasets of `input` that have cells, in traversal order; for AMR the
+/// finest level first, so that it wins where levels overlap.
+std::vector<vtkDataSet*> blocksWithCells(vtkDataObject* input)
+{
+  std::vector<vtkDataSet*> blocks;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      auto* block = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+      if (block && block->GetNumberOfCells() > 0)
+      {
+        blocks.push_back(block);
+      }
+    }
+    if (vtkOverlappingAMR::SafeDownCast(input))
+    {
+      std::reverse(blocks.begin(), blocks.end());
+    }
+  }
+  else if (auto* data = vtkDataSet::SafeDownCast(input))
+  {
+    if (data->GetNumberOfCells() > 0)
+    {
+      blocks.push_back(data);
+    }
+  }
+  return blocks;
+}
+
+/// The highest dimension of a cell of `data` (3 for a volume mesh).
+int cellDimension(vtkDataSet* data)
+{
+  if (auto* structured = vtkStructuredGrid::SafeDownCast(data))
+  {
+    return structured->GetDataDimension();
+  }
+  int dimension = 0;
+  const vtkIdType cells = data->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cells && dimension < 3; ++c)
+  {
+    dimension = std::max(dimension, vtkCellTypes::GetDimension((unsigned char)data->GetCellType(c)));
+  }
+  return dimension;
+}
+
+/// The 3-component array `name` of `data`'s points or cells; null if none.
+vtkDataArray* vectorArray(vtkDataSet* data, const std::string& name, bool cells)
+{
+  vtkDataSetAttributes* attributes =
+    cells ? static_cast<vtkDataSetAttributes*>(data->GetCellData()) : data->GetPointData();
+  vtkDataArray* array = attributes->GetArray(name.c_str());
+  return array && array->GetNumberOfComponents() == 3 ? array : nullptr;
+}
+
+/// The first 3-component point (else cell) array's name among the blocks.
+std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
+{
+  for (bool cellData : { false, true })
+  {
+    for (vtkDataSet* block : blocks)
+    {
+      vtkDataSetAttributes* attributes = cellData
+        ? static_cast<vtkDataSetAttributes*>(block->GetCellData())
+        : block->GetPointData();
+      for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+      {
+        vtkDataArray* a = attributes->GetArray(i);
+        if (a && a->GetName() && a->GetNumberOfComponents() == 3 &&
+          std::strcmp(a->GetName(), "vtkValidPointMask") != 0)
+        {
+          cells = cellData;
+          return a->GetName();
+        }
+      }
+    }
+  }
+  return std::string();
+}
+
+/// A 64-bit hash of memory, eight bytes at a time.
+struct Hash
+{
+  std::uint64_t value = 1469598103934665603ull;
+
+  void add(const void* data, std::size_t bytes)
+  {
+    const auto* p = static_cast<const unsigned char*>(data);
+    std::size_t i = 0;
+    for (; i + 8 <= bytes; i += 8)
+    {
+      std::uint64_t word;
+      std::memcpy(&word, p + i, 8);
+      this->mix(word);
+    }
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, p + i, bytes - i);
+    this->mix(tail ^ bytes);
+  }
+  void mix(std::uint64_t word) { this->value = (this->value ^ word) * 1099511628211ull; }
+
+  /// An array's values, through its memory where it has a plain layout.
+  void add(vtkDataArray* array)
+  {
+    if (!array)
+    {
+      this->mix(0);
+      return;
+    }
+    if (array->HasStandardMemoryLayout())
+    {
+      this->add(array->GetVoidPointer(0),
+        std::size_t(array->GetDataSize()) * std::size_t(array->GetDataTypeSize()));
+      return;
+    }
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        const double v = array->GetComponent(t, c);
+        this->add(&v, sizeof v);
+      }
+    }
+  }
+  void add(vtkCellArray* cells)
+  {
+    this->add(cells->GetOffsetsArray());
+    this->add(cells->GetConnectivityArray());
+  }
+};
+
+/// What locating depends on in a block: its points, its cells.
+void addGeometry(Hash& h, vtkDataSet* block)
+{
+  h.mix(std::uint64_t(block->GetNumberOfPoints()));
+  h.mix(std::uint64_t(block->GetNumberOfCells()));
+  if (auto* image = vtkImageData::SafeDownCast(block))
+  {
+    h.add(image->GetExtent(), 6 * sizeof(int));
+    h.add(image->GetOrigin(), 3 * sizeof(double));
+    h.add(image->GetSpacing(), 3 * sizeof(double));
+    return;
+  }
+  if (auto* rectilinear = vtkRectilinearGrid::SafeDownCast(block))
+  {
+    h.add(rectilinear->GetExtent(), 6 * sizeof(int));
+    h.add(rectilinear->GetXCoordinates());
+    h.add(rectilinear->GetYCoordinates());
+    h.add(rectilinear->GetZCoordinates());
+    return;
+  }
+  auto* pointSet = vtkPointSet::SafeDownCast(block);
+  h.add(pointSet && pointSet->GetPoints() ? pointSet->GetPoints()->GetData() : nullptr);
+  if (auto* structured = vtkStructuredGrid::SafeDownCast(block))
+  {
+    h.add(structured->GetExtent(), 6 * sizeof(int));
+  }
+  else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
+  {
+    h.add(grid->GetCells());
+    h.add(grid->GetCellTypesArray());
+  }
+  else if (auto* poly = vtkPolyData::SafeDownCast(block))
+  {
+    for (vtkCellArray* cells : { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
+           poly->GetStrips() })
+    {
+      h.add(cells);
+    }
+  }
+  else
+  {
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
+    {
+      block->GetCellPoints(c, ids);
+      h.mix(std::uint64_t(block->GetCellType(c)));
+      h.add(ids->GetPointer(0), std::size_t(ids->GetNumberOfIds()) * sizeof(vtkIdType));
+    }
+  }
+}
+
+/// The range of grid indices along `a` within [low, high] (empty: first > last).
+std::array<int, 2> indexRange(const bp::ResampleGrid& g, int a, double low, double high)
+{
+  if (g.dims[a] == 1)
+  {
+    const double slack = 1e-9 * std::max(1.0, std::abs(g.origin[a]) + (high - low));
+    return g.origin[a] >= low - slack && g.origin[a] <= high + slack ? std::array<int, 2>{ 0, 0 }
+                                                                     : std::array<int, 2>{ 1, 0 };
+  }
+  const double h = g.spacing[a];
+  // A point on the block's boundary is in it: round inwards by a hair.
+  const int first = int(std::ceil((low - g.origin[a]) / h - 1e-6));
+  const int last = int(std::floor((high - g.origin[a]) / h + 1e-6));
+  return { std::max(first, 0), std::min(last, g.dims[a] - 1) };
+}
+
+/// Collective sum, min or max in place (nothing without a controller).
+template <typename T>
+void allReduce(vtkMultiProcessController* controller, std::vector<T>& values, int operation)
+{
+  if (controller && !values.empty())
+  {
+    std::vector<T> reduced(values.size());
+    controller->AllReduce(values.data(), reduced.data(), vtkIdType(values.size()), operation);
+    values.swap(reduced);
+  }
+}
+} // namespace
+
+namespace bpvtk
+{
+
+bool FieldResampler::needed(vtkDataObject* input)
+{
+  return input && !vtkImageData::SafeDownCast(input) && !vtkRectilinearGrid::SafeDownCast(input);
+}
+
+void FieldResampler::clear()
+{
+  this->GeometryKey = 0;
+  this->Samples.clear();
+  this->WeightPoints.clear();
+  this->Weights.clear();
+  this->Inside.clear();
+}
+
+std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& vectors,
+  const std::array<int, 3>& requested, vtkMultiProcessController* controller,
+  const bp::RangeRunner& run, vtkImageData* image, std::string& warning)
+{
+  warning.clear();
+  this->Kept = false;
+  std::vector<vtkDataSet*> blocks = blocksWithCells(input);
+  bool cellVectors = vectors.association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  std::string name = vectors.name.empty() ? firstVectorName(blocks, cellVectors) : vectors.name;
+  // A name given as point data that only the cells have (or the reverse) is taken where it is.
+  const auto hasArray = [&](bool cells) {
+    return std::any_of(blocks.begin(), blocks.end(),
+      [&](vtkDataSet* b) { return vectorArray(b, name, cells) != nullptr; });
+  };
+  if (!hasArray(cellVectors) && hasArray(!cellVectors))
+  {
+    cellVectors = !cellVectors;
+  }
+  this->ArrayName = name;
+
+  // Only the blocks of the highest cell dimension carry the flow (every
+  // process decides from the same global dimension).
+  std::vector<int> dimension(1, 0);
+  for (vtkDataSet* block : blocks)
+  {
+    dimension[0] = std::max(dimension[0], cellDimension(block));
+  }
+  allReduce(controller, dimension, vtkCommunicator::MAX_OP);
+  std::vector<vtkDataSet*> sampled;
+  std::size_t lacking = 0;
+  // Bounds as (-min, max) pairs, then the cell count, reduced by max and sum.
+  std::vector<double> extremes = { -1e300, -1e300, -1e300, -1e300, -1e300, -1e300 };
+  std::vector<double> cells(1, 0.0);
+  for (vtkDataSet* block : blocks)
+  {
+    if (cellDimension(block) != dimension[0])
+    {
+      continue;
+    }
+    if (!vectorArray(block, name, cellVectors))
+    {
+      ++lacking;
+      continue;
+    }
+    sampled.push_back(block);
+    double b[6];
+    block->GetBounds(b);
+    for (int a = 0; a < 3; ++a)
+    {
+      extremes[2 * a] = std::max(extremes[2 * a], -b[2 * a]);
+      extremes[2 * a + 1] = std::max(extremes[2 * a + 1], b[2 * a + 1]);
+    }
+    cells[0] += double(block->GetNumberOfCells());
+  }
+  allReduce(controller, extremes, vtkCommunicator::MAX_OP);
+  allReduce(controller, cells, vtkCommunicator::SUM_OP);
+  if (lacking > 0)
+  {
+    std::ostringstream say;
+    say << lacking << " block(s) of the input have no 3-component "
+        << (cellVectors ? "cell" : "point") << " array '" << name
+        << "'; their cells count as outside the flow's domain.";
+    warning = say.str();
+  }
+  if (cells[0] == 0.0)
+  {
+    std::ostringstream err;
+    if (name.empty())
+    {
+      err << "The input has no 3-component point or cell array to trace; choose one in Vectors.";
+    }
+    else
+    {
+      err << "The input has no cells with a 3-component " << (cellVectors ? "cell" : "point")
+          << " array '" << name
+          << "' to resample: Bound Particle Tracer needs a mesh (cells) carrying the Vectors.";
+    }
+    return err.str();
+  }
+  const std::array<double, 6> bounds = { -extremes[0], extremes[1], -extremes[2], extremes[3],
+    -extremes[4], extremes[5] };
+  const bp::ResampleGrid grid = bp::chooseResampleGrid(bounds, cells[0], requested);
+  if (!grid.error.empty())
+  {
+    return grid.error;
+  }
+  Hash key;
+  for (vtkDataSet* block : sampled)
+  {
+    addGeometry(key, block);
+  }
+  key.add(&grid.dims, sizeof grid.dims);
+  key.add(&grid.origin, sizeof grid.origin);
+  key.add(&grid.spacing, sizeof grid.spacing);
+  key.mix(std::uint64_t(controller ? controller->GetNumberOfProcesses() : 1));
+  std::vector<int> same(1, key.value == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
+  allReduce(controller, same, vtkCommunicator::MIN_OP);
+  this->Grid = grid;
+  const double points = double(grid.pointCount());
+  std::string error =
+    bp::checkAllocatable(points * (same[0] ? 13.0 : 13.0 + 4.0 + sizeof(Sample) + 8.0 * 12.0),
+      "the resampled grid of the input");
+  error = agreeOnError(controller, error);
+  if (!error.empty())
+  {
+    this->clear();
+    return error + " Set Resample Dimensions to fewer points.";
+  }
+  if (same[0])
+  {
+    this->Kept = true;
+  }
+  else
+  {
+    this->clear();
+    this->locate(sampled, run);
+    this->keepOwnSamples(controller);
+    this->GeometryKey = key.value;
+  }
+
+  std::vector<float> values;
+  this->interpolate(sampled, cellVectors, run, values);
+  allReduce(controller, values, vtkCommunicator::SUM_OP);
+
+  image->Initialize();
+  image->SetDimensions(grid.dims.data());
+  image->SetOrigin(grid.origin.data());
+  image->SetSpacing(grid.spacing.data());
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName(name.c_str());
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(vtkIdType(grid.pointCount()));
+  std::copy(values.begin(), values.end(), velocity->GetPointer(0));
+  vtkNew<vtkCharArray> mask;
+  mask->SetName("vtkValidPointMask");
+  mask->SetNumberOfTuples(vtkIdType(grid.pointCount()));
+  std::copy(this->Inside.begin(), this->Inside.end(), mask->GetPointer(0));
+  image->GetPointData()->AddArray(velocity);
+  image->GetPointData()->SetVectors(velocity);
+  image->GetPointData()->AddArray(mask);
+  return std::string();
+}
+
+void FieldResampler::locate(const std::vector<vtkDataSet*>& blocks, const bp::RangeRunner& run)
+{
+  const bp::ResampleGrid& g = this->Grid;
+  std::vector<std::uint8_t> taken(g.pointCount(), 0);
+  // Each range of grid rows gathers its samples apart; they are joined in
+  // row order, so the samples come out the same whatever the threads did.
+  struct Found
+  {
+    std::vector<Sample> samples;
+    std::vector<vtkIdType> points;
+    std::vector<float> weights;
+  };
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    vtkDataSet* block = blocks[b];
+    double bounds[6];
+    block->GetBounds(bounds);
+    std::array<std::array<int, 2>, 3> range;
+    for (int a = 0; a < 3; ++a)
+    {
+      range[a] = indexRange(g, a, bounds[2 * a], bounds[2 * a + 1]);
+    }
+    if (range[0][0] > range[0][1] || range[1][0] > range[1][1] || range[2][0] > range[2][1])
+    {
+      continue;
+    }
+    vtkNew<vtkStaticCellLocator> locator;
+    locator->SetDataSet(block);
+    locator->BuildLocator();
+    const int rowsY = range[1][1] - range[1][0] + 1;
+    const std::size_t rows = std::size_t(rowsY) * std::size_t(range[2][1] - range[2][0] + 1);
+    const int maxCellSize = std::max(1, block->GetMaxCellSize());
+    // Points on a surface mesh lie in its plane only up to rounding.
+    const double tolerance = 1e-9 * std::max(block->GetLength(), 1e-300);
+    std::mutex joining;
+    std::vector<std::pair<std::size_t, Found>> parts;
+    run(rows,
+      [&](std::size_t begin, std::size_t end)
+      {
+        Found found;
+        vtkNew<vtkGenericCell> cell;
+        std::vector<double> weights(static_cast<std::size_t>(maxCellSize));
+        for (std::size_t row = begin; row < end; ++row)
+        {
+          const int j = range[1][0] + int(row % std::size_t(rowsY));
+          const int k = range[2][0] + int(row / std::size_t(rowsY));
+          for (int i = range[0][0]; i <= range[0][1]; ++i)
+          {
+            const std::size_t p = g.index(i, j, k);
+            if (taken[p])
+            {
+              continue;
+            }
+            double x[3] = { g.origin[0] + i * g.spacing[0], g.origin[1] + j * g.spacing[1],
+              g.origin[2] + k * g.spacing[2] };
+            int subId = 0;
+            double pcoords[3];
+            const vtkIdType c = locator->FindCell(x, tolerance * tolerance, cell, subId, pcoords, weights.data());
+            if (c < 0)
+            {
+              continue;
+            }
+            taken[p] = 1;
+            const vtkIdType n = cell->GetNumberOfPoints();
+            found.samples.push_back({ std::uint32_t(p), std::uint32_t(b), c,
+              std::uint64_t(found.points.size()), std::uint32_t(n) });
+            for (vtkIdType q = 0; q < n; ++q)
+            {
+              found.points.push_back(cell->GetPointId(q));
+              found.weights.push_back(float(weights[std::size_t(q)]));
+            }
+          }
+        }
+        std::lock_guard<std::mutex> lock(joining);
+        parts.emplace_back(begin, std::move(found));
+      });
+    std::sort(parts.begin(), parts.end(),
+      [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (auto& part : parts)
+    {
+      const std::uint64_t shift = this->WeightPoints.size();
+      for (Sample s : part.second.samples)
+      {
+        s.first += shift;
+        this->Samples.push_back(s);
+      }
+      this->WeightPoints.insert(
+        this->WeightPoints.end(), part.second.points.begin(), part.second.points.end());
+      this->Weights.insert(
+        this->Weights.end(), part.second.weights.begin(), part.second.weights.end());
+    }
+  }
+}
+
+void FieldResampler::keepOwnSamples(vtkMultiProcessController* controller)
+{
+  const std::size_t n = this->Grid.pointCount();
+  if (!controller)
+  {
+    this->Inside.assign(n, 0);
+    for (const Sample& s : this->Samples)
+    {
+      this->Inside[s.point] = 1;
+    }
+    return;
+  }
+  // The lowest-ranked process that holds a point gives its value; the others drop theirs.
+  const int me = controller->GetLocalProcessId();
+  std::vector<int> owner(n, INT_MAX);
+  for (const Sample& s : this->Samples)
+  {
+    owner[s.point] = me;
+  }
+  allReduce(controller, owner, vtkCommunicator::MIN_OP);
+  this->Samples.erase(std::remove_if(this->Samples.begin(), this->Samples.end(),
+                        [&](const Sample& s) { return owner[s.point] != me; }),
+    this->Samples.end());
+  this->Inside.resize(n);
+  std::transform(owner.begin(), owner.end(), this->Inside.begin(),
+    [](int rank) { return std::uint8_t(rank != INT_MAX ? 1 : 0); });
+}
+
+void FieldResampler::interpolate(const std::vector<vtkDataSet*>& blocks,
+  bool cellVectors, const bp::RangeRunner& run, std::vector<float>& values) const
+{
+  std::vector<std::vector<float>> arrays(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    copyToFloats(vectorArray(blocks[b], this->ArrayName, cellVectors), arrays[b]);
+  }
+  values.assign(3 * this->Grid.pointCount(), 0.0f);
+  run(this->Samples.size(),
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t s = begin; s < end; ++s)
+      {
+        const Sample& sample = this->Samples[s];
+        const std::vector<float>& v = arrays[sample.block];
+        float* out = &values[3 * std::size_t(sample.point)];
+        if (cellVectors)
+        {
+          std::copy_n(&v[3 * std::size_t(sample.cell)], 3, out);
+          continue;
+        }
+        double sum[3] = { 0, 0, 0 };
+        for (std::uint32_t q = 0; q < sample.count; ++q)
+        {
+          const double w = this->Weights[sample.first + q];
+          const float* x = &v[3 * std::size_t(this->WeightPoints[sample.first + q])];
+          for (int a = 0; a < 3; ++a)
+          {
+            sum[a] += w * double(x[a]);
+          }
+        }
+        for (int a = 0; a < 3; ++a)
+        {
+          out[a] = float(sum[a]);
+        }
+      }
+    });
+}
+
+} // namespace bpvtk

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerResample.h
+ * @brief Any mesh the tracer is given, as the uniform grid the engines trace
+ * on: unstructured, curvilinear, polygonal and composite input (multiblock,
+ * partitioned, AMR), point or cell vectors.
+ *
+ * The grid is bp::chooseResampleGrid()'s over the whole data's bounds. Each
+ * grid point is located in the mesh with VTK's vtkStaticCellLocator and takes
+ * the interpolation weights of the cell that holds it (vtkProbeFilter's rule,
+ * which vtkResampleToImage applies: point vectors interpolated with the cell's
+ * weights, cell vectors the cell's value). A point in no cell lies outside the
+ * flow's domain: vtkValidPointMask 0, as ParaView's resamplers write it, so the
+ * masked-grid machinery (releases, resets, both engines) applies unchanged.
+ *
+ * Unlike vtkResampleToImage, which locates every point again for every time
+ * step, the located cells and weights are kept while the mesh stays the same
+ * (same points and cells, by content): a static mesh with changing vectors
+ * costs one weighted sum per grid point and time step.
+ *
+ * Only the blocks of the highest cell dimension are sampled: the boundary
+ * patches of an OpenFOAM case or the side sets of an Exodus file lie on the
+ * volume's surface and carry no flow of their own. Where blocks overlap, the
+ * first in traversal order wins; for AMR the finest level.
+ *
+ * In a distributed run each process locates the grid points in its own part
+ * of the mesh; of the processes that hold a point, the lowest-ranked gives
+ * its value, and every process ends with the whole grid (collective).
+ */
+#ifndef BoundParticles_TracerResample_h
+#define BoundParticles_TracerResample_h
+
+#include "Parallel.h"
+#include "ResampleGrid.h"
+
+#include "vtkType.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+class vtkDataSet;
+class vtkImageData;
+class vtkMultiProcessController;
+
+namespace bpvtk
+{
+
+/// Which input array moves the elements: the Vectors property's choice.
+struct VectorsChoice
+{
+  std::string name; ///< empty: the first 3-component point array, else cell array
+  int association = 0; ///< vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS
+};
+
+class FieldResampler
+{
+public:
+  /// Whether `input` is traced through a resampled grid: anything but an
+  /// image or a rectilinear grid (decided by type alone, so every process of
+  /// a distributed run decides alike, whatever data it holds).
+  static bool needed(vtkDataObject* input);
+
+  /**
+   * Resamples this process's `input` onto the grid of `requested` points per
+   * axis (0: automatic): `image` gets the grid, the vectors as 3-component
+   * float point data named as in the input, and vtkValidPointMask. With a
+   * `controller` every process must call this, and all get the whole grid.
+   * `run` spreads the cell search and the sums over threads. Returns the
+   * error, if any (every process fails alike); `warning` says what was left
+   * out (blocks without the array).
+   */
+  std::string resample(vtkDataObject* input, const VectorsChoice& vectors,
+    const std::array<int, 3>& requested, vtkMultiProcessController* controller,
+    const bp::RangeRunner& run, vtkImageData* image, std::string& warning);
+
+  /// The grid of the last resample.
+  const bp::ResampleGrid& grid() const { return this->Grid; }
+  /// Whether the last resample kept the located cells and weights of the one before.
+  bool keptWeights() const { return this->Kept; }
+  /// The name of the array the last resample took (the choice, or the first
+  /// vector array found).
+  const std::string& arrayName() const { return this->ArrayName; }
+  /// Forgets the kept weights.
+  void clear();
+
+private:
+  /// Where one grid point takes its vector from: a cell of a block, and for
+  /// point vectors the cell's points' weights (entries [first, first + count)).
+  struct Sample
+  {
+    std::uint32_t point; ///< the grid point
+    std::uint32_t block; ///< index into the sampled blocks
+    vtkIdType cell;
+    std::uint64_t first;
+    std::uint32_t count;
+  };
+
+  /// Finds each grid point's cell (the first block's that holds it) and weights.
+  void locate(const std::vector<vtkDataSet*>& blocks, const bp::RangeRunner& run);
+  /// In a distributed run, keeps only the samples of points this process
+  /// gives (the lowest rank holding them), and marks the points some process holds.
+  void keepOwnSamples(vtkMultiProcessController* controller);
+  /// The grid's vectors (3 floats a point; 0 outside) from this process's samples.
+  void interpolate(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
+    const bp::RangeRunner& run, std::vector<float>& values) const;
+
+  bp::ResampleGrid Grid;
+  std::uint64_t GeometryKey = 0;
+  bool Kept = false;
+  std::string ArrayName;
+  std::vector<Sample> Samples;
+  std::vector<vtkIdType> WeightPoints;
+  std::vector<float> Weights;
+  std::vector<std::uint8_t> Inside; ///< per grid point: some process samples it
+};
+
+} // namespace bpvtk
+
+#endif

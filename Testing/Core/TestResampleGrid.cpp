@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ResampleGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+TEST(ResampleGrid, AboutAsManyPointsAsCellsWithCubicCells)
+{
+  const bp::ResampleGrid g = bp::chooseResampleGrid({ 0, 4, 0, 2, 0, 1 }, 1e6, { 0, 0, 0 });
+  ASSERT_TRUE(g.error.empty()) << g.error;
+  EXPECT_NEAR(double(g.pointCount()), 1e6, 0.05e6);
+  // Cells close to cubes: the spacings agree within a cell's rounding.
+  EXPECT_NEAR(g.spacing[0] / g.spacing[1], 1.0, 0.02);
+  EXPECT_NEAR(g.spacing[0] / g.spacing[2], 1.0, 0.02);
+  // The grid spans the bounds exactly.
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_DOUBLE_EQ(g.origin[a], 0.0);
+  }
+  EXPECT_NEAR(g.origin[0] + (g.dims[0] - 1) * g.spacing[0], 4.0, 1e-12);
+  EXPECT_NEAR(g.origin[2] + (g.dims[2] - 1) * g.spacing[2], 1.0, 1e-12);
+}
+
+TEST(ResampleGrid, AFlatAxisStaysOnePointThick)
+{
+  // A 2D mesh in the plane z = 3 (far from 0), and one with x flat.
+  const bp::ResampleGrid g = bp::chooseResampleGrid({ 0, 2, 0, 1, 3, 3 }, 20000, { 0, 0, 0 });
+  ASSERT_TRUE(g.error.empty()) << g.error;
+  EXPECT_EQ(g.dims[2], 1);
+  EXPECT_DOUBLE_EQ(g.origin[2], 3.0);
+  EXPECT_NEAR(double(g.pointCount()), 20000.0, 1000.0);
+  EXPECT_NEAR(g.spacing[0] / g.spacing[1], 1.0, 0.02);
+  // A requested depth does not thicken a flat axis.
+  const bp::ResampleGrid x = bp::chooseResampleGrid({ 5, 5, 0, 1, 0, 1 }, 100, { 50, 0, 0 });
+  ASSERT_TRUE(x.error.empty()) << x.error;
+  EXPECT_EQ(x.dims[0], 1);
+  // Rounding noise in a flat coordinate is flat too.
+  const bp::ResampleGrid n = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1e-12 }, 100, { 0, 0, 0 });
+  EXPECT_EQ(n.dims[2], 1);
+}
+
+TEST(ResampleGrid, RequestedAxesAreKeptAndOthersChosen)
+{
+  const bp::ResampleGrid g = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 1000, { 30, 0, 12 });
+  ASSERT_TRUE(g.error.empty()) << g.error;
+  EXPECT_EQ(g.dims[0], 30);
+  EXPECT_EQ(g.dims[2], 12);
+  EXPECT_EQ(g.dims[1], 10); // automatic: 1000 cells over a unit cube
+  EXPECT_NEAR(g.spacing[0], 1.0 / 29.0, 1e-15);
+}
+
+TEST(ResampleGrid, CoarseMeshesGetAUsableGridAndHugeOnesACappedOne)
+{
+  const bp::ResampleGrid few = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 6, { 0, 0, 0 });
+  ASSERT_TRUE(few.error.empty());
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_EQ(few.dims[a], bp::MinAutomaticResampleAxisPoints);
+  }
+  const bp::ResampleGrid huge = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 1e12, { 0, 0, 0 });
+  ASSERT_TRUE(huge.error.empty());
+  EXPECT_LE(double(huge.pointCount()), 1.01 * double(bp::MaxAutomaticResamplePoints));
+}
+
+TEST(ResampleGrid, UnusableBoundsAndRequestsAreRefusedWithAReason)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(bp::chooseResampleGrid({ 1, 0, 1, 0, 1, 0 }, 10, { 0, 0, 0 }).error.empty());
+  EXPECT_FALSE(bp::chooseResampleGrid({ 0, inf, 0, 1, 0, 1 }, 10, { 0, 0, 0 }).error.empty());
+  EXPECT_FALSE(bp::chooseResampleGrid({ 2, 2, 2, 2, 2, 2 }, 10, { 0, 0, 0 }).error.empty());
+  EXPECT_FALSE(bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 10, { 1, 0, 0 }).error.empty());
+  const bp::ResampleGrid big =
+    bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 10, { 100000, 100000, 100000 });
+  EXPECT_NE(big.error.find("more than"), std::string::npos);
+}
+} // namespace
