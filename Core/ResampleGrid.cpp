@@ -43,7 +43,8 @@ ResampleGrid chooseResampleGrid(
       ++spanning;
     }
   }
-  // Cubic cells: as many points as cells, capped, over the spanning axes.
+  // Cells close to cubes, and about as many points as the mesh has cells
+  // (capped): each spanning axis gets its share of the points.
   const double target = std::clamp(cellCount, 1.0, double(MaxAutomaticResamplePoints));
   const double h = std::pow(volume / target, 1.0 / spanning);
   double points = 1.0;
@@ -64,7 +65,7 @@ ResampleGrid chooseResampleGrid(
     }
     else if (spans[a])
     {
-      n = std::max(MinAutomaticResampleAxisPoints, int(std::lround(extent[a] / h)) + 1);
+      n = std::max(MinAutomaticResampleAxisPoints, int(std::lround(extent[a] / h)));
     }
     g.dims[a] = n;
     g.origin[a] = spans[a] ? bounds[2 * a] : 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);

@@ -2,8 +2,9 @@
 # Builds in Release and measures the engines side by side: prints the table,
 # writes it as CSV and plots it (PNG) into ${1:-bench-output}/, then times
 # ParaView's Particle Tracer against the Bound Particle Tracer on one job, and
-# what a frame of Play costs inside ParaView (both engines and displays), and
-# steps per second under pvbatch with 1, 2 and 4 MPI ranks.
+# what a frame of Play costs inside ParaView (both engines and displays), the
+# first frame and Play on a ~1 M-cell unstructured mesh, and steps per second
+# under pvbatch with 1, 2 and 4 MPI ranks.
 # Options after the folder go to the benchmark (--quick, --no-gpu, --resolution N).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,6 +23,10 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
   --plugin "$plugin" \
   --csv "$out/play_frames.csv" | tee "$out/play_frames.txt"
 /usr/bin/python3 "$root/bench/plot_play.py" "$out/play_frames.csv" "$out/play_frames.png"
+# An unstructured mesh of ~1 M tetrahedra: first frame (resample included) and Play,
+# beside an image of the same size and ParaView's Particle Tracer on the mesh.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/unstructured.py" \
+  --plugin "$plugin" | tee "$out/unstructured.txt"
 # Steps per second under pvbatch with 1, 2 and 4 MPI ranks (and 1 rank of 2 threads).
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scaling.py" \
   --plugin "$plugin" | tee "$out/parallel_scaling.txt"
@@ -32,4 +37,4 @@ bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_bala
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
   --plugin "$plugin" \
   --data "$root/../shared/data" --pictures "$out/real-data" | tee "$out/real_data.txt"
-echo "bench: wrote $out/real_data.txt, $out/real-data/*.png, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/parallel_scaling.txt, $out/parallel_balance.txt"
+echo "bench: wrote $out/real_data.txt, $out/real-data/*.png, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt"

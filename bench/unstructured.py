@@ -1,0 +1,397 @@
+"""The Bound Particle Tracer on an unstructured mesh: what the resample onto a
+uniform grid costs on the first frame, and what Play costs after it, beside
+an image of the same size and ParaView's own Particle Tracer on the mesh.
+
+The data, generated here and written to a temporary folder as one file per
+time step with a .pvd (so both tracers read it as a user's would, a reader
+re-reading a step it does not hold):
+- mesh: the box [0,2] x [0,1] x [0,1], 2n x n x n hexahedra of 6 tetrahedra
+  each (--cells, about 1 M by default), interior points jittered by up to a
+  tenth of a cell so that no cell lines up with the axes; the same points and
+  cells at every time step, only the vectors change;
+- image: a uniform grid with the same points per axis (so the same number of
+  points) over the same box;
+- flow: the unsteady double gyre (the plugin's Analytic Flow), with a weak
+  swirl in z that vanishes on the z faces, so nothing leaves the box; --steps
+  time steps, 0.5 apart.
+Each tracer releases one-particle elements from the same --seeds random
+points (Seed Source), RK4 with two sub-steps per data interval, no
+vorticity, lifetimes beyond the run; the Bound Particle Tracer offers one
+frame per input time step (Frames Per Input Step 1) and resamples the mesh
+automatically (Resample Dimensions 0 0 0; --resample to set them).
+Timed, in a fresh tracer each repeat (interleaved, medians of --repeats):
+- first frame: UpdatePipeline at the first time, the reader holding another
+  step (so a read, and for the mesh the resample, are included);
+- following: UpdatePipeline at each later offered time in order, as Play
+  does (the median frame, and the slowest); own: the tracer's own
+  executions in it (its Start to End events), the reader's work left out;
+- reader: the reader's executions in it, and reads: how many times the
+  reader executed on the first frame and per following frame.
+Rows: the Bound Particle Tracer on the mesh, on the image of the same size,
+ParaView's Particle Tracer (Mesh Over Time: Static) on the mesh, and the
+Bound Particle Tracer on an image of the dimensions it resampled the mesh to
+(the grid it steps on once the resample is cached). Prints those dimensions
+(the output field array ResampledDimensions, from an untimed first frame)
+and the ratios mesh/image per frame (whole frame | own) and Particle
+Tracer/Bound on the mesh (first frame | following).
+
+    with-display.sh pvpython bench/unstructured.py --plugin BoundParticles.so [--cells 100000]
+"""
+import argparse
+import itertools
+import os
+import shutil
+import statistics
+import sys
+import tempfile
+import time
+
+import numpy
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
+from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import (VTK_TETRA, vtkCellArray, vtkImageData, vtkPolyData,
+                                           vtkUnstructuredGrid)
+from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridWriter
+
+parser = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--cells", type=float, default=1e6, help="tetrahedra in the mesh (about)")
+parser.add_argument("--steps", type=int, default=11, help="data time steps")
+parser.add_argument("--seeds", type=int, default=10000, help="elements (one particle each)")
+parser.add_argument("--repeats", type=int, default=3)
+parser.add_argument("--resample", type=int, nargs=3, metavar=("NX", "NY", "NZ"),
+                    help="the tracer's Resample Dimensions (default automatic)")
+parser.add_argument("--keep", metavar="DIR",
+                    help="write the data here and keep it (default: a temporary folder)")
+args = parser.parse_args()
+LoadPlugin(args.plugin, ns=globals())
+
+DT = 0.5  # between data time steps, as the plugin's Analytic Flow
+JITTER = 0.1  # of a cell, per axis, interior points only (keeps every tetrahedron valid)
+
+
+def gyre(xyz, t):
+    """The double gyre on [0,2] x [0,1] (as Core/AnalyticFlows.cpp) with a
+    weak swirl in z that is 0 on z = 0 and z = 1; float32, N x 3."""
+    x, y, z = xyz[:, 0], xyz[:, 1], xyz[:, 2]
+    A, eps, omega = 0.1, 0.25, 2 * numpy.pi / 10.0
+    a = eps * numpy.sin(omega * t)
+    b = 1.0 - 2.0 * a
+    f = a * x * x + b * x
+    dfdx = 2.0 * a * x + b
+    v = numpy.empty(xyz.shape, dtype=numpy.float32)
+    v[:, 0] = -numpy.pi * A * numpy.sin(numpy.pi * f) * numpy.cos(numpy.pi * y)
+    v[:, 1] = numpy.pi * A * numpy.cos(numpy.pi * f) * numpy.sin(numpy.pi * y) * dfdx
+    v[:, 2] = 0.25 * numpy.pi * A * numpy.sin(numpy.pi * z) * numpy.cos(numpy.pi * f)
+    return v
+
+
+def grid_points(dims, spacing):
+    """The points of a uniform grid at the origin, x fastest, N x 3."""
+    k, j, i = numpy.meshgrid(*(numpy.arange(d) for d in dims[::-1]), indexing="ij")
+    return numpy.stack([i.ravel() * spacing[0], j.ravel() * spacing[1], k.ravel() * spacing[2]],
+                       axis=1)
+
+
+def tetrahedra(dims):
+    """6 tetrahedra per hexahedron (Kuhn: along each order of the three axes
+    from the hexahedron's first corner to its last), point ids, C x 4."""
+    nx, ny, nz = dims
+    k, j, i = numpy.meshgrid(numpy.arange(nz - 1), numpy.arange(ny - 1), numpy.arange(nx - 1),
+                             indexing="ij")
+    corner = (i + nx * (j + ny * k)).ravel().astype(numpy.int64)
+    step = [1, nx, nx * ny]
+    tets = numpy.empty((corner.size, 6, 4), dtype=numpy.int64)
+    for n, (a, b, c) in enumerate(itertools.permutations(range(3))):
+        tets[:, n, 0] = corner
+        tets[:, n, 1] = corner + step[a]
+        tets[:, n, 2] = corner + step[a] + step[b]
+        tets[:, n, 3] = corner + step[a] + step[b] + step[c]
+    return tets.reshape(-1, 4)
+
+
+def orient(tets, xyz):
+    """Swaps two points of each tetrahedron of negative volume (VTK's order)."""
+    p = [xyz[tets[:, m]] for m in range(4)]
+    volume = numpy.einsum("ij,ij->i", numpy.cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0])
+    flip = volume < 0
+    tets[flip, 1], tets[flip, 2] = tets[flip, 2].copy(), tets[flip, 1].copy()
+    return float(numpy.abs(volume).min())
+
+
+def write_pvd(path, files):
+    with open(path, "w") as out:
+        out.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+                  '  <Collection>\n')
+        for t, name in files:
+            out.write('    <DataSet timestep="%r" part="0" file="%s"/>\n' % (t, name))
+        out.write("  </Collection>\n</VTKFile>\n")
+
+
+def raw_writer(writer, data, path):
+    writer.SetInputData(data)
+    writer.SetDataModeToAppended()
+    writer.EncodeAppendedDataOff()
+    writer.SetCompressorTypeToNone()
+    writer.SetHeaderTypeToUInt64()
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def write_series(data, xyz, name):
+    """Writes `data` with the flow at `xyz` at every time step, and a .pvd of
+    them, into the folder; the .pvd's path."""
+    writer = vtkXMLImageDataWriter() if data.IsA("vtkImageData") else vtkXMLUnstructuredGridWriter()
+    files = []
+    for s in range(args.steps):
+        velocity = numpy_to_vtk(gyre(xyz, DT * s), deep=True)
+        velocity.SetName("velocity")
+        data.GetPointData().SetVectors(velocity)
+        files.append((DT * s, "%s_%03d.%s" % (name, s, writer.GetDefaultFileExtension())))
+        raw_writer(writer, data, os.path.join(folder, files[-1][1]))
+    write_pvd(os.path.join(folder, name + ".pvd"), files)
+    return os.path.join(folder, name + ".pvd")
+
+
+def image_over_box(dims, name):
+    """An image of `dims` points over the box, with the flow: its .pvd."""
+    spacing = [(e / (d - 1) if d > 1 else 1.0) for e, d in zip((2.0, 1.0, 1.0), dims)]
+    image = vtkImageData()
+    image.SetDimensions(dims)
+    image.SetSpacing(spacing)
+    image.SetOrigin(0, 0, 0)
+    return write_series(image, grid_points(dims, spacing), name)
+
+
+def make_mesh():
+    """Writes the mesh's steps: its .pvd, cell count, point count and the
+    dimensions of the grid it was made from."""
+    n = max(2, int(round((args.cells / 12.0) ** (1.0 / 3.0))))
+    dims = (2 * n + 1, n + 1, n + 1)
+    spacing = (2.0 / (dims[0] - 1), 1.0 / (dims[1] - 1), 1.0 / (dims[2] - 1))
+    regular = grid_points(dims, spacing)
+    rng = numpy.random.default_rng(1)
+    xyz = regular.copy()
+    index = [numpy.rint(regular[:, a] / spacing[a]).astype(int) for a in range(3)]
+    for a in range(3):
+        interior = (index[a] > 0) & (index[a] < dims[a] - 1)
+        xyz[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
+    tets = tetrahedra(dims)
+    orient(tets, xyz)
+    mesh = vtkUnstructuredGrid()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
+    mesh.SetPoints(points)
+    cells = vtkCellArray()
+    offsets = numpy.arange(0, 4 * len(tets) + 1, 4, dtype=numpy.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
+                  numpy_to_vtkIdTypeArray(tets.ravel(), deep=True))
+    mesh.SetCells(VTK_TETRA, cells)
+    return write_series(mesh, xyz, "mesh"), len(tets), len(xyz), dims
+
+
+def make_seeds():
+    """--seeds random points inside the box, away from its faces."""
+    rng = numpy.random.default_rng(2)
+    xyz = rng.uniform([0.05, 0.05, 0.05], [1.95, 0.95, 0.95], (args.seeds, 3))
+    seeds = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
+    seeds.SetPoints(points)
+    verts = vtkCellArray()
+    verts.SetData(numpy_to_vtkIdTypeArray(numpy.arange(args.seeds + 1, dtype=numpy.int64), deep=True),
+                  numpy_to_vtkIdTypeArray(numpy.arange(args.seeds, dtype=numpy.int64), deep=True))
+    seeds.SetVerts(verts)
+    proxy = TrivialProducer(registrationName="seeds")
+    proxy.GetClientSideObject().SetOutput(seeds)
+    return proxy
+
+
+class Stopwatch:
+    """The seconds an algorithm spends in its own executions (between its
+    Start and End events, so without its upstream's), and how many."""
+
+    def __init__(self, proxy):
+        self.seconds, self.count, self.started = 0.0, 0, None
+        algorithm = proxy.GetClientSideObject()
+        algorithm.AddObserver("StartEvent", self.start)
+        algorithm.AddObserver("EndEvent", self.end)
+
+    def start(self, *unused):
+        self.started = time.perf_counter()
+
+    def end(self, *unused):
+        if self.started is not None:
+            self.seconds += time.perf_counter() - self.started
+            self.count += 1
+            self.started = None
+
+    def lap(self):
+        """The seconds and executions since the last lap."""
+        lap = (self.seconds, self.count)
+        self.seconds, self.count = 0.0, 0
+        return lap
+
+
+class Reader:
+    """A .pvd reader, timed."""
+
+    def __init__(self, path):
+        self.proxy = PVDReader(FileName=path)
+        self.proxy.UpdatePipeline(0.0)
+        self.times = list(self.proxy.TimestepValues)
+        self.watch = Stopwatch(self.proxy)
+
+
+def bound(reader):
+    tracer = BoundParticleTracer(Input=reader.proxy, SeedSource=seeds,
+                                 Vectors=["POINTS", "velocity"], ElementShape="Point",
+                                 NumberOfElements=args.seeds, Integrator="Runge-Kutta 4",
+                                 StepSizeUnit="Time", StepSize=DT / 2, FramesPerInputStep=1,
+                                 LifetimeRange=[1e9, 1e9], Seed=1, ComputeVorticity=0)
+    if args.resample:
+        tracer.ResampleDimensions = args.resample
+    return tracer
+
+
+def particle_tracer(reader):
+    tracer = ParticleTracer(Input=reader.proxy, SeedSource=seeds)
+    tracer.SelectInputVectors = ["POINTS", "velocity"]
+    tracer.StaticSeeds = 1
+    tracer.MeshOverTime = "Static"
+    tracer.ComputeVorticity = 0
+    tracer.ForceReinjectionEveryNSteps = 0
+    return tracer
+
+
+def timed(make, reader):
+    """A fresh tracer: the first frame's seconds, and each following frame's:
+    all, the tracer's own, the reader's (and its executions); the offered
+    times, the particles at the end, their positions by seed and the
+    resampled dimensions (or None)."""
+    reader.proxy.UpdatePipeline(reader.times[-1])  # the reader holds another step
+    tracer = make(reader)
+    times = list(tracer.TimestepValues)
+    own = Stopwatch(tracer)
+    reader.watch.lap()
+    start = time.perf_counter()
+    tracer.UpdatePipeline(times[0])
+    first = time.perf_counter() - start
+    own.lap()
+    first_reads = reader.watch.lap()[1]
+    frames, frames_own, frames_read, reads = [], [], [], 0
+    for t in times[1:]:
+        start = time.perf_counter()
+        tracer.UpdatePipeline(t)
+        frames.append(time.perf_counter() - start)
+        frames_own.append(own.lap()[0])
+        seconds, count = reader.watch.lap()
+        frames_read.append(seconds)
+        reads += count
+    output = servermanager.Fetch(tracer)
+    dims = output.GetFieldData().GetArray("ResampledDimensions")
+    dims = None if dims is None else [int(v) for v in vtk_to_numpy(dims).ravel()]
+    particles = output.GetNumberOfPoints()
+    xyz = vtk_to_numpy(output.GetPoints().GetData()).astype(float) if particles else None
+    ids = output.GetPointData().GetArray("ParticleId")  # ParaView's tracer: which seed
+    if xyz is not None and ids is not None:
+        xyz = dict(zip(vtk_to_numpy(ids).astype(int).tolist(), xyz))
+    elif xyz is not None:
+        xyz = dict(enumerate(xyz))  # one-particle elements in seed order
+    Delete(tracer)
+    return dict(first=first, frames=frames, frames_own=frames_own, frames_read=frames_read,
+                first_reads=first_reads, frame_reads=reads / max(1, len(frames)),
+                particles=particles, dims=dims, offered=len(times), xyz=xyz)
+
+
+folder = args.keep or tempfile.mkdtemp(prefix="bp-unstructured-")
+os.makedirs(folder, exist_ok=True)
+began = time.perf_counter()
+try:
+    mesh_path, cell_count, point_count, dims = make_mesh()
+    image_path = image_over_box(dims, "image")
+    made = time.perf_counter() - began
+    seeds = make_seeds()
+    mesh, image = Reader(mesh_path), Reader(image_path)
+    print("mesh: %d tetrahedra, %d points (%d x %d x %d hexahedra of 6, jittered); image: "
+          "%d x %d x %d points; %d time steps 0.5 apart; written in %.1f s to %s"
+          % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, dims[0], dims[1],
+             dims[2], len(mesh.times), made, folder))
+    print("job: %d one-particle elements from the same seed points, RK4, 2 sub-steps per "
+          "interval, %d repeats (medians, interleaved)" % (args.seeds, args.repeats))
+
+    # An untimed first frame on the mesh: the dimensions the tracer resamples
+    # it to, for one more row (an image of that size: the grid the tracer
+    # steps on once the resample is cached).
+    probe = bound(mesh)
+    probe.UpdatePipeline(mesh.times[0])
+    probed = servermanager.Fetch(probe).GetFieldData().GetArray("ResampledDimensions")
+    Delete(probe)
+    resampled = None if probed is None else [int(v) for v in vtk_to_numpy(probed).ravel()]
+    if resampled:
+        print("resampled dimensions (%s): %s = %d points, for %d cells"
+              % ("set" if args.resample else "automatic", " x ".join(map(str, resampled)),
+                 numpy.prod(resampled), cell_count))
+    else:
+        print("resampled dimensions: no ResampledDimensions array in the output")
+    sys.stdout.flush()
+
+    ROWS = [("mesh (Bound)", bound, mesh), ("image same size (Bound)", bound, image),
+            ("mesh (ParaView Particle Tracer)", particle_tracer, mesh)]
+    if resampled:
+        ROWS.append(("image of resampled size (Bound)", bound,
+                     Reader(image_over_box(resampled, "resampled"))))
+    runs = {name: [] for name, _, _ in ROWS}
+    for _ in range(args.repeats):
+        for name, make, reader in ROWS:
+            runs[name].append(timed(make, reader))
+
+    def summary(name):
+        r = runs[name]
+        return dict(first=statistics.median(x["first"] for x in r),
+                    frame=statistics.median(statistics.median(x["frames"]) for x in r),
+                    own=statistics.median(statistics.median(x["frames_own"]) for x in r),
+                    slowest=statistics.median(max(x["frames"]) for x in r),
+                    read=statistics.median(statistics.median(x["frames_read"]) for x in r),
+                    first_reads=r[-1]["first_reads"], frame_reads=r[-1]["frame_reads"],
+                    particles=r[-1]["particles"], offered=r[-1]["offered"], xyz=r[-1]["xyz"])
+
+    rows = [(name, summary(name)) for name, _, _ in ROWS]
+    mesh_row, image_row, pt_row = (r for _, r in rows[:3])
+    head = "%-32s %8s %10s %9s %9s %9s %7s %7s %11s %11s"
+    print()
+    print(head % ("", "first", "following", "own", "slowest", "reader", "reads", "reads",
+                  "mesh/image", "PT/Bound"))
+    print(head % ("", "frame s", "ms/frame", "ms/frame", "ms/frame", "ms/frame", "first",
+                  "/frame", "frame|own", "first|frame"))
+    for name, r in rows:
+        ratio = ("%.2fx|%.2fx" % (r["frame"] / image_row["frame"], r["own"] / image_row["own"])
+                 if r is mesh_row else "-")
+        versus = ("%.1fx|%.1fx" % (r["first"] / mesh_row["first"], r["frame"] / mesh_row["frame"])
+                  if r is pt_row else "-")
+        print("%-32s %8.3f %10.1f %9.1f %9.1f %9.1f %7d %7.2f %11s %11s" % (
+            name, r["first"], 1e3 * r["frame"], 1e3 * r["own"], 1e3 * r["slowest"],
+            1e3 * r["read"], r["first_reads"], r["frame_reads"], ratio, versus))
+    print()
+    print("following: the median frame of Play after the first (UpdatePipeline at the next "
+          "offered time); own: the tracer's own executions in it, the reader's left out; "
+          "slowest: the slowest following frame; reader: the reader's executions in it; reads: the reader's executions on the first frame and per following "
+          "frame; %d offered times each" % rows[0][1]["offered"])
+    print("particles at the end: %s" % ", ".join("%s %d" % (name, r["particles"])
+                                                  for name, r in rows))
+    for name, r in rows[1:]:
+        if mesh_row["xyz"] and r["xyz"]:
+            common = [i for i in mesh_row["xyz"] if i in r["xyz"]]
+            far = [numpy.linalg.norm(mesh_row["xyz"][i] - r["xyz"][i]) for i in common]
+            if far:
+                print("final positions, mesh (Bound) against %s: %d particles in both, "
+                      "distance median %.2e, max %.2e (box 2 x 1 x 1)"
+                      % (name, len(far), statistics.median(far), max(far)))
+    print("total %.0f s" % (time.perf_counter() - began))
+    sys.stdout.flush()
+finally:
+    if not args.keep:
+        shutil.rmtree(folder, ignore_errors=True)
