@@ -157,33 +157,29 @@ bool PieceLayout::takeRequest(vtkInformation* outInfo, vtkInformation* inInfo)
   return changed;
 }
 
-void PieceLayout::requestInput(vtkInformation* inInfo)
+void PieceLayout::requestInput(vtkInformation* inInfo, bool mesh)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  if (!inInfo->Has(SDDP::WHOLE_EXTENT()))
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
   {
-    // A mesh (resampled by the tracer): each process reads its piece of
-    // cells, without ghosts; the whole grid is known once they are read.
-    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), this->Piece);
-    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), this->Pieces);
-    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    return;
+    // The whole extent: in parallel, the executive of a source that can
+    // produce sub-extents splits it by piece (blocks, as below) and adds the
+    // ghost layers.
+    int* whole = inInfo->Get(SDDP::WHOLE_EXTENT());
+    inInfo->Set(SDDP::UPDATE_EXTENT(), whole, 6);
+    if (!mesh)
+    {
+      this->setWholeExtent(whole);
+    }
   }
-  // The whole extent: in parallel, the executive of a source that can
-  // produce sub-extents splits it by piece (blocks, as below) and adds the
-  // ghost layers.
-  int* whole = inInfo->Get(SDDP::WHOLE_EXTENT());
-  inInfo->Set(SDDP::UPDATE_EXTENT(), whole, 6);
-  this->setWholeExtent(whole);
-  if (!this->distributed())
-  {
-    // Piece 0 traces the whole field: ask for all of it.
-    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
-    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
-    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    return;
-  }
-  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), this->GhostCells);
+  // Without a process per piece, piece 0 traces the whole field: ask for all
+  // of it. A mesh (resampled by the tracer, whatever its type) needs no
+  // ghosts: the whole grid is known once every piece is read, and
+  // cutPiece() adds the layers.
+  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), this->Piece);
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), this->Pieces);
+  inInfo->Set(
+    SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), this->distributed() && !mesh ? this->GhostCells : 0);
 }
 
 void PieceLayout::setWholeExtent(const int whole[6])

@@ -56,9 +56,9 @@ public:
   bool tooSmallToSplit() const { return this->TooSmall; }
 
   /// Asks the input for the whole extent (one process) or this process's
-  /// block with GhostCells layers (the executive splits it); a mesh (no
-  /// whole extent) for this process's piece, without ghosts.
-  void requestInput(vtkInformation* inInfo);
+  /// block with GhostCells layers (the executive splits it); a `mesh` (an
+  /// input the tracer resamples) for this process's piece, without ghosts.
+  void requestInput(vtkInformation* inInfo, bool mesh);
 
   /// Takes the whole grid's extent and this process's block of it.
   void setWholeExtent(const int whole[6]);

@@ -13,6 +13,8 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
@@ -27,6 +29,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -83,6 +86,21 @@ int cellDimension(vtkDataSet* data)
     dimension = std::max(dimension, vtkCellTypes::GetDimension((unsigned char)data->GetCellType(c)));
   }
   return dimension;
+}
+
+/// The cells of `data` that are not another piece's (ghost cells), which
+/// every process counts once.
+vtkIdType ownCells(vtkDataSet* data)
+{
+  vtkUnsignedCharArray* ghosts = data->GetCellGhostArray();
+  if (!ghosts)
+  {
+    return data->GetNumberOfCells();
+  }
+  const auto values = vtk::DataArrayValueRange<1>(ghosts);
+  const unsigned char others = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+  return vtkIdType(std::count_if(
+    values.begin(), values.end(), [&](unsigned char g) { return (g & others) == 0; }));
 }
 
 /// The 3-component array `name` of `data`'s points or cells; null if none.
@@ -319,7 +337,7 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
       extremes[2 * a] = std::max(extremes[2 * a], -b[2 * a]);
       extremes[2 * a + 1] = std::max(extremes[2 * a + 1], b[2 * a + 1]);
     }
-    cells[0] += double(block->GetNumberOfCells());
+    cells[0] += double(ownCells(block));
   }
   allReduce(controller, extremes, vtkCommunicator::MAX_OP);
   allReduce(controller, cells, vtkCommunicator::SUM_OP);
@@ -345,6 +363,11 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
           << "' to resample: Bound Particle Tracer needs a mesh (cells) carrying the Vectors.";
     }
     return err.str();
+  }
+  if (dimension[0] < 2)
+  {
+    return "The input's cells are points or lines: a flow needs a mesh of surfaces (2D) or "
+           "volumes (3D) to be resampled from. Give the tracer the mesh the vectors live on.";
   }
   const std::array<double, 6> bounds = { -extremes[0], extremes[1], -extremes[2], extremes[3],
     -extremes[4], extremes[5] };

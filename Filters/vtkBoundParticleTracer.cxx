@@ -270,7 +270,8 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // A change of pieces is a change of input: replay.
     I.forgetTrace();
   }
-  I.Layout.requestInput(inInfo);
+  I.Layout.requestInput(
+    inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
   if (!I.Continuing && I.Plan.hasTimes())
   {
     // A new update: decide it once here, before anything is asked of

@@ -202,8 +202,8 @@ def make_exodus(data, folder):
     writer.WriteAllTimeStepsOff()
     writer.Write()
     reader = OpenDataFile(path)
-    # Readers of Exodus load no nodal variable unless asked to.
-    for name in ("NodeSetArrayStatus", "PointVariables", "NodeBlockFields"):
+    # The ExodusII reader loads no nodal variable unless asked to (IOSS loads all).
+    for name in ("PointVariables", "NodeBlockFields"):
         if name in reader.ListProperties():
             reader.SetPropertyWithName(name, reader.GetProperty(name).Available)
     return reader, ["POINTS", "velocity"]

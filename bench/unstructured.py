@@ -267,15 +267,12 @@ def particle_tracer(reader):
     return tracer
 
 
-def timed(make, reader):
-    """A fresh tracer: the first frame's seconds, and each following frame's:
-    all, the tracer's own, the reader's (and its executions); the offered
-    times, the particles at the end, their positions by seed and the
-    resampled dimensions (or None)."""
-    reader.proxy.UpdatePipeline(reader.times[-1])  # the reader holds another step
-    tracer = make(reader)
-    times = list(tracer.TimestepValues)
-    own = Stopwatch(tracer)
+def play(tracer, times, own, reader):
+    """UpdatePipeline at the first time, then at each later one: the first
+    frame's seconds and reader executions; each following frame's seconds
+    (all, the tracer's own, the reader's) and the reader's executions per
+    following frame."""
+    own.lap()
     reader.watch.lap()
     start = time.perf_counter()
     tracer.UpdatePipeline(times[0])
@@ -291,6 +288,20 @@ def timed(make, reader):
         seconds, count = reader.watch.lap()
         frames_read.append(seconds)
         reads += count
+    return dict(first=first, first_reads=first_reads, frames=frames, frames_own=frames_own,
+                frames_read=frames_read, frame_reads=reads / max(1, len(frames)))
+
+
+def timed(make, reader):
+    """A fresh tracer played through the offered times twice (the second time
+    a replay: back to the first time, then forward again); the two plays, the
+    offered times, the particles at the end of the first play, their
+    positions by seed and the resampled dimensions (or None)."""
+    reader.proxy.UpdatePipeline(reader.times[-1])  # the reader holds another step
+    tracer = make(reader)
+    times = list(tracer.TimestepValues)
+    own = Stopwatch(tracer)
+    first_play = play(tracer, times, own, reader)
     output = servermanager.Fetch(tracer)
     dims = output.GetFieldData().GetArray("ResampledDimensions")
     dims = None if dims is None else [int(v) for v in vtk_to_numpy(dims).ravel()]
@@ -301,10 +312,25 @@ def timed(make, reader):
         xyz = dict(zip(vtk_to_numpy(ids).astype(int).tolist(), xyz))
     elif xyz is not None:
         xyz = dict(enumerate(xyz))  # one-particle elements in seed order
+    replay = play(tracer, times, own, reader)
     Delete(tracer)
-    return dict(first=first, frames=frames, frames_own=frames_own, frames_read=frames_read,
-                first_reads=first_reads, frame_reads=reads / max(1, len(frames)),
-                particles=particles, dims=dims, offered=len(times), xyz=xyz)
+    return dict(play=first_play, replay=replay, particles=particles, dims=dims,
+                offered=len(times), xyz=xyz)
+
+
+def summary(runs):
+    """Medians over the repeats (of each repeat's median frame)."""
+    def median(key, of="play", reduce=statistics.median):
+        return statistics.median(reduce(r[of][key]) if reduce else r[of][key] for r in runs)
+    return dict(first=median("first", reduce=None), frame=median("frames"),
+                own=median("frames_own"), read=median("frames_read"),
+                slowest=median("frames", reduce=max),
+                first_reads=median("first_reads", reduce=None),
+                frame_reads=median("frame_reads", reduce=None),
+                replay_first=median("first", "replay", None), replay=median("frames", "replay"),
+                replay_reads=median("frame_reads", "replay", None),
+                particles=runs[-1]["particles"], offered=runs[-1]["offered"],
+                xyz=runs[-1]["xyz"])
 
 
 folder = args.keep or tempfile.mkdtemp(prefix="bp-unstructured-")
@@ -325,7 +351,7 @@ try:
 
     # An untimed first frame on the mesh: the dimensions the tracer resamples
     # it to, for one more row (an image of that size: the grid the tracer
-    # steps on once the resample is cached).
+    # steps on once the resample is done).
     probe = bound(mesh)
     probe.UpdatePipeline(mesh.times[0])
     probed = servermanager.Fetch(probe).GetFieldData().GetArray("ResampledDimensions")
@@ -348,38 +374,34 @@ try:
     for _ in range(args.repeats):
         for name, make, reader in ROWS:
             runs[name].append(timed(make, reader))
-
-    def summary(name):
-        r = runs[name]
-        return dict(first=statistics.median(x["first"] for x in r),
-                    frame=statistics.median(statistics.median(x["frames"]) for x in r),
-                    own=statistics.median(statistics.median(x["frames_own"]) for x in r),
-                    slowest=statistics.median(max(x["frames"]) for x in r),
-                    read=statistics.median(statistics.median(x["frames_read"]) for x in r),
-                    first_reads=r[-1]["first_reads"], frame_reads=r[-1]["frame_reads"],
-                    particles=r[-1]["particles"], offered=r[-1]["offered"], xyz=r[-1]["xyz"])
-
-    rows = [(name, summary(name)) for name, _, _ in ROWS]
+    rows = [(name, summary(runs[name])) for name, _, _ in ROWS]
     mesh_row, image_row, pt_row = (r for _, r in rows[:3])
-    head = "%-32s %8s %10s %9s %9s %9s %7s %7s %11s %11s"
+
     print()
-    print(head % ("", "first", "following", "own", "slowest", "reader", "reads", "reads",
-                  "mesh/image", "PT/Bound"))
-    print(head % ("", "frame s", "ms/frame", "ms/frame", "ms/frame", "ms/frame", "first",
-                  "/frame", "frame|own", "first|frame"))
+    head = "%-32s %8s %10s %11s %11s"
+    print(head % ("", "first", "following", "mesh/image", "PT/Bound"))
+    print(head % ("", "frame s", "ms/frame", "per frame", "first|frame"))
     for name, r in rows:
-        ratio = ("%.2fx|%.2fx" % (r["frame"] / image_row["frame"], r["own"] / image_row["own"])
-                 if r is mesh_row else "-")
+        ratio = "%.2fx" % (r["frame"] / image_row["frame"]) if r is mesh_row else "-"
         versus = ("%.1fx|%.1fx" % (r["first"] / mesh_row["first"], r["frame"] / mesh_row["frame"])
                   if r is pt_row else "-")
-        print("%-32s %8.3f %10.1f %9.1f %9.1f %9.1f %7d %7.2f %11s %11s" % (
-            name, r["first"], 1e3 * r["frame"], 1e3 * r["own"], 1e3 * r["slowest"],
-            1e3 * r["read"], r["first_reads"], r["frame_reads"], ratio, versus))
+        print("%-32s %8.3f %10.1f %11s %11s" % (name, r["first"], 1e3 * r["frame"], ratio, versus))
     print()
-    print("following: the median frame of Play after the first (UpdatePipeline at the next "
-          "offered time); own: the tracer's own executions in it, the reader's left out; "
-          "slowest: the slowest following frame; reader: the reader's executions in it; reads: the reader's executions on the first frame and per following "
-          "frame; %d offered times each" % rows[0][1]["offered"])
+    print("where a following frame's time goes, and a replay (back to the first time, then "
+          "Play again):")
+    head = "%-32s %9s %9s %9s %7s %7s %9s %9s %7s"
+    print(head % ("", "own", "reader", "slowest", "reads", "reads", "replay", "replay",
+                  "replay"))
+    print(head % ("", "ms/frame", "ms/frame", "ms/frame", "first", "/frame", "first s",
+                  "ms/frame", "reads"))
+    for name, r in rows:
+        print("%-32s %9.1f %9.1f %9.1f %7d %7.2f %9.3f %9.1f %7.2f" % (
+            name, 1e3 * r["own"], 1e3 * r["read"], 1e3 * r["slowest"], r["first_reads"],
+            r["frame_reads"], r["replay_first"], 1e3 * r["replay"], r["replay_reads"]))
+    print("own: the tracer's own executions in a frame, the reader's left out; reader: the "
+          "reader's executions in it; slowest: the slowest following frame; reads: the reader's "
+          "executions on the first frame and per following frame; %d offered times each; "
+          "mesh/image own: %.2fx" % (rows[0][1]["offered"], mesh_row["own"] / image_row["own"]))
     print("particles at the end: %s" % ", ".join("%s %d" % (name, r["particles"])
                                                   for name, r in rows))
     for name, r in rows[1:]:

@@ -92,6 +92,30 @@ def placement_traces():
                                 Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5))
     cases["unsteady_z"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
                                                NumberOfElements=1200, Seed=7), [1.0, 2.0])
+    # Meshes, resampled inside the tracer: each rank locates the grid points
+    # in its piece of cells. Hexahedra (an image's cells as an unstructured
+    # grid) interpolate alike whichever piece holds a point; so do two
+    # curvilinear zones sharing a face, and an unsteady curvilinear grid.
+    abc = updated(AnalyticFlow(Flow="ABC", Resolution=[24, 20, 16], Bounds=[0, 2, 0, 1.8, 0, 1.6]))
+    hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=abc)))
+    cases["mesh"] = (BoundParticleTracer(
+        Input=hexes, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
+        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16]),
+        [0.5, 1.0])
+    zones = updated(GroupDatasets(Input=[
+        ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 20, 16],
+                                               Bounds=[0, 1, 0, 1.8, 0, 1.6])),
+        ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[13, 20, 16],
+                                               Bounds=[1, 2, 0, 1.8, 0, 1.6]))]))
+    cases["zones"] = (BoundParticleTracer(
+        Input=zones, ElementShape="Strip4", NumberOfElements=500, Seed=4, Duration=1.0,
+        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"]), [0.5, 1.0])
+    moving = updated(ImageDatatoPointSet(Input=AnalyticFlow(
+        Flow="Double Gyre", Resolution=[40, 20, 2], Bounds=[0, 2, 0, 1, 0, 0.05],
+        NumberOfTimeSteps=5)))
+    cases["mesh_unsteady"] = (BoundParticleTracer(
+        Input=moving, ElementShape="Point", NumberOfElements=1200, Seed=7,
+        Vectors=["POINTS", "velocity"]), [1.0, 2.0])
     if args.rectilinear:
         grid = XMLRectilinearGridReader(FileName=[args.rectilinear])
         grid.UpdatePipeline()  # the emitter's defaults come from the input's bounds

@@ -1,0 +1,343 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The mesh resampler (Filters/TracerResample.h) alone: values at the grid
+// points, the mask, kept weights, cell vectors, 2D meshes, blocks, refusals.
+#include "TracerResample.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCharArray.h"
+#include "vtkDataObject.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace
+{
+using Vector = std::function<std::array<double, 3>(double x, double y, double z)>;
+
+/// A lattice of n^3 points over [0, 1]^3 (shifted by `offset`) as hexahedra,
+/// without the cells whose centre `skip` selects; point vectors "v" from `f`.
+vtkSmartPointer<vtkUnstructuredGrid> hexMesh(int n, const Vector& f,
+  const std::function<bool(double, double, double)>& skip = nullptr, double offset = 0.0)
+{
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  const double h = 1.0 / (n - 1);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = offset + i * h, y = j * h, z = k * h;
+        points->InsertNextPoint(x, y, z);
+        const auto value = f(x, y, z);
+        v->InsertNextTuple(value.data());
+      }
+  mesh->SetPoints(points);
+  mesh->GetPointData()->AddArray(v);
+  auto id = [n](int i, int j, int k) { return vtkIdType(i + n * (j + n * k)); };
+  for (int k = 0; k + 1 < n; ++k)
+    for (int j = 0; j + 1 < n; ++j)
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        if (skip && skip(offset + (i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h))
+          continue;
+        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        mesh->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      }
+  return mesh;
+}
+
+std::array<double, 3> linear(double x, double y, double z)
+{
+  return { 1.0 + x, 2.0 * y, -z };
+}
+
+struct Resampled
+{
+  vtkNew<vtkImageData> image;
+  std::string error, warning;
+
+  vtkFloatArray* vectors() { return vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("v")); }
+  vtkCharArray* mask()
+  {
+    return vtkCharArray::SafeDownCast(image->GetPointData()->GetArray("vtkValidPointMask"));
+  }
+};
+
+void resample(bpvtk::FieldResampler& r, vtkDataObject* input, Resampled& out,
+  std::array<int, 3> dims = { 0, 0, 0 }, bool cells = false)
+{
+  bpvtk::VectorsChoice choice;
+  choice.name = "v";
+  choice.association =
+    cells ? vtkDataObject::FIELD_ASSOCIATION_CELLS : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  out.error = r.resample(input, choice, dims, nullptr, bp::serialRunner(), out.image, out.warning);
+}
+
+TEST(FieldResampler, ALinearFieldIsExactAtEveryGridPoint)
+{
+  // Trilinear interpolation reproduces a linear field: at the mesh's own
+  // points (the same lattice) and between them (twice as fine).
+  auto mesh = hexMesh(9, linear);
+  for (int n : { 9, 17 })
+  {
+    bpvtk::FieldResampler r;
+    Resampled out;
+    resample(r, mesh, out, { n, n, n });
+    ASSERT_TRUE(out.error.empty()) << out.error;
+    ASSERT_EQ(out.image->GetNumberOfPoints(), vtkIdType(n) * n * n);
+    for (vtkIdType p = 0; p < out.image->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      out.image->GetPoint(p, x);
+      const auto expected = linear(x[0], x[1], x[2]);
+      ASSERT_EQ(out.mask()->GetValue(p), 1) << "point " << p;
+      for (int a = 0; a < 3; ++a)
+      {
+        ASSERT_NEAR(out.vectors()->GetComponent(p, a), expected[a], 2e-6) << "point " << p;
+      }
+    }
+  }
+}
+
+TEST(FieldResampler, AStaticMeshKeepsItsWeightsAndNewVectorsGiveNewValues)
+{
+  auto mesh = hexMesh(6, linear);
+  bpvtk::FieldResampler kept;
+  Resampled first;
+  resample(kept, mesh, first);
+  ASSERT_TRUE(first.error.empty()) << first.error;
+  EXPECT_FALSE(kept.keptWeights());
+
+  // The next time step: the same points and cells (new objects, as a reader
+  // gives), other vectors.
+  auto next = hexMesh(6, [](double x, double y, double z) { return linear(2 * z, x, y); });
+  Resampled second;
+  resample(kept, next, second);
+  ASSERT_TRUE(second.error.empty()) << second.error;
+  EXPECT_TRUE(kept.keptWeights());
+  bpvtk::FieldResampler fresh;
+  Resampled reference;
+  resample(fresh, next, reference);
+  ASSERT_EQ(second.vectors()->GetNumberOfValues(), reference.vectors()->GetNumberOfValues());
+  for (vtkIdType i = 0; i < reference.vectors()->GetNumberOfValues(); ++i)
+  {
+    ASSERT_EQ(second.vectors()->GetValue(i), reference.vectors()->GetValue(i)) << i;
+  }
+
+  // A moved point is a new mesh: located again.
+  next->GetPoints()->SetPoint(7, 0.21, 0.02, 0.0);
+  Resampled moved;
+  resample(kept, next, moved);
+  EXPECT_FALSE(kept.keptWeights());
+}
+
+TEST(FieldResampler, CellVectorsGiveTheValueOfTheCellThatHoldsThePoint)
+{
+  auto mesh = hexMesh(5, linear);
+  vtkNew<vtkFloatArray> c;
+  c->SetName("v");
+  c->SetNumberOfComponents(3);
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfCells(); ++cell)
+  {
+    c->InsertNextTuple3(double(cell), 0.0, 1.0);
+  }
+  mesh->GetPointData()->RemoveArray("v");
+  mesh->GetCellData()->AddArray(c);
+  bpvtk::FieldResampler r;
+  Resampled out;
+  // 4 grid points along each axis over 4 cells: none on a face between cells.
+  resample(r, mesh, out, { 4, 4, 4 }, true);
+  ASSERT_TRUE(out.error.empty()) << out.error;
+  EXPECT_EQ(out.vectors()->GetComponent(0, 0), 0.0f);
+  // Asked as point data, the array is found on the cells.
+  Resampled asPoints;
+  resample(r, mesh, asPoints, { 4, 4, 4 }, false);
+  ASSERT_TRUE(asPoints.error.empty()) << asPoints.error;
+  for (vtkIdType p = 0; p < out.image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    out.image->GetPoint(p, x);
+    // The hexahedron whose centre is nearest (the grid point is inside it).
+    const int i = std::min(3, int(x[0] * 4)), j = std::min(3, int(x[1] * 4)),
+              k = std::min(3, int(x[2] * 4));
+    EXPECT_EQ(out.vectors()->GetComponent(p, 0), float(i + 4 * (j + 4 * k))) << p;
+    EXPECT_EQ(asPoints.vectors()->GetComponent(p, 0), out.vectors()->GetComponent(p, 0));
+  }
+}
+
+TEST(FieldResampler, PointsInAHoleAreOutsideTheFlow)
+{
+  const auto hole = [](double x, double y, double) {
+    return std::hypot(x - 0.5, y - 0.5) < 0.25;
+  };
+  auto mesh = hexMesh(21, linear, hole);
+  bpvtk::FieldResampler r;
+  Resampled out;
+  resample(r, mesh, out, { 41, 41, 5 });
+  ASSERT_TRUE(out.error.empty()) << out.error;
+  vtkIdType outside = 0;
+  for (vtkIdType p = 0; p < out.image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    out.image->GetPoint(p, x);
+    const double r2 = std::hypot(x[0] - 0.5, x[1] - 0.5);
+    if (r2 < 0.15)
+    {
+      EXPECT_EQ(out.mask()->GetValue(p), 0) << "in the hole: " << x[0] << " " << x[1];
+    }
+    if (r2 > 0.35)
+    {
+      EXPECT_EQ(out.mask()->GetValue(p), 1) << "in the mesh: " << x[0] << " " << x[1];
+    }
+    outside += out.mask()->GetValue(p) == 0 ? 1 : 0;
+    if (out.mask()->GetValue(p) == 0)
+    {
+      EXPECT_EQ(out.vectors()->GetComponent(p, 0), 0.0f);
+    }
+  }
+  EXPECT_GT(outside, 0);
+}
+
+TEST(FieldResampler, AFlatMeshGivesAFlatGridWithEveryPointInside)
+{
+  // Triangles in the plane z = 2 (their points carry rounding-free z).
+  vtkNew<vtkPolyData> plane;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  const int n = 11;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      points->InsertNextPoint(i * 0.3, j * 0.1, 2.0);
+      v->InsertNextTuple3(-j * 0.1, i * 0.3, 0.0);
+    }
+  plane->SetPoints(points);
+  plane->GetPointData()->AddArray(v);
+  vtkNew<vtkCellArray> triangles;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const vtkIdType a = i + n * j, b = a + 1, c = a + n, d = c + 1;
+      const vtkIdType t1[3] = { a, b, d }, t2[3] = { a, d, c };
+      triangles->InsertNextCell(3, t1);
+      triangles->InsertNextCell(3, t2);
+    }
+  plane->SetPolys(triangles);
+  bpvtk::FieldResampler r;
+  Resampled out;
+  resample(r, plane, out);
+  ASSERT_TRUE(out.error.empty()) << out.error;
+  EXPECT_EQ(r.grid().dims[2], 1);
+  EXPECT_DOUBLE_EQ(r.grid().origin[2], 2.0);
+  for (vtkIdType p = 0; p < out.image->GetNumberOfPoints(); ++p)
+  {
+    ASSERT_EQ(out.mask()->GetValue(p), 1) << p;
+    double x[3];
+    out.image->GetPoint(p, x);
+    EXPECT_NEAR(out.vectors()->GetComponent(p, 0), -x[1], 1e-5);
+    EXPECT_NEAR(out.vectors()->GetComponent(p, 1), x[0], 1e-5);
+  }
+}
+
+TEST(FieldResampler, BlocksOfTheVolumeAreSampledAndSurfacesAndBlocksWithoutVectorsLeftOut)
+{
+  // Two zones sharing the face x = 1, a surface patch with other vectors on
+  // it, and a zone without the array.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, hexMesh(5, linear));
+  blocks->SetBlock(1, hexMesh(5, linear, nullptr, 1.0));
+  vtkNew<vtkPolyData> patch;
+  vtkNew<vtkPoints> corners;
+  for (double y : { 0.0, 1.0 })
+    for (double z : { 0.0, 1.0 })
+      corners->InsertNextPoint(0.0, y, z);
+  patch->SetPoints(corners);
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType ids[4] = { 0, 1, 3, 2 };
+  quad->InsertNextCell(4, ids);
+  patch->SetPolys(quad);
+  vtkNew<vtkFloatArray> wrong;
+  wrong->SetName("v");
+  wrong->SetNumberOfComponents(3);
+  for (int i = 0; i < 4; ++i)
+    wrong->InsertNextTuple3(99, 99, 99);
+  patch->GetPointData()->AddArray(wrong);
+  blocks->SetBlock(2, patch);
+  auto bare = hexMesh(3, linear, nullptr, 3.0);
+  bare->GetPointData()->RemoveArray("v");
+  blocks->SetBlock(3, bare);
+
+  bpvtk::FieldResampler r;
+  Resampled out;
+  resample(r, blocks, out, { 0, 5, 5 });
+  ASSERT_TRUE(out.error.empty()) << out.error;
+  EXPECT_NE(out.warning.find("1 block"), std::string::npos) << out.warning;
+  // The grid spans both zones with the array (not the bare one at x = 3..4).
+  EXPECT_NEAR(r.grid().origin[0] + (r.grid().dims[0] - 1) * r.grid().spacing[0], 2.0, 1e-12);
+  for (vtkIdType p = 0; p < out.image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    out.image->GetPoint(p, x);
+    ASSERT_EQ(out.mask()->GetValue(p), 1) << p;
+    EXPECT_NEAR(out.vectors()->GetComponent(p, 0), 1.0 + x[0], 2e-6) << p;
+  }
+}
+
+TEST(FieldResampler, InputsWithoutAMeshOrTheArrayAreRefusedWithAReason)
+{
+  bpvtk::FieldResampler r;
+  Resampled out;
+  vtkNew<vtkUnstructuredGrid> empty;
+  resample(r, empty, out);
+  EXPECT_NE(out.error.find("no cells"), std::string::npos) << out.error;
+
+  // Vertices only (a point cloud): no surface or volume to interpolate in.
+  vtkNew<vtkPolyData> cloud;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < 10; ++i)
+  {
+    points->InsertNextPoint(double(i), double(i % 3), 0.5 * double(i % 2));
+    vertices->InsertNextCell(1, &i);
+    v->InsertNextTuple3(1, 0, 0);
+  }
+  cloud->SetPoints(points);
+  cloud->SetVerts(vertices);
+  cloud->GetPointData()->AddArray(v);
+  resample(r, cloud, out);
+  EXPECT_NE(out.error.find("points or lines"), std::string::npos) << out.error;
+
+  auto mesh = hexMesh(4, linear);
+  bpvtk::VectorsChoice missing;
+  missing.name = "nothing";
+  out.error =
+    r.resample(mesh, missing, { 0, 0, 0 }, nullptr, bp::serialRunner(), out.image, out.warning);
+  EXPECT_NE(out.error.find("'nothing'"), std::string::npos) << out.error;
+  resample(r, mesh, out, { 100000, 100000, 100000 });
+  EXPECT_NE(out.error.find("more than"), std::string::npos) << out.error;
+}
+} // namespace
