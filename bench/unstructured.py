@@ -23,17 +23,20 @@ Timed, in a fresh tracer each repeat (interleaved, medians of --repeats):
 - first frame: UpdatePipeline at the first time, the reader holding another
   step (so a read, and for the mesh the resample, are included);
 - following: UpdatePipeline at each later offered time in order, as Play
-  does (the median frame, and the slowest); own: the tracer's own
-  executions in it (its Start to End events), the reader's work left out;
-- reader: the reader's executions in it, and reads: how many times the
-  reader executed on the first frame and per following frame.
+  does (the median frame).
 Rows: the Bound Particle Tracer on the mesh, on the image of the same size,
 ParaView's Particle Tracer (Mesh Over Time: Static) on the mesh, and the
 Bound Particle Tracer on an image of the dimensions it resampled the mesh to
-(the grid it steps on once the resample is cached). Prints those dimensions
-(the output field array ResampledDimensions, from an untimed first frame)
-and the ratios mesh/image per frame (whole frame | own) and Particle
-Tracer/Bound on the mesh (first frame | following).
+(the grid it steps on after the resample). Prints those dimensions (the
+output field array ResampledDimensions, from an untimed first frame), then
+the table: first frame, following frames, mesh/image per frame and Particle
+Tracer/Bound on the mesh (first frame | following). Then where a following
+frame's time goes: own, the tracer's own executions (between its Start and
+End events, so the reader's work left out); reader, the reader's executions;
+the slowest frame; how many times the reader executed on the first frame
+and per following frame; and a replay in the same tracer (back to the first
+time, then Play again: the kept interpolation weights and cached steps at
+work). Last, how far the final positions lie from the mesh's (the same job).
 
     with-display.sh pvpython bench/unstructured.py --plugin BoundParticles.so [--cells 100000]
 """
@@ -180,7 +183,7 @@ def make_mesh():
         interior = (index[a] > 0) & (index[a] < dims[a] - 1)
         xyz[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
     tets = tetrahedra(dims)
-    orient(tets, xyz)
+    assert orient(tets, xyz) > 0, "a flat tetrahedron"
     mesh = vtkUnstructuredGrid()
     points = vtkPoints()
     points.SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
@@ -202,8 +205,9 @@ def make_seeds():
     points.SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
     seeds.SetPoints(points)
     verts = vtkCellArray()
-    verts.SetData(numpy_to_vtkIdTypeArray(numpy.arange(args.seeds + 1, dtype=numpy.int64), deep=True),
-                  numpy_to_vtkIdTypeArray(numpy.arange(args.seeds, dtype=numpy.int64), deep=True))
+    ids = numpy.arange(args.seeds + 1, dtype=numpy.int64)
+    verts.SetData(numpy_to_vtkIdTypeArray(ids, deep=True),
+                  numpy_to_vtkIdTypeArray(ids[:-1].copy(), deep=True))
     seeds.SetVerts(verts)
     proxy = TrivialProducer(registrationName="seeds")
     proxy.GetClientSideObject().SetOutput(seeds)
