@@ -8,8 +8,8 @@
 namespace bp
 {
 
-ResampleGrid chooseResampleGrid(
-  const std::array<double, 6>& bounds, double cellCount, const std::array<int, 3>& requested)
+ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cellCount,
+  const std::array<int, 3>& requested, bool surface)
 {
   ResampleGrid g;
   std::array<double, 3> extent{};
@@ -30,13 +30,22 @@ ResampleGrid chooseResampleGrid(
               "resample a flow onto.";
     return g;
   }
-  // The axes with extent; the others are planes of one point.
+  // The axes with extent; the others are planes of one point. A surface's
+  // thinnest axis is one of those.
+  const int thinnest = int(std::min_element(extent.begin(), extent.end()) - extent.begin());
+  if (surface && extent[thinnest] > MaxSurfaceThickness * largest)
+  {
+    g.error = "The input is a surface mesh (2D cells) that does not lie in a plane of constant "
+              "X, Y or Z; Bound Particle Tracer resamples a surface onto such a plane. Rotate "
+              "it into one (Transform), or give the tracer the volume mesh the vectors live on.";
+    return g;
+  }
   std::array<bool, 3> spans{};
   double volume = 1.0;
   int spanning = 0;
   for (int a = 0; a < 3; ++a)
   {
-    spans[a] = extent[a] > 1e-9 * largest;
+    spans[a] = extent[a] > 1e-9 * largest && !(surface && a == thinnest);
     if (spans[a])
     {
       volume *= extent[a];
@@ -76,7 +85,8 @@ ResampleGrid chooseResampleGrid(
   {
     std::ostringstream err;
     err << "Resample Dimensions " << g.dims[0] << " x " << g.dims[1] << " x " << g.dims[2]
-        << " is " << points << " points, more than the " << MaxResamplePoints
+        << " is " << (long long)points << " points, more than the "
+        << (long long)MaxResamplePoints
         << " a resampled grid may have; choose fewer (or 0 0 0: automatic).";
     g.error = err.str();
   }

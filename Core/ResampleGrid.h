@@ -51,12 +51,19 @@ constexpr double MaxResamplePoints = 2147483647.0;
  * data's) for a mesh of `cellCount` cells. `requested` gives the points per
  * axis; 0 on an axis (all 0 by default) chooses that axis automatically, and
  * an axis along which the data is flat (extent at most 1e-9 of the largest)
- * always has one point. An error for bounds that are empty or not finite, or
- * a requested count below 2 on an axis with extent (other than 0), or more
- * than MaxResamplePoints in all.
+ * always has one point. A `surface` (a mesh of 2D cells) lies in a plane of
+ * constant X, Y or Z: its thinnest axis is flat if its extent is at most
+ * MaxSurfaceThickness of the largest (rounding or a slight tilt), and an error
+ * says what to do otherwise. Also an error for bounds that are empty or not
+ * finite, a requested count below 2 on an axis with extent (other than 0), or
+ * more than MaxResamplePoints in all.
  */
-ResampleGrid chooseResampleGrid(
-  const std::array<double, 6>& bounds, double cellCount, const std::array<int, 3>& requested);
+ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cellCount,
+  const std::array<int, 3>& requested, bool surface = false);
+
+/// How thick, relative to its largest extent, a surface mesh may be and still
+/// be resampled as flat.
+constexpr double MaxSurfaceThickness = 1e-3;
 
 } // namespace bp
 

@@ -39,6 +39,21 @@ struct CopyToFloat
   }
 };
 
+/// A vtkValidPointMask's values as 1 (inside) or 0, through the array's own
+/// type (a mask resampled from a mesh has as many values as the grid).
+struct InsideFlags
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, std::vector<std::uint8_t>& out) const
+  {
+    const auto values = vtk::DataArrayValueRange<1>(array);
+    using Value = typename decltype(values)::ValueType;
+    // NaN is no answer to "inside?": outside, as a NaN vector is.
+    std::transform(values.begin(), values.end(), out.begin(),
+      [](Value v) { return std::uint8_t(v != Value(0) && !std::isnan(double(v)) ? 1 : 0); });
+  }
+};
+
 /// The geometry of a rectilinear grid; empty on success, otherwise what is wrong.
 std::string rectilinearGeometry(vtkRectilinearGrid* rectilinear, bp::GridGeometry& g)
 {
@@ -176,10 +191,11 @@ std::vector<std::uint8_t> validPointMask(vtkDataSet* data, std::string& problem)
     return valid;
   }
   valid.resize(std::size_t(mask->GetNumberOfTuples()));
-  const auto values = vtk::DataArrayValueRange<1>(mask);
-  // NaN is no answer to "inside?": outside, as a NaN vector is.
-  std::transform(values.begin(), values.end(), valid.begin(),
-    [](double v) { return std::uint8_t(v != 0.0 && !std::isnan(v) ? 1 : 0); });
+  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
+  if (!Dispatch::Execute(mask, InsideFlags{}, valid))
+  {
+    InsideFlags{}(mask, valid);
+  }
   return valid;
 }
 /// The error for a Vectors name the input lacks, with the arrays it has.

@@ -137,26 +137,40 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
   return std::string();
 }
 
-/// A 64-bit hash of memory, eight bytes at a time.
-struct Hash
+/// A 64-bit hash of memory: FNV-1a over 8-byte words in four lanes (so the
+/// multiplications overlap), chunks of 1 MiB hashed on the runner's threads
+/// and combined in order.
+class Hash
 {
+public:
+  explicit Hash(const bp::RangeRunner& run)
+    : Run(run)
+  {
+  }
   std::uint64_t value = 1469598103934665603ull;
+
+  void mix(std::uint64_t word) { this->value = (this->value ^ word) * Prime; }
 
   void add(const void* data, std::size_t bytes)
   {
     const auto* p = static_cast<const unsigned char*>(data);
-    std::size_t i = 0;
-    for (; i + 8 <= bytes; i += 8)
+    constexpr std::size_t chunk = std::size_t(1) << 20;
+    const std::size_t chunks = (bytes + chunk - 1) / chunk;
+    std::vector<std::uint64_t> parts(chunks);
+    this->Run(chunks,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t c = begin; c < end; ++c)
+        {
+          parts[c] = lanes(p + c * chunk, std::min(chunk, bytes - c * chunk));
+        }
+      });
+    this->mix(bytes);
+    for (std::uint64_t part : parts)
     {
-      std::uint64_t word;
-      std::memcpy(&word, p + i, 8);
-      this->mix(word);
+      this->mix(part);
     }
-    std::uint64_t tail = 0;
-    std::memcpy(&tail, p + i, bytes - i);
-    this->mix(tail ^ bytes);
   }
-  void mix(std::uint64_t word) { this->value = (this->value ^ word) * 1099511628211ull; }
 
   /// An array's values, through its memory where it has a plain layout.
   void add(vtkDataArray* array)
@@ -164,21 +178,20 @@ struct Hash
     if (!array)
     {
       this->mix(0);
-      return;
     }
-    if (array->HasStandardMemoryLayout())
+    else if (array->HasStandardMemoryLayout())
     {
       this->add(array->GetVoidPointer(0),
         std::size_t(array->GetDataSize()) * std::size_t(array->GetDataTypeSize()));
-      return;
     }
-    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    else
     {
-      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      std::vector<double> values(std::size_t(array->GetDataSize()));
+      for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
       {
-        const double v = array->GetComponent(t, c);
-        this->add(&v, sizeof v);
+        array->GetTuple(t, &values[std::size_t(t) * array->GetNumberOfComponents()]);
       }
+      this->add(values.data(), values.size() * sizeof(double));
     }
   }
   void add(vtkCellArray* cells)
@@ -186,6 +199,34 @@ struct Hash
     this->add(cells->GetOffsetsArray());
     this->add(cells->GetConnectivityArray());
   }
+
+private:
+  static constexpr std::uint64_t Prime = 1099511628211ull;
+
+  static std::uint64_t lanes(const unsigned char* p, std::size_t bytes)
+  {
+    std::uint64_t h[4] = { 1469598103934665603ull, 2, 3, 4 };
+    std::size_t i = 0;
+    for (; i + 32 <= bytes; i += 32)
+    {
+      std::uint64_t w[4];
+      std::memcpy(w, p + i, 32);
+      for (int l = 0; l < 4; ++l)
+      {
+        h[l] = (h[l] ^ w[l]) * Prime;
+      }
+    }
+    std::uint64_t tail[4] = { 0, 0, 0, 0 };
+    std::memcpy(tail, p + i, bytes - i);
+    std::uint64_t all = h[0];
+    for (int l = 0; l < 4; ++l)
+    {
+      all = (((all ^ h[l]) * Prime) ^ tail[l]) * Prime;
+    }
+    return all;
+  }
+
+  const bp::RangeRunner& Run;
 };
 
 /// What locating depends on in a block: its points, its cells.
@@ -237,6 +278,26 @@ void addGeometry(Hash& h, vtkDataSet* block)
       h.add(ids->GetPointer(0), std::size_t(ids->GetNumberOfIds()) * sizeof(vtkIdType));
     }
   }
+}
+
+/// What the grid, the located cells and the weights depend on: the sampled
+/// blocks' geometry, the dimensions asked for, the number of processes.
+std::uint64_t geometryKey(const std::vector<vtkDataSet*>& blocks,
+  const std::array<int, 3>& requested, vtkMultiProcessController* controller,
+  const bp::RangeRunner& run)
+{
+  Hash key(run);
+  key.mix(blocks.size());
+  for (vtkDataSet* block : blocks)
+  {
+    addGeometry(key, block);
+  }
+  for (int n : requested)
+  {
+    key.mix(std::uint64_t(std::max(n, 0)));
+  }
+  key.mix(std::uint64_t(controller ? controller->GetNumberOfProcesses() : 1));
+  return key.value;
 }
 
 /// The range of grid indices along `a` within [low, high] (empty: first > last).
@@ -291,45 +352,106 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
 {
   warning.clear();
   this->Kept = false;
-  std::vector<vtkDataSet*> blocks = blocksWithCells(input);
-  bool cellVectors = vectors.association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-  std::string name = vectors.name.empty() ? firstVectorName(blocks, cellVectors) : vectors.name;
+  const Selection selected = this->select(input, vectors, controller);
+  if (selected.lacking > 0)
+  {
+    std::ostringstream say;
+    say << selected.lacking << " block(s) of the input have no 3-component "
+        << (selected.cellVectors ? "cell" : "point") << " array '" << this->ArrayName
+        << "'; their cells count as outside the flow's domain.";
+    warning = say.str();
+  }
+  // The same mesh as last time (by content) on every process: the same grid,
+  // cells and weights; only the vectors are new.
+  const std::uint64_t key = geometryKey(selected.blocks, requested, controller, run);
+  std::vector<int> same(1, key == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
+  allReduce(controller, same, vtkCommunicator::MIN_OP);
+  this->Kept = same[0] == 1;
+  if (!this->Kept)
+  {
+    this->clear();
+    double thickness = 0.0;
+    std::string error = this->chooseGrid(selected, requested, controller, thickness);
+    if (error.empty())
+    {
+      error = agreeOnError(controller,
+        bp::checkAllocatable(double(this->Grid.pointCount()) * (17.0 + sizeof(Sample) + 96.0),
+          "The resampled grid of the input"));
+      error = error.empty() ? error : error + ". Set Resample Dimensions to fewer points.";
+    }
+    if (!error.empty())
+    {
+      return error;
+    }
+    // A surface's grid plane lies mid-way through its thickness (rounding, a
+    // slight tilt): its cells are found that far off their plane.
+    this->locate(selected.blocks, 0.5 * thickness, run);
+    this->keepOwnSamples(controller);
+    this->GeometryKey = key;
+  }
+  std::vector<float> values;
+  this->interpolate(selected.blocks, selected.cellVectors, run, values);
+  allReduce(controller, values, vtkCommunicator::SUM_OP);
+  this->fillImage(values, image);
+  return std::string();
+}
+
+FieldResampler::Selection FieldResampler::select(
+  vtkDataObject* input, const VectorsChoice& vectors, vtkMultiProcessController* controller)
+{
+  Selection s;
+  const std::vector<vtkDataSet*> blocks = blocksWithCells(input);
+  s.cellVectors = vectors.association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  const std::string name =
+    vectors.name.empty() ? firstVectorName(blocks, s.cellVectors) : vectors.name;
   // A name given as point data that only the cells have (or the reverse) is taken where it is.
-  const auto hasArray = [&](bool cells) {
+  const auto hasArray = [&](bool cells)
+  {
     return std::any_of(blocks.begin(), blocks.end(),
       [&](vtkDataSet* b) { return vectorArray(b, name, cells) != nullptr; });
   };
-  if (!hasArray(cellVectors) && hasArray(!cellVectors))
+  if (!hasArray(s.cellVectors) && hasArray(!s.cellVectors))
   {
-    cellVectors = !cellVectors;
+    s.cellVectors = !s.cellVectors;
   }
   this->ArrayName = name;
-
   // Only the blocks of the highest cell dimension carry the flow (every
   // process decides from the same global dimension).
   std::vector<int> dimension(1, 0);
+  std::vector<int> dimensions;
   for (vtkDataSet* block : blocks)
   {
-    dimension[0] = std::max(dimension[0], cellDimension(block));
+    dimensions.push_back(cellDimension(block));
+    dimension[0] = std::max(dimension[0], dimensions.back());
   }
   allReduce(controller, dimension, vtkCommunicator::MAX_OP);
-  std::vector<vtkDataSet*> sampled;
-  std::size_t lacking = 0;
-  // Bounds as (-min, max) pairs, then the cell count, reduced by max and sum.
-  std::vector<double> extremes = { -1e300, -1e300, -1e300, -1e300, -1e300, -1e300 };
-  std::vector<double> cells(1, 0.0);
-  for (vtkDataSet* block : blocks)
+  s.dimension = dimension[0];
+  for (std::size_t b = 0; b < blocks.size(); ++b)
   {
-    if (cellDimension(block) != dimension[0])
+    if (dimensions[b] != s.dimension)
     {
       continue;
     }
-    if (!vectorArray(block, name, cellVectors))
+    if (vectorArray(blocks[b], name, s.cellVectors))
     {
-      ++lacking;
-      continue;
+      s.blocks.push_back(blocks[b]);
     }
-    sampled.push_back(block);
+    else
+    {
+      ++s.lacking;
+    }
+  }
+  return s;
+}
+
+std::string FieldResampler::chooseGrid(const Selection& selected,
+  const std::array<int, 3>& requested, vtkMultiProcessController* controller, double& thickness)
+{
+  // Bounds as (-min, max) pairs reduced by max; the cells counted once (no ghosts).
+  std::vector<double> extremes(6, -1e300);
+  std::vector<double> cells(1, 0.0);
+  for (vtkDataSet* block : selected.blocks)
+  {
     double b[6];
     block->GetBounds(b);
     for (int a = 0; a < 3; ++a)
@@ -341,85 +463,49 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   }
   allReduce(controller, extremes, vtkCommunicator::MAX_OP);
   allReduce(controller, cells, vtkCommunicator::SUM_OP);
-  if (lacking > 0)
+  std::ostringstream err;
+  if (cells[0] == 0.0 && this->ArrayName.empty())
   {
-    std::ostringstream say;
-    say << lacking << " block(s) of the input have no 3-component "
-        << (cellVectors ? "cell" : "point") << " array '" << name
-        << "'; their cells count as outside the flow's domain.";
-    warning = say.str();
+    err << "The input has no cells with a 3-component point or cell array: Bound Particle "
+           "Tracer needs a grid or a mesh whose points or cells carry the flow's vectors "
+           "(choose them in Vectors).";
   }
-  if (cells[0] == 0.0)
+  else if (cells[0] == 0.0)
   {
-    std::ostringstream err;
-    if (name.empty())
-    {
-      err << "The input has no 3-component point or cell array to trace; choose one in Vectors.";
-    }
-    else
-    {
-      err << "The input has no cells with a 3-component " << (cellVectors ? "cell" : "point")
-          << " array '" << name
-          << "' to resample: Bound Particle Tracer needs a mesh (cells) carrying the Vectors.";
-    }
-    return err.str();
+    err << "The input has no cells with a 3-component "
+        << (selected.cellVectors ? "cell" : "point") << " array '" << this->ArrayName
+        << "' to resample: Bound Particle Tracer needs a mesh (cells) carrying the Vectors.";
   }
-  if (dimension[0] < 2)
+  else if (selected.dimension < 2)
   {
-    return "The input's cells are points or lines: a flow needs a mesh of surfaces (2D) or "
+    err << "The input's cells are points or lines: a flow needs a mesh of surfaces (2D) or "
            "volumes (3D) to be resampled from. Give the tracer the mesh the vectors live on.";
+  }
+  if (!err.str().empty())
+  {
+    return err.str();
   }
   const std::array<double, 6> bounds = { -extremes[0], extremes[1], -extremes[2], extremes[3],
     -extremes[4], extremes[5] };
-  const bp::ResampleGrid grid = bp::chooseResampleGrid(bounds, cells[0], requested);
-  if (!grid.error.empty())
+  const bool surface = selected.dimension == 2;
+  this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface);
+  thickness = 0.0;
+  for (int a = 0; a < 3; ++a)
   {
-    return grid.error;
+    thickness = surface && this->Grid.dims[a] == 1 ? bounds[2 * a + 1] - bounds[2 * a] : thickness;
   }
-  Hash key;
-  for (vtkDataSet* block : sampled)
-  {
-    addGeometry(key, block);
-  }
-  key.add(&grid.dims, sizeof grid.dims);
-  key.add(&grid.origin, sizeof grid.origin);
-  key.add(&grid.spacing, sizeof grid.spacing);
-  key.mix(std::uint64_t(controller ? controller->GetNumberOfProcesses() : 1));
-  std::vector<int> same(1, key.value == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
-  allReduce(controller, same, vtkCommunicator::MIN_OP);
-  this->Grid = grid;
-  const double points = double(grid.pointCount());
-  std::string error =
-    bp::checkAllocatable(points * (same[0] ? 13.0 : 13.0 + 4.0 + sizeof(Sample) + 8.0 * 12.0),
-      "the resampled grid of the input");
-  error = agreeOnError(controller, error);
-  if (!error.empty())
-  {
-    this->clear();
-    return error + " Set Resample Dimensions to fewer points.";
-  }
-  if (same[0])
-  {
-    this->Kept = true;
-  }
-  else
-  {
-    this->clear();
-    this->locate(sampled, run);
-    this->keepOwnSamples(controller);
-    this->GeometryKey = key.value;
-  }
+  return this->Grid.error;
+}
 
-  std::vector<float> values;
-  this->interpolate(sampled, cellVectors, run, values);
-  allReduce(controller, values, vtkCommunicator::SUM_OP);
-
+void FieldResampler::fillImage(const std::vector<float>& values, vtkImageData* image) const
+{
+  const bp::ResampleGrid& grid = this->Grid;
   image->Initialize();
   image->SetDimensions(grid.dims.data());
   image->SetOrigin(grid.origin.data());
   image->SetSpacing(grid.spacing.data());
   vtkNew<vtkFloatArray> velocity;
-  velocity->SetName(name.c_str());
+  velocity->SetName(this->ArrayName.c_str());
   velocity->SetNumberOfComponents(3);
   velocity->SetNumberOfTuples(vtkIdType(grid.pointCount()));
   std::copy(values.begin(), values.end(), velocity->GetPointer(0));
@@ -430,10 +516,10 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   image->GetPointData()->AddArray(velocity);
   image->GetPointData()->SetVectors(velocity);
   image->GetPointData()->AddArray(mask);
-  return std::string();
 }
 
-void FieldResampler::locate(const std::vector<vtkDataSet*>& blocks, const bp::RangeRunner& run)
+void FieldResampler::locate(
+  const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run)
 {
   const bp::ResampleGrid& g = this->Grid;
   std::vector<std::uint8_t> taken(g.pointCount(), 0);
@@ -466,7 +552,7 @@ void FieldResampler::locate(const std::vector<vtkDataSet*>& blocks, const bp::Ra
     const std::size_t rows = std::size_t(rowsY) * std::size_t(range[2][1] - range[2][0] + 1);
     const int maxCellSize = std::max(1, block->GetMaxCellSize());
     // Points on a surface mesh lie in its plane only up to rounding.
-    const double tolerance = 1e-9 * std::max(block->GetLength(), 1e-300);
+    const double tolerance = offPlane + 1e-9 * std::max(block->GetLength(), 1e-300);
     std::mutex joining;
     std::vector<std::pair<std::size_t, Found>> parts;
     run(rows,

@@ -98,14 +98,33 @@ private:
     std::uint32_t count;
   };
 
-  /// Finds each grid point's cell (the first block's that holds it) and weights.
-  void locate(const std::vector<vtkDataSet*>& blocks, const bp::RangeRunner& run);
+  /// The blocks that carry the flow and how their vectors are found.
+  struct Selection
+  {
+    std::vector<vtkDataSet*> blocks; ///< of the highest cell dimension, with the array
+    bool cellVectors = false;
+    int dimension = 0;       ///< the highest cell dimension over every process
+    std::size_t lacking = 0; ///< blocks of that dimension without the array
+  };
+  /// The blocks of `input` to sample, and the array's name (ArrayName).
+  Selection select(
+    vtkDataObject* input, const VectorsChoice& vectors, vtkMultiProcessController* controller);
+  /// Grid: chooseResampleGrid() over every process's blocks; `thickness` is a
+  /// surface's extent along its flat axis. Returns the error, if any.
+  std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
+    vtkMultiProcessController* controller, double& thickness);
+  /// Finds each grid point's cell (the first block's that holds it) and
+  /// weights; a surface's cells up to `offPlane` from the grid's plane.
+  void locate(const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run);
   /// In a distributed run, keeps only the samples of points this process
   /// gives (the lowest rank holding them), and marks the points some process holds.
   void keepOwnSamples(vtkMultiProcessController* controller);
   /// The grid's vectors (3 floats a point; 0 outside) from this process's samples.
   void interpolate(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
     const bp::RangeRunner& run, std::vector<float>& values) const;
+
+  /// The resampled grid as an image: the vectors and vtkValidPointMask.
+  void fillImage(const std::vector<float>& values, vtkImageData* image) const;
 
   bp::ResampleGrid Grid;
   std::uint64_t GeometryKey = 0;

@@ -43,6 +43,22 @@ TEST(ResampleGrid, AFlatAxisStaysOnePointThick)
   EXPECT_EQ(n.dims[2], 1);
 }
 
+TEST(ResampleGrid, ASurfaceIsFlatAlongItsThinnestAxisOrRefused)
+{
+  // A 2D mesh with rounding noise (or a slight tilt) in y.
+  const bp::ResampleGrid g =
+    bp::chooseResampleGrid({ 0, 2, 0.5, 0.5005, 0, 1 }, 5000, { 0, 0, 0 }, true);
+  ASSERT_TRUE(g.error.empty()) << g.error;
+  EXPECT_EQ(g.dims[1], 1);
+  EXPECT_DOUBLE_EQ(g.origin[1], 0.50025);
+  // The same bounds as a volume mesh keep their thin axis.
+  EXPECT_GT(bp::chooseResampleGrid({ 0, 2, 0.5, 0.5005, 0, 1 }, 5e7, { 0, 0, 0 }).dims[1], 1);
+  // A curved or tilted surface is refused, saying what to do.
+  const bp::ResampleGrid tilted =
+    bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 0.5 }, 5000, { 0, 0, 0 }, true);
+  EXPECT_NE(tilted.error.find("plane"), std::string::npos);
+}
+
 TEST(ResampleGrid, RequestedAxesAreKeptAndOthersChosen)
 {
   const bp::ResampleGrid g = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 1000, { 30, 0, 12 });

@@ -134,6 +134,25 @@ def table_source():
     return source
 
 
+def empty_mesh():
+    """An unstructured grid with nothing in it."""
+    return ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid", Script="pass")
+
+
+def vertex_cloud():
+    """Points with vectors and vertex cells, no surface or volume."""
+    return Calculator(Input=PointSource(NumberOfPoints=50, Radius=1.0), Function="iHat",
+                      ResultArrayName="v")
+
+
+def half_nan_mesh():
+    """Tetrahedra whose vectors are NaN where x > 0.3: those count as outside."""
+    return PythonCalculator(
+        Input=Tetrahedralize(Input=flow()), ArrayName="velocity",
+        Expression="numpy.where(points[:, 0:1] > 0.3, numpy.nan, 1.0) * "
+                   "inputs[0].PointData['velocity']")
+
+
 def two_lines():
     return GroupDatasets(Input=[Line(Point1=[-0.5, -0.5, 0], Point2=[0.5, -0.5, 0]),
                                 Line(Point1=[-0.5, 0.5, 0], Point2=[0.5, 0.5, 0])])
@@ -182,12 +201,40 @@ CASES = {
     "infinite time": (lambda: tracer(times_source([0, 1, float("inf")]),
                                      Vectors=["POINTS", "v"]), 1.0, "finite"),
     "infinite view time": (lambda: tracer(flow()), float("inf"), None),
+    # Composite and mesh input is resampled (issue 28): overlapping blocks
+    # trace, meshes that carry no flow are refused with a reason.
     "multiblock of unsteady images": (
         lambda: tracer(GroupDatasets(
-            Input=[flow(Flow="Double Gyre"), flow(Flow="Double Gyre")])), 1.0, "composite"),
+            Input=[flow(Flow="Double Gyre"), flow(Flow="Double Gyre")])), 1.0, None,
+        lambda r: r["points"] > 0),
     "multiblock of steady images": (
-        lambda: tracer(GroupDatasets(
-            Input=[flow(), flow()])), 1.0, "composite"),
+        lambda: tracer(GroupDatasets(Input=[flow(), flow()])), 1.0, None,
+        lambda r: r["points"] > 0),
+    "empty unstructured grid": (lambda: tracer(empty_mesh()), 1.0, "no cells",
+                                lambda r: r["points"] == 0),
+    "point cloud with vectors, no cells": (
+        lambda: tracer(vertex_cloud(), Vectors=["POINTS", "v"]), 1.0, "points or lines",
+        lambda r: r["points"] == 0),
+    "lines with vectors": (
+        lambda: tracer(Calculator(Input=Line(), Function="iHat", ResultArrayName="v"),
+                       Vectors=["POINTS", "v"]), 1.0, "points or lines",
+        lambda r: r["points"] == 0),
+    "curved surface mesh": (
+        lambda: tracer(Calculator(Input=Sphere(), Function="iHat", ResultArrayName="v"),
+                       Vectors=["POINTS", "v"]), 1.0, "plane of constant",
+        lambda r: r["points"] == 0),
+    "mesh with NaN vectors in half": (
+        lambda: tracer(half_nan_mesh(), Vectors=["POINTS", "velocity"]), 1.0, None,
+        lambda r: r["points"] > 0),
+    "Resample Dimensions of 2^33 points": (
+        lambda: tracer(Tetrahedralize(Input=flow()), ResampleDimensions=[2048, 2048, 2048]), 1.0,
+        "more than", lambda r: r["points"] == 0),
+    "Resample Dimensions of 2^30 points": (
+        lambda: tracer(Tetrahedralize(Input=flow()), ResampleDimensions=[1024, 1024, 1024]), 1.0,
+        "fewer points", lambda r: r["points"] == 0),
+    "Resample Dimensions of 1 along an axis": (
+        lambda: tracer(Tetrahedralize(Input=flow()), ResampleDimensions=[1, 16, 16]), 1.0,
+        "at least 2", lambda r: r["points"] == 0),
     "resolution 4096^3": (lambda: tracer(flow(Resolution=[4096, 4096, 4096])), 1.0,
                           "Resolution"),
     "all pairs on 20k points": (
