@@ -143,10 +143,16 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
 class Hash
 {
 public:
-  explicit Hash(const bp::RangeRunner& run)
+  using Known = std::vector<bpvtk::FieldResampler::HashedArray>;
+
+  /// `known`: arrays hashed before, whose hashes stand while they are unmodified.
+  Hash(const bp::RangeRunner& run, const Known& known)
     : Run(run)
+    , Before(known)
   {
   }
+  /// The arrays hashed (or recognised) by this hash.
+  Known Seen;
   std::uint64_t value = 1469598103934665603ull;
 
   void mix(std::uint64_t word) { this->value = (this->value ^ word) * Prime; }
@@ -178,10 +184,22 @@ public:
     if (!array)
     {
       this->mix(0);
+      return;
     }
-    else if (array->HasStandardMemoryLayout())
+    const vtkMTimeType time = array->GetMTime();
+    for (const bpvtk::FieldResampler::HashedArray& known : this->Before)
     {
-      this->add(array->GetVoidPointer(0),
+      if (known.array == array && known.time == time)
+      {
+        this->mix(known.hash);
+        this->Seen.push_back(known);
+        return;
+      }
+    }
+    Hash own(this->Run, Known());
+    if (array->HasStandardMemoryLayout())
+    {
+      own.add(array->GetVoidPointer(0),
         std::size_t(array->GetDataSize()) * std::size_t(array->GetDataTypeSize()));
     }
     else
@@ -191,8 +209,10 @@ public:
       {
         array->GetTuple(t, &values[std::size_t(t) * array->GetNumberOfComponents()]);
       }
-      this->add(values.data(), values.size() * sizeof(double));
+      own.add(values.data(), values.size() * sizeof(double));
     }
+    this->mix(own.value);
+    this->Seen.push_back({ array, time, own.value });
   }
   void add(vtkCellArray* cells)
   {
@@ -218,7 +238,7 @@ private:
     }
     std::uint64_t tail[4] = { 0, 0, 0, 0 };
     std::memcpy(tail, p + i, bytes - i);
-    std::uint64_t all = h[0];
+    std::uint64_t all = 1469598103934665603ull;
     for (int l = 0; l < 4; ++l)
     {
       all = (((all ^ h[l]) * Prime) ^ tail[l]) * Prime;
@@ -227,6 +247,7 @@ private:
   }
 
   const bp::RangeRunner& Run;
+  const Known& Before;
 };
 
 /// What locating depends on in a block: its points, its cells.
@@ -284,9 +305,9 @@ void addGeometry(Hash& h, vtkDataSet* block)
 /// blocks' geometry, the dimensions asked for, the number of processes.
 std::uint64_t geometryKey(const std::vector<vtkDataSet*>& blocks,
   const std::array<int, 3>& requested, vtkMultiProcessController* controller,
-  const bp::RangeRunner& run)
+  const bp::RangeRunner& run, Hash::Known& hashed)
 {
-  Hash key(run);
+  Hash key(run, hashed);
   key.mix(blocks.size());
   for (vtkDataSet* block : blocks)
   {
@@ -297,6 +318,7 @@ std::uint64_t geometryKey(const std::vector<vtkDataSet*>& blocks,
     key.mix(std::uint64_t(std::max(n, 0)));
   }
   key.mix(std::uint64_t(controller ? controller->GetNumberOfProcesses() : 1));
+  hashed = std::move(key.Seen);
   return key.value;
 }
 
@@ -340,6 +362,7 @@ bool FieldResampler::needed(vtkDataObject* input)
 void FieldResampler::clear()
 {
   this->GeometryKey = 0;
+  this->Hashed.clear();
   this->Samples.clear();
   this->WeightPoints.clear();
   this->Weights.clear();
@@ -363,7 +386,8 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   }
   // The same mesh as last time (by content) on every process: the same grid,
   // cells and weights; only the vectors are new.
-  const std::uint64_t key = geometryKey(selected.blocks, requested, controller, run);
+  std::vector<HashedArray> hashed = this->Hashed;
+  const std::uint64_t key = geometryKey(selected.blocks, requested, controller, run, hashed);
   std::vector<int> same(1, key == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
   allReduce(controller, same, vtkCommunicator::MIN_OP);
   this->Kept = same[0] == 1;
@@ -389,6 +413,7 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
     this->keepOwnSamples(controller);
     this->GeometryKey = key;
   }
+  this->Hashed = std::move(hashed);
   std::vector<float> values;
   this->interpolate(selected.blocks, selected.cellVectors, run, values);
   allReduce(controller, values, vtkCommunicator::SUM_OP);

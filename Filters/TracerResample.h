@@ -34,12 +34,14 @@
 #include "ResampleGrid.h"
 
 #include "vtkType.h"
+#include "vtkWeakPointer.h"
 
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
 class vtkImageData;
@@ -86,6 +88,15 @@ public:
   /// Forgets the kept weights.
   void clear();
 
+  /// An array whose content was hashed: while it lives unmodified (a reader
+  /// that keeps a static mesh hands the same arrays again), its hash stands.
+  struct HashedArray
+  {
+    vtkWeakPointer<vtkDataArray> array;
+    vtkMTimeType time = 0;
+    std::uint64_t hash = 0;
+  };
+
 private:
   /// Where one grid point takes its vector from: a cell of a block, and for
   /// point vectors the cell's points' weights (entries [first, first + count)).
@@ -128,6 +139,7 @@ private:
 
   bp::ResampleGrid Grid;
   std::uint64_t GeometryKey = 0;
+  std::vector<HashedArray> Hashed; ///< the arrays of the last key
   bool Kept = false;
   std::string ArrayName;
   std::vector<Sample> Samples;

@@ -145,7 +145,17 @@ TEST(FieldResampler, AStaticMeshKeepsItsWeightsAndNewVectorsGiveNewValues)
 
   // A moved point is a new mesh: located again.
   next->GetPoints()->SetPoint(7, 0.21, 0.02, 0.0);
+  next->GetPoints()->Modified(); // as VTK asks after SetPoint
   Resampled moved;
+  resample(kept, next, moved);
+  EXPECT_FALSE(kept.keptWeights());
+  // The same arrays again, unmodified (a reader that keeps a static mesh):
+  // recognised without hashing them, and still the same mesh.
+  resample(kept, next, moved);
+  EXPECT_TRUE(kept.keptWeights());
+  // Other connectivity with the same points: a new mesh.
+  next->GetCells()->GetConnectivityArray()->SetComponent(0, 0, 1.0);
+  next->GetCells()->GetConnectivityArray()->Modified();
   resample(kept, next, moved);
   EXPECT_FALSE(kept.keptWeights());
 }
