@@ -231,18 +231,11 @@ vtkDataSet* fieldDataSet(vtkDataObject* input, std::string& error)
   vtkDataSet* dataSet = vtkImageData::SafeDownCast(input)
     ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(input))
     : vtkRectilinearGrid::SafeDownCast(input);
-  if (vtkCompositeDataSet::SafeDownCast(input))
+  if (!dataSet)
   {
-    err << "The input is a " << input->GetClassName()
-        << " (a composite of several datasets); Bound Particle Tracer traces one grid. Pick one "
-           "block with Extract Block, or merge them onto one grid with Resample To Image.";
-  }
-  else if (!dataSet)
-  {
+    // The tracer resamples any other data first (TracerResample.h).
     err << "The input is a " << (input ? input->GetClassName() : "null data object")
-        << "; Bound Particle Tracer needs a vtkImageData (a uniform grid) or a "
-           "vtkRectilinearGrid. Resample the data onto an image first, e.g. with the Resample To "
-           "Image filter.";
+        << "; a field is read from a vtkImageData or a vtkRectilinearGrid.";
   }
   else if (dataSet->GetNumberOfPoints() == 0)
   {

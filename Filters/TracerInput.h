@@ -2,7 +2,8 @@
 /**
  * @file TracerInput.h
  * @brief What the tracer reads from its inputs: a field time step from an
- * image or rectilinear grid, and an element template from a polydata.
+ * image or rectilinear grid (any other input is resampled onto an image
+ * first, TracerResample.h), and an element template from a polydata.
  *
  * Each reader returns an empty string on success, otherwise a message that
  * says what the user should fix (the tracer shows it as its error).
