@@ -14,6 +14,7 @@ here (no downloads) and checked against the image path on the same flow.
 import math
 import os
 import sys
+import tempfile
 
 import numpy
 
@@ -76,7 +77,8 @@ def check_close(name, result, reference, share, percentile=100):
 abc = updated(AnalyticFlow(Flow="ABC", Resolution=[20, 18, 16], Bounds=[0, 2, 0, 1.8, 0, 1.6]))
 # Absolute step and size: grids of other cell sizes trace with the same ones.
 settings = dict(ElementShape="Cross", NumberOfElements=300, Seed=3, Duration=0.5,
-                NumberOfTimeSteps=6, StepSizeUnit="Time", StepSize=0.02, ElementSize=0.1)
+                NumberOfTimeSteps=6, StepSizeUnit="Time", StepSize=0.02, ElementSize=0.1,
+                EmitterCenter=[1.0, 0.9, 0.8], EmitterSize=[1.6, 1.4, 1.2])
 image = traced(abc, 0.5, **settings)
 no_messages("image", image)
 
@@ -201,5 +203,38 @@ bptest.check(on_mesh["times"] == on_image["times"],
              "unsteady: the image's time line (%d values, %d)" %
              (len(on_mesh["times"]), len(on_image["times"])))
 check_close("unsteady", on_mesh, on_image, 1e-5)
+
+# The GPU engine in the Bound Particles display steps on the resampled grid
+# as on an image: the same picture of the same elements.
+def gpu_picture(source, name, **properties):
+    tracer = BoundParticleTracer(Input=source, Vectors=["POINTS", "velocity"], Engine="GPU",
+                                 **properties)
+    view = bptest.element_view([300, 300])
+    view.ViewTime = 0.5
+    shown = Show(tracer, view)
+    shown.SetRepresentationType("Bound Particles")
+    bptest.colour_display(shown, None, None)
+    # Show resets the camera of a new view only when it already knows the
+    # data's bounds: one camera for both pictures.
+    view.CameraPosition = [4.2, 3.2, 5.4]
+    view.CameraFocalPoint = [1.0, 0.9, 0.8]
+    with bptest.CapturedMessages() as log:
+        Render(view)
+    path = bptest.save_picture(view, tempfile.gettempdir(), name)
+    Delete(tracer)
+    return path, log.messages
+
+
+on_grid, grid_messages = gpu_picture(abc, "bp-mesh-gpu-image", ResampleDimensions=[20, 18, 16],
+                                     **settings)
+on_tets, tets_messages = gpu_picture(tets, "bp-mesh-gpu-tets", ResampleDimensions=[20, 18, 16],
+                                     **settings)
+bptest.check(not tets_messages, "GPU on tets: messages %s" % tets_messages)
+covered = bptest.covered_fraction(on_tets)
+mean, pixels = bptest.image_difference(on_grid, on_tets)
+print("GPU on tets: %.3f of the picture covered; against the image's: mean %.3f, pixels %.4f" %
+      (covered, mean, pixels))
+bptest.check(covered > 0.01, "GPU on tets: nothing drawn (%.4f)" % covered)
+bptest.check(mean <= 1.0 and pixels <= 0.005, "GPU on tets: not the image's picture")
 
 bptest.finish()
