@@ -9,7 +9,7 @@ namespace bp
 {
 
 ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cellCount,
-  const std::array<int, 3>& requested, bool surface)
+  const std::array<int, 3>& requested, bool surface, double automaticCap)
 {
   ResampleGrid g;
   std::array<double, 3> extent{};
@@ -54,7 +54,8 @@ ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cell
   }
   // Cells close to cubes, and about as many points as the mesh has cells
   // (capped): each spanning axis gets its share of the points.
-  const double target = std::clamp(cellCount, 1.0, double(MaxAutomaticResamplePoints));
+  const double cap = std::clamp(automaticCap, 1.0, double(MaxAutomaticResamplePoints));
+  const double target = std::clamp(cellCount, 1.0, cap);
   const double h = std::pow(volume / target, 1.0 / spanning);
   double points = 1.0;
   for (int a = 0; a < 3; ++a)

@@ -56,10 +56,12 @@ constexpr double MaxResamplePoints = 2147483647.0;
  * MaxSurfaceThickness of the largest (rounding or a slight tilt), and an error
  * says what to do otherwise. Also an error for bounds that are empty or not
  * finite, a requested count below 2 on an axis with extent (other than 0), or
- * more than MaxResamplePoints in all.
+ * more than MaxResamplePoints in all. `automaticCap` lowers the automatic
+ * grid's points below MaxAutomaticResamplePoints (to what memory allows).
  */
 ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cellCount,
-  const std::array<int, 3>& requested, bool surface = false);
+  const std::array<int, 3>& requested, bool surface = false,
+  double automaticCap = double(MaxAutomaticResamplePoints));
 
 /// How thick, relative to its largest extent, a surface mesh may be and still
 /// be resampled as flat.

@@ -354,6 +354,10 @@ void allReduce(vtkMultiProcessController* controller, std::vector<T>& values, in
 namespace bpvtk
 {
 
+// The vectors and mask (13 bytes), the owner in parallel (4), a sample, and
+// the weights of a cell of up to 8 points (12 bytes each).
+const double FieldResampler::BytesPerGridPoint = 17.0 + sizeof(Sample) + 96.0;
+
 bool FieldResampler::needed(vtkDataObject* input)
 {
   return input && !vtkImageData::SafeDownCast(input) && !vtkRectilinearGrid::SafeDownCast(input);
@@ -399,7 +403,7 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
     if (error.empty())
     {
       error = agreeOnError(controller,
-        bp::checkAllocatable(double(this->Grid.pointCount()) * (17.0 + sizeof(Sample) + 96.0),
+        bp::checkAllocatable(double(this->Grid.pointCount()) * BytesPerGridPoint,
           "The resampled grid of the input"));
       error = error.empty() ? error : error + ". Set Resample Dimensions to fewer points.";
     }
@@ -513,7 +517,11 @@ std::string FieldResampler::chooseGrid(const Selection& selected,
   const std::array<double, 6> bounds = { -extremes[0], extremes[1], -extremes[2], extremes[3],
     -extremes[4], extremes[5] };
   const bool surface = selected.dimension == 2;
-  this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface);
+  // An automatic grid takes at most half of what this process can allocate
+  // (every process decides alike from the smallest share).
+  std::vector<double> affordable(1, 0.5 * bp::allocatableBytes() / BytesPerGridPoint);
+  allReduce(controller, affordable, vtkCommunicator::MIN_OP);
+  this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface, affordable[0]);
   thickness = 0.0;
   for (int a = 0; a < 3; ++a)
   {

@@ -88,6 +88,9 @@ public:
   /// Forgets the kept weights.
   void clear();
 
+  /// About what resampling takes per grid point, while a grid is located.
+  static const double BytesPerGridPoint;
+
   /// An array whose content was hashed: while it lives unmodified (a reader
   /// that keeps a static mesh hands the same arrays again), its hash stands.
   struct HashedArray

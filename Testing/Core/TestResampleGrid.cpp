@@ -80,6 +80,10 @@ TEST(ResampleGrid, CoarseMeshesGetAUsableGridAndHugeOnesACappedOne)
   const bp::ResampleGrid huge = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 1e12, { 0, 0, 0 });
   ASSERT_TRUE(huge.error.empty());
   EXPECT_LE(double(huge.pointCount()), 1.01 * double(bp::MaxAutomaticResamplePoints));
+  // Where memory is short, the automatic grid shrinks to what it allows.
+  const bp::ResampleGrid capped =
+    bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1 }, 1e12, { 0, 0, 0 }, false, 1e6);
+  EXPECT_NEAR(double(capped.pointCount()), 1e6, 0.05e6);
 }
 
 TEST(ResampleGrid, UnusableBoundsAndRequestsAreRefusedWithAReason)
