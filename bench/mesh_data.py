@@ -35,8 +35,8 @@ one picture per case there.
 """
 import argparse
 import os
-import re
 import shutil
+import sys
 import tempfile
 import time
 
@@ -49,6 +49,8 @@ from vtkmodules.vtkCommonDataModel import (VTK_QUAD, vtkCellArray, vtkPolyData,
                                            vtkUnstructuredGrid)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from messages import CapturedMessages  # noqa: E402
 INSIDE_TARGET, MOVING_TARGET = 0.90, 0.80
 
 
@@ -438,30 +440,6 @@ def measure(name, make, data, folder, pictures):
     Delete(reader)
     row["seconds"] = time.time() - started
     return row
-
-
-class CapturedMessages:
-    """Collects VTK's warnings and errors printed while the block runs, one line each."""
-
-    def __init__(self, into):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-        self.into, self.window = into, vtkStringOutputWindow()
-        self.previous = vtkOutputWindow.GetInstance()
-
-    def __enter__(self):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow
-        vtkOutputWindow.SetInstance(self.window)
-
-    def __exit__(self, *exc):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow
-        vtkOutputWindow.SetInstance(self.previous)
-        # A message is "ERROR: In file, line n" then "class (0x...): text", then a blank line.
-        for block in re.split(r"\n\s*\n", self.window.GetOutput().strip()):
-            lines = [line.strip() for line in block.splitlines() if line.strip()]
-            if lines and ("Warning" in lines[0] or "ERROR" in lines[0]):
-                kind = "ERROR" if "ERROR" in lines[0] else "Warning"
-                text = re.sub(r" \(0x[0-9a-f]+\)", "", " ".join(lines[1:]) or lines[0])
-                self.into.append("%s: %s" % (kind, text))
 
 
 def picture(reader, tracer, time, path):

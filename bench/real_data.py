@@ -19,12 +19,16 @@ Targets (issue 17): steps/frame <= 20, moving >= 80%, masked <= 5%; with
 import argparse
 import math
 import os
+import sys
 
 import numpy
 import paraview.simple
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from messages import CapturedMessages  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -94,26 +98,6 @@ def measure(name):
     Delete(reader)
     return dict(name=name, frames=len(times), steps=steps_per_frame, moving=moving,
                 masked=masked, top=top, messages=messages)
-
-
-class CapturedMessages:
-    """Collects VTK's warnings and errors printed while the block runs."""
-
-    def __init__(self, into):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-        self.into, self.window = into, vtkStringOutputWindow()
-        self.previous = vtkOutputWindow.GetInstance()
-
-    def __enter__(self):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow
-        vtkOutputWindow.SetInstance(self.window)
-
-    def __exit__(self, *exc):
-        from vtkmodules.vtkCommonCore import vtkOutputWindow
-        vtkOutputWindow.SetInstance(self.previous)
-        text = self.window.GetOutput().strip()
-        self.into.extend(line.strip() for line in text.splitlines() if "Warning" in line or
-                         "ERROR" in line or "rror" in line)
 
 
 def picture(reader, tracer, time, path):

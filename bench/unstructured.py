@@ -17,7 +17,8 @@ re-reading a step it does not hold):
 Each tracer releases one-particle elements from the same --seeds random
 points (Seed Source), RK4 with two sub-steps per data interval, no
 vorticity, lifetimes beyond the run; the Bound Particle Tracer offers one
-frame per input time step (Frames Per Input Step 1) and resamples the mesh
+frame per input time step (Frames Per Input Step 1; --frames-per-step N
+offers N, of which N - 1 use the time steps held) and resamples the mesh
 automatically (Resample Dimensions 0 0 0; --resample to set them).
 Timed, in a fresh tracer each repeat (interleaved, medians of --repeats):
 - first frame: UpdatePipeline at the first time, the reader holding another
@@ -67,6 +68,10 @@ parser.add_argument("--seeds", type=int, default=10000, help="elements (one part
 parser.add_argument("--repeats", type=int, default=3)
 parser.add_argument("--resample", type=int, nargs=3, metavar=("NX", "NY", "NZ"),
                     help="the tracer's Resample Dimensions (default automatic)")
+parser.add_argument("--frames-per-step", type=int, default=1,
+                    help="the Bound Particle Tracer's Frames Per Input Step: 1 (default) makes "
+                         "every frame need a new time step; more plays frames from the steps "
+                         "held (ParaView's tracer offers the input's times either way)")
 parser.add_argument("--keep", metavar="DIR",
                     help="write the data here and keep it (default: a temporary folder)")
 args = parser.parse_args()
@@ -254,7 +259,8 @@ def bound(reader):
     tracer = BoundParticleTracer(Input=reader.proxy, SeedSource=seeds,
                                  Vectors=["POINTS", "velocity"], ElementShape="Point",
                                  NumberOfElements=args.seeds, Integrator="Runge-Kutta 4",
-                                 StepSizeUnit="Time", StepSize=DT / 2, FramesPerInputStep=1,
+                                 StepSizeUnit="Time", StepSize=DT / 2,
+                                 FramesPerInputStep=args.frames_per_step,
                                  LifetimeRange=[1e9, 1e9], Seed=1, ComputeVorticity=0)
     if args.resample:
         tracer.ResampleDimensions = args.resample
