@@ -271,6 +271,13 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
       line.duration = stepInCellLengths ? std::min(crossings, framed) : crossings;
     }
   }
+  if (automatic && unsteady)
+  {
+    // Enough frames in all for smooth Play (nek_eddy's 11 steps once gave 11).
+    const double intervals = double(inputTimes.size() - 1);
+    line.framesPerInterval =
+      int(std::min(std::ceil((MinAutomaticFrames - 1) / intervals), double(MaxFramesPerInterval)));
+  }
   if (automatic && unsteady && stepKnown)
   {
     double longest = 0.0;
@@ -279,7 +286,8 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
       longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
     }
     const double frames = std::ceil(longest / (FrameSteps * dt) - 1e-9);
-    line.framesPerInterval = int(std::min(std::max(frames, 1.0), double(MaxFramesPerInterval)));
+    line.framesPerInterval = int(std::min(
+      std::max(frames, double(line.framesPerInterval)), double(MaxFramesPerInterval)));
     if (frames > double(MaxFramesPerInterval))
     {
       std::ostringstream w;

@@ -94,11 +94,14 @@ struct TimeLine
 /// Automatic time line: a steady input lasts as long as the fastest flow takes
 /// to cross the field AutomaticCrossings times, but (with the step in cell
 /// lengths) no longer than frames of FrameSteps steps each; an unsteady input
-/// gets as many frames per input time step as keep a frame within FrameSteps steps.
+/// gets as many frames per input time step as keep a frame within FrameSteps
+/// steps, and at least MinAutomaticFrames frames in all (as many as a steady
+/// input's default), so a short series still plays smoothly.
 constexpr double AutomaticCrossings = 5.0;
 constexpr double FrameSteps = 10.0;
 /// A steady input's Duration when the field cannot be probed (or is still).
 constexpr double FallbackDuration = 10.0;
+constexpr int MinAutomaticFrames = 101;
 /// The most frames per input time step the automatic time line offers.
 constexpr int MaxFramesPerInterval = 1000;
 

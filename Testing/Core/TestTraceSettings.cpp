@@ -228,8 +228,13 @@ TEST(TimeLine, AutomaticDurationCrossesTheFieldFiveTimesWithinTenStepsAFrame)
 
 TEST(TimeLine, AutomaticFramesKeepEachWithinTenSteps)
 {
-  // Input steps 6 apart, steps of 0.125: 48 steps, so 5 frames of <= 10 steps.
-  const std::vector<double> times = { 0, 6, 12 };
+  // 201 input steps 6 apart (enough frames already), steps of 0.125: 48
+  // steps, so 5 frames of <= 10 steps.
+  std::vector<double> times;
+  for (int k = 0; k <= 200; ++k)
+  {
+    times.push_back(6.0 * k);
+  }
   EXPECT_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, scaleOfBox()).framesPerInterval, 5);
   EXPECT_EQ(bp::resolveTimeLine(0.0, 3, 101, 0.5, true, times, scaleOfBox()).framesPerInterval, 3);
   // A slow field needs no frames between the input's.
@@ -238,6 +243,28 @@ TEST(TimeLine, AutomaticFramesKeepEachWithinTenSteps)
   EXPECT_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, slow).framesPerInterval, 1);
   EXPECT_EQ(
     bp::resolveTimeLine(0.0, 0, 101, 0.5, true, times, bp::TimeScale()).framesPerInterval, 1);
+}
+
+TEST(TimeLine, AShortSeriesGetsEnoughFramesForSmoothPlay)
+{
+  // nek_eddy: 11 steps of a slow flow once gave 11 frames, a second of Play.
+  std::vector<double> eleven;
+  for (int k = 0; k <= 10; ++k)
+  {
+    eleven.push_back(0.05 * k);
+  }
+  bp::TimeScale slow = scaleOfBox();
+  slow.maxSpeed = 0.01;
+  const int frames = bp::resolveTimeLine(0.0, 0, 101, 0.5, true, eleven, slow).framesPerInterval;
+  EXPECT_EQ(frames, 10);
+  EXPECT_GE(10 * frames + 1, bp::MinAutomaticFrames);
+  // Also when the field could not be probed; a set value stays.
+  EXPECT_EQ(
+    bp::resolveTimeLine(0.0, 0, 101, 0.5, true, eleven, bp::TimeScale()).framesPerInterval, 10);
+  EXPECT_EQ(bp::resolveTimeLine(0.0, 1, 101, 0.5, true, eleven, slow).framesPerInterval, 1);
+  // Two steps: 100 frames between them.
+  EXPECT_EQ(
+    bp::resolveTimeLine(0.0, 0, 101, 0.5, true, { 0, 6 }, slow).framesPerInterval, 100);
 }
 
 TEST(TimeLine, WarnsWhenTheVelocitysScaleDoesNotFitTheGridsUnits)
