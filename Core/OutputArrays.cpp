@@ -23,7 +23,7 @@ const std::vector<OutputArray>& outputArrays()
       R::UnitComponents, true, false },
     { Id::Velocity, "Velocity", 3, V::Float, Role::Vectors, Src::FieldSample, C::Velocity, false,
       R::SignedSpeed, true, false },
-    { Id::Speed, "Speed", 1, V::Float, Role::Plain, Src::Derived, C::Velocity, true, R::Speed, true,
+    { Id::Speed, "Speed", 1, V::Float, Role::Scalars, Src::Derived, C::Velocity, true, R::Speed, true,
       false },
     { Id::Force, "Force", 1, V::Float, Role::Plain, Src::ParticleState, C::Force, false,
       R::StepMotion, true, false },

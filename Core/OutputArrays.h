@@ -59,11 +59,13 @@ enum class ValueType
   Int
 };
 
-/// Which attribute the array is: what displays pick by default.
+/// Which attribute the array is: what displays pick by default (ParaView
+/// colours a new display by the active scalars).
 enum class ArrayRole
 {
   Normals,
   Vectors,
+  Scalars,
   Plain
 };
 

@@ -149,6 +149,9 @@ void addToPointData(vtkPointData* pd, const bp::OutputArray& row, vtkDataArray* 
     case bp::ArrayRole::Vectors:
       pd->SetVectors(array);
       break;
+    case bp::ArrayRole::Scalars:
+      pd->SetScalars(array);
+      break;
     case bp::ArrayRole::Plain:
       pd->AddArray(array);
       break;
