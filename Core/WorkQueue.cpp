@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WorkQueue.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace bp
 {
 std::string EngineCall::applyTo(Stepper& target) const
@@ -89,6 +92,32 @@ std::vector<EngineCall> WorkQueue::take()
   std::vector<EngineCall> calls;
   calls.swap(this->Pending);
   return calls;
+}
+
+RendererKind rendererKind(const std::string& glRenderer)
+{
+  std::string name(glRenderer.size(), ' ');
+  std::transform(glRenderer.begin(), glRenderer.end(), name.begin(),
+    [](unsigned char c) { return char(std::tolower(c)); });
+  if (name.empty())
+  {
+    return RendererKind::Unknown;
+  }
+  for (const char* software : { "llvmpipe", "softpipe", "swrast", "software rasterizer",
+         "swiftshader", "lavapipe" })
+  {
+    if (name.find(software) != std::string::npos)
+    {
+      return RendererKind::Software;
+    }
+  }
+  return RendererKind::Hardware;
+}
+
+bool usesGpuEngine(EngineChoice choice, RendererKind renderer)
+{
+  return choice == EngineChoice::Gpu ||
+    (choice == EngineChoice::Automatic && renderer == RendererKind::Hardware);
 }
 
 } // namespace bp

@@ -35,6 +35,32 @@
 namespace bp
 {
 
+/// The kind of OpenGL renderer a display draws with.
+enum class RendererKind
+{
+  Unknown,
+  Hardware,
+  Software
+};
+
+/// The kind of renderer a GL_RENDERER string names: Software for Mesa's
+/// llvmpipe, softpipe and swrast, and other CPU rasterizers.
+RendererKind rendererKind(const std::string& glRenderer);
+
+/// The tracer's Engine property.
+enum class EngineChoice
+{
+  Cpu = 0,
+  Gpu = 1,
+  Automatic = 2
+};
+
+/// Whether a trace a display asked for runs on the GPU engine: always with
+/// Gpu; with Automatic only on a hardware renderer (an unknown one, before
+/// the display first drew, gets the CPU engine).
+bool usesGpuEngine(EngineChoice choice, RendererKind renderer);
+
+
 /// One recorded engine call.
 struct EngineCall
 {
@@ -101,6 +127,13 @@ public:
   /// The largest texture the renderer's GPU takes (0: not known yet), so the
   /// filter can refuse a system before recording it.
   int maxTextureSize = 0;
+
+  /// What draws: Unknown until the renderer first ran; Software for a CPU
+  /// rasterizer (llvmpipe, softpipe, swrast), on which the GPU engine is
+  /// slower than the CPU engine.
+  RendererKind renderer = RendererKind::Unknown;
+  /// The renderer's GL_RENDERER string, for messages.
+  std::string rendererName;
 
   /// The renderer's last failure, if any (empty when the engine ran).
   std::string failure;

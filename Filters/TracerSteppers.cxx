@@ -125,15 +125,26 @@ TracerSteppers::TracerSteppers()
 {
 }
 
-void TracerSteppers::select(bool gpu, vtkInformation* outInfo, const PieceLayout& pieces)
+void TracerSteppers::select(
+  bp::EngineChoice engine, vtkInformation* outInfo, const PieceLayout& pieces)
 {
   this->Pool.refresh(); // once an update: the user may have changed the thread count
   this->Queue = nullptr;
+  this->AutomaticCpuOn.clear();
   // The GPU engine's state lives in the GL context that draws it: only a
   // display in this process, in a run of one process, can take it.
-  if (gpu && !pieces.distributed() && outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
+  if (engine != bp::EngineChoice::Cpu && !pieces.distributed() &&
+    outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
   {
     this->Queue = FindWorkQueue(outInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()));
+  }
+  if (this->Queue && !bp::usesGpuEngine(engine, this->Queue->renderer))
+  {
+    if (this->Queue->renderer == bp::RendererKind::Software)
+    {
+      this->AutomaticCpuOn = this->Queue->rendererName;
+    }
+    this->Queue = nullptr;
   }
   if (pieces.distributed() && !this->Distributed)
   {

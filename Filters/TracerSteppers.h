@@ -73,8 +73,12 @@ public:
   TracerSteppers();
 
   /// Picks this update's stepper for a request (`outInfo`) to a tracer whose
-  /// Engine property asks for the GPU (`gpu`) or not.
-  void select(bool gpu, vtkInformation* outInfo, const PieceLayout& pieces);
+  /// Engine property is `engine` (bp::usesGpuEngine() with the renderer of
+  /// the display that asked).
+  void select(bp::EngineChoice engine, vtkInformation* outInfo, const PieceLayout& pieces);
+  /// The software renderer whose display got the CPU engine because Engine
+  /// is Automatic, at the last select(); empty otherwise.
+  const std::string& automaticCpuOn() const { return this->AutomaticCpuOn; }
 
   bp::Stepper& active() { return *this->Active; }
   /// The display's queue when this update records for it, else null.
@@ -103,6 +107,7 @@ private:
   std::unique_ptr<bp::DistributedStepper> Distributed;
   std::shared_ptr<bp::WorkQueue> Queue;
   bp::Stepper* Active = &Cpu;
+  std::string AutomaticCpuOn;
 };
 
 } // namespace bpvtk

@@ -70,7 +70,7 @@ BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
 BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
-BP_CLAMPED_SETTER(Engine, int, CPU, GPU)
+BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
@@ -524,5 +524,6 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps
      << ", FramesPerInputStep: " << this->FramesPerInputStep << "\n";
   os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
-  os << indent << "Engine: " << (this->Engine == GPU ? "GPU" : "CPU") << "\n";
+  os << indent << "Engine: "
+     << (this->Engine == GPU ? "GPU" : this->Engine == CPU ? "CPU" : "Automatic") << "\n";
 }

@@ -378,16 +378,20 @@ public:
   enum Engines
   {
     CPU = 0,
-    GPU
+    GPU,
+    AUTOMATIC
   };
 
   ///@{
-  /// Which engine steps the trace shown by a **Bound Particles** display: CPU
-  /// (default) or GPU. With GPU, that display runs the GPU engine in its
-  /// render window and this filter only records the work (see
-  /// GPU_WORK_QUEUE()); every other consumer (Surface, writers, other filters)
-  /// still gets the CPU result, so nothing downstream ever sees a stale trace.
-  /// Clamped to [CPU, GPU]; a value outside warns.
+  /// Which engine steps the trace shown by a **Bound Particles** display:
+  /// CPU, GPU, or AUTOMATIC (default): the GPU on a hardware renderer, the
+  /// CPU on a software one (llvmpipe, softpipe, swrast: there the GPU engine
+  /// is slower), said once in Output Messages; the CPU until the display
+  /// first drew. With the GPU, that display runs the GPU engine in its render
+  /// window and this filter only records the work (see GPU_WORK_QUEUE());
+  /// every other consumer (Surface, writers, other filters) still gets the
+  /// CPU result, so nothing downstream ever sees a stale trace.
+  /// Clamped to [CPU, AUTOMATIC]; a value outside warns.
   virtual void SetEngine(int value);
   vtkGetMacro(Engine, int);
   ///@}
@@ -476,7 +480,7 @@ protected:
   int FramesPerInputStep = 0;
   int ColoringAxis = 2;
   vtkTypeBool ComputeVorticity = true;
-  int Engine = CPU;
+  int Engine = AUTOMATIC;
   std::vector<std::string> OmittedArrays; ///< output arrays switched off, by name
 
 private:

@@ -20,6 +20,7 @@
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -88,7 +89,19 @@ void vtkBoundParticleTracer::vtkInternals::decide(
   vtkBoundParticleTracer* self, vtkInformation* outInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  this->Steppers.select(self->Engine == GPU, outInfo, this->Layout);
+  this->Steppers.select(bp::EngineChoice(self->Engine), outInfo, this->Layout);
+  const std::string& software = this->Steppers.automaticCpuOn();
+  if (!software.empty() && !this->SaidAutomaticCpu)
+  {
+    // Once per tracer: the display asks on every frame.
+    this->SaidAutomaticCpu = true;
+    const std::string text = "Bound Particle Tracer: Engine is Automatic and this render "
+                             "window draws with a software renderer (" +
+      software +
+      "), on which the GPU engine is slower: the CPU engine traces. Set Engine to GPU to use the "
+      "GPU engine anyway.\n";
+    vtkOutputWindowDisplayText(text.c_str());
+  }
   const double target = this->Plan.targetOf(
     outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   this->Decision =

@@ -79,6 +79,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
   bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
   bool WarnedResample = false;  ///< blocks without the Vectors were reported for it
+  bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
   bpvtk::FieldResampler Resampler;

@@ -25,6 +25,7 @@
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
@@ -55,6 +56,33 @@ struct vtkBoundParticleRepresentation::vtkInternals
   int TextureSizeLimit = 0;
   bool StreamTimeSteps = true;
 };
+
+namespace
+{
+/// Tells the tracer (through the queue) what renderer the view draws with,
+/// for Engine = Automatic: read once from the window's capabilities after it
+/// first drew (before that the window may have no context).
+void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
+{
+  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
+  if (queue.renderer != bp::RendererKind::Unknown || !window || window->GetNeverRendered())
+  {
+    return;
+  }
+  const char* report = window->ReportCapabilities();
+  const std::string text = report ? report : "";
+  const std::string key = "OpenGL renderer string:";
+  const std::size_t at = text.find(key);
+  if (at == std::string::npos)
+  {
+    return;
+  }
+  const std::size_t first = text.find_first_not_of(" \t", at + key.size());
+  const std::size_t end = text.find('\n', at);
+  queue.rendererName = first < end ? text.substr(first, end - first) : std::string();
+  queue.renderer = bp::rendererKind(queue.rendererName);
+}
+} // namespace
 
 vtkStandardNewMacro(vtkBoundParticleRepresentation);
 
@@ -311,6 +339,7 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
     this->ReleaseGpuRequest(); // the view's update pass is over
+    recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {
