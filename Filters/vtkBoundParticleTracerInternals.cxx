@@ -472,7 +472,11 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   // to hold in the engine's floats) would place an element where no flow is.
   // Every process decides alike, from the whole field's bounds.
   const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
-  std::size_t outside = 0, noFlow = 0, nonFinite = 0, atBoundary = 0;
+  std::size_t outside = 0, noFlow = 0, nonFinite = 0, atBoundary = 0, still = 0;
+  // Seeds where the flow barely moves at the start (below 1% of its top
+  // speed): their elements sit where they were released.
+  const double stillSpeed = 0.01 * field.maxSpeed();
+  const double start = this->Plan.startTime();
   p.seedPoints.clear();
   for (std::size_t i = 0; i < std::min(count, bp::MaxSeedPoints); ++i)
   {
@@ -497,6 +501,15 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
     // Releases pass over points in cells outside the flow's domain (masked or
     // NaN) at their time; count those at the start (one process sees them all).
     noFlow += !this->Layout.distributed() && field.outsideCellAt(x, 0.0f) ? 1 : 0;
+    if (!this->Layout.distributed())
+    {
+      float v[3];
+      field.sample(x, start, v);
+      still += std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]) <
+          stillSpeed
+        ? 1
+        : 0;
+    }
     bool nearBoundary = false;
     for (int a = 0; a < 3; ++a)
     {
@@ -544,6 +557,22 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
             << "field's boundary: with Reset When = Any Particle Leaves, elements released there "
             << "leave at once and are released again every step. Move the seeds inward, or reset "
             << "when the centre leaves.");
+  }
+  const std::size_t seeds = p.seedPoints.size() / 3;
+  if (still > noFlow)
+  {
+    vtkWarningWithObjectMacro(self,
+      << still - noFlow << " of the Seed Source's " << seeds
+      << " points in the flow lie where it is slower than 1% of its top speed at the start: "
+         "elements released there barely move. Move the seeds into faster flow.");
+  }
+  if (p.numberOfElements > 2 * seeds)
+  {
+    vtkWarningWithObjectMacro(self,
+      << p.numberOfElements << " elements share the Seed Source's " << seeds
+      << " points: about " << (p.numberOfElements + seeds - 1) / seeds
+      << " start at each point, on top of one another. Give the seeds more points (e.g. a "
+         "Line's Resolution), or fewer elements.");
   }
   if (noFlow > 0)
   {

@@ -345,6 +345,18 @@ CASES = {
     "seeds with Linking": (
         lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
         "Seed Source is not used", lambda r: r["points"] > 0),
+    # Issue 29: seeds that would show nothing moving say so.
+    "1000 elements on 7 seed points": (
+        lambda: tracer(flow(Flow="Hurricane"), NumberOfElements=1000,
+                       SeedSource=Line(Point1=[-0.9, -0.9, 0], Point2=[0.9, 0.9, 0],
+                                       Resolution=6)), 1.0, "on top of one another",
+        lambda r: r["points"] > 0),
+    "seeds in still flow": (
+        lambda: tracer(Calculator(Input=flow(Flow="Hurricane"), ResultArrayName="v",
+                                  Function="coordsX*iHat"), Vectors=["POINTS", "v"],
+                       NumberOfElements=21,
+                       SeedSource=Line(Point1=[0, -0.5, 0], Point2=[0, 0.5, 0], Resolution=20)),
+        1.0, "barely move", lambda r: r["points"] > 0),
     "seeds with a stale emitter box": (
         lambda: tracer(flow(), EmitterCenter=[50, 50, 50], EmitterSize=[0.1, 0.1, 0.1],
                        MinimumReleaseSpeed=0.5, SeedSource=Line()), 1.0, None),
