@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleDefaults.h"
 
+#include "pqBoundParticleTickGuard.h"
+
+#include <QTimer>
+
 #include "pqApplicationCore.h"
 #include "pqPipelineSource.h"
 #include "pqServerManagerModel.h"
@@ -47,6 +51,10 @@ pqBoundParticleDefaults::pqBoundParticleDefaults(QObject* parent)
 
 void pqBoundParticleDefaults::onStartup()
 {
+  // Clicks queued during a slow frame must not start Play inside it. Once the
+  // event loop runs: a plugin on PV_PLUGIN_PATH starts while the application
+  // core is still being built, before it has its animation manager.
+  QTimer::singleShot(0, this, [this]() { new pqBoundParticleTickGuard(this); });
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(model, &pqServerManagerModel::sourceAdded, this,
     [](pqPipelineSource* source) { pqBoundParticleDefaults::complete(source); });

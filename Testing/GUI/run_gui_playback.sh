@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Plays a recorded GUI test (ParaView's XML events and checks) in the ParaView
 # GUI under Xvfb, with the plugin on PV_PLUGIN_PATH: usage
-#   run_gui_playback.sh PLUGIN_DIR DATA_DIR TEST.xml
+#   run_gui_playback.sh PLUGIN_DIR DATA_DIR TEST.xml [EXTRA_PLUGIN_DIR]
+# (EXTRA_PLUGIN_DIR: a test-only plugin loaded beside it).
 # ($PARAVIEW_DATA_ROOT in the events is DATA_DIR.)
 # An event on a widget that does not exist, or a failed check, makes ParaView
 # exit non-zero, and so this script.
@@ -13,7 +14,7 @@ set -u
 plugin_dir="$1"
 data_dir="$2"
 script="$3"
-export PV_PLUGIN_PATH="$plugin_dir"
+export PV_PLUGIN_PATH="$plugin_dir${4:+:$4}"
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
 trap 'rm -rf "$HOME"' EXIT
