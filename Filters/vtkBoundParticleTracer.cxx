@@ -363,6 +363,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   vtkInternals& I = *this->Internals;
   vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
   output->Initialize();
+  this->SetProgressShiftScale(0.0, 1.0);
 
   // Ends the update (quietly when aborted), or this pass asking for another time step.
   auto end = [&](const Pass& pass)
@@ -372,6 +373,9 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
       I.RequestIndex = pass.index;
       I.Continuing = true;
       request->Set(SDDP::CONTINUE_EXECUTING(), 1);
+      // The executive reports 1 at this pass's end and 0 at the next one's
+      // start: hold the bar where the update stands until steps move it.
+      this->SetProgressShiftScale(I.progress(), 0.0);
       return 1;
     }
     if (pass.kind == Pass::Failed)

@@ -128,6 +128,9 @@ void vtkBoundParticleTracer::vtkInternals::begin(vtkBoundParticleTracer* self)
     stepper.restore();
   }
   stepper.cursor.showsPartialStep = false;
+  // Progress runs over the whole update, across its passes.
+  this->ProgressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
+  this->ProgressAt = this->ProgressFrom;
   if (replay && this->Layout.distributed() && this->Layout.Piece == 0 && self->Engine == GPU)
   {
     vtkWarningWithObjectMacro(self,
@@ -721,8 +724,6 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
   bp::Stepper& stepper = this->stepper();
   double& committed = stepper.cursor.committed;
   const double target = this->target();
-  const double span = std::max(target - committed, 1e-300);
-  const double progressStart = committed;
   const std::string tooMuch = this->Plan.checkWork(committed, target, this->Schedule->dt());
   if (!tooMuch.empty())
   {
@@ -732,7 +733,8 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::stepToTarget(
   auto keepGoing = [&](double t)
   {
     ++this->StepsInLastUpdate;
-    self->UpdateProgress((t - progressStart) / span);
+    this->ProgressAt = t;
+    self->UpdateProgress(this->progress());
     // In parallel every process must take every step (each exchanges
     // elements with the others), so one process alone cannot stop.
     aborted = !this->Layout.distributed() && self->CheckAbort();

@@ -33,6 +33,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -94,6 +95,16 @@ struct vtkBoundParticleTracer::vtkInternals
   int LastRequested = -1;         ///< the input time step upstream holds
   bool ReadThisUpdate = false;    ///< a time step came from upstream in this update
   int IntervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
+  double ProgressFrom = 0.0;      ///< where the update's stepping starts
+  double ProgressAt = 0.0;        ///< where it stands
+
+  /// The share of the update's stepping done, over all its passes.
+  double progress() const
+  {
+    const double span = this->target() - this->ProgressFrom;
+    return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
+                      : 0.0;
+  }
 
   // The field, in grid-local coordinates (floats keep their precision far
   // from the world origin), and where its local origin lies in the world.

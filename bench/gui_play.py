@@ -114,6 +114,7 @@ def gui_step():
                                 display=DISPLAYS[0], frames=frames, offered=offered,
                                 vectors=vectors[-2:], view_size=list(view.ViewSize),
                                 input_shown=simple.GetDisplayProperties(reader, view).Visibility,
+                                input_representation=simple.GetDisplayProperties(reader, view).Representation,
                                 engine=str(tracer.Engine).strip("'"))
         return
     runs = state["timer"].take()
@@ -178,8 +179,10 @@ def pvpython_plays(args):
         simple.Render(view)
         tracer = globals()["BoundParticleTracer"](Input=reader, Vectors=VECTORS)
         display = simple.Show(tracer, view)
-        # The tracer's <Visibility replace_input="2"/>, as the GUI's Apply does it.
-        if shown.Representation != "Outline":
+        # The tracer's <Visibility replace_input="2"/>, as the GUI's Apply does
+        # it (pqApplyBehavior::hideInputIfRequired): an input shown as an opaque
+        # surface is hidden, any other (an outline, a 2D image's slice) stays.
+        if shown.Representation in ("Surface", "Surface With Edges") and shown.Opacity == 1:
             simple.Hide(reader, view)
         scene = simple.GetAnimationScene()
         scene.UpdateAnimationUsingDataTimeSteps()
@@ -192,7 +195,8 @@ def pvpython_plays(args):
                 scene.Play()
             rows.append(dict(data=name, display=representation, frames=frames, offered=offered,
                              vectors=VECTORS, view_size=list(view.ViewSize),
-                             input_shown=shown.Visibility, engine=str(tracer.Engine).strip("'"),
+                             input_shown=shown.Visibility, input_representation=shown.Representation,
+                             engine=str(tracer.Engine).strip("'"),
                              runs=timer.take()))
         timer.remove()
         simple.Delete(tracer)
@@ -247,11 +251,13 @@ def print_table(gui_file, pv_file):
             ratio = "%.2f" % (float(gc[0]) / float(pc[0]))
         frames = (g or p)["frames"]
         print(fmt % (key[0], key[1], frames, gc[0], gc[1], pc[0], pc[1], ratio, gc[2], pc[2]))
-    if gui:
-        print("GUI: engine %s; input shown: %s" % (
-            sorted({r["engine"] for r in gui.values()}),
-            ", ".join("%s %s" % (r["data"], bool(r["input_shown"]))
-                      for r in gui.values() if r["display"] == DISPLAYS[0])))
+    for label, rows in (("GUI", gui), ("pvpython", pv)):
+        if rows:
+            print("%s: engine %s; input shown: %s" % (
+                label, ", ".join(sorted({r["engine"] for r in rows.values()})),
+                ", ".join("%s %s" % (r["data"], r.get("input_representation", "?")
+                                     if r["input_shown"] else "hidden")
+                          for r in rows.values() if r["display"] == DISPLAYS[0])))
     missing = [k for k in keys if not (gui.get(k) and gui[k]["runs"])]
     if missing:
         print("gui_play: no GUI plays recorded for %s" % ", ".join("/".join(k) for k in missing))
