@@ -7,14 +7,19 @@ animation machinery (pqVCRController, which processes the Qt events of every
 tick: panels, toolbars, the time widgets). Each play runs --frames frames from
 the start (the scene's playback window), --repeats times with the Surface
 display and as many with the Bound Particles display. pvpython then does the
-same in a render view of the GUI's view size (the input kept only when shown
-as an outline, as the tracer's replace_input hint does in the GUI) and plays
-with GetAnimationScene().Play(). Prints one row per data set and display:
+same in a render view of the GUI's view size (the input hidden only where the
+GUI's Apply hides it: the tracer's replace_input="2" hides an opaque surface
+and keeps an outline or a 2D image's slice) and plays with
+GetAnimationScene().Play(). Prints one row per data set and display:
 frames per second (median of the plays, wall clock from the scene's start of
 play to its end) and CPU ms per frame of the whole process (its llvmpipe
 render threads included), GUI and pvpython side by side.
 
     bash bench/gui_play.sh [--frames 50] [--repeats 3] [--data DIR] [--only a.vti,b.pvd]
+                           [--setup FILE.py] [--gui-only] [--out DIR]
+
+Wall-clock fps depends on what else runs on the machine (two cores here); the
+CPU column depends on it much less.
 
 This file has four roles, chosen by how it is run:
 - python3 gui_play.py xml ...: writes the GUI's event file (QtTesting XML);
@@ -74,6 +79,21 @@ class PlayTimer:
             self.scene.RemoveObserver(tag)
 
 
+def run_setup(path, simple, tracer, reader, view, scene, gui):
+    """--setup: a Python file run before the plays of each data set, in the GUI
+    (gui=True) and in pvpython (gui=False), to measure what a setting or a
+    change of state costs (e.g. simple.SetActiveSource(None) in the GUI)."""
+    if path:
+        with open(path) as f:
+            exec(compile(f.read(), path, "exec"),
+                 dict(simple=simple, tracer=tracer, reader=reader, view=view, scene=scene,
+                      gui=gui))
+
+
+def representation_of(display):
+    return display.SMProxy.GetProperty("Representation").GetElement(0)
+
+
 def set_frames(scene, tracer, frames):
     """Plays `frames` time values from the start: the scene's playback window
     (vtkSMAnimationScene; not a proxy property in ParaView 5.11)."""
@@ -107,14 +127,16 @@ def gui_step():
         frames, offered = set_frames(scene, tracer, config["frames"])
         display = simple.GetDisplayProperties(tracer, view)
         display.SetRepresentationType(DISPLAYS[0])
+        shown = simple.GetDisplayProperties(reader, view)
         simple.Render(view)
+        run_setup(config.get("setup"), simple, tracer, reader, view, scene, gui=True)
         state["timer"] = PlayTimer(scene)
         state["tracer"] = tracer
         state["current"] = dict(data=config["data_sets"][len(state["rows"]) // len(DISPLAYS)],
                                 display=DISPLAYS[0], frames=frames, offered=offered,
                                 vectors=vectors[-2:], view_size=list(view.ViewSize),
-                                input_shown=simple.GetDisplayProperties(reader, view).Visibility,
-                                input_representation=simple.GetDisplayProperties(reader, view).Representation,
+                                input_shown=shown.Visibility,
+                                input_representation=representation_of(shown),
                                 engine=str(tracer.Engine).strip("'"))
         return
     runs = state["timer"].take()
@@ -139,27 +161,27 @@ def gui_step():
 
 # ---------------------------------------------------------------- the GUI's event file
 def write_events(path, data_dir, script, data_sets, repeats):
-    main = "pqClientMainWindow"
-    apply = '<pqevent object="%s/propertiesDock/propertiesPanel/Accept" command="activate" arguments="" />' % main
-    run_script = (
-        '<pqevent object="%s/pythonShellDock/pythonShell/runScriptButton" command="activate" arguments="" />\n'
-        '  <pqevent object="%s/pythonShellDock/pythonShell/PythonShellRunScriptDialog" '
-        'command="filesSelected" arguments="%s" />' % (main, main, script))
-    play = '<pqevent object="%s/VCRToolbar/actionVCRPlay" command="activate" arguments="" />' % main
+    from xml.sax.saxutils import quoteattr
+
+    def event(name, command, arguments=""):
+        return '<pqevent object="pqClientMainWindow/%s" command="%s" arguments=%s />' % (
+            name, command, quoteattr(arguments))
+
+    apply = event("propertiesDock/propertiesPanel/Accept", "activate")
+    run_script = [event("pythonShellDock/pythonShell/runScriptButton", "activate"),
+                  event("pythonShellDock/pythonShell/PythonShellRunScriptDialog",
+                        "filesSelected", script)]
+    play = event("VCRToolbar/actionVCRPlay", "activate")
     lines = ["<?xml version=\"1.0\" ?>", "<pqevents>"]
     for name in data_sets:
-        lines += [
-            '<pqevent object="%s/menubar/menu_File" command="activate" arguments="actionFileOpen" />' % main,
-            '<pqevent object="%s/FileOpenDialog" command="filesSelected" arguments="%s" />'
-            % (main, os.path.join(data_dir, name)),
-            apply,
-            '<pqevent object="%s/menubar" command="activate" arguments="menuFilters" />' % main,
-            '<pqevent object="%s/menubar/menuFilters/Alphabetical" command="activate" '
-            'arguments="BoundParticleTracer" />' % main,
-            apply,
-            run_script]  # prepare: Surface display
+        lines += [event("menubar/menu_File", "activate", "actionFileOpen"),
+                  event("FileOpenDialog", "filesSelected", os.path.join(data_dir, name)),
+                  apply,
+                  event("menubar", "activate", "menuFilters"),
+                  event("menubar/menuFilters/Alphabetical", "activate", "BoundParticleTracer"),
+                  apply] + run_script  # prepare: Surface display
         for _ in DISPLAYS:
-            lines += [play] * repeats + [run_script]  # record, then the next display or finish
+            lines += [play] * repeats + run_script  # record, then the next display or finish
     lines.append("</pqevents>")
     with open(path, "w") as out:
         out.write("\n  ".join(lines) + "\n")
@@ -182,11 +204,12 @@ def pvpython_plays(args):
         # The tracer's <Visibility replace_input="2"/>, as the GUI's Apply does
         # it (pqApplyBehavior::hideInputIfRequired): an input shown as an opaque
         # surface is hidden, any other (an outline, a 2D image's slice) stays.
-        if shown.Representation in ("Surface", "Surface With Edges") and shown.Opacity == 1:
+        if representation_of(shown) in ("Surface", "Surface With Edges") and shown.Opacity == 1:
             simple.Hide(reader, view)
         scene = simple.GetAnimationScene()
         scene.UpdateAnimationUsingDataTimeSteps()
         frames, offered = set_frames(scene, tracer, args.frames)
+        run_setup(args.setup, simple, tracer, reader, view, scene, gui=False)
         timer = PlayTimer(scene)
         for representation in DISPLAYS:
             display.SetRepresentationType(representation)
@@ -195,7 +218,8 @@ def pvpython_plays(args):
                 scene.Play()
             rows.append(dict(data=name, display=representation, frames=frames, offered=offered,
                              vectors=VECTORS, view_size=list(view.ViewSize),
-                             input_shown=shown.Visibility, input_representation=shown.Representation,
+                             input_shown=shown.Visibility,
+                             input_representation=representation_of(shown),
                              engine=str(tracer.Engine).strip("'"),
                              runs=timer.take()))
         timer.remove()
@@ -283,6 +307,7 @@ def main():
     pv.add_argument("--repeats", type=int, default=3)
     pv.add_argument("--view-size", type=int, nargs=2, default=[844, 527])
     pv.add_argument("--output", required=True)
+    pv.add_argument("--setup")
     table = sub.add_parser("table")
     table.add_argument("gui")
     table.add_argument("pvpython")

@@ -3,12 +3,18 @@
 # pvpython doing the same (bench/gui_play.py says what is measured):
 #   bash bench/gui_play.sh [--plugin PLUGIN.so] [--data DIR] [--frames N]
 #                          [--repeats R] [--only a.vti,b.pvd] [--out DIR] [--gui-only]
+#                          [--setup FILE.py]
 # The GUI runs under its own Xvfb (scripts/with-display.sh) with a fresh HOME
 # and --dr, so no user settings (nor the welcome dialog) get in. It plays a
 # generated QtTesting event file: File > Open and Apply, Filters > Bound
 # Particle Tracer and Apply, the VCR toolbar's Play. Nothing is built: the
 # plugin is the one in build/ (build/plugin-path.txt) unless --plugin says.
 # Defaults: 50 frames a play, 3 plays per display; about 4 minutes in all.
+# --setup FILE.py runs before each data set's plays in both (names: simple,
+# tracer, reader, view, scene, gui), to measure a setting: e.g.
+#   if gui: simple.SetActiveSource(None)
+# (nothing of the GUI reacts to the tracer's data every frame then).
+# --out DIR keeps the logs and gui.json / pvpython.json there.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 plugin=""
@@ -18,6 +24,7 @@ repeats=3
 only="combustor.vti,office.vti,carotid.vti,nek_eddy.pvd,gfs_wind10m.pvd"
 out=""
 gui_only=0
+setup=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --plugin) plugin="$2"; shift 2 ;;
@@ -27,6 +34,7 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --gui-only) gui_only=1; shift ;;
+    --setup) setup="$(realpath "$2")"; shift 2 ;;
     *) echo "gui_play.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -45,8 +53,9 @@ bench="$root/bench/gui_play.py"
   --data-sets "$only" --repeats "$repeats"
 mkdir -p "$work/home"
 config="$(/usr/bin/python3 -c 'import json,sys
-print(json.dumps({"frames": int(sys.argv[1]), "output": sys.argv[2], "data_sets": sys.argv[3].split(",")}))' \
-  "$frames" "$out/gui.json" "$only")"
+print(json.dumps({"frames": int(sys.argv[1]), "output": sys.argv[2],
+                  "data_sets": sys.argv[3].split(","), "setup": sys.argv[4]}))' \
+  "$frames" "$out/gui.json" "$only" "$setup")"
 start=$SECONDS
 HOME="$work/home" PV_PLUGIN_PATH="$(dirname "$plugin")" BOUNDPARTICLES_GUI_PLAY="$config" \
   timeout 600 bash "$root/scripts/with-display.sh" \
@@ -65,6 +74,7 @@ if [ "$gui_only" = 0 ]; then
   timeout 600 bash "$root/scripts/with-display.sh" pvpython "$bench" pvpython \
     --plugin "$plugin" --data "$data" --data-sets "$only" --frames "$frames" \
     --repeats "$repeats" --view-size $size --output "$out/pvpython.json" \
+    ${setup:+--setup "$setup"} \
     >"$out/pvpython.log" 2>&1 || echo "gui_play: pvpython exited with $? (log: $out/pvpython.log)" >&2
   echo "gui_play: pvpython done in $((SECONDS - start)) s" >&2
 fi
