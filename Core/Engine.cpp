@@ -102,17 +102,73 @@ std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3)
   return { s1 * std::sin(a), s1 * std::cos(a), s2 * std::sin(b), s2 * std::cos(b) };
 }
 
+std::array<float, 4> multiplyQuaternions(const float r[4], const std::array<float, 4>& q)
+{
+  return { r[3] * q[0] + r[0] * q[3] + r[1] * q[2] - r[2] * q[1],
+    r[3] * q[1] - r[0] * q[2] + r[1] * q[3] + r[2] * q[0],
+    r[3] * q[2] + r[0] * q[1] - r[1] * q[0] + r[2] * q[3],
+    r[3] * q[3] - r[0] * q[0] - r[1] * q[1] - r[2] * q[2] };
+}
+
 std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float, 4>& first)
 {
   // r = (sin(a/2) e_axis, cos(a/2)), then the product r * first.
   const float half = float(Pi) * u;
   float r[4] = { 0, 0, 0, std::cos(half) };
   r[axis] = std::sin(half);
-  const float* q = first.data();
-  return { r[3] * q[0] + r[0] * q[3] + r[1] * q[2] - r[2] * q[1],
-    r[3] * q[1] - r[0] * q[2] + r[1] * q[3] + r[2] * q[0],
-    r[3] * q[2] + r[0] * q[1] - r[1] * q[0] + r[2] * q[3],
-    r[3] * q[3] - r[0] * q[0] - r[1] * q[1] - r[2] * q[2] };
+  return multiplyQuaternions(r, first);
+}
+
+std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
+  const std::array<float, 9>& frame, const std::array<float, 4>& first)
+{
+  float d[3] = { v[0], v[1], v[2] };
+  if (planeAxis >= 0)
+  {
+    d[planeAxis] = 0.0f;
+  }
+  // Scaled by the largest component first, so that any unit of speed, however
+  // small or large, normalises without underflow or overflow.
+  const float m = std::max(std::max(std::abs(d[0]), std::abs(d[1])), std::abs(d[2]));
+  if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max()))
+  {
+    return first;
+  }
+  d[0] = d[0] / m;
+  d[1] = d[1] / m;
+  d[2] = d[2] / m;
+  const float inverse = 1.0f / std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  d[0] = d[0] * inverse;
+  d[1] = d[1] * inverse;
+  d[2] = d[2] * inverse;
+  // a = frame * e_x, the long axis as the frame leaves it.
+  const float a[3] = { frame[0], frame[3], frame[6] };
+  const float c = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+  float r[4];
+  if (1.0f + c < 1e-6f)
+  {
+    // Against the flow, within 0.08 degrees (where a x d carries no
+    // direction): a half turn about the frame's z axis (the plane's normal
+    // on a flat field), which keeps a flat element in its plane.
+    r[0] = frame[2];
+    r[1] = frame[5];
+    r[2] = frame[8];
+    r[3] = 0.0f;
+  }
+  else
+  {
+    // (a x d, 1 + a.d), normalised: half the angle between a and d.
+    r[0] = a[1] * d[2] - a[2] * d[1];
+    r[1] = a[2] * d[0] - a[0] * d[2];
+    r[2] = a[0] * d[1] - a[1] * d[0];
+    r[3] = 1.0f + c;
+    const float n = 1.0f / std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+    r[0] = r[0] * n;
+    r[1] = r[1] * n;
+    r[2] = r[2] * n;
+    r[3] = r[3] * n;
+  }
+  return multiplyQuaternions(r, first);
 }
 
 std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
@@ -366,7 +422,7 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   return std::string();
 }
 
-void Engine::place(std::size_t e, bool releasing)
+void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
 {
   const Parameters& P = this->Params;
   // A super set is released as one: every element draws as element 0 does,
@@ -390,20 +446,45 @@ void Engine::place(std::size_t e, bool releasing)
     this->releaseCenter(element, generation, c);
   }
   std::copy_n(c, 3, this->InitialCenters.data() + 3 * e);
-  const std::array<float, 4> q = !P.randomOrientation ? this->FrameQuaternion
+  const std::array<float, 4> q = P.orientation != Orientation::Random ? this->FrameQuaternion
     : P.planeAxis >= 0 ? inPlaneQuaternion(P.planeAxis, u[3], this->FrameQuaternion)
                        : quaternionFromUniforms(u[3], u[4], u[5]);
+  this->orient(e, q);
+  std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
+  const std::size_t n = this->Shape.particleCount();
+  std::fill_n(this->Forces.data() + e * n, n, 0.0f);
+  this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
+  this->ResetFlags[e] = releasing ? 0 : ReleaseHidden;
+  // A super set keeps its lattice's one orientation, as it keeps one draw.
+  if (P.orientation == Orientation::AlongFlow && !linked)
+  {
+    if (flow.field)
+    {
+      this->alignToFlow(e, flow);
+    }
+    else
+    {
+      this->ResetFlags[e] |= AlignPending;
+    }
+  }
+}
+
+void Engine::orient(std::size_t e, const std::array<float, 4>& q)
+{
+  const Parameters& P = this->Params;
   std::copy(q.begin(), q.end(), this->Orientations.begin() + 4 * e);
   // One particle has no orientation to show: its pose stays the identity.
   const bool oriented = this->Shape.particleCount() > 1;
   const std::array<float, 4> pose = oriented ? q : std::array<float, 4>{ 0, 0, 0, 1 };
   std::copy(pose.begin(), pose.end(), this->Poses.begin() + 4 * e);
-  std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
+  // Fixed places by the frame itself, not its quaternion's matrix (the same
+  // rotation to rounding).
   std::array<float, 9> R = P.frame;
-  if (P.randomOrientation)
+  if (P.orientation != Orientation::Fixed)
   {
     quaternionToMatrix(q.data(), R.data());
   }
+  const float* c = this->InitialCenters.data() + 3 * e;
   const std::size_t n = this->Shape.particleCount();
   float* p = this->Positions.data() + 3 * e * n;
   for (std::size_t i = 0; i < n; ++i)
@@ -415,9 +496,15 @@ void Engine::place(std::size_t e, bool releasing)
         c[k] + P.elementSize * (R[3 * k] * r[0] + R[3 * k + 1] * r[1] + R[3 * k + 2] * r[2]);
     }
   }
-  std::fill_n(this->Forces.data() + e * n, n, 0.0f);
-  this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
-  this->ResetFlags[e] = releasing ? 0 : ReleaseHidden;
+}
+
+void Engine::alignToFlow(std::size_t e, const ReleaseFlow& flow)
+{
+  float v[3];
+  flow.field->sampleWeighted(this->InitialCenters.data() + 3 * e, flow.weight, v);
+  this->orient(
+    e, alongFlowQuaternion(v, this->Params.planeAxis, this->Params.frame, this->FrameQuaternion));
+  this->ResetFlags[e] &= std::uint8_t(~AlignPending);
 }
 
 void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
@@ -496,7 +583,7 @@ void Engine::recordTrail(double t)
     this->TrailGenerations.begin() + std::ptrdiff_t(slot * E));
 }
 
-void Engine::initialize(const RangeRunner& run, double startTime)
+void Engine::initialize(const RangeRunner& run, double startTime, const VectorField* field)
 {
   std::fill(this->Generations.begin(), this->Generations.end(), 0u);
   std::fill(this->TrailGenerations.begin(), this->TrailGenerations.end(), NoTrailPose);
@@ -504,12 +591,13 @@ void Engine::initialize(const RangeRunner& run, double startTime)
     this->TrailTimes.begin(), this->TrailTimes.end(), -std::numeric_limits<double>::infinity());
   this->TrailNewest = -1;
   const bool releasing = this->releasesAt(startTime, 0.0);
+  const ReleaseFlow flow{ field, field ? field->timeWeight(startTime) : 0.0f };
   run(this->elementCount(),
-    [this, releasing](std::size_t begin, std::size_t end)
+    [this, releasing, &flow](std::size_t begin, std::size_t end)
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        this->place(e, releasing);
+        this->place(e, releasing, flow);
         this->normalsOf(e);
       }
     });
@@ -730,10 +818,14 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   double h, float* before, float* advected)
 {
   const std::size_t n = this->Shape.particleCount();
-  if (weights.resets && (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f))
+  if (weights.resets && (this->isDue(e)))
   {
     ++this->Generations[e];
-    this->place(e, weights.releasing);
+    this->place(e, weights.releasing, { &field, weights.start });
+  }
+  else if (this->ResetFlags[e] & AlignPending)
+  {
+    this->alignToFlow(e, { &field, weights.start });
   }
   float* p = this->Positions.data() + 3 * e * n;
   std::copy_n(p, 3 * n, before);
@@ -1135,10 +1227,12 @@ void Engine::resetDue(const RangeRunner& run, double t, double h)
     {
       for (std::size_t e = begin; e < end; ++e)
       {
-        if (this->ResetFlags[e] || this->Lifetimes[e] <= 0.0f)
+        if (this->isDue(e))
         {
           ++this->Generations[e];
-          this->place(e, releasing);
+          // The new centre may lie in another piece: Along Flow turns the
+          // element where it is held next (AlignPending).
+          this->place(e, releasing, { nullptr, 0.0f });
         }
       }
     });
@@ -1300,7 +1394,7 @@ std::string Engine::exchange(
     const std::uint32_t* r = records.data() + (source - held) * words;
     ids[k] = r[0];
     generations[k] = r[1];
-    flags[k] = std::uint8_t(r[2] & (ResetDue | ReleaseHidden));
+    flags[k] = std::uint8_t(r[2] & (ResetDue | ReleaseHidden | AlignPending));
     lifetimes[k] = bitsFloat(r[3]);
     const std::uint32_t* values = r + 4;
     auto floats = [&values](float* out, std::size_t count)

@@ -65,6 +65,14 @@ enum class Restoration
   ShapeMatching ///< best rigid fit (Core/ShapeMatching.h), goals blended by shapeStiffness
 };
 
+/// How an element is turned when it is placed (Engine::place).
+enum class Orientation
+{
+  Fixed = 0, ///< by Parameters::frame (Element Rotation)
+  Random,    ///< a uniform random rotation (about the plane's axis on a flat field)
+  AlongFlow  ///< the frame's x axis turned onto the flow at the release centre
+};
+
 enum class ResetWhen
 {
   CenterLeaves = 0,
@@ -83,6 +91,10 @@ constexpr std::size_t MaxSeedPoints = 65536;
 /// output) and due again at every step.
 constexpr std::uint8_t ResetDue = 1;
 constexpr std::uint8_t ReleaseHidden = 2;
+/// Bit 2: placed Along Flow without a field to sample (Engine::resetDue of a
+/// distributed step, whose new centre may lie in another piece); turned onto
+/// the flow by the piece that holds it, before it is advected.
+constexpr std::uint8_t AlignPending = 4;
 
 /// How many candidate centres a release draws before it takes the last one
 /// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
@@ -101,12 +113,13 @@ struct Parameters
   float elementSize = 1.0f; ///< bounding-sphere diameter in world units
   std::array<float, 3> emitterMin = { 0, 0, 0 };
   std::array<float, 3> emitterMax = { 1, 1, 1 };
-  bool randomOrientation = true;
-  std::array<float, 9> frame = { 1, 0, 0, 0, 1, 0, 0, 0,
-    1 }; ///< row-major, used without random orientation (and under planeAxis)
-  /// With random orientation on a flat field (one axis of one point): that
-  /// axis. Elements then turn at random about it only, after `frame` lays
-  /// the template's x-y plane into the field's plane; -1: uniform rotations.
+  Orientation orientation = Orientation::Random;
+  std::array<float, 9> frame = {
+    1, 0, 0, 0, 1, 0, 0, 0, 1
+  }; ///< row-major: the Fixed orientation, Along Flow's start (and the plane's, under planeAxis)
+  /// With Random or Along Flow on a flat field (one axis of one point): that
+  /// axis. Elements then turn about it only, after `frame` lays the
+  /// template's x-y plane into the field's plane; -1: any rotation.
   int planeAxis = -1;
   float lifetimeMin = 1.0f;
   float lifetimeMax = 2.0f;
@@ -216,6 +229,20 @@ std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R);
 /// as a unit quaternion: an in-plane orientation (Parameters::planeAxis).
 std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float, 4>& first);
 
+/// The product r * q of unit quaternions (x, y, z, w): q, then r.
+std::array<float, 4> multiplyQuaternions(const float r[4], const std::array<float, 4>& q);
+
+/**
+ * Along Flow's orientation for a flow `v` at the release centre: the shortest
+ * turn of the frame's x axis (the template's long axis) onto v, after the
+ * frame (row-major `frame`, as the quaternion `first`). On a flat field
+ * (`planeAxis` >= 0) v's component along that axis is dropped, so the turn is
+ * about it. Opposite directions turn by a half turn about the frame's z axis;
+ * a zero or non-finite v keeps `first`.
+ */
+std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
+  const std::array<float, 9>& frame, const std::array<float, 4>& first);
+
 /**
  * Linear shape matching's (sum q q^T)^-1 over the template's rest positions q
  * scaled by `size`, row-major; a pseudo-inverse, so that flat and line-like
@@ -233,8 +260,10 @@ public:
   static std::string validate(const ElementTemplate& shape, const Parameters& parameters);
 
   /// Places every element (generation 0) and computes its normals; at
-  /// `startTime` (the release window's test).
-  void initialize(const RangeRunner& run, double startTime = 0.0);
+  /// `startTime` (the release window's test, and the flow Along Flow
+  /// samples in `field`, when given).
+  void initialize(
+    const RangeRunner& run, double startTime = 0.0, const VectorField* field = nullptr);
 
   /// Whether the step [t, t + h) releases elements (bp::releasesAt).
   bool releasesAt(double t, double h) const { return bp::releasesAt(this->Params, t, h); }
@@ -345,8 +374,26 @@ private:
     float shareA, shareB; ///< part of the correction each end takes (pinned ends take none)
   };
 
+  /// The flow Along Flow samples where an element is placed: the field at
+  /// the second slice's weight; without a field the turn is left pending.
+  struct ReleaseFlow
+  {
+    const VectorField* field;
+    float weight;
+  };
   /// Places element e's next generation, hidden unless `releasing`.
-  void place(std::size_t e, bool releasing);
+  void place(std::size_t e, bool releasing, const ReleaseFlow& flow);
+  /// Turns element e, placed at its initial centre, to `q`: its orientation,
+  /// pose and particle positions.
+  void orient(std::size_t e, const std::array<float, 4>& q);
+  /// Along Flow: turns element e onto the flow at its initial centre.
+  void alignToFlow(std::size_t e, const ReleaseFlow& flow);
+  /// Whether element e is placed anew in the next step: flagged by the
+  /// reposition test, hidden, or out of lifetime.
+  bool isDue(std::size_t e) const
+  {
+    return (this->ResetFlags[e] & (ResetDue | ReleaseHidden)) || this->Lifetimes[e] <= 0.0f;
+  }
   /// The release centre of element `element`'s generation (Engine::place).
   void releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// What a step decides once for every element: the second slice's weight

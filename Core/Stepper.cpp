@@ -37,7 +37,7 @@ ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
 
 void CpuStepper::initialize(double startTime)
 {
-  this->Current.initialize(this->Run, startTime);
+  this->Current.initialize(this->Run, startTime, this->Field.get());
 }
 
 void CpuStepper::step(double t, double h)

@@ -129,7 +129,7 @@ std::string resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolu
   return std::string();
 }
 
-/// On a flat field (one axis of one point) random orientations turn the
+/// On a flat field (one axis of one point) Random and Along Flow turn the
 /// elements about that axis only, the template's x-y plane laid into the
 /// field's plane, so that strips are not seen edge-on.
 void resolvePlane(const FieldFacts& f, Parameters& p)
@@ -143,7 +143,7 @@ void resolvePlane(const FieldFacts& f, Parameters& p)
       ++flatAxes;
     }
   }
-  if (!p.randomOrientation || flatAxes != 1)
+  if (p.orientation == Orientation::Fixed || flatAxes != 1)
   {
     return;
   }
@@ -286,8 +286,8 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
       longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
     }
     const double frames = std::ceil(longest / (FrameSteps * dt) - 1e-9);
-    line.framesPerInterval = int(std::min(
-      std::max(frames, double(line.framesPerInterval)), double(MaxFramesPerInterval)));
+    line.framesPerInterval =
+      int(std::min(std::max(frames, double(line.framesPerInterval)), double(MaxFramesPerInterval)));
     if (frames > double(MaxFramesPerInterval))
     {
       std::ostringstream w;

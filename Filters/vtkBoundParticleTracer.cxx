@@ -60,6 +60,7 @@ vtkStandardNewMacro(vtkBoundParticleTracer);
 BP_CLAMPED_SETTER(ElementShape, int, POINT, FISH)
 BP_CLAMPED_SETTER(TemplateSprings, int, EDGES, ALL_PAIRS)
 BP_CLAMPED_SETTER(StepSizeUnit, int, CELL_LENGTH, TIME)
+BP_CLAMPED_SETTER(ReleaseOrientation, int, FIXED_ORIENTATION, ALONG_FLOW)
 BP_CLAMPED_SETTER(Integrator, int, EULER, RUNGE_KUTTA_4)
 BP_CLAMPED_SETTER(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING)
 BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
@@ -133,7 +134,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.trailLength = this->Trails ? this->TrailLength : 0;
   s.trailSpacing = this->TrailSpacing;
   bp::Parameters& p = s.engine;
-  p.randomOrientation = this->RandomOrientation != 0;
+  p.orientation = bp::Orientation(this->ReleaseOrientation);
   p.integrator = bp::Integrator(this->Integrator);
   p.restoration = bp::Restoration(this->Restoration);
   p.iterations = this->RestorationIterations;
@@ -509,7 +510,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->EmitterCenter[2] << "\n";
   os << indent << "EmitterSize: " << this->EmitterSize[0] << " " << this->EmitterSize[1] << " "
      << this->EmitterSize[2] << "\n";
-  os << indent << "RandomOrientation: " << this->RandomOrientation << "\n";
+  os << indent << "ReleaseOrientation: " << this->ReleaseOrientation << "\n";
   os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
      << "\n";
   os << indent << "StepSize: " << this->StepSize << " ("
@@ -529,5 +530,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << ", FramesPerInputStep: " << this->FramesPerInputStep << "\n";
   os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
   os << indent << "Engine: "
-     << (this->Engine == GPU ? "GPU" : this->Engine == CPU ? "CPU" : "Automatic") << "\n";
+     << (this->Engine == GPU      ? "GPU"
+            : this->Engine == CPU ? "CPU"
+                                  : "Automatic")
+     << "\n";
 }

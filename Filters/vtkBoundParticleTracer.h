@@ -110,6 +110,12 @@ public:
     TUBE,
     TORUS
   };
+  enum ReleaseOrientations
+  {
+    FIXED_ORIENTATION = 0,
+    RANDOM_ORIENTATION,
+    ALONG_FLOW
+  };
   enum StepSizeUnits
   {
     CELL_LENGTH = 0,
@@ -186,11 +192,16 @@ public:
   ///@}
 
   ///@{
-  /// Uniform random orientation per element (default on); when off every
-  /// element is placed turned by ElementRotation (degrees about X, then Y, then Z).
-  vtkSetMacro(RandomOrientation, vtkTypeBool);
-  vtkGetMacro(RandomOrientation, vtkTypeBool);
-  vtkBooleanMacro(RandomOrientation, vtkTypeBool);
+  /// How each element is turned when it is placed: ALONG_FLOW (default), its
+  /// long (x) axis turned onto the flow at its release centre by the
+  /// shortest turn from ElementRotation, so that strips read as short stream
+  /// ribbons from the first frame; RANDOM_ORIENTATION, a uniform random
+  /// rotation; FIXED_ORIENTATION, every element turned by ElementRotation
+  /// (degrees about X, then Y, then Z). On a flat field the turns are about
+  /// its flat axis only. Clamped to [FIXED_ORIENTATION, ALONG_FLOW]; a value
+  /// outside warns.
+  virtual void SetReleaseOrientation(int value);
+  vtkGetMacro(ReleaseOrientation, int);
   vtkSetVector3Macro(ElementRotation, double);
   vtkGetVector3Macro(ElementRotation, double);
   ///@}
@@ -451,7 +462,7 @@ protected:
   double ElementSize = 0.0;
   double EmitterCenter[3] = { 0.0, 0.0, 0.0 };
   double EmitterSize[3] = { -1.0, -1.0, -1.0 };
-  vtkTypeBool RandomOrientation = 1;
+  int ReleaseOrientation = ALONG_FLOW;
   double ElementRotation[3] = { 0.0, 0.0, 0.0 };
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;

@@ -226,7 +226,7 @@ GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& share
   pass.setVec3("bpEmitterMin", p.emitterMin.data());
   pass.setVec3("bpEmitterMax", p.emitterMax.data());
   pass.setFloat("bpElementSize", p.elementSize);
-  pass.setInt("bpRandomOrientation", p.randomOrientation ? 1 : 0);
+  pass.setInt("bpOrientation", int(p.orientation));
   pass.setVec3("bpFrameRow0", p.frame.data());
   pass.setVec3("bpFrameRow1", p.frame.data() + 3);
   pass.setVec3("bpFrameRow2", p.frame.data() + 6);

@@ -58,7 +58,7 @@ std::string GpuSystem::checkTextureSize(const ParticleLayout&, int textureSizeLi
 void GpuSystem::initialize(double startTime)
 {
   // Place every element as generation 0 ...
-  this->reset(true, releasesAt(this->parameters, startTime, 0.0));
+  this->reset(true, releasesAt(this->parameters, startTime, 0.0), startTime);
   this->advect(true, 0.0, 0.0);
   // ... with no flag set and zero force, as Engine::initialize leaves them.
   const GLuint placed = this->state.advected.get();
@@ -79,7 +79,7 @@ void GpuSystem::step(double t, double h)
     this->state.recordTrail(this->passes, this->layout, t);
   }
   // 1. Reset.
-  this->reset(false, releasesAt(this->parameters, t, h));
+  this->reset(false, releasesAt(this->parameters, t, h), t);
   // 2. Advect.
   this->advect(false, t, h);
   // 3. Restore: K iterations of the elements' own restoration, each followed,
@@ -136,8 +136,8 @@ GpuPass GpuSystem::begin(const GlProgram& program) const
   return this->passes.begin(program, shared);
 }
 
-/// The reset pass: places flagged (or, initialising, all) elements.
-void GpuSystem::reset(bool initialize, bool releasing)
+/// The reset pass: places flagged (or, initialising, all) elements at time t.
+void GpuSystem::reset(bool initialize, bool releasing, double t)
 {
   GpuState& s = this->state;
   GpuPass pass = this->begin(this->passes.programs.reset);
@@ -148,7 +148,11 @@ void GpuSystem::reset(bool initialize, bool releasing)
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setInt("bpReleasing", releasing ? 1 : 0);
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
-  pass.setInt("bpPlaneAxis", this->parameters.randomOrientation ? this->parameters.planeAxis : -1);
+  pass.setInt("bpPlaneAxis", this->parameters.planeAxis);
+  // Along Flow samples the flow at the release centre at t (Engine::alignToFlow).
+  const VectorField* field = this->fieldCache.field();
+  pass.setInt("bpAlongFlow", field && this->parameters.orientation == Orientation::AlongFlow);
+  pass.setFloat("bpReleaseWeight", field ? field->timeWeight(t) : 0.0f);
   this->fieldCache.applyReleaseMaskTo(pass, this->parameters.releaseMinSpeed);
   pass.setInt("bpSeedCount", int(this->parameters.seedPoints.size() / 3));
   pass.texture("bpSeedPoints", this->SeedPoints.get());

@@ -63,7 +63,7 @@ private:
   std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
 
   /// `releasing`: the step overlaps the release window (releasesAt).
-  void reset(bool initialize, bool releasing);
+  void reset(bool initialize, bool releasing, double t);
   void advect(bool placeOnly, double t, double h);
   GLuint restoreOnce(GLuint positions, int& restorationPass);
   GLuint matchShapes(GLuint positions, int& restorationPass);

@@ -60,7 +60,7 @@ float bpDraw(int e, float generation, uint draw)
 uniform vec3 bpEmitterMin;
 uniform vec3 bpEmitterMax;
 uniform float bpElementSize;
-uniform bool bpRandomOrientation;
+uniform int bpOrientation; // Parameters::orientation: 0 Fixed, 1 Random, 2 Along Flow
 uniform vec3 bpFrameRow0;
 uniform vec3 bpFrameRow1;
 uniform vec3 bpFrameRow2;
@@ -135,11 +135,11 @@ float bpLifetimeOf(int e, float generation)
 
 // Position of template particle `rest` in element e of the given generation.
 // A particle at `rest` of an element placed at its release centre c with the
-// orientation q the reset pass drew (the frame's rows without random orientation).
+// orientation q the reset pass chose (the frame's rows when Fixed).
 vec3 bpPlace(vec3 c, vec4 q, vec3 rest)
 {
   vec3 r0 = bpFrameRow0, r1 = bpFrameRow1, r2 = bpFrameRow2;
-  if (bpRandomOrientation)
+  if (bpOrientation != 0)
   {
     // The reset pass's quaternion as a matrix (quaternionToMatrix).
     float x = q.x, y = q.y, z = q.z, w = q.w;

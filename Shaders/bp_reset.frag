@@ -2,7 +2,8 @@
 // of lifetime (Engine::stepElement, Engine::place). Writes the element state
 // (lifetime, generation, placed now, 0), the element's release centre with
 // whether it is hidden (outside the release window; Engine::place), its
-// orientation quaternion (kept by shape matching) and its pose (the
+// orientation quaternion (kept by shape matching; Along Flow turns it onto
+// the flow sampled at the centre, Engine::alignToFlow) and its pose (the
 // orientation, or the identity for one particle). Spins need nothing here:
 // they are 0 until the pose pass writes every element's at the step's end.
 uniform sampler2D bpElementState; // (lifetime, generation, flag, non-finite) after the last step
@@ -12,7 +13,50 @@ uniform sampler2D bpPoses;
 uniform bool bpInitialize; // place every element as generation 0
 uniform bool bpReleasing;  // the step overlaps the release window (releasesAt)
 uniform vec4 bpFrameQuaternion;
-uniform int bpPlaneAxis; // Parameters::planeAxis
+uniform int bpPlaneAxis;       // Parameters::planeAxis
+uniform bool bpAlongFlow;      // Orientation::AlongFlow, with a field to sample
+uniform float bpReleaseWeight; // the second slice's weight at the step's start
+
+// The product r * q of unit quaternions: q, then r (multiplyQuaternions).
+vec4 bpMultiply(vec4 r, vec4 q)
+{
+  return vec4(r.w * q.x + r.x * q.w + r.y * q.z - r.z * q.y,
+    r.w * q.y - r.x * q.z + r.y * q.w + r.z * q.x,
+    r.w * q.z + r.x * q.y - r.y * q.x + r.z * q.w,
+    r.w * q.w - r.x * q.x - r.y * q.y - r.z * q.z);
+}
+
+// The frame's x axis turned onto the flow v (alongFlowQuaternion).
+vec4 bpAlongFlowQuaternion(vec3 v)
+{
+  vec3 d = v;
+  if (bpPlaneAxis >= 0)
+  {
+    d[bpPlaneAxis] = 0.0;
+  }
+  float m = max(max(abs(d.x), abs(d.y)), abs(d.z));
+  if (any(isnan(d)) || any(isinf(d)) || !(m > 0.0))
+  {
+    return bpFrameQuaternion;
+  }
+  d = vec3(d.x / m, d.y / m, d.z / m);
+  float inverse = 1.0 / sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  d = vec3(d.x * inverse, d.y * inverse, d.z * inverse);
+  vec3 a = vec3(bpFrameRow0.x, bpFrameRow1.x, bpFrameRow2.x);
+  float c = a.x * d.x + a.y * d.y + a.z * d.z;
+  vec4 r;
+  if (1.0 + c < 1e-6)
+  {
+    r = vec4(bpFrameRow0.z, bpFrameRow1.z, bpFrameRow2.z, 0.0);
+  }
+  else
+  {
+    r = vec4(a.y * d.z - a.z * d.y, a.z * d.x - a.x * d.z, a.x * d.y - a.y * d.x, 1.0 + c);
+    float n = 1.0 / sqrt(r.x * r.x + r.y * r.y + r.z * r.z + r.w * r.w);
+    r = vec4(r.x * n, r.y * n, r.z * n, r.w * n);
+  }
+  return bpMultiply(r, bpFrameQuaternion);
+}
 
 layout(location = 0) out vec4 outState;
 layout(location = 1) out vec4 outCenter;
@@ -41,19 +85,15 @@ void main()
     outState = vec4(bpLifetimeOf(e, generation), generation, 1.0, 0.0);
     outCenter = vec4(bpCenterOf(e, generation), bpReleasing ? 0.0 : 1.0);
     outOrientation = bpFrameQuaternion;
-    if (bpRandomOrientation && bpPlaneAxis >= 0)
+    if (bpOrientation == 1 && bpPlaneAxis >= 0)
     {
       // A turn about the flat field's axis after the frame (inPlaneQuaternion).
       float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, 3u);
       vec4 r = vec4(0.0, 0.0, 0.0, cos(turn)); // half the angle
       r[bpPlaneAxis] = sin(turn);
-      vec4 q = bpFrameQuaternion;
-      outOrientation = vec4(r.w * q.x + r.x * q.w + r.y * q.z - r.z * q.y,
-        r.w * q.y - r.x * q.z + r.y * q.w + r.z * q.x,
-        r.w * q.z + r.x * q.y - r.y * q.x + r.z * q.w,
-        r.w * q.w - r.x * q.x - r.y * q.y - r.z * q.z);
+      outOrientation = bpMultiply(r, bpFrameQuaternion);
     }
-    else if (bpRandomOrientation)
+    else if (bpOrientation == 1)
     {
       // Shoemake's quaternion (quaternionFromUniforms).
       int d = bpDrawElement(e);
@@ -63,6 +103,11 @@ void main()
       float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
       float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
       outOrientation = vec4(s1 * sin(a), s1 * cos(a), s2 * sin(b), s2 * cos(b));
+    }
+    else if (bpAlongFlow && !bpLinked)
+    {
+      // A super set keeps its lattice's one orientation (Engine::place).
+      outOrientation = bpAlongFlowQuaternion(bpSample(outCenter.xyz, bpReleaseWeight));
     }
     // One particle has no orientation to show: its pose stays the identity.
     outPose = bpParticles > 1 ? outOrientation : vec4(0.0, 0.0, 0.0, 1.0);

@@ -34,7 +34,7 @@ def main():
     tracer.ElementSize = 0.18
     tracer.EmitterCenter = [0.0, 0.0, 0.3]
     tracer.EmitterSize = [1.6, 1.6, 0.3]
-    tracer.RandomOrientation = 0
+    tracer.ReleaseOrientation = "Fixed"
     tracer.ElementRotation = [90, 0, 0]
     tracer.Integrator = "Runge-Kutta 4"
     tracer.ResetWhen = "Any Particle Leaves"

@@ -28,7 +28,7 @@ def main():
     ring = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
                                ElementShape="Cross", NumberOfElements=40,
                                Linking="Ring", ElementSize=0.12, EmitterCenter=[0.4, -0.3, -0.3],
-                               EmitterSize=[1.0, 1.0, 0.0], RandomOrientation=0,
+                               EmitterSize=[1.0, 1.0, 0.0], ReleaseOrientation="Fixed",
                                Integrator="Runge-Kutta 4", RestorationIterations=4,
                                LifetimeRange=[100, 100])
     time = 1.0

@@ -33,7 +33,7 @@ def trails_scene(engine="CPU"):
     flow.UpdatePipeline()
     tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
                                  ElementShape="Paddlewheel", NumberOfElements=4,
-                                 ElementSize=0.2, RandomOrientation=0,
+                                 ElementSize=0.2, ReleaseOrientation="Fixed",
                                  ElementRotation=[90.0, 0.0, 0.0],
                                  Integrator="Runge-Kutta 4", RestorationIterations=4,
                                  StepSizeUnit="Time", StepSize=0.04, Duration=TIME,

@@ -33,7 +33,7 @@ bp::Parameters oneElementAt(float x)
   p.elementSize = 0.2f;
   p.emitterMin = { x, 0, 0 };
   p.emitterMax = { x, 0, 0 };
-  p.randomOrientation = false;
+  p.orientation = bp::Orientation::Fixed;
   p.lifetimeMin = p.lifetimeMax = 1000.0f;
   return p;
 }

@@ -193,7 +193,7 @@ TEST(Engine, CenterOrAnyParticleLeaving)
     bp::Parameters p = centralParameters(1, 0.5f);
     p.emitterMin = { 0.5f, 0, 0 };
     p.emitterMax = { 0.5f, 0, 0 };
-    p.randomOrientation = false;
+    p.orientation = bp::Orientation::Fixed;
     p.resetWhen = when;
     bp::Engine engine = configured(bp::BuiltinShape::Strip4, p);
     int steps = 0;
@@ -360,7 +360,7 @@ TEST(Engine, ShapeMatchingOrientationFollowsTheRotation)
     bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
   bp::Parameters p = centralParameters(1, 0.3f);
   p.emitterMin = p.emitterMax = { 0.3f, 0.0f, 0.0f };
-  p.randomOrientation = false;
+  p.orientation = bp::Orientation::Fixed;
   p.restoration = bp::Restoration::ShapeMatching;
   p.integrator = bp::Integrator::RK4;
   bp::Engine engine = configured(bp::BuiltinShape::Cross, p);
@@ -478,6 +478,116 @@ TEST(Engine, InPlaneOrientationsKeepTheTemplateInTheFieldsPlane)
   for (std::size_t e = 1; e < 200; ++e)
     differ = differ || std::abs(first[4 * e + 1] - first[1]) > 1e-3f;
   EXPECT_TRUE(differ);
+}
+
+namespace
+{
+/// The frame's x axis turned by q.
+std::array<float, 3> longAxisOf(const float q[4])
+{
+  float R[9];
+  bp::quaternionToMatrix(q, R);
+  return { R[0], R[3], R[6] };
+}
+
+/// The angle in degrees between the directions of a and v.
+double degreesBetween(const std::array<float, 3>& a, const float v[3])
+{
+  const double n = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]) *
+    std::sqrt(double(a[0]) * a[0] + double(a[1]) * a[1] + double(a[2]) * a[2]);
+  const double c = (a[0] * double(v[0]) + a[1] * double(v[1]) + a[2] * double(v[2])) / n;
+  return std::acos(std::min(1.0, std::max(-1.0, c))) * 180.0 / Pi;
+}
+} // namespace
+
+TEST(Engine, AlongFlowTurnsTheLongAxisOntoTheFlowByTheShortestTurn)
+{
+  const std::array<float, 9> frame = bp::rotationFromDegrees(0, 0, 0);
+  const std::array<float, 4> first = bp::quaternionFromRotation(frame);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  for (int k = 0; k < 200; ++k)
+  {
+    // Any scale of speed, from odd units' 1e-30 to 1e30.
+    const float scale = std::pow(10.0f, float(k % 7) * 10.0f - 30.0f);
+    const float v[3] = { scale * uniform(random), scale * uniform(random),
+      scale * uniform(random) };
+    const std::array<float, 4> q = bp::alongFlowQuaternion(v, -1, frame, first);
+    EXPECT_NEAR(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-5);
+    EXPECT_LT(degreesBetween(longAxisOf(q.data()), v), 0.05) << "flow " << k;
+    // The shortest turn: about an axis across both directions (none along x).
+    const double turn = 2.0 * std::acos(std::min(1.0f, std::abs(q[3]))) * 180.0 / Pi;
+    EXPECT_NEAR(turn, degreesBetween({ 1, 0, 0 }, v), 0.05);
+  }
+  // Against the frame's axis: a half turn about its z axis.
+  const float against[3] = { -2, 0, 0 };
+  const std::array<float, 4> back = bp::alongFlowQuaternion(against, -1, frame, first);
+  EXPECT_LT(degreesBetween(longAxisOf(back.data()), against), 0.05);
+  EXPECT_NEAR(std::abs(back[2]), 1.0, 1e-6);
+  // No direction to follow: the frame stays.
+  const float none[3][3] = { { 0, 0, 0 }, { NAN, 1, 0 }, { INFINITY, 0, 0 } };
+  for (const auto& v : none)
+    EXPECT_EQ(bp::alongFlowQuaternion(v, -1, frame, first), first);
+}
+
+TEST(Engine, AlongFlowOnAFlatFieldTurnsAboutItsAxisFromElementRotation)
+{
+  // A 2D field in x-z (y flat) lays the template's x-y plane there; an
+  // out-of-plane flow component is dropped, so the element stays flat.
+  const std::array<float, 9> frame = bp::rotationFromDegrees(-90, 0, 0);
+  const std::array<float, 4> first = bp::quaternionFromRotation(frame);
+  const float v[3] = { 1, 5, 1 };
+  const std::array<float, 4> q = bp::alongFlowQuaternion(v, 1, frame, first);
+  const float inPlane[3] = { 1, 0, 1 };
+  EXPECT_LT(degreesBetween(longAxisOf(q.data()), inPlane), 0.05);
+  float R[9];
+  bp::quaternionToMatrix(q.data(), R);
+  EXPECT_NEAR(std::abs(R[5]), 1.0, 1e-5); // the template's z still along y
+  // In 3D Element Rotation sets the roll: the long axis follows the flow,
+  // the turn from the rotated frame is the shortest.
+  const std::array<float, 9> rolled = bp::rotationFromDegrees(30, 0, 0);
+  const float along[3] = { 0.2f, 1, 0.1f };
+  const std::array<float, 4> r =
+    bp::alongFlowQuaternion(along, -1, rolled, bp::quaternionFromRotation(rolled));
+  EXPECT_LT(degreesBetween(longAxisOf(r.data()), along), 0.05);
+}
+
+TEST(Engine, AlongFlowPlacesEveryElementAlongTheFlowAtItsCentre)
+{
+  // Solid-body rotation: strips placed tangent to the circles they ride,
+  // each particle's position consistent with the orientation kept.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  bp::Parameters p = centralParameters(300, 0.2f);
+  p.orientation = bp::Orientation::AlongFlow;
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip8), p), "");
+  engine.initialize(bp::serialRunner(), 0.0, &field);
+  const std::size_t n = engine.particlesPerElement();
+  double worst = 0.0;
+  for (std::size_t e = 0; e < 300; ++e)
+  {
+    float v[3];
+    field.sampleWeighted(engine.initialCenters().data() + 3 * e, 0.0f, v);
+    if (std::hypot(v[0], v[1]) < 0.05f)
+      continue; // near the axis the direction is poorly defined
+    // The strip's first column to its last: along the flow.
+    const float* q = engine.positions().data() + 3 * e * n;
+    const float* last = q + 3 * (n - 2);
+    const float d[3] = { last[0] - q[0], last[1] - q[1], last[2] - q[2] };
+    const std::array<float, 3> axis = { d[0], d[1], d[2] };
+    worst = std::max(worst, degreesBetween(axis, v));
+    EXPECT_LT(degreesBetween(longAxisOf(engine.orientations().data() + 4 * e), v), 0.1);
+  }
+  EXPECT_LT(worst, 0.1);
+  // Random and Fixed are untouched by a field.
+  p.orientation = bp::Orientation::Random;
+  bp::Engine random, randomWithField;
+  ASSERT_EQ(random.configure(bp::builtinTemplate(bp::BuiltinShape::Strip8), p), "");
+  ASSERT_EQ(randomWithField.configure(bp::builtinTemplate(bp::BuiltinShape::Strip8), p), "");
+  random.initialize(bp::serialRunner());
+  randomWithField.initialize(bp::serialRunner(), 0.0, &field);
+  EXPECT_EQ(random.positions(), randomWithField.positions());
 }
 
 TEST(Engine, ASeedSourceIsTakenInOrderCycling)

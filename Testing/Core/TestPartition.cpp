@@ -125,9 +125,10 @@ bp::VectorField cut(const bp::VectorField& whole, std::array<int, 6> extent, int
   return bp::VectorField(piece, s);
 }
 
-bp::Parameters parameters()
+bp::Parameters parameters(bp::Orientation orientation = bp::Orientation::Random)
 {
   bp::Parameters p;
+  p.orientation = orientation;
   p.numberOfElements = 300;
   p.elementSize = 0.12f;
   p.emitterMin = { -0.9f, -0.9f, -0.9f };
@@ -177,7 +178,7 @@ Element elementOf(const bp::Engine& engine, std::size_t e)
 /// Runs the system on `pieces` threads; the state by element id, and the
 /// number of elements that changed pieces.
 std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, int pieces,
-  bool ghostedPieces, int steps, double dt, long long& migrated)
+  bool ghostedPieces, int steps, double dt, long long& migrated, bp::Orientation orientation)
 {
   const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
   const auto extents = splitExtent(whole.grid(), pieces);
@@ -201,9 +202,10 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
         const bp::VectorField field =
           ghostedPieces ? cut(whole, extents[std::size_t(k)], ghost) : whole;
         bp::Engine& engine = engines[std::size_t(k)];
-        errors[std::size_t(k)] = engine.configure(shape, parameters());
+        errors[std::size_t(k)] = engine.configure(shape, parameters(orientation));
         engine.setDomain(whole.domain());
-        engine.initialize(bp::serialRunner());
+        // Along Flow samples this piece's field: right for the elements it keeps.
+        engine.initialize(bp::serialRunner(), 0.0, &field);
         bp::keepOwned(engine, partition, k);
         for (int s = 0; s < steps; ++s)
         {
@@ -234,6 +236,47 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
     }
   }
   return state;
+}
+
+/// Expects runs on 2 and 4 pieces, with the whole field or ghosted pieces,
+/// to reproduce `serial`, run on `whole` from the same parameters.
+void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whole, int steps,
+  double dt, bp::Orientation orientation)
+{
+  const std::size_t n = serial.particlesPerElement();
+  for (int pieces : { 2, 4 })
+  {
+    for (bool ghosted : { false, true })
+    {
+      long long migrated = 0;
+      const auto state = runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation);
+      ASSERT_EQ(state.size(), serial.elementCount());
+      // Elements crossed between pieces, and some were reset (lifetimes end).
+      EXPECT_GT(migrated, 100) << pieces << " pieces";
+      float worst = 0.0f, worstPose = 0.0f;
+      int trailPoses = 0;
+      for (std::size_t e = 0; e < serial.elementCount(); ++e)
+      {
+        const Element& d = state.at(std::uint32_t(e));
+        const Element s = elementOf(serial, e);
+        EXPECT_EQ(d.generation, s.generation);
+        for (std::size_t i = 0; i < 3 * n; ++i)
+          worst = std::max(worst, std::abs(d.positions[i] - s.positions[i]));
+        for (std::size_t i = 0; i < 8; ++i)
+          worstPose = std::max(worstPose, std::abs(d.poseAndSpin[i] - s.poseAndSpin[i]));
+        EXPECT_EQ(d.trailGenerations, s.trailGenerations);
+        for (std::size_t i = 0; i < d.trailPositions.size(); ++i)
+          worst = std::max(worst, std::abs(d.trailPositions[i] - s.trailPositions[i]));
+        trailPoses +=
+          int(std::count(s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
+      }
+      EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
+      EXPECT_LE(worstPose, ghosted ? 1e-2f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
+      // The whole field on every piece gives the same bits; ghosted pieces
+      // locate cells from their own origin, which rounds differently.
+      EXPECT_LE(worst, ghosted ? 1e-4f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
+    }
+  }
 }
 
 } // namespace
@@ -309,44 +352,17 @@ TEST(Partition, PiecesReproduceTheSingleProcessRun)
   const bp::VectorField whole = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
   const int steps = 60;
   const double dt = 0.02;
-  bp::Engine serial;
-  ASSERT_EQ(serial.configure(bp::builtinTemplate(bp::BuiltinShape::Cross), parameters()), "");
-  serial.initialize(bp::serialRunner());
-  for (int s = 0; s < steps; ++s)
-    serial.step(whole, s * dt, dt, bp::serialRunner());
-  const std::size_t n = serial.particlesPerElement();
-
-  for (int pieces : { 2, 4 })
+  // Along Flow: an element reset into another piece is turned there
+  // (AlignPending), by the flow the single process samples.
+  for (bp::Orientation orientation : { bp::Orientation::Random, bp::Orientation::AlongFlow })
   {
-    for (bool ghosted : { false, true })
-    {
-      long long migrated = 0;
-      const auto state = runDistributed(whole, pieces, ghosted, steps, dt, migrated);
-      ASSERT_EQ(state.size(), serial.elementCount());
-      // Elements crossed between pieces, and some were reset (lifetimes end).
-      EXPECT_GT(migrated, 100) << pieces << " pieces";
-      float worst = 0.0f, worstPose = 0.0f;
-      int trailPoses = 0;
-      for (std::size_t e = 0; e < serial.elementCount(); ++e)
-      {
-        const Element& d = state.at(std::uint32_t(e));
-        const Element s = elementOf(serial, e);
-        EXPECT_EQ(d.generation, s.generation);
-        for (std::size_t i = 0; i < 3 * n; ++i)
-          worst = std::max(worst, std::abs(d.positions[i] - s.positions[i]));
-        for (std::size_t i = 0; i < 8; ++i)
-          worstPose = std::max(worstPose, std::abs(d.poseAndSpin[i] - s.poseAndSpin[i]));
-        EXPECT_EQ(d.trailGenerations, s.trailGenerations);
-        for (std::size_t i = 0; i < d.trailPositions.size(); ++i)
-          worst = std::max(worst, std::abs(d.trailPositions[i] - s.trailPositions[i]));
-        trailPoses +=
-          int(std::count(s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
-      }
-      EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
-      EXPECT_LE(worstPose, ghosted ? 1e-2f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
-      // The whole field on every piece gives the same bits; ghosted pieces
-      // locate cells from their own origin, which rounds differently.
-      EXPECT_LE(worst, ghosted ? 1e-4f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
-    }
+    SCOPED_TRACE(int(orientation));
+    bp::Engine serial;
+    ASSERT_EQ(
+      serial.configure(bp::builtinTemplate(bp::BuiltinShape::Cross), parameters(orientation)), "");
+    serial.initialize(bp::serialRunner(), 0.0, &whole);
+    for (int s = 0; s < steps; ++s)
+      serial.step(whole, s * dt, dt, bp::serialRunner());
+    expectPiecesReproduce(serial, whole, steps, dt, orientation);
   }
 }

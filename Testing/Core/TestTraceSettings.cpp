@@ -263,8 +263,7 @@ TEST(TimeLine, AShortSeriesGetsEnoughFramesForSmoothPlay)
     bp::resolveTimeLine(0.0, 0, 101, 0.5, true, eleven, bp::TimeScale()).framesPerInterval, 10);
   EXPECT_EQ(bp::resolveTimeLine(0.0, 1, 101, 0.5, true, eleven, slow).framesPerInterval, 1);
   // Two steps: 100 frames between them.
-  EXPECT_EQ(
-    bp::resolveTimeLine(0.0, 0, 101, 0.5, true, { 0, 6 }, slow).framesPerInterval, 100);
+  EXPECT_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, { 0, 6 }, slow).framesPerInterval, 100);
 }
 
 TEST(TimeLine, WarnsWhenTheVelocitysScaleDoesNotFitTheGridsUnits)
@@ -300,6 +299,6 @@ TEST(TraceSettings, AFlatFieldTurnsElementsInItsPlaneOnly)
   bp::FieldFacts f = box();
   f.dims[2] = 1;
   bp::TraceSettings fixed;
-  fixed.engine.randomOrientation = false;
+  fixed.engine.orientation = bp::Orientation::Fixed;
   EXPECT_EQ(bp::resolveSettings(fixed, f).parameters.planeAxis, -1);
 }

@@ -575,7 +575,7 @@ TEST(BoundParticleTracer, NonFiniteSettingsAreRejected)
   expectRejected(good, "ElementRotation",
     [](vtkBoundParticleTracer* t)
     {
-      t->SetRandomOrientation(0);
+      t->SetReleaseOrientation(vtkBoundParticleTracer::FIXED_ORIENTATION);
       t->SetElementRotation(std::nan(""), 0, 0);
     });
   expectRejected(good, "Duration", [](vtkBoundParticleTracer* t) { t->SetDuration(INFINITY); });

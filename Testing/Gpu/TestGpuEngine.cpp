@@ -86,6 +86,7 @@ struct Case
   bool seedsOutside = false; // every third seed point outside the field
   bool window = false;       // release only while 0.3 <= t <= 0.8
   bool poses = false;        // Parameters::trackPoses, and a trail of 4 poses every 3 steps
+  bp::Orientation orientation = bp::Orientation::Random;
 };
 
 /// The largest difference of a quaternion's components, taking the GPU's q
@@ -291,6 +292,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.trailStart = 0.02;
     p.trailInterval = 3 * dt;
   }
+  p.orientation = c.orientation;
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -308,7 +310,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
   ASSERT_EQ(cpu.configure(shape, p), "");
   // What CpuStepper::setField gives the engine; the GPU makes its own.
   cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed));
-  cpu.initialize(bp::serialRunner(), 0.0);
+  cpu.initialize(bp::serialRunner(), 0.0, &field);
   bp::GpuEngine gpu;
   const Released released{ gpu }; // also when an assertion returns early
   ASSERT_EQ(gpu.configure(shape, p), "");
@@ -457,6 +459,36 @@ TEST(GpuEngine, MatchesWithInPlaneOrientations)
       false };
     c.planeAxis = axis;
     compare(c, 100);
+  }
+}
+
+TEST(GpuEngine, MatchesWithAlongFlowOrientations)
+{
+  // Placed (0 steps) and released again many times, on an unsteady field
+  // (the flow sampled at each release's time), a masked one (NaN at some
+  // releases: the frame is kept), in a plane, and from seed points.
+  Case unsteady{ bp::BuiltinShape::Strip8, 400, bp::Integrator::RK2,
+    bp::Restoration::AveragedJacobi, true };
+  unsteady.orientation = bp::Orientation::AlongFlow;
+  for (int steps : { 0, 150 })
+  {
+    SCOPED_TRACE(steps);
+    compare(unsteady, steps);
+  }
+  Case masked{ bp::BuiltinShape::Fish, 300, bp::Integrator::Euler, bp::Restoration::ShapeMatching,
+    false };
+  masked.orientation = bp::Orientation::AlongFlow;
+  masked.masked = true;
+  masked.seeds = 40;
+  compare(masked, 100);
+  for (int axis : { 0, 2 })
+  {
+    SCOPED_TRACE(axis);
+    Case flat{ bp::BuiltinShape::Cross, 300, bp::Integrator::RK4, bp::Restoration::ShapeMatching,
+      true };
+    flat.orientation = bp::Orientation::AlongFlow;
+    flat.planeAxis = axis;
+    compare(flat, 100);
   }
 }
 

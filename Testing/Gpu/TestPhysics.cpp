@@ -178,7 +178,7 @@ TEST_P(Physics, SolidBodyRotationKeepsShapesAndTurnsWithTheField)
   const bp::VectorField field =
     steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
   bp::Parameters p = placed(40, 0.25f, { -0.5f, -0.5f, -0.5f }, { 0.5f, 0.5f, 0.5f });
-  p.randomOrientation = false; // flat in the plane of rotation
+  p.orientation = bp::Orientation::Fixed; // flat in the plane of rotation
   p.integrator = bp::Integrator::RK4;
   const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
   System system(GetParam(), cross, p, field);
@@ -224,7 +224,7 @@ TEST_P(Physics, ShearLayerPaddlewheelsTurnAtHalfTheVorticity)
   for (float level : { 0.5f, -0.5f })
   {
     bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
-    p.randomOrientation = false;
+    p.orientation = bp::Orientation::Fixed;
     p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
     p.restoration = bp::Restoration::ShapeMatching;
     p.integrator = bp::Integrator::RK4;
@@ -368,7 +368,7 @@ TEST_P(Physics, VerticalShearStripsStayInsideAndStraight)
   const float size = 0.3f, r = 0.5f * size; // emitter shrunk by the element's radius
   bp::Parameters p = placed(200, size, { -1 + r, -1 + r, r }, { 1 - r, 1 - r, 0.5f - r });
   p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
-  p.randomOrientation = false; // lying in horizontal planes, where the wind is uniform
+  p.orientation = bp::Orientation::Fixed; // lying in horizontal planes, where the wind is uniform
   const bp::ElementTemplate strip = bp::builtinTemplate(bp::BuiltinShape::Strip16);
   System system(GetParam(), strip, p, field);
   const double rest =
@@ -442,7 +442,7 @@ TEST_P(Physics, SuperSetTurnsAsOneInSolidBodyRotation)
     SCOPED_TRACE(bp::linkingName(linking));
     const bool sheet = linking == bp::Linking::Sheet;
     bp::Parameters p = placed(sheet ? 64 : 24, 0.1f, { -0.6f, -0.4f, 0 }, { 0.6f, 0.4f, 0 });
-    p.randomOrientation = false;
+    p.orientation = bp::Orientation::Fixed;
     p.integrator = bp::Integrator::RK4;
     p.linking = linking;
     const bp::ElementTemplate shape =
@@ -501,7 +501,7 @@ TEST_P(Physics, SuperSetChainHoldsTogetherInShear)
   {
     // A vertical chain from z = -0.8 to 0.8: the shear turns and stretches it.
     bp::Parameters p = placed(33, 0.05f, { 1, 0.5f, -0.8f }, { 1, 0.5f, 0.8f });
-    p.randomOrientation = false;
+    p.orientation = bp::Orientation::Fixed;
     p.linking = bp::Linking::Chain;
     p.linkStiffness = stiffness;
     p.iterations = iterations;
@@ -535,7 +535,7 @@ TEST_P(Physics, LinearShapeMatchingLetsElementsShear)
   const auto run = [&](bool linear, float beta)
   {
     bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, 0.5f }, { 1.5f, 0.6f, 0.5f });
-    p.randomOrientation = false;
+    p.orientation = bp::Orientation::Fixed;
     p.frame = bp::rotationFromDegrees(90, 0, 0);
     p.restoration = bp::Restoration::ShapeMatching;
     p.linearShapeMatching = linear;

@@ -29,7 +29,7 @@ flow = source_type(Flow="Shear Layer", Resolution=[16, 16, 16])
 flow.UpdatePipeline()
 tracer = tracer_type(Input=flow)
 expected = ["Vectors", "ElementShape", "NumberOfElements", "ElementSize", "EmitterCenter",
-            "EmitterSize", "RandomOrientation", "LifetimeRange", "StepSize", "Integrator",
+            "EmitterSize", "ReleaseOrientation", "LifetimeRange", "StepSize", "Integrator",
             "Restoration", "RestorationIterations", "ResetWhen", "Seed", "TimestepValues"]
 names = tracer.ListProperties()
 for name in expected:

@@ -103,7 +103,7 @@ bptest.check(info.GetNumberOfCells() == 20 * sphereInfo.GetNumberOfCells(),
 # link, one per particle), its elements released on the lattice together.
 sheet = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Cross", NumberOfElements=12,
                             Linking="Sheet", LatticeWidth=4, EmitterCenter=[2, 0.5, 0],
-                            EmitterSize=[2, 0.5, 0], RandomOrientation=0)
+                            EmitterSize=[2, 0.5, 0], ReleaseOrientation="Fixed")
 sheet.UpdatePipeline(0.5)
 data = servermanager.Fetch(sheet)
 links = 3 * 3 + 4 * 2
