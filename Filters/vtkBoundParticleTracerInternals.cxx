@@ -181,7 +181,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     requested = this->Resampler.arrayName();
   }
   // Only a dataset has point data to choose from (readSlice says what else came).
-  vtkDataArray* vectors = resampled ? resampled->GetPointData()->GetArray(requested.c_str())
+  vtkDataArray* vectors = resampled   ? resampled->GetPointData()->GetArray(requested.c_str())
     : vtkDataSet::SafeDownCast(input) ? self->GetInputArrayToProcess(0, inputVector, association)
                                       : nullptr;
   int extent[6];
@@ -255,8 +255,9 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
   vtkNew<vtkImageData> whole;
   std::string warning;
   const int* dims = self->ResampleDimensions;
-  const std::string error = this->Resampler.resample(input, vectorsChoice(self),
-    { dims[0], dims[1], dims[2] }, this->Layout.Controller, this->Steppers.runner(), whole, warning);
+  const std::string error =
+    this->Resampler.resample(input, vectorsChoice(self), { dims[0], dims[1], dims[2] },
+      this->Layout.Controller, this->Steppers.runner(), whole, warning);
   if (!warning.empty() && !this->WarnedResample)
   {
     this->WarnedResample = true; // once per configuration, as the mask's
@@ -508,10 +509,9 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
     {
       float v[3];
       field.sample(x, start, v);
-      still += std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]) <
-          stillSpeed
-        ? 1
-        : 0;
+      still +=
+        std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]) < stillSpeed ? 1
+                                                                                                : 0;
     }
     bool nearBoundary = false;
     for (int a = 0; a < 3; ++a)
@@ -564,18 +564,18 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   const std::size_t seeds = p.seedPoints.size() / 3;
   if (still > noFlow)
   {
-    vtkWarningWithObjectMacro(self,
-      << still - noFlow << " of the Seed Source's " << seeds
-      << " points in the flow lie where it is slower than 1% of its top speed at the start: "
-         "elements released there barely move. Move the seeds into faster flow.");
+    vtkWarningWithObjectMacro(
+      self, << still - noFlow << " of the Seed Source's " << seeds
+            << " points in the flow lie where it is slower than 1% of its top speed at the start: "
+               "elements released there barely move. Move the seeds into faster flow.");
   }
   if (p.numberOfElements > 2 * seeds)
   {
-    vtkWarningWithObjectMacro(self,
-      << p.numberOfElements << " elements share the Seed Source's " << seeds
-      << " points: about " << (p.numberOfElements + seeds - 1) / seeds
-      << " start at each point, on top of one another. Give the seeds more points (e.g. a "
-         "Line's Resolution), or fewer elements.");
+    vtkWarningWithObjectMacro(
+      self, << p.numberOfElements << " elements share the Seed Source's " << seeds
+            << " points: about " << (p.numberOfElements + seeds - 1) / seeds
+            << " start at each point, on top of one another. Give the seeds more points (e.g. a "
+               "Line's Resolution), or fewer elements.");
   }
   if (noFlow > 0)
   {
@@ -910,6 +910,13 @@ void vtkBoundParticleTracer::vtkInternals::addSettingsFieldData(vtkPolyData* out
   bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);
   bpvtk::addFieldValue(output, "ElementSize", this->ResolvedElementSize);
   bpvtk::addFieldValue(output, "SimulationTime", this->target());
+  if (this->Parameters.trailLength > 0)
+  {
+    // The age at which a trail pose has faded out on the Bound Particles
+    // display: one interval past the oldest pose (as its GPU mapper fades).
+    bpvtk::addFieldValue(
+      output, "TrailFadeSpan", (this->Parameters.trailLength + 1) * this->Parameters.trailInterval);
+  }
   if (this->Resampled)
   {
     // The grid a mesh was resampled onto (TracerResample.h).

@@ -3,6 +3,7 @@
 
 #include "BoundParticleWorkQueues.h"
 #include "OutputArrays.h"
+#include "TrailFade.h"
 #include "WorkQueue.h"
 #include "vtkBoundParticleTracer.h"
 #include "vtkOpenGLBoundParticleMapper.h"
@@ -31,9 +32,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkView.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -44,6 +47,11 @@ struct vtkBoundParticleRepresentation::vtkInternals
   vtkNew<vtkProperty> Property;
   vtkNew<vtkOpenGLBoundParticleMapper> GpuMapper;
   vtkNew<vtkOpenGLKeptCellsMapper> CpuMapper;
+  /// The CPU output with trails that fade: its colours mapped here, their
+  /// alpha scaled by age (TrailFade.h), drawn as direct scalars.
+  vtkNew<vtkOpenGLKeptCellsMapper> FadeMapper;
+  vtkNew<vtkPolyData> Faded;
+  std::string FadedFrom; // what Faded's colours were made from
   vtkSmartPointer<vtkPolyData> Cache;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
   /// The GPU request is left on the input until the view renders, for this
@@ -99,6 +107,10 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   I.CpuMapper->SetUseLookupTableScalarRange(1);
   I.CpuMapper->SetScalarVisibility(0);
   I.GpuMapper->SetUseLookupTableScalarRange(1);
+  I.FadeMapper->SetScalarModeToUsePointFieldData();
+  I.FadeMapper->SelectColorArray("BoundParticlesFadedColors");
+  I.FadeMapper->SetColorModeToDirectScalars();
+  I.FadeMapper->SetScalarVisibility(1);
 }
 
 vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation()
@@ -355,7 +367,9 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
     else
     {
       I.CpuMapper->SetInputDataObject(piece);
-      I.Actor->SetMapper(I.CpuMapper);
+      I.Actor->SetMapper(this->FadesTrails(vtkPolyData::SafeDownCast(piece))
+          ? static_cast<vtkMapper*>(I.FadeMapper)
+          : static_cast<vtkMapper*>(I.CpuMapper));
     }
     this->UpdateColoring();
   }
@@ -375,6 +389,51 @@ void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
 {
   this->Internals->TextureSizeLimit = texels;
   this->Internals->GpuMapper->SetTextureSizeLimit(texels);
+}
+
+bool vtkBoundParticleRepresentation::FadesTrails(vtkPolyData* piece)
+{
+  vtkInternals& I = *this->Internals;
+  const double span = bpvtk::trailFadeSpan(piece);
+  vtkScalarsToColors* lut = I.CpuMapper->GetLookupTable();
+  const bool mapped = !I.ColorArray.empty() && lut;
+  if (mapped)
+  {
+    lut->Build();
+  }
+  // A colour map that maps opacity fades the trails itself (colouring by
+  // Age, say), as on the GPU; direct colours are the user's own.
+  if (!(span > 0.0) || (mapped && !lut->IsOpaque()) ||
+    (mapped && I.CpuMapper->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS))
+  {
+    return false;
+  }
+  bpvtk::TrailColoring coloring;
+  coloring.array = mapped ? I.ColorArray.c_str() : nullptr;
+  coloring.component = mapped && lut->GetVectorMode() == vtkScalarsToColors::COMPONENT
+    ? lut->GetVectorComponent()
+    : -1;
+  coloring.lut = mapped ? lut : nullptr;
+  I.Property->GetDiffuseColor(coloring.solid);
+  // Mapped again only when the data, the colouring or the colour change.
+  const std::string from = std::to_string(reinterpret_cast<std::uintptr_t>(piece)) + " " +
+    std::to_string(piece->GetMTime()) + " " + I.ColorArray + " " +
+    std::to_string(coloring.component) + " " + std::to_string(mapped ? lut->GetMTime() : 0) + " " +
+    std::to_string(coloring.solid[0]) + " " + std::to_string(coloring.solid[1]) + " " +
+    std::to_string(coloring.solid[2]) + " " + std::to_string(span);
+  if (from != I.FadedFrom)
+  {
+    vtkSmartPointer<vtkUnsignedCharArray> colors = bpvtk::fadedTrailColors(piece, coloring, span);
+    if (!colors)
+    {
+      return false;
+    }
+    I.Faded->ShallowCopy(piece);
+    I.Faded->GetPointData()->AddArray(colors);
+    I.FadeMapper->SetInputDataObject(I.Faded);
+    I.FadedFrom = from;
+  }
+  return true;
 }
 
 void vtkBoundParticleRepresentation::UpdateColoring()

@@ -27,6 +27,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkPolyData;
 class vtkScalarsToColors;
 
 class BOUNDPARTICLESREPRESENTATIONS_EXPORT vtkBoundParticleRepresentation
@@ -108,6 +109,9 @@ private:
   void operator=(const vtkBoundParticleRepresentation&) = delete;
 
   void UpdateColoring();
+  /// Whether the CPU output `piece` has trails that this display fades
+  /// itself (no colour map mapping opacity); then makes their colours.
+  bool FadesTrails(vtkPolyData* piece);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

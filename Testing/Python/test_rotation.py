@@ -172,13 +172,15 @@ def keep_baseline(image, name):
 flow_g, gpu_trailed = trails.trails_scene(engine="GPU")
 
 
-def display_trails_picture(path, with_trails, opacity_mapping=True):
-    """demo/trails.py's picture of the GPU trace in the Bound Particles display."""
-    gpu_trailed.Trails = 1 if with_trails else 0
+def display_trails_picture(path, with_trails, opacity_mapping=True, cpu=False):
+    """demo/trails.py's picture of the GPU trace (or the CPU one) in the Bound
+    Particles display."""
+    flow, tracer = (flow_t, trailed) if cpu else (flow_g, gpu_trailed)
+    tracer.Trails = 1 if with_trails else 0
     view = picture.dark_view(trails.TIME, (480, 270))
     view.EnableRenderOnInteraction = 0
-    Show(flow_g, view).SetRepresentationType("Outline")
-    display = trails.show_trails(gpu_trailed, view, "Bound Particles")
+    Show(flow, view).SetRepresentationType("Outline")
+    display = trails.show_trails(tracer, view, "Bound Particles")
     lut = GetColorTransferFunction("Age")
     lut.EnableOpacityMapping = 1 if opacity_mapping else 0
     trails.place_camera(view)
@@ -229,6 +231,19 @@ bptest.check(mean <= CPU_MEAN and pixels <= FADE_PIXELS,
              (mean, pixels))
 mean, pixels = bptest.image_difference(gpu_own_fade, gpu_without)
 bptest.check(pixels > 0.002, "the display's own fade shows the trails: %.4f" % pixels)
+# The CPU engine in the same display fades its trails the same way, the
+# colour map opaque or mapping opacity; a Surface display would not.
+cpu_own_fade = os.path.join(args.output, "Trails_BoundParticles_cpu_fade.png")
+cpu_mapped = os.path.join(args.output, "Trails_BoundParticles_cpu.png")
+display_trails_picture(cpu_own_fade, True, opacity_mapping=False, cpu=True)
+display_trails_picture(cpu_mapped, True, cpu=True)
+mean, pixels = bptest.image_difference(cpu_own_fade, gpu_own_fade)
+bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+             "the display's own fade, CPU vs GPU engine: mean %.3f, pixels %.4f" % (mean, pixels))
+print("own fade, CPU vs GPU engine: mean %.3f, pixels %.4f" % (mean, pixels))
+mean, pixels = bptest.image_difference(cpu_mapped, with_trails)
+bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
+             "CPU display vs CPU Surface, opacity mapped: mean %.3f, pixels %.4f" % (mean, pixels))
 keep_baseline(gpu_with, "Trails_BoundParticles")
 Delete(gpu_trailed)
 Delete(flow_g)
