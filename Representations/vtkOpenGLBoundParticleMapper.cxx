@@ -340,7 +340,7 @@ bool vtkOpenGLBoundParticleMapper::SetColorArray(const char* name, int component
   const bp::OutputArray* row = name && *name ? bp::findOutputArray(name) : nullptr;
   const bool known = !(name && *name) || (row && row->color != bp::ColorSource::Solid);
   const bp::ColorSource mode = row ? row->color : bp::ColorSource::Solid;
-  // A component of a vector source (Velocity, ElementSpin, ElementOrientation), or
+  // A component of a vector source (Velocity, ElementSpin, Orientation), or
   // the magnitude; a one-component array's component is the array itself.
   const int comp = row && row->components > 1 && !row->colorsMagnitude && component >= 0 &&
       component < row->components

@@ -24,7 +24,7 @@
  * Colouring by a scalar goes through the mapper's lookup table (its range
  * and colours, sampled into a table texture): any array of the tracer's
  * output that has a colour source in Core/OutputArrays.h (every one but
- * Normals; Velocity, ElementOrientation and ElementSpin by magnitude or a
+ * Normals; Velocity, Orientation and ElementSpin by magnitude or a
  * component).
  *
  * Motion trails (Parameters::trailLength) are drawn from the engine's ring of

@@ -1,6 +1,6 @@
 # Run from the GUI's Python shell by panel.xml after Vorticity was unticked and
 # ElementSpin ticked in Output Arrays: when the first tracer's output has Force
-# and ElementSpin but neither Vorticity nor ElementOrientation (a pose array
+# and ElementSpin but neither Vorticity nor Orientation (a pose array
 # off by default), sets its Coloring Axis to X, which panel.xml then checks.
 from paraview.simple import FindSource
 
@@ -11,6 +11,6 @@ if (
     "Force" in names
     and "ElementSpin" in names
     and "Vorticity" not in names
-    and "ElementOrientation" not in names
+    and "Orientation" not in names
 ):
     tracer.ColoringAxis = 0

@@ -1,7 +1,7 @@
 """Seeing rotation in the tracer's output: each element's pose and spin as
 data, and motion trails, as pvpython users meet them.
 
-- ElementOrientation, ElementSpin and SpinVorticityRatio are off by default
+- Orientation, ElementSpin and SpinVorticityRatio are off by default
   (the CPU engine then fits no poses); ticked, they are per element (the same
   on each of its particles), unit quaternions, and the paddlewheels of the
   shear layer spin about y at half the local vorticity -du/dz: the ratio
@@ -74,20 +74,20 @@ tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
                              StepSizeUnit="Time", StepSize=0.02, Duration=1.0,
                              LifetimeRange=[100, 100], Seed=5)
 data = fetch(tracer, 0.5)
-for name in ("ElementOrientation", "ElementSpin", "SpinVorticityRatio"):
+for name in ("Orientation", "ElementSpin", "SpinVorticityRatio"):
     bptest.check(array(data, name) is None, "%s is off by default" % name)
-tracer.OutputArrays = ["ElementOrientation", "ElementSpin", "SpinVorticityRatio", "ElementId",
+tracer.OutputArrays = ["Orientation", "ElementSpin", "SpinVorticityRatio", "ElementId",
                        "Vorticity"]
 data = fetch(tracer, 0.5)
-q, spin = array(data, "ElementOrientation"), array(data, "ElementSpin")
+q, spin = array(data, "Orientation"), array(data, "ElementSpin")
 ratio, ids = array(data, "SpinVorticityRatio"), array(data, "ElementId")
 points = vtk_to_numpy(data.GetPoints().GetData())
-bptest.check(q is not None and q.shape[1] == 4, "ElementOrientation has 4 components")
+bptest.check(q is not None and q.shape[1] == 4, "Orientation has 4 components")
 bptest.check(spin is not None and spin.shape[1] == 3, "ElementSpin has 3 components")
 if q is not None and spin is not None and ratio is not None:
     bptest.check(np.allclose(np.linalg.norm(q, axis=1), 1.0, atol=1e-5), "unit quaternions")
     n = 8  # particles of a paddlewheel
-    for values, name in ((q, "ElementOrientation"), (spin, "ElementSpin"), (ratio, "ratio")):
+    for values, name in ((q, "Orientation"), (spin, "ElementSpin"), (ratio, "ratio")):
         per = values.reshape(len(values) // n, n, -1)
         bptest.check(np.all(per == per[:, :1]), "%s is the same on every particle" % name)
     centers = points.reshape(-1, n, 3).mean(axis=1)
@@ -280,7 +280,7 @@ def spin_tracer(engine):
                             Integrator="Runge-Kutta 4", RestorationIterations=4,
                             StepSizeUnit="Time", StepSize=0.02, Duration=1.0,
                             LifetimeRange=[100, 100], Seed=5, Engine=engine)
-    t.OutputArrays = ["ElementOrientation", "ElementSpin", "SpinVorticityRatio", "Normals"]
+    t.OutputArrays = ["Orientation", "ElementSpin", "SpinVorticityRatio", "Normals"]
     return t
 
 
@@ -290,7 +290,7 @@ cpu_spin, gpu_spin = spin_tracer("CPU"), spin_tracer("GPU")
 for color, component, scalar_range, name in (
         ("ElementSpin", 1, (-0.7, 0.7), "Spin"),
         ("SpinVorticityRatio", None, (0.0, 2.0), "SpinRatio"),
-        ("ElementOrientation", 3, (-1.0, 1.0), "OrientationW")):
+        ("Orientation", 3, (-1.0, 1.0), "OrientationW")):
     cpu_image = spin_picture(cpu_spin, "Surface", name + "_Surface", color, component,
                              scalar_range)
     gpu_image = spin_picture(gpu_spin, "Bound Particles", name + "_BoundParticles", color,
