@@ -8,6 +8,7 @@ file brings the choice and its parameters back.
 import os
 import sys
 import tempfile
+import xml.etree.ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -197,4 +198,26 @@ if loaded is not None:
     after = centres(loaded)
     bptest.check(after.shape == before.shape and abs(after - before).max() < 1e-6,
                  "and the same trace")
+
+# A state file from before there were Seed Types (the same file without the
+# SeedType property and its proxies) loads with the emitter box.
+tree = xml.etree.ElementTree.parse(state)
+for parent in tree.getroot().iter():
+    for child in list(parent):
+        if ((child.tag == "Proxy" and child.get("group") == "bound_particle_seed_types") or
+                (child.tag in ("Property", "Item") and child.get("name") == "SeedType")):
+            parent.remove(child)
+older = os.path.join(os.path.dirname(state), "before-seed-types.pvsm")
+tree.write(older)
+ResetSession()
+LoadPlugin(args.plugin, ns=globals())
+with bptest.CapturedMessages() as log:
+    LoadState(older)
+    old = FindSource("BoundParticleTracer1")
+    spread = centres(old) if old is not None else numpy.zeros((0, 3))
+bptest.check(old is not None and old.SeedType.GetXMLLabel() == "Emitter Box" and
+             old.GetProperty("SeedType").Available == available,
+             "an older state file gets the Emitter Box and the whole list")
+bptest.check(len(spread) == 40 and numpy.ptp(spread[:, 0]) > 2.0 and not log.messages,
+             "and traces in the box without a message (%s)" % log.messages[:1])
 bptest.finish()
