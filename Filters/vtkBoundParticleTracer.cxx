@@ -5,6 +5,7 @@
 #include "OutputArrays.h"
 #include "TraceSettings.h"
 #include "TracerTimeScale.h"
+#include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
 #include "vtkDataSet.h"
@@ -182,6 +183,28 @@ int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* i
 void vtkBoundParticleTracer::SetTemplateData(vtkPolyData* shape)
 {
   this->SetInputDataInternal(1, shape);
+}
+
+void vtkBoundParticleTracer::SetSeedType(vtkBoundParticleSeedType* seeds)
+{
+  if (this->SeedType != seeds)
+  {
+    this->SeedType = seeds;
+    this->Modified();
+  }
+}
+
+vtkBoundParticleSeedType* vtkBoundParticleTracer::GetSeedType()
+{
+  return this->SeedType;
+}
+
+vtkMTimeType vtkBoundParticleTracer::GetMTime()
+{
+  // The seeds' parameters are set on their own object (ParaView's Seed Type
+  // proxy): a change there must replay the trace as a change here does.
+  const vtkMTimeType own = this->Superclass::GetMTime();
+  return this->SeedType ? std::max(own, this->SeedType->GetMTime()) : own;
 }
 
 int vtkBoundParticleTracer::RequestInformation(
@@ -524,6 +547,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << this->TrailSpacing << " steps)\n";
   os << indent << "ReleaseWindow: " << this->ReleaseWindow << " [" << this->ReleaseStart << ", "
      << this->ReleaseStop << "]\n";
+  os << indent << "SeedType: "
+     << (this->SeedType ? this->SeedType->GetSeedTypeName() : "(none: the emitter box)") << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Duration: " << this->Duration
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps

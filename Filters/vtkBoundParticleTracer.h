@@ -37,11 +37,13 @@
 
 #include "BoundParticlesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkBoundParticleSeedType;
 class vtkInformationIntegerKey;
 class vtkInformationIntegerRequestKey;
 class vtkPolyData;
@@ -155,10 +157,29 @@ public:
   /// The optional third input: any vtkDataSet whose points are the release
   /// centres, taken in order and cycling (release r = generation *
   /// NumberOfElements + element id is at point r modulo their count; at most
-  /// 65,536), instead of the emitter box. Minimum Release Speed does not apply.
+  /// 65,536), instead of the emitter box or the SeedType. Minimum Release
+  /// Speed does not apply.
   void SetSeedSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetTemplateData(vtkPolyData* shape);
   ///@}
+
+  ///@{
+  /**
+   * Where elements are released when no Seed Source is connected: nullptr
+   * (the default) is the emitter box (EmitterCenter, EmitterSize); a
+   * vtkBoundParticlePointCloudSeeds or vtkBoundParticleLineSeeds gives the
+   * release centres, taken in order and cycling as a Seed Source's points.
+   * The filter computes them itself, so they are the same on every process.
+   * A connected Seed Source wins (with a warning when this is set too), and
+   * with Linking the seeds are not used. Changing the seeds' parameters
+   * modifies the filter (GetMTime).
+   */
+  void SetSeedType(vtkBoundParticleSeedType* seeds);
+  vtkBoundParticleSeedType* GetSeedType();
+  ///@}
+
+  /// The filter's time, or its Seed Type's when that changed later.
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /// Springs of a template mesh that has no lines: its EDGES, plus across
@@ -493,6 +514,8 @@ protected:
   vtkTypeBool ComputeVorticity = true;
   int Engine = AUTOMATIC;
   std::vector<std::string> OmittedArrays; ///< output arrays switched off, by name
+  /// The Seed Type's points; nullptr for the emitter box.
+  vtkSmartPointer<vtkBoundParticleSeedType> SeedType;
 
 private:
   vtkBoundParticleTracer(const vtkBoundParticleTracer&) = delete;

@@ -7,6 +7,7 @@
 #include "TraceSettings.h"
 #include "TracerInput.h"
 #include "VectorField.h"
+#include "vtkBoundParticleSeedType.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -406,27 +407,43 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
     return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
       std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
   }
-  std::vector<double> seeds;
-  const std::string seedError = this->readSeeds(self, inputVector, seeds);
+  vtkBoundParticleSeeds seeds;
+  const std::string seedError = this->readSeeds(self, inputVector, seeds.xyz);
   if (!seedError.empty())
   {
     return Pass::fail(seedError);
   }
-  if (self->GetNumberOfInputConnections(2) > 0 && seeds.empty())
+  seeds.total = seeds.xyz.size() / 3;
+  const bool seedSource = self->GetNumberOfInputConnections(2) > 0;
+  if (seedSource && seeds.xyz.empty())
   {
     vtkWarningWithObjectMacro(
       self, "The Seed Source has no points; elements are released in the emitter box.");
   }
+  if (seedSource && self->SeedType)
+  {
+    // A connected input is the more deliberate choice, and kept its meaning
+    // in scripts and state files made before there were Seed Types.
+    vtkWarningWithObjectMacro(self,
+      "A Seed Source is connected: its points are the release positions, and Seed Type "
+        << self->SeedType->GetSeedTypeName()
+        << " is not used. Disconnect it (SeedSource = None) to release from the "
+        << self->SeedType->GetSeedTypeName() << ".");
+  }
   const bp::VectorField field = this->Cache.field(this->Grid, ids);
+  if (!seedSource)
+  {
+    this->seedTypePoints(self, field, seeds);
+  }
   const bp::FieldFacts facts = this->fieldFacts(field);
   bp::TraceSettings settings = self->Settings();
-  settings.seeded = !seeds.empty() && self->Linking == NO_LINKING;
-  if (!seeds.empty() && self->Linking != NO_LINKING)
+  settings.seeded = !seeds.xyz.empty() && self->Linking == NO_LINKING;
+  if (!seeds.xyz.empty() && self->Linking != NO_LINKING)
   {
     vtkWarningWithObjectMacro(self,
-      "Linking places each super set as one structure in the emitter box: the Seed Source is "
-      "not used. Set Linking to None to release from the seeds.");
-    seeds.clear();
+      "Linking places each super set as one structure in the emitter box: the "
+        << seeds.name << " is not used. Set Linking to None to release from the seeds.");
+    seeds.xyz.clear();
   }
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
   for (const std::string& warning : resolved.warnings)
@@ -462,15 +479,51 @@ vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::replay(
   return configured;
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* self,
-  const std::vector<double>& xyz, const bp::VectorField& field, bp::Parameters& p) const
+void vtkBoundParticleTracer::vtkInternals::seedTypePoints(
+  vtkBoundParticleTracer* self, const bp::VectorField& field, vtkBoundParticleSeeds& seeds) const
 {
-  const std::size_t count = xyz.size() / 3;
+  vtkBoundParticleSeedType* type = self->SeedType;
+  if (!type)
+  {
+    return; // the emitter box
+  }
+  // The whole field's flat axes, as every process sees them.
+  const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
+  bool flat[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    flat[a] = domain.degenerate[a];
+  }
+  seeds.name = type->GetSeedTypeName();
+  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
+  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
+    ", or use fewer elements.";
+  seeds.xyz.clear();
+  // Only what releases can take: a Resolution of a billion costs no memory.
+  type->AppendPoints(std::uint32_t(self->Seed), flat, vtkIdType(bp::MaxSeedPoints), seeds.xyz);
+  // On a 2D slice the seeds lie in its plane, as the emitter box does (it is
+  // clamped to the field's bounds): elsewhere no element would be released.
+  for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
+  {
+    const std::size_t a = i % 3;
+    if (flat[a])
+    {
+      seeds.xyz[i] = double(domain.lower[a]) + this->Offset[a];
+    }
+  }
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTracer* self,
+  const vtkBoundParticleSeeds& seeds, const bp::VectorField& field, bp::Parameters& p) const
+{
+  const std::vector<double>& xyz = seeds.xyz;
+  const std::string& name = seeds.name;
+  const std::size_t count = seeds.total;
   if (count > bp::MaxSeedPoints)
   {
     vtkWarningWithObjectMacro(self,
-      "The Seed Source has " << count << " points; releases take the first " << bp::MaxSeedPoints
-                             << ".");
+      "The " << name << " has " << count << " points; releases take the first " << bp::MaxSeedPoints
+             << ".");
   }
   // Releases take only the points in the field: one outside (or one too far
   // to hold in the engine's floats) would place an element where no flow is.
@@ -482,7 +535,7 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   const double stillSpeed = 0.01 * field.maxSpeed();
   const double start = this->Plan.startTime();
   p.seedPoints.clear();
-  for (std::size_t i = 0; i < std::min(count, bp::MaxSeedPoints); ++i)
+  for (std::size_t i = 0; i < std::min(xyz.size() / 3, bp::MaxSeedPoints); ++i)
   {
     float x[3];
     bool finite = true;
@@ -537,7 +590,7 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   if (p.seedPoints.empty() || noFlow == p.seedPoints.size() / 3)
   {
     std::ostringstream err;
-    err << "None of the Seed Source's " << used << " points lies in the flow (" << outside
+    err << "None of the " << name << "'s " << used << " points lies in the flow (" << outside
         << " outside the field, " << noFlow << " in cells outside the flow's domain";
     if (nonFinite > 0)
     {
@@ -549,38 +602,37 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   if (outside + nonFinite > 0)
   {
     vtkWarningWithObjectMacro(
-      self, << outside + nonFinite << " of the Seed Source's " << used
+      self, << outside + nonFinite << " of the " << name << "'s " << used
             << " points lie outside the field" << (nonFinite ? " or are not finite" : "")
             << "; releases take only the other " << p.seedPoints.size() / 3 << ".");
   }
   if (atBoundary > 0 && p.resetWhen == bp::ResetWhen::AnyParticleLeaves)
   {
     vtkWarningWithObjectMacro(
-      self, << atBoundary << " of the Seed Source's points lie within half an element of the "
+      self, << atBoundary << " of the " << name << "'s points lie within half an element of the "
             << "field's boundary: with Reset When = Any Particle Leaves, elements released there "
             << "leave at once and are released again every step. Move the seeds inward, or reset "
             << "when the centre leaves.");
   }
-  const std::size_t seeds = p.seedPoints.size() / 3;
+  const std::size_t kept = p.seedPoints.size() / 3;
   if (still > noFlow)
   {
-    vtkWarningWithObjectMacro(
-      self, << still - noFlow << " of the Seed Source's " << seeds
-            << " points in the flow lie where it is slower than 1% of its top speed at the start: "
-               "elements released there barely move. Move the seeds into faster flow.");
+    vtkWarningWithObjectMacro(self,
+      << still - noFlow << " of the " << name << "'s " << kept
+      << " points in the flow lie where it is slower than 1% of its top speed at the start: "
+         "elements released there barely move. Move the seeds into faster flow.");
   }
-  if (p.numberOfElements > 2 * seeds)
+  if (p.numberOfElements > 2 * kept)
   {
-    vtkWarningWithObjectMacro(
-      self, << p.numberOfElements << " elements share the Seed Source's " << seeds
-            << " points: about " << (p.numberOfElements + seeds - 1) / seeds
-            << " start at each point, on top of one another. Give the seeds more points (e.g. a "
-               "Line's Resolution), or fewer elements.");
+    vtkWarningWithObjectMacro(self,
+      << p.numberOfElements << " elements share the " << name << "'s " << kept
+      << " points: about " << (p.numberOfElements + kept - 1) / kept
+      << " start at each point, on top of one another. " << seeds.advice);
   }
   if (noFlow > 0)
   {
     vtkWarningWithObjectMacro(
-      self, << noFlow << " of the Seed Source's points lie in cells outside the flow's domain "
+      self, << noFlow << " of the " << name << "'s points lie in cells outside the flow's domain "
             << "(vtkValidPointMask 0 or a non-finite vector) at the start; releases pass over them "
             << "to the next point in the flow.");
   }
@@ -589,7 +641,7 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
 
 std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(vtkBoundParticleTracer* self,
   vtkInformationVector** inputVector, const bp::VectorField& field,
-  const std::vector<double>& seeds, bp::ElementTemplate& shape, bp::Parameters& p)
+  const vtkBoundParticleSeeds& seeds, bp::ElementTemplate& shape, bp::Parameters& p)
 {
   const std::string templateError = this->elementTemplate(self, inputVector, shape);
   if (!templateError.empty())
@@ -597,7 +649,7 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(vtkBoundPar
     return templateError;
   }
   p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
-  if (!seeds.empty())
+  if (!seeds.xyz.empty())
   {
     const std::string seedError = this->seedPoints(self, seeds, field, p);
     if (!seedError.empty())
@@ -655,7 +707,7 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(vtkBoundPar
 
 vtkBoundParticlePass vtkBoundParticleTracer::vtkInternals::configureStepper(
   vtkBoundParticleTracer* self, vtkInformationVector** inputVector, const bp::VectorField& field,
-  const bp::Resolution& resolved, const std::vector<double>& seeds)
+  const bp::Resolution& resolved, const vtkBoundParticleSeeds& seeds)
 {
   bp::ElementTemplate shape;
   bp::Parameters p = resolved.parameters;

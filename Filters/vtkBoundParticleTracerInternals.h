@@ -64,6 +64,17 @@ struct vtkBoundParticlePass
   static vtkBoundParticlePass fail(const std::string& message) { return { Failed, -1, message }; }
 };
 
+/// The release points of a new trace: a Seed Source's or a Seed Type's.
+struct vtkBoundParticleSeeds
+{
+  std::vector<double> xyz; ///< world coordinates, 3 doubles a point
+  /// How many points the seeds have (a Seed Type's xyz stops at bp::MaxSeedPoints).
+  std::size_t total = 0;
+  std::string name = "Seed Source"; ///< what messages call them
+  /// What to do when elements crowd on too few points.
+  std::string advice = "Give the seeds more points (e.g. a Line's Resolution), or fewer elements.";
+};
+
 struct vtkBoundParticleTracer::vtkInternals
 {
   using Pass = vtkBoundParticlePass;
@@ -169,12 +180,13 @@ private:
   /// The stepper set up for a new trace: the checks of checkConfiguration()
   /// (agreed between processes), then the field and the placement.
   Pass configureStepper(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    const bp::VectorField& field, const bp::Resolution& resolved, const std::vector<double>& seeds);
+    const bp::VectorField& field, const bp::Resolution& resolved,
+    const vtkBoundParticleSeeds& seeds);
   /// This process's checks of a new trace: the template, the seeds, the
   /// engine's limits, memory, a stable relaxation, the GPU's limits; then
   /// the stepper configured. Returns the error, if any.
   std::string checkConfiguration(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    const bp::VectorField& field, const std::vector<double>& seeds, bp::ElementTemplate& shape,
+    const bp::VectorField& field, const vtkBoundParticleSeeds& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);
   /// The Vectors property's choice: array name and point or cell data.
   static bpvtk::VectorsChoice vectorsChoice(vtkBoundParticleTracer* self);
@@ -191,9 +203,13 @@ private:
   /// the same on every process (collective in parallel). Returns the error.
   std::string readSeeds(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
     std::vector<double>& xyz) const;
+  /// The Seed Type's points (none for the emitter box), computed alike on
+  /// every process; along the field's flat axes they lie on its plane.
+  void seedTypePoints(
+    vtkBoundParticleTracer* self, const bp::VectorField& field, vtkBoundParticleSeeds& seeds) const;
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
-  std::string seedPoints(vtkBoundParticleTracer* self, const std::vector<double>& xyz,
+  std::string seedPoints(vtkBoundParticleTracer* self, const vtkBoundParticleSeeds& seeds,
     const bp::VectorField& field, bp::Parameters& p) const;
   /// The element template: the built-in shape or the template input.
   std::string elementTemplate(

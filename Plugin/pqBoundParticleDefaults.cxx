@@ -11,9 +11,11 @@
 #include "vtkCommand.h"
 #include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMProxyListDomain.h"
 #include "vtkSMSourceProxy.h"
 
 #include <cstring>
+#include <vector>
 
 namespace
 {
@@ -42,6 +44,42 @@ bool placeholderBox(vtkSMProxy* tracer)
   }
   return unset || empty;
 }
+
+/// The Seed Type proxies (the SeedType property's list) whose bounds-based
+/// defaults were taken before the input had bounds: a Point Cloud's radius
+/// of -0.2 (ParaView 5.11 and 5.13) or 0 (6), a Line from (1, 1, 1) to
+/// (-1, -1, -1) or from the origin to itself.
+std::vector<vtkSMProxy*> placeholderSeeds(vtkSMProxy* tracer)
+{
+  std::vector<vtkSMProxy*> placeholders;
+  vtkSMProperty* seedType = tracer->GetProperty("SeedType");
+  auto* list = seedType ? seedType->FindDomain<vtkSMProxyListDomain>() : nullptr;
+  for (unsigned int i = 0; list && i < list->GetNumberOfProxies(); ++i)
+  {
+    vtkSMProxy* seeds = list->GetProxy(i);
+    const char* name = seeds ? seeds->GetXMLName() : nullptr;
+    if (name && std::strcmp(name, "PointCloud") == 0 &&
+      vtkSMPropertyHelper(seeds, "Radius").GetAsDouble() <= 0.0)
+    {
+      placeholders.push_back(seeds);
+    }
+    else if (name && std::strcmp(name, "Line") == 0)
+    {
+      vtkSMPropertyHelper p1(seeds, "Point1"), p2(seeds, "Point2");
+      bool same = true, reversed = true;
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        same = same && p1.GetAsDouble(k) == p2.GetAsDouble(k);
+        reversed = reversed && p1.GetAsDouble(k) > p2.GetAsDouble(k);
+      }
+      if (same || reversed)
+      {
+        placeholders.push_back(seeds);
+      }
+    }
+  }
+  return placeholders;
+}
 } // namespace
 
 pqBoundParticleDefaults::pqBoundParticleDefaults(QObject* parent)
@@ -68,8 +106,9 @@ void pqBoundParticleDefaults::complete(pqPipelineSource* source)
     return;
   }
   const bool vectors = lacksVectors(tracer), box = placeholderBox(tracer);
+  const std::vector<vtkSMProxy*> seeds = placeholderSeeds(tracer);
   auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(tracer, "Input").GetAsProxy());
-  if ((!vectors && !box) || !input)
+  if ((!vectors && !box && seeds.empty()) || !input)
   {
     return;
   }
@@ -81,6 +120,23 @@ void pqBoundParticleDefaults::complete(pqPipelineSource* source)
   if (vectors)
   {
     tracer->GetProperty("Vectors")->ResetToDomainDefaults();
+  }
+  // The Seed Types' Input is the tracer's (a proxy-list link); their bounds
+  // domains look at its data again on the same event.
+  for (vtkSMProxy* placeholder : seeds)
+  {
+    if (vtkSMProperty* seedInput = placeholder->GetProperty("Input"))
+    {
+      seedInput->InvokeEvent(vtkCommand::UncheckedPropertyModifiedEvent);
+    }
+    for (const char* name : { "Center", "Radius", "Point1", "Point2" })
+    {
+      if (vtkSMProperty* property = placeholder->GetProperty(name))
+      {
+        property->ResetToDomainDefaults();
+      }
+    }
+    placeholder->UpdateVTKObjects();
   }
   if (box && !placeholderBox(tracer))
   {

@@ -8,9 +8,11 @@
  * emitter box from the input's bounds) when the filter is made. From the
  * Python shell that is usually before the input has run, so the panel showed
  * no Vectors and an Emitter Size of -2 -2 -2 (the extents of bounds never
- * set) for good. This autostart watches the tracers that get registered;
- * one that holds those placeholders has its input updated and the two
- * properties set from its data, as if it had been made after the update.
+ * set) for good, and so did the Seed Types' Point Cloud and Line (a radius
+ * of -0.2, a line from (1, 1, 1) to (-1, -1, -1)). This autostart watches
+ * the tracers that get registered; one that holds those placeholders has its
+ * input updated and those properties set from its data, as if it had been
+ * made after the update.
  * At startup it also installs the pqBoundParticleTickGuard.
  */
 #ifndef pqBoundParticleDefaults_h

@@ -22,13 +22,12 @@ pqBoundParticleInputDecorator::pqBoundParticleInputDecorator(
   const char* name = config->GetAttributeOrDefault("input", "Input");
   vtkSMProxy* proxy = parent->proxy();
   this->Input = proxy ? proxy->GetProperty(name) : nullptr;
-  if (this->Input)
+  this->observe(this->Input);
+  if (std::strcmp(config->GetAttributeOrDefault("when", ""), "emitter_box") == 0 && proxy)
   {
-    // Connecting or changing the input: look again (signal to signal).
-    this->Observers[0] = pqCoreUtilities::connect(
-      this->Input, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(visibilityChanged()));
-    this->Observers[1] = pqCoreUtilities::connect(
-      this->Input, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(enableStateChanged()));
+    // Picking another Seed Type in the panel: look again before Apply.
+    this->SeedType = proxy->GetProperty(config->GetAttributeOrDefault("seed_type", "SeedType"));
+    this->observe(this->SeedType);
   }
   // An input's time steps are known once it has updated (after Apply).
   QObject::connect(&pqActiveObjects::instance(), &pqActiveObjects::dataUpdated, this,
@@ -37,13 +36,28 @@ pqBoundParticleInputDecorator::pqBoundParticleInputDecorator(
 
 pqBoundParticleInputDecorator::~pqBoundParticleInputDecorator()
 {
-  for (unsigned long observer : this->Observers)
+  for (auto& observer : this->Observers)
   {
-    if (this->Input && observer)
+    if (observer.first)
     {
-      this->Input->RemoveObserver(observer);
+      observer.first->RemoveObserver(observer.second);
     }
   }
+}
+
+void pqBoundParticleInputDecorator::observe(vtkSMProperty* property)
+{
+  if (!property)
+  {
+    return;
+  }
+  // Connecting or changing it: look again (signal to signal).
+  this->Observers.emplace_back(property,
+    pqCoreUtilities::connect(
+      property, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(visibilityChanged())));
+  this->Observers.emplace_back(property,
+    pqCoreUtilities::connect(
+      property, vtkCommand::UncheckedPropertyModifiedEvent, this, SIGNAL(enableStateChanged())));
 }
 
 void pqBoundParticleInputDecorator::inputChanged()
@@ -70,6 +84,18 @@ bool pqBoundParticleInputDecorator::conditionHolds() const
   if (when == "connected" || when == "unconnected")
   {
     return (source != nullptr) == (when == "connected");
+  }
+  if (when == "emitter_box")
+  {
+    if (source)
+    {
+      return false; // a Seed Source replaces every Seed Type
+    }
+    // The Emitter Box entry is a null proxy; no value at all (the property
+    // not yet initialised) is the filter's default, the box too.
+    vtkSMProxy* seeds =
+      this->SeedType ? vtkSMUncheckedPropertyHelper(this->SeedType).GetAsProxy() : nullptr;
+    return !seeds || !seeds->GetXMLName() || std::strcmp(seeds->GetXMLName(), "EmitterBox") == 0;
   }
   if (when == "steady" || when == "unsteady")
   {

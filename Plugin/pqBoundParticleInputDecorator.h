@@ -9,10 +9,14 @@
  *  - `steady` / `unsteady`: that input has fewer than two / at least two time steps;
  *  - `connected` / `unconnected`: that input is connected / not;
  *  - `resampled`: that input is traced through a resampled grid (a mesh, a
- *    composite: anything but an image or a rectilinear grid).
+ *    composite: anything but an image or a rectilinear grid);
+ *  - `emitter_box`: elements are released in the emitter box: that input
+ *    (the Seed Source) is not connected, and the proxy property named by
+ *    `seed_type` (default `SeedType`) holds the Emitter Box entry of its list.
  * `mode` is `visibility` (hide the widget otherwise) or `enabled_state`
- * (grey it out otherwise). So Duration shows only for a steady field, and
- * Element Shape greys out once an Element Template is connected.
+ * (grey it out otherwise). So Duration shows only for a steady field,
+ * Element Shape greys out once an Element Template is connected, and the
+ * emitter box widget shows only while the box is where releases happen.
  */
 #ifndef pqBoundParticleInputDecorator_h
 #define pqBoundParticleInputDecorator_h
@@ -20,6 +24,9 @@
 #include "pqPropertyWidgetDecorator.h"
 
 #include "vtkWeakPointer.h"
+
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkSMProperty;
 
@@ -42,8 +49,13 @@ private:
   /// Tells the panel to look again (the input or its data changed).
   void inputChanged();
 
+  /// Watches `property` for changes the panel makes before Apply.
+  void observe(vtkSMProperty* property);
+
   vtkWeakPointer<vtkSMProperty> Input;
-  unsigned long Observers[2] = { 0, 0 };
+  vtkWeakPointer<vtkSMProperty> SeedType; ///< for `emitter_box`
+  /// (property, observer) pairs to remove.
+  std::vector<std::pair<vtkWeakPointer<vtkSMProperty>, unsigned long>> Observers;
 
   Q_DISABLE_COPY(pqBoundParticleInputDecorator)
 };

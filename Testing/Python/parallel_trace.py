@@ -68,6 +68,20 @@ def placement_traces():
     line = Line(Point1=[-0.9, -0.8, -0.7], Point2=[0.9, 0.8, 0.7], Resolution=40)
     cases["seeded"] = (BoundParticleTracer(Input=hurricane, SeedSource=line, ElementShape="Cross",
                                            NumberOfElements=400, Seed=4), [0.5, 1.0])
+    # Seed Types: every process computes the same points (the cloud's from
+    # the Seed, not from a process's own random sequence).
+    cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                                Seed=4, SeedType="Point Cloud")
+    cloud.SeedType.Center = [0.1, -0.2, 0.0]
+    cloud.SeedType.Radius = 0.6
+    cloud.SeedType.NumberOfPoints = 400
+    cases["seed_cloud"] = (cloud, [0.5, 1.0])
+    seed_line = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                                    Seed=4, SeedType="Line")
+    seed_line.SeedType.Point1 = [-0.9, 0.7, -0.5]
+    seed_line.SeedType.Point2 = [0.9, -0.7, 0.5]
+    seed_line.SeedType.Resolution = 199
+    cases["seed_line"] = (seed_line, [0.5, 1.0])
     # Spins and trails: each element's poses travel with it between pieces.
     trails = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
                                  Seed=6, Trails=1, TrailLength=3, TrailSpacing=2)

@@ -180,6 +180,15 @@ def flow(**properties):
     return AnalyticFlow(**properties)
 
 
+def seeded(kind, **seed_properties):
+    """A tracer on the default flow releasing from Seed Type `kind`, its
+    parameters set as a script or a state file could."""
+    made = tracer(flow(), SeedType=kind)
+    for name, value in seed_properties.items():
+        setattr(made.SeedType, name, value)
+    return made
+
+
 def gpu_display(template_points):
     """The Bound Particles display with the GPU engine and a sphere of about
     `template_points` points as the element."""
@@ -357,6 +366,19 @@ CASES = {
                        NumberOfElements=21,
                        SeedSource=Line(Point1=[0, -0.5, 0], Point2=[0, 0.5, 0], Resolution=20)),
         1.0, "barely move", lambda r: r["points"] > 0),
+    # Seed Types with values no panel would offer.
+    "Line of a billion points": (
+        lambda: seeded("Line", Point1=[-0.5, 0, 0], Point2=[0.5, 0, 0], Resolution=1000000000),
+        1.0, "releases take the first 65536", lambda r: r["points"] > 0),
+    "Point Cloud at a NaN centre": (
+        lambda: seeded("Point Cloud", Center=[float("nan"), 0, 0]), 1.0, "not finite",
+        lambda r: r["points"] == 0),
+    "Point Cloud far outside the field": (
+        lambda: seeded("Point Cloud", Center=[50, 50, 50], Radius=1e30, NumberOfPoints=65536),
+        1.0, "outside the field", lambda r: r["points"] == 0),
+    "Point Cloud of radius 0": (
+        lambda: seeded("Point Cloud", Center=[0, 0, 0], Radius=0.0), 1.0, None,
+        lambda r: r["points"] > 0),
     "seeds with a stale emitter box": (
         lambda: tracer(flow(), EmitterCenter=[50, 50, 50], EmitterSize=[0.1, 0.1, 0.1],
                        MinimumReleaseSpeed=0.5, SeedSource=Line()), 1.0, None),

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The Seed Types through the C++ API: the points each computes, and the
+// tracer releasing from them and replaying when they change.
+#include "TracerTestHelpers.h"
+
+#include "vtkBoundParticleLineSeeds.h"
+#include "vtkBoundParticlePointCloudSeeds.h"
+#include "vtkPointData.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+const bool NotFlat[3] = { false, false, false };
+
+/// Each element's mean position at the tracer's start (time 0).
+std::vector<std::array<double, 3>> centresAtStart(vtkBoundParticleTracer* tracer, int elements)
+{
+  vtkPolyData* out = at(tracer, 0.0);
+  std::vector<std::array<double, 3>> sums(std::size_t(elements), { 0.0, 0.0, 0.0 });
+  std::vector<int> counts(std::size_t(elements), 0);
+  vtkDataArray* ids = out->GetPointData()->GetArray("ElementId");
+  for (vtkIdType i = 0; ids && i < out->GetNumberOfPoints(); ++i)
+  {
+    const auto e = std::size_t(ids->GetTuple1(i));
+    double x[3];
+    out->GetPoint(i, x);
+    for (int a = 0; a < 3; ++a)
+    {
+      sums[e][std::size_t(a)] += x[a];
+    }
+    ++counts[e];
+  }
+  for (std::size_t e = 0; e < sums.size(); ++e)
+  {
+    for (double& v : sums[e])
+    {
+      v /= counts[e] > 0 ? counts[e] : 1;
+    }
+  }
+  return sums;
+}
+} // namespace
+
+TEST(SeedTypes, LinePointsEvenlyFromPoint1ToPoint2)
+{
+  vtkNew<vtkBoundParticleLineSeeds> line;
+  line->SetPoint1(-1.0, 0.0, 2.0);
+  line->SetPoint2(1.0, 4.0, 2.0);
+  line->SetResolution(4);
+  std::vector<double> xyz;
+  line->AppendPoints(0, NotFlat, 1000, xyz);
+  ASSERT_EQ(xyz.size(), 15u);
+  EXPECT_EQ(line->GetNumberOfSeedPoints(), 5);
+  for (int i = 0; i < 5; ++i)
+  {
+    EXPECT_NEAR(xyz[3 * i + 0], -1.0 + 0.5 * i, 1e-12);
+    EXPECT_NEAR(xyz[3 * i + 1], 1.0 * i, 1e-12);
+    EXPECT_NEAR(xyz[3 * i + 2], 2.0, 1e-12);
+  }
+}
+
+TEST(SeedTypes, HugeResolutionMakesOnlyWhatIsAskedFor)
+{
+  vtkNew<vtkBoundParticleLineSeeds> line;
+  line->SetResolution(1000000000);
+  std::vector<double> xyz;
+  line->AppendPoints(0, NotFlat, 10, xyz);
+  EXPECT_EQ(xyz.size(), 30u);
+  EXPECT_EQ(line->GetNumberOfSeedPoints(), 1000000001);
+}
+
+TEST(SeedTypes, PointCloudInsideTheSphereAndTheSameForTheSameSeed)
+{
+  vtkNew<vtkBoundParticlePointCloudSeeds> cloud;
+  cloud->SetCenter(1.0, 2.0, 3.0);
+  cloud->SetRadius(0.5);
+  cloud->SetNumberOfPoints(500);
+  std::vector<double> a, b, c;
+  cloud->AppendPoints(7, NotFlat, 100000, a);
+  cloud->AppendPoints(7, NotFlat, 100000, b);
+  cloud->AppendPoints(8, NotFlat, 100000, c);
+  ASSERT_EQ(a.size(), 1500u);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  double farthest = 0.0;
+  int inner = 0; // within half the radius: 1/8 of a uniform ball
+  for (std::size_t i = 0; i < 500; ++i)
+  {
+    const double r = std::hypot(a[3 * i] - 1.0, a[3 * i + 1] - 2.0, a[3 * i + 2] - 3.0);
+    farthest = std::max(farthest, r);
+    inner += r < 0.25 ? 1 : 0;
+  }
+  EXPECT_LE(farthest, 0.5);
+  EXPECT_GT(farthest, 0.45);
+  EXPECT_GT(inner, 30);
+  EXPECT_LT(inner, 95);
+}
+
+TEST(SeedTypes, PointCloudOnAFlatAxisFillsTheDisc)
+{
+  vtkNew<vtkBoundParticlePointCloudSeeds> cloud;
+  cloud->SetCenter(0.0, 0.0, 5.0);
+  cloud->SetNumberOfPoints(400);
+  const bool flatZ[3] = { false, false, true };
+  std::vector<double> xyz;
+  cloud->AppendPoints(1, flatZ, 100000, xyz);
+  int inner = 0; // within R / sqrt(2): half of a uniform disc
+  for (std::size_t i = 0; i < 400; ++i)
+  {
+    EXPECT_EQ(xyz[3 * i + 2], 5.0);
+    const double r = std::hypot(xyz[3 * i], xyz[3 * i + 1]);
+    EXPECT_LE(r, 1.0);
+    inner += r < std::sqrt(0.5) ? 1 : 0;
+  }
+  EXPECT_GT(inner, 160);
+  EXPECT_LT(inner, 240);
+}
+
+TEST(SeedTypes, TracerReleasesFromTheLineAndReplaysWhenItChanges)
+{
+  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER);
+  auto tracer = tracerOn(source, 11);
+  tracer->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  vtkNew<vtkBoundParticleLineSeeds> line;
+  line->SetPoint1(-0.5, 0.0, 0.0);
+  line->SetPoint2(0.5, 0.0, 0.0);
+  line->SetResolution(10);
+  tracer->SetSeedType(line);
+  auto centres = centresAtStart(tracer, 11);
+  for (int i = 0; i < 11; ++i)
+  {
+    EXPECT_NEAR(centres[std::size_t(i)][0], -0.5 + 0.1 * i, 1e-5);
+    EXPECT_NEAR(centres[std::size_t(i)][1], 0.0, 1e-5);
+  }
+  // Set on the seeds alone: the tracer's MTime follows, and it replays.
+  const vtkMTimeType before = tracer->GetMTime();
+  line->SetPoint2(0.5, 0.5, 0.0);
+  EXPECT_GT(tracer->GetMTime(), before);
+  centres = centresAtStart(tracer, 11);
+  EXPECT_NEAR(centres[10][1], 0.5, 1e-5);
+  // Back to the emitter box.
+  tracer->SetSeedType(nullptr);
+  centres = centresAtStart(tracer, 11);
+  double spread = 0.0;
+  for (const auto& c : centres)
+  {
+    spread = std::max(spread, std::abs(c[2]));
+  }
+  EXPECT_GT(spread, 0.1);
+}

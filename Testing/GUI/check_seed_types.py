@@ -1,0 +1,36 @@
+# Run from the GUI's Python shell by seeds.xml after a Seed Type was picked and
+# set in the tracer's panel and applied. When the tracer holds what was typed
+# and its elements start where those seeds are, sets the Coloring Axis (X
+# after the Line, Y after the Point Cloud), which seeds.xml then checks.
+import numpy
+
+from paraview import servermanager
+from paraview.simple import FindSource
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+tracer = FindSource("BoundParticleTracer1")
+seeds = tracer.SeedType
+tracer.UpdatePipeline(tracer.TimestepValues[0])
+data = servermanager.Fetch(tracer)
+points = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
+ids = vtk_to_numpy(data.GetPointData().GetArray("ElementId"))
+# At the start every element sits where it was released: its particles'
+# mean is its seed point (releases take the seeds in order).
+centres = numpy.array([points[ids == e].mean(axis=0) for e in range(50)])
+kind = seeds.GetXMLLabel()
+if kind == "Line" and len(numpy.unique(ids)) == 50:
+    typed = (list(seeds.Point1) == [-0.5, 0.0, 0.25] and list(seeds.Point2) == [0.5, 0.0, 0.25]
+             and seeds.Resolution == 49)
+    expected = numpy.linspace([-0.5, 0.0, 0.25], [0.5, 0.0, 0.25], 50)
+    if typed and abs(centres - expected).max() < 1e-4:
+        tracer.ColoringAxis = 0
+elif kind == "Point Cloud" and len(numpy.unique(ids)) == 50:
+    typed = (list(seeds.Center) == [0.25, 0.0, 0.0] and seeds.Radius == 0.3
+             and seeds.NumberOfPoints == 60)
+    distance = numpy.linalg.norm(centres - [0.25, 0.0, 0.0], axis=1)
+    # Inside the sphere, spread through it (not all at its centre), and
+    # every element at a point of its own.
+    inside = distance.max() <= 0.3 + 1e-4 and distance.max() > 0.15
+    distinct = len(numpy.unique(centres.round(6), axis=0)) == 50
+    if typed and inside and distinct:
+        tracer.ColoringAxis = 1
