@@ -424,9 +424,9 @@ bool vtkOpenGLBoundParticleMapper::TakeAbortRequest()
     return false;
   }
   // VTK clears AbortOutput only when an algorithm next executes and never
-  // clears AbortExecute (ParaView clears a source's before it updates it, not
-  // a display's). A render is not an execution: once honoured, the request is
-  // taken here, or every later replay would stop at its first report.
+  // clears AbortExecute (ParaView 6.1 clears a source's when it updates it,
+  // never a display's). A render is not an execution: once honoured, the
+  // request is taken here, or every later replay would stop at its first report.
   for (vtkAlgorithm* algorithm :
     { static_cast<vtkAlgorithm*>(this), this->GetContainerAlgorithm() })
   {

@@ -21,7 +21,7 @@ LoadPlugin(args.plugin, ns=globals())
 
 flow = AnalyticFlow(Flow="Double Gyre", NumberOfTimeSteps=21)
 flow.UpdatePipeline()
-tracer = BoundParticleTracer(Input=flow, NumberOfElements=1500, Engine="GPU")
+tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU")
 view = CreateRenderView(ViewSize=[240, 240])
 view.OrientationAxesVisibility = 0
 shown = Show(tracer, view)
