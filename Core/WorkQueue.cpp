@@ -94,6 +94,18 @@ std::vector<EngineCall> WorkQueue::take()
   return calls;
 }
 
+void WorkQueue::stoppedAt(double committed)
+{
+  if (!this->Pending.empty())
+  {
+    this->Pending.clear();
+    this->cursor.valid = false;
+    return;
+  }
+  this->cursor.committed = committed;
+  this->cursor.showsPartialStep = false;
+}
+
 RendererKind rendererKind(const std::string& glRenderer)
 {
   std::string name(glRenderer.size(), ' ');

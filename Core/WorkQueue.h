@@ -121,6 +121,15 @@ public:
 
   // Running (the renderer).
   std::vector<EngineCall> take();
+  /**
+   * The renderer ran the calls take() gave only up to a Step call from
+   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
+   * that step boundary, showing no short step, and the next update continues
+   * from there. Calls recorded meanwhile (an update inside the run) continue
+   * from where every taken call would have led: they are dropped and the
+   * next update replays.
+   */
+  void stoppedAt(double committed);
 
   DrawSettings draw;
 

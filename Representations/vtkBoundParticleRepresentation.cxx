@@ -101,6 +101,9 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   I.Actor->SetProperty(I.Property);
   I.Actor->SetMapper(I.CpuMapper);
   I.GpuMapper->SetWorkQueue(I.Queue);
+  // ParaView listens to this display's progress and sets its abort flag: the
+  // mapper reports a long GPU replay here and stops it on request.
+  I.GpuMapper->SetContainerAlgorithm(this);
   // The CPU output's scalars look as the Surface representation draws them.
   I.CpuMapper->SetScalarModeToUsePointFieldData();
   I.CpuMapper->SetInterpolateScalarsBeforeMapping(1);
@@ -116,6 +119,7 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
 vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation()
 {
   this->ReleaseGpuRequest();
+  this->Internals->GpuMapper->SetContainerAlgorithm(nullptr); // a renderer may hold it still
 }
 
 namespace

@@ -5,6 +5,7 @@
 #include "GpuEngine.h"
 #include "GpuStepper.h"
 #include "OutputArrays.h"
+#include "ReplayProgress.h"
 #include "SuperSet.h"
 #include "WorkQueue.h"
 
@@ -246,6 +247,7 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   std::shared_ptr<bp::WorkQueue> Queue;
   bool Configured = false; // the engine holds a system
   bool Failed = false;     // the queued work failed: draw nothing until the next Configure
+  bool Replaying = false;  // running the queue: a render from inside a progress report waits
   std::string LastError;
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
   bp::GpuEngine::DrawInputs Inputs;
@@ -411,10 +413,141 @@ bool vtkOpenGLBoundParticleMapper::HasTranslucentPolygonalGeometry()
   return I.TrailSpan > 0.0 || I.ExpectedTrailSpan > 0.0 || this->ColorMapIsTranslucent();
 }
 
+bool vtkOpenGLBoundParticleMapper::TakeAbortRequest()
+{
+  // The one place that reads VTK's abort request: this mapper's AbortExecute,
+  // else its container's (the display, whose flag ParaView 6.1's Abort button
+  // sets with SetAbortExecuteAndUpdateTime), and through the container the
+  // flags of the algorithms upstream that were set that way.
+  if (!this->CheckAbort())
+  {
+    return false;
+  }
+  // VTK clears AbortOutput only when an algorithm next executes and never
+  // clears AbortExecute (ParaView 6.1 clears a source's when it updates it,
+  // never a display's). A render is not an execution: once honoured, the
+  // request is taken here, or every later replay would stop at its first report.
+  for (vtkAlgorithm* algorithm :
+    { static_cast<vtkAlgorithm*>(this), this->GetContainerAlgorithm() })
+  {
+    if (algorithm)
+    {
+      algorithm->SetAbortExecute(0);
+      algorithm->SetAbortOutput(false);
+    }
+  }
+  return true;
+}
+
+void vtkOpenGLBoundParticleMapper::RunCalls(
+  const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& I = *this->Internals;
+  GLStateGuard guard;
+  auto failWith = [&](const std::string& message)
+  {
+    I.Failed = true;
+    I.LastError = message;
+    vtkErrorMacro(<< message);
+    I.Queue->failure = message;
+  };
+  // A replay from the start of a long trace takes seconds: its progress goes
+  // where ParaView listens, to the display that holds this mapper (its
+  // container), and the user may stop it between two steps (ReplayProgress.h).
+  vtkAlgorithm* owner = this->GetContainerAlgorithm() ? this->GetContainerAlgorithm() : this;
+  const std::string ownerText = owner->GetProgressText() ? owner->GetProgressText() : "";
+  bp::ReplayProgress::Hooks hooks;
+  hooks.settle = [] { glFinish(); };
+  hooks.report = [owner](double share)
+  {
+    owner->SetProgressText("Bound Particles: GPU engine");
+    owner->UpdateProgress(share);
+  };
+  hooks.stop = [this] { return this->TakeAbortRequest(); };
+  // Whatever listens to the progress may have drawn in another window.
+  hooks.resume = [window] { window->MakeCurrent(); };
+  bp::ReplayProgress progress(calls, hooks);
+  // A render asked for from inside a report returns at once (Render).
+  struct Flag
+  {
+    bool& Set;
+    explicit Flag(bool& flag)
+      : Set(flag)
+    {
+      flag = true;
+    }
+    ~Flag() { this->Set = false; }
+  } replaying(I.Replaying);
+
+  for (std::size_t k = 0; k < calls.size() && progress.beforeCall(k); ++k)
+  {
+    const bp::EngineCall& call = calls[k];
+    const bool configure = call.kind == bp::EngineCall::Kind::Configure;
+    if (configure)
+    {
+      I.Failed = false;
+      I.Configured = false;
+    }
+    else if (!I.Configured || I.Failed)
+    {
+      continue; // what follows a failed call would continue from nothing
+    }
+    // Only configure and setField can fail: the system or the field does not fit.
+    const std::string error = call.applyTo(I.Stepper);
+    if (!error.empty())
+    {
+      failWith(std::string(configure ? "The GPU engine cannot run this trace: "
+                                     : "The GPU engine cannot hold this field: ") +
+        error + ". This display draws the CPU result from the next update on.");
+    }
+    else if (configure)
+    {
+      I.Configured = true;
+      I.LinkPairs = linkPairs(call.parameters);
+      I.LinksUploaded = false;
+      I.TemplateLines = call.shape->triangles.empty() && !call.shape->springs.empty();
+      I.TrailLength = std::max(call.parameters.trailLength, 0);
+      I.TrailInterval = call.parameters.trailInterval;
+      I.TrailSpan = I.TrailLength * I.TrailInterval;
+      I.CornerTexels =
+        I.TrailLength > 0 ? cornerTable(*call.shape, I.CornerWidth) : std::vector<int>();
+      I.CornersUploaded = false;
+      this->SetInputData(
+        templateMesh(*call.shape, call.parameters.elementSize, !I.LinkPairs.empty()));
+    }
+  }
+  progress.finish();
+  if (progress.reports() > 0)
+  {
+    owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
+  }
+  if (progress.stopped())
+  {
+    // What has been stepped stays and is drawn; the tracer's next decision
+    // starts from where the engine stands.
+    I.Queue->stoppedAt(progress.stoppedAt());
+    vtkWarningMacro("Aborted: the GPU engine stopped at t = "
+      << progress.stoppedAt() << " on its way to t = " << I.Queue->draw.time
+      << ", and the display shows the elements there. The next update (another time, or "
+         "Play) goes on from there.");
+  }
+  if (I.Configured && !I.Failed)
+  {
+    I.Engine.updateNormals();
+    I.SamplesSerial = 0;
+    const GLenum glError = glGetError();
+    if (glError != GL_NO_ERROR)
+    {
+      failWith("The GPU engine failed with OpenGL error " + std::to_string(glError) +
+        "; this display draws the CPU result from the next update on.");
+    }
+  }
+}
+
 void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& I = *this->Internals;
-  if (!I.Queue)
+  if (!I.Queue || I.Replaying)
   {
     return;
   }
@@ -431,61 +564,7 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   std::vector<bp::EngineCall> calls = I.Queue->take();
   if (!calls.empty())
   {
-    GLStateGuard guard;
-    auto failWith = [&](const std::string& message)
-    {
-      I.Failed = true;
-      I.LastError = message;
-      vtkErrorMacro(<< message);
-      I.Queue->failure = message;
-    };
-    for (const bp::EngineCall& call : calls)
-    {
-      const bool configure = call.kind == bp::EngineCall::Kind::Configure;
-      if (configure)
-      {
-        I.Failed = false;
-        I.Configured = false;
-      }
-      else if (!I.Configured || I.Failed)
-      {
-        continue; // what follows a failed call would continue from nothing
-      }
-      // Only configure and setField can fail: the system or the field does not fit.
-      const std::string error = call.applyTo(I.Stepper);
-      if (!error.empty())
-      {
-        failWith(std::string(configure ? "The GPU engine cannot run this trace: "
-                                       : "The GPU engine cannot hold this field: ") +
-          error + ". This display draws the CPU result from the next update on.");
-      }
-      else if (configure)
-      {
-        I.Configured = true;
-        I.LinkPairs = linkPairs(call.parameters);
-        I.LinksUploaded = false;
-        I.TemplateLines = call.shape->triangles.empty() && !call.shape->springs.empty();
-        I.TrailLength = std::max(call.parameters.trailLength, 0);
-        I.TrailInterval = call.parameters.trailInterval;
-        I.TrailSpan = I.TrailLength * I.TrailInterval;
-        I.CornerTexels =
-          I.TrailLength > 0 ? cornerTable(*call.shape, I.CornerWidth) : std::vector<int>();
-        I.CornersUploaded = false;
-        this->SetInputData(
-          templateMesh(*call.shape, call.parameters.elementSize, !I.LinkPairs.empty()));
-      }
-    }
-    if (I.Configured && !I.Failed)
-    {
-      I.Engine.updateNormals();
-      I.SamplesSerial = 0;
-      const GLenum glError = glGetError();
-      if (glError != GL_NO_ERROR)
-      {
-        failWith("The GPU engine failed with OpenGL error " + std::to_string(glError) +
-          "; this display draws the CPU result from the next update on.");
-      }
-    }
+    this->RunCalls(calls, window);
   }
   if (!I.Configured || I.Failed)
   {

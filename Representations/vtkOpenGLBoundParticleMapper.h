@@ -44,6 +44,14 @@
  * at it (float world positions would be 0.5 apart at 6.4e6, Earth-centred
  * coordinates, and 8 apart at 1e8). Clipping planes and the Layer colour
  * range are moved to grid-local coordinates the same way.
+ *
+ * A replay from the start of a long trace runs in one render and can take
+ * seconds: while it runs, the mapper reports its progress (0 to 1 over the
+ * calls, every 0.1 s once it has lasted that long) through its container
+ * algorithm, the display, whose progress ParaView shows, and stops between two
+ * steps when the container (or the mapper) is asked to abort. The engine then
+ * stands on a step boundary, which the work queue's cursor takes, so the next
+ * update goes on from there (bp::ReplayProgress, bp::WorkQueue::stoppedAt).
  */
 #ifndef vtkOpenGLBoundParticleMapper_h
 #define vtkOpenGLBoundParticleMapper_h
@@ -53,13 +61,16 @@
 
 #include <memory> // for std::unique_ptr, std::shared_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 #ifndef __VTK_WRAP__
 namespace bp
 {
 class WorkQueue;
+struct EngineCall;
 }
 #endif
+class vtkOpenGLRenderWindow;
 
 class BOUNDPARTICLESREPRESENTATIONS_EXPORT vtkOpenGLBoundParticleMapper
   : public vtkOpenGLPolyDataMapper
@@ -106,7 +117,8 @@ public:
    */
   void SetExpectedTrailSpan(double span);
 
-  /// Runs the queued engine work, then draws.
+  /// Runs the queued engine work (reporting progress and taking an abort
+  /// request while a long one runs), then draws.
   void Render(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -133,6 +145,13 @@ protected:
 private:
   /// Whether the colour map (ParaView's opacity mapping) makes anything translucent.
   bool ColorMapIsTranslucent();
+  /// Whether the user asked to stop the running replay; the request is taken.
+  bool TakeAbortRequest();
+#ifndef __VTK_WRAP__
+  /// Applies the queue's calls to the engine in `window`'s current context,
+  /// with progress and abort; a failure makes the display draw the CPU result.
+  void RunCalls(const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window);
+#endif
 
   vtkOpenGLBoundParticleMapper(const vtkOpenGLBoundParticleMapper&) = delete;
   void operator=(const vtkOpenGLBoundParticleMapper&) = delete;

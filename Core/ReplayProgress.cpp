@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReplayProgress.h"
+
+#include <chrono>
+#include <utility>
+
+namespace bp
+{
+
+ReplayProgress::ReplayProgress(const std::vector<EngineCall>& calls, Hooks hooks, double interval)
+  : Calls(calls)
+  , H(std::move(hooks))
+  , Interval(interval)
+{
+  this->LastReport = this->now();
+}
+
+double ReplayProgress::now() const
+{
+  if (this->H.clock)
+  {
+    return this->H.clock();
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+bool ReplayProgress::reportShare(double share, bool askToStop)
+{
+  if (this->H.settle)
+  {
+    this->H.settle();
+  }
+  ++this->Reports;
+  if (this->H.report)
+  {
+    this->H.report(share);
+  }
+  const bool stop = askToStop && this->H.stop && this->H.stop();
+  if (this->H.resume)
+  {
+    this->H.resume();
+  }
+  // From the end of the report: a slow listener (one that redraws the
+  // application) does not make every following step report.
+  this->LastReport = this->now();
+  return stop;
+}
+
+bool ReplayProgress::beforeCall(std::size_t k)
+{
+  if (this->Stopped)
+  {
+    return false;
+  }
+  const EngineCall& call = this->Calls[k];
+  if (call.kind != EngineCall::Kind::Step || this->now() - this->LastReport < this->Interval)
+  {
+    return true;
+  }
+  if (this->reportShare(double(k) / double(this->Calls.size()), true))
+  {
+    this->Stopped = true;
+    this->StoppedAt = call.t;
+    this->StoppedBefore = k;
+    return false;
+  }
+  return true;
+}
+
+void ReplayProgress::finish()
+{
+  if (this->Reports > 0 && !this->Stopped)
+  {
+    this->reportShare(1.0, false);
+  }
+}
+
+} // namespace bp

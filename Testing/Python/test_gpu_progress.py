@@ -1,0 +1,153 @@
+"""With Engine = GPU the Bound Particles display runs the trace in its render
+(the tracer only records it): a replay from the start to the last frame reports
+progress from about 0 to 1, never going back, where ParaView's progress bar
+listens (the display, relayed by the session's progress handler), and an abort
+asked for from a progress observer stops it between two steps. The next render
+draws what was stepped, without errors, and the next update goes on from there
+to the very picture of a replay that was never stopped. The GPU engine runs on
+this machine's Mesa llvmpipe."""
+import os
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+
+args = bptest.arguments()
+LoadPlugin(args.plugin, ns=globals())
+
+flow = AnalyticFlow(Flow="Double Gyre", NumberOfTimeSteps=21)
+flow.UpdatePipeline()
+tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU")
+view = CreateRenderView(ViewSize=[240, 240])
+view.OrientationAxesVisibility = 0
+shown = Show(tracer, view)
+shown.SetRepresentationType("Bound Particles")
+display = shown.GetClientSideObject().GetActiveRepresentation()
+bptest.check(display.GetClassName() == "vtkBoundParticleRepresentation",
+             "the active display is a %s" % display.GetClassName())
+times = list(tracer.TimestepValues)
+view.ViewTime = times[0]
+Render(view)
+
+# What the display reports, and what ParaView's progress handler (which the
+# GUI's progress bar listens to) relays during a render.
+shares = []
+display.AddObserver("ProgressEvent", lambda o, e: shares.append(o.GetProgress()))
+relayed = []
+handler = servermanager.ActiveConnection.Session.GetProgressHandler()
+handler.AddObserver("ProgressEvent",
+                    lambda o, e: relayed.append((o.GetLastProgressText(), o.GetLastProgress())))
+folder = tempfile.mkdtemp()
+
+
+def update_to(t):
+    """Updates the view to `t`: the tracer records its work (and the display's
+    own update reports 0 and 1, which are not the replay's)."""
+    view.ViewTime = t
+    view.Update()
+    del shares[:]
+    del relayed[:]
+
+
+def render():
+    """Renders the view (the display runs the recorded work); its seconds."""
+    start = time.time()
+    Render(view)
+    return time.time() - start
+
+
+def render_at(t):
+    update_to(t)
+    return render()
+
+
+def picture(name):
+    path = os.path.join(folder, name + ".png")
+    SaveScreenshot(path, view)
+    return path
+
+
+def drops(values):
+    return sum(1 for a, b in zip(values, values[1:]) if b < a - 1e-12)
+
+
+with bptest.CapturedMessages() as replay:
+    seconds = render_at(times[-1])
+print("replay to t = %g in the render: %.2f s, %d progress reports, first %s, last %s; "
+      "%d relayed by the progress handler %s"
+      % (times[-1], seconds, len(shares), shares[:1], shares[-1:], len(relayed), relayed[:2]))
+bptest.check(len(shares) >= 4, "only %d progress reports over a %.1f s replay" % (len(shares), seconds))
+bptest.check(shares and shares[0] < 0.25, "progress starts at %s" % shares[:1])
+bptest.check(shares and shares[-1] == 1.0, "progress ends at %s" % shares[-1:])
+bptest.check(drops(shares) == 0, "progress went back %d times" % drops(shares))
+bptest.check(len(relayed) >= 2 and all(text == "Bound Particles: GPU engine" for text, _ in relayed),
+             "ParaView's progress handler relayed %r" % relayed[:5])
+bptest.check(not replay.messages, "messages during the replay: %r" % replay.messages)
+
+# Back to the start (a short replay), then to the frame before the last,
+# aborted from a progress observer a quarter of the way, as ParaView 6.1's
+# Abort button does it.
+render_at(times[0])
+asked = []
+
+
+def abort_early(obj, event):
+    if not asked and obj.GetProgress() >= 0.25:
+        asked.append(time.time())
+        obj.SetAbortExecuteAndUpdateTime()
+
+
+update_to(times[-2])
+tag = display.AddObserver("ProgressEvent", abort_early)
+with bptest.CapturedMessages() as aborted:
+    render()
+ended = time.time()
+display.RemoveObserver(tag)
+latency = ended - asked[0] if asked else float("nan")
+print("aborted at %s; the render returned %.3f s after the abort was asked; said %r"
+      % (shares[-1:], latency, aborted.messages))
+bptest.check(bool(asked), "no progress report reached 0.25 to abort at")
+bptest.check(shares and 0.25 <= shares[-1] < 0.6,
+             "the replay stopped at %s, asked at 0.25" % shares[-1:])
+bptest.check(latency < 2.0, "the render returned %.2f s after the abort" % latency)
+bptest.check(len(aborted.messages) == 1 and aborted.mentions("Aborted: the GPU engine stopped at"),
+             "the abort was said as %r" % aborted.messages)
+bptest.check(display.GetAbortExecute() == 0, "the abort request was not taken")
+
+# The next render (nothing new asked for) draws the elements stepped so far.
+with bptest.CapturedMessages() as after:
+    Render(view)
+stopped = picture("stopped")
+covered = bptest.covered_fraction(stopped)
+print("the next render: %.1f%% of the picture covered, messages %r" % (100 * covered, after.messages))
+bptest.check(0.002 < covered < 0.9, "the picture after the abort covers %.4f" % covered)
+bptest.check(not after.messages, "messages in the render after the abort: %r" % after.messages)
+
+# The next update goes on from where the replay stopped (past where it was
+# going: a trace that went on from there instead would draw another picture)...
+with bptest.CapturedMessages() as resumed:
+    render_at(times[-1])
+continued = picture("continued")
+print("went on to t = %g: %d reports from %s to %s" % (times[-1], len(shares), shares[:1], shares[-1:]))
+bptest.check(shares and shares[-1] == 1.0, "the update after the abort ends at %s" % shares[-1:])
+bptest.check(drops(shares) == 0, "progress went back %d times" % drops(shares))
+bptest.check(not resumed.messages, "messages going on: %r" % resumed.messages)
+# ...to the picture of a replay to the same time that was never stopped.
+render_at(times[0])
+render_at(times[-1])
+uninterrupted = picture("uninterrupted")
+mean, pixels = bptest.image_difference(continued, uninterrupted, threshold=0)
+print("went on vs never stopped: mean difference %.4f, pixels differing %.4f" % (mean, pixels))
+bptest.check(mean == 0.0 and pixels == 0.0,
+             "going on after the abort drew another picture than a replay never stopped "
+             "(mean %.4f, pixels %.4f)" % (mean, pixels))
+bptest.check(bptest.covered_fraction(continued) > 0.002, "the picture going on is empty")
+
+Delete(shown)
+Delete(view)
+del view
+bptest.finish()
