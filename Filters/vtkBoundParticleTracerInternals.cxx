@@ -129,6 +129,10 @@ void vtkBoundParticleTracer::vtkInternals::begin(vtkBoundParticleTracer* self)
     stepper.restore();
   }
   stepper.cursor.showsPartialStep = false;
+  // An abort ends the update it was asked in, not every later one: VTK 9.2
+  // to 9.5 leave the request set (ParaView 6.1 clears it itself). Cleared
+  // without Modified(), which would make this update's output look stale.
+  self->AbortExecute = 0;
   // Progress runs over the whole update, across its passes.
   this->ProgressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
   this->ProgressAt = this->ProgressFrom;
