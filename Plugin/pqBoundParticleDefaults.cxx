@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleDefaults.h"
 
+#include "pqBoundParticlePlayUpdates.h"
 #include "pqBoundParticleTickGuard.h"
 
 #include <QTimer>
@@ -54,7 +55,14 @@ void pqBoundParticleDefaults::onStartup()
   // Clicks queued during a slow frame must not start Play inside it. Once the
   // event loop runs: a plugin on PV_PLUGIN_PATH starts while the application
   // core is still being built, before it has its animation manager.
-  QTimer::singleShot(0, this, [this]() { new pqBoundParticleTickGuard(this); });
+  // Play shows the frames, not panels that change 20 times a second: the
+  // GUI's reaction to each frame's new data waits for the end of Play.
+  QTimer::singleShot(0, this,
+    [this]()
+    {
+      new pqBoundParticleTickGuard(this);
+      new pqBoundParticlePlayUpdates(this);
+    });
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(model, &pqServerManagerModel::sourceAdded, this,
     [](pqPipelineSource* source) { pqBoundParticleDefaults::complete(source); });

@@ -11,7 +11,8 @@
  * set) for good. This autostart watches the tracers that get registered;
  * one that holds those placeholders has its input updated and the two
  * properties set from its data, as if it had been made after the update.
- * At startup it also installs the pqBoundParticleTickGuard.
+ * At startup it also installs the pqBoundParticleTickGuard and the
+ * pqBoundParticlePlayUpdates.
  */
 #ifndef pqBoundParticleDefaults_h
 #define pqBoundParticleDefaults_h
