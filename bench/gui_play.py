@@ -8,8 +8,8 @@ tick: panels, toolbars, the time widgets). Each play runs --frames frames from
 the start (the scene's playback window), --repeats times with the Surface
 display and as many with the Bound Particles display. pvpython then does the
 same in a render view of the GUI's view size (the input hidden only where the
-GUI's Apply hides it: the tracer's replace_input="2" hides an opaque surface
-and keeps an outline or a 2D image's slice) and plays with
+GUI's Apply hides it: the tracer's replace_input="2" hides an opaque surface,
+the plugin a 2D image's slice, and an outline stays) and plays with
 GetAnimationScene().Play(). Prints one row per data set and display:
 frames per second (median of the plays, wall clock from the scene's start of
 play to its end), CPU ms per frame of the whole process (its llvmpipe render
@@ -204,10 +204,12 @@ def pvpython_plays(args):
         simple.Render(view)
         tracer = globals()["BoundParticleTracer"](Input=reader, Vectors=VECTORS)
         display = simple.Show(tracer, view)
-        # The tracer's <Visibility replace_input="2"/>, as the GUI's Apply does
-        # it (pqApplyBehavior::hideInputIfRequired): an input shown as an opaque
-        # surface is hidden, any other (an outline, a 2D image's slice) stays.
-        if representation_of(shown) in ("Surface", "Surface With Edges") and shown.Opacity == 1:
+        # What the GUI's Apply does: the tracer's <Visibility replace_input="2"/>
+        # hides an input shown as an opaque surface
+        # (pqApplyBehavior::hideInputIfRequired) and the plugin one shown as a
+        # slice (pqBoundParticleDefaults::shown); an outline stays.
+        if (representation_of(shown) in ("Surface", "Surface With Edges") and shown.Opacity == 1
+                or representation_of(shown) == "Slice"):
             simple.Hide(reader, view)
         scene = simple.GetAnimationScene()
         scene.UpdateAnimationUsingDataTimeSteps()
