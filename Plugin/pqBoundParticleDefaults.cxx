@@ -1,24 +1,38 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleDefaults.h"
 
+#include "pqBoundParticlePlayUpdates.h"
 #include "pqBoundParticleTickGuard.h"
 
 #include <QTimer>
 
 #include "pqApplicationCore.h"
+#include "pqDataRepresentation.h"
+#include "pqOutputPort.h"
+#include "pqPipelineFilter.h"
 #include "pqPipelineSource.h"
 #include "pqServerManagerModel.h"
+#include "pqView.h"
 #include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkSMParaViewPipelineControllerWithRendering.h"
 #include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyListDomain.h"
 #include "vtkSMSourceProxy.h"
+#include "vtkSMViewProxy.h"
 
 #include <cstring>
 #include <vector>
 
 namespace
 {
+/// A Bound Particle Tracer's proxy.
+bool isTracer(vtkSMProxy* proxy)
+{
+  return proxy && proxy->GetXMLName() && !std::strcmp(proxy->GetXMLName(), "BoundParticleTracer");
+}
+
 /// No array named in Vectors: its default found no input arrays.
 bool lacksVectors(vtkSMProxy* tracer)
 {
@@ -92,16 +106,68 @@ void pqBoundParticleDefaults::onStartup()
   // Clicks queued during a slow frame must not start Play inside it. Once the
   // event loop runs: a plugin on PV_PLUGIN_PATH starts while the application
   // core is still being built, before it has its animation manager.
-  QTimer::singleShot(0, this, [this]() { new pqBoundParticleTickGuard(this); });
+  // Play shows the frames, not panels that change 20 times a second: the
+  // GUI's reaction to each frame's new data waits for the end of Play.
+  QTimer::singleShot(0, this,
+    [this]()
+    {
+      new pqBoundParticleTickGuard(this);
+      new pqBoundParticlePlayUpdates(this);
+    });
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(model, &pqServerManagerModel::sourceAdded, this,
     [](pqPipelineSource* source) { pqBoundParticleDefaults::complete(source); });
+  auto watchView = [this](pqView* view)
+  {
+    QObject::connect(view, &pqView::representationAdded, this,
+      [](pqRepresentation* representation)
+      { pqBoundParticleDefaults::shown(qobject_cast<pqDataRepresentation*>(representation)); });
+  };
+  for (pqView* view : model->findItems<pqView*>())
+  {
+    watchView(view);
+  }
+  QObject::connect(model, &pqServerManagerModel::viewAdded, this, watchView);
+}
+
+void pqBoundParticleDefaults::shown(pqDataRepresentation* representation)
+{
+  pqPipelineFilter* tracer =
+    representation ? qobject_cast<pqPipelineFilter*>(representation->getInput()) : nullptr;
+  pqView* view = representation ? representation->getView() : nullptr;
+  // Only the Apply that first shows a tracer made in the GUI: a loaded state,
+  // a Python script and a later Show keep the input's display as they set it.
+  if (!tracer || !view || !isTracer(tracer->getProxy()) ||
+    tracer->modifiedState() != pqProxy::UNINITIALIZED)
+  {
+    return;
+  }
+  for (pqOutputPort* input : tracer->getInputs("Input"))
+  {
+    pqDataRepresentation* field = input ? input->getRepresentation(view) : nullptr;
+    vtkSMProxy* proxy = field ? field->getProxy() : nullptr;
+    if (!proxy || !field->isVisible() || !proxy->GetProperty("Representation"))
+    {
+      continue;
+    }
+    const char* type = vtkSMPropertyHelper(proxy, "Representation").GetAsString();
+    if (type && !std::strcmp(type, "Slice"))
+    {
+      // A 2D image's default display, a slice in the elements' own plane:
+      // like the opaque surface the tracer's replace_input="2" hides, it
+      // covers the elements. Its reader would also read a time series' step
+      // again in every frame of Play (the slice asks for the view's time, the
+      // tracer for the steps it traces through).
+      vtkNew<vtkSMParaViewPipelineControllerWithRendering> controller;
+      controller->Hide(input->getSourceProxy(), input->getPortNumber(), view->getViewProxy());
+    }
+  }
 }
 
 void pqBoundParticleDefaults::complete(pqPipelineSource* source)
 {
   vtkSMProxy* tracer = source ? source->getProxy() : nullptr;
-  if (!tracer || !tracer->GetXMLName() || std::strcmp(tracer->GetXMLName(), "BoundParticleTracer"))
+  if (!isTracer(tracer))
   {
     return;
   }

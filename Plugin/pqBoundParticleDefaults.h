@@ -13,13 +13,20 @@
  * the tracers that get registered; one that holds those placeholders has its
  * input updated and those properties set from its data, as if it had been
  * made after the update.
- * At startup it also installs the pqBoundParticleTickGuard.
+ *
+ * On the Apply that first shows a tracer made in the GUI, it also hides the
+ * field input's display in that view when it is a slice (a 2D image's
+ * default), which lies in the elements' plane and covers them, as the
+ * tracer's replace_input="2" hides an opaque surface; an outline stays.
+ * At startup it installs the pqBoundParticleTickGuard and the
+ * pqBoundParticlePlayUpdates.
  */
 #ifndef pqBoundParticleDefaults_h
 #define pqBoundParticleDefaults_h
 
 #include <QObject>
 
+class pqDataRepresentation;
 class pqPipelineSource;
 
 class pqBoundParticleDefaults : public QObject
@@ -34,6 +41,10 @@ public:
   /// Sets the data-dependent defaults of `source` if it is a tracer that
   /// holds the placeholders of a proxy made before its input had data.
   static void complete(pqPipelineSource* source);
+
+  /// When `representation` is a tracer's first display, made by the GUI's
+  /// Apply: hides the field input's display in that view if it shows a slice.
+  static void shown(pqDataRepresentation* representation);
 };
 
 #endif

@@ -61,6 +61,16 @@ struct vtkBoundParticleRepresentation::vtkInternals
   std::string ColorArray;
   bool GpuFailed = false;
   vtkMTimeType FailurePipelineTime = 0;
+  /// The input's pipeline MTime at this display's last update request.
+  vtkMTimeType RequestPipelineTime = 0;
+  /// The tracer answered the GPU request with its CPU result (Engine CPU,
+  /// Automatic on a software renderer, a distributed run). Until the
+  /// pipeline or the renderer changes it would answer the same, so the
+  /// request is not made: asked with the key and then without it by this
+  /// display's decorations, the tracer ran twice every frame.
+  bool CpuAnswer = false;
+  vtkMTimeType CpuAnswerPipelineTime = 0;
+  bp::RendererKind CpuAnswerRenderer = bp::RendererKind::Unknown;
   int TextureSizeLimit = 0;
   bool StreamTimeSteps = true;
 };
@@ -262,6 +272,13 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
       I.Queue->failure.clear();
     }
   }
+  if (I.CpuAnswer &&
+    (pipelineTime != I.CpuAnswerPipelineTime || I.Queue->renderer != I.CpuAnswerRenderer))
+  {
+    // A property changed, or Automatic now knows the renderer: ask again.
+    I.CpuAnswer = false;
+  }
+  I.RequestPipelineTime = pipelineTime;
   I.Queue->streamTimeSteps = I.StreamTimeSteps;
   if (I.TextureSizeLimit > 0)
   {
@@ -278,10 +295,11 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   const int type = pm ? pm->GetProcessType() : vtkProcessModule::PROCESS_CLIENT;
   const bool gpuHere = type == vtkProcessModule::PROCESS_CLIENT ||
     (type == vtkProcessModule::PROCESS_BATCH && pm->GetNumberOfLocalPartitions() == 1);
+  const bool ask = gpuHere && !I.GpuFailed && !I.CpuAnswer;
   for (int k = 0; k < inputVector[0]->GetNumberOfInformationObjects(); ++k)
   {
     inputVector[0]->GetInformationObject(k)->Set(
-      vtkBoundParticleTracer::GPU_WORK_QUEUE(), I.GpuFailed || !gpuHere ? 0 : I.Queue->id());
+      vtkBoundParticleTracer::GPU_WORK_QUEUE(), ask ? I.Queue->id() : 0);
   }
   return 1;
 }
@@ -305,6 +323,17 @@ int vtkBoundParticleRepresentation::RequestData(
       auto* id =
         vtkIntArray::SafeDownCast(input->GetFieldData()->GetArray("BoundParticlesWorkQueue"));
       I.Gpu = id && id->GetNumberOfValues() == 1 && id->GetValue(0) == I.Queue->id();
+      // Asked for the GPU and given a finished CPU trace (a failed update,
+      // such as a time jump of too many steps, has no SimulationTime and
+      // may go to the GPU at the next frame).
+      if (!I.Gpu && inInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()) &&
+        inInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()) == I.Queue->id() &&
+        input->GetFieldData()->GetArray("SimulationTime"))
+      {
+        I.CpuAnswer = true;
+        I.CpuAnswerPipelineTime = I.RequestPipelineTime;
+        I.CpuAnswerRenderer = I.Queue->renderer;
+      }
       if (I.Gpu)
       {
         std::copy(I.Queue->draw.bounds.begin(), I.Queue->draw.bounds.end(), I.Bounds);

@@ -13,7 +13,11 @@
  * set to GPU the input then carries no particles, only the queue's id, and the
  * vtkOpenGLBoundParticleMapper runs the recorded work and draws the GPU
  * state; otherwise (Engine CPU, or after a GPU failure) it draws the CPU
- * polydata with a plain polydata mapper, coloured the same way.
+ * polydata with a plain polydata mapper, coloured the same way. Once the
+ * tracer has answered a request with its CPU result (Engine CPU, or
+ * Automatic on a software renderer), the display asks as every other
+ * consumer does until the pipeline or the renderer changes, so that the
+ * tracer runs once a frame and not once for it and again for its decorations.
  *
  * The display properties (colour, opacity, lighting, the colour array and its
  * lookup table, transforms) are the Surface representation's, shared through

@@ -8,18 +8,19 @@ tick: panels, toolbars, the time widgets). Each play runs --frames frames from
 the start (the scene's playback window), --repeats times with the Surface
 display and as many with the Bound Particles display. pvpython then does the
 same in a render view of the GUI's view size (the input hidden only where the
-GUI's Apply hides it: the tracer's replace_input="2" hides an opaque surface
-and keeps an outline or a 2D image's slice) and plays with
+GUI's Apply hides it: the tracer's replace_input="2" hides an opaque surface,
+the plugin a 2D image's slice, and an outline stays) and plays with
 GetAnimationScene().Play(). Prints one row per data set and display:
 frames per second (median of the plays, wall clock from the scene's start of
-play to its end) and CPU ms per frame of the whole process (its llvmpipe
-render threads included), GUI and pvpython side by side.
+play to its end), CPU ms per frame of the whole process (its llvmpipe render
+threads included) and of its main thread alone (the pipeline, the panels and
+the GUI's event loop), GUI and pvpython side by side.
 
     bash bench/gui_play.sh [--frames 50] [--repeats 3] [--data DIR] [--only a.vti,b.pvd]
                            [--setup FILE.py] [--gui-only] [--out DIR]
 
 Wall-clock fps depends on what else runs on the machine (two cores here); the
-CPU column depends on it much less.
+CPU columns depend on it much less, the main thread's least.
 
 This file has four roles, chosen by how it is run:
 - python3 gui_play.py xml ...: writes the GUI's event file (QtTesting XML);
@@ -52,7 +53,8 @@ class PlayTimer:
                      self.scene.AddObserver("EndEvent", self.end)]
 
     def start(self, *unused):
-        self.current = dict(wall=time.perf_counter(), cpu=time.process_time(), ticks=[])
+        self.current = dict(wall=time.perf_counter(), cpu=time.process_time(),
+                            main=time.thread_time(), ticks=[])
 
     def tick(self, *unused):
         if self.current is not None:
@@ -65,9 +67,10 @@ class PlayTimer:
         frames = len(run["ticks"])
         wall = time.perf_counter() - run["wall"]
         cpu = time.process_time() - run["cpu"]
+        main = time.thread_time() - run["main"]  # the observers run in the main thread
         gaps = [b - a for a, b in zip(run["ticks"], run["ticks"][1:])]
         self.runs.append(dict(frames=frames, seconds=wall, fps=frames / wall,
-                              cpu_ms=1e3 * cpu / frames,
+                              cpu_ms=1e3 * cpu / frames, main_ms=1e3 * main / frames,
                               median_frame_ms=1e3 * statistics.median(gaps) if gaps else 0.0))
 
     def take(self):
@@ -201,10 +204,12 @@ def pvpython_plays(args):
         simple.Render(view)
         tracer = globals()["BoundParticleTracer"](Input=reader, Vectors=VECTORS)
         display = simple.Show(tracer, view)
-        # The tracer's <Visibility replace_input="2"/>, as the GUI's Apply does
-        # it (pqApplyBehavior::hideInputIfRequired): an input shown as an opaque
-        # surface is hidden, any other (an outline, a 2D image's slice) stays.
-        if representation_of(shown) in ("Surface", "Surface With Edges") and shown.Opacity == 1:
+        # What the GUI's Apply does: the tracer's <Visibility replace_input="2"/>
+        # hides an input shown as an opaque surface
+        # (pqApplyBehavior::hideInputIfRequired) and the plugin one shown as a
+        # slice (pqBoundParticleDefaults::shown); an outline stays.
+        if (representation_of(shown) in ("Surface", "Surface With Edges") and shown.Opacity == 1
+                or representation_of(shown) == "Slice"):
             simple.Hide(reader, view)
         scene = simple.GetAnimationScene()
         scene.UpdateAnimationUsingDataTimeSteps()
@@ -252,20 +257,22 @@ def print_table(gui_file, pv_file):
 
     def cells(row):
         if not row or not row["runs"]:
-            return ("-", "-", "-")
+            return ("-", "-", "-", "-")
         runs = row["runs"]
+        main = [r["main_ms"] for r in runs if "main_ms" in r]
         return ("%.1f" % statistics.median(r["fps"] for r in runs),
                 "%.1f" % statistics.median(r["cpu_ms"] for r in runs),
+                "%.1f" % statistics.median(main) if main else "-",
                 " ".join("%.1f" % r["fps"] for r in runs))
 
     first = gui.get(keys[0]) or pv.get(keys[0])
     print("Play with the defaults (Vectors %s), %d frames from the start per play, view %dx%d; "
           "fps: median over plays (wall clock), cpu: process CPU ms per frame (render threads "
-          "included)" % (first["vectors"], first["frames"], first["view_size"][0],
-                         first["view_size"][1]))
-    header = ("data set", "display", "frames", "GUI fps", "GUI cpu", "pvpy fps", "pvpy cpu",
-              "GUI/pvpy", "GUI plays (fps)", "pvpython plays (fps)")
-    fmt = "%-16s %-15s %6s %8s %8s %8s %8s %8s  %-18s %s"
+          "included), main: the main thread's CPU ms per frame"
+          % (first["vectors"], first["frames"], first["view_size"][0], first["view_size"][1]))
+    header = ("data set", "display", "frames", "GUI fps", "GUI cpu", "GUI main", "pvpy fps",
+              "pvpy cpu", "pvpy main", "GUI/pvpy", "GUI plays (fps)", "pvpython plays (fps)")
+    fmt = "%-16s %-15s %6s %8s %8s %8s %8s %8s %9s %8s  %-18s %s"
     print(fmt % header)
     for key in keys:
         g, p = gui.get(key), pv.get(key)
@@ -274,7 +281,8 @@ def print_table(gui_file, pv_file):
         if gc[0] != "-" and pc[0] != "-":
             ratio = "%.2f" % (float(gc[0]) / float(pc[0]))
         frames = (g or p)["frames"]
-        print(fmt % (key[0], key[1], frames, gc[0], gc[1], pc[0], pc[1], ratio, gc[2], pc[2]))
+        print(fmt % (key[0], key[1], frames, gc[0], gc[1], gc[2], pc[0], pc[1], pc[2], ratio,
+                     gc[3], pc[3]))
     for label, rows in (("GUI", gui), ("pvpython", pv)):
         if rows:
             print("%s: engine %s; input shown: %s" % (

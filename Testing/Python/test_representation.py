@@ -195,6 +195,38 @@ Render(view)
 Delete(view)
 del view
 
+# A trace the CPU engine answers runs once a frame in the Bound Particles
+# display: after the first answer the display asks as the other consumers do
+# (asked with the GPU request and again by its decorations without it, the
+# tracer ran twice a frame). Set to GPU, the display asks for the GPU again.
+view = CreateRenderView(ViewSize=[320, 240])
+once = tracer("Cross", "CPU", 40)
+once_display = Show(once, view)
+once_display.SetRepresentationType("Bound Particles")
+runs = []
+once_algorithm = once.GetClientSideObject()
+tag = once_algorithm.AddObserver("StartEvent", lambda *unused: runs.append(1))
+view.ViewTime = 0.1
+Render(view)
+del runs[:]
+frames = [0.2 + 0.1 * k for k in range(10)]
+for t in frames:
+    view.ViewTime = t
+    Render(view)
+# (Once more when the display learns the window's renderer, after its first
+# render: Automatic may then choose otherwise.)
+bptest.check(len(runs) <= len(frames) + 1,
+             "a CPU trace runs once a frame: %d runs in %d frames" % (len(runs), len(frames)))
+once.Engine = "GPU"
+view.ViewTime = 1.5
+Render(view)
+bptest.check(once_algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 2,
+             "set to GPU, the display gets the GPU output again")
+once_algorithm.RemoveObserver(tag)
+Delete(once)
+Delete(view)
+del view
+
 # A GPU that cannot hold the system: a clear error, and the display draws the
 # CPU result in the same frame.
 cpu_image = render(cpu, "Surface", None, None, "Fallback_cpu")
