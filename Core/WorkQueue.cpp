@@ -115,8 +115,8 @@ RendererKind rendererKind(const std::string& glRenderer)
   {
     return RendererKind::Unknown;
   }
-  for (const char* software : { "llvmpipe", "softpipe", "swrast", "software rasterizer",
-         "swiftshader", "lavapipe" })
+  for (const char* software :
+    { "llvmpipe", "softpipe", "swrast", "software rasterizer", "swiftshader", "lavapipe" })
   {
     if (name.find(software) != std::string::npos)
     {

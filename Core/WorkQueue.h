@@ -60,7 +60,6 @@ enum class EngineChoice
 /// the display first drew, gets the CPU engine).
 bool usesGpuEngine(EngineChoice choice, RendererKind renderer);
 
-
 /// One recorded engine call.
 struct EngineCall
 {

@@ -621,17 +621,17 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(vtkBoundParticleTra
   const std::size_t kept = p.seedPoints.size() / 3;
   if (still > noFlow)
   {
-    vtkWarningWithObjectMacro(self,
-      << still - noFlow << " of the " << name << "'s " << kept
-      << " points in the flow lie where it is slower than 1% of its top speed at the start: "
-         "elements released there barely move. Move the seeds into faster flow.");
+    vtkWarningWithObjectMacro(
+      self, << still - noFlow << " of the " << name << "'s " << kept
+            << " points in the flow lie where it is slower than 1% of its top speed at the start: "
+               "elements released there barely move. Move the seeds into faster flow.");
   }
   if (p.numberOfElements > 2 * kept)
   {
-    vtkWarningWithObjectMacro(self,
-      << p.numberOfElements << " elements share the " << name << "'s " << kept
-      << " points: about " << (p.numberOfElements + kept - 1) / kept
-      << " start at each point, on top of one another. " << seeds.advice);
+    vtkWarningWithObjectMacro(
+      self, << p.numberOfElements << " elements share the " << name << "'s " << kept
+            << " points: about " << (p.numberOfElements + kept - 1) / kept
+            << " start at each point, on top of one another. " << seeds.advice);
   }
   if (noFlow > 0)
   {

@@ -88,9 +88,9 @@ struct vtkBoundParticleTracer::vtkInternals
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
-  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
-  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
-  bool WarnedResample = false;  ///< blocks without the Vectors were reported for it
+  bool WarnedNonFinite = false;  ///< the input's NaN share was reported for this configuration
+  bool WarnedMask = false;       ///< an unusable vtkValidPointMask was reported for it
+  bool WarnedResample = false;   ///< blocks without the Vectors were reported for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.

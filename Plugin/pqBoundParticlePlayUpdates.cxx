@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticlePlayUpdates.h"
 
+#include "pqBoundParticleActiveScene.h"
+
 #include "pqAnimationManager.h"
 #include "pqAnimationScene.h"
 #include "pqApplicationCore.h"
@@ -49,15 +51,7 @@ void collectPipeline(pqPipelineSource* source, std::vector<vtkSMProxy*>& proxies
 pqBoundParticlePlayUpdates::pqBoundParticlePlayUpdates(QObject* parent)
   : QObject(parent)
 {
-  pqPVApplicationCore* core = pqPVApplicationCore::instance();
-  pqAnimationManager* manager = core ? core->animationManager() : nullptr;
-  if (!manager)
-  {
-    return;
-  }
-  QObject::connect(manager, &pqAnimationManager::activeSceneChanged, this,
-    [this](pqAnimationScene* scene) { this->watch(scene); });
-  this->watch(manager->getActiveScene());
+  pqBoundParticleFollowActiveScene(this, [this](pqAnimationScene* scene) { this->watch(scene); });
 }
 
 pqBoundParticlePlayUpdates::~pqBoundParticlePlayUpdates()

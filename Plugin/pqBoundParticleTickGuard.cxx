@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleTickGuard.h"
 
+#include "pqBoundParticleActiveScene.h"
+
 #include "pqAnimationManager.h"
 #include "pqAnimationScene.h"
 #include "pqPVApplicationCore.h"
@@ -14,16 +16,11 @@
 pqBoundParticleTickGuard::pqBoundParticleTickGuard(QObject* parent)
   : QObject(parent)
 {
-  pqPVApplicationCore* core = pqPVApplicationCore::instance();
-  pqAnimationManager* manager = core ? core->animationManager() : nullptr;
-  if (!manager)
+  if (pqBoundParticleFollowActiveScene(
+        this, [this](pqAnimationScene* scene) { this->watch(scene); }))
   {
-    return;
+    QCoreApplication::instance()->installEventFilter(this);
   }
-  QObject::connect(manager, &pqAnimationManager::activeSceneChanged, this,
-    [this](pqAnimationScene* scene) { this->watch(scene); });
-  this->watch(manager->getActiveScene());
-  QCoreApplication::instance()->installEventFilter(this);
 }
 
 pqBoundParticleTickGuard::~pqBoundParticleTickGuard()
