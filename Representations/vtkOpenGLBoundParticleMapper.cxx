@@ -26,6 +26,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
+#include "vtkPVVersion.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -47,6 +48,19 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+
+namespace
+{
+// ParaView 6.1's GUI processes its events on every progress report (for its
+// Abort button); a report from inside a render then never returns there
+// (python.GUI hung in Render), so the GPU replay reports no progress on 6.1
+// and later. An abort request is still honoured between steps.
+#if PARAVIEW_VERSION_NUMBER >= PARAVIEW_VERSION_CHECK(6, 1, 0)
+constexpr bool ReportsReplayProgress = false;
+#else
+constexpr bool ReportsReplayProgress = true;
+#endif
+} // namespace
 
 namespace
 {
@@ -460,8 +474,11 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   hooks.settle = [] { glFinish(); };
   hooks.report = [owner](double share)
   {
-    owner->SetProgressText("Bound Particles: GPU engine");
-    owner->UpdateProgress(share);
+    if (ReportsReplayProgress)
+    {
+      owner->SetProgressText("Bound Particles: GPU engine");
+      owner->UpdateProgress(share);
+    }
   };
   hooks.stop = [this] { return this->TakeAbortRequest(); };
   // Whatever listens to the progress may have drawn in another window.

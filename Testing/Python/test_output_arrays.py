@@ -152,6 +152,7 @@ def check_frame(label, tracer, flow, t):
 
 for flow_name in ("Shear Layer", "Double Gyre"):
     flow = AnalyticFlow(Flow=flow_name, Resolution=[24, 20, 12])
+    flow.UpdatePipeline()  # the emitter box then spans its bounds (ParaView 6: not before)
     tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300,
                                  Seed=4, Engine="CPU")
     times = list(tracer.TimestepValues)
@@ -192,6 +193,7 @@ for flow_name in ("Shear Layer", "Double Gyre"):
 
 # With trails, the ranges cover the trail poses' points as well as the elements'.
 flow = AnalyticFlow(Flow="Shear Layer", Resolution=[24, 20, 12])
+flow.UpdatePipeline()  # the emitter box then spans its bounds (ParaView 6: not before)
 tracer = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4,
                              Engine="CPU", Trails=1, TrailLength=4, TrailSpacing=1)
 tracer.UpdatePipeline(list(tracer.TimestepValues)[6])
@@ -207,6 +209,7 @@ Delete(flow)
 # Output Arrays: only the arrays asked for, each as in the full output; the
 # trace itself is the same whatever is asked for.
 flow = AnalyticFlow(Flow="Double Gyre", Resolution=[24, 20, 12])
+flow.UpdatePipeline()  # the emitter box then spans its bounds (ParaView 6: not before)
 full = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4)
 narrow = BoundParticleTracer(Input=flow, ElementShape="Strip16", NumberOfElements=300, Seed=4,
                              OutputArrays=["Force", "Speed"])
