@@ -13,7 +13,7 @@ COMMON=(
   libopenmpi-dev openmpi-bin libutfcpp-dev libglew-dev liblz4-dev libdouble-conversion-dev
   libtiff-dev libnetcdf-dev libgdal-dev libavformat-dev libavcodec-dev
   libavutil-dev libswscale-dev libgl2ps-dev libtheora-dev libeigen3-dev
-  libgtest-dev xvfb xauth
+  libgtest-dev libbenchmark-dev xvfb xauth
   libepoxy-dev libegl-dev libegl-mesa0
 )
 case "$codename" in
