@@ -122,7 +122,7 @@ public:
   void readFieldSamples(std::vector<float>* velocity, std::vector<float>* vorticity) const;
 
   /// What a renderer needs to draw the state with vertex texture fetch: the
-  /// GL names of the current textures and the layout (bp_common.glsl).
+  /// GL names of the current textures and the layout (bp_shared.glsl).
   struct DrawInputs
   {
     unsigned positions = 0; ///< per particle: grid-local position, force

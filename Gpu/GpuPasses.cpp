@@ -3,6 +3,7 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "GpuFieldCache.h"
+#include "ShaderSource.h"
 
 #include <algorithm>
 #include <utility>
@@ -11,68 +12,12 @@ namespace bp
 {
 namespace
 {
-std::string compileShader(GLenum type, const std::string& source, GLuint& shader)
-{
-  shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok)
-  {
-    return std::string();
-  }
-  GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-  std::string log(std::size_t(std::max(length, 1)), '\0');
-  glGetShaderInfoLog(shader, length, nullptr, &log[0]);
-  return log;
-}
-
-/// A pass's program: the full-screen triangle and `fragment` after
-/// bp_common.glsl. Empty on success, otherwise the log.
-std::string linkPass(const std::string& fragment, GlProgram& out)
-{
-  const std::string header = "#version 330 core\n";
-  GLuint vs = 0, fs = 0;
-  std::string error = compileShader(GL_VERTEX_SHADER, header + bpShaderFullscreenVert, vs);
-  if (error.empty())
-  {
-    error = compileShader(GL_FRAGMENT_SHADER, header + bpShaderCommon + fragment, fs);
-  }
-  if (!error.empty())
-  {
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    return "a GPU engine shader does not compile: " + error;
-  }
-  // Owned before linking, so a program that fails to link is deleted with the rest.
-  out = GlProgram(glCreateProgram());
-  glAttachShader(out.get(), vs);
-  glAttachShader(out.get(), fs);
-  glLinkProgram(out.get());
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(out.get(), GL_LINK_STATUS, &ok);
-  if (!ok)
-  {
-    char log[2048] = { 0 };
-    glGetProgramInfoLog(out.get(), sizeof(log) - 1, nullptr, log);
-    return std::string("a GPU engine program does not link: ") + log;
-  }
-  return std::string();
-}
-
-/// The Jacobi pass with the template's springs as code (thesis §3.5) in
-/// place of its reads from the springs buffer.
+/// bp_restore.frag with the template's springs as code (thesis §3.5) in
+/// place of its reads from the springs buffer (with BP_GENERATED_SPRINGS).
 std::string generatedRestoreSource(const std::string& springSumCode)
 {
-  std::string fragment = std::string("#define BP_GENERATED_SPRINGS\n") + bpShaderRestoreFrag;
-  const std::string tag = "//BP::GeneratedSprings";
-  fragment.replace(fragment.find(tag), tag.size(), springSumCode);
-  return fragment;
+  return spliceCode(bpShaderRestoreFrag, bpShaderRestoreFragNumber, "//BP::GeneratedSprings",
+    springSumCode, GeneratedSpringsSource);
 }
 
 /// Attaches `texture` (0: none) as colour attachment k of the bound framebuffer.
@@ -190,17 +135,28 @@ void GpuPass::runPerParticle(std::initializer_list<GLuint> targets) const
 std::string GpuPasses::compile(const std::string& springSumCode)
 {
   Programs& p = this->programs;
-  const std::string restore = springSumCode.empty() ? std::string(bpShaderRestoreFrag)
-                                                    : generatedRestoreSource(springSumCode);
-  const std::pair<std::string, GlProgram*> passes[] = { { bpShaderResetFrag, &p.reset },
-    { bpShaderAdvectFrag, &p.advect }, { restore, &p.restore }, { bpShaderMatchFrag, &p.match },
-    { bpShaderMatchApplyFrag, &p.matchApply }, { bpShaderGaussSeidelFrag, &p.gaussSeidel },
-    { bpShaderTestFrag, &p.test }, { bpShaderFinalizeFrag, &p.finalize },
-    { bpShaderNormalsFrag, &p.normals }, { bpShaderSamplesFrag, &p.samples },
-    { bpShaderLinkFrag, &p.link }, { bpShaderPoseFrag, &p.pose } };
+  const bool generated = !springSumCode.empty();
+  const std::string restore =
+    generated ? generatedRestoreSource(springSumCode) : std::string(bpShaderRestoreFrag);
+  const std::pair<ShaderPiece, GlProgram*> passes[] = {
+    { { bpShaderResetFragNumber, bpShaderResetFrag }, &p.reset },
+    { { bpShaderAdvectFragNumber, bpShaderAdvectFrag }, &p.advect },
+    { { bpShaderRestoreFragNumber, restore }, &p.restore },
+    { { bpShaderMatchFragNumber, bpShaderMatchFrag }, &p.match },
+    { { bpShaderMatchApplyFragNumber, bpShaderMatchApplyFrag }, &p.matchApply },
+    { { bpShaderGaussSeidelFragNumber, bpShaderGaussSeidelFrag }, &p.gaussSeidel },
+    { { bpShaderTestFragNumber, bpShaderTestFrag }, &p.test },
+    { { bpShaderFinalizeFragNumber, bpShaderFinalizeFrag }, &p.finalize },
+    { { bpShaderNormalsFragNumber, bpShaderNormalsFrag }, &p.normals },
+    { { bpShaderSamplesFragNumber, bpShaderSamplesFrag }, &p.samples },
+    { { bpShaderLinkFragNumber, bpShaderLinkFrag }, &p.link },
+    { { bpShaderPoseFragNumber, bpShaderPoseFrag }, &p.pose }
+  };
   for (const auto& pass : passes)
   {
-    const std::string error = linkPass(pass.first, *pass.second);
+    const bool restorePass = pass.second == &p.restore;
+    const std::string error = buildPassProgram(
+      pass.first, restorePass && generated ? "#define BP_GENERATED_SPRINGS\n" : "", *pass.second);
     if (!error.empty())
     {
       return error;

@@ -4,7 +4,8 @@
  * @brief The GPU engine's fragment passes: compiled, fed, run and read back.
  *
  * Every pass is a full-screen triangle drawn into one to four RGBA32F
- * textures with the fragment shader of Shaders/ after bp_common.glsl. A pass
+ * textures with the fragment shader of Shaders/ after bp_shared.glsl and
+ * bp_common.glsl (put together by ShaderSource.h). A pass
  * begins with the uniforms every pass shares (the layout, the placement
  * parameters, the super set's lattice, the field), then takes its own
  * textures and uniforms by name, so a pass ignores what it does not use.
@@ -29,7 +30,7 @@ namespace bp
 class GpuFieldCache;
 class GpuPasses;
 
-/// Where each element and particle sits in the engine's textures (bp_common.glsl).
+/// Where each element and particle sits in the engine's textures (bp_shared.glsl).
 struct GpuLayout
 {
   int elementCount = 0;          ///< E
@@ -101,7 +102,8 @@ public:
   /// Compiles every pass and makes the framebuffers. `springSumCode`, when
   /// not empty, is the template's springs written as code (GpuTemplate.h) for
   /// the Jacobi pass instead of its springs buffer. Empty on success,
-  /// otherwise the compiler's or linker's log.
+  /// otherwise the compiler's or linker's log, naming the pass's file and
+  /// each message's file and line (ShaderSource.h).
   std::string compile(const std::string& springSumCode);
 
   /// Uses `program` with the uniforms every pass shares.

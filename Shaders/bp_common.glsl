@@ -1,25 +1,18 @@
-// Shared by every pass of the GPU engine. It mirrors Core/ operation for
-// operation (same formulas, same order of float operations) so that the GPU
-// engine matches the CPU engine to rounding.
+// Shared by every pass of the GPU engine, after bp_shared.glsl (the
+// layout). It mirrors Core/ operation for operation (same formulas, same
+// order of float operations) so that the GPU engine matches the CPU engine to
+// rounding. The BP_* constants are #defines made from Core/'s C++ values
+// (Gpu/ShaderSource.cpp: engineConstantDefinitions).
 
-// ---- Layout ---------------------------------------------------------------
-// Elements: a W x H grid, element e at (e % W, e / W).
-// Particles: one such grid ("block") per template particle index i; blocks sit
-// bx per row (thesis §3.5.1 strip layout, generalised to a near-square texture).
-uniform ivec2 bpElementGrid; // W, H
-uniform int bpBlocksPerRow;  // bx
-uniform int bpElements;      // E
-uniform int bpParticles;     // n, particles per element
+// ---- Layout (continued from bp_shared.glsl) -------------------------------
+uniform int bpElements;  // E
+uniform int bpParticles; // n, particles per element
 
-ivec2 bpElementTexel(int e)
+// The element of a per-element pass's texel; false outside the system.
+bool bpElementOf(ivec2 texel, out int e)
 {
-  return ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
-}
-
-ivec2 bpParticleTexel(int e, int i)
-{
-  ivec2 block = ivec2(i % bpBlocksPerRow, i / bpBlocksPerRow);
-  return block * bpElementGrid + bpElementTexel(e);
+  e = texel.y * bpElementGrid.x + texel.x;
+  return e < bpElements;
 }
 
 // Element and particle index of a particle texel; false outside the system.
@@ -88,7 +81,6 @@ vec3 bpCandidate(int e, float generation, int k)
 // Where releases may not land (releaseUnfitCells), per cell of the field.
 uniform usampler3D bpReleaseUnfit;
 uniform bool bpReleaseMasked;
-const int BP_RELEASE_TRIES = 64; // ReleaseTries
 
 bool bpReleaseFits(vec3 c);
 
@@ -133,6 +125,33 @@ float bpLifetimeOf(int e, float generation)
     bpDraw(bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
 }
 
+// Rows of the rotation matrix of the unit quaternion (x, y, z, w)
+// (quaternionToMatrix).
+void bpQuaternionRows(vec4 q, out vec3 r0, out vec3 r1, out vec3 r2)
+{
+  float x = q.x, y = q.y, z = q.z, w = q.w;
+  r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
+  r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
+  r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
+}
+
+// The matrix of rows r0, r1, r2 times v.
+vec3 bpRowsTimes(vec3 r0, vec3 r1, vec3 r2, vec3 v)
+{
+  return vec3(r0.x * v.x + r0.y * v.y + r0.z * v.z, r1.x * v.x + r1.y * v.y + r1.z * v.z,
+    r2.x * v.x + r2.y * v.y + r2.z * v.z);
+}
+
+// The Hamilton product a * b of quaternions (x, y, z, w): b, then a
+// (multiplyQuaternions).
+vec4 bpQuaternionProduct(vec4 a, vec4 b)
+{
+  return vec4(a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+    a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+    a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+}
+
 // Position of template particle `rest` in element e of the given generation.
 // A particle at `rest` of an element placed at its release centre c with the
 // orientation q the reset pass chose (the frame's rows when Fixed).
@@ -141,16 +160,10 @@ vec3 bpPlace(vec3 c, vec4 q, vec3 rest)
   vec3 r0 = bpFrameRow0, r1 = bpFrameRow1, r2 = bpFrameRow2;
   if (bpOrientation != 0)
   {
-    // The reset pass's quaternion as a matrix (quaternionToMatrix).
-    float x = q.x, y = q.y, z = q.z, w = q.w;
-    r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
-    r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
-    r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
+    // The reset pass's quaternion as a matrix.
+    bpQuaternionRows(q, r0, r1, r2);
   }
-  return c +
-    bpElementSize *
-    vec3(r0.x * rest.x + r0.y * rest.y + r0.z * rest.z, r1.x * rest.x + r1.y * rest.y + r1.z * rest.z,
-      r2.x * rest.x + r2.y * rest.y + r2.z * rest.z);
+  return c + bpElementSize * bpRowsTimes(r0, r1, r2, rest);
 }
 
 // ---- The field (VectorField::sample, exact trilinear by texelFetch) --------
@@ -210,22 +223,40 @@ void bpLocate(int a, float x, out int cell, out float fraction)
   cell = i;
 }
 
-vec3 bpSampleSlice(sampler3D field, vec3 p)
+// The cell that holds p (its first corner) and the fractions within it.
+ivec3 bpLocateCell(vec3 p, out vec3 f)
 {
   ivec3 a;
-  vec3 f;
   bpLocate(0, p.x, a.x, f.x);
   bpLocate(1, p.y, a.y, f.y);
   bpLocate(2, p.z, a.z, f.z);
+  return a;
+}
+
+// The field's values at the 8 corners of the cell at `a` (its first corner),
+// c[k] at offset (k & 1, (k >> 1) & 1, k >> 2); along a flat axis both
+// corners are the one point.
+void bpCorners(sampler3D field, ivec3 a, out vec3 c[8])
+{
   ivec3 s = bpNextCorner;
-  vec3 c000 = texelFetch(field, a, 0).xyz;
-  vec3 c100 = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;
-  vec3 c010 = texelFetch(field, a + ivec3(0, s.y, 0), 0).xyz;
-  vec3 c110 = texelFetch(field, a + ivec3(s.x, s.y, 0), 0).xyz;
-  vec3 c001 = texelFetch(field, a + ivec3(0, 0, s.z), 0).xyz;
-  vec3 c101 = texelFetch(field, a + ivec3(s.x, 0, s.z), 0).xyz;
-  vec3 c011 = texelFetch(field, a + ivec3(0, s.y, s.z), 0).xyz;
-  vec3 c111 = texelFetch(field, a + s, 0).xyz;
+  c[0] = texelFetch(field, a, 0).xyz;
+  c[1] = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;
+  c[2] = texelFetch(field, a + ivec3(0, s.y, 0), 0).xyz;
+  c[3] = texelFetch(field, a + ivec3(s.x, s.y, 0), 0).xyz;
+  c[4] = texelFetch(field, a + ivec3(0, 0, s.z), 0).xyz;
+  c[5] = texelFetch(field, a + ivec3(s.x, 0, s.z), 0).xyz;
+  c[6] = texelFetch(field, a + ivec3(0, s.y, s.z), 0).xyz;
+  c[7] = texelFetch(field, a + s, 0).xyz;
+}
+
+vec3 bpSampleSlice(sampler3D field, vec3 p)
+{
+  vec3 f;
+  ivec3 a = bpLocateCell(p, f);
+  vec3 c[8];
+  bpCorners(field, a, c);
+  vec3 c000 = c[0], c100 = c[1], c010 = c[2], c110 = c[3];
+  vec3 c001 = c[4], c101 = c[5], c011 = c[6], c111 = c[7];
   vec3 x00 = c000 + f.x * (c100 - c000);
   vec3 x10 = c010 + f.x * (c110 - c010);
   vec3 x01 = c001 + f.x * (c101 - c001);
@@ -272,11 +303,8 @@ bool bpOutsideCell(vec3 p, float weight)
   {
     return false;
   }
-  ivec3 a;
   vec3 f;
-  bpLocate(0, p.x, a.x, f.x);
-  bpLocate(1, p.y, a.y, f.y);
-  bpLocate(2, p.z, a.z, f.z);
+  ivec3 a = bpLocateCell(p, f);
   return (bpMasked0 && texelFetch(bpOutside0, a, 0).r != 0u) ||
     (weight > 0.0 && bpMasked1 && texelFetch(bpOutside1, a, 0).r != 0u);
 }
@@ -286,15 +314,10 @@ bool bpOutsideCell(vec3 p, float weight)
 // fractions f; w[a] is the fraction's derivative along axis a.
 void bpGradient(sampler3D field, ivec3 a, vec3 f, vec3 w, out vec3 d[3])
 {
-  ivec3 s = bpNextCorner;
-  vec3 c000 = texelFetch(field, a, 0).xyz;
-  vec3 c100 = texelFetch(field, a + ivec3(s.x, 0, 0), 0).xyz;
-  vec3 c010 = texelFetch(field, a + ivec3(0, s.y, 0), 0).xyz;
-  vec3 c110 = texelFetch(field, a + ivec3(s.x, s.y, 0), 0).xyz;
-  vec3 c001 = texelFetch(field, a + ivec3(0, 0, s.z), 0).xyz;
-  vec3 c101 = texelFetch(field, a + ivec3(s.x, 0, s.z), 0).xyz;
-  vec3 c011 = texelFetch(field, a + ivec3(0, s.y, s.z), 0).xyz;
-  vec3 c111 = texelFetch(field, a + s, 0).xyz;
+  vec3 c[8];
+  bpCorners(field, a, c);
+  vec3 c000 = c[0], c100 = c[1], c010 = c[2], c110 = c[3];
+  vec3 c001 = c[4], c101 = c[5], c011 = c[6], c111 = c[7];
   vec3 x0 = (c100 - c000) + f.y * ((c110 - c010) - (c100 - c000));
   vec3 x1 = (c101 - c001) + f.y * ((c111 - c011) - (c101 - c001));
   d[0] = (x0 + f.z * (x1 - x0)) * w.x;
@@ -311,17 +334,12 @@ void bpGradient(sampler3D field, ivec3 a, vec3 f, vec3 w, out vec3 d[3])
 // values. Used by the colouring samples and the pose pass's vorticity meter.
 vec3 bpCurl(vec3 p, float weight)
 {
-  ivec3 a;
   vec3 f, w;
+  ivec3 a = bpLocateCell(p, f);
   for (int k = 0; k < 3; ++k)
   {
-    int cell;
-    float fraction;
-    bpLocate(k, p[k], cell, fraction);
-    a[k] = cell;
-    f[k] = fraction;
     // 0 along a flat axis (its inverse spacing is 0), where nothing varies.
-    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(cell, k), 0).y : bpInverseSpacing[k];
+    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(a[k], k), 0).y : bpInverseSpacing[k];
   }
   vec3 d[3];
   bpGradient(bpField0, a, f, w, d);
@@ -339,11 +357,8 @@ vec3 bpCurl(vec3 p, float weight)
 
 bool bpReleaseFits(vec3 c)
 {
-  ivec3 a;
   vec3 f;
-  bpLocate(0, c.x, a.x, f.x);
-  bpLocate(1, c.y, a.y, f.y);
-  bpLocate(2, c.z, a.z, f.z);
+  ivec3 a = bpLocateCell(c, f);
   return bpContains(c) && texelFetch(bpReleaseUnfit, a, 0).r == 0u;
 }
 
@@ -363,22 +378,29 @@ bool bpFinite(vec3 p)
   return !any(isnan(p)) && !any(isinf(p));
 }
 
-// ---- Shape matching (Core/ShapeMatching.h) ---------------------------------
-const int bpRotationIterations = 8;
-
-// Rows of the rotation matrix of the unit quaternion (x, y, z, w).
-void bpQuaternionRows(vec4 q, out vec3 r0, out vec3 r1, out vec3 r2)
+// ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
+// The force term of a spring between the particles at pa and pb, f (pa - pb)
+// with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where
+// the two coincide. Each pass scales it by the particle's share.
+bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force)
 {
-  float x = q.x, y = q.y, z = q.z, w = q.w;
-  r0 = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y));
-  r1 = vec3(2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x));
-  r2 = vec3(2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y));
+  vec3 d = pa - pb;
+  float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (len > 0.0)
+  {
+    float f = stiffness * (rest - len) / len;
+    force = f * d;
+    return true;
+  }
+  force = vec3(0.0);
+  return false;
 }
 
+// ---- Shape matching (Core/ShapeMatching.h) ---------------------------------
 // Turns q towards the rotation closest to A, given by its rows.
 vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
 {
-  for (int iteration = 0; iteration < bpRotationIterations; ++iteration)
+  for (int iteration = 0; iteration < BP_ROTATION_ITERATIONS; ++iteration)
   {
     vec3 r0, r1, r2;
     bpQuaternionRows(q, r0, r1, r2);
@@ -401,11 +423,7 @@ vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
       break;
     }
     float s = sin(0.5 * angle) / angle, c = cos(0.5 * angle);
-    vec4 d = vec4(omega * s, c);
-    vec4 n = vec4(d.w * q.x + d.x * q.w + d.y * q.z - d.z * q.y,
-      d.w * q.y - d.x * q.z + d.y * q.w + d.z * q.x,
-      d.w * q.z + d.x * q.y - d.y * q.x + d.z * q.w,
-      d.w * q.w - d.x * q.x - d.y * q.y - d.z * q.z);
+    vec4 n = bpQuaternionProduct(vec4(omega * s, c), q);
     float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
     q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
   }
@@ -413,10 +431,6 @@ vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
 }
 
 // ---- Poses and spins (Core/Pose.h) ------------------------------------------
-const int bpPoseIterations = 2;            // PoseIterations
-const float bpPoseDamping = 1.0e-3;        // PoseDamping
-const float bpMinVorticityStep = 1.0e-4;   // MinVorticityStep
-const float bpMaxSpinVorticityRatio = 2.0; // MaxSpinVorticityRatio
 
 // momentOf: the centre c of element e's particles in `positions` and their
 // moment A = sum (x_i - c)(s r_i)^T against the rest shape, by rows.
@@ -442,15 +456,6 @@ void bpMomentOf(sampler2D positions, sampler2D rest, int e, out vec3 c, out vec3
   }
 }
 
-// The Hamilton product a * b of quaternions (x, y, z, w).
-vec4 bpQuaternionProduct(vec4 a, vec4 b)
-{
-  return vec4(a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-    a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
-    a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
-}
-
 // trackRotation: Newton steps towards the rotation R closest to A (the
 // maximum of tr(R^T A)): with P = sum_c r_c a_c^T over the columns of R and
 // A, the turn w = H^-1 g, g = sum_c r_c x a_c, H = tr(P) I - sym(P) (+
@@ -458,7 +463,7 @@ vec4 bpQuaternionProduct(vec4 a, vec4 b)
 // normalised.
 vec4 bpTrackRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
 {
-  for (int iteration = 0; iteration < bpPoseIterations; ++iteration)
+  for (int iteration = 0; iteration < BP_POSE_ITERATIONS; ++iteration)
   {
     vec3 r0, r1, r2;
     bpQuaternionRows(q, r0, r1, r2);
@@ -476,7 +481,7 @@ vec4 bpTrackRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
       p2 += r.z * a;
     }
     float trace = p0.x + p1.y + p2.z;
-    float d = trace + bpPoseDamping * abs(trace);
+    float d = trace + BP_POSE_DAMPING * abs(trace);
     float h00 = d - p0.x, h11 = d - p1.y, h22 = d - p2.z;
     float h01 = -0.5 * (p0.y + p1.x), h02 = -0.5 * (p0.z + p2.x), h12 = -0.5 * (p1.z + p2.y);
     float c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
@@ -490,9 +495,8 @@ vec4 bpTrackRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
     vec3 w = vec3((c00 * g.x + c01 * g.y + c02 * g.z) * halfInverse,
       (c01 * g.x + c11 * g.y + c12 * g.z) * halfInverse,
       (c02 * g.x + c12 * g.y + c22 * g.z) * halfInverse);
-    // q = (w, 1) * q (Hamilton product), then normalised.
-    vec4 n = vec4(q.x + w.x * q.w + w.y * q.z - w.z * q.y, q.y - w.x * q.z + w.y * q.w + w.z * q.x,
-      q.z + w.x * q.y - w.y * q.x + w.z * q.w, q.w - w.x * q.x - w.y * q.y - w.z * q.z);
+    // q = (w, 1) * q, then normalised.
+    vec4 n = bpQuaternionProduct(vec4(w, 1.0), q);
     float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
     q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
   }
@@ -514,15 +518,15 @@ vec3 bpSpinBetween(vec4 before, vec4 after, float h)
 }
 
 // spinVorticityRatio: 2 (spin . curl) / |curl|^2, 0 where |curl| h is below
-// the meter's floor (or not finite), clamped to +-bpMaxSpinVorticityRatio.
+// the meter's floor (or not finite), clamped to +-BP_MAX_SPIN_VORTICITY_RATIO.
 float bpSpinVorticityRatio(vec3 spin, vec3 curl, float h)
 {
   float c2 = curl.x * curl.x + curl.y * curl.y + curl.z * curl.z;
-  float lowest = bpMinVorticityStep / h;
+  float lowest = BP_MIN_VORTICITY_STEP / h;
   if (!(c2 >= lowest * lowest))
   {
     return 0.0;
   }
   float ratio = 2.0 * (spin.x * curl.x + spin.y * curl.y + spin.z * curl.z) / c2;
-  return max(-bpMaxSpinVorticityRatio, min(bpMaxSpinVorticityRatio, ratio));
+  return max(-BP_MAX_SPIN_VORTICITY_RATIO, min(BP_MAX_SPIN_VORTICITY_RATIO, ratio));
 }

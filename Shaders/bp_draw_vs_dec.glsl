@@ -6,6 +6,8 @@
 // texture fetch), never from a buffer uploaded per frame. A motion trail's
 // pose is the element draw again (bpTrail 1) with the positions of one slot
 // of the engine's trail ring and normals computed here from them.
+// Gpu/CMakeLists.txt puts bp_shared.glsl (the texture layout, the normals'
+// arithmetic) before this file in the embedded bpShaderDrawVSDec.
 //
 // Model coordinates are the engine's grid-local ones, as fetched: the mapper
 // composes the translation to world coordinates into MCDCMatrix and
@@ -28,8 +30,6 @@ uniform int bpTrail;           // 1 in a trail pose's draw, 0 otherwise
 uniform float bpTrailAge;      // in a trail pose's draw: the shown time minus the slot's
 uniform int bpLinksPerRow;
 uniform int bpDrawLinks;       // 1 in the link draw, 0 in the element draw
-uniform ivec2 bpElementGrid;
-uniform int bpBlocksPerRow;
 uniform int bpScalarMode;      // a BP_COLOR_* of Core/OutputArrays.h (ColorSource)
 uniform int bpComponent;       // for vector sources: a component, or -1 for the magnitude
 uniform vec2 bpScalarRange;    // the lookup table's range (Layer's: grid-local)
@@ -40,15 +40,9 @@ vec4 bpVertexMC;
 vec3 bpNormalMC;
 bool bpHidden; // the element, or an element of the link, was placed outside the release window
 
-ivec2 bpDrawTexel(int e, int i)
-{
-  ivec2 block = ivec2(i % bpBlocksPerRow, i / bpBlocksPerRow);
-  return block * bpElementGrid + ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
-}
-
 bool bpHiddenElement(int e)
 {
-  return texelFetch(bpCenters, ivec2(e % bpElementGrid.x, e / bpElementGrid.x), 0).w > 0.5;
+  return texelFetch(bpCenters, bpElementTexel(e), 0).w > 0.5;
 }
 
 // A hidden element is not drawn: every vertex of its primitives lies outside
@@ -65,7 +59,7 @@ void bpClipHidden()
 
 float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
 {
-  ivec2 elementTexel = ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+  ivec2 elementTexel = bpElementTexel(e);
   if (bpScalarMode == BP_COLOR_FORCE)
     return state.w;
   if (bpScalarMode == BP_COLOR_LIFETIME)
@@ -110,13 +104,12 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
 // another generation's (a released element starts a new trail), or none.
 bool bpNotInTrail(int e)
 {
-  ivec2 elementTexel = ivec2(e % bpElementGrid.x, e / bpElementGrid.x);
+  ivec2 elementTexel = bpElementTexel(e);
   return texelFetch(bpTrailElements, elementTexel, 0).y != texelFetch(bpElements, elementTexel, 0).y;
 }
 
 // Particle i's normal in element e's trail pose, as the CPU output computes a
-// pose's normals (bp::elementNormals): the sum of the unit normals of the
-// triangles it is a corner of, normalized; (0, 0, 1) where there are none.
+// pose's normals (bp::elementNormals, bp_shared.glsl).
 vec3 bpTrailNormal(int e, int i)
 {
   vec3 sum = vec3(0.0);
@@ -125,14 +118,10 @@ vec3 bpTrailNormal(int e, int i)
     ivec4 corners = texelFetch(bpAdjacency, ivec2(k, i), 0);
     if (corners.x < 0)
       break;
-    vec3 a = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.x), 0).xyz;
-    vec3 b = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.y), 0).xyz;
-    vec3 c = texelFetch(bpTrailPositions, bpDrawTexel(e, corners.z), 0).xyz;
-    vec3 x = cross(b - a, c - a);
-    float len = length(x);
-    if (len > 0.0)
-      sum += x / len;
+    vec3 a = texelFetch(bpTrailPositions, bpParticleTexel(e, corners.x), 0).xyz;
+    vec3 b = texelFetch(bpTrailPositions, bpParticleTexel(e, corners.y), 0).xyz;
+    vec3 c = texelFetch(bpTrailPositions, bpParticleTexel(e, corners.z), 0).xyz;
+    bpAddTriangleNormal(sum, a, b, c);
   }
-  float total = length(sum);
-  return total > 0.0 ? sum / total : vec3(0.0, 0.0, 1.0);
+  return bpNormalOfSum(sum);
 }

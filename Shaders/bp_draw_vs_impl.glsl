@@ -16,7 +16,7 @@
     {
       bpHidden = bpHiddenElement(bpElement) || (bpTrail != 0 && bpNotInTrail(bpElement));
     }
-    ivec2 bpTexel = bpDrawTexel(bpElement, bpParticle);
+    ivec2 bpTexel = bpParticleTexel(bpElement, bpParticle);
     vec4 bpState = texelFetch(bpPositions, bpTexel, 0);
     if (bpTrail != 0)
     {

@@ -23,12 +23,10 @@ void main()
     vec4 spring = texelFetch(bpColouredSprings, ivec2(2 * i + 1, bpColour), 0);
     vec3 pa = texelFetch(bpPositions, bpParticleTexel(e, int(ends.x)), 0).xyz;
     vec3 pb = texelFetch(bpPositions, bpParticleTexel(e, int(ends.y)), 0).xyz;
-    vec3 d = pa - pb;
-    float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    if (len > 0.0)
+    vec3 force;
+    if (bpSpringForce(pa, pb, spring.x, spring.y, force))
     {
-      float f = spring.y * (spring.x - len) / len;
-      p += ends.z * (f * d);
+      p += ends.z * force;
     }
   }
   outPosition = vec4(p, 0.0);

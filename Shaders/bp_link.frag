@@ -36,12 +36,10 @@ void main()
     }
     ++count;
     vec3 o = texelFetch(bpPositions, bpParticleTexel(neighbour[d], i), 0).xyz;
-    vec3 v = q - o;
-    float len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-    if (len > 0.0)
+    vec3 force;
+    if (bpSpringForce(q, o, rest[d], bpLinkStiffness, force))
     {
-      float f = bpLinkStiffness * (rest[d] - len) / len;
-      acc += 0.5 * (f * v);
+      acc += 0.5 * force;
     }
   }
   if (count > 0)

@@ -20,10 +20,10 @@ layout(location = 3) out vec4 outLinear1;
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e = texel.y * bpElementGrid.x + texel.x;
+  int e;
   outLinear0 = vec4(0.0);
   outLinear1 = vec4(0.0);
-  if (e >= bpElements)
+  if (!bpElementOf(texel, e))
   {
     outCenter = vec4(0.0);
     outOrientation = vec4(0.0);

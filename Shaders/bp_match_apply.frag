@@ -43,7 +43,6 @@ void main()
     bpQuaternionRows(texelFetch(bpOrientations, bpElementTexel(e), 0), r0, r1, r2);
   }
   vec3 q = bpElementSize * texelFetch(bpRest, ivec2(i, 0), 0).xyz;
-  vec3 goal = c + vec3(r0.x * q.x + r0.y * q.y + r0.z * q.z, r1.x * q.x + r1.y * q.y + r1.z * q.z,
-                    r2.x * q.x + r2.y * q.y + r2.z * q.z);
+  vec3 goal = c + bpRowsTimes(r0, r1, r2, q);
   outPosition = vec4(p + bpShapeStiffness * (goal - p), 0.0);
 }

@@ -1,5 +1,6 @@
 // Step 4, per particle: the normalised sum of the unit normals of the
-// particle's triangles, gathered in triangle order (Engine::normalsOf).
+// particle's triangles, gathered in triangle order (Engine::normalsOf,
+// bp_shared.glsl).
 uniform sampler2D bpState;
 uniform sampler2D bpParticleInfo;
 uniform sampler2D bpTriangles;  // per (particle, triangle): (i0, i1, i2, 0)
@@ -25,14 +26,7 @@ void main()
     vec3 a = texelFetch(bpState, bpParticleTexel(e, int(tri.x)), 0).xyz;
     vec3 b = texelFetch(bpState, bpParticleTexel(e, int(tri.y)), 0).xyz;
     vec3 c = texelFetch(bpState, bpParticleTexel(e, int(tri.z)), 0).xyz;
-    vec3 u = b - a, v = c - a;
-    vec3 x = vec3(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
-    float len = sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
-    if (len > 0.0)
-    {
-      sum += x / len;
-    }
+    bpAddTriangleNormal(sum, a, b, c);
   }
-  float len = sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
-  outNormal = vec4(len > 0.0 ? sum / len : vec3(0.0, 0.0, 1.0), 0.0);
+  outNormal = vec4(bpNormalOfSum(sum), 0.0);
 }

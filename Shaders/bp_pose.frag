@@ -18,8 +18,8 @@ layout(location = 1) out vec4 outSpin; // angular velocity, SpinVorticityRatio
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e = texel.y * bpElementGrid.x + texel.x;
-  if (e >= bpElements)
+  int e;
+  if (!bpElementOf(texel, e))
   {
     outPose = vec4(0.0);
     outSpin = vec4(0.0);

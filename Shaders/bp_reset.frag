@@ -17,15 +17,6 @@ uniform int bpPlaneAxis;       // Parameters::planeAxis
 uniform bool bpAlongFlow;      // Orientation::AlongFlow, with a field to sample
 uniform float bpReleaseWeight; // the second slice's weight at the step's start
 
-// The product r * q of unit quaternions: q, then r (multiplyQuaternions).
-vec4 bpMultiply(vec4 r, vec4 q)
-{
-  return vec4(r.w * q.x + r.x * q.w + r.y * q.z - r.z * q.y,
-    r.w * q.y - r.x * q.z + r.y * q.w + r.z * q.x,
-    r.w * q.z + r.x * q.y - r.y * q.x + r.z * q.w,
-    r.w * q.w - r.x * q.x - r.y * q.y - r.z * q.z);
-}
-
 // The frame's x axis turned onto the flow v (alongFlowQuaternion).
 vec4 bpAlongFlowQuaternion(vec3 v)
 {
@@ -55,7 +46,7 @@ vec4 bpAlongFlowQuaternion(vec3 v)
     float n = 1.0 / sqrt(r.x * r.x + r.y * r.y + r.z * r.z + r.w * r.w);
     r = vec4(r.x * n, r.y * n, r.z * n, r.w * n);
   }
-  return bpMultiply(r, bpFrameQuaternion);
+  return bpQuaternionProduct(r, bpFrameQuaternion);
 }
 
 layout(location = 0) out vec4 outState;
@@ -66,8 +57,8 @@ layout(location = 3) out vec4 outPose;
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e = texel.y * bpElementGrid.x + texel.x;
-  if (e >= bpElements)
+  int e;
+  if (!bpElementOf(texel, e))
   {
     outState = vec4(0.0);
     outCenter = vec4(0.0);
@@ -91,7 +82,7 @@ void main()
       float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, 3u);
       vec4 r = vec4(0.0, 0.0, 0.0, cos(turn)); // half the angle
       r[bpPlaneAxis] = sin(turn);
-      outOrientation = bpMultiply(r, bpFrameQuaternion);
+      outOrientation = bpQuaternionProduct(r, bpFrameQuaternion);
     }
     else if (bpOrientation == 1)
     {

@@ -20,14 +20,8 @@ vec3 bpSpringCorrection(int e, int a, int b, float share, float rest, float stif
 {
   vec3 pa = texelFetch(bpPositions, bpParticleTexel(e, a), 0).xyz;
   vec3 pb = texelFetch(bpPositions, bpParticleTexel(e, b), 0).xyz;
-  vec3 d = pa - pb;
-  float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  if (len > 0.0)
-  {
-    float f = stiffness * (rest - len) / len;
-    return share * (f * d);
-  }
-  return vec3(0.0);
+  vec3 force;
+  return bpSpringForce(pa, pb, rest, stiffness, force) ? share * force : vec3(0.0);
 }
 
 #ifdef BP_GENERATED_SPRINGS

@@ -29,8 +29,8 @@ out vec4 outState; // (lifetime, generation, flag, non-finite)
 void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e = texel.y * bpElementGrid.x + texel.x;
-  if (e >= bpElements)
+  int e;
+  if (!bpElementOf(texel, e))
   {
     outState = vec4(0.0);
     return;

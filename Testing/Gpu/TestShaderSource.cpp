@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The GPU engine's shader assembly (Gpu/ShaderSource.h): compile errors name
+// the file and line through the path every pass takes, and the constants the
+// shaders get from Core/ read back as the C++ values.
+#include "BoundParticlesShaders.h"
+#include "Engine.h"
+#include "HeadlessContext.h"
+#include "Pose.h"
+#include "ShaderSource.h"
+#include "ShapeMatching.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace
+{
+bool haveContext()
+{
+  static std::unique_ptr<bp::HeadlessContext> shared;
+  static std::string error;
+  if (!shared)
+  {
+    shared.reset(new bp::HeadlessContext);
+    error = shared->create();
+  }
+  EXPECT_EQ(error, "") << "no headless OpenGL context";
+  return error.empty();
+}
+
+/// Whether `log` names `file` at `line`, as Mesa ("file:3(") or NVIDIA ("file(3)") writes it.
+bool names(const std::string& log, const std::string& file, int line)
+{
+  const std::string n = std::to_string(line);
+  return log.find(file + ":" + n + "(") != std::string::npos ||
+    log.find(file + "(" + n + ")") != std::string::npos ||
+    log.find(file + ":" + n + ":") != std::string::npos;
+}
+
+/// The #define values of engineConstantDefinitions(), by name.
+std::map<std::string, std::string> definitions()
+{
+  std::map<std::string, std::string> out;
+  std::istringstream lines(bp::engineConstantDefinitions());
+  std::string hash, name, value;
+  while (lines >> hash >> name >> value)
+  {
+    EXPECT_EQ(hash, "#define");
+    out[name] = value;
+  }
+  return out;
+}
+
+float readFloat(const std::string& text)
+{
+  std::istringstream in(text);
+  in.imbue(std::locale::classic());
+  float value = 0.0f;
+  in >> value;
+  return value;
+}
+} // namespace
+
+TEST(ShaderSource, ACompileErrorNamesThePassFileAndLine)
+{
+  if (!haveContext())
+    return;
+  // Line 3 of the pass, after bp_shared.glsl and bp_common.glsl.
+  bp::GlProgram program;
+  const std::string error = bp::buildPassProgram(
+    { bpShaderTestFragNumber, "void main()\n{\n  float x = bpNoSuchName;\n}\n" }, "", program);
+  EXPECT_TRUE(names(error, "bp_test.frag", 3)) << error;
+  std::printf("%s", error.c_str());
+  EXPECT_NE(error.find("(bp_test.frag) does not compile"), std::string::npos) << error;
+}
+
+TEST(ShaderSource, ErrorsInAndAfterGeneratedSpringsNameTheirSource)
+{
+  if (!haveContext())
+    return;
+  const std::string pass = "void main()\n{\n//TAG\n  float y = BROKEN_AFTER;\n}\n";
+  const std::string code = "  float a = 1.0;\n  float b = BROKEN_IN;";
+  const int restore = bpShaderRestoreFragNumber;
+  bp::GlProgram program;
+  std::string error = bp::buildPassProgram(
+    { restore, bp::spliceCode(pass, restore, "//TAG", code, bp::GeneratedSpringsSource) },
+    "#define BROKEN_AFTER 0.0\n", program);
+  EXPECT_TRUE(names(error, bp::shaderFileName(bp::GeneratedSpringsSource), 2)) << error;
+  error = bp::buildPassProgram(
+    { restore, bp::spliceCode(pass, restore, "//TAG", code, bp::GeneratedSpringsSource) },
+    "#define BROKEN_IN 0.0\n", program);
+  EXPECT_TRUE(names(error, "bp_restore.frag", 4)) << error;
+}
+
+TEST(ShaderSource, LogsOfOtherDriversNameTheFile)
+{
+  const std::string common = bp::shaderFileName(bpShaderCommonNumber);
+  EXPECT_EQ(common, "bp_common.glsl");
+  EXPECT_EQ(bp::describeShaderLog("2(17) : error C1008: undefined variable \"x\"\n"),
+    common + "(17) : error C1008: undefined variable \"x\"\n");
+  EXPECT_EQ(bp::describeShaderLog("ERROR: 2:17: 'x' : undeclared identifier\n"),
+    "ERROR: " + common + ":17: 'x' : undeclared identifier\n");
+  EXPECT_EQ(bp::describeShaderLog("2:17(3): error: `x' undeclared\n"),
+    common + ":17(3): error: `x' undeclared\n");
+  // Mesa keeps the line of a #line directive but not its source-string number.
+  EXPECT_EQ(bp::describeShaderLog("0:200017(3): error: `x' undeclared\n"),
+    common + ":17(3): error: `x' undeclared\n");
+}
+
+TEST(ShaderSource, ConstantsReadBackAsTheCoreValues)
+{
+  std::map<std::string, std::string> d = definitions();
+  EXPECT_EQ(d["BP_RELEASE_TRIES"], std::to_string(bp::ReleaseTries));
+  EXPECT_EQ(d["BP_ROTATION_ITERATIONS"], std::to_string(bp::RotationIterations));
+  EXPECT_EQ(d["BP_POSE_ITERATIONS"], std::to_string(bp::PoseIterations));
+  EXPECT_EQ(readFloat(d["BP_POSE_DAMPING"]), bp::PoseDamping);
+  EXPECT_EQ(readFloat(d["BP_MIN_VORTICITY_STEP"]), bp::MinVorticityStep);
+  EXPECT_EQ(readFloat(d["BP_MAX_SPIN_VORTICITY_RATIO"]), bp::MaxSpinVorticityRatio);
+  for (const auto& value : d)
+  {
+    // GLSL reads "2" as an int: a float constant needs its point.
+    if (value.first.find("ITERATIONS") == std::string::npos && value.first != "BP_RELEASE_TRIES")
+    {
+      EXPECT_NE(value.second.find_first_of(".e"), std::string::npos) << value.first;
+    }
+  }
+}
