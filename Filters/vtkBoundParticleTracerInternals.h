@@ -122,14 +122,8 @@ struct vtkBoundParticleTracer::vtkInternals
   bool Resampled = false; ///< the field came through the Resampler
   const std::uint64_t ProducerId;
 
-  // The update in progress.
+  // The update in progress (the pass state is private, below).
   bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
-  int RequestIndex = 0;           ///< the input time step this pass asked for
-  int LastRequested = -1;         ///< the input time step upstream holds
-  bool ReadThisUpdate = false;    ///< a time step came from upstream in this update
-  int IntervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
-  double ProgressFrom = 0.0;      ///< where the update's stepping starts
-  double ProgressAt = 0.0;        ///< where it stands
 
   /// The share of the update's stepping done, over all its passes.
   double progress() const
@@ -211,9 +205,15 @@ struct vtkBoundParticleTracer::vtkInternals
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
 private:
-  vtkAlgorithm* const Owner;  ///< for messages, progress and abort only
-  bool Continuing = false;    ///< a later pass of the same update
-  bool ReplayPending = false; ///< this update replays from the start
+  vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
+  bool Continuing = false;     ///< a later pass of the same update
+  bool ReplayPending = false;  ///< this update replays from the start
+  int RequestIndex = 0;        ///< the input time step this pass asked for
+  int LastRequested = -1;      ///< the input time step upstream holds
+  bool ReadThisUpdate = false; ///< a time step came from upstream in this update
+  int IntervalAtStart = -1;    ///< the data interval shown before it (-1: a replay)
+  double ProgressFrom = 0.0;   ///< where the update's stepping starts
+  double ProgressAt = 0.0;     ///< where it stands
 
   /// Forgets every trace: each stepper's cursor, and pending GPU work.
   void invalidate();
