@@ -412,6 +412,31 @@ int vtkBoundParticleTracer::RequestData(
   return 1;
 }
 
+int vtkBoundParticleTracer::EndUpdatePass(
+  const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  using Pass = bpvtk::TracerPass;
+  vtkInternals& I = *this->Internals;
+  if (pass.kind == Pass::NeedStep)
+  {
+    I.continueWith(pass.index);
+    request->Set(SDDP::CONTINUE_EXECUTING(), 1);
+    // The executive reports 1 at this pass's end and 0 at the next one's
+    // start: hold the bar where the update stands until steps move it.
+    this->SetProgressShiftScale(I.progress(), 0.0);
+    return 1;
+  }
+  if (pass.kind == Pass::Failed)
+  {
+    vtkErrorMacro(<< pass.message);
+  }
+  I.endFailedUpdate();
+  request->Remove(SDDP::CONTINUE_EXECUTING());
+  output->Initialize();
+  return 1;
+}
+
 int vtkBoundParticleTracer::ExecuteUpdatePass(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -423,27 +448,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   output->Initialize();
   this->SetProgressShiftScale(0.0, 1.0);
 
-  // Ends the update (quietly when aborted), or this pass asking for another time step.
-  auto end = [&](const Pass& pass)
-  {
-    if (pass.kind == Pass::NeedStep)
-    {
-      I.continueWith(pass.index);
-      request->Set(SDDP::CONTINUE_EXECUTING(), 1);
-      // The executive reports 1 at this pass's end and 0 at the next one's
-      // start: hold the bar where the update stands until steps move it.
-      this->SetProgressShiftScale(I.progress(), 0.0);
-      return 1;
-    }
-    if (pass.kind == Pass::Failed)
-    {
-      vtkErrorMacro(<< pass.message);
-    }
-    I.endFailedUpdate();
-    request->Remove(SDDP::CONTINUE_EXECUTING());
-    output->Initialize();
-    return 1;
-  };
+  auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
   if (!I.Plan.hasTimes())
   {
     return end(Pass::fail("The filter has no time range; see the previous error."));
