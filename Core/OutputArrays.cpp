@@ -10,6 +10,26 @@
 namespace bp
 {
 
+namespace
+{
+/// The flags that end a row, by name; a row combines them with | (NoFlags:
+/// the colour source as it is, on by default, no poses needed).
+enum RowFlag : unsigned
+{
+  NoFlags = 0,
+  ColorsMagnitude = 1u << 0, ///< OutputArray::colorsMagnitude
+  OffByDefault = 1u << 1,    ///< not OutputArray::onByDefault
+  NeedsPoses = 1u << 2       ///< OutputArray::needsPoses
+};
+
+OutputArray row(OutputArrayId id, const char* name, int components, ValueType type, ArrayRole role,
+  ArraySource source, ColorSource color, RangeSource range, unsigned flags)
+{
+  return { id, name, components, type, role, source, color, (flags & ColorsMagnitude) != 0, range,
+    (flags & OffByDefault) == 0, (flags & NeedsPoses) != 0 };
+}
+} // namespace
+
 const std::vector<OutputArray>& outputArrays()
 {
   using Id = OutputArrayId;
@@ -18,37 +38,44 @@ const std::vector<OutputArray>& outputArrays()
   using Src = ArraySource;
   using C = ColorSource;
   using R = RangeSource;
+  // id, name, components, value type, role, source, colour source, range source, flags.
   static const std::vector<OutputArray> table = {
-    { Id::Normals, "Normals", 3, V::Float, Role::Normals, Src::ParticleState, C::Solid, false,
-      R::UnitComponents, true, false },
-    { Id::Velocity, "Velocity", 3, V::Float, Role::Vectors, Src::FieldSample, C::Velocity, false,
-      R::SignedSpeed, true, false },
-    { Id::Speed, "Speed", 1, V::Float, Role::Scalars, Src::Derived, C::Velocity, true, R::Speed,
-      true, false },
-    { Id::Force, "Force", 1, V::Float, Role::Plain, Src::ParticleState, C::Force, false,
-      R::StepMotion, true, false },
-    { Id::Lifetime, "Lifetime", 1, V::Float, Role::Plain, Src::ElementState, C::Lifetime, false,
-      R::Lifetime, true, false },
-    { Id::ElementId, "ElementId", 1, V::IdType, Role::Plain, Src::ElementState, C::ElementIndex,
-      false, R::Elements, true, false },
-    { Id::ParticleIndex, "ParticleIndex", 1, V::Int, Role::Plain, Src::TemplateIndex,
-      C::ParticleIndex, false, R::Particles, true, false },
-    { Id::Vorticity, "Vorticity", 1, V::Float, Role::Plain, Src::FieldSample, C::Vorticity, false,
-      R::Vorticity, true, false },
-    { Id::Layer, "Layer", 1, V::Float, Role::Plain, Src::ElementState, C::Layer, false,
-      R::EmitterAxis, true, false },
-    { Id::Radius, "Radius", 1, V::Float, Role::Plain, Src::ElementState, C::Radius, false,
-      R::EmitterRadius, true, false },
-    { Id::ElementOrientation, "Orientation", 4, V::Float, Role::Plain, Src::ElementState,
-      C::Orientation, false, R::UnitComponents, false, true },
-    { Id::ElementSpin, "ElementSpin", 3, V::Float, Role::Plain, Src::ElementState, C::Spin, false,
-      R::HalfVorticity, false, true },
-    { Id::SpinVorticityRatio, "SpinVorticityRatio", 1, V::Float, Role::Plain, Src::ElementState,
-      C::SpinRatio, false, R::SpinRatio, false, true },
-    { Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, false, R::TrailAge, true,
-      false },
+    row(Id::Normals, "Normals", 3, V::Float, Role::Normals, Src::ParticleState, C::Solid,
+      R::UnitComponents, NoFlags),
+    row(Id::Velocity, "Velocity", 3, V::Float, Role::Vectors, Src::FieldSample, C::Velocity,
+      R::SignedSpeed, NoFlags),
+    row(Id::Speed, "Speed", 1, V::Float, Role::Scalars, Src::Derived, C::Velocity, R::Speed,
+      ColorsMagnitude),
+    row(Id::Force, "Force", 1, V::Float, Role::Plain, Src::ParticleState, C::Force, R::StepMotion,
+      NoFlags),
+    row(Id::Lifetime, "Lifetime", 1, V::Float, Role::Plain, Src::ElementState, C::Lifetime,
+      R::Lifetime, NoFlags),
+    row(Id::ElementId, "ElementId", 1, V::IdType, Role::Plain, Src::ElementState, C::ElementIndex,
+      R::Elements, NoFlags),
+    row(Id::ParticleIndex, "ParticleIndex", 1, V::Int, Role::Plain, Src::TemplateIndex,
+      C::ParticleIndex, R::Particles, NoFlags),
+    row(Id::Vorticity, "Vorticity", 1, V::Float, Role::Plain, Src::FieldSample, C::Vorticity,
+      R::Vorticity, NoFlags),
+    row(Id::Layer, "Layer", 1, V::Float, Role::Plain, Src::ElementState, C::Layer, R::EmitterAxis,
+      NoFlags),
+    row(Id::Radius, "Radius", 1, V::Float, Role::Plain, Src::ElementState, C::Radius,
+      R::EmitterRadius, NoFlags),
+    // The pose arrays make the CPU engine fit every element every step.
+    row(Id::ElementOrientation, "Orientation", 4, V::Float, Role::Plain, Src::ElementState,
+      C::Orientation, R::UnitComponents, OffByDefault | NeedsPoses),
+    row(Id::ElementSpin, "ElementSpin", 3, V::Float, Role::Plain, Src::ElementState, C::Spin,
+      R::HalfVorticity, OffByDefault | NeedsPoses),
+    row(Id::SpinVorticityRatio, "SpinVorticityRatio", 1, V::Float, Role::Plain, Src::ElementState,
+      C::SpinRatio, R::SpinRatio, OffByDefault | NeedsPoses),
+    row(Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, R::TrailAge, NoFlags),
   };
   return table;
+}
+
+std::array<double, 2> radialCenter(const std::array<double, 6>& bounds, int axis)
+{
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  return { 0.5 * (bounds[2 * u] + bounds[2 * u + 1]), 0.5 * (bounds[2 * v] + bounds[2 * v + 1]) };
 }
 
 const OutputArray& outputArray(OutputArrayId id)
@@ -117,8 +144,8 @@ RangeFacts rangeFactsOf(const VectorField& field, const Parameters& p, double dt
   f.lifetimeMax = p.lifetimeMax;
   f.emitterAxis = { p.emitterMin[axis] + offset[axis], p.emitterMax[axis] + offset[axis] };
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double cu = 0.5 * (bounds[2 * u] + bounds[2 * u + 1]);
-  const double cv = 0.5 * (bounds[2 * v] + bounds[2 * v + 1]);
+  const std::array<double, 2> centre = radialCenter(bounds, axis);
+  const double cu = centre[0], cv = centre[1];
   for (int corner = 0; corner < 4; ++corner)
   {
     const double x = (corner & 1) ? p.emitterMax[u] : p.emitterMin[u];

@@ -13,8 +13,8 @@
  * shader's mode numbers all follow from this table.
  *
  * To add an array: add its OutputArrayId (before Count) and its row, in the
- * same order; compute it in Filters/TracerOutput.cxx, in the case of its
- * ArraySource (one case per id there); give it a RangeSource. To colour by it
+ * same order; compute it in Filters/TracerOutputArrays.cxx, in the writer
+ * of its ArraySource (a case per id there); give it a RangeSource. To colour by it
  * on the GPU, give it a ColorSource and a case in Shaders/bp_draw_vs_dec.glsl
  * reading engine state the draw shader can fetch (Gpu/GpuEngine.h
  * DrawInputs); otherwise ColorSource::Solid (the display then colours it
@@ -140,6 +140,12 @@ const std::vector<OutputArray>& outputArrays();
 const OutputArray& outputArray(OutputArrayId id);
 /// The row named `name`, or null.
 const OutputArray* findOutputArray(const std::string& name);
+
+/// The centre of the Radius colouring: the middle of `bounds` (xmin, xmax,
+/// ymin, ...) along the two axes other than `axis`, (axis + 1) % 3 then
+/// (axis + 2) % 3. The CPU output, the expected ranges and the GPU display's
+/// draw settings all take it from here.
+std::array<double, 2> radialCenter(const std::array<double, 6>& bounds, int axis);
 
 /// "#define BP_COLOR_FORCE 1" and so on, one line per ColorSource.
 std::string colorSourceDefinitions();

@@ -437,25 +437,11 @@ std::string appendSeedPoints(vtkDataObject* data, std::vector<double>& xyz)
   return std::string(); // no data: no points
 }
 
-std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out)
+namespace
 {
-  if (!mesh || mesh->GetNumberOfPoints() == 0)
-  {
-    return "The Element Template input has no points.";
-  }
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  const std::string cellsError = checkTemplateCells(mesh, mode);
-  if (!cellsError.empty())
-  {
-    return "The Element Template input is unusable: " + cellsError + ".";
-  }
-  std::vector<std::array<float, 3>> points(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double x[3];
-    mesh->GetPoint(i, x);
-    points[i] = { float(x[0]), float(x[1]), float(x[2]) };
-  }
+/// The mesh's polygons (as fans) and strips as triangles.
+std::vector<std::array<std::uint32_t, 3>> templateTriangles(vtkPolyData* mesh)
+{
   std::vector<std::array<std::uint32_t, 3>> triangles;
   vtkIdType count;
   const vtkIdType* ids;
@@ -481,11 +467,19 @@ std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::El
         k % 2 ? std::array<std::uint32_t, 3>{ b, a, c } : std::array<std::uint32_t, 3>{ a, b, c });
     }
   }
-  std::vector<std::array<std::uint32_t, 2>> springs;
-  std::vector<float> stiffness;
+  return triangles;
+}
+
+/// The mesh's lines as springs, each segment with its line's "Stiffness"
+/// (cell data; 1 without the array).
+void templateLines(vtkPolyData* mesh, std::vector<std::array<std::uint32_t, 2>>& springs,
+  std::vector<float>& stiffness)
+{
   vtkDataArray* stiffnessArray = mesh->GetCellData()->GetArray("Stiffness");
   const vtkIdType firstLine = mesh->GetNumberOfVerts();
   vtkIdType line = 0;
+  vtkIdType count;
+  const vtkIdType* ids;
   auto lines = vtk::TakeSmartPointer(mesh->GetLines()->NewIterator());
   for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++line)
   {
@@ -498,6 +492,32 @@ std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::El
       stiffness.push_back(k);
     }
   }
+}
+} // namespace
+
+std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out)
+{
+  if (!mesh || mesh->GetNumberOfPoints() == 0)
+  {
+    return "The Element Template input has no points.";
+  }
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  const std::string cellsError = checkTemplateCells(mesh, mode);
+  if (!cellsError.empty())
+  {
+    return "The Element Template input is unusable: " + cellsError + ".";
+  }
+  std::vector<std::array<float, 3>> points(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    points[i] = { float(x[0]), float(x[1]), float(x[2]) };
+  }
+  const std::vector<std::array<std::uint32_t, 3>> triangles = templateTriangles(mesh);
+  std::vector<std::array<std::uint32_t, 2>> springs;
+  std::vector<float> stiffness;
+  templateLines(mesh, springs, stiffness);
   if (springs.empty())
   {
     springs = bp::meshSprings(std::size_t(n), triangles, mode);

@@ -134,8 +134,8 @@ void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const Fill
   const std::size_t n = engine.particlesPerElement();
   const int axis = c.frame.coloringAxis;
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const auto& b = c.frame.domain;
-  const double cu = 0.5 * (b[2 * u] + b[2 * u + 1]), cv = 0.5 * (b[2 * v] + b[2 * v + 1]);
+  const std::array<double, 2> centre = bp::radialCenter(c.frame.domain, axis);
+  const double cu = centre[0], cv = centre[1];
   const float* centres = engine.initialCenters().data();
   switch (row.id)
   {

@@ -248,16 +248,20 @@ vtkSmartPointer<vtkImageData> PieceLayout::cutPiece(vtkImageData* whole)
   return cut;
 }
 
-std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
-  std::array<double, 3>& offset)
+namespace
 {
-  std::copy(extent, extent + 6, this->PieceExtent);
-  const int* owned = this->OwnedExtent;
+/// What each process tells the others in share(): its block's box, whether
+/// it read its piece, its smallest cell width.
+constexpr int ShareValues = 8;
+
+/// This process's values for share() (`mine`), or the error when the input
+/// delivered an extent that lacks the block this process owns.
+std::string localShare(
+  const bp::GridGeometry& grid, const int extent[6], const int owned[6], double mine[ShareValues])
+{
   const bool owns = owned[0] <= owned[1] && owned[2] <= owned[3] && owned[4] <= owned[5];
-  constexpr int Values = 8; // box, status, smallest cell width
-  double mine[Values] = { 1, 0, 1, 0, 1, 0, 1, 0 };
   double smallest = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 3 && error.empty(); ++a)
+  for (int a = 0; a < 3; ++a)
   {
     if (owns && (owned[2 * a] < extent[2 * a] || owned[2 * a + 1] > extent[2 * a + 1]))
     {
@@ -267,8 +271,8 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
           << "], which lacks this process's block [" << owned[0] << " " << owned[1] << " "
           << owned[2] << " " << owned[3] << " " << owned[4] << " " << owned[5]
           << "]; the source must produce the extent it is asked for.";
-      error = err.str();
-      break;
+      mine[7] = smallest;
+      return err.str();
     }
     if (owns)
     {
@@ -282,15 +286,32 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
         break;
     }
   }
-  mine[6] = error.empty() ? 1.0 : 0.0;
   mine[7] = smallest;
-  std::vector<double> all(std::size_t(Values) * this->Pieces);
-  this->Controller->AllGather(mine, all.data(), Values);
+  return std::string();
+}
+} // namespace
+
+std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
+  std::array<double, 3>& offset)
+{
+  std::copy(extent, extent + 6, this->PieceExtent);
+  double mine[ShareValues] = { 1, 0, 1, 0, 1, 0, 1, 0 };
+  if (error.empty())
+  {
+    error = localShare(grid, extent, this->OwnedExtent, mine);
+  }
+  else
+  {
+    mine[7] = std::numeric_limits<double>::infinity();
+  }
+  mine[6] = error.empty() ? 1.0 : 0.0;
+  std::vector<double> all(std::size_t(ShareValues) * this->Pieces);
+  this->Controller->AllGather(mine, all.data(), ShareValues);
   std::vector<bp::Box> boxes(std::size_t(this->Pieces));
   this->DomainSmallestCell = std::numeric_limits<double>::infinity();
   for (int q = 0; q < this->Pieces; ++q)
   {
-    const double* v = all.data() + std::size_t(q) * Values;
+    const double* v = all.data() + std::size_t(q) * ShareValues;
     if (v[6] == 0.0 && error.empty())
     {
       error = "Process " + std::to_string(q) +
@@ -308,6 +329,12 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   {
     return error;
   }
+  this->placeDomain(boxes, offset);
+  return std::string();
+}
+
+void PieceLayout::placeDomain(std::vector<bp::Box> boxes, std::array<double, 3>& offset)
+{
   const bp::Box world = bp::Partition(boxes).domain();
   offset = { world[0], world[2], world[4] };
   for (bp::Box& b : boxes)
@@ -341,7 +368,6 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
     }
   }
   this->DomainCellLength = axes > 0 ? sum / axes : 1.0;
-  return std::string();
 }
 
 double PieceLayout::globalMax(double value) const

@@ -130,6 +130,11 @@ public:
   std::unique_ptr<bp::Partition> Partition;     ///< every piece's block, grid-local
   bp::Domain Domain;                            ///< the whole field's, grid-local
   double DomainCellLength = 1.0, DomainSmallestCell = 1.0;
+
+private:
+  /// After share(): the whole grid's first point as `offset`, the pieces'
+  /// `boxes` moved by it into the partition, and the whole field's domain.
+  void placeDomain(std::vector<bp::Box> boxes, std::array<double, 3>& offset);
 };
 
 } // namespace bpvtk

@@ -2,6 +2,7 @@
 #include "TracerResample.h"
 
 #include "Memory.h"
+#include "TracerGeometryKey.h"
 #include "TracerInput.h"
 #include "TracerParallel.h"
 
@@ -83,7 +84,8 @@ int cellDimension(vtkDataSet* data)
   const vtkIdType cells = data->GetNumberOfCells();
   for (vtkIdType c = 0; c < cells && dimension < 3; ++c)
   {
-    dimension = std::max(dimension, vtkCellTypes::GetDimension((unsigned char)data->GetCellType(c)));
+    dimension =
+      std::max(dimension, vtkCellTypes::GetDimension((unsigned char)data->GetCellType(c)));
   }
   return dimension;
 }
@@ -98,7 +100,8 @@ vtkIdType ownCells(vtkDataSet* data)
     return data->GetNumberOfCells();
   }
   const auto values = vtk::DataArrayValueRange<1>(ghosts);
-  const unsigned char others = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+  const unsigned char others =
+    vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
   return vtkIdType(std::count_if(
     values.begin(), values.end(), [&](unsigned char g) { return (g & others) == 0; }));
 }
@@ -119,9 +122,8 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
   {
     for (vtkDataSet* block : blocks)
     {
-      vtkDataSetAttributes* attributes = cellData
-        ? static_cast<vtkDataSetAttributes*>(block->GetCellData())
-        : block->GetPointData();
+      vtkDataSetAttributes* attributes =
+        cellData ? static_cast<vtkDataSetAttributes*>(block->GetCellData()) : block->GetPointData();
       for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
       {
         vtkDataArray* a = attributes->GetArray(i);
@@ -135,191 +137,6 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
     }
   }
   return std::string();
-}
-
-/// A 64-bit hash of memory: FNV-1a over 8-byte words in four lanes (so the
-/// multiplications overlap), chunks of 1 MiB hashed on the runner's threads
-/// and combined in order.
-class Hash
-{
-public:
-  using Known = std::vector<bpvtk::FieldResampler::HashedArray>;
-
-  /// `known`: arrays hashed before, whose hashes stand while they are unmodified.
-  Hash(const bp::RangeRunner& run, const Known& known)
-    : Run(run)
-    , Before(known)
-  {
-  }
-  /// The arrays hashed (or recognised) by this hash.
-  Known Seen;
-  std::uint64_t value = 1469598103934665603ull;
-
-  void mix(std::uint64_t word) { this->value = (this->value ^ word) * Prime; }
-
-  void add(const void* data, std::size_t bytes)
-  {
-    const auto* p = static_cast<const unsigned char*>(data);
-    constexpr std::size_t chunk = std::size_t(1) << 20;
-    const std::size_t chunks = (bytes + chunk - 1) / chunk;
-    std::vector<std::uint64_t> parts(chunks);
-    this->Run(chunks,
-      [&](std::size_t begin, std::size_t end)
-      {
-        for (std::size_t c = begin; c < end; ++c)
-        {
-          parts[c] = lanes(p + c * chunk, std::min(chunk, bytes - c * chunk));
-        }
-      });
-    this->mix(bytes);
-    for (std::uint64_t part : parts)
-    {
-      this->mix(part);
-    }
-  }
-
-  /// An array's values, through its memory where it has a plain layout.
-  void add(vtkDataArray* array)
-  {
-    if (!array)
-    {
-      this->mix(0);
-      return;
-    }
-    const vtkMTimeType time = array->GetMTime();
-    for (const bpvtk::FieldResampler::HashedArray& known : this->Before)
-    {
-      if (known.array == array && known.time == time)
-      {
-        this->mix(known.hash);
-        this->Seen.push_back(known);
-        return;
-      }
-    }
-    Hash own(this->Run, Known());
-    if (array->HasStandardMemoryLayout())
-    {
-      own.add(array->GetVoidPointer(0),
-        std::size_t(array->GetDataSize()) * std::size_t(array->GetDataTypeSize()));
-    }
-    else
-    {
-      std::vector<double> values(std::size_t(array->GetDataSize()));
-      for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
-      {
-        array->GetTuple(t, &values[std::size_t(t) * array->GetNumberOfComponents()]);
-      }
-      own.add(values.data(), values.size() * sizeof(double));
-    }
-    this->mix(own.value);
-    this->Seen.push_back({ array, time, own.value });
-  }
-  void add(vtkCellArray* cells)
-  {
-    this->add(cells->GetOffsetsArray());
-    this->add(cells->GetConnectivityArray());
-  }
-
-private:
-  static constexpr std::uint64_t Prime = 1099511628211ull;
-
-  static std::uint64_t lanes(const unsigned char* p, std::size_t bytes)
-  {
-    std::uint64_t h[4] = { 1469598103934665603ull, 2, 3, 4 };
-    std::size_t i = 0;
-    for (; i + 32 <= bytes; i += 32)
-    {
-      std::uint64_t w[4];
-      std::memcpy(w, p + i, 32);
-      for (int l = 0; l < 4; ++l)
-      {
-        h[l] = (h[l] ^ w[l]) * Prime;
-      }
-    }
-    std::uint64_t tail[4] = { 0, 0, 0, 0 };
-    std::memcpy(tail, p + i, bytes - i);
-    std::uint64_t all = 1469598103934665603ull;
-    for (int l = 0; l < 4; ++l)
-    {
-      all = (((all ^ h[l]) * Prime) ^ tail[l]) * Prime;
-    }
-    return all;
-  }
-
-  const bp::RangeRunner& Run;
-  const Known& Before;
-};
-
-/// What locating depends on in a block: its points, its cells.
-void addGeometry(Hash& h, vtkDataSet* block)
-{
-  h.mix(std::uint64_t(block->GetNumberOfPoints()));
-  h.mix(std::uint64_t(block->GetNumberOfCells()));
-  if (auto* image = vtkImageData::SafeDownCast(block))
-  {
-    h.add(image->GetExtent(), 6 * sizeof(int));
-    h.add(image->GetOrigin(), 3 * sizeof(double));
-    h.add(image->GetSpacing(), 3 * sizeof(double));
-    return;
-  }
-  if (auto* rectilinear = vtkRectilinearGrid::SafeDownCast(block))
-  {
-    h.add(rectilinear->GetExtent(), 6 * sizeof(int));
-    h.add(rectilinear->GetXCoordinates());
-    h.add(rectilinear->GetYCoordinates());
-    h.add(rectilinear->GetZCoordinates());
-    return;
-  }
-  auto* pointSet = vtkPointSet::SafeDownCast(block);
-  h.add(pointSet && pointSet->GetPoints() ? pointSet->GetPoints()->GetData() : nullptr);
-  if (auto* structured = vtkStructuredGrid::SafeDownCast(block))
-  {
-    h.add(structured->GetExtent(), 6 * sizeof(int));
-  }
-  else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(block))
-  {
-    h.add(grid->GetCells());
-    h.add(grid->GetCellTypesArray());
-  }
-  else if (auto* poly = vtkPolyData::SafeDownCast(block))
-  {
-    for (vtkCellArray* cells : { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
-           poly->GetStrips() })
-    {
-      h.add(cells);
-    }
-  }
-  else
-  {
-    vtkNew<vtkIdList> ids;
-    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c)
-    {
-      block->GetCellPoints(c, ids);
-      h.mix(std::uint64_t(block->GetCellType(c)));
-      h.add(ids->GetPointer(0), std::size_t(ids->GetNumberOfIds()) * sizeof(vtkIdType));
-    }
-  }
-}
-
-/// What the grid, the located cells and the weights depend on: the sampled
-/// blocks' geometry, the dimensions asked for, the number of processes.
-std::uint64_t geometryKey(const std::vector<vtkDataSet*>& blocks,
-  const std::array<int, 3>& requested, vtkMultiProcessController* controller,
-  const bp::RangeRunner& run, Hash::Known& hashed)
-{
-  Hash key(run, hashed);
-  key.mix(blocks.size());
-  for (vtkDataSet* block : blocks)
-  {
-    addGeometry(key, block);
-  }
-  for (int n : requested)
-  {
-    key.mix(std::uint64_t(std::max(n, 0)));
-  }
-  key.mix(std::uint64_t(controller ? controller->GetNumberOfProcesses() : 1));
-  hashed = std::move(key.Seen);
-  return key.value;
 }
 
 /// The range of grid indices along `a` within [low, high] (empty: first > last).
@@ -403,8 +220,8 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
     if (error.empty())
     {
       error = agreeOnError(controller,
-        bp::checkAllocatable(double(this->Grid.pointCount()) * BytesPerGridPoint,
-          "The resampled grid of the input"));
+        bp::checkAllocatable(
+          double(this->Grid.pointCount()) * BytesPerGridPoint, "The resampled grid of the input"));
       error = error.empty() ? error : error + ". Set Resample Dimensions to fewer points.";
     }
     if (!error.empty())
@@ -501,8 +318,8 @@ std::string FieldResampler::chooseGrid(const Selection& selected,
   }
   else if (cells[0] == 0.0)
   {
-    err << "The input has no cells with a 3-component "
-        << (selected.cellVectors ? "cell" : "point") << " array '" << this->ArrayName
+    err << "The input has no cells with a 3-component " << (selected.cellVectors ? "cell" : "point")
+        << " array '" << this->ArrayName
         << "' to resample: Bound Particle Tracer needs a mesh (cells) carrying the Vectors.";
   }
   else if (selected.dimension < 2)
@@ -554,96 +371,106 @@ void FieldResampler::fillImage(const std::vector<float>& values, vtkImageData* i
 void FieldResampler::locate(
   const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run)
 {
-  const bp::ResampleGrid& g = this->Grid;
-  std::vector<std::uint8_t> taken(g.pointCount(), 0);
-  // Each range of grid rows gathers its samples apart; they are joined in
-  // row order, so the samples come out the same whatever the threads did.
-  struct Found
-  {
-    std::vector<Sample> samples;
-    std::vector<vtkIdType> points;
-    std::vector<float> weights;
-  };
+  std::vector<std::uint8_t> taken(this->Grid.pointCount(), 0);
   for (std::size_t b = 0; b < blocks.size(); ++b)
   {
-    vtkDataSet* block = blocks[b];
-    double bounds[6];
-    block->GetBounds(bounds);
-    std::array<std::array<int, 2>, 3> range;
-    for (int a = 0; a < 3; ++a)
-    {
-      range[a] = indexRange(g, a, bounds[2 * a], bounds[2 * a + 1]);
-    }
-    if (range[0][0] > range[0][1] || range[1][0] > range[1][1] || range[2][0] > range[2][1])
-    {
-      continue;
-    }
-    vtkNew<vtkStaticCellLocator> locator;
-    locator->SetDataSet(block);
-    locator->BuildLocator();
-    const int rowsY = range[1][1] - range[1][0] + 1;
-    const std::size_t rows = std::size_t(rowsY) * std::size_t(range[2][1] - range[2][0] + 1);
-    const int maxCellSize = std::max(1, block->GetMaxCellSize());
-    // Points on a surface mesh lie in its plane only up to rounding.
-    const double tolerance = offPlane + 1e-9 * std::max(block->GetLength(), 1e-300);
-    std::mutex joining;
-    std::vector<std::pair<std::size_t, Found>> parts;
-    run(rows,
-      [&](std::size_t begin, std::size_t end)
-      {
-        Found found;
-        vtkNew<vtkGenericCell> cell;
-        std::vector<double> weights(static_cast<std::size_t>(maxCellSize));
-        for (std::size_t row = begin; row < end; ++row)
-        {
-          const int j = range[1][0] + int(row % std::size_t(rowsY));
-          const int k = range[2][0] + int(row / std::size_t(rowsY));
-          for (int i = range[0][0]; i <= range[0][1]; ++i)
-          {
-            const std::size_t p = g.index(i, j, k);
-            if (taken[p])
-            {
-              continue;
-            }
-            double x[3] = { g.origin[0] + i * g.spacing[0], g.origin[1] + j * g.spacing[1],
-              g.origin[2] + k * g.spacing[2] };
-            int subId = 0;
-            double pcoords[3];
-            const vtkIdType c = locator->FindCell(x, tolerance * tolerance, cell, subId, pcoords, weights.data());
-            if (c < 0)
-            {
-              continue;
-            }
-            taken[p] = 1;
-            const vtkIdType n = cell->GetNumberOfPoints();
-            found.samples.push_back({ std::uint32_t(p), std::uint32_t(b), c,
-              std::uint64_t(found.points.size()), std::uint32_t(n) });
-            for (vtkIdType q = 0; q < n; ++q)
-            {
-              found.points.push_back(cell->GetPointId(q));
-              found.weights.push_back(float(weights[std::size_t(q)]));
-            }
-          }
-        }
-        std::lock_guard<std::mutex> lock(joining);
-        parts.emplace_back(begin, std::move(found));
-      });
-    std::sort(parts.begin(), parts.end(),
-      [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (auto& part : parts)
-    {
-      const std::uint64_t shift = this->WeightPoints.size();
-      for (Sample s : part.second.samples)
-      {
-        s.first += shift;
-        this->Samples.push_back(s);
-      }
-      this->WeightPoints.insert(
-        this->WeightPoints.end(), part.second.points.begin(), part.second.points.end());
-      this->Weights.insert(
-        this->Weights.end(), part.second.weights.begin(), part.second.weights.end());
-    }
+    this->locateBlock(blocks[b], std::uint32_t(b), offPlane, taken, run);
   }
+}
+
+void FieldResampler::locateBlock(vtkDataSet* block, std::uint32_t b, double offPlane,
+  std::vector<std::uint8_t>& taken, const bp::RangeRunner& run)
+{
+  const bp::ResampleGrid& g = this->Grid;
+  double bounds[6];
+  block->GetBounds(bounds);
+  std::array<std::array<int, 2>, 3> range;
+  for (int a = 0; a < 3; ++a)
+  {
+    range[a] = indexRange(g, a, bounds[2 * a], bounds[2 * a + 1]);
+  }
+  if (range[0][0] > range[0][1] || range[1][0] > range[1][1] || range[2][0] > range[2][1])
+  {
+    return;
+  }
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(block);
+  locator->BuildLocator();
+  const int rowsY = range[1][1] - range[1][0] + 1;
+  const std::size_t rows = std::size_t(rowsY) * std::size_t(range[2][1] - range[2][0] + 1);
+  const int maxCellSize = std::max(1, block->GetMaxCellSize());
+  // Points on a surface mesh lie in its plane only up to rounding.
+  const double tolerance = offPlane + 1e-9 * std::max(block->GetLength(), 1e-300);
+  // Each range of grid rows gathers its samples apart; they are joined in
+  // row order, so the samples come out the same whatever the threads did.
+  std::mutex joining;
+  std::vector<std::pair<std::size_t, Found>> parts;
+  run(rows,
+    [&](std::size_t begin, std::size_t end)
+    {
+      Found found;
+      vtkNew<vtkGenericCell> cell;
+      std::vector<double> weights(static_cast<std::size_t>(maxCellSize));
+      for (std::size_t row = begin; row < end; ++row)
+      {
+        const int j = range[1][0] + int(row % std::size_t(rowsY));
+        const int k = range[2][0] + int(row / std::size_t(rowsY));
+        for (int i = range[0][0]; i <= range[0][1]; ++i)
+        {
+          const std::size_t p = g.index(i, j, k);
+          if (taken[p])
+          {
+            continue;
+          }
+          double x[3] = { g.origin[0] + i * g.spacing[0], g.origin[1] + j * g.spacing[1],
+            g.origin[2] + k * g.spacing[2] };
+          int subId = 0;
+          double pcoords[3];
+          const vtkIdType c =
+            locator->FindCell(x, tolerance * tolerance, cell, subId, pcoords, weights.data());
+          if (c < 0)
+          {
+            continue;
+          }
+          taken[p] = 1;
+          found.add({ std::uint32_t(p), b, c, 0, 0 }, cell, weights);
+        }
+      }
+      std::lock_guard<std::mutex> lock(joining);
+      parts.emplace_back(begin, std::move(found));
+    });
+  std::sort(
+    parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (auto& part : parts)
+  {
+    this->append(part.second);
+  }
+}
+
+void FieldResampler::Found::add(
+  Sample sample, vtkGenericCell* cell, const std::vector<double>& cellWeights)
+{
+  const vtkIdType n = cell->GetNumberOfPoints();
+  sample.first = std::uint64_t(this->points.size());
+  sample.count = std::uint32_t(n);
+  this->samples.push_back(sample);
+  for (vtkIdType q = 0; q < n; ++q)
+  {
+    this->points.push_back(cell->GetPointId(q));
+    this->weights.push_back(float(cellWeights[std::size_t(q)]));
+  }
+}
+
+void FieldResampler::append(const Found& found)
+{
+  const std::uint64_t shift = this->WeightPoints.size();
+  for (Sample s : found.samples)
+  {
+    s.first += shift;
+    this->Samples.push_back(s);
+  }
+  this->WeightPoints.insert(this->WeightPoints.end(), found.points.begin(), found.points.end());
+  this->Weights.insert(this->Weights.end(), found.weights.begin(), found.weights.end());
 }
 
 void FieldResampler::keepOwnSamples(vtkMultiProcessController* controller)
@@ -674,8 +501,8 @@ void FieldResampler::keepOwnSamples(vtkMultiProcessController* controller)
     [](int rank) { return std::uint8_t(rank != INT_MAX ? 1 : 0); });
 }
 
-void FieldResampler::interpolate(const std::vector<vtkDataSet*>& blocks,
-  bool cellVectors, const bp::RangeRunner& run, std::vector<float>& values) const
+void FieldResampler::interpolate(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
+  const bp::RangeRunner& run, std::vector<float>& values) const
 {
   std::vector<std::vector<float>> arrays(blocks.size());
   for (std::size_t b = 0; b < blocks.size(); ++b)

@@ -44,6 +44,7 @@
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
+class vtkGenericCell;
 class vtkImageData;
 class vtkMultiProcessController;
 
@@ -53,7 +54,7 @@ namespace bpvtk
 /// Which input array moves the elements: the Vectors property's choice.
 struct VectorsChoice
 {
-  std::string name; ///< empty: the first 3-component point array, else cell array
+  std::string name;    ///< empty: the first 3-component point array, else cell array
   int association = 0; ///< vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS
 };
 
@@ -127,9 +128,26 @@ private:
   /// surface's extent along its flat axis. Returns the error, if any.
   std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
     vtkMultiProcessController* controller, double& thickness);
+  /// What a range of grid rows located in one block: its samples and their
+  /// cells' point ids and weights (Sample::first indexes these).
+  struct Found
+  {
+    std::vector<Sample> samples;
+    std::vector<vtkIdType> points;
+    std::vector<float> weights;
+    /// Appends `sample` (its point, block and cell) with `cell`'s points and
+    /// their `cellWeights`.
+    void add(Sample sample, vtkGenericCell* cell, const std::vector<double>& cellWeights);
+  };
   /// Finds each grid point's cell (the first block's that holds it) and
   /// weights; a surface's cells up to `offPlane` from the grid's plane.
   void locate(const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run);
+  /// locate() in block `b`: the grid points it holds that no earlier block
+  /// took (`taken`, per grid point).
+  void locateBlock(vtkDataSet* block, std::uint32_t b, double offPlane,
+    std::vector<std::uint8_t>& taken, const bp::RangeRunner& run);
+  /// Appends a range's samples, shifted past the weights already held.
+  void append(const Found& found);
   /// In a distributed run, keeps only the samples of points this process
   /// gives (the lowest rank holding them), and marks the points some process holds.
   void keepOwnSamples(vtkMultiProcessController* controller);

@@ -8,6 +8,7 @@
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "vtkDataArraySelection.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkInformation.h"
@@ -20,7 +21,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <new>
 
@@ -76,16 +76,14 @@ BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
   this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    if (!row.onByDefault)
-    {
-      this->OmittedArrays.emplace_back(row.name); // the pose arrays: they cost a fit a step
-    }
+    // Off by default: the pose arrays (they cost a fit a step).
+    this->OutputArraySelection->AddArray(row.name, row.onByDefault);
   }
   // By default the active point vectors (or, failing that, the first
   // 3-component point array).
@@ -156,12 +154,52 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   // The engine fits poses only for an output that shows them.
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    p.trackPoses = p.trackPoses ||
-      (row.needsPoses &&
-        std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), row.name) ==
-          this->OmittedArrays.end());
+    p.trackPoses =
+      p.trackPoses || (row.needsPoses && this->OutputArraySelection->ArrayIsEnabled(row.name) != 0);
   }
   return s;
+}
+
+bpvtk::TracerConfig vtkBoundParticleTracer::Config()
+{
+  bpvtk::TracerConfig c;
+  c.trace = this->Settings();
+  c.engine = bp::EngineChoice(this->Engine);
+  c.shape = bp::BuiltinShape(this->ElementShape);
+  c.templateSprings = bp::MeshSprings(this->TemplateSprings);
+  std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
+  c.coloringAxis = this->ColoringAxis;
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
+      (row.id != bp::OutputArrayId::Vorticity || this->ComputeVorticity);
+  }
+  c.seedType = this->SeedType;
+  c.templateInput = this->GetNumberOfInputConnections(1) > 0;
+  c.seedSource = this->GetNumberOfInputConnections(2) > 0;
+  vtkInformation* vectors = this->GetInputArrayInformation(0);
+  const char* name = vectors && vectors->Has(vtkDataObject::FIELD_NAME())
+    ? vectors->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  c.vectors.name = name ? name : "";
+  c.vectors.association = vectors && vectors->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? vectors->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  return c;
+}
+
+bpvtk::TracerInputStep vtkBoundParticleTracer::InputStep(vtkInformationVector** inputVector)
+{
+  bpvtk::TracerInputStep step;
+  step.data = vtkDataObject::GetData(inputVector[0], 0);
+  step.association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  // Only a dataset has point data to choose from (readSlice says what else
+  // came); a mesh is resampled first, and its grid's array is used instead.
+  if (vtkDataSet::SafeDownCast(step.data) && !bpvtk::FieldResampler::needed(step.data))
+  {
+    step.vectors = this->GetInputArrayToProcess(0, inputVector, step.association);
+  }
+  return step;
 }
 
 int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* info)
@@ -203,7 +241,10 @@ vtkMTimeType vtkBoundParticleTracer::GetMTime()
 {
   // The seeds' parameters are set on their own object (ParaView's Seed Type
   // proxy): a change there must replay the trace as a change here does.
-  const vtkMTimeType own = this->Superclass::GetMTime();
+  // So are the output arrays, when a script sets them through
+  // GetOutputArraySelection().
+  const vtkMTimeType own =
+    std::max(this->Superclass::GetMTime(), this->OutputArraySelection->GetMTime());
   return this->SeedType ? std::max(own, this->SeedType->GetMTime()) : own;
 }
 
@@ -263,7 +304,7 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
         {
           if (bpvtk::FieldResampler::needed(data))
           {
-            return this->Internals->probeGrid(this, data, grid);
+            return this->Internals->probeGrid(this->Config(), data, grid);
           }
           grid = data;
           // Only a dataset has arrays to choose from (readSlice says what else came).
@@ -296,12 +337,12 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   }
   I.Layout.requestInput(
     inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
-  if (!I.Continuing && I.Plan.hasTimes())
+  if (!I.continuing() && I.Plan.hasTimes())
   {
     // A new update: decide it once here, before anything is asked of
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
-    I.decide(this, outInfo);
+    I.decide(this->Config(), outInfo);
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -339,15 +380,7 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
       }
     }
   }
-  if (I.Plan.unsteady())
-  {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), I.Plan.inputTimes()[I.RequestIndex]);
-    I.LastRequested = I.RequestIndex;
-  }
-  else
-  {
-    inInfo->Remove(SDDP::UPDATE_TIME_STEP());
-  }
+  I.requestTimeStep(inInfo);
   return 1;
 }
 
@@ -379,38 +412,43 @@ int vtkBoundParticleTracer::RequestData(
   return 1;
 }
 
+int vtkBoundParticleTracer::EndUpdatePass(
+  const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  using Pass = bpvtk::TracerPass;
+  vtkInternals& I = *this->Internals;
+  if (pass.kind == Pass::NeedStep)
+  {
+    I.continueWith(pass.index);
+    request->Set(SDDP::CONTINUE_EXECUTING(), 1);
+    // The executive reports 1 at this pass's end and 0 at the next one's
+    // start: hold the bar where the update stands until steps move it.
+    this->SetProgressShiftScale(I.progress(), 0.0);
+    return 1;
+  }
+  if (pass.kind == Pass::Failed)
+  {
+    vtkErrorMacro(<< pass.message);
+  }
+  I.endFailedUpdate();
+  request->Remove(SDDP::CONTINUE_EXECUTING());
+  output->Initialize();
+  return 1;
+}
+
 int vtkBoundParticleTracer::ExecuteUpdatePass(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  using Pass = vtkBoundParticlePass;
+  using Pass = bpvtk::TracerPass;
   vtkInternals& I = *this->Internals;
+  const bpvtk::TracerConfig config = this->Config();
   vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
   output->Initialize();
   this->SetProgressShiftScale(0.0, 1.0);
 
-  // Ends the update (quietly when aborted), or this pass asking for another time step.
-  auto end = [&](const Pass& pass)
-  {
-    if (pass.kind == Pass::NeedStep)
-    {
-      I.RequestIndex = pass.index;
-      I.Continuing = true;
-      request->Set(SDDP::CONTINUE_EXECUTING(), 1);
-      // The executive reports 1 at this pass's end and 0 at the next one's
-      // start: hold the bar where the update stands until steps move it.
-      this->SetProgressShiftScale(I.progress(), 0.0);
-      return 1;
-    }
-    if (pass.kind == Pass::Failed)
-    {
-      vtkErrorMacro(<< pass.message);
-    }
-    I.endFailedUpdate();
-    request->Remove(SDDP::CONTINUE_EXECUTING());
-    output->Initialize();
-    return 1;
-  };
+  auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
   if (!I.Plan.hasTimes())
   {
     return end(Pass::fail("The filter has no time range; see the previous error."));
@@ -421,10 +459,10 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
     // the whole trace.
     return 1;
   }
-  if (!I.Continuing)
+  if (!I.continuing())
   {
-    I.begin(this);
-    if (I.ReplayPending && I.Layout.tooSmallToSplit())
+    I.begin(config);
+    if (I.replayPending() && I.Layout.tooSmallToSplit())
     {
       vtkWarningMacro("The field has too few cells to give each of the "
         << vtkStreamingDemandDrivenPipeline::GetUpdateNumberOfPieces(
@@ -432,15 +470,15 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
         << " processes a block; process 0 traces it alone.");
     }
   }
-  const std::string error = I.takeTimeStep(this, inputVector);
+  const std::string error = I.takeTimeStep(config, this->InputStep(inputVector));
   if (!error.empty())
   {
     return end(Pass::fail(error));
   }
-  Pass pass = I.ReplayPending ? I.replay(this, inputVector) : Pass();
+  Pass pass = I.replayPending() ? I.replay(config, inputVector) : Pass();
   if (pass.kind == Pass::Done)
   {
-    pass = I.stepToTarget(this);
+    pass = I.stepToTarget();
   }
   if (pass.kind == Pass::Done)
   {
@@ -450,41 +488,40 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   {
     return end(pass);
   }
-  I.Continuing = false;
+  I.finishPasses();
   request->Remove(SDDP::CONTINUE_EXECUTING());
-  const Pass shown = I.show(this, output);
+  const Pass shown = I.show(config, output);
   return shown.kind == Pass::Done ? 1 : end(shown);
+}
+
+vtkDataArraySelection* vtkBoundParticleTracer::GetOutputArraySelection()
+{
+  return this->OutputArraySelection;
 }
 
 int vtkBoundParticleTracer::GetNumberOfOutputArrays()
 {
-  return int(bp::outputArrays().size());
+  return this->OutputArraySelection->GetNumberOfArrays();
 }
 
 const char* vtkBoundParticleTracer::GetOutputArrayName(int index)
 {
-  const auto& rows = bp::outputArrays();
-  return index >= 0 && std::size_t(index) < rows.size() ? rows[std::size_t(index)].name : nullptr;
+  return this->OutputArraySelection->GetArrayName(index);
 }
 
 int vtkBoundParticleTracer::GetOutputArrayStatus(const char* name)
 {
-  return name &&
-      std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), name) ==
-        this->OmittedArrays.end()
-    ? 1
-    : 0;
+  return name && this->OutputArraySelection->ArrayIsEnabled(name) ? 1 : 0;
 }
 
 void vtkBoundParticleTracer::SetOutputArrayStatus(const char* name, int status)
 {
-  const auto& rows = bp::outputArrays();
-  if (name &&
-    std::none_of(rows.begin(), rows.end(),
-      [name](const bp::OutputArray& row) { return std::strcmp(row.name, name) == 0; }))
+  if (name && !this->OutputArraySelection->ArrayExists(name))
   {
+    // The selection offers every row and only those: a name it lacks is a
+    // typo in a script or a state file, said rather than added.
     std::string offered;
-    for (const bp::OutputArray& row : rows)
+    for (const bp::OutputArray& row : bp::outputArrays())
     {
       offered += (offered.empty() ? "" : ", ") + std::string(row.name);
     }
@@ -496,28 +533,15 @@ void vtkBoundParticleTracer::SetOutputArrayStatus(const char* name, int status)
   {
     return;
   }
-  if (status)
-  {
-    this->OmittedArrays.erase(
-      std::find(this->OmittedArrays.begin(), this->OmittedArrays.end(), name));
-  }
-  else
-  {
-    this->OmittedArrays.emplace_back(name);
-  }
+  this->OutputArraySelection->SetArraySetting(name, status ? 1 : 0);
   this->Modified();
 }
 
 void vtkBoundParticleTracer::DisableAllOutputArrays()
 {
-  std::vector<std::string> all;
-  for (const bp::OutputArray& row : bp::outputArrays())
+  if (this->OutputArraySelection->GetNumberOfArraysEnabled() > 0)
   {
-    all.emplace_back(row.name);
-  }
-  if (all != this->OmittedArrays)
-  {
-    this->OmittedArrays = all;
+    this->OutputArraySelection->DisableAllArrays();
     this->Modified();
   }
 }

@@ -10,8 +10,8 @@
  * the VTK-free core, Core/Engine.h). The output is a vtkPolyData of all
  * particles: the shape's triangles per element (its springs as lines where it
  * has no triangles, a super set's links as lines too), or vertices for one-particle
- * elements, with the point arrays of Core/OutputArrays.h (Normals, Velocity,
- * Speed, Force, Lifetime, ElementId, ParticleIndex, Vorticity, Layer, Radius).
+ * elements, with the point arrays of the table in Core/OutputArrays.cpp
+ * (bp::outputArrays(); OutputArrays selects them).
  *
  * Pipeline time drives the simulation (Core/TracePlan.h decides each
  * request). A request for a time at or after where the trace stands steps
@@ -36,6 +36,7 @@
 #define vtkBoundParticleTracer_h
 
 #include "BoundParticlesFiltersModule.h" // for export macro
+#include "vtkNew.h"                      // for vtkNew
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
@@ -44,6 +45,7 @@
 #include <vector> // for std::vector
 
 class vtkBoundParticleSeedType;
+class vtkDataArraySelection;
 class vtkInformationIntegerKey;
 class vtkInformationIntegerRequestKey;
 class vtkPolyData;
@@ -52,6 +54,12 @@ namespace bp
 {
 struct TraceSettings;
 struct TimeLine;
+}
+namespace bpvtk
+{
+struct TracerConfig;
+struct TracerInputStep;
+struct TracerPass;
 }
 #endif
 
@@ -178,7 +186,8 @@ public:
   vtkBoundParticleSeedType* GetSeedType();
   ///@}
 
-  /// The filter's time, or its Seed Type's when that changed later.
+  /// The filter's time, or its Seed Type's or its output array selection's
+  /// when that changed later.
   vtkMTimeType GetMTime() override;
 
   ///@{
@@ -382,13 +391,16 @@ public:
 
   ///@{
   /**
-   * Which point arrays the CPU output carries, by name (the rows of
-   * Core/OutputArrays.h; all by default). An array left out is not computed,
+   * Which point arrays the CPU output carries, by name (the rows of the table
+   * in Core/OutputArrays.cpp; all but the pose arrays by default), as a
+   * vtkDataArraySelection, the way VTK's readers select theirs. A name the
+   * table lacks is refused with a warning. An array left out is not computed,
    * which is what makes a frame of Play cheaper: the field samples behind
    * Velocity, Speed and Vorticity cost about a step of the engine per output.
    * Changing the selection changes the output only, never the trace. The
    * GPU display colours by any of them, whatever this says.
    */
+  vtkDataArraySelection* GetOutputArraySelection();
   int GetNumberOfOutputArrays();
   const char* GetOutputArrayName(int index);
   int GetOutputArrayStatus(const char* name);
@@ -469,8 +481,16 @@ protected:
   /// One pipeline pass of an update (RequestData guards it against failed allocations).
   int ExecuteUpdatePass(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 #ifndef __VTK_WRAP__
+  /// Ends the update (quietly when aborted, with the error when failed), or
+  /// this pass asking upstream for another time step.
+  int EndUpdatePass(const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output);
   /// The properties as the VTK-free core takes them.
   bp::TraceSettings Settings() const;
+  /// The properties as the internals read them (they read nothing else).
+  bpvtk::TracerConfig Config();
+  /// What this pass brought on input 0: the data, and the Vectors array
+  /// when it is a dataset traced as it is.
+  bpvtk::TracerInputStep InputStep(vtkInformationVector** inputVector);
   /// The time line to offer: Duration or FramesPerInputStep, automatic ones
   /// from the field's scale (probed upstream); warns of mismatched units.
   bp::TimeLine ResolveTimeLine(vtkInformation* inInfo, const std::vector<double>& inputTimes);
@@ -513,7 +533,8 @@ protected:
   int ColoringAxis = 2;
   vtkTypeBool ComputeVorticity = true;
   int Engine = AUTOMATIC;
-  std::vector<std::string> OmittedArrays; ///< output arrays switched off, by name
+  /// The output arrays switched on: every row of bp::outputArrays(), in order.
+  vtkNew<vtkDataArraySelection> OutputArraySelection;
   /// The Seed Type's points; nullptr for the emitter box.
   vtkSmartPointer<vtkBoundParticleSeedType> SeedType;
 

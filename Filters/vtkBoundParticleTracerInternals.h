@@ -14,6 +14,14 @@
  *  5. readAhead(): for a display that wants it, the next time step ahead of need;
  *  6. show(): finish with a short step shown, and build the output.
  * Steps 3 to 5 may end the pass asking for another time step.
+ *
+ * The filter fills a bpvtk::TracerConfig from its properties for each call;
+ * the internals read nothing else of it, and it changes their state only
+ * through their methods. The members are defined by role:
+ * vtkBoundParticleTracerInternals.cxx (the update's bookkeeping, stepping and
+ * the output), TracerTimeStep.cxx (reading a time step), TracerReplay.cxx
+ * (resolving the settings and configuring a new trace) and TracerSeeds.cxx
+ * (the release points).
  */
 #ifndef vtkBoundParticleTracerInternals_h
 #define vtkBoundParticleTracerInternals_h
@@ -25,6 +33,7 @@
 #include "OutputArrays.h"
 #include "TracePlan.h"
 #include "TraceSettings.h"
+#include "TracerConfig.h"
 #include "TracerOutput.h"
 #include "TracerParallel.h"
 #include "TracerResample.h"
@@ -40,14 +49,18 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataArray;
+class vtkDataObject;
 class vtkImageData;
 class vtkInformation;
 class vtkInformationVector;
 class vtkPolyData;
 
+namespace bpvtk
+{
 /// How a step of an update ended.
-struct vtkBoundParticlePass
+struct TracerPass
 {
   enum Kind
   {
@@ -60,12 +73,12 @@ struct vtkBoundParticlePass
   int index = -1;
   std::string message;
 
-  static vtkBoundParticlePass need(int index) { return { NeedStep, index, std::string() }; }
-  static vtkBoundParticlePass fail(const std::string& message) { return { Failed, -1, message }; }
+  static TracerPass need(int index) { return { NeedStep, index, std::string() }; }
+  static TracerPass fail(const std::string& message) { return { Failed, -1, message }; }
 };
 
 /// The release points of a new trace: a Seed Source's or a Seed Type's.
-struct vtkBoundParticleSeeds
+struct TracerSeeds
 {
   std::vector<double> xyz; ///< world coordinates, 3 doubles a point
   /// How many points the seeds have (a Seed Type's xyz stops at bp::MaxSeedPoints).
@@ -75,9 +88,20 @@ struct vtkBoundParticleSeeds
   std::string advice = "Give the seeds more points (e.g. a Line's Resolution), or fewer elements.";
 };
 
+/// The input a pass brought on port 0, as the filter found it: the data
+/// object, and the Vectors property's array in it when it is a dataset.
+struct TracerInputStep
+{
+  vtkDataObject* data = nullptr;
+  vtkDataArray* vectors = nullptr;
+  int association = 0; ///< of `vectors`: vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS
+};
+} // namespace bpvtk
+
 struct vtkBoundParticleTracer::vtkInternals
 {
-  using Pass = vtkBoundParticlePass;
+  using Pass = bpvtk::TracerPass;
+  using Config = bpvtk::TracerConfig;
 
   bp::TracePlan Plan;
   bp::FieldCache Cache;
@@ -98,16 +122,8 @@ struct vtkBoundParticleTracer::vtkInternals
   bool Resampled = false; ///< the field came through the Resampler
   const std::uint64_t ProducerId;
 
-  // The update in progress.
+  // The update in progress (the pass state is private, below).
   bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
-  bool ReplayPending = false;     ///< this update replays from the start
-  bool Continuing = false;        ///< a later pass of the same update
-  int RequestIndex = 0;           ///< the input time step this pass asked for
-  int LastRequested = -1;         ///< the input time step upstream holds
-  bool ReadThisUpdate = false;    ///< a time step came from upstream in this update
-  int IntervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
-  double ProgressFrom = 0.0;      ///< where the update's stepping starts
-  double ProgressAt = 0.0;        ///< where it stands
 
   /// The share of the update's stepping done, over all its passes.
   double progress() const
@@ -135,7 +151,10 @@ struct vtkBoundParticleTracer::vtkInternals
   long long Migrated = 0;                    ///< elements this process sent away
   std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
 
-  vtkInternals();
+  /// `owner` is the filter: the internals use it only to report (messages,
+  /// progress) and to hear an abort, never to read its properties (they come
+  /// in a bpvtk::TracerConfig).
+  explicit vtkInternals(vtkAlgorithm* owner);
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
   double target() const { return this->Decision.target; }
@@ -155,72 +174,116 @@ struct vtkBoundParticleTracer::vtkInternals
 
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
-  void decide(vtkBoundParticleTracer* self, vtkInformation* outInfo);
+  /// Only for a new update (not a later pass of one), with times offered.
+  void decide(const Config& config, vtkInformation* outInfo);
+  /// The input time step this pass asks upstream for (RequestUpdateExtent),
+  /// none for a steady input.
+  void requestTimeStep(vtkInformation* inInfo);
+  /// This pass ends asking upstream for `index`: the next pass continues
+  /// the same update.
+  void continueWith(int index);
+  /// The update's last pass ends here.
+  void finishPasses() { this->Continuing = false; }
+  /// A later pass of the same update.
+  bool continuing() const { return this->Continuing; }
+  /// This update replays from the start, and has not yet configured.
+  bool replayPending() const { return this->ReplayPending; }
 
-  void begin(vtkBoundParticleTracer* self);
-  std::string takeTimeStep(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
+  void begin(const Config& config);
+  std::string takeTimeStep(const Config& config, const bpvtk::TracerInputStep& input);
   /// Resolves the settings from the start's field, then configures the stepper.
-  Pass replay(vtkBoundParticleTracer* self, vtkInformationVector** inputVector);
-  Pass stepToTarget(vtkBoundParticleTracer* self);
+  Pass replay(const Config& config, vtkInformationVector** inputVector);
+  Pass stepToTarget();
   Pass readAhead();
   /// Steps the short last step to the target (taken back at the next
   /// update; collective in parallel, as every step), then builds the output.
-  Pass show(vtkBoundParticleTracer* self, vtkPolyData* output);
+  Pass show(const Config& config, vtkPolyData* output);
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
   vtkDataArray* probeGrid(
-    vtkBoundParticleTracer* self, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
+    const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
 private:
+  vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
+  bool Continuing = false;     ///< a later pass of the same update
+  bool ReplayPending = false;  ///< this update replays from the start
+  int RequestIndex = 0;        ///< the input time step this pass asked for
+  int LastRequested = -1;      ///< the input time step upstream holds
+  bool ReadThisUpdate = false; ///< a time step came from upstream in this update
+  int IntervalAtStart = -1;    ///< the data interval shown before it (-1: a replay)
+  double ProgressFrom = 0.0;   ///< where the update's stepping starts
+  double ProgressAt = 0.0;     ///< where it stands
+
   /// Forgets every trace: each stepper's cursor, and pending GPU work.
   void invalidate();
   /// Drops the active trace and the held time steps.
   void clear();
-  /// The stepper set up for a new trace: the checks of checkConfiguration()
-  /// (agreed between processes), then the field and the placement.
-  Pass configureStepper(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    const bp::VectorField& field, const bp::Resolution& resolved,
-    const vtkBoundParticleSeeds& seeds);
-  /// This process's checks of a new trace: the template, the seeds, the
-  /// engine's limits, memory, a stable relaxation, the GPU's limits; then
-  /// the stepper configured. Returns the error, if any.
-  std::string checkConfiguration(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    const bp::VectorField& field, const vtkBoundParticleSeeds& seeds, bp::ElementTemplate& shape,
-    bp::Parameters& p);
-  /// The Vectors property's choice: array name and point or cell data.
-  static bpvtk::VectorsChoice vectorsChoice(vtkBoundParticleTracer* self);
+
+  // Reading a time step (TracerTimeStep.cxx).
+  /// Whether this pass's time step is one the work needs and not yet held.
+  bool wantsTimeStep();
   /// `input` (a mesh) resampled (collective in parallel): `piece` gets this
   /// process's piece of the grid. Returns the error, if any.
   std::string resampleInput(
-    vtkBoundParticleTracer* self, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece);
+    const Config& config, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece);
+  /// The mask's and the NaNs' warnings, once per configuration.
+  void warnOfSlice(const std::string& maskProblem, std::size_t nonFinite, std::size_t points);
+  /// The time this pass's slice stands for; warns when upstream delivered another.
+  double sliceTime(vtkDataObject* input);
   /// The grid check and the cache insert for a time step just read.
   std::string keepTimeStep(
     bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);
+
+  // Replaying: resolving the settings and configuring (TracerReplay.cxx).
+  /// The Seed Source's or the Seed Type's points, with their warnings.
+  std::string gatherSeeds(const Config& config, vtkInformationVector** inputVector,
+    const bp::VectorField& field, bpvtk::TracerSeeds& seeds);
   /// The field's facts for parameter resolution (collective in parallel).
   bp::FieldFacts fieldFacts(const bp::VectorField& field);
+  /// In parallel: more ghost layers when the resolved step needs them;
+  /// true when the time step must be read again with them.
+  bool needMoreGhostLayers(const bp::Resolution& resolved, const bp::FieldFacts& facts);
+  /// The stepper set up for a new trace: the checks of checkConfiguration()
+  /// (agreed between processes), then the field and the placement.
+  Pass configureStepper(const Config& config, vtkInformationVector** inputVector,
+    const bp::VectorField& field, const bp::Resolution& resolved, const bpvtk::TracerSeeds& seeds);
+  /// This process's checks of a new trace: the template, the seeds, the
+  /// engine's limits, memory, a stable relaxation, the GPU's limits; then
+  /// the stepper configured. Returns the error, if any.
+  std::string checkConfiguration(const Config& config, vtkInformationVector** inputVector,
+    const bp::VectorField& field, const bpvtk::TracerSeeds& seeds, bp::ElementTemplate& shape,
+    bp::Parameters& p);
+  /// Warns when the Release Window releases nothing in the offered times.
+  void warnOfReleaseWindow(const bp::Parameters& p);
+  /// The element template: the built-in shape or the template input.
+  std::string elementTemplate(
+    const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
+  /// Points the stepper at the start of a new trace.
+  void startTrace();
+
+  // The seeds (TracerSeeds.cxx).
   /// The Seed Source's points (input 2), world coordinates, 3 doubles each:
   /// the same on every process (collective in parallel). Returns the error.
-  std::string readSeeds(vtkBoundParticleTracer* self, vtkInformationVector** inputVector,
-    std::vector<double>& xyz) const;
+  std::string readSeeds(
+    const Config& config, vtkInformationVector** inputVector, std::vector<double>& xyz) const;
   /// The Seed Type's points (none for the emitter box), computed alike on
   /// every process; along the field's flat axes they lie on its plane.
   void seedTypePoints(
-    vtkBoundParticleTracer* self, const bp::VectorField& field, vtkBoundParticleSeeds& seeds) const;
+    const Config& config, const bp::VectorField& field, bpvtk::TracerSeeds& seeds) const;
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
-  std::string seedPoints(vtkBoundParticleTracer* self, const vtkBoundParticleSeeds& seeds,
-    const bp::VectorField& field, bp::Parameters& p) const;
-  /// The element template: the built-in shape or the template input.
-  std::string elementTemplate(
-    vtkBoundParticleTracer* self, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
-  /// Points the stepper at the start of a new trace.
-  void startTrace();
+  std::string seedPoints(
+    const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p) const;
+
+  // The output (vtkBoundParticleTracerInternals.cxx).
+  /// In parallel: the balance, the migrations and exchange errors of the steps.
+  void gatherExchange();
   void addSettingsFieldData(vtkPolyData* output);
   /// For a GPU display: hands it the draw settings (a new serial: the
   /// display samples the field again), and fills the output with the
   /// arrays' expected ranges on two points spanning the field.
-  void handToDisplay(vtkBoundParticleTracer* self, vtkPolyData* output);
+  void handToDisplay(const Config& config, vtkPolyData* output);
 };
 
 #endif

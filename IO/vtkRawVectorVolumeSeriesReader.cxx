@@ -78,9 +78,8 @@ std::string readNumbers(const Json::Value& value, const char* key, std::vector<d
   return std::string();
 }
 
-/// Fills series from the descriptor's JSON text. Empty on success, otherwise
-/// what is wrong and how to fix it.
-std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series)
+/// The descriptor's text parsed into `root`, a JSON object with only known keys.
+std::string parseObject(const std::string& text, Json::Value& root)
 {
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
@@ -88,7 +87,6 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
   builder["failIfExtra"] = true;
   builder["rejectDupKeys"] = true;
   std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  Json::Value root;
   std::string errors;
   if (!reader->parse(text.data(), text.data() + text.size(), &root, &errors))
   {
@@ -103,15 +101,18 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
     if (std::find_if(std::begin(KnownKeys), std::end(KnownKeys),
           [&](const char* k) { return key == k; }) == std::end(KnownKeys))
       return "has the unknown key '" + key + "'; the known keys are " + knownKeys();
+  return std::string();
+}
 
-  std::string error;
+/// The grid: "dimensions", "origin", "spacing".
+std::string readGrid(const Json::Value& root, bp::RawVolumeSeries& series)
+{
   const auto positiveInt = [](const Json::Value& v) { return v.isInt() && v.asInt() >= 1; };
   const auto number = [](const Json::Value& v) { return v.isNumeric(); };
-
   if (!root.isMember("dimensions"))
     return "lacks 'dimensions': add \"dimensions\": [nx, ny, nz], the points along x, y and z";
   int dims[3];
-  error = readTriple(root["dimensions"], "dimensions", dims, positiveInt);
+  std::string error = readTriple(root["dimensions"], "dimensions", dims, positiveInt);
   if (!error.empty())
     return error + " (points along x, y and z, each at least 1)";
   series.dims = { dims[0], dims[1], dims[2] };
@@ -131,7 +132,12 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
       return error;
     series.spacing = { triple[0], triple[1], triple[2] };
   }
+  return std::string();
+}
 
+/// How the values are stored: "scalar_type", "byte_order", "header_bytes".
+std::string readEncoding(const Json::Value& root, bp::RawVolumeSeries& series)
+{
   if (!root.isMember("scalar_type"))
     return "lacks 'scalar_type': add e.g. \"scalar_type\": \"float32\" (one of " +
       bp::rawScalarTypeNames() + ")";
@@ -157,7 +163,12 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
       return "has a 'header_bytes' that is not a non-negative whole number";
     series.headerBytes = header.asUInt64();
   }
+  return std::string();
+}
 
+/// "files": per time step, one file of interleaved (u, v, w) or three.
+std::string readFiles(const Json::Value& root, bp::RawVolumeSeries& series)
+{
   if (!root.isMember("files"))
     return "lacks 'files': add one entry per time step, a file name of interleaved (u, v, w) "
            "values or an array of three file names [u, v, w]";
@@ -184,10 +195,15 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
         "] that is neither a file name nor an array of three file names";
     series.files.push_back(std::move(names));
   }
+  return std::string();
+}
 
+/// "times" (default 0, 1, ... per file) and "z_coordinates".
+std::string readTimesAndLayers(const Json::Value& root, bp::RawVolumeSeries& series)
+{
   if (root.isMember("times"))
   {
-    error = readNumbers(root["times"], "times", series.times);
+    const std::string error = readNumbers(root["times"], "times", series.times);
     if (!error.empty())
       return error;
   }
@@ -200,7 +216,8 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
 
   if (root.isMember("z_coordinates"))
   {
-    error = readNumbers(root["z_coordinates"], "z_coordinates", series.zCoordinates);
+    const std::string error =
+      readNumbers(root["z_coordinates"], "z_coordinates", series.zCoordinates);
     if (!error.empty())
       return error;
     // Given but empty is a mistake, not a request for uniform z (leave the key out for that).
@@ -208,7 +225,12 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
       return "has an empty 'z_coordinates'; give one z per layer, or leave the key out for "
              "uniform spacing";
   }
+  return std::string();
+}
 
+/// "array_name" and "description".
+std::string readNames(const Json::Value& root, bp::RawVolumeSeries& series)
+{
   if (root.isMember("array_name"))
   {
     if (!root["array_name"].isString())
@@ -217,7 +239,26 @@ std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series
   }
   if (root.isMember("description") && !root["description"].isString())
     return "has a 'description' that is not a string";
+  return std::string();
+}
 
+/// Fills series from the descriptor's JSON text. Empty on success, otherwise
+/// what is wrong and how to fix it. The parts are read in the order the
+/// messages assume: the first problem found is the one said.
+std::string parseDescriptor(const std::string& text, bp::RawVolumeSeries& series)
+{
+  Json::Value root;
+  std::string error = parseObject(text, root);
+  using Part = std::string (*)(const Json::Value&, bp::RawVolumeSeries&);
+  const Part parts[] = { readGrid, readEncoding, readFiles, readTimesAndLayers, readNames };
+  for (Part part : parts)
+  {
+    if (!error.empty())
+      return error;
+    error = part(root, series);
+  }
+  if (!error.empty())
+    return error;
   error = series.validate();
   return error.empty() ? error : "is not usable: " + error;
 }
@@ -453,6 +494,91 @@ int vtkRawVectorVolumeSeriesReader::RequestInformation(
   return 1;
 }
 
+namespace
+{
+/// The time step at or before the requested time (the first without one).
+int requestedStep(const bp::RawVolumeSeries& s, vtkInformation* outInfo)
+{
+  if (!outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    return 0;
+  return std::max(
+    0, s.stepAtOrBefore(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())));
+}
+
+/// The block asked for (the whole volume unless a parallel run asks for its
+/// piece with ghost layers), within the volume; false when none is left.
+bool requestedBlock(const bp::RawVolumeSeries& s, vtkInformation* outInfo, int block[6])
+{
+  const int whole[6] = { 0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1 };
+  std::copy_n(whole, 6, block);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    int asked[6];
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), asked);
+    for (int a = 0; a < 3; ++a)
+    {
+      block[2 * a] = std::max(block[2 * a], asked[2 * a]);
+      block[2 * a + 1] = std::min(block[2 * a + 1], asked[2 * a + 1]);
+    }
+  }
+  return !(block[0] > block[1] || block[2] > block[3] || block[4] > block[5]);
+}
+
+/// The output's geometry for `block`: an image, or a rectilinear grid along
+/// the z coordinates. False for any other output type.
+bool shapeOutput(vtkDataSet* output, const bp::RawVolumeSeries& s, int block[6])
+{
+  if (vtkImageData* image = vtkImageData::SafeDownCast(output))
+  {
+    image->SetExtent(block);
+    image->SetOrigin(s.origin.data());
+    image->SetSpacing(s.spacing.data());
+    return true;
+  }
+  vtkRectilinearGrid* grid = vtkRectilinearGrid::SafeDownCast(output);
+  if (!grid)
+    return false;
+  grid->SetExtent(block);
+  vtkSmartPointer<vtkDoubleArray> axes[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    axes[a] = vtkSmartPointer<vtkDoubleArray>::New();
+    axes[a]->SetNumberOfTuples(block[2 * a + 1] - block[2 * a] + 1);
+    for (int i = block[2 * a]; i <= block[2 * a + 1]; ++i)
+      axes[a]->SetValue(
+        i - block[2 * a], a == 2 ? s.zCoordinates[std::size_t(i)] : s.origin[a] + i * s.spacing[a]);
+  }
+  grid->SetXCoordinates(axes[0]);
+  grid->SetYCoordinates(axes[1]);
+  grid->SetZCoordinates(axes[2]);
+  return true;
+}
+
+/// The block's rows of the volume's `values` (x fastest, as the file and VTK
+/// store them), as the output's vectors.
+vtkSmartPointer<vtkFloatArray> blockVectors(
+  const bp::RawVolumeSeries& s, const std::vector<float>& values, const int block[6])
+{
+  const vtkIdType nx = block[1] - block[0] + 1, ny = block[3] - block[2] + 1,
+                  nz = block[5] - block[4] + 1;
+  vtkNew<vtkFloatArray> vectors;
+  vectors->SetName(s.arrayName.c_str());
+  vectors->SetNumberOfComponents(3);
+  vectors->SetNumberOfTuples(nx * ny * nz);
+  float* out = vectors->GetPointer(0);
+  for (vtkIdType k = 0; k < nz; ++k)
+    for (vtkIdType j = 0; j < ny; ++j)
+    {
+      const std::size_t row =
+        (std::size_t(block[4] + k) * std::size_t(s.dims[1]) + std::size_t(block[2] + j)) *
+          std::size_t(s.dims[0]) +
+        std::size_t(block[0]);
+      out = std::copy_n(values.begin() + std::ptrdiff_t(3 * row), 3 * nx, out);
+    }
+  return vectors.GetPointer();
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 int vtkRawVectorVolumeSeriesReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
@@ -470,27 +596,11 @@ int vtkRawVectorVolumeSeriesReader::RequestData(
     return 1; // empty output; the problem was reported when the descriptor was read
 
   const bp::RawVolumeSeries& s = I.Reader->series();
-  int step = 0;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    step = std::max(
-      0, s.stepAtOrBefore(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())));
+  const int step = requestedStep(s, outInfo);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), s.times[std::size_t(step)]);
-
-  // The block asked for (the whole volume unless a parallel run asks for its
-  // piece with ghost layers), within the volume; none at all is an empty output.
-  int block[6] = { 0, s.dims[0] - 1, 0, s.dims[1] - 1, 0, s.dims[2] - 1 };
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
-  {
-    int asked[6];
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), asked);
-    for (int a = 0; a < 3; ++a)
-    {
-      block[2 * a] = std::max(block[2 * a], asked[2 * a]);
-      block[2 * a + 1] = std::min(block[2 * a + 1], asked[2 * a + 1]);
-    }
-  }
-  if (block[0] > block[1] || block[2] > block[3] || block[4] > block[5])
-    return 1;
+  int block[6];
+  if (!requestedBlock(s, outInfo, block))
+    return 1; // none of the volume: an empty output
 
   I.Reader->setReadAhead(this->ReadAhead != 0);
   std::vector<float> values;
@@ -501,52 +611,11 @@ int vtkRawVectorVolumeSeriesReader::RequestData(
                   << " (time " << s.times[std::size_t(step)] << "): " << error);
     return 1;
   }
-
-  if (vtkImageData* image = vtkImageData::SafeDownCast(output))
-  {
-    image->SetExtent(block);
-    image->SetOrigin(s.origin.data());
-    image->SetSpacing(s.spacing.data());
-  }
-  else if (vtkRectilinearGrid* grid = vtkRectilinearGrid::SafeDownCast(output))
-  {
-    grid->SetExtent(block);
-    vtkSmartPointer<vtkDoubleArray> axes[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      axes[a] = vtkSmartPointer<vtkDoubleArray>::New();
-      axes[a]->SetNumberOfTuples(block[2 * a + 1] - block[2 * a] + 1);
-      for (int i = block[2 * a]; i <= block[2 * a + 1]; ++i)
-        axes[a]->SetValue(i - block[2 * a],
-          a == 2 ? s.zCoordinates[std::size_t(i)] : s.origin[a] + i * s.spacing[a]);
-    }
-    grid->SetXCoordinates(axes[0]);
-    grid->SetYCoordinates(axes[1]);
-    grid->SetZCoordinates(axes[2]);
-  }
-  else
+  if (!shapeOutput(output, s, block))
   {
     vtkErrorMacro(<< "Unexpected output type " << output->GetClassName() << ".");
     return 0;
   }
-
-  // The block's rows of the volume (x fastest, as the file and VTK store them).
-  const vtkIdType nx = block[1] - block[0] + 1, ny = block[3] - block[2] + 1,
-                  nz = block[5] - block[4] + 1;
-  vtkNew<vtkFloatArray> vectors;
-  vectors->SetName(s.arrayName.c_str());
-  vectors->SetNumberOfComponents(3);
-  vectors->SetNumberOfTuples(nx * ny * nz);
-  float* out = vectors->GetPointer(0);
-  for (vtkIdType k = 0; k < nz; ++k)
-    for (vtkIdType j = 0; j < ny; ++j)
-    {
-      const std::size_t row =
-        (std::size_t(block[4] + k) * std::size_t(s.dims[1]) + std::size_t(block[2] + j)) *
-          std::size_t(s.dims[0]) +
-        std::size_t(block[0]);
-      out = std::copy_n(values.begin() + std::ptrdiff_t(3 * row), 3 * nx, out);
-    }
-  output->GetPointData()->SetVectors(vectors);
+  output->GetPointData()->SetVectors(blockVectors(s, values, block));
   return 1;
 }

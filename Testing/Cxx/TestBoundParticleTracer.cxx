@@ -2,11 +2,14 @@
 #include "vtkAnalyticFlowSource.h"
 #include "vtkBoundParticleTracer.h"
 
+#include "OutputArrays.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataArraySelection.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -86,6 +89,7 @@ protected:
 };
 vtkStandardNewMacro(vtkFloatTimesSource);
 
+#include "OutputArrays.h"
 #include "TracerTestHelpers.h"
 
 TEST(BoundParticleTracer, OutputSizesAndArrays)
@@ -163,6 +167,34 @@ TEST(BoundParticleTracer, VorticityArrayCanBeLeftOut)
   tracer->ComputeVorticityOn();
   out = at(tracer, 0.5);
   EXPECT_NE(out->GetPointData()->GetArray("Vorticity"), nullptr);
+}
+
+TEST(BoundParticleTracer, OutputArraysAreAVtkDataArraySelection)
+{
+  // The Output Arrays property (SetOutputArrayStatus) and a script's
+  // GetOutputArraySelection() are one selection: the table's rows, in order,
+  // the pose arrays off; a change through either reaches the output.
+  auto source = flow(vtkAnalyticFlowSource::ABC);
+  auto tracer = tracerOn(source, 50);
+  vtkDataArraySelection* selection = tracer->GetOutputArraySelection();
+  const auto& rows = bp::outputArrays();
+  ASSERT_EQ(selection->GetNumberOfArrays(), int(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    EXPECT_STREQ(selection->GetArrayName(int(i)), rows[i].name);
+    EXPECT_EQ(tracer->GetOutputArrayStatus(rows[i].name), rows[i].onByDefault ? 1 : 0);
+  }
+  tracer->SetOutputArrayStatus("NoSuchArray", 1); // warns, adds nothing
+  EXPECT_EQ(selection->GetNumberOfArrays(), int(rows.size()));
+  const std::vector<float> all = pointsOf(at(tracer, 0.5));
+  selection->DisableArray("Speed");
+  vtkPolyData* out = at(tracer, 0.5);
+  EXPECT_EQ(out->GetPointData()->GetArray("Speed"), nullptr);
+  EXPECT_NE(out->GetPointData()->GetArray("Velocity"), nullptr);
+  EXPECT_EQ(pointsOf(out), all);
+  tracer->SetOutputArrayStatus("Speed", 1);
+  EXPECT_TRUE(selection->ArrayIsEnabled("Speed"));
+  EXPECT_NE(at(tracer, 0.5)->GetPointData()->GetArray("Speed"), nullptr);
 }
 
 TEST(BoundParticleTracer, SteadyInputGetsTimeSteps)

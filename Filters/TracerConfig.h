@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerConfig.h
+ * @brief The tracer's properties as its internals read them: a plain struct
+ * the filter fills (vtkBoundParticleTracer::Config()) on every request.
+ *
+ * The internals never read the filter's members: what they need of the
+ * properties is here, so the state flows one way, from the filter into the
+ * internals, and the internals can be read without the filter's header.
+ */
+#ifndef BoundParticles_TracerConfig_h
+#define BoundParticles_TracerConfig_h
+
+#include "ElementTemplate.h"
+#include "OutputArrays.h"
+#include "TraceSettings.h"
+#include "TracerResample.h"
+#include "WorkQueue.h"
+
+#include <array>
+#include <cstddef>
+
+class vtkBoundParticleSeedType;
+
+namespace bpvtk
+{
+
+struct TracerConfig
+{
+  bp::TraceSettings trace; ///< what the core resolves (bp::resolveSettings)
+  bp::EngineChoice engine = bp::EngineChoice::Automatic;
+  bp::BuiltinShape shape = bp::BuiltinShape::Strip8; ///< when no template input
+  bp::MeshSprings templateSprings = bp::MeshSprings::EdgesAndDiagonals;
+  std::array<int, 3> resampleDimensions = { 0, 0, 0 }; ///< 0: chosen (TracerResample.h)
+  int coloringAxis = 2;
+  /// The output arrays to compute, by bp::OutputArrayId.
+  std::array<bool, std::size_t(bp::OutputArrayId::Count)> wanted{};
+  /// The Seed Type's points; null for the emitter box. The filter holds it.
+  vtkBoundParticleSeedType* seedType = nullptr;
+  bool templateInput = false; ///< a template is connected (input 1)
+  bool seedSource = false;    ///< a Seed Source is connected (input 2)
+  VectorsChoice vectors;      ///< the Vectors property
+
+  bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
+};
+
+} // namespace bpvtk
+
+#endif

@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The tracer's internals, replaying: the settings resolved against the
+// start's field, the checks of a new trace, and the stepper configured and
+// placed at the start. See vtkBoundParticleTracerInternals.h.
+#include "vtkBoundParticleTracerInternals.h"
+
+#include "ElementTemplate.h"
+#include "Memory.h"
+#include "Partition.h"
+#include "TracerInput.h"
+#include "VectorField.h"
+#include "vtkBoundParticleSeedType.h"
+
+#include "vtkDataObject.h"
+#include "vtkInformationVector.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+
+bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::replay(
+  const Config& config, vtkInformationVector** inputVector)
+{
+  const std::vector<int> ids = this->Plan.needed(this->Plan.startTime(), this->target());
+  const int missing = this->Cache.firstMissing(ids);
+  if (missing >= 0)
+  {
+    return Pass::need(missing);
+  }
+  if (this->Layout.distributed() && config.linking())
+  {
+    return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
+      std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
+  }
+  const bp::VectorField field = this->Cache.field(this->Grid, ids);
+  bpvtk::TracerSeeds seeds;
+  const std::string seedError = this->gatherSeeds(config, inputVector, field, seeds);
+  if (!seedError.empty())
+  {
+    return Pass::fail(seedError);
+  }
+  const bp::FieldFacts facts = this->fieldFacts(field);
+  bp::TraceSettings settings = config.trace;
+  settings.seeded = !seeds.xyz.empty() && !config.linking();
+  if (!seeds.xyz.empty() && config.linking())
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "Linking places each super set as one structure in the emitter box: the "
+        << seeds.name << " is not used. Set Linking to None to release from the seeds.");
+    seeds.xyz.clear();
+  }
+  const bp::Resolution resolved = bp::resolveSettings(settings, facts);
+  for (const std::string& warning : resolved.warnings)
+  {
+    vtkWarningWithObjectMacro(this->Owner, << warning);
+  }
+  if (!resolved.error.empty())
+  {
+    return Pass::fail(resolved.error);
+  }
+  this->ResolvedDt = resolved.dt;
+  this->ResolvedElementSize = resolved.elementSize;
+  if (this->needMoreGhostLayers(resolved, facts))
+  {
+    this->Cache.clear();
+    return Pass::need(ids.front());
+  }
+  const Pass configured = this->configureStepper(config, inputVector, field, resolved, seeds);
+  if (configured.kind == Pass::Done)
+  {
+    this->startTrace();
+  }
+  return configured;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::gatherSeeds(const Config& config,
+  vtkInformationVector** inputVector, const bp::VectorField& field, bpvtk::TracerSeeds& seeds)
+{
+  const std::string seedError = this->readSeeds(config, inputVector, seeds.xyz);
+  if (!seedError.empty())
+  {
+    return seedError;
+  }
+  seeds.total = seeds.xyz.size() / 3;
+  if (config.seedSource && seeds.xyz.empty())
+  {
+    vtkWarningWithObjectMacro(
+      this->Owner, "The Seed Source has no points; elements are released in the emitter box.");
+  }
+  if (config.seedSource && config.seedType)
+  {
+    // A connected input is the more deliberate choice, and kept its meaning
+    // in scripts and state files made before there were Seed Types.
+    vtkWarningWithObjectMacro(this->Owner,
+      "A Seed Source is connected: its points are the release positions, and Seed Type "
+        << config.seedType->GetSeedTypeName()
+        << " is not used. Disconnect it (SeedSource = None) to release from the "
+        << config.seedType->GetSeedTypeName() << ".");
+  }
+  if (!config.seedSource)
+  {
+    this->seedTypePoints(config, field, seeds);
+  }
+  return std::string();
+}
+
+bool vtkBoundParticleTracer::vtkInternals::needMoreGhostLayers(
+  const bp::Resolution& resolved, const bp::FieldFacts& facts)
+{
+  if (!this->Layout.distributed())
+  {
+    return false;
+  }
+  // Enough ghost layers for an element and a step at twice the start's
+  // largest speed (an unsteady flow may speed up); if the pieces in hand
+  // have fewer, ask for them again with more. Every process computes the
+  // same number from the same global values.
+  const int needed = bp::ghostCellsNeeded(
+    resolved.elementSize, 2.0 * facts.maxSpeed, resolved.dt, this->Layout.DomainSmallestCell);
+  if (needed <= this->Layout.GhostCells)
+  {
+    return false;
+  }
+  this->Layout.GhostCells = needed;
+  return true;
+}
+
+bp::FieldFacts vtkBoundParticleTracer::vtkInternals::fieldFacts(const bp::VectorField& field)
+{
+  bp::FieldFacts facts;
+  // The whole field's, also in parallel where this process holds a piece.
+  facts.bounds = this->Layout.domainBounds(this->Grid);
+  facts.offset = this->Offset;
+  facts.dims = this->Grid.dims;
+  facts.cellLength = this->Layout.cellLength(this->Grid);
+  facts.maxSpeed = field.maxSpeed();
+  if (this->Layout.distributed())
+  {
+    facts.maxSpeed = this->Layout.globalMax(facts.maxSpeed);
+  }
+  const std::vector<double>& times = this->Plan.outputTimes();
+  facts.timeSpan = times.back() - times.front();
+  return facts;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::elementTemplate(
+  const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape)
+{
+  shape = bp::builtinTemplate(config.shape);
+  if (!config.templateInput)
+  {
+    return std::string();
+  }
+  std::string error;
+  vtkPolyData* mesh = bpvtk::templateMesh(vtkDataObject::GetData(inputVector[1], 0), error);
+  return error.empty() ? bpvtk::templateFromPolyData(mesh, config.templateSprings, shape) : error;
+}
+
+void vtkBoundParticleTracer::vtkInternals::warnOfReleaseWindow(const bp::Parameters& p)
+{
+  const std::vector<double>& times = this->Plan.outputTimes();
+  if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "No element is released: the Release Window ["
+        << p.releaseStart << ", " << p.releaseStop << "] lies outside the offered times ["
+        << times.front() << ", " << times.back() << "].");
+  }
+  else if (times.size() > 1 && p.releaseStart == times.back())
+  {
+    // A step releases what is due in [t, t + h): the last offered time ends
+    // the last step, so a window that starts there releases in none.
+    vtkWarningWithObjectMacro(this->Owner,
+      "No element is shown released: the Release Window starts at the last offered time ("
+        << times.back() << "), after the last step. Start it earlier.");
+  }
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Config& config,
+  vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
+  bp::ElementTemplate& shape, bp::Parameters& p)
+{
+  const std::string templateError = this->elementTemplate(config, inputVector, shape);
+  if (!templateError.empty())
+  {
+    return templateError;
+  }
+  p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
+  if (!seeds.xyz.empty())
+  {
+    const std::string seedError = this->seedPoints(seeds, field, p);
+    if (!seedError.empty())
+    {
+      return seedError;
+    }
+  }
+  this->warnOfReleaseWindow(p);
+  // The engine's own checks first: they name the setting to change.
+  const std::string invalid = bp::Engine::validate(shape, p);
+  if (!invalid.empty())
+  {
+    return invalid + ".";
+  }
+  const std::string memoryError = bp::checkAllocatable(bp::traceBytes(shape, p),
+    std::to_string(p.numberOfElements) + " elements of " + std::to_string(shape.particleCount()) +
+      " particles");
+  if (!memoryError.empty())
+  {
+    return memoryError + "; use fewer elements or a smaller template.";
+  }
+  const float stable = bp::stableRelaxation(shape);
+  if (p.restoration == bp::Restoration::Jacobi && p.relaxation > stable)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "Relaxation Factor " << p.relaxation
+                           << " would make Jacobi diverge on this element (a particle's springs "
+                           << "add up to " << 1.0f / stable << " shares); using " << stable
+                           << ", the largest stable factor. Averaged Jacobi needs no factor.");
+    p.relaxation = stable;
+  }
+  const std::string fallback = this->Steppers.fallBackIfTooLarge(shape, p);
+  if (!fallback.empty())
+  {
+    vtkErrorWithObjectMacro(this->Owner, << fallback);
+  }
+  const std::string error = this->stepper().configure(shape, p);
+  return error.empty() ? error : error + ".";
+}
+
+bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const Config& config,
+  vtkInformationVector** inputVector, const bp::VectorField& field, const bp::Resolution& resolved,
+  const bpvtk::TracerSeeds& seeds)
+{
+  bp::ElementTemplate shape;
+  bp::Parameters p = resolved.parameters;
+  std::string error = this->checkConfiguration(config, inputVector, field, seeds, shape, p);
+  if (this->Layout.distributed())
+  {
+    // The checks above are each process's own (its template, its memory);
+    // what follows is collective.
+    error = this->Layout.agree(error);
+  }
+  if (!error.empty())
+  {
+    return Pass::fail(error);
+  }
+  // A mask that leaves no cell inside the flow's domain (masked or NaN
+  // corners everywhere in the start's interval): no release could land.
+  const bp::ReleaseMask inside = this->Layout.distributed()
+    ? this->Layout.releaseMask()(field, 0.0f)
+    : bp::ReleaseMask{ field.grid(), bp::releaseUnfitCells(field, 0.0f) };
+  if (bp::leavesNoCell(inside))
+  {
+    return Pass::fail("No cell of the field lies inside the flow's domain at the start (every "
+                      "cell has a corner where vtkValidPointMask is 0 or the vector is NaN or "
+                      "Inf, in one of its time steps): there is nowhere to release elements.");
+  }
+  bp::Stepper& stepper = this->stepper();
+  error = stepper.setField(field);
+  if (!error.empty())
+  {
+    return Pass::fail(error + ".");
+  }
+  if (this->Layout.distributed())
+  {
+    this->Steppers.distributed().setPieces(
+      *this->Layout.Partition, this->Layout.Domain, this->Layout.Piece);
+  }
+  stepper.initialize(this->Plan.startTime());
+  this->Parameters = p;
+  this->ParticlesPerElement = shape.particleCount();
+  if (this->Steppers.queue())
+  {
+    // The display's output has no particles: it carries the ranges they span.
+    this->RangeFacts = bp::rangeFactsOf(field, p, resolved.dt, config.coloringAxis, this->Offset,
+      this->Grid.bounds(), shape.particleCount());
+  }
+  return Pass();
+}
+
+void vtkBoundParticleTracer::vtkInternals::startTrace()
+{
+  this->Storage.reset(); // the element count or shape may have changed
+  this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,
+    this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
+  bp::TraceCursor& cursor = this->stepper().cursor;
+  cursor.committed = this->Plan.startTime();
+  cursor.valid = true;
+  cursor.configuration = this->Configuration;
+  cursor.producer = this->ProducerId;
+  cursor.showsPartialStep = false;
+  this->ReplayPending = false;
+}

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The tracer's internals, reading a time step: the input a pass brought
+// (resampled first when it is a mesh), checked against the held ones and put
+// in the field cache. See vtkBoundParticleTracerInternals.h.
+#include "vtkBoundParticleTracerInternals.h"
+
+#include "TracerInput.h"
+#include "VectorField.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <cmath>
+
+bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
+{
+  // A first pass with every time step in hand asked for whatever upstream
+  // held: take it only if the work needs it.
+  const std::vector<int> planned = this->Plan.needed(this->steppingFrom(), this->target());
+  const bool wanted = this->Continuing ||
+    std::find(planned.begin(), planned.end(), this->RequestIndex) != planned.end();
+  return wanted && !this->Cache.has(this->RequestIndex);
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
+  const Config& config, const bpvtk::TracerInputStep& step)
+{
+  if (!this->wantsTimeStep())
+  {
+    return std::string();
+  }
+  vtkDataObject* input = step.data;
+  vtkDataArray* vectors = step.vectors;
+  int association = step.association;
+  std::string requested = config.vectors.name;
+  vtkSmartPointer<vtkImageData> resampled;
+  if (bpvtk::FieldResampler::needed(input))
+  {
+    const std::string resampleError = this->resampleInput(config, input, resampled);
+    if (!resampleError.empty())
+    {
+      return resampleError; // every process fails alike
+    }
+    input = resampled;
+    requested = this->Resampler.arrayName();
+    vectors = resampled->GetPointData()->GetArray(requested.c_str());
+    association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  }
+  bp::GridGeometry grid;
+  bp::FieldSlice slice;
+  int extent[6];
+  std::size_t nonFinite = 0;
+  std::string maskProblem;
+  std::string error = bpvtk::readSlice(
+    input, vectors, association, grid, slice, extent, nonFinite, requested, &maskProblem);
+  this->Resampled = resampled != nullptr;
+  if (error.empty())
+  {
+    this->warnOfSlice(maskProblem, nonFinite, grid.pointCount());
+  }
+  std::array<double, 3> offset = grid.origin;
+  if (this->Layout.distributed())
+  {
+    // Every process reads in this pass: agree on the pieces (and fail together).
+    error = this->Layout.share(error, grid, extent, offset);
+    for (int a = 0; a < 3; ++a)
+    {
+      grid.firstIndex[a] = extent[2 * a] - this->Layout.WholeExtent[2 * a];
+    }
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  slice.time = this->sliceTime(input);
+  const std::string kept = this->keepTimeStep(grid, offset, slice);
+  // Each process checks its own piece (its velocities, its grid): one
+  // process's failure must be every process's before the next collective step.
+  return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
+}
+
+void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
+  const std::string& maskProblem, std::size_t nonFinite, std::size_t points)
+{
+  if (!maskProblem.empty() && !this->WarnedMask)
+  {
+    this->WarnedMask = true; // once per configuration, as below
+    vtkWarningWithObjectMacro(this->Owner, << maskProblem);
+  }
+  if (nonFinite > 0 && !this->WarnedNonFinite)
+  {
+    // Once per configuration: an unsteady input would say it every frame.
+    this->WarnedNonFinite = true;
+    vtkWarningWithObjectMacro(this->Owner,
+      << nonFinite << " of " << points << " grid points ("
+      << 100.0 * double(nonFinite) / double(points)
+      << "%) have a NaN or Inf vector; they count as outside the flow's domain, and elements "
+         "that reach them are released again.");
+  }
+}
+
+double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
+{
+  const double time = this->Plan.unsteady() ? this->Plan.inputTimes()[this->RequestIndex] : 0.0;
+  vtkInformation* data = input->GetInformation();
+  if (this->Plan.unsteady() && data->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    const double delivered = data->Get(vtkDataObject::DATA_TIME_STEP());
+    if (std::abs(delivered - time) > this->Plan.epsilon())
+    {
+      vtkWarningWithObjectMacro(this->Owner,
+        "Asked the input for time " << time << " but it delivered time " << delivered
+                                    << "; using it as time " << time << ".");
+    }
+  }
+  return time;
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
+  const Config& config, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece)
+{
+  vtkNew<vtkImageData> whole;
+  std::string warning;
+  const std::string error = this->Resampler.resample(input, config.vectors,
+    config.resampleDimensions, this->Layout.Controller, this->Steppers.runner(), whole, warning);
+  if (!warning.empty() && !this->WarnedResample)
+  {
+    this->WarnedResample = true; // once per configuration, as the mask's
+    vtkWarningWithObjectMacro(this->Owner, << warning);
+  }
+  if (error.empty())
+  {
+    piece = this->Layout.cutPiece(whole);
+  }
+  return error;
+}
+
+vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
+  const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid)
+{
+  vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
+  vtkMultiProcessController* controller =
+    global && global->GetNumberOfProcesses() > 1 ? global : nullptr;
+  vtkNew<vtkImageData> image;
+  std::string warning;
+  if (!this->Resampler
+         .resample(data, config.vectors, config.resampleDimensions, controller,
+           this->Steppers.runner(), image, warning)
+         .empty())
+  {
+    return nullptr; // the update says why
+  }
+  grid = image;
+  return image->GetPointData()->GetArray(this->Resampler.arrayName().c_str());
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
+  bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice)
+{
+  // In world coordinates first, so how far from the origin the data lies counts too.
+  const std::string worldError = grid.validate();
+  if (!worldError.empty())
+  {
+    return "Unusable input: " + worldError + ".";
+  }
+  // The engine works in coordinates relative to the grid's first point (the
+  // whole grid's, in parallel), so float positions keep their precision far
+  // from the world origin.
+  grid.translate(offset);
+  if (this->Cache.size() > 0)
+  {
+    const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
+    bool same = grid.sameAs(this->Grid, tolerance);
+    for (int a = 0; a < 3; ++a)
+    {
+      same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
+    }
+    if (!same)
+    {
+      return "The input's time steps do not share one grid; every time step must have the same "
+             "dimensions and point coordinates.";
+    }
+  }
+  this->Offset = offset;
+  this->Grid = grid;
+  const std::string fieldError = bp::VectorField(grid, slice).validate();
+  if (!fieldError.empty())
+  {
+    return "Unusable input: " + fieldError + ".";
+  }
+  this->Cache.insert(
+    this->RequestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
+  this->ReadThisUpdate = true;
+  return std::string();
+}
