@@ -6,14 +6,17 @@
  *
  * A step of size h at time t does, for every element independently:
  *  1. reset, when the element was flagged by the previous step or its lifetime
- *     ran out: a new centre uniform in the emitter box, a uniform random
- *     rotation (or the user's frame), the scaled template, a lifetime uniform
+ *     ran out: a new centre (uniform in the emitter box, or the next seed
+ *     point), an orientation (Orientation: the user's frame, a uniform random
+ *     rotation, or along the flow), the scaled template, a lifetime uniform
  *     in [min, max]; every draw comes from counterHash(seed, element,
- *     generation, draw), draws 0-2 the centre, 3-5 the rotation, 6 the lifetime;
+ *     generation, draw), draws 0-2 the centre (candidateDraw() for further
+ *     candidates), 3-5 the rotation, 6 the lifetime;
  *  2. advection of every particle (Euler, RK2 midpoint or classic RK4);
  *  3. restoration, K iterations of averaged Jacobi (thesis §3.5), Jacobi with
- *     relaxation, or Gauss-Seidel; the per-particle "force" is the length of
- *     the particle's total restoration displacement in this step;
+ *     relaxation, Gauss-Seidel, or shape matching (ShapeMatching.h); the
+ *     per-particle "force" is the length of the particle's total restoration
+ *     displacement in this step;
  *  4. normals (computed on demand by updateNormals(): they do not feed back
  *     into the simulation, so computing them only for output is the same);
  *  5. the reposition test: flag the element when its centre (or, as an option,
@@ -27,7 +30,15 @@
  *     from one to the other over h (Pose.h).
  *
  * Elements touch disjoint memory, so a step runs over element ranges in
- * parallel and gives the same bits for any number of threads.
+ * parallel and gives the same bits for any number of threads (a super set's
+ * links read a snapshot of every element taken between phases).
+ *
+ * The parameters are in EngineParameters.h; the engine's definitions are in
+ * one file per role: EngineValidate.cpp (the parameter checks),
+ * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
+ * EngineStep.cpp (steps 2-6 and the step loop), EngineLinked.cpp (a super
+ * set's step), EngineVisitOrder.cpp, EngineMigration.cpp (distributed runs)
+ * and Engine.cpp (trails, normals).
  */
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
@@ -82,9 +93,8 @@ public:
   /// The checks configure() makes, without allocating anything.
   static std::string validate(const ElementTemplate& shape, const Parameters& parameters);
 
-  /// Places every element (generation 0) at
-  /// `startTime` (the release window's test, and the flow Along Flow
-  /// samples in `field`, when given).
+  /// Places every element (generation 0) at `startTime` (the release
+  /// window's test, and the flow Along Flow samples in `field`, when given).
   void initialize(
     const RangeRunner& run, double startTime = 0.0, const VectorField* field = nullptr);
 
@@ -170,7 +180,8 @@ public:
   ///@{
   /// The bounds of the reposition test (by default the sampled field's).
   void setDomain(const Domain& domain);
-  /// Step 1 of a step on its own: resets the elements that are due.
+  /// Step 1 of a step on its own: records the trail pose due at t, then
+  /// resets the elements that are due.
   void resetDue(const RangeRunner& run, double t, double h);
   /// The mean of element e's particle positions.
   std::array<float, 3> centerOf(std::size_t e) const;
@@ -322,7 +333,7 @@ private:
   /// A step of a super set: each restoration iteration is followed by one
   /// averaged Jacobi pass over the links, so elements wait for each other.
   void stepLinked(const VectorField& field, double t, double h, const RangeRunner& run);
-  /// That pass for element e, reading LinkSnapshot.
+  /// That pass for element e, reading StepScratch::linkSnapshot.
   void restoreLinks(std::size_t e);
   /**
    * The order step() visits elements in, or empty for storage order: by a
@@ -380,11 +391,11 @@ private:
   LinkTable Links;
 
   /**
-   * What the engine computes from its state and writes before it reads, so
-   * a copy of the engine (CpuStepper::save) leaves it out: a copy starts
-   * with none of it, and assigning an engine keeps the target's own (with
-   * the visiting order dropped, as it belongs to other positions). Each
-   * buffer is sized where it is used.
+   * What the engine derives from its state, or writes before it reads it
+   * again, so that a copy of the engine (CpuStepper::save) leaves it out: a
+   * copy starts with none of it, and an assignment keeps the target's
+   * buffers but empties the normals and the visiting order (they belong to
+   * other positions). Each buffer is sized where it is used.
    */
   struct StepScratch
   {
@@ -402,6 +413,7 @@ private:
     StepScratch(StepScratch&&) = default;
     StepScratch& operator=(const StepScratch&)
     {
+      this->normals.clear();
       this->visitOrder.clear();
       return *this;
     }

@@ -812,3 +812,50 @@ TEST(Engine, TrailsKeepThePosesOfEveryFewStepsOfTheElementsOwnGeneration)
   EXPECT_EQ(again.trailSlot(0), trailed.trailSlot(0));
   EXPECT_EQ(again.trailTimes(), trailed.trailTimes());
 }
+
+TEST(Engine, ACopyLeavesTheScratchOutAndStepsToTheSameBits)
+{
+  // CpuStepper::save copies an engine and restore swaps it back: the copy
+  // has no step scratch (normals, a super set's phase buffers, the visiting
+  // order) and must size it itself, giving the bits of the original.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  for (bp::Linking linking : { bp::Linking::None, bp::Linking::Sheet })
+  {
+    SCOPED_TRACE(int(linking));
+    bp::Parameters p = centralParameters(linking == bp::Linking::None ? 3000 : 12, 0.05f);
+    p.linking = linking;
+    bp::Engine original = configured(bp::BuiltinShape::Strip16, p);
+    run(original, field, 3, 0.01);
+    original.updateNormals(bp::serialRunner());
+    const bp::Engine copy = original;
+    EXPECT_TRUE(copy.normals().empty());
+    bp::Engine assigned = configured(bp::BuiltinShape::Strip16, p);
+    assigned.updateNormals(bp::serialRunner());
+    assigned = original;
+    EXPECT_TRUE(assigned.normals().empty());
+    bp::Engine stepped = copy;
+    for (int s = 3; s < 6; ++s)
+    {
+      original.step(field, s * 0.01, 0.01, bp::serialRunner());
+      stepped.step(field, s * 0.01, 0.01, bp::serialRunner());
+      assigned.step(field, s * 0.01, 0.01, bp::serialRunner());
+    }
+    for (bp::Engine* e : { &original, &stepped, &assigned })
+    {
+      e->updateNormals(bp::serialRunner());
+    }
+    for (const bp::Engine* e : { &stepped, &assigned })
+    {
+      ASSERT_EQ(e->positions().size(), original.positions().size());
+      EXPECT_EQ(0,
+        std::memcmp(e->positions().data(), original.positions().data(),
+          sizeof(float) * original.positions().size()));
+      EXPECT_EQ(0,
+        std::memcmp(e->normals().data(), original.normals().data(),
+          sizeof(float) * original.normals().size()));
+      EXPECT_EQ(e->forces(), original.forces());
+      EXPECT_EQ(e->lifetimes(), original.lifetimes());
+    }
+  }
+}
