@@ -10,6 +10,9 @@
  * a polar decomposition by Newton's method, it needs no inverse of A, so flat
  * elements (strips, crosses: A of rank 2) work. Each element keeps its
  * orientation as a quaternion (x, y, z, w) between steps as the warm start.
+ * The goals, and the linear mode's blend, are Engine::matchShape's
+ * (EngineStep.cpp); the pose fit (Pose.h) extracts its rotation by Newton
+ * steps instead.
  */
 #ifndef BoundParticles_ShapeMatching_h
 #define BoundParticles_ShapeMatching_h
