@@ -44,6 +44,47 @@ T fromWord(std::uint32_t u)
     return T(u);
   }
 }
+/// Where exchange() takes each element from, in the new order.
+struct Sources
+{
+  /// (id, source) per element: source < held is an element kept, otherwise
+  /// the record source - held.
+  const std::vector<std::pair<std::uint32_t, std::size_t>>& order;
+  std::size_t held;
+  const std::vector<std::uint32_t>& records;
+  std::size_t words; ///< per record
+};
+
+/// One per-element array (Engine::forEachElementArray's `width` and
+/// `blocks`) after an exchange: each element's values from the array or
+/// from its record, where the array's words start `offset` words in.
+template <class T>
+std::vector<T> merged(const std::vector<T>& array, std::size_t width, std::size_t blocks,
+  const Sources& from, std::size_t offset)
+{
+  const std::size_t E = from.order.size(), held = from.held;
+  std::vector<T> out(blocks * E * width);
+  for (std::size_t k = 0; k < E; ++k)
+  {
+    const std::size_t source = from.order[k].second;
+    for (std::size_t b = 0; b < blocks; ++b)
+    {
+      T* to = out.data() + (b * E + k) * width;
+      if (source < held)
+      {
+        std::copy_n(array.data() + (b * held + source) * width, width, to);
+        continue;
+      }
+      const std::uint32_t* words =
+        from.records.data() + (source - held) * from.words + offset + b * width;
+      for (std::size_t j = 0; j < width; ++j)
+      {
+        to[j] = fromWord<T>(words[j]);
+      }
+    }
+  }
+  return out;
+}
 } // namespace
 
 void Engine::setDomain(const Domain& domain)
@@ -149,41 +190,19 @@ std::string Engine::exchange(
   {
     return std::string(); // nothing moves: the elements stay as they are, in order
   }
-  // (id, source): source < held is an element kept, otherwise record
-  // source - held.
   std::vector<std::pair<std::uint32_t, std::size_t>> order;
   const std::string error = this->mergeOrder(leaving, records, order);
   if (!error.empty())
   {
     return error;
   }
-  const std::size_t E = order.size();
+  const Sources sources{ order, held, records, words };
   std::size_t offset = 0; // of the array's words in a record
   forEachElementArray(*this,
     [&](auto& array, std::size_t width, std::size_t blocks, auto /*fill*/)
     {
-      using T = typename std::decay_t<decltype(array)>::value_type;
-      std::vector<T> merged(blocks * E * width);
-      for (std::size_t k = 0; k < E; ++k)
-      {
-        const std::size_t source = order[k].second;
-        for (std::size_t b = 0; b < blocks; ++b)
-        {
-          T* to = merged.data() + (b * E + k) * width;
-          if (source < held)
-          {
-            std::copy_n(array.data() + (b * held + source) * width, width, to);
-            continue;
-          }
-          const std::uint32_t* from = records.data() + (source - held) * words + offset + b * width;
-          for (std::size_t j = 0; j < width; ++j)
-          {
-            to[j] = fromWord<T>(from[j]);
-          }
-        }
-      }
+      array = merged(array, width, blocks, sources, offset);
       offset += blocks * width;
-      array = std::move(merged);
     });
   // A record's flags keep only the bits a flag may hold.
   for (std::uint8_t& flags : this->ResetFlags)
