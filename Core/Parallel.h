@@ -4,8 +4,10 @@
  * @brief How the core runs a loop over elements in parallel without knowing VTK.
  *
  * The engine's work is split into ranges of elements that touch disjoint
- * memory. A RangeRunner decides how ranges are scheduled: the filter passes one
- * built on vtkSMPTools or on poolRunner(), the unit tests serial, thread or pool runners.
+ * memory. A RangeRunner decides how ranges are scheduled: the filter passes
+ * poolRunner() below, or a runner on vtkSMPTools::For only where VTK's TBB
+ * backend was measured as fast (Filters/TracerSteppers.cxx); the unit tests
+ * pass serial, thread or pool runners.
  */
 #ifndef BoundParticles_Parallel_h
 #define BoundParticles_Parallel_h

@@ -15,6 +15,7 @@
 #ifndef BoundParticles_Pose_h
 #define BoundParticles_Pose_h
 
+#include "Quaternion.h"
 #include "ShapeMatching.h"
 
 #include <algorithm>
@@ -156,10 +157,8 @@ inline void spinBetween(const float before[4], const float after[4], float h, fl
 {
   const float a[4] = { after[0], after[1], after[2], after[3] };
   const float b[4] = { -before[0], -before[1], -before[2], before[3] }; // conjugate
-  float d[4] = { a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1],
-    a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
-    a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3],
-    a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2] };
+  float d[4];
+  quaternionProduct(a, b, d);
   if (d[3] < 0.0f)
   {
     for (float& x : d)

@@ -10,9 +10,14 @@
  * a polar decomposition by Newton's method, it needs no inverse of A, so flat
  * elements (strips, crosses: A of rank 2) work. Each element keeps its
  * orientation as a quaternion (x, y, z, w) between steps as the warm start.
+ * The goals, and the linear mode's blend, are Engine::matchShape's
+ * (EngineStep.cpp); the pose fit (Pose.h) extracts its rotation by Newton
+ * steps instead.
  */
 #ifndef BoundParticles_ShapeMatching_h
 #define BoundParticles_ShapeMatching_h
+
+#include "Quaternion.h"
 
 #include <cmath>
 
@@ -21,35 +26,6 @@ namespace bp
 
 /// Iterations of the rotation extraction per restoration iteration.
 constexpr int RotationIterations = 8;
-
-/// Row-major rotation matrix of the unit quaternion (x, y, z, w).
-inline void quaternionToMatrix(const float q[4], float R[9])
-{
-  const float x = q[0], y = q[1], z = q[2], w = q[3];
-  R[0] = 1 - 2 * (y * y + z * z);
-  R[1] = 2 * (x * y - w * z);
-  R[2] = 2 * (x * z + w * y);
-  R[3] = 2 * (x * y + w * z);
-  R[4] = 1 - 2 * (x * x + z * z);
-  R[5] = 2 * (y * z - w * x);
-  R[6] = 2 * (x * z - w * y);
-  R[7] = 2 * (y * z + w * x);
-  R[8] = 1 - 2 * (x * x + y * y);
-}
-
-/// q = d * q (Hamilton product), then normalised: q turned by d.
-inline void turnQuaternion(const float d[4], float q[4])
-{
-  const float n[4] = { d[3] * q[0] + d[0] * q[3] + d[1] * q[2] - d[2] * q[1],
-    d[3] * q[1] - d[0] * q[2] + d[1] * q[3] + d[2] * q[0],
-    d[3] * q[2] + d[0] * q[1] - d[1] * q[0] + d[2] * q[3],
-    d[3] * q[3] - d[0] * q[0] - d[1] * q[1] - d[2] * q[2] };
-  const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
-  for (int k = 0; k < 4; ++k)
-  {
-    q[k] = n[k] / length;
-  }
-}
 
 /// Turns q towards the rotation closest to the row-major matrix A.
 inline void extractRotation(const float A[9], float q[4])

@@ -47,12 +47,14 @@ void CpuStepper::step(double t, double h)
 
 void CpuStepper::save()
 {
-  // Assignment reuses the copy's storage from the last save.
+  // Assignment copies the state, not the step's scratch (Engine::StepScratch),
+  // and reuses the copy's storage from the last save.
   this->Saved = this->Current;
 }
 
 void CpuStepper::restore()
 {
+  // The scratch goes with the swap: the engine sizes it again where it is used.
   std::swap(this->Current, this->Saved);
 }
 

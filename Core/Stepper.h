@@ -64,9 +64,10 @@ public:
   virtual void restore() = 0;
 
   /// The particles as data in this process; null where they live elsewhere
-  /// (in a renderer's GPU textures). Their normals are not kept up to date:
-  /// they do not feed back into the simulation, and the output computes
-  /// them from the positions as it writes them (Engine::updateNormals()).
+  /// (in a renderer's GPU textures). Their normals are not kept: they do
+  /// not feed back into the simulation, and the output computes them from
+  /// the positions as it writes them (bp::elementsNormals); Engine::normals()
+  /// holds any only after Engine::updateNormals().
   virtual const Engine* particles() { return nullptr; }
 
   /// Whether the tracer should read the next field time step ahead of need
@@ -105,7 +106,7 @@ protected:
 private:
   RangeRunner Run;
   Engine Current;
-  Engine Saved;
+  Engine Saved; ///< save()'s copy: the state, without the step's scratch (Engine.h)
   std::shared_ptr<const VectorField> Field;
   ReleaseMask Release;
   ReleaseMaskSource ReleaseFrom;

@@ -294,8 +294,10 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
 
 void VectorField::locateRectilinear(int a, float x, std::size_t& cell, float& fraction) const
 {
-  // The last cell whose first point is at or below x (bp_common.glsl does the
-  // same search on the same table).
+  // The last cell whose first point is at or below x, by binary search.
+  // bp_common.glsl's bpLocate finds the same cell on the same table without
+  // a search: a table of uniform bins, each at most half the narrowest cell,
+  // gives the cell of the bin's start, then at most three compares correct it.
   const std::vector<float>& table = this->AxisTable[a];
   x = std::min(std::max(x, this->Lower[a]), this->Upper[a]);
   int lo = 0, hi = int(table.size() / 2) - 2;

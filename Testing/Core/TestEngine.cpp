@@ -49,31 +49,6 @@ void run(bp::Engine& engine, const bp::VectorField& field, int steps, double dt,
 }
 } // namespace
 
-TEST(CounterHash, UniformsCoverTheUnitInterval)
-{
-  double sum = 0.0;
-  float lo = 1.0f, hi = 0.0f;
-  const int n = 100000;
-  for (int i = 0; i < n; ++i)
-  {
-    const float u = bp::uniformDraw(1, std::uint32_t(i), 0, 0);
-    ASSERT_GE(u, 0.0f);
-    ASSERT_LT(u, 1.0f);
-    sum += u;
-    lo = std::min(lo, u);
-    hi = std::max(hi, u);
-  }
-  EXPECT_NEAR(sum / n, 0.5, 0.01);
-  EXPECT_LT(lo, 0.001f);
-  EXPECT_GT(hi, 0.999f);
-  // Each counter matters.
-  const std::uint32_t h = bp::counterHash(1, 2, 3, 4);
-  EXPECT_NE(h, bp::counterHash(2, 2, 3, 4));
-  EXPECT_NE(h, bp::counterHash(1, 3, 3, 4));
-  EXPECT_NE(h, bp::counterHash(1, 2, 4, 4));
-  EXPECT_NE(h, bp::counterHash(1, 2, 3, 5));
-}
-
 TEST(Engine, ShapesKeepEdgeLengthsInSolidRotation)
 {
   const bp::VectorField field =
@@ -838,46 +813,49 @@ TEST(Engine, TrailsKeepThePosesOfEveryFewStepsOfTheElementsOwnGeneration)
   EXPECT_EQ(again.trailTimes(), trailed.trailTimes());
 }
 
-TEST(ElementNormals, FourAtATimeAreTheSameBitsAsOneByOne)
+TEST(Engine, ACopyLeavesTheScratchOutAndStepsToTheSameBits)
 {
-  // Seven elements (four in lanes, three alone): bent, flat, collapsed to a
-  // point (no triangle counts) and one with a NaN corner.
-  for (bp::BuiltinShape kind : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Cross,
-         bp::BuiltinShape::Paddlewheel, bp::BuiltinShape::Fish })
+  // CpuStepper::save copies an engine and restore swaps it back: the copy
+  // has no step scratch (normals, a super set's phase buffers, the visiting
+  // order) and must size it itself, giving the bits of the original.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
+  for (bp::Linking linking : { bp::Linking::None, bp::Linking::Sheet })
   {
-    SCOPED_TRACE(bp::builtinShapeName(kind));
-    const bp::ElementTemplate shape = bp::builtinTemplate(kind);
-    const std::size_t n = shape.particleCount(), E = 7;
-    std::mt19937 random(17);
-    std::normal_distribution<float> jitter(0.0f, 0.3f);
-    std::vector<float> positions(3 * n * E);
-    for (std::size_t e = 0; e < E; ++e)
+    SCOPED_TRACE(int(linking));
+    bp::Parameters p = centralParameters(linking == bp::Linking::None ? 3000 : 12, 0.05f);
+    p.linking = linking;
+    bp::Engine original = configured(bp::BuiltinShape::Strip16, p);
+    run(original, field, 3, 0.01);
+    original.updateNormals(bp::serialRunner());
+    const bp::Engine copy = original;
+    EXPECT_TRUE(copy.normals().empty());
+    bp::Engine assigned = configured(bp::BuiltinShape::Strip16, p);
+    assigned.updateNormals(bp::serialRunner());
+    assigned = original;
+    EXPECT_TRUE(assigned.normals().empty());
+    bp::Engine stepped = copy;
+    for (int s = 3; s < 6; ++s)
     {
-      for (std::size_t i = 0; i < n; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          positions[3 * (e * n + i) + std::size_t(k)] =
-            shape.rest[i][std::size_t(k)] + (e == 1 ? 0.0f : jitter(random));
-        }
-      }
+      original.step(field, s * 0.01, 0.01, bp::serialRunner());
+      stepped.step(field, s * 0.01, 0.01, bp::serialRunner());
+      assigned.step(field, s * 0.01, 0.01, bp::serialRunner());
     }
-    std::fill_n(positions.begin() + std::ptrdiff_t(3 * n * 2), 3 * n, 0.5f); // a point
-    positions[3 * n * 5 + 4] = std::numeric_limits<float>::quiet_NaN();
-    std::vector<float> together(positions.size()), alone(positions.size());
-    bp::elementsNormals(shape, positions.data(), together.data(), E);
-    for (std::size_t e = 0; e < E; ++e)
+    for (bp::Engine* e : { &original, &stepped, &assigned })
     {
-      bp::elementNormals(shape, positions.data() + 3 * n * e, alone.data() + 3 * n * e);
+      e->updateNormals(bp::serialRunner());
     }
-    EXPECT_EQ(0, std::memcmp(together.data(), alone.data(), sizeof(float) * together.size()));
-    for (std::size_t i = 0; i < n; ++i) // the collapsed element: the fixed normal
+    for (const bp::Engine* e : { &stepped, &assigned })
     {
-      EXPECT_EQ(alone[3 * (2 * n + i) + 2], 1.0f);
-    }
-    for (float v : together)
-    {
-      EXPECT_FALSE(std::isnan(v)); // the NaN corner's triangles are skipped
+      ASSERT_EQ(e->positions().size(), original.positions().size());
+      EXPECT_EQ(0,
+        std::memcmp(e->positions().data(), original.positions().data(),
+          sizeof(float) * original.positions().size()));
+      EXPECT_EQ(0,
+        std::memcmp(e->normals().data(), original.normals().data(),
+          sizeof(float) * original.normals().size()));
+      EXPECT_EQ(e->forces(), original.forces());
+      EXPECT_EQ(e->lifetimes(), original.lifetimes());
     }
   }
 }

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file EngineParameters.h
+ * @brief What a system of bound particles is configured with (Parameters),
+ * the choices it offers, its limits and the reset-flag bits, and the two
+ * per-step decisions both engines take from the parameters alone
+ * (recordsTrailAt, releasesAt). The engine itself is in Engine.h.
+ */
+#ifndef BoundParticles_EngineParameters_h
+#define BoundParticles_EngineParameters_h
+
+#include "SuperSet.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace bp
+{
+
+enum class Integrator
+{
+  Euler = 0,
+  RK2,
+  RK4
+};
+
+enum class Restoration
+{
+  AveragedJacobi = 0,
+  Jacobi,
+  GaussSeidel,
+  ShapeMatching ///< best rigid fit (Core/ShapeMatching.h), goals blended by shapeStiffness
+};
+
+/// How an element is turned when it is placed (Engine::place).
+enum class Orientation
+{
+  Fixed = 0, ///< by Parameters::frame (Element Rotation)
+  Random,    ///< a uniform random rotation (about the plane's axis on a flat field)
+  AlongFlow  ///< the frame's x axis turned onto the flow at the release centre
+};
+
+enum class ResetWhen
+{
+  CenterLeaves = 0,
+  AnyParticleLeaves
+};
+
+/// The most particles a system may hold (about 2 GiB of state and output).
+constexpr std::size_t MaxParticles = std::size_t(1) << 26;
+
+/// The most seed points a system releases from (Parameters::seedPoints): a
+/// release's index is taken modulo their count in 32-bit arithmetic on the GPU.
+constexpr std::size_t MaxSeedPoints = 65536;
+
+/// Engine::resetFlags(): bit 0, due for reset (the reposition test); bit 1,
+/// placed outside the release window: hidden (not drawn, no cells in the
+/// output) and due again at every step.
+constexpr std::uint8_t ResetDue = 1;
+constexpr std::uint8_t ReleaseHidden = 2;
+/// Bit 2: placed Along Flow without a field to sample (Engine::resetDue of a
+/// distributed step, whose new centre may lie in another piece); turned onto
+/// the flow by the piece that holds it, before it is advected.
+constexpr std::uint8_t AlignPending = 4;
+
+/// How many candidate centres a release draws before it takes the last one
+/// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
+constexpr int ReleaseTries = 64;
+/// The draw of a release's k-th candidate centre's first coordinate (then
+/// the next two): 0 for the first, after the orientation and lifetime draws
+/// (3-6) for the others.
+constexpr std::uint32_t candidateDraw(int k)
+{
+  return k == 0 ? 0u : std::uint32_t(8 + 3 * (k - 1));
+}
+
+struct Parameters
+{
+  std::size_t numberOfElements = 1000;
+  float elementSize = 1.0f; ///< bounding-sphere diameter in world units
+  std::array<float, 3> emitterMin = { 0, 0, 0 };
+  std::array<float, 3> emitterMax = { 1, 1, 1 };
+  Orientation orientation = Orientation::Random;
+  std::array<float, 9> frame = {
+    1, 0, 0, 0, 1, 0, 0, 0, 1
+  }; ///< row-major: the Fixed orientation, Along Flow's start (and the plane's, under planeAxis)
+  /// With Random or Along Flow on a flat field (one axis of one point): that
+  /// axis. Elements then turn about it only, after `frame` lays the
+  /// template's x-y plane into the field's plane; -1: any rotation.
+  int planeAxis = -1;
+  float lifetimeMin = 1.0f;
+  float lifetimeMax = 2.0f;
+  Integrator integrator = Integrator::Euler;
+  Restoration restoration = Restoration::AveragedJacobi;
+  int iterations = 1;
+  /// Plain Jacobi's step factor on the summed corrections; stable for the
+  /// built-in shapes (up to 10 springs per particle) below about 0.3.
+  float relaxation = 0.2f;
+  /// Shape matching: how far each iteration moves particles to their goals, in [0, 1].
+  float shapeStiffness = 1.0f;
+  /// Shape matching's linear mode (Müller et al. 2005, §4.3): goals from
+  /// beta * A + (1 - beta) * R, A the best linear (affine) fit and R its
+  /// rotation, so elements may also shear and stretch, by up to beta.
+  bool linearShapeMatching = false;
+  float linearBlend = 0.5f; ///< beta, in [0, 1]
+  /// Super sets (Core/SuperSet.h): springs between neighbouring elements.
+  /// Linked elements are released together at their lattice sites, with one
+  /// orientation and one lifetime, and are not reset when they leave the field
+  /// (that would tear the structure): the structure lives out its lifetime.
+  Linking linking = Linking::None;
+  int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
+  float linkStiffness = 1.0f; ///< in [0, 1], of every link
+  ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  /// Release centres, 3 floats per point (at most MaxSeedPoints): release r
+  /// = generation * numberOfElements + id of an element is at point r modulo
+  /// their count, so releases take the points in order, cycling. Empty: the
+  /// emitter box.
+  std::vector<float> seedPoints;
+  /// The release window: an element is released (placed and shown) only in
+  /// a step that overlaps [releaseStart, releaseStop] (releasesAt). One due
+  /// outside it is placed hidden (ReleaseHidden) and is due again at every
+  /// step, so the window's first step releases it.
+  double releaseStart = -std::numeric_limits<double>::infinity();
+  double releaseStop = std::numeric_limits<double>::infinity();
+  /// An element whose centre moves slower than this over its first step
+  /// (in world units per time unit) was released where the flow stands
+  /// still, and is released again at the next step; 0 keeps every release.
+  float releaseMinSpeed = 0.0f;
+  std::uint32_t seed = 0;
+  /// Fit every element's pose and spin at the end of every step (Pose.h;
+  /// Engine::poses(), spins()). Off, they stay as placed (spin 0): the fit
+  /// costs the CPU engine about a quarter of a Strip16 step, so it runs only
+  /// for an output that shows them. Nothing else depends on it.
+  bool trackPoses = false;
+  /// Motion trails: each element's last trailLength poses (0: none), one
+  /// recorded at the start of every step that starts on trailStart + k *
+  /// trailInterval (recordsTrailAt), so a trail's poses are a fixed number
+  /// of steps apart and strictly older than the state shown.
+  int trailLength = 0;
+  double trailStart = 0.0;
+  double trailInterval = 0.0;
+};
+
+/// The most poses a trail keeps (Parameters::trailLength).
+constexpr int MaxTrailLength = 64;
+/// The most steps between two trail poses: recordsTrailAt() matches a step
+/// within 1e-6 of an interval, which must stay well below one step.
+constexpr int MaxTrailSpacing = 1000;
+/// Trail generation of a slot that holds no pose of the element
+/// (Engine::trailGenerations()).
+constexpr std::uint32_t NoTrailPose = 0xffffffffu;
+
+/// Whether a step starting at `t` records a trail pose first: t is within
+/// 1e-6 of an interval of trailStart + k * trailInterval, k >= 0.
+inline bool recordsTrailAt(const Parameters& p, double t)
+{
+  if (p.trailLength <= 0 || !(p.trailInterval > 0.0) || t < p.trailStart - 1e-6 * p.trailInterval)
+  {
+    return false;
+  }
+  const double k = std::round((t - p.trailStart) / p.trailInterval);
+  return std::abs(t - (p.trailStart + k * p.trailInterval)) <= 1e-6 * p.trailInterval;
+}
+
+/// Whether the step [t, t + h) releases elements: it overlaps the release
+/// window (so a window of one instant releases in the one step that holds
+/// it); the initialisation (h = 0) releases when t is in the window. Both
+/// engines decide it so, once per step.
+inline bool releasesAt(const Parameters& p, double t, double h)
+{
+  return h > 0.0 ? t <= p.releaseStop && t + h > p.releaseStart
+                 : p.releaseStart <= t && t <= p.releaseStop;
+}
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,459 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// One step of the system (Engine.h, steps 2-6): per element, advection,
+// restoration, the reposition test and the pose; and step(), which runs them
+// over the elements in visiting order, fetching ahead. The per-particle and
+// per-element functions stay in this one file with step() so that the
+// compiler inlines them into its loop.
+#include "CounterHash.h"
+#include "Engine.h"
+#include "Pose.h"
+#include "ShapeMatching.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bp
+{
+
+namespace
+{
+inline bool finite3(const float* p)
+{
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+} // namespace
+
+void Engine::advectParticle(
+  const VectorField& field, const StepWeights& w, double h, float p[3]) const
+{
+  const float hf = float(h);
+  float k1[3];
+  field.sampleWeighted(p, w.start, k1);
+  switch (this->Params.integrator)
+  {
+    case Integrator::Euler:
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf * k1[k];
+      }
+      return;
+    case Integrator::RK2:
+    {
+      float q[3], k2[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k1[k];
+      }
+      field.sampleWeighted(q, w.middle, k2);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf * k2[k];
+      }
+      return;
+    }
+    case Integrator::RK4:
+    {
+      float q[3], k2[3], k3[3], k4[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k1[k];
+      }
+      field.sampleWeighted(q, w.middle, k2);
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + 0.5f * hf * k2[k];
+      }
+      field.sampleWeighted(q, w.middle, k3);
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = p[k] + hf * k3[k];
+      }
+      field.sampleWeighted(q, w.end, k4);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += hf / 6.0f * (k1[k] + 2.0f * k2[k] + 2.0f * k3[k] + k4[k]);
+      }
+      return;
+    }
+  }
+}
+
+inline bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
+{
+  // Thesis eqs. 2.3-2.5: the whole correction moves end a away from end b by
+  // stiffness * (rest - length) along their difference; the ends share it.
+  const float* pa = p + 3 * s.a;
+  const float* pb = p + 3 * s.b;
+  const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+  const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(len > 0.0f))
+  {
+    return false; // coincident ends give no direction to restore along
+  }
+  const float f = s.stiffness * (s.rest - len) / len;
+  c[0] = f * d[0];
+  c[1] = f * d[1];
+  c[2] = f * d[2];
+  return true;
+}
+
+void Engine::matchShape(float* p, float* orientation) const
+{
+  // Goals: the rest shape turned by the best-fit rotation about the current
+  // centre (Müller et al. 2005, equal masses); particles move towards them.
+  const std::size_t n = this->Shape.particleCount();
+  const float size = this->Params.elementSize;
+  float c[3], A[9];
+  momentOf(p, n, this->Shape.rest, size, c, A);
+  extractRotation(A, orientation);
+  float R[9];
+  quaternionToMatrix(orientation, R);
+  if (this->Params.linearShapeMatching)
+  {
+    // Goals from M = beta * A Aqq^-1 + (1 - beta) * R (Müller et al. 2005, §4.3).
+    const float beta = this->Params.linearBlend;
+    const float* Q = this->RestMomentInverse.data();
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int col = 0; col < 3; ++col)
+      {
+        const float linear =
+          A[3 * row] * Q[col] + A[3 * row + 1] * Q[3 + col] + A[3 * row + 2] * Q[6 + col];
+        R[3 * row + col] = beta * linear + (1.0f - beta) * R[3 * row + col];
+      }
+    }
+  }
+  const float k = this->Params.shapeStiffness;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (this->Pinned[i])
+    {
+      continue;
+    }
+    const auto& r = this->Shape.rest[i];
+    const float q[3] = { size * r[0], size * r[1], size * r[2] };
+    for (int row = 0; row < 3; ++row)
+    {
+      const float goal =
+        c[row] + (R[3 * row] * q[0] + R[3 * row + 1] * q[1] + R[3 * row + 2] * q[2]);
+      p[3 * i + row] += k * (goal - p[3 * i + row]);
+    }
+  }
+}
+
+void Engine::restore(float* p, float* scratch, float* orientation) const
+{
+  for (int it = 0; it < this->Params.iterations; ++it)
+  {
+    this->restoreOnce(p, scratch, orientation);
+  }
+}
+
+std::size_t Engine::restorationScratchFloats() const
+{
+  // Jacobi's per-spring corrections.
+  return 3 * this->Springs.size();
+}
+
+bool Engine::restoresElements() const
+{
+  return !this->Springs.empty() || this->Params.restoration == Restoration::ShapeMatching;
+}
+
+void Engine::restoreOnce(float* p, float* scratch, float* orientation) const
+{
+  const std::size_t n = this->Shape.particleCount();
+  const Restoration method = this->Params.restoration;
+  if (method == Restoration::ShapeMatching)
+  {
+    this->matchShape(p, orientation);
+    return;
+  }
+  if (method == Restoration::GaussSeidel)
+  {
+    // Each spring moves its ends at once, so later springs see the update.
+    for (const SpringWork& s : this->GaussSeidelSprings)
+    {
+      float c[3];
+      if (springCorrection(p, s, c))
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          p[3 * s.a + k] += s.shareA * c[k];
+          p[3 * s.b + k] -= s.shareB * c[k];
+        }
+      }
+    }
+    return;
+  }
+  // Jacobi: every spring sees the positions of the previous iteration. Each
+  // particle's corrections are summed in spring order, as a per-particle
+  // gather over a spring list sorted by index sums them. The corrections are
+  // computed first, all independent, so their square roots and divisions
+  // overlap; coincident ends give no direction to restore along, and none.
+  const std::size_t springs = this->Springs.size();
+  float* corrections = scratch;
+  for (std::size_t k = 0; k < springs; ++k)
+  {
+    float* c = corrections + 3 * k;
+    if (!springCorrection(p, this->Springs[k], c))
+    {
+      std::fill_n(c, 3, 0.0f);
+    }
+  }
+  // Each particle gathers its springs' corrections in spring order, with the
+  // signed share of its end, in registers.
+  const bool averaged = method == Restoration::AveragedJacobi;
+  const float w = this->Params.relaxation;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float sum[3] = { 0, 0, 0 };
+    for (std::uint32_t j = this->IncidenceStart[i]; j < this->IncidenceStart[i + 1]; ++j)
+    {
+      const Incidence& in = this->Incidences[j];
+      const float* c = corrections + 3 * in.spring;
+      for (int k = 0; k < 3; ++k)
+      {
+        sum[k] += in.share * c[k];
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      p[3 * i + k] += averaged ? sum[k] * this->InverseDegree[i] : w * sum[k];
+    }
+  }
+}
+
+Engine::StepWeights Engine::beginStep(const VectorField& field, double t, double h)
+{
+  // After resetDue() (a distributed step) nothing is left to place; a hidden
+  // element, due at every step, would otherwise be placed twice.
+  const bool resets = !this->ResetsDone;
+  this->ResetsDone = false;
+  return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h),
+    this->releasesAt(t, h), resets };
+}
+
+void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
+  double h, float* before, float* advected)
+{
+  const std::size_t n = this->Shape.particleCount();
+  if (weights.resets && (this->isDue(e)))
+  {
+    ++this->Generations[e];
+    this->place(e, weights.releasing, { &field, weights.start });
+  }
+  else if (this->ResetFlags[e] & AlignPending)
+  {
+    this->alignToFlow(e, { &field, weights.start });
+  }
+  float* p = this->Positions.data() + 3 * e * n;
+  std::copy_n(p, 3 * n, before);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!this->Pinned[i])
+    {
+      this->advectParticle(field, weights, h, p + 3 * i);
+    }
+  }
+  if (advected)
+  {
+    std::copy_n(p, 3 * n, advected);
+  }
+}
+
+void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
+  double h, std::vector<float>& scratch)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* before = scratch.data(); // positions before the step
+  // Positions before restoration, for the forces; without restoration every
+  // force stays 0 and nothing is kept.
+  const bool restores = this->restoresElements();
+  float* advected = restores ? scratch.data() + 3 * n : nullptr;
+  this->resetAndAdvect(e, field, weights, h, before, advected);
+  if (restores)
+  {
+    this->restore(this->Positions.data() + 3 * e * n, scratch.data() + 6 * n,
+      this->Orientations.data() + 4 * e);
+  }
+  this->settle(e, field, weights, h, before, advected);
+}
+
+void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
+  const float* before, const float* advected)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  bool finite = true;
+  float* force = this->Forces.data() + e * n;
+  // Summed in float, particle by particle, as the GPU engine sums it.
+  float c[3] = { 0, 0, 0 };
+  bool anyOutside = false;
+  const bool byParticle = this->Params.resetWhen == ResetWhen::AnyParticleLeaves;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float* q = p + 3 * i;
+    if (advected)
+    {
+      const float* a = advected + 3 * i;
+      const float d[3] = { q[0] - a[0], q[1] - a[1], q[2] - a[2] };
+      force[i] = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    finite = finite && finite3(q);
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += q[k];
+    }
+    anyOutside = anyOutside || (byParticle && !this->inDomain(field, q, weights.end));
+  }
+  bool leave;
+  if (!finite)
+  {
+    // Keep the last good positions on view until the reset at the next step.
+    std::copy_n(before, 3 * n, p);
+    std::fill_n(force, n, 0.0f);
+    leave = true;
+  }
+  else
+  {
+    const float count = float(n);
+    const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
+    leave = byParticle ? anyOutside : !this->inDomain(field, center, weights.end);
+    leave = leave || this->releasedStagnant(e, center, h);
+  }
+  if (this->Params.trackPoses)
+  {
+    this->updatePose(e, field, weights, h, finite);
+  }
+  // A super set's element stays (and keeps its last good positions when they
+  // turn non-finite): resetting it alone would tear the structure.
+  // A hidden element stays hidden, and due (even in a super set, which is
+  // released whole when the window opens).
+  const std::uint8_t hidden = this->ResetFlags[e] & ReleaseHidden;
+  this->ResetFlags[e] = std::uint8_t((leave && this->Links.empty() ? ResetDue : 0) | hidden);
+  this->Lifetimes[e] -= float(h);
+}
+
+void Engine::updatePose(
+  std::size_t e, const VectorField& field, const StepWeights& weights, double h, bool finite)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* spin = this->Spins.data() + 4 * e;
+  if (!finite || n < 2)
+  {
+    // Back at the positions before the step (or no orientation): no turn.
+    std::fill_n(spin, 4, 0.0f);
+    return;
+  }
+  float* pose = this->Poses.data() + 4 * e;
+  const float before[4] = { pose[0], pose[1], pose[2], pose[3] };
+  float center[3];
+  fitPose(this->Positions.data() + 3 * e * n, n, this->Shape.rest, this->Params.elementSize, pose,
+    center);
+  spinBetween(before, pose, float(h), spin);
+  float velocity[3], curl[3];
+  field.sampleWithCurl(center, weights.end, velocity, curl);
+  spin[3] = spinVorticityRatio(spin, curl, float(h));
+}
+
+bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
+{
+  const Parameters& P = this->Params;
+  if (!(P.releaseMinSpeed > 0.0f) || !this->Links.empty())
+  {
+    return false;
+  }
+  // Slower than the minimum since its release (the cheap test first) ...
+  const float* start = this->InitialCenters.data() + 3 * e;
+  const float d[3] = { c[0] - start[0], c[1] - start[1], c[2] - start[2] };
+  const float reach = P.releaseMinSpeed * float(h);
+  if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach))
+  {
+    return false;
+  }
+  // ... and in its first step: its lifetime is still the one drawn at its
+  // placement (compared with half a step's slack, so that both engines'
+  // roundings agree).
+  const float drawn = P.lifetimeMin +
+    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
+  return drawn - this->Lifetimes[e] < 0.5f * float(h);
+}
+
+void Engine::step(const VectorField& field, double t, double h, const RangeRunner& run)
+{
+  if (!this->ResetsDone && recordsTrailAt(this->Params, t))
+  {
+    this->recordTrail(t); // resetDue() recorded it in a distributed step
+  }
+  if (!this->Links.empty())
+  {
+    this->stepLinked(field, t, h, run);
+    return;
+  }
+  const std::size_t n = this->Shape.particleCount();
+  const StepWeights weights = this->beginStep(field, t, h);
+  const std::vector<std::uint32_t>& order = this->visitOrder(field);
+  run(this->elementCount(),
+    [&](std::size_t begin, std::size_t end)
+    {
+      // before + advected + restoration's scratch, per worker.
+      std::vector<float> scratch(6 * n + this->restorationScratchFloats());
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        if (!order.empty())
+        {
+          // In visiting order the elements' own state is scattered in memory:
+          // fetch it ahead, while earlier elements sample the field.
+          // Its positions, once there, say which grid cells it will sample:
+          // fetch those a few elements later.
+          constexpr std::size_t StateAhead = 16, FieldAhead = 6;
+          if (k + StateAhead < end)
+          {
+            this->prefetchElement(order[k + StateAhead]);
+          }
+          if (k + FieldAhead < end)
+          {
+            const std::size_t next = order[k + FieldAhead];
+            const float* q = this->Positions.data() + 3 * next * n;
+            for (std::size_t i = 0; i < n; ++i)
+            {
+              field.prefetch(q + 3 * i);
+            }
+          }
+          this->stepElement(order[k], field, weights, h, scratch);
+        }
+        else
+        {
+          this->stepElement(k, field, weights, h, scratch);
+        }
+      }
+    });
+}
+
+void Engine::prefetchElement(std::size_t e) const
+{
+#if defined(__GNUC__)
+  const std::size_t n = this->Shape.particleCount();
+  constexpr std::size_t Line = 64;
+  __builtin_prefetch(this->ResetFlags.data() + e);
+  __builtin_prefetch(this->Lifetimes.data() + e, 1);
+  const char* positions = reinterpret_cast<const char*>(this->Positions.data() + 3 * e * n);
+  for (std::size_t b = 0; b < 12 * n; b += Line)
+  {
+    __builtin_prefetch(positions + b, 1);
+  }
+  if (this->restoresElements())
+  {
+    const char* forces = reinterpret_cast<const char*>(this->Forces.data() + e * n);
+    for (std::size_t b = 0; b < 4 * n; b += Line)
+    {
+      __builtin_prefetch(forces + b, 1);
+    }
+  }
+#else
+  (void)e;
+#endif
+}
+
+} // namespace bp

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Engine::validate: the checks a template and parameters pass before the
+// engine is sized, one named check per group of parameters, each giving the
+// message the user sees (empty when it passes).
+#include "Engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+namespace
+{
+std::string checkShape(const ElementTemplate& shape, const Parameters& /*p*/)
+{
+  return shape.validate();
+}
+
+std::string checkSize(const ElementTemplate& shape, const Parameters& p)
+{
+  if (p.numberOfElements < 1)
+  {
+    return "NumberOfElements must be at least 1";
+  }
+  const std::size_t n = shape.particleCount();
+  if (p.numberOfElements > MaxParticles / n)
+  {
+    std::ostringstream err;
+    err << "NumberOfElements " << p.numberOfElements << " x " << n
+        << " particles per element exceeds the limit of " << MaxParticles
+        << " particles; use fewer elements or a simpler shape";
+    return err.str();
+  }
+  if (!(std::isfinite(p.elementSize) && p.elementSize > 0.0f))
+  {
+    return "ElementSize must be positive";
+  }
+  return std::string();
+}
+
+std::string checkTrail(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (p.trailLength < 0 || p.trailLength > MaxTrailLength ||
+    (p.trailLength > 0 &&
+      !(std::isfinite(p.trailInterval) && p.trailInterval > 0.0 && std::isfinite(p.trailStart))))
+  {
+    return "TrailLength must be in [0, " + std::to_string(MaxTrailLength) +
+      "] poses, with a positive, finite interval between two";
+  }
+  return std::string();
+}
+
+std::string checkReleaseWindow(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (std::isnan(p.releaseStart) || std::isnan(p.releaseStop))
+  {
+    return "ReleaseStart and ReleaseStop must be numbers (one is NaN)";
+  }
+  if (!(p.releaseStart <= p.releaseStop))
+  {
+    std::ostringstream err;
+    err << "the release window must not end before it starts: ReleaseStart " << p.releaseStart
+        << " is after ReleaseStop " << p.releaseStop;
+    return err.str();
+  }
+  return std::string();
+}
+
+/// The plane axis, the seed points and the emitter box.
+std::string checkRelease(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (p.planeAxis < -1 || p.planeAxis > 2)
+  {
+    return "the plane axis must be -1 (none) or an axis 0 to 2";
+  }
+  if (p.seedPoints.size() % 3 != 0 || p.seedPoints.size() / 3 > MaxSeedPoints)
+  {
+    return "there must be at most " + std::to_string(MaxSeedPoints) + " seed points, 3 floats each";
+  }
+  if (!std::all_of(
+        p.seedPoints.begin(), p.seedPoints.end(), [](float x) { return std::isfinite(x); }))
+  {
+    return "the Seed Source has a point that is not finite (NaN or Inf), or one too far from the "
+           "field's first point for float coordinates";
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(std::isfinite(p.emitterMin[k]) && std::isfinite(p.emitterMax[k]) &&
+          p.emitterMin[k] <= p.emitterMax[k]))
+    {
+      return "the emitter box is invalid: EmitterSize must not be negative and both "
+             "EmitterCenter and EmitterSize must be finite";
+    }
+  }
+  if (!(std::isfinite(p.lifetimeMin) && std::isfinite(p.lifetimeMax) && p.lifetimeMin > 0.0f &&
+        p.lifetimeMin <= p.lifetimeMax))
+  {
+    return "LifetimeRange must satisfy 0 < min <= max";
+  }
+  return std::string();
+}
+
+std::string checkRestoration(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (p.iterations < 0 || p.iterations > 1000)
+  {
+    return "RestorationIterations must lie in [0, 1000]";
+  }
+  if (!(p.relaxation > 0.0f && p.relaxation <= 2.0f))
+  {
+    return "the Jacobi relaxation factor must lie in (0, 2]";
+  }
+  if (!(p.shapeStiffness >= 0.0f && p.shapeStiffness <= 1.0f))
+  {
+    return "the shape-matching stiffness must lie in [0, 1]";
+  }
+  if (!(p.linearBlend >= 0.0f && p.linearBlend <= 1.0f))
+  {
+    return "the linear shape-matching blend (beta) must lie in [0, 1]";
+  }
+  return std::string();
+}
+
+std::string checkLinking(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (int(p.linking) < int(Linking::None) || int(p.linking) > int(Linking::Torus))
+  {
+    return "Linking must be None, Chain, Ring, Sheet, Tube or Torus";
+  }
+  if (p.latticeWidth < 0)
+  {
+    return "LatticeWidth must not be negative (0 chooses a near-square lattice)";
+  }
+  if (!(p.linkStiffness >= 0.0f && p.linkStiffness <= 1.0f))
+  {
+    return "LinkStiffness must lie in [0, 1]";
+  }
+  return std::string();
+}
+} // namespace
+
+std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
+{
+  // In order, each only once the ones before pass (checkSize divides by
+  // the particle count that shape.validate() checks): the first failure is
+  // the one reported.
+  using Check = std::string (*)(const ElementTemplate&, const Parameters&);
+  const Check checks[] = { checkShape, checkSize, checkTrail, checkReleaseWindow, checkRelease,
+    checkRestoration, checkLinking };
+  for (const Check check : checks)
+  {
+    std::string error = check(shape, p);
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  return std::string();
+}
+
+} // namespace bp

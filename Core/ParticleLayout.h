@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ParticleLayout.h
+ * @brief The GPU engine's texture layout and its size check, here in Core/
+ * (not Gpu/) so the filter can check a system against a GPU's texture limit
+ * before it asks for one.
+ */
+#ifndef BoundParticles_ParticleLayout_h
+#define BoundParticles_ParticleLayout_h
+
+#include "ElementTemplate.h"
+
+#include <cstddef>
+#include <string>
+
+namespace bp
+{
+
+/**
+ * The GPU engine's texture layout (thesis §3.5.1, generalised): elements in a
+ * near-square W x H grid, one such block per template particle index, blocks
+ * bx per row, so the particle texture is near square. Here, not in Gpu/, so
+ * the filter can check a system against a GPU's texture limit before it asks
+ * for one.
+ */
+struct ParticleLayout
+{
+  long long elementGrid[2] = { 0, 0 }; ///< W, H
+  long long blocksPerRow = 0;          ///< bx
+  long long width = 0, height = 0;     ///< the particle texture
+  static ParticleLayout of(std::size_t elements, std::size_t particlesPerElement);
+};
+
+/**
+ * Empty when every texture of the GPU engine for `elements` elements of
+ * `shape` fits a GPU whose textures are at most `maxSize` texels wide and
+ * high: the particle state (ParticleLayout), and the template's tables (rest
+ * positions and particle info n wide, the Gauss-Seidel spring table 2n wide,
+ * the spring and triangle lists 4096 wide). Otherwise which one does not.
+ */
+std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
+
+} // namespace bp
+
+#endif
