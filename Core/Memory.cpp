@@ -50,11 +50,12 @@ double allocatableBytes()
 double traceBytes(const ElementTemplate& shape, const Parameters& p)
 {
   const double n = double(shape.particleCount()), elements = double(p.numberOfElements);
-  // Per particle: the engine's positions, normals and forces (28 bytes),
-  // twice (the copy a short step is shown on); the output's points (up to
-  // 24), normals, velocity (12 each), six float arrays, ElementId (8) and
-  // ParticleIndex (4).
-  const double perParticle = 2 * 28 + 24 + 12 + 12 + 6 * 4 + 8 + 4;
+  // Per particle: the engine's positions and forces (16 bytes; it keeps no
+  // normals for the output), twice (the copy a short step is shown on); the
+  // output's points (up to 24), normals, velocity (12 each), six float
+  // arrays, ElementId (8) and ParticleIndex (4).
+  const double engine = 16;
+  const double perParticle = 2 * engine + 24 + 12 + 12 + 6 * 4 + 8 + 4;
   // Per element: lifetimes, generations, centres, orientations, flags and
   // visiting order, twice; and its cells (a vtkIdType per corner plus offsets).
   const double corners = !shape.triangles.empty() ? 3.0 * double(shape.triangles.size())
@@ -68,7 +69,7 @@ double traceBytes(const ElementTemplate& shape, const Parameters& p)
   // A trail: per pose, the positions and generation (twice: the shown copy),
   // and in the output its points with a copy of every array, and its cells.
   const double trail = std::max(p.trailLength, 0) *
-    (2 * (12 * n + 4) + n * (perParticle - 2 * 28 + 4) + 8 * (corners + cells));
+    (2 * (12 * n + 4) + n * (perParticle - 2 * engine + 4) + 8 * (corners + cells));
   return elements * (n * (perParticle + 8 * 4) + perElement + trail);
 }
 

@@ -7,8 +7,10 @@
  * An axis may carry explicit, strictly increasing point coordinates (the
  * altitude layers of thesis §3.4): sampling then finds the cell by binary
  * search and interpolates by the position within it, exactly, instead of the
- * thesis' power-law approximation. Both engines search and weigh with the same
- * float tables (axisTable()).
+ * thesis' power-law approximation. Both engines weigh with the same float
+ * tables (axisTable()); the CPU finds the cell by binary search, the GPU's
+ * bpLocate (Shaders/bp_common.glsl) by a table of bins and at most three
+ * compares, which lands on the same cell.
  *
  * Positions outside the grid sample the nearest boundary value, as the thesis'
  * clamped 3D textures do; the engine decides separately when an element has
