@@ -665,9 +665,9 @@ TEST(Engine, PosesAndSpinsFollowSolidBodyRotationForEveryRestoration)
     p.iterations = 4;
     p.trackPoses = true;
     // A long strip for every restoration, shape matching included: its fit
-    // (fitRotation, the pose fit's Newton steps) turns the strip about its
-    // long axis as fast as about the others, so the strip does not roll (the
-    // fixed-point iteration it used before turned it late, and it did).
+    // (fitRotation, the pose fit's Newton steps) keeps up with the flow about
+    // the strip's long axis as about the others, so the strip does not roll
+    // (the fixed-point iteration it used before turned it late, and it did).
     bp::Engine engine = configured(bp::BuiltinShape::Strip16, p);
     const std::vector<float> placed = engine.poses();
     for (float s : engine.spins())
