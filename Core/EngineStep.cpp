@@ -105,7 +105,7 @@ void Engine::matchShape(float* p, float* orientation) const
   const float size = this->Params.elementSize;
   float c[3], A[9];
   momentOf(p, n, this->Shape.rest, size, c, A);
-  extractRotation(A, orientation);
+  fitRotation(A, orientation, MatchIterations);
   float R[9];
   quaternionToMatrix(orientation, R);
   if (this->Params.linearShapeMatching)

@@ -7,10 +7,11 @@
  * Shared operation for operation by the CPU engine (Engine::settle) and the
  * GPU engine's pose pass (Shaders/bp_pose.frag). Every restoration method
  * gets a pose this way, not only shape matching: at the end of every step the
- * fit (trackRotation's Newton steps, warm-started from the pose of the step
- * before) gives the new pose, and the rotation from the old pose to the
- * new one, divided by the step, gives the spin. An element of one particle
- * has no orientation: its pose stays the identity and its spin zero.
+ * fit (fitRotation in ShapeMatching.h, the extraction shape matching uses,
+ * warm-started from the pose of the step before) gives the new pose, and the
+ * rotation from the old pose to the new one, divided by the step, gives the
+ * spin. An element of one particle has no orientation: its pose stays the
+ * identity and its spin zero.
  */
 #ifndef BoundParticles_Pose_h
 #define BoundParticles_Pose_h
@@ -72,70 +73,9 @@ inline void momentOf(const float* p, std::size_t n, const std::vector<std::array
   }
 }
 
-/// Iterations of the pose fit per step (trackRotation).
+/// Iterations of the pose fit per step (fitRotation): warm-started from
+/// the pose one step before, two fit to float precision.
 constexpr int PoseIterations = 2;
-
-/// How far trackRotation's Newton step is damped, as a fraction of the
-/// element's whole moment: a turn about the axis of a line-like element
-/// (whose moment about it is 0) is left alone rather than divided by 0.
-constexpr float PoseDamping = 1.0e-3f;
-
-/**
- * Turns q towards the rotation R closest to A (the maximum of tr(R^T A)) by
- * Newton steps: with P = sum_c r_c a_c^T over the columns of R and A, the
- * turn w = H^-1 g, g = sum_c r_c x a_c, H = tr(P) I - sym(P) (+ damping),
- * applied as the quaternion (w / 2, 1), normalised. Unlike the fixed-point
- * step of extractRotation (g / tr(P)), it turns a flat or long element about
- * each axis by its own moment, so a strip's roll converges as fast as its
- * yaw; warm-started from the pose one step before, two steps fit to float
- * precision.
- */
-inline void trackRotation(const float A[9], float q[4])
-{
-  for (int iteration = 0; iteration < PoseIterations; ++iteration)
-  {
-    float R[9];
-    quaternionToMatrix(q, R);
-    float g[3] = { 0, 0, 0 };
-    float P[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
-    for (int c = 0; c < 3; ++c)
-    {
-      const float r[3] = { R[c], R[3 + c], R[6 + c] };
-      const float a[3] = { A[c], A[3 + c], A[6 + c] };
-      g[0] += r[1] * a[2] - r[2] * a[1];
-      g[1] += r[2] * a[0] - r[0] * a[2];
-      g[2] += r[0] * a[1] - r[1] * a[0];
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          P[3 * i + j] += r[i] * a[j];
-        }
-      }
-    }
-    const float trace = P[0] + P[4] + P[8];
-    const float d = trace + PoseDamping * std::abs(trace);
-    // H = d I - sym(P), symmetric: its cofactors solve H w = g.
-    const float h00 = d - P[0], h11 = d - P[4], h22 = d - P[8];
-    const float h01 = -0.5f * (P[1] + P[3]), h02 = -0.5f * (P[2] + P[6]),
-                h12 = -0.5f * (P[5] + P[7]);
-    const float c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22,
-                c02 = h01 * h12 - h02 * h11;
-    const float c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12,
-                c22 = h00 * h11 - h01 * h01;
-    const float det = h00 * c00 + h01 * c01 + h02 * c02;
-    if (!(det > 0.0f))
-    {
-      break; // A is zero or far from q: keep the pose
-    }
-    const float half = 0.5f / det;
-    const float w[3] = { (c00 * g[0] + c01 * g[1] + c02 * g[2]) * half,
-      (c01 * g[0] + c11 * g[1] + c12 * g[2]) * half,
-      (c02 * g[0] + c12 * g[1] + c22 * g[2]) * half };
-    const float turn[4] = { w[0], w[1], w[2], 1.0f };
-    turnQuaternion(turn, q);
-  }
-}
 
 /// Turns `pose` (warm start: the pose before) to the best rigid fit of the
 /// n particles `p` to the scaled rest shape (momentOf); writes their centre.
@@ -144,7 +84,7 @@ inline void fitPose(const float* p, std::size_t n, const std::vector<std::array<
 {
   float A[9];
   momentOf(p, n, rest, size, c, A);
-  trackRotation(A, pose);
+  fitRotation(A, pose, PoseIterations);
 }
 
 /**

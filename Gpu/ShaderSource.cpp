@@ -97,9 +97,10 @@ std::string compileShader(
 std::string engineConstantDefinitions()
 {
   return define("BP_RELEASE_TRIES", std::to_string(ReleaseTries)) +
-    define("BP_ROTATION_ITERATIONS", std::to_string(RotationIterations)) +
+    define("BP_MATCH_ITERATIONS", std::to_string(MatchIterations)) +
     define("BP_POSE_ITERATIONS", std::to_string(PoseIterations)) +
-    define("BP_POSE_DAMPING", floatLiteral(PoseDamping)) +
+    define("BP_ROTATION_DAMPING", floatLiteral(RotationDamping)) +
+    define("BP_MAX_NEWTON_STEP", floatLiteral(MaxNewtonStep)) +
     define("BP_MIN_VORTICITY_STEP", floatLiteral(MinVorticityStep)) +
     define("BP_MAX_SPIN_VORTICITY_RATIO", floatLiteral(MaxSpinVorticityRatio));
 }

@@ -396,34 +396,108 @@ bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force
   return false;
 }
 
-// ---- Shape matching (Core/ShapeMatching.h) ---------------------------------
-// Turns q towards the rotation closest to A, given by its rows.
-vec4 bpExtractRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
+// ---- The rotation fit (Core/ShapeMatching.h) -------------------------------
+// The largest float: a larger (or NaN) squared step is no step.
+const float bpLargestFloat = 3.40282347e38;
+
+// fitTerms: P = sum_c r_c a_c^T, by rows, and g = sum_c r_c x a_c over the
+// columns of R and A.
+void bpFitTerms(vec3 r0, vec3 r1, vec3 r2, vec3 a0, vec3 a1, vec3 a2, out vec3 p0, out vec3 p1,
+  out vec3 p2, out vec3 g)
 {
-  for (int iteration = 0; iteration < BP_ROTATION_ITERATIONS; ++iteration)
+  g = vec3(0.0);
+  p0 = vec3(0.0);
+  p1 = vec3(0.0);
+  p2 = vec3(0.0);
+  for (int c = 0; c < 3; ++c)
   {
-    vec3 r0, r1, r2;
-    bpQuaternionRows(q, r0, r1, r2);
-    vec3 num = vec3(0.0);
-    float dot = 0.0;
-    for (int c = 0; c < 3; ++c)
+    vec3 r = vec3(r0[c], r1[c], r2[c]);
+    vec3 a = vec3(a0[c], a1[c], a2[c]);
+    g.x += r.y * a.z - r.z * a.y;
+    g.y += r.z * a.x - r.x * a.z;
+    g.z += r.x * a.y - r.y * a.x;
+    p0 += r.x * a;
+    p1 += r.y * a;
+    p2 += r.z * a;
+  }
+}
+
+// newtonTurn: (w / 2, 1) with w = H^-1 g, H = tr(P) I - sym(P) (+ damping)
+// solved by H's cofactors, cut to BP_MAX_NEWTON_STEP; false where H is not
+// positive definite or w is not finite.
+bool bpNewtonTurn(vec3 p0, vec3 p1, vec3 p2, vec3 g, out vec4 turn)
+{
+  turn = vec4(0.0, 0.0, 0.0, 1.0);
+  float trace = p0.x + p1.y + p2.z;
+  float d = trace + BP_ROTATION_DAMPING * abs(trace);
+  float h00 = d - p0.x, h11 = d - p1.y, h22 = d - p2.z;
+  float h01 = -0.5 * (p0.y + p1.x), h02 = -0.5 * (p0.z + p2.x), h12 = -0.5 * (p1.z + p2.y);
+  float c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
+  float c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12, c22 = h00 * h11 - h01 * h01;
+  float det = h00 * c00 + h01 * c01 + h02 * c02;
+  if (!(det > 0.0 && h00 > 0.0 && c22 > 0.0)) // Sylvester's criterion
+  {
+    return false;
+  }
+  float halfInverse = 0.5 / det; // "half" is reserved in GLSL
+  turn.x = (c00 * g.x + c01 * g.y + c02 * g.z) * halfInverse;
+  turn.y = (c01 * g.x + c11 * g.y + c12 * g.z) * halfInverse;
+  turn.z = (c02 * g.x + c12 * g.y + c22 * g.z) * halfInverse;
+  float w2 = turn.x * turn.x + turn.y * turn.y + turn.z * turn.z;
+  float longest = 0.5 * BP_MAX_NEWTON_STEP;
+  if (!(w2 <= longest * longest))
+  {
+    if (!(w2 <= bpLargestFloat))
     {
-      vec3 r = vec3(r0[c], r1[c], r2[c]);
-      vec3 a = vec3(a0[c], a1[c], a2[c]);
-      num.x += r.y * a.z - r.z * a.y;
-      num.y += r.z * a.x - r.x * a.z;
-      num.z += r.x * a.y - r.y * a.x;
-      dot += r.x * a.x + r.y * a.y + r.z * a.z;
+      return false;
     }
-    float den = abs(dot) + 1.0e-9;
-    vec3 omega = vec3(num.x / den, num.y / den, num.z / den);
-    float angle = sqrt(omega.x * omega.x + omega.y * omega.y + omega.z * omega.z);
-    if (!(angle >= 1.0e-9))
+    float cut = longest / sqrt(w2);
+    turn.x = turn.x * cut;
+    turn.y = turn.y * cut;
+    turn.z = turn.z * cut;
+  }
+  return true;
+}
+
+// axisTurn: the turn about g by atan2(|g|, tr(P) - n.Pn), n = g / |g|, the
+// angle that fits best about that axis; false where g is 0 or not finite.
+bool bpAxisTurn(vec3 p0, vec3 p1, vec3 p2, vec3 g, out vec4 turn)
+{
+  turn = vec4(0.0, 0.0, 0.0, 1.0);
+  float g2 = g.x * g.x + g.y * g.y + g.z * g.z;
+  if (!(g2 > 0.0 && g2 <= bpLargestFloat))
+  {
+    return false;
+  }
+  float length = sqrt(g2);
+  float gPg = 0.0;
+  gPg += g.x * (p0.x * g.x + p0.y * g.y + p0.z * g.z);
+  gPg += g.y * (p1.x * g.x + p1.y * g.y + p1.z * g.z);
+  gPg += g.z * (p2.x * g.x + p2.y * g.y + p2.z * g.z);
+  float angle = atan(length * g2, (p0.x + p1.y + p2.z) * g2 - gPg);
+  float s = sin(0.5 * angle) / length;
+  turn = vec4(g.x * s, g.y * s, g.z * s, cos(0.5 * angle));
+  return true;
+}
+
+// fitRotation: `iterations` steps of q towards the rotation R closest to A,
+// given by its rows (the maximum of tr(R^T A)), for shape matching and the
+// pose fit alike: Newton's (bpNewtonTurn) where it applies, else the best
+// turn about the gradient (bpAxisTurn). A zero (or non-finite) A keeps q.
+vec4 bpFitRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q, int iterations)
+{
+  for (int iteration = 0; iteration < iterations; ++iteration)
+  {
+    vec3 r0, r1, r2, p0, p1, p2, g;
+    vec4 turn;
+    bpQuaternionRows(q, r0, r1, r2);
+    bpFitTerms(r0, r1, r2, a0, a1, a2, p0, p1, p2, g);
+    if (!bpNewtonTurn(p0, p1, p2, g, turn) && !bpAxisTurn(p0, p1, p2, g, turn))
     {
       break;
     }
-    float s = sin(0.5 * angle) / angle, c = cos(0.5 * angle);
-    vec4 n = bpQuaternionProduct(vec4(omega * s, c), q);
+    // q = turn * q, then normalised.
+    vec4 n = bpQuaternionProduct(turn, q);
     float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
     q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
   }
@@ -454,53 +528,6 @@ void bpMomentOf(sampler2D positions, sampler2D rest, int e, out vec3 c, out vec3
     a1 += d.y * q;
     a2 += d.z * q;
   }
-}
-
-// trackRotation: Newton steps towards the rotation R closest to A (the
-// maximum of tr(R^T A)): with P = sum_c r_c a_c^T over the columns of R and
-// A, the turn w = H^-1 g, g = sum_c r_c x a_c, H = tr(P) I - sym(P) (+
-// damping), solved by H's cofactors and applied as the quaternion (w / 2, 1),
-// normalised.
-vec4 bpTrackRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q)
-{
-  for (int iteration = 0; iteration < BP_POSE_ITERATIONS; ++iteration)
-  {
-    vec3 r0, r1, r2;
-    bpQuaternionRows(q, r0, r1, r2);
-    vec3 g = vec3(0.0);
-    vec3 p0 = vec3(0.0), p1 = vec3(0.0), p2 = vec3(0.0); // rows of P
-    for (int c = 0; c < 3; ++c)
-    {
-      vec3 r = vec3(r0[c], r1[c], r2[c]);
-      vec3 a = vec3(a0[c], a1[c], a2[c]);
-      g.x += r.y * a.z - r.z * a.y;
-      g.y += r.z * a.x - r.x * a.z;
-      g.z += r.x * a.y - r.y * a.x;
-      p0 += r.x * a;
-      p1 += r.y * a;
-      p2 += r.z * a;
-    }
-    float trace = p0.x + p1.y + p2.z;
-    float d = trace + BP_POSE_DAMPING * abs(trace);
-    float h00 = d - p0.x, h11 = d - p1.y, h22 = d - p2.z;
-    float h01 = -0.5 * (p0.y + p1.x), h02 = -0.5 * (p0.z + p2.x), h12 = -0.5 * (p1.z + p2.y);
-    float c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
-    float c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12, c22 = h00 * h11 - h01 * h01;
-    float det = h00 * c00 + h01 * c01 + h02 * c02;
-    if (!(det > 0.0))
-    {
-      break; // A is zero or far from q: keep the pose
-    }
-    float halfInverse = 0.5 / det; // "half" is reserved in GLSL
-    vec3 w = vec3((c00 * g.x + c01 * g.y + c02 * g.z) * halfInverse,
-      (c01 * g.x + c11 * g.y + c12 * g.z) * halfInverse,
-      (c02 * g.x + c12 * g.y + c22 * g.z) * halfInverse);
-    // q = (w, 1) * q, then normalised.
-    vec4 n = bpQuaternionProduct(vec4(w, 1.0), q);
-    float length = sqrt(n.x * n.x + n.y * n.y + n.z * n.z + n.w * n.w);
-    q = vec4(n.x / length, n.y / length, n.z / length, n.w / length);
-  }
-  return q;
 }
 
 // spinBetween: the angular velocity that turns `before` into `after` in time

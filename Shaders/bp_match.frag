@@ -32,7 +32,8 @@ void main()
   vec3 c, a0, a1, a2;
   bpMomentOf(bpPositions, bpRest, e, c, a0, a1, a2);
   outCenter = vec4(c, 0.0);
-  outOrientation = bpExtractRotation(a0, a1, a2, texelFetch(bpOrientations, texel, 0));
+  outOrientation = bpFitRotation(a0, a1, a2, texelFetch(bpOrientations, texel, 0),
+    BP_MATCH_ITERATIONS);
   if (bpLinearMatching)
   {
     vec3 r[3];

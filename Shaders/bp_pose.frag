@@ -34,7 +34,7 @@ void main()
   }
   vec3 c, a0, a1, a2;
   bpMomentOf(bpState, bpRest, e, c, a0, a1, a2);
-  outPose = bpTrackRotation(a0, a1, a2, before);
+  outPose = bpFitRotation(a0, a1, a2, before, BP_POSE_ITERATIONS);
   vec3 spin = bpSpinBetween(before, outPose, bpStep);
   outSpin = vec4(spin, bpSpinVorticityRatio(spin, bpCurl(c, bpEndWeight), bpStep));
 }

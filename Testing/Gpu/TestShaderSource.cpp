@@ -114,9 +114,10 @@ TEST(ShaderSource, ConstantsReadBackAsTheCoreValues)
 {
   std::map<std::string, std::string> d = definitions();
   EXPECT_EQ(d["BP_RELEASE_TRIES"], std::to_string(bp::ReleaseTries));
-  EXPECT_EQ(d["BP_ROTATION_ITERATIONS"], std::to_string(bp::RotationIterations));
+  EXPECT_EQ(d["BP_MATCH_ITERATIONS"], std::to_string(bp::MatchIterations));
   EXPECT_EQ(d["BP_POSE_ITERATIONS"], std::to_string(bp::PoseIterations));
-  EXPECT_EQ(readFloat(d["BP_POSE_DAMPING"]), bp::PoseDamping);
+  EXPECT_EQ(readFloat(d["BP_ROTATION_DAMPING"]), bp::RotationDamping);
+  EXPECT_EQ(readFloat(d["BP_MAX_NEWTON_STEP"]), bp::MaxNewtonStep);
   EXPECT_EQ(readFloat(d["BP_MIN_VORTICITY_STEP"]), bp::MinVorticityStep);
   EXPECT_EQ(readFloat(d["BP_MAX_SPIN_VORTICITY_RATIO"]), bp::MaxSpinVorticityRatio);
   for (const auto& value : d)
