@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SuperSet.h"
+#include "SuperSetLinks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,10 +42,7 @@ const char* linkingName(Linking linking)
 std::size_t LinkTable::linkCount() const
 {
   std::size_t count = 0;
-  for (std::size_t k = 0; k < this->neighbours.size(); k += LinkDirections)
-  {
-    count += (this->neighbours[k] >= 0 ? 1 : 0) + (this->neighbours[k + 2] >= 0 ? 1 : 0);
-  }
+  forEachLink(*this, [&count](std::size_t, std::size_t) { ++count; });
   return count;
 }
 
