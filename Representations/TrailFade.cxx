@@ -81,7 +81,7 @@ vtkSmartPointer<vtkUnsignedCharArray> fadedTrailColors(
   unsigned char* rgba = colors->GetPointer(0);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double fade = std::min(std::max(1.0 - age->GetComponent(i, 0) / span, 0.0), 1.0);
+    const double fade = trailFade(age->GetComponent(i, 0), span);
     rgba[4 * i + 3] = static_cast<unsigned char>(std::lround(rgba[4 * i + 3] * fade));
   }
   return colors;

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file TrailFade.h
- * @brief The trails' fade for the Bound Particles display's CPU path.
+ * @brief The trails' fade for the Bound Particles display, and its CPU path.
  *
- * The GPU mapper fades each trail pose by 1 - age / span, span one trail
- * interval past the oldest pose, unless the colour map maps opacity itself.
- * A polydata mapper cannot scale a mapped colour's alpha per point, so the
- * display's CPU path maps the colours here, scales their alpha, and draws
- * them as direct scalars: the same look on both engines.
+ * Both paths fade each trail pose by 1 - age / span (trailFade), span one
+ * trail interval past the oldest pose, unless the colour map maps opacity
+ * itself. The GPU mapper passes the fade to its draw shader. A polydata
+ * mapper cannot scale a mapped colour's alpha per point, so the display's
+ * CPU path maps the colours here, scales their alpha, and draws them as
+ * direct scalars: the same look on both engines.
  */
 #ifndef BoundParticles_TrailFade_h
 #define BoundParticles_TrailFade_h
@@ -18,8 +19,18 @@ class vtkPolyData;
 class vtkScalarsToColors;
 class vtkUnsignedCharArray;
 
+#include <algorithm> // for std::min, std::max
+
 namespace bpvtk
 {
+
+/// The opacity factor of a trail pose `age` old whose trail fades over
+/// `span`: 1 - age / span, clamped to [0, 1]. Inline: the CPU path applies
+/// it to every point.
+inline double trailFade(double age, double span)
+{
+  return std::min(std::max(1.0 - age / span, 0.0), 1.0);
+}
 
 /// The span over which `piece`'s trail poses fade (its "TrailFadeSpan"
 /// field value); 0 when it has no trail poses to fade.
