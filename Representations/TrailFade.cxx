@@ -25,6 +25,21 @@ vtkDataArray* ageOf(vtkPolyData* piece)
 }
 } // namespace
 
+void chooseTrailPoses(const std::vector<bp::GpuEngine::DrawInputs::TrailSlot>& slots, double time,
+  double fadeSpan, bool mapFades, std::vector<TrailPose>& poses)
+{
+  poses.clear();
+  for (const auto& slot : slots)
+  {
+    if (slot.time < time && slot.positions && slot.elements)
+    {
+      const double age = time - slot.time;
+      const double fade = mapFades || !(fadeSpan > 0.0) ? 1.0 : trailFade(age, fadeSpan);
+      poses.push_back({ slot.positions, slot.elements, float(age), float(fade) });
+    }
+  }
+}
+
 double trailFadeSpan(vtkPolyData* piece)
 {
   vtkDataArray* age = ageOf(piece);

@@ -73,13 +73,6 @@ constexpr bool ReportsReplayProgress = true;
 /// float time step (24 MiB) then arrives over a few frames on a software
 /// renderer, in one or two on a GPU.
 constexpr double StagingSecondsPerFrame = 0.004;
-
-/// A trail pose to draw: the slot's textures, its age and its opacity factor.
-struct TrailPose
-{
-  unsigned positions, elements;
-  float age, fade;
-};
 } // namespace
 
 struct vtkOpenGLBoundParticleMapper::vtkInternals
@@ -117,8 +110,8 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   /// Per template particle, the triangles it is a corner of (cornerTable,
   /// RGBA32I); made once per configuration with trails.
   bpvtk::IntegerTable CornerTable{ 4 };
-  /// The trail poses of this frame's draw (ChooseTrailPoses).
-  std::vector<TrailPose> TrailPoses;
+  /// The trail poses of this frame's draw (chooseTrailPoses).
+  std::vector<bpvtk::TrailPose> TrailPoses;
 
   /// The engine's and the tables' textures on units of their own while drawing.
   bpvtk::DrawSamplers Samplers;
@@ -475,7 +468,10 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   I.ColorTable.update(this->GetLookupTable(), window);
   I.ColorTable.texture()->Activate();
   this->UploadTables(window);
-  this->ChooseTrailPoses();
+  // Where the colour map maps opacity (colouring by Age, say) it fades the
+  // trails; otherwise the display's own fade does.
+  bpvtk::chooseTrailPoses(I.Inputs.trail, I.Queue->draw.time, I.TrailSpan + I.TrailInterval,
+    this->ColorMapIsTranslucent(), I.TrailPoses);
   I.Samplers.bindAll(window,
     { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
       I.LinkTable.handle(), I.Inputs.poses, I.Inputs.spins, 0u, 0u, I.CornerTable.handle() });
@@ -506,30 +502,6 @@ void vtkOpenGLBoundParticleMapper::UploadTables(vtkOpenGLRenderWindow* window)
     vtkWarningMacro(<< "The template's " << particles
                     << " particles are too many for one texture; the display lights its "
                        "trails with a fixed normal.");
-  }
-}
-
-void vtkOpenGLBoundParticleMapper::ChooseTrailPoses()
-{
-  // The trail's slots to draw, newest first: those recorded strictly before
-  // the time shown (a step shown and taken back leaves none ahead of it), as
-  // the CPU output's trailPoses(). Their opacity falls with age, by the
-  // colour map where it maps opacity (colouring by Age, say), otherwise by
-  // the display's own fade, 1 - age / (span + interval): the newest pose,
-  // one interval old, at L / (L + 1), the oldest at 1 / (L + 1).
-  vtkInternals& I = *this->Internals;
-  I.TrailPoses.clear();
-  const bool mapFades = this->ColorMapIsTranslucent();
-  const double fadeSpan = I.TrailSpan + I.TrailInterval;
-  const double time = I.Queue->draw.time;
-  for (const auto& slot : I.Inputs.trail)
-  {
-    if (slot.time < time && slot.positions && slot.elements)
-    {
-      const double age = time - slot.time;
-      const double fade = mapFades || !(fadeSpan > 0.0) ? 1.0 : bpvtk::trailFade(age, fadeSpan);
-      I.TrailPoses.push_back({ slot.positions, slot.elements, float(age), float(fade) });
-    }
   }
 }
 
@@ -590,7 +562,7 @@ void vtkOpenGLBoundParticleMapper::DrawElementCells(
   // Each trail pose shown: the same cells again, positions from the slot's
   // copy of the particle texture (the engine's ring, nothing uploaded);
   // elements of another generation there are clipped.
-  for (const TrailPose& t : I.TrailPoses)
+  for (const bpvtk::TrailPose& t : I.TrailPoses)
   {
     I.Samplers.bind(window, bpvtk::DrawSamplers::TrailPositions, t.positions);
     I.Samplers.bind(window, bpvtk::DrawSamplers::TrailElements, t.elements);

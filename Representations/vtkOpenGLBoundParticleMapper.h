@@ -170,8 +170,6 @@ private:
   void PrepareEngineTextures();
   /// The link and corner tables, uploaded once per configuration.
   void UploadTables(vtkOpenGLRenderWindow* window);
-  /// The trail poses to draw this frame, newest first, and their fades.
-  void ChooseTrailPoses();
   /// The cells of VTK primitive `primitive`: the elements and their trail
   /// poses, and on the line primitive the super set's links.
   void DrawPrimitive(int primitive, vtkRenderer* ren, vtkActor* act);
