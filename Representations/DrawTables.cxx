@@ -29,7 +29,8 @@
 namespace bpvtk
 {
 
-vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, float size, bool links)
+vtkSmartPointer<vtkPolyData> templatePolyData(
+  const bp::ElementTemplate& shape, float size, bool links)
 {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;

@@ -41,7 +41,8 @@ namespace bpvtk
  * builds its line shader, which draws the super set's links; the cell itself
  * is never drawn.
  */
-vtkSmartPointer<vtkPolyData> templateMesh(const bp::ElementTemplate& shape, float size, bool links);
+vtkSmartPointer<vtkPolyData> templatePolyData(
+  const bp::ElementTemplate& shape, float size, bool links);
 
 /// The links of the super set of `p` as pairs of element indices, in the
 /// order of the CPU output's link cells (bp::forEachLink); empty unlinked.

@@ -26,7 +26,7 @@ vtkDataArray* ageOf(vtkPolyData* piece)
 } // namespace
 
 void chooseTrailPoses(const std::vector<bp::GpuEngine::DrawInputs::TrailSlot>& slots, double time,
-  double fadeSpan, bool mapFades, std::vector<TrailPose>& poses)
+  double fadeSpan, bool mapFades, std::vector<TrailPoseDraw>& poses)
 {
   poses.clear();
   for (const auto& slot : slots)

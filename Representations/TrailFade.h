@@ -36,8 +36,9 @@ inline double trailFade(double age, double span)
 }
 
 /// A trail pose the GPU mapper draws: the slot's particle and element
-/// textures, its age and its fade.
-struct TrailPose
+/// textures, its age and its fade. (Not TrailPose: the tracer's output has a
+/// bpvtk::TrailPose of its own in the same plugin library.)
+struct TrailPoseDraw
 {
   unsigned positions, elements;
   float age, fade;
@@ -52,7 +53,7 @@ struct TrailPose
  * where `mapFades` (the colour map maps opacity) or the span is not positive.
  */
 void chooseTrailPoses(const std::vector<bp::GpuEngine::DrawInputs::TrailSlot>& slots, double time,
-  double fadeSpan, bool mapFades, std::vector<TrailPose>& poses);
+  double fadeSpan, bool mapFades, std::vector<TrailPoseDraw>& poses);
 
 /// The span over which `piece`'s trail poses fade (its "TrailFadeSpan"
 /// field value); 0 when it has no trail poses to fade.

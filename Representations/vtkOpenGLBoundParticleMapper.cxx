@@ -111,7 +111,7 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   /// RGBA32I); made once per configuration with trails.
   bpvtk::IntegerTable CornerTable{ 4 };
   /// The trail poses of this frame's draw (chooseTrailPoses).
-  std::vector<bpvtk::TrailPose> TrailPoses;
+  std::vector<bpvtk::TrailPoseDraw> TrailPoses;
 
   /// The engine's and the tables' textures on units of their own while drawing.
   bpvtk::DrawSamplers Samplers;
@@ -333,7 +333,7 @@ void vtkOpenGLBoundParticleMapper::ConfigureDraw(const bp::EngineCall& configure
   std::vector<int> corners =
     I.TrailLength > 0 ? bpvtk::cornerTable(shape, cornerWidth) : std::vector<int>();
   I.CornerTable.set(std::move(corners), cornerWidth);
-  this->SetInputData(bpvtk::templateMesh(shape, p.elementSize, !I.LinkTable.empty()));
+  this->SetInputData(bpvtk::templatePolyData(shape, p.elementSize, !I.LinkTable.empty()));
 }
 
 void vtkOpenGLBoundParticleMapper::Fail(const std::string& message)
@@ -562,7 +562,7 @@ void vtkOpenGLBoundParticleMapper::DrawElementCells(
   // Each trail pose shown: the same cells again, positions from the slot's
   // copy of the particle texture (the engine's ring, nothing uploaded);
   // elements of another generation there are clipped.
-  for (const bpvtk::TrailPose& t : I.TrailPoses)
+  for (const bpvtk::TrailPoseDraw& t : I.TrailPoses)
   {
     I.Samplers.bind(window, bpvtk::DrawSamplers::TrailPositions, t.positions);
     I.Samplers.bind(window, bpvtk::DrawSamplers::TrailElements, t.elements);
