@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SuperSet.h"
+#include "SuperSetLinks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,21 +42,17 @@ const char* linkingName(Linking linking)
 std::size_t LinkTable::linkCount() const
 {
   std::size_t count = 0;
-  for (std::size_t k = 0; k < this->neighbours.size(); k += LinkDirections)
-  {
-    count += (this->neighbours[k] >= 0 ? 1 : 0) + (this->neighbours[k + 2] >= 0 ? 1 : 0);
-  }
+  forEachLink(*this, [&count](std::size_t, std::size_t) { ++count; });
   return count;
 }
 
-LinkTable makeLinkTable(Linking linking, std::size_t elements, int width,
-  const std::array<float, 3>& lo, const std::array<float, 3>& hi)
+namespace
 {
-  LinkTable table;
-  if (linking == Linking::None || elements == 0)
-  {
-    return table;
-  }
+/// The lattice width W for `elements` sites: one row for chains and rings,
+/// `width` (clamped to the elements) or the smallest W with W * W >= elements
+/// for sheets, tubes and tori.
+std::size_t latticeWidth(Linking linking, std::size_t elements, int width)
+{
   const std::size_t N = elements;
   std::size_t W = N;
   if (linking == Linking::Sheet || linking == Linking::Tube || linking == Linking::Torus)
@@ -68,14 +65,15 @@ LinkTable makeLinkTable(Linking linking, std::size_t elements, int width,
     }
     W = std::max<std::size_t>(W, 1);
   }
-  const std::size_t H = (N + W - 1) / W;
-  table.width = int(W);
-  table.height = int(H);
-  // Wrapping a row of one or two sites would link the same pair twice.
-  const bool wrapU =
-    (linking == Linking::Ring || linking == Linking::Tube || linking == Linking::Torus) && W >= 3;
-  const bool wrapV = linking == Linking::Torus && H >= 3;
+  return W;
+}
 
+/// Each element's lattice site in the emitter box [lo, hi], into table.sites
+/// (table.width and table.height set).
+void placeSites(LinkTable& table, Linking linking, std::size_t N, const std::array<float, 3>& lo,
+  const std::array<float, 3>& hi)
+{
+  const std::size_t W = std::size_t(table.width), H = std::size_t(table.height);
   // The box's axes by extent, longest first (ties in axis order).
   std::array<int, 3> axis = { 0, 1, 2 };
   std::stable_sort(axis.begin(), axis.end(),
@@ -140,7 +138,14 @@ LinkTable makeLinkTable(Linking linking, std::size_t elements, int width,
       table.sites[3 * e + k] = float(s[k]);
     }
   }
+}
 
+/// Each element's neighbours along +u, -u, +v and -v and the links' rest
+/// lengths (the sites' distances), from the sites; rows wrap with `wrapU`,
+/// columns with `wrapV`.
+void linkNeighbours(LinkTable& table, std::size_t N, bool wrapU, bool wrapV)
+{
+  const std::size_t W = std::size_t(table.width), H = std::size_t(table.height);
   table.neighbours.assign(LinkDirections * N, -1);
   table.rest.assign(LinkDirections * N, 0.0f);
   const auto link = [&](std::size_t e, std::size_t f, int forward)
@@ -174,6 +179,28 @@ LinkTable makeLinkTable(Linking linking, std::size_t elements, int width,
       link(e, u, 2);
     }
   }
+}
+} // namespace
+
+LinkTable makeLinkTable(Linking linking, std::size_t elements, int width,
+  const std::array<float, 3>& lo, const std::array<float, 3>& hi)
+{
+  LinkTable table;
+  if (linking == Linking::None || elements == 0)
+  {
+    return table;
+  }
+  const std::size_t N = elements;
+  const std::size_t W = latticeWidth(linking, N, width);
+  const std::size_t H = (N + W - 1) / W;
+  table.width = int(W);
+  table.height = int(H);
+  // Wrapping a row of one or two sites would link the same pair twice.
+  const bool wrapU =
+    (linking == Linking::Ring || linking == Linking::Tube || linking == Linking::Torus) && W >= 3;
+  const bool wrapV = linking == Linking::Torus && H >= 3;
+  placeSites(table, linking, N, lo, hi);
+  linkNeighbours(table, N, wrapU, wrapV);
   return table;
 }
 

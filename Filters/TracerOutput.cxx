@@ -16,6 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 
+#include "SuperSetLinks.h"
 #include "ValueRanges.h"
 
 #include <algorithm>
@@ -37,19 +38,15 @@ vtkSmartPointer<vtkCellArray> buildLinkCells(const bp::LinkTable& links, std::si
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(vtkIdType(2 * links.linkCount() * n));
   vtkIdType* out = connectivity->GetPointer(0);
-  const std::size_t elements = links.sites.size() / 3;
-  for (std::size_t e = 0; e < elements; ++e)
-  {
-    for (int d : { 0, 2 }) // +u and +v: each link once
+  bp::forEachLink(links,
+    [&out, n](std::size_t e, std::size_t f)
     {
-      const std::int32_t f = links.neighbours[bp::LinkDirections * e + d];
-      for (std::size_t i = 0; f >= 0 && i < n; ++i)
+      for (std::size_t i = 0; i < n; ++i)
       {
         *out++ = vtkIdType(e * n + i);
-        *out++ = vtkIdType(std::size_t(f) * n + i);
+        *out++ = vtkIdType(f * n + i);
       }
-    }
-  }
+    });
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(2, connectivity);
   return cells;

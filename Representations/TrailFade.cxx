@@ -25,6 +25,21 @@ vtkDataArray* ageOf(vtkPolyData* piece)
 }
 } // namespace
 
+void chooseTrailPoses(const std::vector<bp::GpuEngine::DrawInputs::TrailSlot>& slots, double time,
+  double fadeSpan, bool mapFades, std::vector<TrailPoseDraw>& poses)
+{
+  poses.clear();
+  for (const auto& slot : slots)
+  {
+    if (slot.time < time && slot.positions && slot.elements)
+    {
+      const double age = time - slot.time;
+      const double fade = mapFades || !(fadeSpan > 0.0) ? 1.0 : trailFade(age, fadeSpan);
+      poses.push_back({ slot.positions, slot.elements, float(age), float(fade) });
+    }
+  }
+}
+
 double trailFadeSpan(vtkPolyData* piece)
 {
   vtkDataArray* age = ageOf(piece);
@@ -81,7 +96,7 @@ vtkSmartPointer<vtkUnsignedCharArray> fadedTrailColors(
   unsigned char* rgba = colors->GetPointer(0);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double fade = std::min(std::max(1.0 - age->GetComponent(i, 0) / span, 0.0), 1.0);
+    const double fade = trailFade(age->GetComponent(i, 0), span);
     rgba[4 * i + 3] = static_cast<unsigned char>(std::lround(rgba[4 * i + 3] * fade));
   }
   return colors;

@@ -9,15 +9,20 @@
  * output gets the CPU result. When nothing else in its view draws from the
  * data, it takes the request back only when the view renders: its own
  * decorations (the axes grid, the selection), which update in between, then
- * get the GPU output's bounds and ranges instead of a CPU step per frame. With the tracer's Engine
- * set to GPU the input then carries no particles, only the queue's id, and the
- * vtkOpenGLBoundParticleMapper runs the recorded work and draws the GPU
- * state; otherwise (Engine CPU, or after a GPU failure) it draws the CPU
- * polydata with a plain polydata mapper, coloured the same way. Once the
- * tracer has answered a request with its CPU result (Engine CPU, or
- * Automatic on a software renderer), the display asks as every other
- * consumer does until the pipeline or the renderer changes, so that the
- * tracer runs once a frame and not once for it and again for its decorations.
+ * get the GPU output's bounds and ranges instead of a CPU step per frame.
+ *
+ * With the tracer's Engine set to GPU the input then carries no particles:
+ * two points spanning the field, each array with its expected range over
+ * them (for the camera, the axes grid and the colour map), and the queue's
+ * id. The vtkOpenGLBoundParticleMapper runs the recorded work and draws the
+ * GPU state. Otherwise (Engine CPU, or after a GPU failure) the display
+ * draws the CPU polydata with a polydata mapper that keeps its index buffers
+ * while the cells stay (vtkOpenGLKeptCellsMapper), coloured the same way;
+ * trails that fade get colours made here (TrailFade.h). Once the tracer has
+ * answered a request with its CPU result (Engine CPU, or Automatic on a
+ * software renderer), the display asks as every other consumer does until
+ * the pipeline or the renderer changes, so that the tracer runs once a frame
+ * and not once for it and again for its decorations.
  *
  * The display properties (colour, opacity, lighting, the colour array and its
  * lookup table, transforms) are the Surface representation's, shared through
@@ -112,6 +117,8 @@ private:
   vtkBoundParticleRepresentation(const vtkBoundParticleRepresentation&) = delete;
   void operator=(const vtkBoundParticleRepresentation&) = delete;
 
+  /// The colour array and lookup table to both mappers; a warning when the
+  /// GPU draw cannot colour by the array.
   void UpdateColoring();
   /// Whether the CPU output `piece` has trails that this display fades
   /// itself (no colour map mapping opacity); then makes their colours.

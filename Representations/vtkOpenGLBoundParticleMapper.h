@@ -48,10 +48,16 @@
  * A replay from the start of a long trace runs in one render and can take
  * seconds: while it runs, the mapper reports its progress (0 to 1 over the
  * calls, every 0.1 s once it has lasted that long) through its container
- * algorithm, the display, whose progress ParaView shows, and stops between two
- * steps when the container (or the mapper) is asked to abort. The engine then
- * stands on a step boundary, which the work queue's cursor takes, so the next
- * update goes on from there (bp::ReplayProgress, bp::WorkQueue::stoppedAt).
+ * algorithm, the display, whose progress ParaView shows (before ParaView 6.1,
+ * whose GUI processes its events on every report and hung inside the
+ * render), and stops between two steps when the container (or the mapper) is
+ * asked to abort. The engine then stands on a step boundary, which the work
+ * queue's cursor takes, so the next update goes on from there
+ * (bp::ReplayProgress, bp::WorkQueue::stoppedAt).
+ *
+ * The mapper's parts, one role a file, are listed at the top of its .cxx.
+ *
+ * @sa vtkBoundParticleRepresentation, bp::GpuEngine, bp::WorkQueue
  */
 #ifndef vtkOpenGLBoundParticleMapper_h
 #define vtkOpenGLBoundParticleMapper_h
@@ -101,11 +107,12 @@ public:
   double* GetBounds() override;
 
   /**
-   * Whether the colour map makes the elements translucent (ParaView's opacity
-   * mapping), so that the actor is drawn in the translucent pass with depth
-   * peeling. VTK decides from the input's scalars, and this mapper's input,
-   * the template, has none: the decision is the lookup table's, as VTK makes
-   * it for the CPU output's scalars.
+   * Whether the elements are drawn translucent, so that the actor is drawn
+   * in the translucent pass with depth peeling: with trails (they fade), and
+   * where the colour map makes them so (ParaView's opacity mapping). VTK
+   * decides from the input's scalars, and this mapper's input, the template,
+   * has none: the decision is the lookup table's, as VTK makes it for the
+   * CPU output's scalars.
    */
   bool HasTranslucentPolygonalGeometry() override;
 
@@ -117,8 +124,8 @@ public:
    */
   void SetExpectedTrailSpan(double span);
 
-  /// Runs the queued engine work (reporting progress and taking an abort
-  /// request while a long one runs), then draws.
+  /// Runs the queued engine work (reporting progress where ParaView allows,
+  /// and taking an abort request, while a long one runs), then draws.
   void Render(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -151,7 +158,23 @@ private:
   /// Applies the queue's calls to the engine in `window`'s current context,
   /// with progress and abort; a failure makes the display draw the CPU result.
   void RunCalls(const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window);
+  /// After a configure that succeeded: the template as this mapper's input,
+  /// and the draw's tables for the new system (DrawTables.h).
+  void ConfigureDraw(const bp::EngineCall& configure);
 #endif
+  /// A failure of the queued work: an error, the last error, and the queue's
+  /// failure, so that the display draws the CPU result from the next update on.
+  void Fail(const std::string& message);
+  /// Before the draw: the next field time step's share of uploading, and the
+  /// field samples a colouring by Velocity or Vorticity reads.
+  void PrepareEngineTextures();
+  /// The link and corner tables, uploaded once per configuration.
+  void UploadTables(vtkOpenGLRenderWindow* window);
+  /// The cells of VTK primitive `primitive`: the elements and their trail
+  /// poses, and on the line primitive the super set's links.
+  void DrawPrimitive(int primitive, vtkRenderer* ren, vtkActor* act);
+  /// The element draw, once for the elements and once per trail pose.
+  void DrawElementCells(vtkOpenGLHelper& helper, unsigned int mode, vtkOpenGLRenderWindow* window);
 
   vtkOpenGLBoundParticleMapper(const vtkOpenGLBoundParticleMapper&) = delete;
   void operator=(const vtkOpenGLBoundParticleMapper&) = delete;
