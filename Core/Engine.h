@@ -36,9 +36,10 @@
  * The parameters are in EngineParameters.h; the engine's definitions are in
  * one file per role: EngineValidate.cpp (the parameter checks),
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
- * EngineStep.cpp (steps 2-6 and the step loop), EngineLinked.cpp (a super
- * set's step), EngineVisitOrder.cpp, EngineMigration.cpp (distributed runs)
- * and Engine.cpp (trails, normals).
+ * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineLinked.cpp
+ * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
+ * (distributed runs) and Engine.cpp (trails, step 4's normals, and advance()
+ * along the step schedule).
  */
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
@@ -210,9 +211,11 @@ private:
    * elementCount() elements, `width` values each (element e of block b at
    * (b * E + e) * width), all `fill` when sized. The one list of what an
    * element is made of: configure() sizes by it, and migration packs,
-   * unpacks and counts by it (EngineMigration.cpp), so a new per-element
-   * array is added here and nowhere else. Ids comes first: a migration
-   * record starts with the element's id.
+   * unpacks and counts by it (EngineMigration.cpp), so a new array is sized
+   * and migrated by its line here alone (a type other than uint32, uint8 or
+   * float needs a toWord() overload there); what it holds is still written
+   * where an element is placed (place()) and stepped (EngineStep.cpp). Ids
+   * comes first: a migration record starts with the element's id.
    */
   template <class Self, class F>
   static void forEachElementArray(Self& self, F&& f)

@@ -22,7 +22,8 @@
  * as a fit per element and a move per particle.
  *
  * Inside, by role: GpuSystem.h (what configure() makes, a step's passes),
- * GpuPasses.h (compiling, running and reading back passes), GpuTemplate.h
+ * GpuPasses.h (running and reading back passes), ShaderSource.h (a pass's
+ * GLSL put together, compiled, its errors named by file and line), GpuTemplate.h
  * (the template's tables), GpuState.h (the state textures), GpuFieldCache.h
  * (resident time steps), all GL objects held by the owners of GlObjects.h.
  * GpuStepper.h puts the engine behind the Stepper verbs (Core/Stepper.h).

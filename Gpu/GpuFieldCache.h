@@ -13,8 +13,9 @@
  * by an address that could be freed and reused.
  *
  * A rectilinear axis is sampled through its coordinate table and a lookup of
- * equal bins, each naming the cell its start falls in (bp_common.glsl): the
- * GPU finds a cell in two fetches where the CPU engine searches.
+ * equal bins, each naming the cell its start falls in (bpLocate in
+ * bp_common.glsl): the GPU finds a cell with one bin fetch and at most three
+ * compares where the CPU engine searches.
  *
  * Every call needs the GL context current; the textures are deleted as
  * GlObjects.h says.

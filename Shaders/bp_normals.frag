@@ -1,5 +1,5 @@
 // Step 4, per particle: the normalised sum of the unit normals of the
-// particle's triangles, gathered in triangle order (Engine::normalsOf,
+// particle's triangles, gathered in triangle order (bp::elementNormals,
 // bp_shared.glsl).
 uniform sampler2D bpState;
 uniform sampler2D bpParticleInfo;

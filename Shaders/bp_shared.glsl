@@ -22,7 +22,7 @@ ivec2 bpParticleTexel(int e, int i)
   return block * bpElementGrid + bpElementTexel(e);
 }
 
-// ---- Normals (bp::elementNormals, Engine::normalsOf) -------------------------
+// ---- Normals (bp::elementNormals in Core/ElementNormals.cpp) ----------------
 // A particle's normal is the normalised sum of the unit normals of the
 // triangles it is a corner of, added in triangle order; (0, 0, 1) where the
 // sum is zero. The cross product and lengths are written out as the CPU
