@@ -130,7 +130,9 @@ public:
 
   /// Element-major: particle i of element e is at 3 * (e * n + i).
   const std::vector<float>& positions() const { return this->Positions; }
-  /// As of the last updateNormals() (empty before the first).
+  /// As of the last updateNormals(); empty until it is called, and again
+  /// after configure(), exchange() or an assignment (CpuStepper::restore()):
+  /// they are scratch, computed on demand, never state.
   const std::vector<float>& normals() const { return this->Scratch.normals; }
   const std::vector<float>& forces() const { return this->Forces; }
   const std::vector<float>& lifetimes() const { return this->Lifetimes; }

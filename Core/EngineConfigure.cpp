@@ -2,6 +2,7 @@
 // Engine::configure: the spring tables each restoration method walks, built
 // once from the template, and the per-element state sized for the system;
 // with the template-derived constants stableRelaxation and restMomentInverse.
+#include "EigenRows.h"
 #include "Engine.h"
 #include "LargeVector.h"
 
@@ -53,15 +54,7 @@ std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size)
   }
   const Eigen::Matrix3d m =
     eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
-  std::array<float, 9> rows;
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      rows[3 * i + j] = float(m(i, j));
-    }
-  }
-  return rows;
+  return toRowMajor(m);
 }
 
 std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)

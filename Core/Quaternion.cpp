@@ -2,6 +2,7 @@
 // Rotations built from angles, uniforms, matrices and the flow: how the engine
 // turns an element when it places it (Quaternion.h).
 #include "Quaternion.h"
+#include "EigenRows.h"
 
 #include <Eigen/Geometry>
 
@@ -23,15 +24,7 @@ std::array<float, 9> rotationFromDegrees(double x, double y, double z)
     Eigen::AngleAxisd(y * d, Eigen::Vector3d::UnitY()) *
     Eigen::AngleAxisd(x * d, Eigen::Vector3d::UnitX()))
                               .toRotationMatrix();
-  std::array<float, 9> rows;
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      rows[3 * i + j] = float(r(i, j));
-    }
-  }
-  return rows;
+  return toRowMajor(r);
 }
 
 std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3)
@@ -101,14 +94,6 @@ std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
     r[3] = r[3] * n;
   }
   return multiplyQuaternions(r, first);
-}
-
-std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3)
-{
-  const std::array<float, 4> q = quaternionFromUniforms(u1, u2, u3);
-  std::array<float, 9> R;
-  quaternionToMatrix(q.data(), R.data());
-  return R;
 }
 
 std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R)

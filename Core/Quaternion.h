@@ -68,9 +68,8 @@ inline void quaternionToMatrix(const float q[4], float R[9])
 std::array<float, 9> rotationFromDegrees(double x, double y, double z);
 
 /// Shoemake's uniform random rotation from three uniforms in [0, 1), as the
-/// unit quaternion (x, y, z, w) and as a row-major matrix.
+/// unit quaternion (x, y, z, w).
 std::array<float, 4> quaternionFromUniforms(float u1, float u2, float u3);
-std::array<float, 9> rotationFromUniforms(float u1, float u2, float u3);
 
 /// The unit quaternion (x, y, z, w) of a row-major rotation matrix.
 std::array<float, 4> quaternionFromRotation(const std::array<float, 9>& R);
