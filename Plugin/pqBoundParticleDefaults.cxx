@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleDefaults.h"
 
+#include "pqBoundParticleIsTracer.h"
 #include "pqBoundParticlePlayUpdates.h"
 #include "pqBoundParticleTickGuard.h"
 
@@ -27,12 +28,6 @@
 
 namespace
 {
-/// A Bound Particle Tracer's proxy.
-bool isTracer(vtkSMProxy* proxy)
-{
-  return proxy && proxy->GetXMLName() && !std::strcmp(proxy->GetXMLName(), "BoundParticleTracer");
-}
-
 /// No array named in Vectors: its default found no input arrays.
 bool lacksVectors(vtkSMProxy* tracer)
 {
@@ -137,7 +132,7 @@ void pqBoundParticleDefaults::shown(pqDataRepresentation* representation)
   pqView* view = representation ? representation->getView() : nullptr;
   // Only the Apply that first shows a tracer made in the GUI: a loaded state,
   // a Python script and a later Show keep the input's display as they set it.
-  if (!tracer || !view || !isTracer(tracer->getProxy()) ||
+  if (!tracer || !view || !pqBoundParticleIsTracer(tracer->getProxy()) ||
     tracer->modifiedState() != pqProxy::UNINITIALIZED)
   {
     return;
@@ -167,7 +162,7 @@ void pqBoundParticleDefaults::shown(pqDataRepresentation* representation)
 void pqBoundParticleDefaults::complete(pqPipelineSource* source)
 {
   vtkSMProxy* tracer = source ? source->getProxy() : nullptr;
-  if (!isTracer(tracer))
+  if (!pqBoundParticleIsTracer(tracer))
   {
     return;
   }

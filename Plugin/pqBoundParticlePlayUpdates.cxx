@@ -2,13 +2,12 @@
 #include "pqBoundParticlePlayUpdates.h"
 
 #include "pqBoundParticleActiveScene.h"
+#include "pqBoundParticleIsTracer.h"
 
-#include "pqAnimationManager.h"
 #include "pqAnimationScene.h"
 #include "pqApplicationCore.h"
 #include "pqDataRepresentation.h"
 #include "pqOutputPort.h"
-#include "pqPVApplicationCore.h"
 #include "pqPipelineFilter.h"
 #include "pqPipelineSource.h"
 #include "pqServerManagerModel.h"
@@ -17,7 +16,6 @@
 #include "vtkSMProxy.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace
 {
@@ -96,8 +94,7 @@ void pqBoundParticlePlayUpdates::startPlaying()
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
   {
-    vtkSMProxy* proxy = source->getProxy();
-    if (proxy && proxy->GetXMLName() && !std::strcmp(proxy->GetXMLName(), "BoundParticleTracer"))
+    if (pqBoundParticleIsTracer(source->getProxy()))
     {
       // Its input too: the GUI answers an input's new data as well (the
       // tracer's Information panel was gathered again for it every frame).

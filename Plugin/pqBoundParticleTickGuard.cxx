@@ -3,9 +3,7 @@
 
 #include "pqBoundParticleActiveScene.h"
 
-#include "pqAnimationManager.h"
 #include "pqAnimationScene.h"
-#include "pqPVApplicationCore.h"
 #include "vtkCommand.h"
 #include "vtkObject.h"
 #include "vtkSMProxy.h"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleTrailsDisplay.h"
 
+#include "pqBoundParticleIsTracer.h"
+
 #include <QTimer>
 
 #include "pqApplicationCore.h"
@@ -13,7 +15,6 @@
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
 
-#include <cstring>
 #include <string>
 
 pqBoundParticleTrailsDisplay::pqBoundParticleTrailsDisplay(QObject* parent)
@@ -32,8 +33,7 @@ void pqBoundParticleTrailsDisplay::onStartup()
 
 void pqBoundParticleTrailsDisplay::watch(pqPipelineSource* source)
 {
-  vtkSMProxy* proxy = source ? source->getProxy() : nullptr;
-  if (!proxy || !proxy->GetXMLName() || std::strcmp(proxy->GetXMLName(), "BoundParticleTracer"))
+  if (!source || !pqBoundParticleIsTracer(source->getProxy()))
   {
     return;
   }

@@ -257,18 +257,19 @@ bp::ReplayProgress::Hooks replayHooks(
   vtkAlgorithm* owner, vtkOpenGLRenderWindow* window, std::function<bool()> stop)
 {
   bp::ReplayProgress::Hooks hooks;
+  // Finished before an abort is asked too, so a stop comes when the work does.
   hooks.settle = [] { glFinish(); };
-  hooks.report = [owner](double share)
+  hooks.stop = std::move(stop);
+  if (ReportsReplayProgress)
   {
-    if (ReportsReplayProgress)
+    hooks.report = [owner](double share)
     {
       owner->SetProgressText("Bound Particles: GPU engine");
       owner->UpdateProgress(share);
-    }
-  };
-  hooks.stop = std::move(stop);
-  // Whatever listens to the progress may have drawn in another window.
-  hooks.resume = [window] { window->MakeCurrent(); };
+    };
+    // Whatever listens to the progress may have drawn in another window.
+    hooks.resume = [window] { window->MakeCurrent(); };
+  }
   return hooks;
 }
 } // namespace
@@ -292,7 +293,7 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   bpvtk::QueueReplay::Running running(I.Replay);
   I.Replay.run(calls, progress, listener);
   progress.finish();
-  if (progress.reports() > 0)
+  if (ReportsReplayProgress && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
   }
