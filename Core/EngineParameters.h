@@ -9,6 +9,7 @@
 #ifndef BoundParticles_EngineParameters_h
 #define BoundParticles_EngineParameters_h
 
+#include "ReleaseLattice.h"
 #include "SuperSet.h"
 
 #include <array>
@@ -42,6 +43,20 @@ enum class Orientation
   Fixed = 0, ///< by Parameters::frame (Element Rotation)
   Random,    ///< a uniform random rotation (about the plane's axis on a flat field)
   AlongFlow  ///< the frame's x axis turned onto the flow at the release centre
+};
+
+/// Where releases land in the emitter box (Engine::releaseCenter).
+enum class ReleasePattern
+{
+  Random = 0, ///< uniform draws (with Release Weights: in proportion to the weights)
+  Lattice     ///< element e at point e of Parameters::lattice, release after release
+};
+
+/// What holds an element in place (Engine::anchor).
+enum class Anchor
+{
+  None = 0, ///< free: advected with the flow
+  Centre    ///< its centre kept where it was released; it still turns and deforms
 };
 
 enum class ResetWhen
@@ -115,6 +130,11 @@ struct Parameters
   int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
   float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  ReleasePattern releasePattern = ReleasePattern::Random;
+  /// The lattice of ReleasePattern::Lattice, over the emitter box
+  /// (resolveSettings makes numberOfElements its size()).
+  ReleaseLattice lattice;
+  Anchor anchor = Anchor::None;
   /// Release centres, 3 floats per point (at most MaxSeedPoints): release r
   /// = generation * numberOfElements + id of an element is at point r modulo
   /// their count, so releases take the points in order, cycling. Empty: the
