@@ -85,6 +85,10 @@ float stableRelaxation(const ElementTemplate& shape);
  */
 std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size);
 
+/// The lifetime an element drawing as `drawElement` is given when its
+/// `generation` is placed (Engine::place; the GPU engine's bpLifetimeOf).
+float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation);
+
 class Engine
 {
 public:
@@ -136,6 +140,11 @@ public:
   const std::vector<float>& normals() const { return this->Scratch.normals; }
   const std::vector<float>& forces() const { return this->Forces; }
   const std::vector<float>& lifetimes() const { return this->Lifetimes; }
+  /// The lifetime element e was placed with: its age is this less lifetimes()[e].
+  float drawnLifetime(std::size_t e) const
+  {
+    return lifetimeDraw(this->Params, this->drawElement(e), this->Generations[e]);
+  }
   const std::vector<std::uint32_t>& generations() const { return this->Generations; }
   /// The centre each element was last placed at: 3 floats per element.
   const std::vector<float>& initialCenters() const { return this->InitialCenters; }
@@ -270,6 +279,9 @@ private:
     const VectorField* field;
     float weight;
   };
+  /// Whose draws element e takes (orientation, lifetime; a super set's
+  /// elements all take element 0's).
+  std::uint32_t drawElement(std::size_t e) const { return this->Links.empty() ? this->Ids[e] : 0u; }
   /// Places element e's next generation, hidden unless `releasing`.
   void place(std::size_t e, bool releasing, const ReleaseFlow& flow);
   /// Turns element e, placed at its initial centre, to `q`: its orientation,

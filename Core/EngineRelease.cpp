@@ -12,17 +12,23 @@
 namespace bp
 {
 
+float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation)
+{
+  return p.lifetimeMin +
+    uniformDraw(p.seed, drawElement, generation, 6) * (p.lifetimeMax - p.lifetimeMin);
+}
+
 void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
 {
   const Parameters& P = this->Params;
   // A super set is released as one: every element draws as element 0 does,
   // and sits at its lattice site.
   const bool linked = !this->Links.empty();
-  const std::uint32_t element = linked ? 0u : this->Ids[e];
+  const std::uint32_t element = this->drawElement(e);
   const std::uint32_t generation = this->Generations[e];
-  // Draws 3-6 (the centre's are releaseCenter()'s).
-  float u[7];
-  for (std::uint32_t d = 3; d < 7; ++d)
+  // Draws 3-5 (the centre's are releaseCenter()'s, the lifetime's lifetimeDraw()'s).
+  float u[6];
+  for (std::uint32_t d = 3; d < 6; ++d)
   {
     u[d] = uniformDraw(P.seed, element, generation, d);
   }
@@ -43,7 +49,7 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
   const std::size_t n = this->Shape.particleCount();
   std::fill_n(this->Forces.data() + e * n, n, 0.0f);
-  this->Lifetimes[e] = P.lifetimeMin + u[6] * (P.lifetimeMax - P.lifetimeMin);
+  this->Lifetimes[e] = lifetimeDraw(P, element, generation);
   this->ResetFlags[e] = releasing ? 0 : ReleaseHidden;
   // A super set keeps its lattice's one orientation, as it keeps one draw.
   if (P.orientation == Orientation::AlongFlow && !linked)
