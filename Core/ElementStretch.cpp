@@ -106,4 +106,15 @@ float elementFtle(float largestStretch, double age)
   return std::isfinite(ftle) ? float(ftle) : 0.0f;
 }
 
+std::array<float, 3> elementDeformation(
+  const StretchFit& fit, const float* positions, double age, bool hidden)
+{
+  if (hidden)
+  {
+    return { 1.0f, 1.0f, 0.0f };
+  }
+  const std::array<float, 2> s = fit.stretch(positions);
+  return { s[0], s[1], elementFtle(s[0], age) };
+}
+
 } // namespace bp

@@ -55,6 +55,12 @@ private:
 /// not finite (an element just placed has no exponent yet).
 float elementFtle(float largestStretch, double age);
 
+/// What the output shows of one element: its largest and smallest stretch
+/// and its FTLE over `age`; (1, 1, 0) for an element not yet released
+/// (`hidden`), which shows nothing.
+std::array<float, 3> elementDeformation(
+  const StretchFit& fit, const float* positions, double age, bool hidden);
+
 } // namespace bp
 
 #endif

@@ -68,6 +68,11 @@ const std::vector<OutputArray>& outputArrays()
     row(Id::SpinVorticityRatio, "SpinVorticityRatio", 1, V::Float, Role::Plain, Src::ElementState,
       C::SpinRatio, R::SpinRatio, OffByDefault | NeedsPoses),
     row(Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, R::TrailAge, NoFlags),
+    // Deformation: a fit per element per output (Core/ElementStretch.h).
+    row(Id::ElementStretch, "ElementStretch", 2, V::Float, Role::Plain, Src::ElementState, C::Solid,
+      R::Stretch, OffByDefault),
+    row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Solid,
+      R::Ftle, OffByDefault),
   };
   return table;
 }
@@ -188,6 +193,10 @@ std::array<double, 2> expectedRange(const OutputArray& array, const RangeFacts& 
       return { -double(MaxSpinVorticityRatio), double(MaxSpinVorticityRatio) };
     case RangeSource::TrailAge:
       return { 0.0, f.trailSpan };
+    case RangeSource::Stretch:
+      return { 0.0, 2.0 };
+    case RangeSource::Ftle:
+      return { 0.0, f.maxVorticity };
   }
   return { 0.0, 1.0 };
 }

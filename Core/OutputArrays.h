@@ -49,6 +49,8 @@ enum class OutputArrayId
   ElementSpin,
   SpinVorticityRatio,
   Age,
+  ElementStretch,
+  ElementFTLE,
   Count ///< not an array: how many there are
 };
 
@@ -114,7 +116,9 @@ enum class RangeSource
   Particles,      ///< [0, template particles - 1]
   HalfVorticity,  ///< [-max |curl v| / 2, max |curl v| / 2]: a fluid parcel's spin
   SpinRatio,      ///< [-MaxSpinVorticityRatio, MaxSpinVorticityRatio]
-  TrailAge        ///< [0, trail length * trail interval]
+  TrailAge,       ///< [0, trail length * trail interval]
+  Stretch,        ///< [0, 2]: about 1, unstretched (a colour map's span, not a bound)
+  Ftle            ///< [0, max |curl v|]: the flow's rate (a colour map's span, not a bound)
 };
 
 struct OutputArray

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TracerOutputArrays.h"
 
+#include "ElementStretch.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -127,6 +129,33 @@ void perElementTuple(float* out, std::size_t n, std::size_t begin, std::size_t e
   }
 }
 
+/// ElementStretch (2 components) or ElementFTLE of the elements of
+/// particles [begin, end): one fit of each element against its template.
+void writeDeformation(
+  bool stretch, float* out, const bp::Engine& engine, std::size_t begin, std::size_t end)
+{
+  const std::size_t n = engine.particlesPerElement();
+  const bp::StretchFit fit(engine.shape().rest, engine.parameters().elementSize);
+  for (std::size_t e = begin / n; e < end / n; ++e)
+  {
+    const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
+    const std::array<float, 3> d = bp::elementDeformation(
+      fit, engine.positions().data() + 3 * e * n, age, engine.resetFlags()[e] & bp::ReleaseHidden);
+    for (std::size_t i = e * n; i < (e + 1) * n; ++i)
+    {
+      if (stretch)
+      {
+        out[2 * i] = d[0];
+        out[2 * i + 1] = d[1];
+      }
+      else
+      {
+        out[i] = d[2];
+      }
+    }
+  }
+}
+
 void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
   std::size_t begin, std::size_t end)
 {
@@ -166,6 +195,11 @@ void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const Fill
       break;
     case bp::OutputArrayId::SpinVorticityRatio:
       perElementTuple(floats(out), n, begin, end, engine.spins().data() + 3, 4, 1);
+      break;
+    case bp::OutputArrayId::ElementStretch:
+    case bp::OutputArrayId::ElementFTLE:
+      writeDeformation(
+        row.id == bp::OutputArrayId::ElementStretch, floats(out), engine, begin, end);
       break;
     default:
       break;

@@ -30,13 +30,17 @@ TEST(OutputArrays, ColorSourcesBecomeShaderDefinitions)
   EXPECT_NE(defs.find("#define BP_COLOR_SOLID 0\n"), std::string::npos);
   EXPECT_NE(defs.find("#define BP_COLOR_FORCE 1\n"), std::string::npos);
   EXPECT_NE(defs.find("#define BP_COLOR_PARTICLE_INDEX 8\n"), std::string::npos);
-  // Speed is the velocity's magnitude; only Normals cannot be coloured by on the GPU.
+  // Speed is the velocity's magnitude; only Normals and the deformation
+  // arrays (a fit per element, which the draw shader does not make) cannot be
+  // coloured by on the GPU.
   const bp::OutputArray* speed = bp::findOutputArray("Speed");
   EXPECT_EQ(speed->color, bp::ColorSource::Velocity);
   EXPECT_TRUE(speed->colorsMagnitude);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    EXPECT_EQ(row.color == bp::ColorSource::Solid, row.id == bp::OutputArrayId::Normals)
+    EXPECT_EQ(row.color == bp::ColorSource::Solid,
+      row.id == bp::OutputArrayId::Normals || row.id == bp::OutputArrayId::ElementStretch ||
+        row.id == bp::OutputArrayId::ElementFTLE)
       << row.name;
   }
 }
@@ -64,4 +68,8 @@ TEST(OutputArrays, ExpectedRangesFollowTheParameters)
   EXPECT_DOUBLE_EQ(range("Force")[1], 0.1 * field.maxSpeed());
   // Solid rotation of unit rate about z: |curl v| = 2 everywhere.
   EXPECT_NEAR(range("Vorticity")[1], 2.0, 1e-3);
+  EXPECT_DOUBLE_EQ(range("ElementStretch")[1], 2.0);
+  EXPECT_NEAR(range("ElementFTLE")[1], 2.0, 1e-3);
+  EXPECT_FALSE(bp::findOutputArray("ElementFTLE")->onByDefault);
+  EXPECT_FALSE(bp::findOutputArray("ElementStretch")->needsPoses);
 }
