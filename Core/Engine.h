@@ -86,7 +86,8 @@ float stableRelaxation(const ElementTemplate& shape);
 std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size);
 
 /// The lifetime an element drawing as `drawElement` is given when its
-/// `generation` is placed (Engine::place; the GPU engine's bpLifetimeOf).
+/// `generation` is placed (Engine::place; the GPU engine's bpLifetimeOf);
+/// with Release Pattern Lattice every element's is element 0's.
 float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation);
 
 class Engine

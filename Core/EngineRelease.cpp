@@ -14,8 +14,10 @@ namespace bp
 
 float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation)
 {
+  // A lattice's generation is released together: its lifetime is element 0's.
+  const std::uint32_t element = p.releasePattern == ReleasePattern::Lattice ? 0u : drawElement;
   return p.lifetimeMin +
-    uniformDraw(p.seed, drawElement, generation, 6) * (p.lifetimeMax - p.lifetimeMin);
+    uniformDraw(p.seed, element, generation, 6) * (p.lifetimeMax - p.lifetimeMin);
 }
 
 void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)

@@ -4,6 +4,7 @@
 #include "ElementTemplate.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
+#include "TracerFtleMap.h"
 #include "TracerTimeScale.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
@@ -11,6 +12,8 @@
 #include "vtkDataArraySelection.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationIntegerRequestKey.h"
@@ -79,7 +82,8 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkInternals(this))
 {
   this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(1);
+  // The elements, and the FTLE map of a lattice release (TracerFtleMap.h).
+  this->SetNumberOfOutputPorts(2);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     // Off by default: the pose arrays (they cost a fit a step).
@@ -218,6 +222,16 @@ int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* i
   return 1;
 }
 
+int vtkBoundParticleTracer::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkImageData");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
 void vtkBoundParticleTracer::SetTemplateData(vtkPolyData* shape)
 {
   this->SetInputDataInternal(1, shape);
@@ -279,6 +293,13 @@ int vtkBoundParticleTracer::RequestInformation(
   outInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
   const double range[2] = { times.front(), times.back() };
   outInfo->Set(SDDP::TIME_RANGE(), range, 2);
+  // The FTLE map shares the time line; its extent is known only once a
+  // trace has its lattice, so it claims none (the input's, copied by the
+  // executive, would be asked for and never produced).
+  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
+  mapInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
+  mapInfo->Set(SDDP::TIME_RANGE(), range, 2);
+  mapInfo->Remove(SDDP::WHOLE_EXTENT());
   return 1;
 }
 
@@ -323,12 +344,20 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
 }
 
 int vtkBoundParticleTracer::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkInternals& I = *this->Internals;
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // Both outputs come from one execution: the port asked for gives the time
+  // and pieces, and the other is asked alike (stamped with what it holds),
+  // so that its consumer at the same time finds it up to date.
+  const int port = request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
+      request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 1
+    ? 1
+    : 0;
+  vtkInformation* outInfo = outputVector->GetInformationObject(port);
+  bpvtk::askAlike(outInfo, outputVector->GetInformationObject(1 - port));
 
   if (I.Layout.takeRequest(outInfo, inInfo))
   {
@@ -342,7 +371,8 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // A new update: decide it once here, before anything is asked of
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
-    I.decide(this->Config(), outInfo);
+    // The engine as the elements' display asks (port 0), whichever port asks.
+    I.decide(this->Config(), outInfo, outputVector->GetInformationObject(0));
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -409,6 +439,7 @@ int vtkBoundParticleTracer::RequestData(
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
   vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
+  vtkImageData::GetData(outputVector->GetInformationObject(1))->Initialize();
   return 1;
 }
 
@@ -446,6 +477,8 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   const bpvtk::TracerConfig config = this->Config();
   vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
   output->Initialize();
+  vtkImageData* ftleMap = vtkImageData::GetData(outputVector->GetInformationObject(1));
+  ftleMap->Initialize();
   this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
@@ -491,6 +524,10 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   I.finishPasses();
   request->Remove(SDDP::CONTINUE_EXECUTING());
   const Pass shown = I.show(config, output);
+  if (shown.kind == Pass::Done)
+  {
+    I.showFtleMap(ftleMap);
+  }
   return shown.kind == Pass::Done ? 1 : end(shown);
 }
 

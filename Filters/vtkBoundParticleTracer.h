@@ -475,6 +475,8 @@ protected:
   ~vtkBoundParticleTracer() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData).
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -81,10 +81,11 @@ void vtkBoundParticleTracer::vtkInternals::endFailedUpdate()
   this->invalidate();
 }
 
-void vtkBoundParticleTracer::vtkInternals::decide(const Config& config, vtkInformation* outInfo)
+void vtkBoundParticleTracer::vtkInternals::decide(
+  const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  this->Steppers.select(config.engine, outInfo, this->Layout);
+  this->Steppers.select(config.engine, engineInfo, this->Layout);
   const std::string& software = this->Steppers.automaticCpuOn();
   if (!software.empty() && !this->SaidAutomaticCpu)
   {

@@ -39,6 +39,8 @@
 #include "TracerResample.h"
 #include "TracerSteppers.h"
 
+#include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -175,7 +177,7 @@ struct vtkBoundParticleTracer::vtkInternals
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
-  void decide(const Config& config, vtkInformation* outInfo);
+  void decide(const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo);
   /// The input time step this pass asks upstream for (RequestUpdateExtent),
   /// none for a steady input.
   void requestTimeStep(vtkInformation* inInfo);
@@ -198,6 +200,10 @@ struct vtkBoundParticleTracer::vtkInternals
   /// Steps the short last step to the target (taken back at the next
   /// update; collective in parallel, as every step), then builds the output.
   Pass show(const Config& config, vtkPolyData* output);
+  /// The second output after show(): the FTLE map of a lattice release
+  /// (TracerFtleMap.cxx; collective in a distributed run).
+  void showFtleMap(vtkImageData* image);
+  vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The FTLE map (TracerFtleMap.h), and the tracer's step that shows it
+// (vtkInternals::showFtleMap): from the CPU engine's state, gathered on
+// process 0 in a distributed run.
+#include "TracerFtleMap.h"
+
+#include "vtkBoundParticleTracerInternals.h"
+
+#include "ElementStretch.h"
+#include "Engine.h"
+
+#include "vtkCommunicator.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <vector>
+
+namespace bpvtk
+{
+
+namespace
+{
+/// Per lattice point: FTLE, largest and smallest stretch, shown (1 or 0).
+constexpr int Fields = 4;
+
+/// This process's elements' values at their lattice points; 0 elsewhere.
+std::vector<float> localValues(const bp::Engine& engine, std::size_t points)
+{
+  std::vector<float> values(Fields * points, 0.0f);
+  const std::size_t n = engine.particlesPerElement();
+  const bp::StretchFit fit(engine.shape().rest, engine.parameters().elementSize);
+  for (std::size_t e = 0; e < engine.elementCount(); ++e)
+  {
+    const std::size_t id = engine.elementIds()[e];
+    const bool hidden = engine.resetFlags()[e] & bp::ReleaseHidden;
+    if (id >= points || hidden)
+    {
+      continue;
+    }
+    const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
+    const std::array<float, 3> d =
+      bp::elementDeformation(fit, engine.positions().data() + 3 * e * n, age, false);
+    float* v = values.data() + Fields * id;
+    v[0] = d[2];
+    v[1] = d[0];
+    v[2] = d[1];
+    v[3] = 1.0f;
+  }
+  return values;
+}
+} // namespace
+
+void fillFtleMap(vtkImageData* image, const bp::Engine& engine, const std::array<double, 3>& offset,
+  vtkMultiProcessController* controller)
+{
+  image->Initialize();
+  const bp::Parameters& p = engine.parameters();
+  const std::size_t points = p.lattice.size();
+  if (p.releasePattern != bp::ReleasePattern::Lattice || points != p.numberOfElements)
+  {
+    return;
+  }
+  std::vector<float> values = localValues(engine, points);
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    // Each element lives on one process: the sum is every element's values.
+    std::vector<float> sum(values.size(), 0.0f);
+    controller->Reduce(
+      values.data(), sum.data(), vtkIdType(values.size()), vtkCommunicator::SUM_OP, 0);
+    if (controller->GetLocalProcessId() != 0)
+    {
+      return;
+    }
+    values.swap(sum);
+  }
+  image->SetDimensions(p.lattice.counts[0], p.lattice.counts[1], p.lattice.counts[2]);
+  double origin[3], spacing[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    origin[a] = double(p.lattice.origin[a]) + offset[a];
+    spacing[a] = p.lattice.spacing[a] > 0.0f ? double(p.lattice.spacing[a]) : 1.0;
+  }
+  image->SetOrigin(origin);
+  image->SetSpacing(spacing);
+  vtkNew<vtkFloatArray> ftle, stretch;
+  vtkNew<vtkUnsignedCharArray> valid;
+  ftle->SetName("FTLE");
+  stretch->SetName("Stretch");
+  stretch->SetNumberOfComponents(2);
+  valid->SetName("vtkValidPointMask");
+  ftle->SetNumberOfTuples(vtkIdType(points));
+  stretch->SetNumberOfTuples(vtkIdType(points));
+  valid->SetNumberOfTuples(vtkIdType(points));
+  for (std::size_t k = 0; k < points; ++k)
+  {
+    const float* v = values.data() + Fields * k;
+    const bool shown = v[3] > 0.5f;
+    ftle->SetValue(vtkIdType(k), shown ? v[0] : 0.0f);
+    stretch->SetTypedComponent(vtkIdType(k), 0, shown ? v[1] : 1.0f);
+    stretch->SetTypedComponent(vtkIdType(k), 1, shown ? v[2] : 1.0f);
+    valid->SetValue(vtkIdType(k), shown ? 1 : 0);
+  }
+  image->GetPointData()->SetScalars(ftle);
+  image->GetPointData()->AddArray(stretch);
+  image->GetPointData()->AddArray(valid);
+}
+
+void askAlike(vtkInformation* asked, vtkInformation* other)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (asked->Has(SDDP::UPDATE_TIME_STEP()))
+  {
+    other->Set(SDDP::UPDATE_TIME_STEP(), asked->Get(SDDP::UPDATE_TIME_STEP()));
+  }
+  else
+  {
+    other->Remove(SDDP::UPDATE_TIME_STEP());
+  }
+  for (vtkInformationIntegerKey* key : { SDDP::UPDATE_PIECE_NUMBER(),
+         SDDP::UPDATE_NUMBER_OF_PIECES(), SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS() })
+  {
+    if (asked->Has(key))
+    {
+      other->Set(key, asked->Get(key));
+    }
+  }
+}
+
+} // namespace bpvtk
+
+void vtkBoundParticleTracer::vtkInternals::showFtleMap(vtkImageData* image)
+{
+  const bp::Engine* particles = this->stepper().particles();
+  if (!particles)
+  {
+    // The GPU engine's state stays in the display: no map.
+    image->Initialize();
+    return;
+  }
+  if (!this->Layout.distributed())
+  {
+    bpvtk::fillFtleMap(image, *particles, this->Offset, nullptr);
+    return;
+  }
+  // Collective, so only in an update every process runs in step (as
+  // gatherExchange); otherwise nothing moved since the map last gathered.
+  if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+  {
+    bpvtk::fillFtleMap(this->FtleMap, *particles, this->Offset, this->Layout.Controller);
+  }
+  image->ShallowCopy(this->FtleMap);
+}
