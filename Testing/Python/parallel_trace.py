@@ -130,6 +130,7 @@ def placement_traces():
     cases["mesh_unsteady"] = (BoundParticleTracer(
         Input=moving, ElementShape="Point", NumberOfElements=1200, Seed=7,
         Vectors=["POINTS", "velocity"]), [1.0, 2.0])
+    cases["ftle"] = (ftle_trace(), [1.0, 2.0])
     if args.rectilinear:
         grid = XMLRectilinearGridReader(FileName=[args.rectilinear])
         grid.UpdatePipeline()  # the emitter's defaults come from the input's bounds
@@ -154,6 +155,30 @@ def placement_traces():
         cases["combustor"] = (BoundParticleTracer(
             Input=combustor, ElementShape="Strip4", NumberOfElements=600, Seed=10), None)
     return cases
+
+
+def ftle_trace():
+    """Spring-free crosses on a 40 x 20 lattice over the double gyre, with
+    ElementFTLE and ElementStretch: Release Pattern = Lattice where the tracer
+    has it (the FTLE map, port 1, is then gathered on process 0), else seed
+    points at the lattice's points."""
+    gyre = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[64, 32, 2],
+                                Bounds=[0, 2, 0, 1, -0.01, 0.01], NumberOfTimeSteps=5))
+    tracer = BoundParticleTracer(Input=gyre, ElementShape="Cross", RestorationIterations=0,
+                                 NumberOfElements=800, ElementSize=0.02,
+                                 ReleaseOrientation="Fixed", Integrator="Runge-Kutta 4",
+                                 StepSizeUnit="Time", StepSize=0.05, FramesPerInputStep=1,
+                                 LifetimeRange=[10, 10], MinimumReleaseSpeed=0.0)
+    tracer.OutputArrays = list(tracer.OutputArrays) + ["ElementFTLE", "ElementStretch"]
+    if "ReleasePattern" in tracer.ListProperties():
+        tracer.ReleasePattern = "Lattice"
+        tracer.EmitterCenter = [1.0, 0.5, 0.0]
+        tracer.EmitterSize = [2.0, 1.0, 0.0]
+    else:
+        x, y = numpy.meshgrid((numpy.arange(40) + 0.5) / 20.0, (numpy.arange(20) + 0.5) / 20.0)
+        points = numpy.column_stack([x.ravel(), y.ravel(), numpy.zeros(x.size)])
+        tracer.SeedSource = PolyLineSource(Points=list(points.ravel()))
+    return tracer
 
 
 def all_traces():
@@ -207,9 +232,16 @@ for name, (tracer, times) in all_traces().items():
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
         result[key + "_process"] = vtk_to_numpy(pd.GetArray(process_array))[order].astype(int)
         result[key + "_cells"] = numpy.array([data.GetNumberOfCells()])
-        for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin")):
+        for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin"),
+                                ("ElementFTLE", "_ftle"), ("ElementStretch", "_stretch")):
             if pd.GetArray(name_in) is not None:
                 result[key + suffix] = vtk_to_numpy(pd.GetArray(name_in))[order].astype(float)
+        if name == "ftle":
+            # Process 0's FTLE map: the whole image (empty without a lattice release).
+            image = servermanager.Fetch(tracer, 0, None, 1)
+            ftle = image.GetPointData().GetArray("FTLE")
+            result[key + "_map"] = (vtk_to_numpy(ftle).astype(float) if ftle is not None
+                                    else numpy.zeros(0))
         per_process = data.GetFieldData().GetArray("ElementsPerProcess")
         if per_process is not None:
             result[key + "_per_process"] = vtk_to_numpy(per_process).astype(int)

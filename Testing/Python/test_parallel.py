@@ -178,6 +178,14 @@ def compare(reference, result, name, ranks):
                     numpy.allclose(reference[key], result[key], rtol=1e-12, atol=0))
             bptest.check(same, "%s %s: the same time line as the built-in run (%d values)" %
                          (name, key, len(result[key])))
+        if key.endswith("_map"):
+            # The FTLE map: whole on process 0 whatever the process count.
+            same = (key in result.files and reference[key].shape == result[key].shape and
+                    numpy.allclose(result[key], reference[key], rtol=0,
+                                   atol=1e-3 * max(float(abs(reference[key]).max(initial=0)),
+                                                   1e-9)))
+            print("%s %s: %d map points" % (name, key, len(reference[key])))
+            bptest.check(same, "%s %s: the FTLE map differs from the built-in run's" % (name, key))
         if not key.endswith("_points"):
             continue
         base = key[: -len("_points")]
@@ -200,7 +208,7 @@ def compare(reference, result, name, ranks):
                   (name, base, array, error, scale))
             bptest.check(error <= share * scale, "%s %s%s differ by %g" %
                          (name, base, array, error))
-        for array in ("_age", "_spin"):
+        for array in ("_age", "_spin", "_ftle", "_stretch"):
             if base + array in reference.files:
                 scale = max(float(abs(reference[base + array]).max()), 1e-9)
                 error = float(abs(result[base + array] - reference[base + array]).max())
