@@ -318,6 +318,11 @@ private:
   /// lifetime after restoration.
   void settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     const float* before, const float* advected);
+  /// Anchor::Centre: element e moved whole from its particles' mean `center`
+  /// to its release centre; whether a particle is then outside the domain
+  /// (tested only with `testParticles`).
+  bool anchor(std::size_t e, const VectorField& field, const StepWeights& weights,
+    const float center[3], bool testParticles);
   /// Whether p is in the domain after a step: in the bounds, in a cell
   /// inside the flow's domain (DomainMask.h).
   bool inDomain(const VectorField& field, const float p[3], float weight) const

@@ -138,6 +138,48 @@ std::string checkLinking(const ElementTemplate& /*shape*/, const Parameters& p)
   }
   return std::string();
 }
+
+std::string checkAnchor(const ElementTemplate& shape, const Parameters& p)
+{
+  if (p.anchor == Anchor::None)
+  {
+    return std::string();
+  }
+  if (p.anchor != Anchor::Centre)
+  {
+    return "Anchor must be None or Centre";
+  }
+  if (p.linking != Linking::None)
+  {
+    // A super set moves as one structure held by its links; anchoring each
+    // element at its lattice site would leave the links nothing to hold.
+    return "Anchor = Centre holds single elements in place; a super set (Linking) cannot be "
+           "anchored: set Linking to None or Anchor to None";
+  }
+  if (std::find(shape.pinned.begin(), shape.pinned.end(), 1) != shape.pinned.end())
+  {
+    return "Anchor = Centre moves the whole element back to its release centre, which would "
+           "move the template's pinned particles: use a template without pinned particles";
+  }
+  // The anchor is the release centre, which is the particles' mean at
+  // placement only for a template centred on its centroid (as normalize()
+  // leaves every built-in and mesh template).
+  double mean[3] = { 0, 0, 0 }, radius = 0;
+  for (const auto& r : shape.rest)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      mean[k] += r[k] / double(shape.rest.size());
+    }
+    radius = std::max(radius, double(std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2])));
+  }
+  if (std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]) > 1e-4 * radius)
+  {
+    return "Anchor = Centre needs an element template centred on its centroid "
+           "(ElementTemplate::normalize)";
+  }
+  return std::string();
+}
 } // namespace
 
 std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
@@ -147,7 +189,7 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
   const Check checks[] = { checkShape, checkSize, checkTrail, checkReleaseWindow, checkRelease,
-    checkRestoration, checkLinking };
+    checkRestoration, checkLinking, checkAnchor };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);
