@@ -87,6 +87,7 @@ struct Case
   bool window = false;       // release only while 0.3 <= t <= 0.8
   bool poses = false;        // Parameters::trackPoses, and a trail of 4 poses every 3 steps
   bp::Orientation orientation = bp::Orientation::Random;
+  bool anchored = false; // Anchor = Centre
 };
 
 /// The largest difference of a quaternion's components, taking the GPU's q
@@ -293,6 +294,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.trailInterval = 3 * dt;
   }
   p.orientation = c.orientation;
+  if (c.anchored)
+    p.anchor = bp::Anchor::Centre;
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -386,6 +389,24 @@ void compare(const Case& c, int steps, bool pinSome = false)
   if (c.linking != bp::Linking::None)
     std::printf(
       "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
+  if (c.anchored)
+  {
+    // Every element's mean, on both engines, at its generation's release centre.
+    const std::size_t n = shape.particleCount();
+    double worstAnchor = 0.0;
+    const std::vector<float>* both[] = { &positions, &cpu.positions() };
+    for (const std::vector<float>* x : both)
+      for (std::size_t e = 0; e < c.elements; ++e)
+        for (int k = 0; k < 3; ++k)
+        {
+          double mean = 0.0;
+          for (std::size_t i = 0; i < n; ++i)
+            mean += (*x)[3 * (e * n + i) + std::size_t(k)] / double(n);
+          worstAnchor = std::max(worstAnchor, std::abs(mean - cpu.initialCenters()[3 * e + k]));
+        }
+    std::printf("  anchored: centres within %.3g of their release centres\n", worstAnchor);
+    EXPECT_LT(worstAnchor, 1e-6 * g.diagonal());
+  }
   // Untracked, the poses stay as placed and the spins 0 on both engines.
   comparePoses(cpu, gpu, field, steps * dt, dt);
   if (c.poses)
@@ -590,6 +611,29 @@ TEST(GpuEngine, PosesSpinsAndTrailsMatchTheCpuEngine)
     SCOPED_TRACE(bp::builtinTemplate(c.shape).name);
     c.poses = true;
     compare(c, 200);
+  }
+}
+
+TEST(GpuEngine, AnchoredElementsMatchTheCpuEngine)
+{
+  // Anchor = Centre with poses and trails: shape matching on the unsteady
+  // double gyre, springs in steady solid-body rotation, and with cells
+  // outside the domain, stagnant releases retried and Any Particle Leaves
+  // (the particle test after the move back, the release speed before it).
+  Case gyre{ bp::BuiltinShape::Paddlewheel, 300, bp::Integrator::RK2,
+    bp::Restoration::ShapeMatching, true };
+  Case rotation{ bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    false };
+  Case masked{ bp::BuiltinShape::Strip8, 300, bp::Integrator::Euler,
+    bp::Restoration::AveragedJacobi, true };
+  masked.masked = true;
+  masked.anyParticle = true;
+  for (Case c : { gyre, rotation, masked })
+  {
+    SCOPED_TRACE(bp::builtinTemplate(c.shape).name);
+    c.anchored = true;
+    c.poses = true;
+    compare(c, 150);
   }
 }
 
