@@ -71,6 +71,7 @@ BP_CLAMPED_SETTER(Linking, int, NO_LINKING, TORUS)
 BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
+BP_CLAMPED_SETTER(Anchor, int, NO_ANCHOR, ANCHOR_CENTRE)
 BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
 BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
@@ -145,6 +146,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = float(this->LinkStiffness);
   p.resetWhen = bp::ResetWhen(this->ResetWhen);
+  p.anchor = bp::Anchor(this->Anchor);
   if (this->ReleaseWindow)
   {
     p.releaseStart = this->ReleaseStart;
@@ -566,6 +568,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
      << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
+  os << indent << "Anchor: " << this->Anchor << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
      << this->TrailSpacing << " steps)\n";

@@ -100,6 +100,11 @@ public:
     CENTER_LEAVES = 0,
     ANY_PARTICLE_LEAVES
   };
+  enum AnchorModes
+  {
+    NO_ANCHOR = 0,
+    ANCHOR_CENTRE
+  };
   enum TemplateSpringModes
   {
     EDGES = 0,
@@ -312,6 +317,16 @@ public:
   ///@}
 
   ///@{
+  /// NO_ANCHOR: elements move with the flow. ANCHOR_CENTRE: each element is
+  /// moved back, after every step, so that its centre stays where it was
+  /// released; it still turns and deforms with the local flow (a vorticity
+  /// meter in place). Not with Linking (refused with a message).
+  /// Clamped to [NO_ANCHOR, ANCHOR_CENTRE]; a value outside warns.
+  virtual void SetAnchor(int value);
+  vtkGetMacro(Anchor, int);
+  ///@}
+
+  ///@{
   /// When an element is put back into the emitter besides running out of
   /// lifetime: its centre leaves the field (thesis) or any particle does.
   /// Clamped to [CENTER_LEAVES, ANY_PARTICLE_LEAVES]; a value outside warns.
@@ -519,6 +534,7 @@ protected:
   int LatticeWidth = 0;
   double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
+  int Anchor = NO_ANCHOR;
   double MinimumReleaseSpeed = 0.01;
   int ReleaseWindow = 0;
   double ReleaseStart = 0.0;

@@ -87,6 +87,13 @@ def placement_traces():
                                  Seed=6, Trails=1, TrailLength=3, TrailSpacing=2)
     trails.OutputArrays = list(trails.OutputArrays) + ["ElementSpin"]
     cases["trails"] = (trails, [0.5, 1.0])
+    # Anchor = Centre: elements held at their release centres, turning, and
+    # released again (in another piece) as their short lives end.
+    anchored = BoundParticleTracer(Input=hurricane, ElementShape="Paddlewheel",
+                                   NumberOfElements=400, Seed=8, Anchor="Centre",
+                                   Restoration="Shape Matching", LifetimeRange=[0.3, 0.6])
+    anchored.OutputArrays = list(anchored.OutputArrays) + ["ElementSpin"]
+    cases["anchored"] = (anchored, [0.5, 1.0])
     # A release window: hidden elements cross pieces and are released together.
     cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,
