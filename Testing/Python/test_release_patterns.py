@@ -99,4 +99,26 @@ with bptest.CapturedMessages() as said:
     points, ids = releases(tracer)
 bptest.check(said.mentions("no point array 'nosuch'"), "a missing array warns: %s" % said.messages)
 bptest.check(chi_square(points, numpy.full(10, 0.1)) < 27.9, "a missing array: uniform releases")
+
+# Weights of 0 everywhere warn and release uniformly.
+zero = Calculator(Input=box, ResultArrayName="zero", Function="0*coordsX")
+tracer.Input = zero
+tracer.ReleaseWeights = ["POINTS", "zero"]
+with bptest.CapturedMessages() as said:
+    points, ids = releases(tracer)
+bptest.check(said.mentions("is 0, NaN or Inf at every point"), "weights of 0 warn: %s" % said.messages)
+bptest.check(chi_square(points, numpy.full(10, 0.1)) < 27.9, "weights of 0: uniform releases")
+Delete(tracer)
+
+# Too fine a lattice and a lattice with Linking are refused with a message
+# that names what to change; the output is empty, and nothing hangs.
+for properties, words in (({"LatticeSpacing": 1e-9}, "LatticeSpacing"),
+                          ({"Linking": "Sheet"}, "Linking")):
+    bad = BoundParticleTracer(Input=flat, Vectors=VELOCITY, ReleasePattern="Lattice", **properties)
+    with bptest.CapturedMessages() as said:
+        bad.UpdatePipeline(bad.TimestepValues[0])
+    output = servermanager.Fetch(bad)
+    bptest.check(said.mentions(words) and output.GetNumberOfPoints() == 0,
+                 "%s: refused by name, empty output (%s)" % (properties, said.messages))
+    Delete(bad)
 bptest.finish()
