@@ -98,7 +98,8 @@ std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resoluti
   if (s.weighted && (s.seeded || p.releasePattern == ReleasePattern::Lattice))
   {
     r.warnings.push_back(std::string("Release Weights is not used: releases take ") +
-      (s.seeded ? "the Seed Source's points." : "the lattice's points (Release Pattern)."));
+      (s.seeded ? "the seed points (Seed Source or Seed Type)."
+                : "the lattice's points (Release Pattern)."));
   }
   if (p.releasePattern != ReleasePattern::Lattice)
   {
@@ -106,8 +107,8 @@ std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resoluti
   }
   if (s.seeded)
   {
-    r.warnings.push_back("Release Pattern = Lattice is not used: releases take the Seed "
-                         "Source's points.");
+    r.warnings.push_back("Release Pattern = Lattice is not used: releases take the seed "
+                         "points (Seed Source or Seed Type).");
     p.releasePattern = ReleasePattern::Random;
     return std::string();
   }
