@@ -131,6 +131,7 @@ vec3 bpWeightedCenter(int e, float generation)
       continue;
     }
     float w = bpSampleSlice(bpReleaseWeights, c).x;
+    // The acceptance draw weightDraw(k), after every candidate's (as bpCandidate's).
     if (bpDraw(e, generation, uint(200 + k)) * bpWeightMax < w)
     {
       return c;
