@@ -408,9 +408,10 @@ bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
   }
   // ... and in its first step: its lifetime is still the one drawn at its
   // placement (compared with half a step's slack, so that both engines'
-  // roundings agree).
+  // roundings agree). A lattice's generation draws element 0's (place()).
+  const std::uint32_t element = P.releasePattern == ReleasePattern::Lattice ? 0u : this->Ids[e];
   const float drawn = P.lifetimeMin +
-    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
+    uniformDraw(P.seed, element, this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
   return drawn - this->Lifetimes[e] < 0.5f * float(h);
 }
 

@@ -39,6 +39,40 @@ std::string checkSize(const ElementTemplate& shape, const Parameters& p)
   return std::string();
 }
 
+/// Release Pattern = Lattice: a lattice the engine can hold, and no super
+/// set (whose elements sit at their own lattice's sites).
+std::string checkLattice(const ElementTemplate& shape, const Parameters& p)
+{
+  if (p.releasePattern == ReleasePattern::Random)
+  {
+    return std::string();
+  }
+  if (p.releasePattern != ReleasePattern::Lattice)
+  {
+    return "ReleasePattern must be Random or Lattice";
+  }
+  if (p.linking != Linking::None)
+  {
+    return "Release Pattern = Lattice cannot be used with Linking: a super set is released at "
+           "its own lattice's sites; set Linking to None or Release Pattern to Random";
+  }
+  const std::size_t size = p.lattice.size();
+  const std::size_t n = shape.particleCount();
+  if (size < 1 || size > MaxParticles / n)
+  {
+    std::ostringstream err;
+    err << "the release lattice (" << p.lattice.counts[0] << " x " << p.lattice.counts[1] << " x "
+        << p.lattice.counts[2] << " points) x " << n << " particles per element exceeds the limit "
+        << "of " << MaxParticles << " particles; choose a larger LatticeSpacing";
+    return err.str();
+  }
+  if (size != p.numberOfElements)
+  {
+    return "NumberOfElements must be the release lattice's size (resolveSettings sets it)";
+  }
+  return std::string();
+}
+
 std::string checkTrail(const ElementTemplate& /*shape*/, const Parameters& p)
 {
   if (p.trailLength < 0 || p.trailLength > MaxTrailLength ||
@@ -188,8 +222,8 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the particle count that shape.validate() checks): the first failure is
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
-  const Check checks[] = { checkShape, checkSize, checkTrail, checkReleaseWindow, checkRelease,
-    checkRestoration, checkLinking, checkAnchor };
+  const Check checks[] = { checkShape, checkLattice, checkSize, checkTrail, checkReleaseWindow,
+    checkRelease, checkRestoration, checkLinking, checkAnchor };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);

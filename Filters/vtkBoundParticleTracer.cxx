@@ -62,6 +62,8 @@ BP_CLAMPED_SETTER(ElementShape, int, POINT, FISH)
 BP_CLAMPED_SETTER(TemplateSprings, int, EDGES, ALL_PAIRS)
 BP_CLAMPED_SETTER(StepSizeUnit, int, CELL_LENGTH, TIME)
 BP_CLAMPED_SETTER(ReleaseOrientation, int, FIXED_ORIENTATION, ALONG_FLOW)
+BP_CLAMPED_SETTER(ReleasePattern, int, RANDOM_RELEASES, LATTICE_RELEASES)
+BP_CLAMPED_SETTER(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX)
 BP_CLAMPED_SETTER(Integrator, int, EULER, RUNGE_KUTTA_4)
 BP_CLAMPED_SETTER(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING)
 BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
@@ -133,7 +135,9 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
   s.trailLength = this->Trails ? this->TrailLength : 0;
   s.trailSpacing = this->TrailSpacing;
+  s.latticeSpacing = this->LatticeSpacing;
   bp::Parameters& p = s.engine;
+  p.releasePattern = bp::ReleasePattern(this->ReleasePattern);
   p.orientation = bp::Orientation(this->ReleaseOrientation);
   p.integrator = bp::Integrator(this->Integrator);
   p.restoration = bp::Restoration(this->Restoration);
@@ -187,6 +191,13 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   c.vectors.association = vectors && vectors->Has(vtkDataObject::FIELD_ASSOCIATION())
     ? vectors->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  // Release Weights: input array 1, "None" (the panel's) or unset for none.
+  vtkInformation* weights = this->GetInputArrayInformation(1);
+  const char* weightsName = weights && weights->Has(vtkDataObject::FIELD_NAME())
+    ? weights->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  c.releaseWeights = weightsName && std::string(weightsName) != "None" ? weightsName : "";
+  c.trace.weighted = !c.releaseWeights.empty();
   return c;
 }
 
@@ -567,6 +578,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Integrator: " << this->Integrator << "\n";
   os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
      << "\n";
+  os << indent << "ReleasePattern: " << this->ReleasePattern << "\n";
+  os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "Anchor: " << this->Anchor << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";

@@ -105,6 +105,11 @@ public:
     NO_ANCHOR = 0,
     ANCHOR_CENTRE
   };
+  enum ReleasePatterns
+  {
+    RANDOM_RELEASES = 0,
+    LATTICE_RELEASES
+  };
   enum TemplateSpringModes
   {
     EDGES = 0,
@@ -224,6 +229,22 @@ public:
   vtkGetVector3Macro(EmitterCenter, double);
   vtkSetVector3Macro(EmitterSize, double);
   vtkGetVector3Macro(EmitterSize, double);
+  ///@}
+
+  ///@{
+  /// Where releases land in the emitter box: RANDOM_RELEASES (default),
+  /// uniform draws (weighted by the Release Weights array, when one is
+  /// chosen: SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+  /// name)); LATTICE_RELEASES, element e at point e of a regular lattice
+  /// filling the box (flat on a 2D field), release after release, with one
+  /// lifetime per generation. LatticeSpacing (world units) sets the lattice;
+  /// 0 (default) takes it from NumberOfElements, which is then the target
+  /// (the lattice's size is the element count). Clamped to [RANDOM_RELEASES,
+  /// LATTICE_RELEASES]; a value outside warns.
+  virtual void SetReleasePattern(int value);
+  vtkGetMacro(ReleasePattern, int);
+  virtual void SetLatticeSpacing(double value);
+  vtkGetMacro(LatticeSpacing, double);
   ///@}
 
   ///@{
@@ -519,6 +540,8 @@ protected:
   double EmitterCenter[3] = { 0.0, 0.0, 0.0 };
   double EmitterSize[3] = { -1.0, -1.0, -1.0 };
   int ReleaseOrientation = ALONG_FLOW;
+  int ReleasePattern = RANDOM_RELEASES;
+  double LatticeSpacing = 0.0;
   double ElementRotation[3] = { 0.0, 0.0, 0.0 };
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;
