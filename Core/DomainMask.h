@@ -17,6 +17,7 @@
 #ifndef BoundParticles_DomainMask_h
 #define BoundParticles_DomainMask_h
 
+#include "ReleaseWeights.h"
 #include "VectorField.h"
 
 #include <cstddef>
@@ -62,6 +63,8 @@ struct ReleaseMask
 {
   GridGeometry grid; ///< the whole field's, in engine coordinates
   std::shared_ptr<const std::vector<std::uint8_t>> unfit;
+  /// Release Weights on `grid` (ReleaseWeights.h), or null.
+  std::shared_ptr<const ReleaseWeights> weights;
 };
 
 /// Whether `mask` leaves no cell of its grid where a release may land (and

@@ -50,6 +50,7 @@
 #include "Parallel.h"
 #include "ParticleLayout.h"
 #include "Quaternion.h"
+#include "ReleaseWeights.h"
 #include "SampleAtPositions.h"
 #include "StepSchedule.h"
 #include "SuperSet.h"
@@ -113,10 +114,12 @@ public:
    * draws up to ReleaseTries candidate centres and takes the first inside the
    * grid's bounds in a fit cell (or else the last); null `unfit`: the first
    * candidate. Seed points that do not fit (outside the bounds or, with a
-   * mask, in an unfit cell) give way to the next ones in turn.
+   * mask, in an unfit cell) give way to the next ones in turn. `weights`
+   * (on the same grid, or null) weigh the candidates (ReleaseWeights.h).
    */
-  void setReleaseMask(
-    const GridGeometry& grid, std::shared_ptr<const std::vector<std::uint8_t>> unfit);
+  void setReleaseMask(const GridGeometry& grid,
+    std::shared_ptr<const std::vector<std::uint8_t>> unfit,
+    std::shared_ptr<const ReleaseWeights> weights = nullptr);
 
   /// One step of size h from time t (h > 0).
   void step(const VectorField& field, double t, double h, const RangeRunner& run);
@@ -296,8 +299,11 @@ private:
   {
     return (this->ResetFlags[e] & (ResetDue | ReleaseHidden)) || this->Lifetimes[e] <= 0.0f;
   }
-  /// The release centre of element `element`'s generation (Engine::place).
-  void releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
+  /// The release centre of element `element`'s generation (Engine::place);
+  /// false for a lattice point that does not fit (the element is hidden).
+  bool releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
+  /// The Random pattern's centre with Release Weights (ReleaseWeights.h).
+  void weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// What a step decides once for every element: the second slice's weight
   /// at t, t + h/2 and t + h, the release window, and who resets.
   struct StepWeights
@@ -331,6 +337,11 @@ private:
   /// lifetime after restoration.
   void settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     const float* before, const float* advected);
+  /// Anchor::Centre: element e moved whole from its particles' mean `center`
+  /// to its release centre; whether a particle is then outside the domain
+  /// (tested only with `testParticles`).
+  bool anchor(std::size_t e, const VectorField& field, const StepWeights& weights,
+    const float center[3], bool testParticles);
   /// Whether p is in the domain after a step: in the bounds, in a cell
   /// inside the flow's domain (DomainMask.h).
   bool inDomain(const VectorField& field, const float p[3], float weight) const
@@ -394,6 +405,7 @@ private:
   /// time steps, for locating cells only) and its unfit cells.
   std::shared_ptr<const VectorField> ReleaseGrid;
   std::shared_ptr<const std::vector<std::uint8_t>> ReleaseUnfit;
+  std::shared_ptr<const ReleaseWeights> Weights; ///< Release Weights, or null
   std::vector<float> Orientations;
   std::vector<float> Poses; ///< poses(): 4 floats per element
   std::vector<float> Spins; ///< spins(): 4 floats per element

@@ -28,20 +28,22 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   const bool linked = !this->Links.empty();
   const std::uint32_t element = this->drawElement(e);
   const std::uint32_t generation = this->Generations[e];
-  // Draws 3-5 (the centre's are releaseCenter()'s, the lifetime's lifetimeDraw()'s).
+  // Draws 3-5 (the centre's are releaseCenter()'s, the lifetime's lifetimeDraw()'s:
+  // a lattice's generation is released together, with element 0's lifetime).
   float u[6];
   for (std::uint32_t d = 3; d < 6; ++d)
   {
     u[d] = uniformDraw(P.seed, element, generation, d);
   }
   float c[3];
+  bool fits = true;
   if (linked)
   {
     std::copy_n(this->Links.sites.data() + 3 * e, 3, c);
   }
   else
   {
-    this->releaseCenter(element, generation, c);
+    fits = this->releaseCenter(element, generation, c);
   }
   std::copy_n(c, 3, this->InitialCenters.data() + 3 * e);
   const std::array<float, 4> q = P.orientation != Orientation::Random ? this->FrameQuaternion
@@ -52,7 +54,8 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   const std::size_t n = this->Shape.particleCount();
   std::fill_n(this->Forces.data() + e * n, n, 0.0f);
   this->Lifetimes[e] = lifetimeDraw(P, element, generation);
-  this->ResetFlags[e] = releasing ? 0 : ReleaseHidden;
+  // A lattice point that does not fit is never shown (due again each step).
+  this->ResetFlags[e] = releasing && fits ? 0 : ReleaseHidden;
   // A super set keeps its lattice's one orientation, as it keeps one draw.
   if (P.orientation == Orientation::AlongFlow && !linked)
   {
@@ -105,7 +108,7 @@ void Engine::alignToFlow(std::size_t e, const ReleaseFlow& flow)
   this->ResetFlags[e] &= std::uint8_t(~AlignPending);
 }
 
-void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
+bool Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
 {
   const Parameters& P = this->Params;
   // Where a release may land: in the field's bounds and, with a mask, in a fit cell.
@@ -125,7 +128,18 @@ void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, floa
     {
       seed(k);
     }
-    return;
+    return true;
+  }
+  if (P.releasePattern == ReleasePattern::Lattice)
+  {
+    const std::array<float, 3> x = P.lattice.point(element);
+    std::copy(x.begin(), x.end(), c);
+    return !this->ReleaseGrid || fits(c);
+  }
+  if (this->Weights)
+  {
+    this->weightedCenter(element, generation, c);
+    return true;
   }
   auto candidate = [&](int k)
   {
@@ -138,19 +152,60 @@ void Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, floa
   candidate(0);
   if (!this->ReleaseUnfit)
   {
-    return;
+    return true;
   }
   for (int k = 1; k < ReleaseTries && !fits(c); ++k)
   {
     candidate(k);
   }
+  return true;
 }
 
-void Engine::setReleaseMask(
-  const GridGeometry& grid, std::shared_ptr<const std::vector<std::uint8_t>> unfit)
+void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
+{
+  const Parameters& P = this->Params;
+  const ReleaseWeights& W = *this->Weights;
+  // Candidate k is taken where it fits with probability w(c) / maximum; else
+  // the fitting candidate of the largest weight seen, else the last.
+  float best[3];
+  float bestWeight = -1.0f;
+  for (int k = 0; k < ReleaseTries; ++k)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const float u = uniformDraw(P.seed, element, generation, candidateDraw(k) + std::uint32_t(a));
+      c[a] = P.emitterMin[a] + u * (P.emitterMax[a] - P.emitterMin[a]);
+    }
+    const bool fit = this->ReleaseGrid->contains(c) &&
+      !(this->ReleaseUnfit && (*this->ReleaseUnfit)[this->ReleaseGrid->cellIndexAt(c)]);
+    if (!fit)
+    {
+      continue;
+    }
+    const float w = W.at(c);
+    if (uniformDraw(P.seed, element, generation, weightDraw(k)) * W.maximum() < w)
+    {
+      return;
+    }
+    if (w > bestWeight)
+    {
+      bestWeight = w;
+      std::copy_n(c, 3, best);
+    }
+  }
+  if (bestWeight >= 0.0f)
+  {
+    std::copy_n(best, 3, c);
+  }
+}
+
+void Engine::setReleaseMask(const GridGeometry& grid,
+  std::shared_ptr<const std::vector<std::uint8_t>> unfit,
+  std::shared_ptr<const ReleaseWeights> weights)
 {
   const bool fits = unfit && unfit->size() == grid.pointCount();
   this->ReleaseUnfit = fits ? std::move(unfit) : nullptr;
+  this->Weights = grid.pointCount() > 0 ? std::move(weights) : nullptr;
   // The grid alone bounds seed points (FieldSlice-less: it locates, never samples).
   this->ReleaseGrid =
     grid.pointCount() > 0 ? std::make_shared<const VectorField>(grid, FieldSlice()) : nullptr;

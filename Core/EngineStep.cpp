@@ -291,6 +291,9 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   float c[3] = { 0, 0, 0 };
   bool anyOutside = false;
   const bool byParticle = this->Params.resetWhen == ResetWhen::AnyParticleLeaves;
+  // An anchored element's particles are tested where anchoring puts them.
+  const bool anchored = this->Params.anchor == Anchor::Centre;
+  const bool testParticles = byParticle && !anchored;
   for (std::size_t i = 0; i < n; ++i)
   {
     const float* q = p + 3 * i;
@@ -305,7 +308,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     {
       c[k] += q[k];
     }
-    anyOutside = anyOutside || (byParticle && !this->inDomain(field, q, weights.end));
+    anyOutside = anyOutside || (testParticles && !this->inDomain(field, q, weights.end));
   }
   bool leave;
   if (!finite)
@@ -319,7 +322,16 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   {
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
-    leave = byParticle ? anyOutside : !this->inDomain(field, center, weights.end);
+    const float* at = center;
+    if (anchored)
+    {
+      at = this->InitialCenters.data() + 3 * e;
+      anyOutside = this->anchor(e, field, weights, center, byParticle);
+    }
+    leave = byParticle ? anyOutside : !this->inDomain(field, at, weights.end);
+    // The release-speed test reads the centre the flow carried the element
+    // to, before anchoring took it back (else every anchored release would
+    // look stagnant).
     leave = leave || this->releasedStagnant(e, center, h);
   }
   if (this->Params.trackPoses)
@@ -333,6 +345,28 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   const std::uint8_t hidden = this->ResetFlags[e] & ReleaseHidden;
   this->ResetFlags[e] = std::uint8_t((leave && this->Links.empty() ? ResetDue : 0) | hidden);
   this->Lifetimes[e] -= float(h);
+}
+
+bool Engine::anchor(std::size_t e, const VectorField& field, const StepWeights& weights,
+  const float center[3], bool testParticles)
+{
+  // The whole element moved so that its particles' mean is back at its
+  // release centre: it keeps the turn and the deformation of the step.
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  const float* a = this->InitialCenters.data() + 3 * e;
+  const float shift[3] = { a[0] - center[0], a[1] - center[1], a[2] - center[2] };
+  bool anyOutside = false;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float* q = p + 3 * i;
+    for (int k = 0; k < 3; ++k)
+    {
+      q[k] += shift[k];
+    }
+    anyOutside = anyOutside || (testParticles && !this->inDomain(field, q, weights.end));
+  }
+  return anyOutside;
 }
 
 void Engine::updatePose(
@@ -374,9 +408,8 @@ bool Engine::releasedStagnant(std::size_t e, const float c[3], double h) const
   }
   // ... and in its first step: its lifetime is still the one drawn at its
   // placement (compared with half a step's slack, so that both engines'
-  // roundings agree).
-  const float drawn = P.lifetimeMin +
-    uniformDraw(P.seed, this->Ids[e], this->Generations[e], 6) * (P.lifetimeMax - P.lifetimeMin);
+  // roundings agree). A lattice's generation draws element 0's (lifetimeDraw).
+  const float drawn = lifetimeDraw(P, this->Ids[e], this->Generations[e]);
   return drawn - this->Lifetimes[e] < 0.5f * float(h);
 }
 

@@ -39,6 +39,40 @@ std::string checkSize(const ElementTemplate& shape, const Parameters& p)
   return std::string();
 }
 
+/// Release Pattern = Lattice: a lattice the engine can hold, and no super
+/// set (whose elements sit at their own lattice's sites).
+std::string checkLattice(const ElementTemplate& shape, const Parameters& p)
+{
+  if (p.releasePattern == ReleasePattern::Random)
+  {
+    return std::string();
+  }
+  if (p.releasePattern != ReleasePattern::Lattice)
+  {
+    return "ReleasePattern must be Random or Lattice";
+  }
+  if (p.linking != Linking::None)
+  {
+    return "Release Pattern = Lattice cannot be used with Linking: a super set is released at "
+           "its own lattice's sites; set Linking to None or Release Pattern to Random";
+  }
+  const std::size_t size = p.lattice.size();
+  const std::size_t n = shape.particleCount();
+  if (size < 1 || size > MaxParticles / n)
+  {
+    std::ostringstream err;
+    err << "the release lattice (" << p.lattice.counts[0] << " x " << p.lattice.counts[1] << " x "
+        << p.lattice.counts[2] << " points) x " << n << " particles per element exceeds the limit "
+        << "of " << MaxParticles << " particles; choose a larger LatticeSpacing";
+    return err.str();
+  }
+  if (size != p.numberOfElements)
+  {
+    return "NumberOfElements must be the release lattice's size (resolveSettings sets it)";
+  }
+  return std::string();
+}
+
 std::string checkTrail(const ElementTemplate& /*shape*/, const Parameters& p)
 {
   if (p.trailLength < 0 || p.trailLength > MaxTrailLength ||
@@ -138,6 +172,48 @@ std::string checkLinking(const ElementTemplate& /*shape*/, const Parameters& p)
   }
   return std::string();
 }
+
+std::string checkAnchor(const ElementTemplate& shape, const Parameters& p)
+{
+  if (p.anchor == Anchor::None)
+  {
+    return std::string();
+  }
+  if (p.anchor != Anchor::Centre)
+  {
+    return "Anchor must be None or Centre";
+  }
+  if (p.linking != Linking::None)
+  {
+    // A super set moves as one structure held by its links; anchoring each
+    // element at its lattice site would leave the links nothing to hold.
+    return "Anchor = Centre holds single elements in place; a super set (Linking) cannot be "
+           "anchored: set Linking to None or Anchor to None";
+  }
+  if (std::find(shape.pinned.begin(), shape.pinned.end(), 1) != shape.pinned.end())
+  {
+    return "Anchor = Centre moves the whole element back to its release centre, which would "
+           "move the template's pinned particles: use a template without pinned particles";
+  }
+  // The anchor is the release centre, which is the particles' mean at
+  // placement only for a template centred on its centroid (as normalize()
+  // leaves every built-in and mesh template).
+  double mean[3] = { 0, 0, 0 }, radius = 0;
+  for (const auto& r : shape.rest)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      mean[k] += r[k] / double(shape.rest.size());
+    }
+    radius = std::max(radius, double(std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2])));
+  }
+  if (std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]) > 1e-4 * radius)
+  {
+    return "Anchor = Centre needs an element template centred on its centroid "
+           "(ElementTemplate::normalize)";
+  }
+  return std::string();
+}
 } // namespace
 
 std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
@@ -146,8 +222,8 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the particle count that shape.validate() checks): the first failure is
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
-  const Check checks[] = { checkShape, checkSize, checkTrail, checkReleaseWindow, checkRelease,
-    checkRestoration, checkLinking };
+  const Check checks[] = { checkShape, checkLattice, checkSize, checkTrail, checkReleaseWindow,
+    checkRelease, checkRestoration, checkLinking, checkAnchor };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);

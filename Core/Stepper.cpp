@@ -26,13 +26,14 @@ std::string CpuStepper::setField(const VectorField& field)
   {
     this->Release = this->releaseMaskOf(field, speed);
   }
-  this->Current.setReleaseMask(this->Release.grid, this->Release.unfit);
+  this->Current.setReleaseMask(this->Release.grid, this->Release.unfit, this->Release.weights);
   return std::string();
 }
 
 ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
 {
-  return { field.grid(), releaseUnfitCells(field, minSpeed) };
+  return { field.grid(), releaseUnfitCells(field, minSpeed),
+    releaseWeightsOf(field.grid(), field.firstSlice().releaseWeights) };
 }
 
 void CpuStepper::initialize(double startTime)

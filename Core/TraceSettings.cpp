@@ -90,6 +90,45 @@ std::string checkEmitter(const TraceSettings& s, const FieldFacts& f, const Para
   return std::string();
 }
 
+/// Release Pattern = Lattice: the lattice over the emitter box (flat on a
+/// flat field's plane), whose size is the element count; seed points win.
+std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resolution& r)
+{
+  Parameters& p = r.parameters;
+  if (s.weighted && (s.seeded || p.releasePattern == ReleasePattern::Lattice))
+  {
+    r.warnings.push_back(std::string("Release Weights is not used: releases take ") +
+      (s.seeded ? "the seed points (Seed Source or Seed Type)."
+                : "the lattice's points (Release Pattern)."));
+  }
+  if (p.releasePattern != ReleasePattern::Lattice)
+  {
+    return std::string();
+  }
+  if (s.seeded)
+  {
+    r.warnings.push_back("Release Pattern = Lattice is not used: releases take the seed "
+                         "points (Seed Source or Seed Type).");
+    p.releasePattern = ReleasePattern::Random;
+    return std::string();
+  }
+  if (!(s.latticeSpacing >= 0.0) || !std::isfinite(s.latticeSpacing))
+  {
+    return "LatticeSpacing must be positive, or 0 for automatic (from Number Of Elements).";
+  }
+  std::array<float, 3> lo = p.emitterMin, hi = p.emitterMax;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (f.dims[a] <= 1)
+    {
+      lo[a] = hi[a] = float(f.bounds[2 * a]);
+    }
+  }
+  p.lattice = releaseLattice(lo, hi, p.numberOfElements, s.latticeSpacing);
+  p.numberOfElements = p.lattice.size();
+  return std::string();
+}
+
 /// The time the fastest flow takes to cross the field's longest side; 0 for a still field.
 double crossingTime(const FieldFacts& f)
 {
@@ -239,6 +278,11 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     {
       return failure(emitterError);
     }
+  }
+  const std::string latticeError = resolveLattice(s, f, r);
+  if (!latticeError.empty())
+  {
+    return failure(latticeError);
   }
   const std::string lifetimeError = resolveLifetimes(s, f, r);
   if (!lifetimeError.empty())

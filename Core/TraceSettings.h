@@ -44,6 +44,11 @@ struct TraceSettings
   /// Releases take a Seed Source's points: the emitter box and the minimum
   /// release speed are not used, so neither is checked.
   bool seeded = false;
+  /// Release Pattern = Lattice (engine.releasePattern): the lattice's
+  /// spacing in world units; 0: from numberOfElements and the emitter box.
+  double latticeSpacing = 0.0;
+  /// Release Weights is set (the warnings where it is not used).
+  bool weighted = false;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
   /// resolveSettings() fills in the rest of it.

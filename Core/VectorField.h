@@ -116,6 +116,8 @@ struct FieldSlice
   /// Per grid point as a cell's lowest corner: 1 where that cell is outside
   /// the flow's domain (DomainMask.h); null when no cell is.
   std::shared_ptr<const std::vector<std::uint8_t>> outsideCells;
+  /// Release Weights (ReleaseWeights.h): one per grid point, or null.
+  std::shared_ptr<const std::vector<float>> releaseWeights;
 };
 
 class VectorField

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 
 class vtkBoundParticleSeedType;
 
@@ -40,6 +41,8 @@ struct TracerConfig
   bool templateInput = false; ///< a template is connected (input 1)
   bool seedSource = false;    ///< a Seed Source is connected (input 2)
   VectorsChoice vectors;      ///< the Vectors property
+  /// Release Weights: the input's array to weigh releases by; empty for none.
+  std::string releaseWeights;
 
   bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
 };

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TracerParallel.h"
 
+#include "TracerReleaseWeights.h"
+
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkExtentTranslator.h"
@@ -469,7 +471,10 @@ bp::ReleaseMaskFunction PieceLayout::releaseMask() const
     this->Controller->AllReduce(
       mine.data(), unfit->data(), vtkIdType(mine.size()), vtkCommunicator::MAX_OP);
     const bool any = std::find(unfit->begin(), unfit->end(), 1) != unfit->end();
-    return bp::ReleaseMask{ whole, any ? unfit : nullptr };
+    // Release Weights over the whole field, as the mask (TracerReleaseWeights.h).
+    const auto weights = gatherReleaseWeights(
+      this->Controller, whole, local, shift, piece.firstSlice().releaseWeights);
+    return bp::ReleaseMask{ whole, any ? unfit : nullptr, weights };
   };
 }
 

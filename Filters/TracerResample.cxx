@@ -2,6 +2,7 @@
 #include "TracerResample.h"
 
 #include "Memory.h"
+#include "ReleaseWeights.h"
 #include "TracerGeometryKey.h"
 #include "TracerInput.h"
 #include "TracerParallel.h"
@@ -239,6 +240,24 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   this->interpolate(selected.blocks, selected.cellVectors, run, values);
   allReduce(controller, values, vtkCommunicator::SUM_OP);
   this->fillImage(values, image);
+  // Weights by the Vectors themselves are the resampled vectors' magnitude.
+  if (!this->WeightsName.empty() && this->WeightsName != this->ArrayName)
+  {
+    bool found = false;
+    this->interpolateWeights(selected.blocks, selected.cellVectors, run, values, found);
+    std::vector<int> any(1, found ? 1 : 0);
+    allReduce(controller, any, vtkCommunicator::MAX_OP);
+    allReduce(controller, values, vtkCommunicator::SUM_OP);
+    if (any[0] == 1)
+    {
+      // Absent otherwise, so the tracer says the input has no such array.
+      vtkNew<vtkFloatArray> weights;
+      weights->SetName(this->WeightsName.c_str());
+      weights->SetNumberOfTuples(vtkIdType(values.size()));
+      std::copy(values.begin(), values.end(), weights->GetPointer(0));
+      image->GetPointData()->AddArray(weights);
+    }
+  }
   return std::string();
 }
 
@@ -537,6 +556,55 @@ void FieldResampler::interpolate(const std::vector<vtkDataSet*>& blocks, bool ce
         {
           out[a] = float(sum[a]);
         }
+      }
+    });
+}
+
+void FieldResampler::interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
+  const bp::RangeRunner& run, std::vector<float>& values, bool& found) const
+{
+  std::vector<std::vector<float>> arrays(blocks.size());
+  found = false;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    vtkDataSetAttributes* attributes = cellVectors
+      ? static_cast<vtkDataSetAttributes*>(blocks[b]->GetCellData())
+      : blocks[b]->GetPointData();
+    vtkDataArray* array = attributes->GetArray(this->WeightsName.c_str());
+    const vtkIdType tuples =
+      cellVectors ? blocks[b]->GetNumberOfCells() : blocks[b]->GetNumberOfPoints();
+    std::vector<float> raw;
+    if (array && array->GetNumberOfTuples() == tuples)
+    {
+      copyToFloats(array, raw);
+      arrays[b] = bp::releaseWeightValues(raw, array->GetNumberOfComponents());
+      found = true;
+    }
+    else
+    {
+      arrays[b].assign(std::size_t(tuples), 0.0f); // a block without them weighs nothing
+    }
+  }
+  values.assign(this->Grid.pointCount(), 0.0f);
+  run(this->Samples.size(),
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t s = begin; s < end; ++s)
+      {
+        const Sample& sample = this->Samples[s];
+        const std::vector<float>& w = arrays[sample.block];
+        if (cellVectors)
+        {
+          values[sample.point] = w[std::size_t(sample.cell)];
+          continue;
+        }
+        double sum = 0.0;
+        for (std::uint32_t q = 0; q < sample.count; ++q)
+        {
+          sum += this->Weights[sample.first + q] *
+            double(w[std::size_t(this->WeightPoints[sample.first + q])]);
+        }
+        values[sample.point] = float(sum);
       }
     });
 }

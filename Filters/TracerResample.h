@@ -88,6 +88,10 @@ public:
   const std::string& arrayName() const { return this->ArrayName; }
   /// Forgets the kept weights.
   void clear();
+  /// Release Weights: the input's array (point data with point vectors,
+  /// cell data with cell vectors; its magnitude) that resample() also puts
+  /// on the grid under that name, one float per point; empty for none.
+  void setReleaseWeights(const std::string& name) { this->WeightsName = name; }
 
   /// About what resampling takes per grid point, while a grid is located.
   static const double BytesPerGridPoint;
@@ -126,6 +130,10 @@ private:
     vtkDataObject* input, const VectorsChoice& vectors, vtkMultiProcessController* controller);
   /// Grid: chooseResampleGrid() over every process's blocks; `thickness` is a
   /// surface's extent along its flat axis. Returns the error, if any.
+  /// The Release Weights interpolated onto the grid as the vectors are
+  /// (zero where a block lacks the array); `found` whether any block has it.
+  void interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
+    const bp::RangeRunner& run, std::vector<float>& values, bool& found) const;
   std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
     vtkMultiProcessController* controller, double& thickness);
   /// What a range of grid rows located in one block: its samples and their
@@ -163,6 +171,7 @@ private:
   std::vector<HashedArray> Hashed; ///< the arrays of the last key
   bool Kept = false;
   std::string ArrayName;
+  std::string WeightsName; ///< setReleaseWeights()
   std::vector<Sample> Samples;
   std::vector<vtkIdType> WeightPoints;
   std::vector<float> Weights;

@@ -5,6 +5,7 @@
 #include "vtkBoundParticleTracerInternals.h"
 
 #include "TracerInput.h"
+#include "TracerReleaseWeights.h"
 #include "VectorField.h"
 
 #include "vtkDataArray.h"
@@ -78,11 +79,28 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   {
     return error;
   }
+  if (!config.releaseWeights.empty())
+  {
+    this->takeReleaseWeights(config, input, slice);
+  }
   slice.time = this->sliceTime(input);
   const std::string kept = this->keepTimeStep(grid, offset, slice);
   // Each process checks its own piece (its velocities, its grid): one
   // process's failure must be every process's before the next collective step.
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
+}
+
+void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
+  const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
+{
+  // Collective in a distributed run, as every process reads in this pass.
+  const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights,
+    this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
+  if (!warning.empty() && !this->WarnedWeights)
+  {
+    this->WarnedWeights = true; // once per configuration, as the mask's
+    vtkWarningWithObjectMacro(this->Owner, << warning);
+  }
 }
 
 void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
@@ -127,6 +145,7 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
 {
   vtkNew<vtkImageData> whole;
   std::string warning;
+  this->Resampler.setReleaseWeights(config.releaseWeights);
   const std::string error = this->Resampler.resample(input, config.vectors,
     config.resampleDimensions, this->Layout.Controller, this->Steppers.runner(), whole, warning);
   if (!warning.empty() && !this->WarnedResample)

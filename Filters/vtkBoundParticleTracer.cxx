@@ -65,6 +65,8 @@ BP_CLAMPED_SETTER(ElementShape, int, POINT, FISH)
 BP_CLAMPED_SETTER(TemplateSprings, int, EDGES, ALL_PAIRS)
 BP_CLAMPED_SETTER(StepSizeUnit, int, CELL_LENGTH, TIME)
 BP_CLAMPED_SETTER(ReleaseOrientation, int, FIXED_ORIENTATION, ALONG_FLOW)
+BP_CLAMPED_SETTER(ReleasePattern, int, RANDOM_RELEASES, LATTICE_RELEASES)
+BP_CLAMPED_SETTER(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX)
 BP_CLAMPED_SETTER(Integrator, int, EULER, RUNGE_KUTTA_4)
 BP_CLAMPED_SETTER(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING)
 BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
@@ -74,6 +76,7 @@ BP_CLAMPED_SETTER(Linking, int, NO_LINKING, TORUS)
 BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
+BP_CLAMPED_SETTER(Anchor, int, NO_ANCHOR, ANCHOR_CENTRE)
 BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
 BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
@@ -136,7 +139,9 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
   s.trailLength = this->Trails ? this->TrailLength : 0;
   s.trailSpacing = this->TrailSpacing;
+  s.latticeSpacing = this->LatticeSpacing;
   bp::Parameters& p = s.engine;
+  p.releasePattern = bp::ReleasePattern(this->ReleasePattern);
   p.orientation = bp::Orientation(this->ReleaseOrientation);
   p.integrator = bp::Integrator(this->Integrator);
   p.restoration = bp::Restoration(this->Restoration);
@@ -149,6 +154,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = float(this->LinkStiffness);
   p.resetWhen = bp::ResetWhen(this->ResetWhen);
+  p.anchor = bp::Anchor(this->Anchor);
   if (this->ReleaseWindow)
   {
     p.releaseStart = this->ReleaseStart;
@@ -189,6 +195,13 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   c.vectors.association = vectors && vectors->Has(vtkDataObject::FIELD_ASSOCIATION())
     ? vectors->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  // Release Weights: input array 1, "None" (the panel's) or unset for none.
+  vtkInformation* weights = this->GetInputArrayInformation(1);
+  const char* weightsName = weights && weights->Has(vtkDataObject::FIELD_NAME())
+    ? weights->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  c.releaseWeights = weightsName && std::string(weightsName) != "None" ? weightsName : "";
+  c.trace.weighted = !c.releaseWeights.empty();
   return c;
 }
 
@@ -602,7 +615,10 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Integrator: " << this->Integrator << "\n";
   os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
      << "\n";
+  os << indent << "ReleasePattern: " << this->ReleasePattern << "\n";
+  os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
+  os << indent << "Anchor: " << this->Anchor << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
      << this->TrailSpacing << " steps)\n";

@@ -100,6 +100,16 @@ public:
     CENTER_LEAVES = 0,
     ANY_PARTICLE_LEAVES
   };
+  enum AnchorModes
+  {
+    NO_ANCHOR = 0,
+    ANCHOR_CENTRE
+  };
+  enum ReleasePatterns
+  {
+    RANDOM_RELEASES = 0,
+    LATTICE_RELEASES
+  };
   enum TemplateSpringModes
   {
     EDGES = 0,
@@ -222,6 +232,22 @@ public:
   ///@}
 
   ///@{
+  /// Where releases land in the emitter box: RANDOM_RELEASES (default),
+  /// uniform draws (weighted by the Release Weights array, when one is
+  /// chosen: SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+  /// name)); LATTICE_RELEASES, element e at point e of a regular lattice
+  /// filling the box (flat on a 2D field), release after release, with one
+  /// lifetime per generation. LatticeSpacing (world units) sets the lattice;
+  /// 0 (default) takes it from NumberOfElements, which is then the target
+  /// (the lattice's size is the element count). Clamped to [RANDOM_RELEASES,
+  /// LATTICE_RELEASES]; a value outside warns.
+  virtual void SetReleasePattern(int value);
+  vtkGetMacro(ReleasePattern, int);
+  virtual void SetLatticeSpacing(double value);
+  vtkGetMacro(LatticeSpacing, double);
+  ///@}
+
+  ///@{
   /// How each element is turned when it is placed: ALONG_FLOW (default), its
   /// long (x) axis turned onto the flow at its release centre by the
   /// shortest turn from ElementRotation, so that strips read as short stream
@@ -309,6 +335,16 @@ public:
   /// Clamped to [0.0, 1.0]; a value outside warns.
   virtual void SetLinkStiffness(double value);
   vtkGetMacro(LinkStiffness, double);
+  ///@}
+
+  ///@{
+  /// NO_ANCHOR: elements move with the flow. ANCHOR_CENTRE: each element is
+  /// moved back, after every step, so that its centre stays where it was
+  /// released; it still turns and deforms with the local flow (a vorticity
+  /// meter in place). Not with Linking (refused with a message).
+  /// Clamped to [NO_ANCHOR, ANCHOR_CENTRE]; a value outside warns.
+  virtual void SetAnchor(int value);
+  vtkGetMacro(Anchor, int);
   ///@}
 
   ///@{
@@ -506,6 +542,8 @@ protected:
   double EmitterCenter[3] = { 0.0, 0.0, 0.0 };
   double EmitterSize[3] = { -1.0, -1.0, -1.0 };
   int ReleaseOrientation = ALONG_FLOW;
+  int ReleasePattern = RANDOM_RELEASES;
+  double LatticeSpacing = 0.0;
   double ElementRotation[3] = { 0.0, 0.0, 0.0 };
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;
@@ -521,6 +559,7 @@ protected:
   int LatticeWidth = 0;
   double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
+  int Anchor = NO_ANCHOR;
   double MinimumReleaseSpeed = 0.01;
   int ReleaseWindow = 0;
   double ReleaseStart = 0.0;

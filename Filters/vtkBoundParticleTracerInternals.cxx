@@ -58,6 +58,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->WarnedNonFinite = false;
   this->WarnedMask = false;
   this->WarnedResample = false;
+  this->WarnedWeights = false;
   this->Steppers.invalidate();
 }
 

@@ -117,6 +117,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedNonFinite = false;  ///< the input's NaN share was reported for this configuration
   bool WarnedMask = false;       ///< an unusable vtkValidPointMask was reported for it
   bool WarnedResample = false;   ///< blocks without the Vectors were reported for it
+  bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
@@ -233,6 +234,9 @@ private:
   /// process's piece of the grid. Returns the error, if any.
   std::string resampleInput(
     const Config& config, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece);
+  /// Release Weights for `slice` from `input` (TracerReleaseWeights.h), and
+  /// their warning once per configuration.
+  void takeReleaseWeights(const Config& config, vtkDataObject* input, bp::FieldSlice& slice);
   /// The mask's and the NaNs' warnings, once per configuration.
   void warnOfSlice(const std::string& maskProblem, std::size_t nonFinite, std::size_t points);
   /// The time this pass's slice stands for; warns when upstream delivered another.

@@ -78,6 +78,22 @@ GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes)
   return GlTexture(name);
 }
 
+GlTexture makeFloatTexture3D(int nx, int ny, int nz, const float* rgb)
+{
+  // Made while a pass binds its textures: the active unit keeps its own.
+  GLint bound = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_3D, &bound);
+  GLuint name = 0;
+  glGenTextures(1, &name);
+  glBindTexture(GL_TEXTURE_3D, name);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  TightUnpack unpack;
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, nx, ny, nz, 0, GL_RGB, GL_FLOAT, rgb);
+  glBindTexture(GL_TEXTURE_3D, GLuint(bound));
+  return GlTexture(name);
+}
+
 GlTexture makeTexture2D(int width, int height, const float* data)
 {
   GlTexture texture = newTexture2D();

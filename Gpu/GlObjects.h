@@ -165,6 +165,11 @@ GlTexture makeTexture2D(int width, int height, const float* data = nullptr);
 /// sampled with texelFetch only: the cell masks.
 GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes);
 
+/// An RGB32F 3D texture of 3 floats per texel (x fastest), sampled with
+/// texelFetch only: Release Weights (GpuFieldCache::applyReleaseWeightsTo).
+/// The active unit's 3D texture stays bound.
+GlTexture makeFloatTexture3D(int nx, int ny, int nz, const float* rgb);
+
 /// A `width` x `height` texture of per-element values, 4 per element
 /// (element e at (e % width, e / width), so row-major texel order is element
 /// order), zero padded.

@@ -191,6 +191,34 @@ void GpuFieldCache::applyReleaseMaskTo(GpuPass& pass, float minSpeed)
   pass.setInt("bpReleaseMasked", masked ? 1 : 0);
   pass.texture("bpReleaseUnfit", masked ? this->ReleaseTexture.get() : this->NoOutsideTexture.get(),
     GL_TEXTURE_3D);
+  this->applyReleaseWeightsTo(pass);
+}
+
+void GpuFieldCache::applyReleaseWeightsTo(GpuPass& pass)
+{
+  const VectorField* field = this->Field.get();
+  const auto& values = field ? field->firstSlice().releaseWeights : nullptr;
+  if (values != this->WeightsFrom)
+  {
+    // Made once per time step's weights (ReleaseWeights.h).
+    this->WeightsFrom = values;
+    const auto weights = field ? releaseWeightsOf(field->grid(), values) : nullptr;
+    const auto& dims = field ? field->grid().dims : std::array<int, 3>{ 0, 0, 0 };
+    this->WeightsTexture = weights
+      ? makeFloatTexture3D(dims[0], dims[1], std::max(dims[2], 1), weights->triples().data())
+      : GlTexture();
+    this->WeightMax = weights ? weights->maximum() : 0.0f;
+  }
+  if (!this->NoWeightsTexture)
+  {
+    const float zero[3] = { 0, 0, 0 };
+    this->NoWeightsTexture = makeFloatTexture3D(1, 1, 1, zero);
+  }
+  const bool weighted = field && this->WeightsTexture;
+  pass.setInt("bpWeighted", weighted ? 1 : 0);
+  pass.setFloat("bpWeightMax", this->WeightMax);
+  pass.texture("bpReleaseWeights",
+    weighted ? this->WeightsTexture.get() : this->NoWeightsTexture.get(), GL_TEXTURE_3D);
 }
 
 GLuint GpuFieldCache::outsideTextureOf(const Slot& slot) const

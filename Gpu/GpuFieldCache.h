@@ -67,6 +67,9 @@ public:
   /// Binds where releases may not land (releaseUnfitCells of the current
   /// field at `minSpeed`, made once per field and speed) for the reset pass.
   void applyReleaseMaskTo(GpuPass& pass, float minSpeed);
+  /// Binds the current field's Release Weights (its first time step's), or
+  /// none (applyReleaseMaskTo calls it).
+  void applyReleaseWeightsTo(GpuPass& pass);
 
 private:
   /// A time step resident, or arriving a slab of z layers at a time. Held by
@@ -101,6 +104,10 @@ private:
   GlTexture NoOutsideTexture; ///< one cell, inside
   GlTexture ReleaseTexture;   ///< the release mask, or none
   ReleaseMaskSource ReleaseFrom;
+  GlTexture WeightsTexture;                              ///< (|w|, 0, 0) per grid point, or none
+  GlTexture NoWeightsTexture;                            ///< one point of weight 0
+  std::shared_ptr<const std::vector<float>> WeightsFrom; ///< what WeightsTexture was made from
+  float WeightMax = 0.0f;
   GlTexture AxesTexture; ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
   std::array<std::vector<float>, 3> AxesTables; ///< what AxesTexture was made from
   int Bins[3] = { 1, 1, 1 };

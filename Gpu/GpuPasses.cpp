@@ -189,6 +189,11 @@ GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& share
   pass.setFloat("bpLifetimeMin", p.lifetimeMin);
   pass.setFloat("bpLifetimeMax", p.lifetimeMax);
   pass.setInt("bpLinked", shared.linked ? 1 : 0);
+  const bool lattice = p.releasePattern == ReleasePattern::Lattice;
+  pass.setInt("bpLattice", lattice ? 1 : 0);
+  pass.setIVec3("bpLatticeCounts", p.lattice.counts[0], p.lattice.counts[1], p.lattice.counts[2]);
+  pass.setVec3("bpLatticeOrigin", p.lattice.origin.data());
+  pass.setVec3("bpLatticeSpacing", p.lattice.spacing.data());
   // Bound even when unused: an unbound sampler would share unit 0 with
   // samplers of other types, and GL refuses to draw.
   pass.texture("bpLatticeSites", shared.latticeSites);

@@ -43,6 +43,7 @@ void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLe
   this->poses.make(w, h);
   this->spins = makeTexture2D(w, h);
   this->matchCenters = makeTexture2D(w, h);
+  this->anchorShifts = makeTexture2D(w, h);
   for (GlTexture& texture : this->matchLinear)
   {
     texture = makeTexture2D(w, h);

@@ -99,6 +99,7 @@ public:
   TexturePair poses;                    ///< Engine::poses(): a quaternion
   GlTexture spins;                      ///< Engine::spins(): angular velocity, SpinVorticityRatio
   GlTexture matchCenters;               ///< shape matching: the fit's centre
+  GlTexture anchorShifts;               ///< Anchor = Centre: a step's move back to the anchor
   std::array<GlTexture, 2> matchLinear; ///< linear shape matching: the goal matrix, packed
 
   // A super set: per element its lattice site, its neighbours and link rest lengths.

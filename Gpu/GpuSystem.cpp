@@ -63,7 +63,7 @@ void GpuSystem::initialize(double startTime)
   // ... with no flag set and zero force, as Engine::initialize leaves them.
   const GLuint placed = this->state.advected.get();
   this->test(placed, true, 0.0, 0.0f);
-  this->finalize(placed);
+  this->finalize(placed, true);
   // Every spin 0 (the reset pass placed every pose), and no trail yet.
   const float zero[4] = { 0, 0, 0, 0 };
   this->passes.clearTexture(this->state.spins.get(), zero);
@@ -94,7 +94,7 @@ void GpuSystem::step(double t, double h)
   const VectorField* field = this->fieldCache.field();
   const float endWeight = field ? field->timeWeight(t + h) : 0.0f;
   this->test(positions, false, h, endWeight);
-  this->finalize(positions);
+  this->finalize(positions, false);
   // 6. Poses and spins.
   if (this->parameters.trackPoses)
   {
@@ -311,12 +311,22 @@ void GpuSystem::test(GLuint positions, bool settleOnly, double h, float endWeigh
     pass.texture("bpCenters", s.centers.current());
     pass.setFloat("bpEndWeight", endWeight);
   }
-  pass.runPerElement({ s.elements.next() });
+  if (this->anchored(settleOnly))
+  {
+    // Anchor = Centre: the test also writes each element's move to its anchor.
+    pass.setInt("bpAnchored", 1);
+    pass.runPerElement({ s.elements.next(), s.anchorShifts.get() });
+  }
+  else
+  {
+    pass.runPerElement({ s.elements.next() });
+  }
   s.elements.flip();
 }
 
-/// The new particle state from the restored positions.
-void GpuSystem::finalize(GLuint restored)
+/// The new particle state from the restored positions (anchored elements
+/// moved back to their anchors, unless `placed`: after initialisation).
+void GpuSystem::finalize(GLuint restored, bool placed)
 {
   GpuState& s = this->state;
   GpuPass pass = this->begin(this->passes.programs.finalize);
@@ -324,6 +334,11 @@ void GpuSystem::finalize(GLuint restored)
   pass.texture("bpAdvected", s.advected.get());
   pass.texture("bpBefore", s.before.get());
   pass.texture("bpElementState", s.elements.current());
+  if (this->anchored(placed))
+  {
+    pass.setInt("bpAnchored", 1);
+    pass.texture("bpShifts", s.anchorShifts.get());
+  }
   pass.runPerParticle({ s.particles.next() });
   s.particles.flip();
 }

@@ -73,7 +73,12 @@ private:
   GLuint runRestorationPass(const GpuPass& pass, int& restorationPass);
   /// `endWeight`: the second time step's weight at the step's end.
   void test(GLuint positions, bool settleOnly, double h, float endWeight);
-  void finalize(GLuint restored);
+  void finalize(GLuint restored, bool placed);
+  /// Whether a step (not the placing at initialisation) anchors elements.
+  bool anchored(bool placing) const
+  {
+    return !placing && this->parameters.anchor == Anchor::Centre;
+  }
   /// `endWeight`: as test()'s, for the curl at the centres.
   void updatePoses(double h, float endWeight);
 

@@ -91,6 +91,60 @@ bool bpSeedFits(vec3 c);
 uniform sampler2D bpSeedPoints;
 uniform int bpSeedCount; // 0: the emitter box
 
+// Release Pattern = Lattice (Core/ReleaseLattice.h): element e at point e,
+// x fastest; a generation's lifetime is element 0's.
+uniform bool bpLattice;
+uniform ivec3 bpLatticeCounts;
+uniform vec3 bpLatticeOrigin;
+uniform vec3 bpLatticeSpacing;
+
+vec3 bpLatticePoint(int e)
+{
+  int n = bpLatticeCounts.x * bpLatticeCounts.y * bpLatticeCounts.z;
+  int r = e % max(n, 1);
+  ivec3 i;
+  i.x = r % bpLatticeCounts.x;
+  r /= bpLatticeCounts.x;
+  i.y = r % bpLatticeCounts.y;
+  i.z = r / bpLatticeCounts.y;
+  return bpLatticeOrigin + vec3(i) * bpLatticeSpacing;
+}
+
+// Release Weights (Core/ReleaseWeights.h): (|w|, 0, 0) per grid point,
+// sampled as a time step; candidate k is taken with probability w / max.
+uniform sampler3D bpReleaseWeights;
+uniform bool bpWeighted;
+uniform float bpWeightMax;
+
+vec3 bpSampleSlice(sampler3D field, vec3 p);
+
+vec3 bpWeightedCenter(int e, float generation)
+{
+  vec3 best = vec3(0.0);
+  float bestWeight = -1.0;
+  vec3 c;
+  for (int k = 0; k < BP_RELEASE_TRIES; ++k)
+  {
+    c = bpCandidate(e, generation, k);
+    if (!bpSeedFits(c))
+    {
+      continue;
+    }
+    float w = bpSampleSlice(bpReleaseWeights, c).x;
+    // The acceptance draw weightDraw(k), after every candidate's (as bpCandidate's).
+    if (bpDraw(e, generation, uint(200 + k)) * bpWeightMax < w)
+    {
+      return c;
+    }
+    if (w > bestWeight)
+    {
+      bestWeight = w;
+      best = c;
+    }
+  }
+  return bestWeight >= 0.0 ? best : c;
+}
+
 vec3 bpCenterOf(int e, float generation)
 {
   if (bpLinked)
@@ -111,6 +165,14 @@ vec3 bpCenterOf(int e, float generation)
     }
     return c;
   }
+  if (bpLattice)
+  {
+    return bpLatticePoint(e);
+  }
+  if (bpWeighted)
+  {
+    return bpWeightedCenter(e, generation);
+  }
   vec3 c = bpCandidate(e, generation, 0);
   for (int k = 1; bpReleaseMasked && k < BP_RELEASE_TRIES && !bpReleaseFits(c); ++k)
   {
@@ -122,7 +184,7 @@ vec3 bpCenterOf(int e, float generation)
 float bpLifetimeOf(int e, float generation)
 {
   return bpLifetimeMin +
-    bpDraw(bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
+    bpDraw(bpLattice ? 0 : bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
 }
 
 // Rows of the rotation matrix of the unit quaternion (x, y, z, w)

@@ -5,6 +5,8 @@ uniform sampler2D bpRestored;
 uniform sampler2D bpAdvected;
 uniform sampler2D bpBefore;
 uniform sampler2D bpElementState; // after the test pass
+uniform bool bpAnchored;          // Anchor = Centre: move by the test pass's shift
+uniform sampler2D bpShifts;       // per element, from the test pass (anchored only)
 
 out vec4 outState;
 
@@ -24,5 +26,10 @@ void main()
   }
   vec3 q = texelFetch(bpRestored, texel, 0).xyz;
   vec3 d = q - texelFetch(bpAdvected, texel, 0).xyz;
+  if (bpAnchored)
+  {
+    // The force stays the restoration's: it is taken before the move.
+    q += texelFetch(bpShifts, bpElementTexel(e), 0).xyz;
+  }
   outState = vec4(q, sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
 }

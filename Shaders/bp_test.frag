@@ -23,8 +23,12 @@ bool bpReleasedStagnant(int e, vec4 state, vec3 c)
   return dot(d, d) < reach * reach && bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep;
 }
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
+// Anchor = Centre: the element is tested where it is moved back to, its
+// release centre, and the move is written for the finalize pass.
+uniform bool bpAnchored;
 
-out vec4 outState; // (lifetime, generation, flag, non-finite)
+layout(location = 0) out vec4 outState; // (lifetime, generation, flag, non-finite)
+layout(location = 1) out vec4 outShift; // anchored: the element's move (only then a target)
 
 void main()
 {
@@ -51,7 +55,22 @@ void main()
     anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
   }
   c /= float(bpParticles);
-  bool leave = !finite || (bpAnyParticle ? anyOutside : !bpInDomain(c, bpEndWeight)) ||
+  vec3 at = c;
+  if (bpAnchored)
+  {
+    // Engine::anchor: every particle moved by the release centre minus the
+    // mean; the release-speed test below still reads the mean the flow gave.
+    at = texelFetch(bpCenters, bpElementTexel(e), 0).xyz;
+    vec3 shift = at - c;
+    outShift = vec4(shift, 0.0);
+    anyOutside = false;
+    for (int i = 0; bpAnyParticle && i < bpParticles; ++i)
+    {
+      vec3 q = texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz + shift;
+      anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
+    }
+  }
+  bool leave = !finite || (bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight)) ||
     bpReleasedStagnant(e, state, c);
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure.

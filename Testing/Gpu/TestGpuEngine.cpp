@@ -9,6 +9,7 @@
 #include "GpuStepper.h"
 #include "HeadlessContext.h"
 #include "Pose.h"
+#include "ReleaseWeights.h"
 #include "WorkQueue.h"
 
 #include <gtest/gtest.h>
@@ -87,6 +88,10 @@ struct Case
   bool window = false;       // release only while 0.3 <= t <= 0.8
   bool poses = false;        // Parameters::trackPoses, and a trail of 4 poses every 3 steps
   bp::Orientation orientation = bp::Orientation::Random;
+  bool anchored = false; // Anchor = Centre
+  bool lattice = false;  // Release Pattern = Lattice (elements: the lattice's size)
+  bool weighted = false; // Release Weights |x - 0.2|
+  bool flat = false;     // a flat field (one z point), steady
 };
 
 /// The largest difference of a quaternion's components, taking the GPU's q
@@ -213,6 +218,15 @@ bp::FieldSlice withOutsideBlock(bp::FieldSlice s, const bp::GridGeometry& g)
   return s;
 }
 
+/// Release Weights |x - 0.2| per point of g (ReleaseWeights.h).
+std::shared_ptr<const std::vector<float>> releaseWeightsOn(const bp::GridGeometry& g)
+{
+  std::vector<float> w(g.pointCount());
+  for (std::size_t q = 0; q < w.size(); ++q)
+    w[q] = float(g.coordinate(0, int(q % std::size_t(g.dims[0])))) - 0.2f;
+  return std::make_shared<const std::vector<float>>(bp::releaseWeightValues(w, 1));
+}
+
 /// Releases an engine's GL objects when it goes out of scope (the shared
 /// context is current throughout the tests).
 struct Released
@@ -228,7 +242,10 @@ void compare(const Case& c, int steps, bool pinSome = false)
   const bool unsteady = c.unsteady;
   const std::array<double, 6> box = unsteady ? std::array<double, 6>{ 0, 2, 0, 1, 0, 0.25 }
                                              : std::array<double, 6>{ -1, 1, -1, 1, -1, 1 };
-  bp::GridGeometry g = unsteady ? grid(41, 21, 6, box) : grid(24, 24, 24, box);
+  const std::array<double, 6> flatBox{ -1, 1, -1, 1, 0, 0 };
+  bp::GridGeometry g = unsteady ? grid(41, 21, 6, box)
+    : c.flat                    ? grid(24, 24, 1, flatBox)
+                                : grid(24, 24, 24, box);
   if (c.rectilinear)
   {
     stretch(g, 1, 1.7);
@@ -245,6 +262,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
     if (unsteady)
       second = withOutsideBlock(second, g);
   }
+  if (c.weighted)
+    first.releaseWeights = releaseWeightsOn(g);
   const bp::VectorField field =
     unsteady ? bp::VectorField(g, first, second) : bp::VectorField(g, first);
 
@@ -256,8 +275,14 @@ void compare(const Case& c, int steps, bool pinSome = false)
     // A super set's lattice spans the emitter; inset, so it starts inside.
     const float inset =
       c.linking == bp::Linking::None ? 0.0f : 0.2f * float(box[2 * a + 1] - box[2 * a]);
-    p.emitterMin[a] = float(box[2 * a]) + inset;
-    p.emitterMax[a] = float(box[2 * a + 1]) - inset;
+    p.emitterMin[a] = float((c.flat ? flatBox : box)[2 * a]) + inset;
+    p.emitterMax[a] = float((c.flat ? flatBox : box)[2 * a + 1]) - inset;
+  }
+  if (c.lattice)
+  {
+    p.releasePattern = bp::ReleasePattern::Lattice;
+    p.lattice = bp::releaseLattice(p.emitterMin, p.emitterMax, c.elements, 0.0);
+    ASSERT_EQ(p.lattice.size(), c.elements) << "a lattice of another size";
   }
   p.lifetimeMin = 0.3f;
   p.lifetimeMax = 1.2f; // several resets per element in 200 steps
@@ -293,6 +318,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.trailInterval = 3 * dt;
   }
   p.orientation = c.orientation;
+  if (c.anchored)
+    p.anchor = bp::Anchor::Centre;
   if (c.planeAxis >= 0)
   {
     p.planeAxis = c.planeAxis;
@@ -309,7 +336,8 @@ void compare(const Case& c, int steps, bool pinSome = false)
   bp::Engine cpu;
   ASSERT_EQ(cpu.configure(shape, p), "");
   // What CpuStepper::setField gives the engine; the GPU makes its own.
-  cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed));
+  cpu.setReleaseMask(g, bp::releaseUnfitCells(field, p.releaseMinSpeed),
+    bp::releaseWeightsOf(g, first.releaseWeights));
   cpu.initialize(bp::serialRunner(), 0.0, &field);
   bp::GpuEngine gpu;
   const Released released{ gpu }; // also when an assertion returns early
@@ -381,11 +409,29 @@ void compare(const Case& c, int steps, bool pinSome = false)
     unsteady ? "unsteady" : "steady", worst, tolerance);
   if (c.rectilinear)
     std::printf("  on a rectilinear grid\n");
-  if (c.window)
-    std::printf("  released in [0.3, 0.8]: %d hidden at the end\n", hiddenCount);
+  if (c.window || c.lattice)
+    std::printf("  %d hidden at the end\n", hiddenCount);
   if (c.linking != bp::Linking::None)
     std::printf(
       "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
+  if (c.anchored)
+  {
+    // Every element's mean, on both engines, at its generation's release centre.
+    const std::size_t n = shape.particleCount();
+    double worstAnchor = 0.0;
+    const std::vector<float>* both[] = { &positions, &cpu.positions() };
+    for (const std::vector<float>* x : both)
+      for (std::size_t e = 0; e < c.elements; ++e)
+        for (int k = 0; k < 3; ++k)
+        {
+          double mean = 0.0;
+          for (std::size_t i = 0; i < n; ++i)
+            mean += (*x)[3 * (e * n + i) + std::size_t(k)] / double(n);
+          worstAnchor = std::max(worstAnchor, std::abs(mean - cpu.initialCenters()[3 * e + k]));
+        }
+    std::printf("  anchored: centres within %.3g of their release centres\n", worstAnchor);
+    EXPECT_LT(worstAnchor, 1e-6 * g.diagonal());
+  }
   // Untracked, the poses stay as placed and the spins 0 on both engines.
   comparePoses(cpu, gpu, field, steps * dt, dt);
   if (c.poses)
@@ -523,6 +569,85 @@ TEST(GpuEngine, MatchesWithASeedSource)
   compare(c, 150);
 }
 
+TEST(GpuEngine, MatchesWithLatticeReleases)
+{
+  // Every element on its lattice point, release after release (resets as
+  // elements leave, die and start in slow flow), hidden where the mask
+  // leaves its point unfit; on a flat field, a flat lattice.
+  Case c{ bp::BuiltinShape::Cross, 343, bp::Integrator::RK2, bp::Restoration::ShapeMatching,
+    false };
+  c.lattice = true;
+  compare(c, 150);
+  c.masked = true;
+  compare(c, 150);
+  c.window = true;
+  compare(c, 100);
+  Case flat{ bp::BuiltinShape::Strip8, 400, bp::Integrator::Euler, bp::Restoration::AveragedJacobi,
+    false };
+  flat.lattice = true;
+  flat.flat = true;
+  flat.planeAxis = 2;
+  compare(flat, 150);
+}
+
+TEST(GpuEngine, MatchesWithReleaseWeights)
+{
+  // The same candidates accepted on both engines, with and without a mask,
+  // on a steady and an unsteady field.
+  Case c{ bp::BuiltinShape::Strip8, 400, bp::Integrator::RK2, bp::Restoration::AveragedJacobi,
+    false };
+  c.weighted = true;
+  compare(c, 150);
+  c.masked = true;
+  compare(c, 0); // placement alone
+  compare(c, 150);
+  Case unsteady{ bp::BuiltinShape::Cross, 300, bp::Integrator::Euler,
+    bp::Restoration::ShapeMatching, true };
+  unsteady.weighted = true;
+  compare(unsteady, 150);
+}
+
+TEST(GpuEngine, ReleaseWeightsShapeTheReleasesHistogram)
+{
+  // 20,000 releases on the GPU engine with weights |x - 0.2| on [-1, 1]:
+  // ten bins along x against the weights' integral over each.
+  ASSERT_NE(context(), nullptr);
+  const std::array<double, 6> box{ -1, 1, -1, 1, -1, 1 };
+  const bp::GridGeometry g = grid(21, 3, 3, box);
+  bp::FieldSlice s = slice(bp::AnalyticFlow::SolidBodyRotation, g, 0.0);
+  s.releaseWeights = releaseWeightsOn(g);
+  const bp::VectorField field(g, s);
+  bp::Parameters p;
+  p.numberOfElements = 20000;
+  p.elementSize = 0.05f;
+  p.emitterMin = { -1, -1, -1 };
+  p.emitterMax = { 1, 1, 1 };
+  bp::GpuEngine gpu;
+  const Released released{ gpu };
+  ASSERT_EQ(gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  ASSERT_EQ(gpu.setField(field), "");
+  gpu.initialize();
+  std::vector<float> lifetimes, generations, centers;
+  gpu.readElements(&lifetimes, &generations, &centers);
+  std::vector<double> counts(10, 0.0);
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    counts[std::size_t(std::min(std::max(int((centers[3 * e] + 1.0f) * 5.0f), 0), 9))] += 1.0;
+  // The integral of |x - 0.2| from -1: (x - 0.2)|x - 0.2| / 2 + 0.72; 1.04 in all.
+  auto F = [](double x) { return 0.5 * (x - 0.2) * std::abs(x - 0.2) + 0.72; };
+  double chi = 0.0, chiUniform = 0.0;
+  for (int b = 0; b < 10; ++b)
+  {
+    const double m = (F(-0.8 + 0.2 * b) - F(-1.0 + 0.2 * b)) / 1.04 * double(p.numberOfElements);
+    chi += (counts[b] - m) * (counts[b] - m) / m;
+    chiUniform += (counts[b] - 2000.0) * (counts[b] - 2000.0) / 2000.0;
+  }
+  std::printf("GPU release histogram: chi-square %.3g against the weights, %.3g against "
+              "uniform\n",
+    chi, chiUniform);
+  EXPECT_LT(chi, 27.9); // 9 degrees of freedom, 99.9%
+  EXPECT_GT(chiUniform, 1000.0);
+}
+
 TEST(GpuEngine, MatchesWithLinearShapeMatching)
 {
   // A solid template (full-rank moment) and a flat one (pseudo-inverse).
@@ -590,6 +715,29 @@ TEST(GpuEngine, PosesSpinsAndTrailsMatchTheCpuEngine)
     SCOPED_TRACE(bp::builtinTemplate(c.shape).name);
     c.poses = true;
     compare(c, 200);
+  }
+}
+
+TEST(GpuEngine, AnchoredElementsMatchTheCpuEngine)
+{
+  // Anchor = Centre with poses and trails: shape matching on the unsteady
+  // double gyre, springs in steady solid-body rotation, and with cells
+  // outside the domain, stagnant releases retried and Any Particle Leaves
+  // (the particle test after the move back, the release speed before it).
+  Case gyre{ bp::BuiltinShape::Paddlewheel, 300, bp::Integrator::RK2,
+    bp::Restoration::ShapeMatching, true };
+  Case rotation{ bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    false };
+  Case masked{ bp::BuiltinShape::Strip8, 300, bp::Integrator::Euler,
+    bp::Restoration::AveragedJacobi, true };
+  masked.masked = true;
+  masked.anyParticle = true;
+  for (Case c : { gyre, rotation, masked })
+  {
+    SCOPED_TRACE(bp::builtinTemplate(c.shape).name);
+    c.anchored = true;
+    c.poses = true;
+    compare(c, 150);
   }
 }
 

@@ -329,6 +329,142 @@ TEST_P(Physics, SolidBodyRotationSpinsEveryElementAtTheFieldsRate)
   }
 }
 
+// Anchor = Centre in solid-body rotation: an element released off the axis
+// keeps its centre where it was placed (to float rounding) and still turns
+// at the field's rate, its spin (0, 0, 1) as a free element's; its pose is
+// the placed one turned by the time elapsed.
+TEST_P(Physics, AnchoredElementsKeepTheirCentresAndSpinAtTheFieldsRate)
+{
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
+  for (auto shape : { bp::BuiltinShape::Cross, bp::BuiltinShape::Paddlewheel })
+  {
+    const bp::ElementTemplate element = bp::builtinTemplate(shape);
+    SCOPED_TRACE(element.name);
+    const std::size_t n = element.particleCount();
+    // Off the axis: centres 0.3 to 0.6 from it, where a free element would
+    // travel 0.5 to 0.9 in the quarter turn below.
+    bp::Parameters p = placed(20, 0.25f, { 0.3f, -0.2f, -0.3f }, { 0.6f, 0.2f, 0.3f });
+    p.integrator = bp::Integrator::RK4; // randomly oriented
+    p.trackPoses = true;
+    p.anchor = bp::Anchor::Centre;
+    if (shape == bp::BuiltinShape::Paddlewheel)
+      p.restoration = bp::Restoration::ShapeMatching;
+    System system(GetParam(), element, p, field);
+    const std::vector<float> x0 = system.positions();
+    const std::vector<float> start = system.poses();
+    const int steps = 100;
+    const double dt = 2 * Pi / 400;
+    double worstShift = 0.0, worstSpin = 0.0;
+    for (int s = 0; s < steps; ++s)
+    {
+      system.step(s * dt, dt);
+      const std::vector<float> x = system.positions();
+      const std::vector<float> spins = system.spins();
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      {
+        const std::array<float, 3> c = centerOf(x, e, n), c0 = centerOf(x0, e, n);
+        worstShift =
+          std::max(worstShift, double(std::hypot(c[0] - c0[0], c[1] - c0[1], c[2] - c0[2])));
+        const float* w = &spins[4 * e];
+        worstSpin = std::max(worstSpin, std::hypot(w[0], w[1], w[2] - 1.0));
+      }
+    }
+    const std::vector<float> poses = system.poses();
+    double worstPose = 0.0;
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      worstPose = std::max(
+        worstPose, rotationDistance(&poses[4 * e], turnedAboutZ(&start[4 * e], steps * dt)));
+    std::printf("%s %s anchored: centres within %.2e of their release, spins within %.2e of "
+                "(0, 0, 1), poses within %.2e\n",
+      GetParam() ? "GPU" : "CPU", element.name.c_str(), worstShift, worstSpin, worstPose);
+    EXPECT_LT(worstShift, 1e-5);
+    EXPECT_LE(worstSpin, 0.02);
+    EXPECT_LT(worstPose, 1e-4);
+  }
+}
+
+// Anchor = Centre in the shear layer: anchored paddlewheels turn in place at
+// half the local vorticity, as free ones released with them do while they
+// drift downstream: the two differ in where they are, not in how they turn.
+TEST_P(Physics, AnchoredPaddlewheelsTurnInPlaceAtHalfTheVorticity)
+{
+  // u(z) = 1.25 - z^2 on z in [-1, 1]: vorticity du/dz = -2z about +y.
+  const bp::VectorField field =
+    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  for (float level : { 0.5f, -0.5f })
+  {
+    bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
+    p.orientation = bp::Orientation::Fixed;
+    p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
+    p.restoration = bp::Restoration::ShapeMatching;
+    p.integrator = bp::Integrator::RK4;
+    p.trackPoses = true;
+    bp::Parameters anchoredParameters = p;
+    anchoredParameters.anchor = bp::Anchor::Centre;
+    const bp::ElementTemplate wheel = bp::builtinTemplate(bp::BuiltinShape::Paddlewheel);
+    System free(GetParam(), wheel, p, field);
+    System anchored(GetParam(), wheel, anchoredParameters, field);
+    const std::vector<float> x0 = anchored.positions();
+    const int steps = 400;
+    const double dt = 0.01;
+    auto angles = [&](const std::vector<float>& x)
+    {
+      std::vector<double> a(p.numberOfElements);
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+        a[e] = angleOf(x, e * 8, 0, 3, 0, 2); // a diagonal in the x-z plane
+      return a;
+    };
+    std::vector<double> lastFree = angles(free.positions()), lastAnchored = angles(x0);
+    double turnedFree = 0.0, turnedAnchored = 0.0;
+    for (int s = 0; s < steps; ++s)
+    {
+      free.step(s * dt, dt);
+      anchored.step(s * dt, dt);
+      const std::vector<double> nowFree = angles(free.positions());
+      const std::vector<double> nowAnchored = angles(anchored.positions());
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+      {
+        turnedFree += unwrap(nowFree[e] - lastFree[e]) / (steps * dt * p.numberOfElements);
+        turnedAnchored +=
+          unwrap(nowAnchored[e] - lastAnchored[e]) / (steps * dt * p.numberOfElements);
+      }
+      lastFree = nowFree;
+      lastAnchored = nowAnchored;
+    }
+    const std::vector<float> xFree = free.positions(), xAnchored = anchored.positions();
+    double worstShift = 0.0, leastDrift = 1e9, worstSpin = 0.0;
+    const std::vector<float> spins = anchored.spins();
+    for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    {
+      const std::array<float, 3> c = centerOf(xAnchored, e, 8), c0 = centerOf(x0, e, 8);
+      const std::array<float, 3> f = centerOf(xFree, e, 8);
+      worstShift =
+        std::max(worstShift, double(std::hypot(c[0] - c0[0], c[1] - c0[1], c[2] - c0[2])));
+      leastDrift = std::min(leastDrift, double(f[0] - c0[0]));
+      // The spin over the last step: half the curl at the anchor.
+      float v[3], curl[3];
+      field.sampleWithCurl(c0.data(), 0.0f, v, curl);
+      const float* w = &spins[4 * e];
+      worstSpin = std::max(worstSpin,
+        std::hypot(w[0] - 0.5 * curl[0], w[1] - 0.5 * curl[1], w[2] - 0.5 * curl[2]) /
+          (0.5 * std::hypot(curl[0], curl[1], curl[2])));
+    }
+    const double halfVorticity = -level; // (du/dz) / 2 = -z
+    std::printf("%s: at z = %+.1f anchored paddlewheels turn at %+.4f rad/time, free ones at "
+                "%+.4f (half the vorticity %+.4f); anchored centres within %.2e, free ones "
+                "drifted at least %.3f; anchored spins within %.2f%% of half the curl\n",
+      GetParam() ? "GPU" : "CPU", level, turnedAnchored, turnedFree, halfVorticity, worstShift,
+      leastDrift, 100 * worstSpin);
+    EXPECT_NEAR(turnedAnchored, halfVorticity, 0.1 * std::abs(halfVorticity)) << "z = " << level;
+    EXPECT_NEAR(turnedFree, halfVorticity, 0.1 * std::abs(halfVorticity)) << "z = " << level;
+    EXPECT_NEAR(turnedAnchored, turnedFree, 0.02 * std::abs(halfVorticity)) << "z = " << level;
+    EXPECT_LT(worstShift, 1e-5) << "z = " << level;
+    EXPECT_GT(leastDrift, 0.9 * steps * dt * (1.25 - level * level)) << "z = " << level;
+    EXPECT_LT(worstSpin, 0.1) << "z = " << level;
+  }
+}
+
 // An element of one particle has no orientation: its pose stays the identity
 // and its spin 0, however it was placed (random orientations) and replaced.
 TEST_P(Physics, OneParticleElementsHaveNoPoseOrSpin)

@@ -87,11 +87,36 @@ def placement_traces():
                                  Seed=6, Trails=1, TrailLength=3, TrailSpacing=2)
     trails.OutputArrays = list(trails.OutputArrays) + ["ElementSpin"]
     cases["trails"] = (trails, [0.5, 1.0])
+    # Anchor = Centre: elements held at their release centres, turning, and
+    # released again (in another piece) as their short lives end.
+    anchored = BoundParticleTracer(Input=hurricane, ElementShape="Paddlewheel",
+                                   NumberOfElements=400, Seed=8, Anchor="Centre",
+                                   Restoration="Shape Matching", LifetimeRange=[0.3, 0.6])
+    anchored.OutputArrays = list(anchored.OutputArrays) + ["ElementSpin"]
+    cases["anchored"] = (anchored, [0.5, 1.0])
     # A release window: hidden elements cross pieces and are released together.
     cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,
                                            ReleaseStart=0.3, ReleaseStop=0.6,
                                            LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
+    # Lattice releases: element ids are global, so every process computes the
+    # same point; points in the stagnant core are never shown.
+    cases["lattice"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                            NumberOfElements=700, Seed=5, ReleasePattern="Lattice",
+                                            LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
+    # Release Weights: every process draws against the whole field's weights,
+    # on an image and through a resampled mesh.
+    weights = updated(Calculator(Input=hurricane, ResultArrayName="w", Function="coordsX+1"))
+    cases["weighted"] = (BoundParticleTracer(Input=weights, ElementShape="Cross",
+                                             NumberOfElements=600, Seed=5,
+                                             Vectors=["POINTS", "velocity"],
+                                             ReleaseWeights=["POINTS", "w"],
+                                             LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
+    weighted_hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=weights)))
+    cases["weighted_mesh"] = (BoundParticleTracer(
+        Input=weighted_hexes, ElementShape="Cross", NumberOfElements=400, Seed=5,
+        Vectors=["POINTS", "velocity"], ReleaseWeights=["POINTS", "w"],
+        ResampleDimensions=[24, 24, 24], LifetimeRange=[0.2, 0.4]), [0.5, 1.0])
     far = updated(AnalyticFlow(Flow="ABC", Resolution=[48, 12, 10],
                                Bounds=[1e6, 1e6 + 4, -2e6, -2e6 + 1, 5e5, 5e5 + 0.8]))
     cases["far_x"] = (BoundParticleTracer(Input=far, ElementShape="Strip4", NumberOfElements=600,

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Release Weights (ReleaseWeights.h): the weights as a field the engine
+// samples exactly as it samples the flow, so both engines agree.
+#include "ReleaseWeights.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bp
+{
+
+ReleaseWeights::ReleaseWeights(const GridGeometry& grid, const std::vector<float>& values)
+  : Triples(std::make_shared<std::vector<float>>(3 * values.size(), 0.0f))
+{
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    const float w = std::isfinite(values[i]) ? std::abs(values[i]) : 0.0f;
+    (*this->Triples)[3 * i] = w;
+    this->Maximum = std::max(this->Maximum, w);
+  }
+  FieldSlice slice;
+  slice.velocity = this->Triples;
+  this->Field.reset(new VectorField(grid, slice));
+}
+
+float ReleaseWeights::at(const float p[3]) const
+{
+  float v[3];
+  this->Field->sampleWeighted(p, 0.0f, v);
+  return v[0];
+}
+
+std::vector<float> releaseWeightValues(const std::vector<float>& values, int components)
+{
+  const std::size_t n = components > 0 ? values.size() / std::size_t(components) : 0;
+  std::vector<float> out(n, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    double sum = 0.0;
+    for (int k = 0; k < components; ++k)
+    {
+      const double x = values[i * std::size_t(components) + std::size_t(k)];
+      sum += x * x;
+    }
+    // One component keeps its own value's magnitude, to the bit.
+    const float w = components == 1 ? std::abs(values[i]) : float(std::sqrt(sum));
+    out[i] = std::isfinite(w) ? w : 0.0f;
+  }
+  return out;
+}
+
+std::shared_ptr<const ReleaseWeights> releaseWeightsOf(
+  const GridGeometry& grid, const std::shared_ptr<const std::vector<float>>& values)
+{
+  if (!values || values->size() != grid.pointCount() || values->empty())
+  {
+    return nullptr;
+  }
+  auto weights = std::make_shared<const ReleaseWeights>(grid, *values);
+  return weights->maximum() > 0.0f ? weights : nullptr;
+}
+
+} // namespace bp

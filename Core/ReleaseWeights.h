@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ReleaseWeights.h
+ * @brief Release Weights: release centres drawn in proportion to |w|, w any
+ * point array of the input, by rejection (Engine::releaseCenter).
+ *
+ * The weights are one float per grid point of the field (FieldSlice::
+ * releaseWeights), their absolute value with NaN and Inf as 0. A candidate
+ * centre c of a release is accepted when it fits and u * maximum < w(c), w
+ * trilinear at c as the velocity is (VectorField::sampleWeighted) and u the
+ * release's draw weightDraw(k): up to ReleaseTries candidates, then the
+ * fitting one of the largest weight seen. The GPU engine holds the same
+ * (w, 0, 0) per point as a 3D texture and samples it as a time step
+ * (bpSampleSlice), so both engines accept the same candidates.
+ */
+#ifndef BoundParticles_ReleaseWeights_h
+#define BoundParticles_ReleaseWeights_h
+
+#include "VectorField.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace bp
+{
+
+/// The draw of the acceptance test of a release's k-th candidate: after
+/// every candidate's (candidateDraw(ReleaseTries - 1) + 2 = 199).
+constexpr std::uint32_t weightDraw(int k)
+{
+  return std::uint32_t(200 + k);
+}
+
+class ReleaseWeights
+{
+public:
+  /// `values`: one weight per point of `grid` (already |w|, finite).
+  ReleaseWeights(const GridGeometry& grid, const std::vector<float>& values);
+
+  /// The largest weight (> 0 for weights that may be used).
+  float maximum() const { return this->Maximum; }
+  /// The weight at p, trilinear in the cell that holds p.
+  float at(const float p[3]) const;
+  /// (w, 0, 0) per grid point: what the GPU engine uploads.
+  const std::vector<float>& triples() const { return *this->Triples; }
+
+private:
+  std::shared_ptr<std::vector<float>> Triples;
+  std::unique_ptr<VectorField> Field;
+  float Maximum = 0.0f;
+};
+
+/**
+ * Per point, |value| of a `components`-component array (its magnitude for
+ * more than one), NaN and Inf as 0: what FieldSlice::releaseWeights holds.
+ */
+std::vector<float> releaseWeightValues(const std::vector<float>& values, int components);
+
+/**
+ * The release weights `values` (releaseWeightValues: one per point of
+ * `grid`, the field's or the whole field's of a distributed run); null when
+ * there are none, they do not fit the grid, or none is above 0 (releases
+ * are then uniform: the filter warns).
+ */
+std::shared_ptr<const ReleaseWeights> releaseWeightsOf(
+  const GridGeometry& grid, const std::shared_ptr<const std::vector<float>>& values);
+
+} // namespace bp
+
+#endif
