@@ -45,6 +45,12 @@ public:
   /// How many directions the template spans (0 to 3).
   int span() const { return this->Span; }
 
+  /// The rest positions about their mean, scaled by the size, in template
+  /// order: what the GPU display's draw shader fits against.
+  const std::vector<std::array<double, 3>>& centred() const { return this->Centred; }
+  /// Aqq^+ over the span (row-major; symmetric), for the same fit on the GPU.
+  const double* restMomentPseudoInverse() const { return this->B; }
+
 private:
   std::vector<std::array<double, 3>> Centred; ///< rest positions about their mean, scaled
   double B[9] = {};                           ///< Aqq^+ (row-major), over the span

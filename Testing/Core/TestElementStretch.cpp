@@ -184,3 +184,33 @@ TEST(ElementStretch, DrawnLifetimeLessTheRemainingIsTheAge)
   }
   EXPECT_GT(renewed, int(p.numberOfElements)); // every element lived several lives
 }
+
+// What the GPU display's draw shader fits against: the rest offsets about
+// their mean at the element size, and Aqq^+ (symmetric, a projector onto the
+// span when multiplied by Aqq).
+TEST(ElementStretch, TheFitsTablesAreTheTemplatesMoments)
+{
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  const double size = 0.25;
+  const bp::StretchFit fit(cross.rest, size);
+  ASSERT_EQ(fit.centred().size(), cross.rest.size());
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d Aqq = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < cross.rest.size(); ++i)
+  {
+    const auto& q = fit.centred()[i];
+    const Eigen::Vector3d v(q[0], q[1], q[2]);
+    sum += v;
+    Aqq += v * v.transpose();
+  }
+  EXPECT_LT(sum.norm(), 1e-12);
+  // Offsets between particles are the template's, scaled.
+  EXPECT_NEAR(fit.centred()[1][0] - fit.centred()[0][0],
+    size * (double(cross.rest[1][0]) - double(cross.rest[0][0])), 1e-12);
+  const Eigen::Matrix3d B =
+    Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(fit.restMomentPseudoInverse());
+  EXPECT_LT((B - B.transpose()).norm(), 1e-9 * B.norm());
+  const Eigen::Matrix3d P = B * Aqq; // the projector onto the span: trace = span
+  EXPECT_NEAR(P.trace(), 2.0, 1e-9);
+  EXPECT_LT((P * P - P).norm(), 1e-9);
+}
