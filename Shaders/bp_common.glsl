@@ -25,30 +25,6 @@ bool bpParticleOf(ivec2 texel, out int e, out int i)
   return i < bpParticles && e < bpElements && block.x < bpBlocksPerRow;
 }
 
-// ---- Counter-based random numbers (Core/CounterHash.h) ----------------------
-uint bpHash(uint seed, uint element, uint generation, uint draw)
-{
-  uvec4 v = uvec4(seed, element, generation, draw) * 1664525u + 1013904223u;
-  v.x += v.y * v.w;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  v.w += v.y * v.z;
-  v ^= v >> 16u;
-  v.x += v.y * v.w;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  v.w += v.y * v.z;
-  return v.x;
-}
-
-uniform uint bpSeed;
-
-float bpDraw(int e, float generation, uint draw)
-{
-  uint h = bpHash(bpSeed, uint(e), uint(generation), draw);
-  return float(h >> 8u) * (1.0 / 16777216.0);
-}
-
 // ---- Placement (Engine::place) --------------------------------------------
 uniform vec3 bpEmitterMin;
 uniform vec3 bpEmitterMax;
@@ -57,17 +33,9 @@ uniform int bpOrientation; // Parameters::orientation: 0 Fixed, 1 Random, 2 Alon
 uniform vec3 bpFrameRow0;
 uniform vec3 bpFrameRow1;
 uniform vec3 bpFrameRow2;
-uniform float bpLifetimeMin;
-uniform float bpLifetimeMax;
-// A super set (Core/SuperSet.h) is released as one: every element draws as
-// element 0 does and sits at its lattice site.
-uniform bool bpLinked;
+// A super set (Core/SuperSet.h) is released as one (bpLinked and
+// bpDrawElement are in bp_shared.glsl): every element sits at its lattice site.
 uniform sampler2D bpLatticeSites; // per element: the lattice site
-
-int bpDrawElement(int e)
-{
-  return bpLinked ? 0 : e;
-}
 
 // Engine::releaseCenter: candidate k of a release (candidateDraw).
 vec3 bpCandidate(int e, float generation, int k)
@@ -93,7 +61,7 @@ uniform int bpSeedCount; // 0: the emitter box
 
 // Release Pattern = Lattice (Core/ReleaseLattice.h): element e at point e,
 // x fastest; a generation's lifetime is element 0's.
-uniform bool bpLattice;
+// (bpLattice is in bp_shared.glsl.)
 uniform ivec3 bpLatticeCounts;
 uniform vec3 bpLatticeOrigin;
 uniform vec3 bpLatticeSpacing;
@@ -179,12 +147,6 @@ vec3 bpCenterOf(int e, float generation)
     c = bpCandidate(e, generation, k);
   }
   return c;
-}
-
-float bpLifetimeOf(int e, float generation)
-{
-  return bpLifetimeMin +
-    bpDraw(bpLattice ? 0 : bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
 }
 
 // Rows of the rotation matrix of the unit quaternion (x, y, z, w)

@@ -1,6 +1,6 @@
 // What the GPU engine's passes and the draw shader share: where an element
-// and a particle sit in the engine's textures, and a particle's normal from
-// its triangles. A pass has it before bp_common.glsl (Gpu/ShaderSource.cpp);
+// and a particle sit in the engine's textures, a particle's normal from its
+// triangles, and the lifetime an element is drawn (the draw's age colouring). A pass has it before bp_common.glsl (Gpu/ShaderSource.cpp);
 // Gpu/CMakeLists.txt puts it before bp_draw_vs_dec.glsl in the embedded
 // bpShaderDrawVSDec, since VTK compiles the draw shader on its own.
 
@@ -45,4 +45,49 @@ vec3 bpNormalOfSum(vec3 sum)
 {
   float len = sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
   return len > 0.0 ? sum / len : vec3(0.0, 0.0, 1.0);
+}
+
+// ---- Counter-based random numbers (Core/CounterHash.h) ----------------------
+uint bpHash(uint seed, uint element, uint generation, uint draw)
+{
+  uvec4 v = uvec4(seed, element, generation, draw) * 1664525u + 1013904223u;
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  v ^= v >> 16u;
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  return v.x;
+}
+
+uniform uint bpSeed;
+
+float bpDraw(int e, float generation, uint draw)
+{
+  uint h = bpHash(bpSeed, uint(e), uint(generation), draw);
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// ---- Lifetime (lifetimeDraw in Core/Engine.h) ------------------------------
+uniform float bpLifetimeMin;
+uniform float bpLifetimeMax;
+// A super set (Core/SuperSet.h) is released as one: every element draws as
+// element 0 does.
+uniform bool bpLinked;
+// Release Pattern = Lattice (Core/ReleaseLattice.h): a generation's lifetime
+// is element 0's.
+uniform bool bpLattice;
+
+int bpDrawElement(int e)
+{
+  return bpLinked ? 0 : e;
+}
+
+float bpLifetimeOf(int e, float generation)
+{
+  return bpLifetimeMin +
+    bpDraw(bpLattice ? 0 : bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
 }
