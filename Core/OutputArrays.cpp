@@ -69,9 +69,9 @@ const std::vector<OutputArray>& outputArrays()
       C::SpinRatio, R::SpinRatio, OffByDefault | NeedsPoses),
     row(Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, R::TrailAge, NoFlags),
     // Deformation: a fit per element per output (Core/ElementStretch.h).
-    row(Id::ElementStretch, "ElementStretch", 2, V::Float, Role::Plain, Src::ElementState, C::Solid,
-      R::Stretch, OffByDefault),
-    row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Solid,
+    row(Id::ElementStretch, "ElementStretch", 2, V::Float, Role::Plain, Src::ElementState,
+      C::Stretch, R::Stretch, OffByDefault),
+    row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Ftle,
       R::Ftle, OffByDefault),
   };
   return table;
@@ -104,7 +104,7 @@ std::string colorSourceDefinitions()
 {
   static const char* const names[] = { "SOLID", "FORCE", "LIFETIME", "VELOCITY", "VORTICITY",
     "LAYER", "RADIUS", "ELEMENT_INDEX", "PARTICLE_INDEX", "ORIENTATION", "SPIN", "SPIN_RATIO",
-    "AGE" };
+    "AGE", "STRETCH", "FTLE" };
   static_assert(sizeof(names) / sizeof(names[0]) == std::size_t(ColorSource::Count),
     "a name per colour source");
   std::ostringstream out;

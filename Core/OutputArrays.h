@@ -98,6 +98,8 @@ enum class ColorSource
   Spin,        ///< a component of the spin, or its magnitude
   SpinRatio,   ///< SpinVorticityRatio
   Age,         ///< of a trail's pose (0 on the elements)
+  Stretch,     ///< ElementStretch: a component (largest, smallest), or the magnitude
+  Ftle,        ///< ElementFTLE
   Count
 };
 

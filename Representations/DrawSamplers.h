@@ -37,6 +37,7 @@ public:
     TrailPositions, ///< bound per trail pose (bind)
     TrailElements,  ///< bound per trail pose (bind)
     Corners,
+    StretchRest, ///< the template's rest offsets (DrawDeformation.h)
     Count
   };
   using Textures = std::array<unsigned, Count>;
@@ -51,7 +52,7 @@ public:
   void setUniforms(vtkShaderProgram* program) const;
 
 private:
-  int Units[Count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+  int Units[Count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 };
 
 } // namespace bpvtk

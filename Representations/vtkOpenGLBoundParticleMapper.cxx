@@ -5,6 +5,7 @@
 //   GLStateGuard          GL state saved around the engine's passes
 //   QueueReplay           the work queue's calls run on the GPU engine
 //   DrawTables            the template, link and corner tables of a configuration
+//   DrawDeformation       the stretch fit's template side (ElementStretch, ElementFTLE)
 //   ColorTableTexture     the lookup table as a texture
 //   DrawSamplers          the draw shader's samplers on texture units
 //   DrawShaders           the drawing code spliced into VTK's shaders
@@ -13,6 +14,7 @@
 #include "vtkOpenGLBoundParticleMapper.h"
 
 #include "ColorTableTexture.h"
+#include "DrawDeformation.h"
 #include "DrawSamplers.h"
 #include "DrawShaders.h"
 #include "DrawTables.h"
@@ -110,6 +112,9 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   /// Per template particle, the triangles it is a corner of (cornerTable,
   /// RGBA32I); made once per configuration with trails.
   bpvtk::IntegerTable CornerTable{ 4 };
+  /// The template's side of the stretch fit and the lifetime draw (colouring
+  /// by ElementStretch or ElementFTLE); made once per configuration.
+  bpvtk::DeformationTable Deformation;
   /// The trail poses of this frame's draw (chooseTrailPoses).
   std::vector<bpvtk::TrailPoseDraw> TrailPoses;
 
@@ -334,6 +339,7 @@ void vtkOpenGLBoundParticleMapper::ConfigureDraw(const bp::EngineCall& configure
   std::vector<int> corners =
     I.TrailLength > 0 ? bpvtk::cornerTable(shape, cornerWidth) : std::vector<int>();
   I.CornerTable.set(std::move(corners), cornerWidth);
+  I.Deformation.set(shape, p);
   this->SetInputData(bpvtk::templatePolyData(shape, p.elementSize, !I.LinkTable.empty()));
 }
 
@@ -418,6 +424,7 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   vtkInternals& I = *this->Internals;
   vtkShaderProgram* program = cellBO.Program;
   I.Samplers.setUniforms(program);
+  I.Deformation.setUniforms(program);
   // Read only in the link draw, which needs links (and so a width).
   program->SetUniformi("bpLinksPerRow", std::max(I.LinkTable.width(), 1));
   program->SetUniformi("bpDrawLinks", 0);
@@ -475,7 +482,8 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
     this->ColorMapIsTranslucent(), I.TrailPoses);
   I.Samplers.bindAll(window,
     { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
-      I.LinkTable.handle(), I.Inputs.poses, I.Inputs.spins, 0u, 0u, I.CornerTable.handle() });
+      I.LinkTable.handle(), I.Inputs.poses, I.Inputs.spins, 0u, 0u, I.CornerTable.handle(),
+      I.Deformation.handle() });
   for (int p = PrimitiveStart; p <= PrimitiveTris; ++p)
   {
     this->DrawPrimitive(p, ren, act);
@@ -504,6 +512,7 @@ void vtkOpenGLBoundParticleMapper::UploadTables(vtkOpenGLRenderWindow* window)
                     << " particles are too many for one texture; the display lights its "
                        "trails with a fixed normal.");
   }
+  I.Deformation.upload(window, maxSize);
 }
 
 void vtkOpenGLBoundParticleMapper::DrawPrimitive(int primitive, vtkRenderer* ren, vtkActor* act)
@@ -605,6 +614,7 @@ void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
   I.ColorTable.release(window);
   I.LinkTable.release(window);
   I.CornerTable.release(window);
+  I.Deformation.release(window);
   I.LinkVAO->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }

@@ -24,8 +24,10 @@
  * Colouring by a scalar goes through the mapper's lookup table (its range
  * and colours, sampled into a table texture): any array of the tracer's
  * output that has a colour source in Core/OutputArrays.h (every one but
- * Normals; Velocity, Orientation and ElementSpin by magnitude or a
- * component).
+ * Normals; Velocity, Orientation, ElementSpin and ElementStretch by
+ * magnitude or a component). ElementStretch and ElementFTLE are fitted in
+ * the vertex shader from the element's particles against the template's
+ * rest offsets and Aqq^+, uploaded once per configuration (DrawDeformation.h).
  *
  * Motion trails (Parameters::trailLength) are drawn from the engine's ring of
  * past state textures: for each slot recorded before the time shown, newest

@@ -35,6 +35,12 @@ uniform int bpComponent;       // for vector sources: a component, or -1 for the
 uniform vec2 bpScalarRange;    // the lookup table's range (Layer's: grid-local)
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
+// ElementStretch and ElementFTLE (bp::StretchFit, Core/ElementStretch.h):
+uniform sampler2D bpStretchRest; // template particle i at (i % width, i / width): rest - mean
+uniform int bpStretchRestWidth;
+uniform mat3 bpStretchInverse;   // Aqq^+ over the template's span (symmetric)
+uniform int bpStretchSpan;       // directions the template spans, 0 to 3
+uniform int bpStretchParticles;  // particles per element
 out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
 vec4 bpVertexMC;
 vec3 bpNormalMC;
@@ -55,6 +61,74 @@ void bpClipHidden()
   {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
   }
+}
+
+// The eigenvalues of the symmetric m, descending (the trigonometric closed
+// form; a diagonal m as it is).
+vec3 bpSymmetricEigenvalues(mat3 m)
+{
+  float off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
+  float q = (m[0][0] + m[1][1] + m[2][2]) / 3.0;
+  vec3 d = vec3(m[0][0], m[1][1], m[2][2]) - q;
+  float p = sqrt((dot(d, d) + 2.0 * off) / 6.0);
+  vec3 l;
+  if (!(p > 1e-7 * abs(q)))
+  {
+    l = vec3(m[0][0], m[1][1], m[2][2]);
+  }
+  else
+  {
+    float r = clamp(determinant((m - mat3(q)) / p) * 0.5, -1.0, 1.0);
+    float phi = acos(r) / 3.0;
+    l.x = q + 2.0 * p * cos(phi);
+    l.z = q + 2.0 * p * cos(phi + 2.0943951023931957);
+    l.y = 3.0 * q - l.x - l.z;
+  }
+  // sorted descending
+  if (l.x < l.y) l.xy = l.yx;
+  if (l.y < l.z) l.yz = l.zy;
+  if (l.x < l.y) l.xy = l.yx;
+  return l;
+}
+
+// Element e's largest and smallest principal stretch against its template
+// (bp::StretchFit::stretch): F = A Aqq^+ of its particles about their mean,
+// the square roots of F^T F's eigenvalues over the span; (1, 1) for a
+// template that spans nothing, a hidden element or a fit that is not finite.
+// Its particles' positions are fetched here: only this colouring pays for it.
+vec2 bpStretchOf(int e)
+{
+  if (bpStretchSpan == 0 || bpHiddenElement(e))
+    return vec2(1.0);
+  vec3 mean = vec3(0.0);
+  for (int k = 0; k < bpStretchParticles; ++k)
+    mean += texelFetch(bpPositions, bpParticleTexel(e, k), 0).xyz;
+  mean /= float(bpStretchParticles);
+  mat3 A = mat3(0.0);
+  for (int k = 0; k < bpStretchParticles; ++k)
+  {
+    vec3 p = texelFetch(bpPositions, bpParticleTexel(e, k), 0).xyz - mean;
+    vec3 q = texelFetch(bpStretchRest, ivec2(k % bpStretchRestWidth, k / bpStretchRestWidth), 0).xyz;
+    A += outerProduct(p, q);
+  }
+  mat3 F = A * bpStretchInverse;
+  vec3 s2 = bpSymmetricEigenvalues(transpose(F) * F);
+  vec2 s = sqrt(max(vec2(s2.x, s2[bpStretchSpan - 1]), 0.0));
+  return any(isnan(s)) || any(isinf(s)) ? vec2(1.0) : s;
+}
+
+// ln(largest stretch) / age (bp::elementFtle), the age being the lifetime
+// the element was drawn less the one it has left; 0 where the age is not
+// positive or anything is not finite.
+float bpFtleOf(int e)
+{
+  vec4 element = texelFetch(bpElements, bpElementTexel(e), 0);
+  float age = bpLifetimeOf(e, element.y) - element.x;
+  float largest = bpStretchOf(e).x;
+  if (!(age > 0.0) || isinf(age) || !(largest > 0.0) || isinf(largest))
+    return 0.0;
+  float ftle = log(largest) / age;
+  return isnan(ftle) || isinf(ftle) ? 0.0 : ftle;
 }
 
 float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
@@ -97,6 +171,13 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
     return texelFetch(bpSpins, elementTexel, 0).w;
   if (bpScalarMode == BP_COLOR_AGE)
     return bpTrail != 0 ? bpTrailAge : 0.0;
+  if (bpScalarMode == BP_COLOR_STRETCH)
+  {
+    vec2 s = bpStretchOf(e);
+    return bpComponent >= 0 ? s[bpComponent] : length(s);
+  }
+  if (bpScalarMode == BP_COLOR_FTLE)
+    return bpFtleOf(e);
   return 0.0;
 }
 

@@ -30,17 +30,16 @@ TEST(OutputArrays, ColorSourcesBecomeShaderDefinitions)
   EXPECT_NE(defs.find("#define BP_COLOR_SOLID 0\n"), std::string::npos);
   EXPECT_NE(defs.find("#define BP_COLOR_FORCE 1\n"), std::string::npos);
   EXPECT_NE(defs.find("#define BP_COLOR_PARTICLE_INDEX 8\n"), std::string::npos);
-  // Speed is the velocity's magnitude; only Normals and the deformation
-  // arrays (a fit per element, which the draw shader does not make) cannot be
-  // coloured by on the GPU.
+  EXPECT_NE(defs.find("#define BP_COLOR_STRETCH 13\n"), std::string::npos);
+  EXPECT_NE(defs.find("#define BP_COLOR_FTLE 14\n"), std::string::npos);
+  // Speed is the velocity's magnitude; only Normals cannot be coloured by on
+  // the GPU (the deformation arrays' fit is made in the draw shader).
   const bp::OutputArray* speed = bp::findOutputArray("Speed");
   EXPECT_EQ(speed->color, bp::ColorSource::Velocity);
   EXPECT_TRUE(speed->colorsMagnitude);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    EXPECT_EQ(row.color == bp::ColorSource::Solid,
-      row.id == bp::OutputArrayId::Normals || row.id == bp::OutputArrayId::ElementStretch ||
-        row.id == bp::OutputArrayId::ElementFTLE)
+    EXPECT_EQ(row.color == bp::ColorSource::Solid, row.id == bp::OutputArrayId::Normals)
       << row.name;
   }
 }
