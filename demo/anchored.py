@@ -12,7 +12,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import apply_preset, dark_view, picture_arguments  # noqa: E402
+from picture import apply_preset, dark_view, picture_arguments, save_and_close  # noqa: E402
 
 TIME = 1.2
 
@@ -71,11 +71,7 @@ def main():
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraViewAngle = 30.0
-    path = os.path.join(args.output, "anchored.png")
-    SaveScreenshot(path, view, ImageResolution=[1280, 720])
-    print("wrote %s" % path)
-    Delete(view)
-    del view
+    save_and_close(view, os.path.join(args.output, "anchored.png"))
     return 0
 
 
