@@ -65,22 +65,14 @@ TightUnpack::~TightUnpack()
   }
 }
 
-GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes)
+namespace
 {
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_3D, name);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  TightUnpack unpack;
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of one byte per texel, not padded to 4
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, nx, ny, nz, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes);
-  return GlTexture(name);
-}
-
-GlTexture makeFloatTexture3D(int nx, int ny, int nz, const float* rgb)
+/// A 3D texture sampled with texelFetch only (nearest), from texels read
+/// with no row padding. Made while a pass binds its textures, so the active
+/// unit's 3D texture is bound again after.
+GlTexture makeTexture3D(
+  int nx, int ny, int nz, GLint internalFormat, GLenum format, GLenum type, const void* texels)
 {
-  // Made while a pass binds its textures: the active unit keeps its own.
   GLint bound = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_3D, &bound);
   GLuint name = 0;
@@ -89,9 +81,21 @@ GlTexture makeFloatTexture3D(int nx, int ny, int nz, const float* rgb)
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   TightUnpack unpack;
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, nx, ny, nz, 0, GL_RGB, GL_FLOAT, rgb);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of one byte per texel are not padded to 4
+  glTexImage3D(GL_TEXTURE_3D, 0, internalFormat, nx, ny, nz, 0, format, type, texels);
   glBindTexture(GL_TEXTURE_3D, GLuint(bound));
   return GlTexture(name);
+}
+} // namespace
+
+GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes)
+{
+  return makeTexture3D(nx, ny, nz, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes);
+}
+
+GlTexture makeFloatTexture3D(int nx, int ny, int nz, const float* rgb)
+{
+  return makeTexture3D(nx, ny, nz, GL_RGB32F, GL_RGB, GL_FLOAT, rgb);
 }
 
 GlTexture makeTexture2D(int width, int height, const float* data)

@@ -162,7 +162,8 @@ private:
 GlTexture makeTexture2D(int width, int height, const float* data = nullptr);
 
 /// An R8UI 3D texture of one byte per texel (x fastest, rows not padded),
-/// sampled with texelFetch only: the cell masks.
+/// sampled with texelFetch only: the cell masks. The active unit's 3D texture
+/// stays bound (these are made while a pass binds its textures).
 GlTexture makeByteTexture3D(int nx, int ny, int nz, const std::uint8_t* bytes);
 
 /// An RGB32F 3D texture of 3 floats per texel (x fastest), sampled with

@@ -45,8 +45,7 @@ def save_tracers_picture(flow, layers, time, camera_position, path, line_width=1
     """The field's outline and each (tracer, array, preset) of `layers`
     coloured by its array, seen from `camera_position` towards the origin,
     saved to `path` at 1280 x 720."""
-    from paraview.simple import (ColorBy, Delete, GetColorTransferFunction, Render,
-                                 SaveScreenshot, Show)
+    from paraview.simple import ColorBy, GetColorTransferFunction, Render, Show
     view = dark_view(time)
     Show(flow, view).SetRepresentationType("Outline")
     for tracer, array, preset in layers:
@@ -60,8 +59,13 @@ def save_tracers_picture(flow, layers, time, camera_position, path, line_width=1
     view.CameraPosition = list(camera_position)
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
+    save_and_close(view, path)
+
+
+def save_and_close(view, path):
+    """Saves `view` to `path` at 1280 x 720 and deletes it (views must go
+    before the interpreter exits, or pvpython crashes there)."""
+    from paraview.simple import Delete, SaveScreenshot
     SaveScreenshot(path, view, ImageResolution=[1280, 720])
     print("wrote %s" % path)
-    # Views must go before the interpreter exits, or pvpython crashes there.
     Delete(view)
-    del view

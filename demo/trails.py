@@ -11,7 +11,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import apply_preset, dark_view, picture_arguments  # noqa: E402
+from picture import apply_preset, dark_view, picture_arguments, save_and_close  # noqa: E402
 
 TIME = 1.6
 
@@ -76,11 +76,7 @@ def main():
     Show(flow, view).SetRepresentationType("Outline")
     show_trails(tracer, view)
     place_camera(view)
-    path = os.path.join(args.output, "trails.png")
-    SaveScreenshot(path, view, ImageResolution=[1280, 720])
-    print("wrote %s" % path)
-    Delete(view)
-    del view
+    save_and_close(view, os.path.join(args.output, "trails.png"))
     return 0
 
 

@@ -4,7 +4,7 @@
 #include "AnalyticFlows.h"
 #include "Engine.h"
 #include "GpuStepper.h"
-#include "HeadlessContext.h"
+#include "SharedContext.h"
 #include "Stepper.h"
 
 #include <cstdint>
@@ -18,19 +18,6 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-bool haveContext()
-{
-  static std::unique_ptr<bp::HeadlessContext> shared;
-  static std::string error = "unset";
-  if (!shared)
-  {
-    shared.reset(new bp::HeadlessContext);
-    error = shared->create();
-  }
-  EXPECT_EQ(error, "") << "no headless OpenGL context";
-  return error.empty();
-}
 
 /// One engine or the other behind the stepper verbs (Core/Stepper.h), with
 /// the readbacks the checks need.
@@ -165,7 +152,7 @@ class Physics : public ::testing::TestWithParam<bool>
 protected:
   void SetUp() override
   {
-    if (GetParam() && !haveContext())
+    if (GetParam() && !bp::haveSharedContext())
       GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
   }
 };
@@ -214,21 +201,37 @@ TEST_P(Physics, SolidBodyRotationKeepsShapesAndTurnsWithTheField)
     EXPECT_NEAR(turned[e], 2 * Pi, 0.02 * 2 * Pi) << "element " << e;
 }
 
+namespace
+{
+/// The shear layer u(z) = 1.25 - z^2 on z in [-1, 1] over a long box:
+/// vorticity du/dz = -2z about +y.
+bp::VectorField shearLayer()
+{
+  return steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+}
+
+/// 20 paddlewheels at height `level` of the shear layer, their axes along y,
+/// under shape matching and RK4, their poses tracked.
+bp::Parameters wheelsAcrossTheShearLayer(float level)
+{
+  bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
+  p.orientation = bp::Orientation::Fixed;
+  p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
+  p.restoration = bp::Restoration::ShapeMatching;
+  p.integrator = bp::Integrator::RK4;
+  p.trackPoses = true;
+  return p;
+}
+} // namespace
+
 // Shear layer (thesis Fig. 4.2): paddlewheels above and below mid-depth turn in
 // opposite senses; with shape matching at half the local vorticity, within 10%.
 TEST_P(Physics, ShearLayerPaddlewheelsTurnAtHalfTheVorticity)
 {
-  // u(z) = 1.25 - z^2 on z in [-1, 1]: vorticity du/dz = -2z about +y.
-  const bp::VectorField field =
-    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  const bp::VectorField field = shearLayer();
   for (float level : { 0.5f, -0.5f })
   {
-    bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
-    p.orientation = bp::Orientation::Fixed;
-    p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
-    p.restoration = bp::Restoration::ShapeMatching;
-    p.integrator = bp::Integrator::RK4;
-    p.trackPoses = true;
+    bp::Parameters p = wheelsAcrossTheShearLayer(level);
     System system(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Paddlewheel), p, field);
     const int steps = 100;
     const double dt = 0.01;
@@ -389,17 +392,10 @@ TEST_P(Physics, AnchoredElementsKeepTheirCentresAndSpinAtTheFieldsRate)
 // drift downstream: the two differ in where they are, not in how they turn.
 TEST_P(Physics, AnchoredPaddlewheelsTurnInPlaceAtHalfTheVorticity)
 {
-  // u(z) = 1.25 - z^2 on z in [-1, 1]: vorticity du/dz = -2z about +y.
-  const bp::VectorField field =
-    steady(bp::AnalyticFlow::ShearLayer, { 65, 9, 41 }, { 0, 8, 0, 1, -1, 1 });
+  const bp::VectorField field = shearLayer();
   for (float level : { 0.5f, -0.5f })
   {
-    bp::Parameters p = placed(20, 0.2f, { 0.5f, 0.4f, level }, { 1.5f, 0.6f, level });
-    p.orientation = bp::Orientation::Fixed;
-    p.frame = bp::rotationFromDegrees(90, 0, 0); // paddle axis along y
-    p.restoration = bp::Restoration::ShapeMatching;
-    p.integrator = bp::Integrator::RK4;
-    p.trackPoses = true;
+    bp::Parameters p = wheelsAcrossTheShearLayer(level);
     bp::Parameters anchoredParameters = p;
     anchoredParameters.anchor = bp::Anchor::Centre;
     const bp::ElementTemplate wheel = bp::builtinTemplate(bp::BuiltinShape::Paddlewheel);

@@ -9,7 +9,7 @@
 #include "ElementStretch.h"
 #include "Engine.h"
 #include "GpuStepper.h"
-#include "HeadlessContext.h"
+#include "SharedContext.h"
 #include "Stepper.h"
 
 #include <gtest/gtest.h>
@@ -22,19 +22,6 @@
 
 namespace
 {
-bool haveContext()
-{
-  static std::unique_ptr<bp::HeadlessContext> shared;
-  static std::string error = "unset";
-  if (!shared)
-  {
-    shared.reset(new bp::HeadlessContext);
-    error = shared->create();
-  }
-  EXPECT_EQ(error, "") << "no headless OpenGL context";
-  return error.empty();
-}
-
 /// The field u = (a x, -a y, 0) on a grid over `box` (trilinear sampling of a
 /// linear field is exact), or solid-body rotation when a is 0.
 bp::VectorField linearField(double a, std::array<double, 6> box)
@@ -138,7 +125,7 @@ class Deformation : public ::testing::TestWithParam<bool>
 protected:
   void SetUp() override
   {
-    if (GetParam() && !haveContext())
+    if (GetParam() && !bp::haveSharedContext())
       GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
   }
 };

@@ -4,10 +4,10 @@
 // shaders get from Core/ read back as the C++ values.
 #include "BoundParticlesShaders.h"
 #include "Engine.h"
-#include "HeadlessContext.h"
 #include "Pose.h"
 #include "ShaderSource.h"
 #include "ShapeMatching.h"
+#include "SharedContext.h"
 
 #include <gtest/gtest.h>
 
@@ -18,19 +18,6 @@
 
 namespace
 {
-bool haveContext()
-{
-  static std::unique_ptr<bp::HeadlessContext> shared;
-  static std::string error;
-  if (!shared)
-  {
-    shared.reset(new bp::HeadlessContext);
-    error = shared->create();
-  }
-  EXPECT_EQ(error, "") << "no headless OpenGL context";
-  return error.empty();
-}
-
 /// Whether `log` names `file` at `line`, as Mesa ("file:3(") or NVIDIA ("file(3)") writes it.
 bool names(const std::string& log, const std::string& file, int line)
 {
@@ -66,7 +53,7 @@ float readFloat(const std::string& text)
 
 TEST(ShaderSource, ACompileErrorNamesThePassFileAndLine)
 {
-  if (!haveContext())
+  if (!bp::haveSharedContext())
     return;
   // Line 3 of the pass, after bp_shared.glsl and bp_common.glsl.
   bp::GlProgram program;
@@ -79,7 +66,7 @@ TEST(ShaderSource, ACompileErrorNamesThePassFileAndLine)
 
 TEST(ShaderSource, ErrorsInAndAfterGeneratedSpringsNameTheirSource)
 {
-  if (!haveContext())
+  if (!bp::haveSharedContext())
     return;
   const std::string pass = "void main()\n{\n//TAG\n  float y = BROKEN_AFTER;\n}\n";
   const std::string code = "  float a = 1.0;\n  float b = BROKEN_IN;";
