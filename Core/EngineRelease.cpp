@@ -165,8 +165,11 @@ void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, flo
 {
   const Parameters& P = this->Params;
   const ReleaseWeights& W = *this->Weights;
-  // Candidate k is taken where it fits with probability w(c) / maximum; else
-  // the fitting candidate of the largest weight seen, else the last.
+  // Candidate k, drawn where weights may be above 0, is taken where it fits
+  // with probability w(c) / maximum; else the fitting candidate of the
+  // largest weight seen, else the last.
+  float lo[3], hi[3];
+  weightedBox(P.emitterMin, P.emitterMax, W, lo, hi);
   float best[3];
   float bestWeight = -1.0f;
   for (int k = 0; k < ReleaseTries; ++k)
@@ -174,7 +177,7 @@ void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, flo
     for (int a = 0; a < 3; ++a)
     {
       const float u = uniformDraw(P.seed, element, generation, candidateDraw(k) + std::uint32_t(a));
-      c[a] = P.emitterMin[a] + u * (P.emitterMax[a] - P.emitterMin[a]);
+      c[a] = lo[a] + u * (hi[a] - lo[a]);
     }
     const bool fit = this->ReleaseGrid->contains(c) &&
       !(this->ReleaseUnfit && (*this->ReleaseUnfit)[this->ReleaseGrid->cellIndexAt(c)]);

@@ -60,10 +60,17 @@ std::string checkLattice(const ElementTemplate& shape, const Parameters& p)
   const std::size_t n = shape.particleCount();
   if (size < 1 || size > MaxParticles / n)
   {
+    // A count at MaxLatticeCount may stand for more (releaseLattice caps it).
     std::ostringstream err;
-    err << "the release lattice (" << p.lattice.counts[0] << " x " << p.lattice.counts[1] << " x "
-        << p.lattice.counts[2] << " points) x " << n << " particles per element exceeds the limit "
-        << "of " << MaxParticles << " particles; choose a larger LatticeSpacing";
+    err << "the release lattice (";
+    for (int a = 0; a < 3; ++a)
+    {
+      err << (a > 0 ? " x " : "") << (p.lattice.counts[a] >= MaxLatticeCount ? "over " : "")
+          << p.lattice.counts[a];
+    }
+    err << " points) x " << n << " particles per element exceeds the limit of " << MaxParticles
+        << " particles; choose a larger LatticeSpacing (or, with LatticeSpacing 0, a smaller "
+        << "NumberOfElements)";
     return err.str();
   }
   if (size != p.numberOfElements)

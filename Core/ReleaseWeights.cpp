@@ -12,11 +12,31 @@ namespace bp
 ReleaseWeights::ReleaseWeights(const GridGeometry& grid, const std::vector<float>& values)
   : Triples(std::make_shared<std::vector<float>>(3 * values.size(), 0.0f))
 {
+  // The lowest and highest point index, per axis, of a weight above 0.
+  std::array<int, 3> first = { grid.dims[0], grid.dims[1], grid.dims[2] }, last = { -1, -1, -1 };
   for (std::size_t i = 0; i < values.size(); ++i)
   {
     const float w = std::isfinite(values[i]) ? std::abs(values[i]) : 0.0f;
     (*this->Triples)[3 * i] = w;
     this->Maximum = std::max(this->Maximum, w);
+    if (w > 0.0f)
+    {
+      std::size_t r = i;
+      for (int a = 0; a < 3; ++a)
+      {
+        const int index = int(r % std::size_t(grid.dims[a]));
+        r /= std::size_t(grid.dims[a]);
+        first[a] = std::min(first[a], index);
+        last[a] = std::max(last[a], index);
+      }
+    }
+  }
+  // Trilinear weights are above 0 in every cell with such a corner: one
+  // point further each way.
+  for (int a = 0; a < 3 && this->Maximum > 0.0f; ++a)
+  {
+    this->SupportMin[a] = float(grid.coordinate(a, std::max(first[a] - 1, 0)));
+    this->SupportMax[a] = float(grid.coordinate(a, std::min(last[a] + 1, grid.dims[a] - 1)));
   }
   FieldSlice slice;
   slice.velocity = this->Triples;
@@ -28,6 +48,23 @@ float ReleaseWeights::at(const float p[3]) const
   float v[3];
   this->Field->sampleWeighted(p, 0.0f, v);
   return v[0];
+}
+
+void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float, 3>& emitterMax,
+  const ReleaseWeights& weights, float lo[3], float hi[3])
+{
+  bool meet = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::max(emitterMin[a], weights.supportMin()[a]);
+    hi[a] = std::min(emitterMax[a], weights.supportMax()[a]);
+    meet = meet && lo[a] <= hi[a];
+  }
+  for (int a = 0; a < 3 && !meet; ++a)
+  {
+    lo[a] = emitterMin[a];
+    hi[a] = emitterMax[a];
+  }
 }
 
 std::vector<float> releaseWeightValues(const std::vector<float>& values, int components)

@@ -5,10 +5,13 @@
  * point array of the input, by rejection (Engine::releaseCenter).
  *
  * The weights are one float per grid point of the field (FieldSlice::
- * releaseWeights), their absolute value with NaN and Inf as 0. A candidate
- * centre c of a release is accepted when it fits and u * maximum < w(c), w
- * trilinear at c as the velocity is (VectorField::sampleWeighted) and u the
- * release's draw weightDraw(k): up to ReleaseTries candidates, then the
+ * releaseWeights), their absolute value with NaN and Inf as 0. Candidates
+ * are drawn in the part of the emitter box where the weights may be above 0
+ * (weightedBox: the box that holds every cell with a corner above 0), so a
+ * small region of interest still takes nearly every candidate it could. A
+ * candidate centre c of a release is accepted when it fits and u * maximum <
+ * w(c), w trilinear at c as the velocity is (VectorField::sampleWeighted) and
+ * u the release's draw weightDraw(k): up to ReleaseTries candidates, then the
  * fitting one of the largest weight seen. The GPU engine holds the same
  * (w, 0, 0) per point as a 3D texture and samples it as a time step
  * (bpSampleSlice), so both engines accept the same candidates.
@@ -18,6 +21,7 @@
 
 #include "VectorField.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -26,7 +30,7 @@ namespace bp
 {
 
 /// The draw of the acceptance test of a release's k-th candidate: after
-/// every candidate's (candidateDraw(ReleaseTries - 1) + 2 = 199).
+/// every candidate's (candidateDraw(ReleaseTries - 1) + 2 = 196).
 constexpr std::uint32_t weightDraw(int k)
 {
   return std::uint32_t(200 + k);
@@ -42,6 +46,10 @@ public:
   float maximum() const { return this->Maximum; }
   /// The weight at p, trilinear in the cell that holds p.
   float at(const float p[3]) const;
+  /// The box of the cells with a corner above 0 (outside it every weight is
+  /// 0), in the grid's coordinates.
+  const std::array<float, 3>& supportMin() const { return this->SupportMin; }
+  const std::array<float, 3>& supportMax() const { return this->SupportMax; }
   /// (w, 0, 0) per grid point: what the GPU engine uploads.
   const std::vector<float>& triples() const { return *this->Triples; }
 
@@ -49,7 +57,16 @@ private:
   std::shared_ptr<std::vector<float>> Triples;
   std::unique_ptr<VectorField> Field;
   float Maximum = 0.0f;
+  std::array<float, 3> SupportMin = { 0, 0, 0 };
+  std::array<float, 3> SupportMax = { 0, 0, 0 };
 };
+
+/// Where a weighted release draws its candidates: the emitter box
+/// [emitterMin, emitterMax] cut to the weights' support, axis by axis (min
+/// and max in float, as the GPU's bpWeightedBox); the emitter box itself
+/// where the two do not meet.
+void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float, 3>& emitterMax,
+  const ReleaseWeights& weights, float lo[3], float hi[3]);
 
 /**
  * Per point, |value| of a `components`-component array (its magnitude for

@@ -27,8 +27,9 @@ namespace bpvtk
 
 namespace
 {
-/// Per lattice point: FTLE, largest and smallest stretch, shown (1 or 0).
-constexpr int Fields = 4;
+/// Per lattice point: FTLE, largest and smallest stretch, shown (1 or 0),
+/// age (an element released again early is younger than its neighbours).
+constexpr int Fields = 5;
 
 /// This process's elements' values at their lattice points; 0 elsewhere.
 std::vector<float> localValues(const bp::Engine& engine, std::size_t points)
@@ -52,6 +53,7 @@ std::vector<float> localValues(const bp::Engine& engine, std::size_t points)
     v[1] = d[0];
     v[2] = d[1];
     v[3] = 1.0f;
+    v[4] = float(age);
   }
   return values;
 }
@@ -89,15 +91,17 @@ void fillFtleMap(vtkImageData* image, const bp::Engine& engine, const std::array
   }
   image->SetOrigin(origin);
   image->SetSpacing(spacing);
-  vtkNew<vtkFloatArray> ftle, stretch;
+  vtkNew<vtkFloatArray> ftle, stretch, age;
   vtkNew<vtkUnsignedCharArray> valid;
   ftle->SetName("FTLE");
   stretch->SetName("Stretch");
   stretch->SetNumberOfComponents(2);
+  age->SetName("Age");
   valid->SetName("vtkValidPointMask");
   ftle->SetNumberOfTuples(vtkIdType(points));
   stretch->SetNumberOfTuples(vtkIdType(points));
   valid->SetNumberOfTuples(vtkIdType(points));
+  age->SetNumberOfTuples(vtkIdType(points));
   for (std::size_t k = 0; k < points; ++k)
   {
     const float* v = values.data() + Fields * k;
@@ -106,10 +110,12 @@ void fillFtleMap(vtkImageData* image, const bp::Engine& engine, const std::array
     stretch->SetTypedComponent(vtkIdType(k), 0, shown ? v[1] : 1.0f);
     stretch->SetTypedComponent(vtkIdType(k), 1, shown ? v[2] : 1.0f);
     valid->SetValue(vtkIdType(k), shown ? 1 : 0);
+    age->SetValue(vtkIdType(k), shown ? v[4] : 0.0f);
   }
   image->GetPointData()->SetScalars(ftle);
   image->GetPointData()->AddArray(stretch);
   image->GetPointData()->AddArray(valid);
+  image->GetPointData()->AddArray(age);
 }
 
 void askAlike(vtkInformation* asked, vtkInformation* other)

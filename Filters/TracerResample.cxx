@@ -564,15 +564,22 @@ void FieldResampler::interpolateWeights(const std::vector<vtkDataSet*>& blocks, 
   const bp::RangeRunner& run, std::vector<float>& values, bool& found) const
 {
   std::vector<std::vector<float>> arrays(blocks.size());
+  // Per block: the weights are a cell array (taken per cell, as cell vectors
+  // are), else a point array (interpolated as point vectors are). The panel
+  // offers point arrays, so one is taken first even with cell vectors.
+  std::vector<char> perCell(blocks.size(), 0);
   found = false;
   for (std::size_t b = 0; b < blocks.size(); ++b)
   {
-    vtkDataSetAttributes* attributes = cellVectors
-      ? static_cast<vtkDataSetAttributes*>(blocks[b]->GetCellData())
-      : blocks[b]->GetPointData();
-    vtkDataArray* array = attributes->GetArray(this->WeightsName.c_str());
+    vtkDataArray* array = blocks[b]->GetPointData()->GetArray(this->WeightsName.c_str());
+    const bool points = array && array->GetNumberOfTuples() == blocks[b]->GetNumberOfPoints();
+    if (!points && cellVectors)
+    {
+      array = blocks[b]->GetCellData()->GetArray(this->WeightsName.c_str());
+      perCell[b] = 1;
+    }
     const vtkIdType tuples =
-      cellVectors ? blocks[b]->GetNumberOfCells() : blocks[b]->GetNumberOfPoints();
+      perCell[b] ? blocks[b]->GetNumberOfCells() : blocks[b]->GetNumberOfPoints();
     std::vector<float> raw;
     if (array && array->GetNumberOfTuples() == tuples)
     {
@@ -593,7 +600,7 @@ void FieldResampler::interpolateWeights(const std::vector<vtkDataSet*>& blocks, 
       {
         const Sample& sample = this->Samples[s];
         const std::vector<float>& w = arrays[sample.block];
-        if (cellVectors)
+        if (perCell[sample.block])
         {
           values[sample.point] = w[std::size_t(sample.cell)];
           continue;

@@ -208,6 +208,8 @@ void GpuFieldCache::applyReleaseWeightsTo(GpuPass& pass)
       ? makeFloatTexture3D(dims[0], dims[1], std::max(dims[2], 1), weights->triples().data())
       : GlTexture();
     this->WeightMax = weights ? weights->maximum() : 0.0f;
+    this->WeightSupportMin = weights ? weights->supportMin() : std::array<float, 3>{};
+    this->WeightSupportMax = weights ? weights->supportMax() : std::array<float, 3>{};
   }
   if (!this->NoWeightsTexture)
   {
@@ -217,6 +219,8 @@ void GpuFieldCache::applyReleaseWeightsTo(GpuPass& pass)
   const bool weighted = field && this->WeightsTexture;
   pass.setInt("bpWeighted", weighted ? 1 : 0);
   pass.setFloat("bpWeightMax", this->WeightMax);
+  pass.setVec3("bpWeightSupportMin", this->WeightSupportMin.data());
+  pass.setVec3("bpWeightSupportMax", this->WeightSupportMax.data());
   pass.texture("bpReleaseWeights",
     weighted ? this->WeightsTexture.get() : this->NoWeightsTexture.get(), GL_TEXTURE_3D);
 }

@@ -108,6 +108,8 @@ private:
   GlTexture NoWeightsTexture;                            ///< one point of weight 0
   std::shared_ptr<const std::vector<float>> WeightsFrom; ///< what WeightsTexture was made from
   float WeightMax = 0.0f;
+  std::array<float, 3> WeightSupportMin = { 0, 0, 0 }; ///< ReleaseWeights::supportMin
+  std::array<float, 3> WeightSupportMax = { 0, 0, 0 };
   GlTexture AxesTexture; ///< per axis: coordinate table, then bin lookup (bp_common.glsl)
   std::array<std::vector<float>, 3> AxesTables; ///< what AxesTexture was made from
   int Bins[3] = { 1, 1, 1 };

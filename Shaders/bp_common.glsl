@@ -37,13 +37,20 @@ uniform vec3 bpFrameRow2;
 // bpDrawElement are in bp_shared.glsl): every element sits at its lattice site.
 uniform sampler2D bpLatticeSites; // per element: the lattice site
 
-// Engine::releaseCenter: candidate k of a release (candidateDraw).
-vec3 bpCandidate(int e, float generation, int k)
+// Engine::releaseCenter: candidate k of a release (candidateDraw) in the
+// box [lo, hi].
+vec3 bpCandidateIn(int e, float generation, int k, vec3 lo, vec3 hi)
 {
   uint d = k == 0 ? 0u : uint(8 + 3 * (k - 1));
   vec3 u = vec3(bpDraw(e, generation, d), bpDraw(e, generation, d + 1u),
     bpDraw(e, generation, d + 2u));
-  return bpEmitterMin + u * (bpEmitterMax - bpEmitterMin);
+  return lo + u * (hi - lo);
+}
+
+// Candidate k in the emitter box.
+vec3 bpCandidate(int e, float generation, int k)
+{
+  return bpCandidateIn(e, generation, k, bpEmitterMin, bpEmitterMax);
 }
 
 // Where releases may not land (releaseUnfitCells), per cell of the field.
@@ -86,14 +93,26 @@ uniform float bpWeightMax;
 
 vec3 bpSampleSlice(sampler3D field, vec3 p);
 
+// Where weighted candidates are drawn: the emitter box cut to the weights'
+// support, or the emitter box where they do not meet (weightedBox).
+uniform vec3 bpWeightSupportMin;
+uniform vec3 bpWeightSupportMax;
+
 vec3 bpWeightedCenter(int e, float generation)
 {
+  vec3 lo = max(bpEmitterMin, bpWeightSupportMin);
+  vec3 hi = min(bpEmitterMax, bpWeightSupportMax);
+  if (any(greaterThan(lo, hi)))
+  {
+    lo = bpEmitterMin;
+    hi = bpEmitterMax;
+  }
   vec3 best = vec3(0.0);
   float bestWeight = -1.0;
   vec3 c;
   for (int k = 0; k < BP_RELEASE_TRIES; ++k)
   {
-    c = bpCandidate(e, generation, k);
+    c = bpCandidateIn(e, generation, k, lo, hi);
     if (!bpSeedFits(c))
     {
       continue;

@@ -51,4 +51,16 @@ TEST(ReleaseLattice, DegenerateBoxesGiveOnePointOrACappedCount)
   EXPECT_EQ(one.size(), 1u);
 }
 
+TEST(ReleaseLattice, AThinSlabKeepsTheTarget)
+{
+  // 1000 over a 2 x 1 x 0.01 slab: the slab is one point thick, and the
+  // target is spent in its plane (45 x 22), not across it (58 x 58 x 1).
+  const bp::ReleaseLattice slab = bp::releaseLattice({ 0, 0, 0 }, { 2, 1, 0.01f }, 1000, 0.0);
+  EXPECT_EQ(slab.counts, (std::array<int, 3>{ 45, 22, 1 }));
+  EXPECT_FLOAT_EQ(slab.origin[2], 0.005f);
+  // A box thin on two axes: a line of points.
+  const bp::ReleaseLattice line = bp::releaseLattice({ 0, 0, 0 }, { 4, 0.01f, 0.01f }, 100, 0.0);
+  EXPECT_EQ(line.counts, (std::array<int, 3>{ 100, 1, 1 }));
+}
+
 } // namespace

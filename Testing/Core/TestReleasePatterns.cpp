@@ -248,4 +248,43 @@ TEST(ReleasePatterns, WeightsOfZeroTakeNoReleaseAndBadValuesCountAsZero)
   EXPECT_FALSE(bp::releaseWeightsOf(g, std::make_shared<const std::vector<float>>(3, 1.0f)));
 }
 
+TEST(ReleasePatterns, ASmallRegionOfInterestTakesItsReleases)
+{
+  // A mask of interest: weight 1 at 2 x 2 x 2 points of a 101 x 101 x 101
+  // grid over the unit cube (its cells hold about 1e-5 of the box), 0
+  // elsewhere. Drawn in the whole box, 64 candidates would all miss it;
+  // drawn where the weights may be above 0, every release lands in it.
+  bp::GridGeometry g;
+  g.dims = { 101, 101, 101 };
+  g.spacing = { 0.01, 0.01, 0.01 };
+  std::vector<float> values(g.pointCount(), 0.0f);
+  for (int k = 60; k <= 61; ++k)
+    for (int j = 30; j <= 31; ++j)
+      for (int i = 20; i <= 21; ++i)
+        values[std::size_t(i + 101 * (j + 101 * k))] = 1.0f;
+  const auto weights = bp::releaseWeightsOf(g, std::make_shared<const std::vector<float>>(values));
+  ASSERT_TRUE(weights);
+  EXPECT_FLOAT_EQ(weights->supportMin()[0], 0.19f);
+  EXPECT_FLOAT_EQ(weights->supportMax()[2], 0.62f);
+  bp::Parameters p;
+  p.numberOfElements = 4000;
+  p.elementSize = 0.005f;
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.setReleaseMask(g, nullptr, weights);
+  engine.initialize(bp::serialRunner());
+  int outside = 0;
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    outside += weights->at(engine.initialCenters().data() + 3 * e) <= 0.0f;
+  EXPECT_EQ(outside, 0) << "releases where the weight is 0";
+  // An emitter box that misses the weights: drawn in the emitter box.
+  float lo[3], hi[3];
+  bp::weightedBox({ 0.7f, 0, 0 }, { 0.9f, 1, 1 }, *weights, lo, hi);
+  EXPECT_EQ(lo[0], 0.7f);
+  EXPECT_EQ(hi[0], 0.9f);
+  bp::weightedBox({ 0, 0, 0 }, { 0.2f, 1, 1 }, *weights, lo, hi);
+  EXPECT_FLOAT_EQ(lo[0], 0.19f);
+  EXPECT_EQ(hi[0], 0.2f);
+}
+
 } // namespace

@@ -98,7 +98,8 @@ TEST(FtleMap, IsTheLatticeWithEachElementsFtleAtItsPoint)
   vtkDataArray* ftle = image->GetPointData()->GetArray("FTLE");
   vtkDataArray* stretch = image->GetPointData()->GetArray("Stretch");
   vtkDataArray* valid = image->GetPointData()->GetArray("vtkValidPointMask");
-  ASSERT_TRUE(ftle && stretch && valid);
+  vtkDataArray* age = image->GetPointData()->GetArray("Age");
+  ASSERT_TRUE(ftle && stretch && valid && age);
   ASSERT_EQ(ftle->GetNumberOfTuples(), vtkIdType(p.lattice.size()));
   const bp::StretchFit fit(engine.shape().rest, p.elementSize);
   const std::size_t n = engine.particlesPerElement();
@@ -111,6 +112,7 @@ TEST(FtleMap, IsTheLatticeWithEachElementsFtleAtItsPoint)
     EXPECT_FLOAT_EQ(float(stretch->GetComponent(id, 0)), d[0]);
     EXPECT_FLOAT_EQ(float(stretch->GetComponent(id, 1)), d[1]);
     EXPECT_NEAR(ftle->GetTuple1(id), a, 0.01 * a) << "point " << id;
+    EXPECT_NEAR(age->GetTuple1(id), 1.0, 1e-4) << "100 steps of 0.01"; // none released again
     // Element e was released at lattice point e.
     double x[3];
     image->GetPoint(id, x);

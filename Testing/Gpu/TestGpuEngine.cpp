@@ -668,6 +668,53 @@ TEST(GpuEngine, ReleaseWeightsShapeTheReleasesHistogram)
   EXPECT_GT(chiUniform, 1000.0);
 }
 
+TEST(GpuEngine, ASmallRegionOfInterestTakesItsReleases)
+{
+  // Weight 1 at 2 x 2 x 2 points of a 41^3 grid over [-1, 1]^3 (its cells
+  // hold about 1e-4 of the box), 0 elsewhere: the GPU draws its candidates
+  // where the weights may be above 0, as the CPU does, so every release
+  // lands in the region, at the CPU's centres.
+  ASSERT_NE(context(), nullptr);
+  const std::array<double, 6> box{ -1, 1, -1, 1, -1, 1 };
+  const bp::GridGeometry g = grid(41, 41, 41, box);
+  bp::FieldSlice s = slice(bp::AnalyticFlow::SolidBodyRotation, g, 0.0);
+  auto values = std::make_shared<std::vector<float>>(g.pointCount(), 0.0f);
+  for (int k = 25; k <= 26; ++k)
+    for (int j = 10; j <= 11; ++j)
+      for (int i = 30; i <= 31; ++i)
+        (*values)[std::size_t(i + 41 * (j + 41 * k))] = 1.0f;
+  s.releaseWeights = values;
+  const bp::VectorField field(g, s);
+  bp::Parameters p;
+  p.numberOfElements = 3000;
+  p.elementSize = 0.02f;
+  p.emitterMin = { -1, -1, -1 };
+  p.emitterMax = { 1, 1, 1 };
+  const auto weights = bp::releaseWeightsOf(g, values);
+  bp::Engine cpu;
+  ASSERT_EQ(cpu.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  cpu.setReleaseMask(g, nullptr, weights);
+  cpu.initialize(bp::serialRunner(), 0.0, &field);
+  bp::GpuEngine gpu;
+  const Released released{ gpu };
+  ASSERT_EQ(gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  ASSERT_EQ(gpu.setField(field), "");
+  gpu.initialize();
+  std::vector<float> lifetimes, generations, centers;
+  gpu.readElements(&lifetimes, &generations, &centers);
+  int outside = 0;
+  double worst = 0.0;
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+  {
+    outside += weights->at(centers.data() + 3 * e) <= 0.0f;
+    for (int a = 0; a < 3; ++a)
+      worst =
+        std::max(worst, double(std::abs(centers[3 * e + a] - cpu.initialCenters()[3 * e + a])));
+  }
+  EXPECT_EQ(outside, 0) << "GPU releases where the weight is 0";
+  EXPECT_LT(worst, 1e-6 * g.diagonal()) << "release centres differ by up to " << worst;
+}
+
 TEST(GpuEngine, MatchesWithLinearShapeMatching)
 {
   // A solid template (full-rank moment) and a flat one (pseudo-inverse).
