@@ -75,6 +75,9 @@ def chi_square(points, share):
 
 for name, source in (("an image", weighted),
                      ("an unstructured grid (resampled)", AppendDatasets(Input=weighted))):
+    # Run before the tracer is made, as `weighted` was: ParaView 6.1's pvpython
+    # gives a tracer on a source that never ran a zero-size emitter box.
+    source.UpdatePipeline()
     tracer = BoundParticleTracer(Input=source, Vectors=VELOCITY, ElementShape="Point",
                                  NumberOfElements=N, MinimumReleaseSpeed=0.0,
                                  ReleaseWeights=["POINTS", "w"])
