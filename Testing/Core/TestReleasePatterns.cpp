@@ -130,6 +130,18 @@ TEST(ReleasePatterns, SettingsMakeAFlatLatticeOnAFlatField)
   s.latticeSpacing = 0.5;
   r = bp::resolveSettings(s, f);
   EXPECT_EQ(r.parameters.numberOfElements, 8u);
+  EXPECT_TRUE(r.warnings.empty());
+  // A spacing that makes the lattice 100 times the count asked or more is said.
+  s.latticeSpacing = 0.01;
+  r = bp::resolveSettings(s, f);
+  EXPECT_EQ(r.parameters.numberOfElements, 200u * 100u);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(
+    r.warnings[0].find("LatticeSpacing 0.01 gives a lattice of 20000 points (200 x 100 x 1)"),
+    std::string::npos)
+    << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find("200 times Number Of Elements (100)"), std::string::npos);
+  s.latticeSpacing = 0.5;
   // Seed points win, with a warning.
   s.seeded = true;
   r = bp::resolveSettings(s, f);
