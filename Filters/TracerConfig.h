@@ -45,6 +45,7 @@ struct TracerConfig
   std::string releaseWeights;
 
   bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
+  bool wants(bp::OutputArrayId id) const { return this->wanted[std::size_t(id)]; }
 };
 
 } // namespace bpvtk

@@ -1,18 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @file TracerTimeScale.h
- * @brief The field's scale for the automatic time line, probed before the first update.
+ * @file TracerFieldProbe.h
+ * @brief The field's facts before the first update: its scale for the
+ * automatic time line, and its geometry for the FTLE map's extent.
  *
- * The time values a filter offers are set in RequestInformation, before any
- * data flows; an automatic Duration (or frames per input time step) needs the
- * field's top speed and extent. So the probe updates the input once there
- * (this process's piece, at the first input time step), reads the selected
- * vectors as an update would (a mesh resampled, masks and NaN included), and, under MPI, takes
- * the largest speed and the whole field's extent over every process (a
- * collective call, as every pipeline pass of a distributed run is).
+ * The time values a filter offers, and the extent of an image output, are set
+ * in RequestInformation, before any data flows. An automatic Duration (or
+ * frames per input time step) needs the field's top speed and extent; the
+ * FTLE map's extent is the release lattice's, which needs the field's bounds
+ * (an emitter box spanning the field) and its flat axes. So the probe
+ * updates the input once there (this process's piece, at the first input
+ * time step), reads the selected vectors as an update would (a mesh
+ * resampled, masks and NaN included), and, under MPI, takes the largest
+ * speed and the whole field's bounds over every process (a collective call,
+ * as every pipeline pass of a distributed run is).
  */
-#ifndef BoundParticles_TracerTimeScale_h
-#define BoundParticles_TracerTimeScale_h
+#ifndef BoundParticles_TracerFieldProbe_h
+#define BoundParticles_TracerFieldProbe_h
 
 #include "TraceSettings.h"
 
@@ -38,10 +42,21 @@ namespace bpvtk
 using GridOf = std::function<vtkDataArray*(
   vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)>;
 
-/// The scale of the field `input` (the filter's input connection, `inInfo`
-/// its information) delivers; invalid (bp::TimeScale::valid()) when it cannot
-/// be read or does not move.
-bp::TimeScale probeTimeScale(vtkAlgorithmOutput* input, vtkInformation* inInfo,
+/// What the probe found.
+struct FieldProbe
+{
+  bool read = false; ///< the field could be read (facts and scale are set)
+  /// Its scale; invalid (bp::TimeScale::valid()) where it does not move.
+  bp::TimeScale scale;
+  /// Its facts as a replay resolves settings against them (the whole field's
+  /// bounds, grid-local; its first point; points per axis; the mean cell
+  /// length; the top speed of the time step probed).
+  bp::FieldFacts facts;
+};
+
+/// Probes the field `input` (the filter's input connection, `inInfo` its
+/// information) delivers at its first time step.
+FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf);
 
 } // namespace bpvtk

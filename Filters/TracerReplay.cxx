@@ -4,6 +4,7 @@
 // placed at the start. See vtkBoundParticleTracerInternals.h.
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "ElementStretch.h"
 #include "ElementTemplate.h"
 #include "Memory.h"
 #include "Partition.h"
@@ -175,6 +176,22 @@ void vtkBoundParticleTracer::vtkInternals::warnOfReleaseWindow(const bp::Paramet
   }
 }
 
+void vtkBoundParticleTracer::vtkInternals::warnOfDeformation(
+  const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p)
+{
+  const bool map = p.releasePattern == bp::ReleasePattern::Lattice;
+  const bool arrays =
+    config.wants(bp::OutputArrayId::ElementFTLE) || config.wants(bp::OutputArrayId::ElementStretch);
+  if ((map || arrays) && bp::StretchFit(shape.rest, 1.0).span() == 0)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "The element template has a single particle (Element Shape Point), which cannot stretch: "
+        << (arrays ? "ElementFTLE is 0 and ElementStretch 1 everywhere" : "")
+        << (arrays && map ? ", and " : "") << (map ? "the FTLE map marks every point invalid" : "")
+        << ". Choose a shape of several particles (Cross, Strip...) to measure stretch.");
+  }
+}
+
 std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
@@ -184,6 +201,7 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Confi
   {
     return templateError;
   }
+  this->warnOfDeformation(config, shape, p);
   p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
   if (!seeds.xyz.empty())
   {

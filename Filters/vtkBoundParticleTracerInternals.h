@@ -264,6 +264,9 @@ private:
   std::string checkConfiguration(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bpvtk::TracerSeeds& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);
+  /// Warns when stretch is asked of a template that cannot stretch (one particle).
+  void warnOfDeformation(
+    const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
   /// Warns when the Release Window releases nothing in the offered times.
   void warnOfReleaseWindow(const bp::Parameters& p);
   /// The element template: the built-in shape or the template input.
