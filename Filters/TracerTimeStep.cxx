@@ -14,6 +14,7 @@
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 
 #include <algorithm>
@@ -37,6 +38,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     return std::string();
   }
   vtkDataObject* input = step.data;
+  this->noteVectors(config, input);
   vtkDataArray* vectors = step.vectors;
   int association = step.association;
   std::string requested = config.vectors.name;
@@ -90,12 +92,28 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
 }
 
+void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtkDataObject* input)
+{
+  // Said once for each choice among an input's arrays, by one process.
+  const std::string note =
+    bpvtk::describeVectorsChoice(input, config.vectors.name, config.vectors.association);
+  if (note != this->SaidVectors && (!this->Layout.distributed() || this->Layout.Piece == 0))
+  {
+    if (!note.empty())
+    {
+      vtkOutputWindowDisplayText(note.c_str());
+    }
+  }
+  this->SaidVectors = note;
+}
+
 void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
   const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
 {
   // Collective in a distributed run, as every process reads in this pass.
-  const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights,
-    this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
+  const std::string warning =
+    bpvtk::readReleaseWeights(input, config.releaseWeights, config.releaseWeightsAssociation,
+      this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
   if (!warning.empty() && !this->WarnedWeights)
   {
     this->WarnedWeights = true; // once per configuration, as the mask's
