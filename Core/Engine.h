@@ -300,10 +300,12 @@ private:
     return (this->ResetFlags[e] & (ResetDue | ReleaseHidden)) || this->Lifetimes[e] <= 0.0f;
   }
   /// The release centre of element `element`'s generation (Engine::place);
-  /// false for a lattice point that does not fit (the element is hidden).
+  /// false for a lattice point, or a weighted release with no candidate,
+  /// that does not fit (the element is hidden).
   bool releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
-  /// The Random pattern's centre with Release Weights (ReleaseWeights.h).
-  void weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
+  /// The Random pattern's centre with Release Weights (ReleaseWeights.h);
+  /// false where no candidate fits.
+  bool weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// What a step decides once for every element: the second slice's weight
   /// at t, t + h/2 and t + h, the release window, and who resets.
   struct StepWeights

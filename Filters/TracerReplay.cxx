@@ -272,6 +272,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const C
                       "cell has a corner where vtkValidPointMask is 0 or the vector is NaN or "
                       "Inf, in one of its time steps): there is nowhere to release elements.");
   }
+  this->warnOfUnreachableWeights(config, field, p);
   bp::Stepper& stepper = this->stepper();
   error = stepper.setField(field);
   if (!error.empty())
@@ -293,6 +294,34 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const C
       this->Grid.bounds(), shape.particleCount());
   }
   return Pass();
+}
+
+void vtkBoundParticleTracer::vtkInternals::warnOfUnreachableWeights(
+  const Config& config, const bp::VectorField& field, const bp::Parameters& p)
+{
+  const bool weighted = !config.releaseWeights.empty() && p.seedPoints.empty() &&
+    p.releasePattern == bp::ReleasePattern::Random && p.linking == bp::Linking::None;
+  if (!weighted || this->WarnedWeights)
+  {
+    return; // not used, or already said to be unusable
+  }
+  // Collective in a distributed run, as every process takes this path alike.
+  const auto& values = field.firstSlice().releaseWeights;
+  const bool local = values && bp::releaseWeightsOf(field.grid(), values) != nullptr;
+  const bool any =
+    this->Layout.distributed() ? this->Layout.globalMax(local ? 1.0 : 0.0) > 0.0 : local;
+  const bp::ReleaseMask mask = this->Layout.distributed()
+    ? this->Layout.releaseMask()(field, p.releaseMinSpeed)
+    : bp::releaseMaskOf(field, p.releaseMinSpeed);
+  if (any && !mask.weights)
+  {
+    this->WarnedWeights = true;
+    vtkWarningWithObjectMacro(this->Owner,
+      "Release Weights: the array '"
+        << config.releaseWeights
+        << "' is above 0 only where releases may not land (vtkValidPointMask 0, NaN or Inf "
+           "vectors, or flow slower than MinimumReleaseSpeed); releases are uniform.");
+  }
 }
 
 void vtkBoundParticleTracer::vtkInternals::startTrace()

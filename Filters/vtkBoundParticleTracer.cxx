@@ -201,6 +201,9 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     ? weights->Get(vtkDataObject::FIELD_NAME())
     : nullptr;
   c.releaseWeights = weightsName && std::string(weightsName) != "None" ? weightsName : "";
+  c.releaseWeightsAssociation = weights && weights->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? weights->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   c.trace.weighted = !c.releaseWeights.empty();
   return c;
 }

@@ -237,6 +237,10 @@ private:
   /// Release Weights for `slice` from `input` (TracerReleaseWeights.h), and
   /// their warning once per configuration.
   void takeReleaseWeights(const Config& config, vtkDataObject* input, bp::FieldSlice& slice);
+  /// Says which of the input's 3-component arrays is traced and why
+  /// (bpvtk::describeVectorsChoice), once for each new choice.
+  void noteVectors(const Config& config, vtkDataObject* input);
+  std::string SaidVectors; ///< the last note said (or found empty)
   /// The mask's and the NaNs' warnings, once per configuration.
   void warnOfSlice(const std::string& maskProblem, std::size_t nonFinite, std::size_t points);
   /// The time this pass's slice stands for; warns when upstream delivered another.
@@ -267,6 +271,10 @@ private:
   /// Warns when stretch is asked of a template that cannot stretch (one particle).
   void warnOfDeformation(
     const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// Warns when Release Weights are above 0 only where releases may not
+  /// land (the engines then release uniformly, bp::releaseWeightsOf).
+  void warnOfUnreachableWeights(
+    const Config& config, const bp::VectorField& field, const bp::Parameters& p);
   /// Warns when the Release Window releases nothing in the offered times.
   void warnOfReleaseWindow(const bp::Parameters& p);
   /// The element template: the built-in shape or the template input.

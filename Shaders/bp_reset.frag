@@ -75,8 +75,10 @@ void main()
     float generation = bpInitialize ? 0.0 : state.y + 1.0;
     outState = vec4(bpLifetimeOf(e, generation), generation, 1.0, 0.0);
     outCenter = vec4(bpCenterOf(e, generation), bpReleasing ? 0.0 : 1.0);
-    // A lattice point that does not fit is never shown (Engine::place).
-    outCenter.w = bpLattice && bpSeedCount == 0 && !bpSeedFits(outCenter.xyz) ? 1.0 : outCenter.w;
+    // A lattice point, or a weighted release none of whose candidates fits,
+    // is not shown (Engine::place): due again at the next step.
+    bool placedByBox = bpSeedCount == 0 && !bpLinked && (bpLattice || bpWeighted);
+    outCenter.w = placedByBox && !bpSeedFits(outCenter.xyz) ? 1.0 : outCenter.w;
     outOrientation = bpFrameQuaternion;
     if (bpOrientation == 1 && bpPlaneAxis >= 0)
     {
