@@ -100,6 +100,12 @@ std::string vtkBoundParticleTracer::vtkInternals::gatherSeeds(const Config& conf
   if (!config.seedSource)
   {
     this->seedTypePoints(config, field, seeds);
+    const std::string unusable =
+      config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
+    if (!unusable.empty() && !this->WarnedSeeds)
+    {
+      vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
+    }
   }
   return std::string();
 }

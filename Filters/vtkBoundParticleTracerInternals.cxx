@@ -59,6 +59,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->WarnedMask = false;
   this->WarnedResample = false;
   this->WarnedWeights = false;
+  this->WarnedSeeds = false;
   this->Steppers.invalidate();
 }
 

@@ -118,6 +118,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedMask = false;       ///< an unusable vtkValidPointMask was reported for it
   bool WarnedResample = false;   ///< blocks without the Vectors were reported for it
   bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
+  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
@@ -295,7 +296,7 @@ private:
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
   std::string seedPoints(
-    const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p) const;
+    const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p);
 
   // The output (vtkBoundParticleTracerInternals.cxx).
   /// In parallel: the balance, the migrations and exchange errors of the steps.
