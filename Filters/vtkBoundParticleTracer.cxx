@@ -184,6 +184,10 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
       (row.id != bp::OutputArrayId::Vorticity || this->ComputeVorticity);
   }
+  // Trails fade by their poses' Age (the Bound Particles display's fade of
+  // the CPU output): it comes with them whatever Output Arrays holds.
+  c.wanted[std::size_t(bp::OutputArrayId::Age)] =
+    c.wanted[std::size_t(bp::OutputArrayId::Age)] || this->Trails;
   c.seedType = this->SeedType;
   c.templateInput = this->GetNumberOfInputConnections(1) > 0;
   c.seedSource = this->GetNumberOfInputConnections(2) > 0;
