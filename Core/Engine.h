@@ -412,6 +412,8 @@ private:
   std::vector<float> Poses; ///< poses(): 4 floats per element
   std::vector<float> Spins; ///< spins(): 4 floats per element
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+  /// The template's long axis (longAxis()), which Along Flow turns onto the flow.
+  std::array<float, 3> LongAxis = { 1, 0, 0 };
   std::vector<std::uint8_t> ResetFlags;
   std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
 

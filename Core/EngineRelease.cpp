@@ -103,8 +103,9 @@ void Engine::alignToFlow(std::size_t e, const ReleaseFlow& flow)
 {
   float v[3];
   flow.field->sampleWeighted(this->InitialCenters.data() + 3 * e, flow.weight, v);
-  this->orient(
-    e, alongFlowQuaternion(v, this->Params.planeAxis, this->Params.frame, this->FrameQuaternion));
+  this->orient(e,
+    alongFlowQuaternion(
+      v, this->Params.planeAxis, this->Params.frame, this->LongAxis, this->FrameQuaternion));
   this->ResetFlags[e] &= std::uint8_t(~AlignPending);
 }
 
