@@ -81,6 +81,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   {
     return error;
   }
+  this->keepInPlane(grid, slice);
   if (!config.releaseWeights.empty())
   {
     this->takeReleaseWeights(config, input, slice);
@@ -105,6 +106,64 @@ void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtk
     }
   }
   this->SaidVectors = note;
+}
+
+void vtkBoundParticleTracer::vtkInternals::keepInPlane(
+  const bp::GridGeometry& grid, bp::FieldSlice& slice)
+{
+  // The whole field's flat axes (a process's block of an image may be thin).
+  std::array<bool, 3> flat;
+  bool any = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int points = this->Layout.distributed()
+      ? this->Layout.WholeExtent[2 * a + 1] - this->Layout.WholeExtent[2 * a] + 1
+      : grid.dims[a];
+    flat[a] = points == 1;
+    any = any || flat[a];
+  }
+  if (!any || !slice.velocity)
+  {
+    return;
+  }
+  // Copied only where a component crosses the plane.
+  const std::vector<float>& given = *slice.velocity;
+  bool crosses = false;
+  for (std::size_t i = 0; i + 2 < given.size() && !crosses; i += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      crosses = crosses || (flat[a] && given[i + std::size_t(a)] != 0.0f);
+    }
+  }
+  double dropped = 0.0;
+  float inPlane = 0.0f;
+  if (crosses)
+  {
+    auto velocity = std::make_shared<std::vector<float>>(given);
+    dropped = bp::dropFlatComponents(*velocity, flat, inPlane);
+    slice.velocity = velocity;
+  }
+  if (this->Layout.distributed())
+  {
+    // Collective: every process reads in this pass.
+    dropped = this->Layout.globalMax(dropped);
+    inPlane = float(this->Layout.globalMax(inPlane));
+  }
+  if (dropped > 0.0 && !this->WarnedOutOfPlane)
+  {
+    this->WarnedOutOfPlane = true; // once per configuration, as the mask's
+    std::string axes;
+    for (int a = 0; a < 3; ++a)
+    {
+      axes += flat[a] ? std::string(axes.empty() ? "" : " and ") + "XYZ"[a] : "";
+    }
+    vtkWarningWithObjectMacro(this->Owner,
+      "The field is flat along " << axes << " (one point) but its vectors cross its plane (up to "
+                                 << dropped << ", against a top speed in the plane of " << inPlane
+                                 << "): elements stay in the plane, the crossing component is "
+                                    "not traced.");
+  }
 }
 
 void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(

@@ -60,6 +60,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->WarnedResample = false;
   this->WarnedWeights = false;
   this->WarnedSeeds = false;
+  this->WarnedOutOfPlane = false;
   this->Steppers.invalidate();
 }
 

@@ -119,6 +119,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedResample = false;   ///< blocks without the Vectors were reported for it
   bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
+  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
@@ -242,6 +243,9 @@ private:
   /// (bpvtk::describeVectorsChoice), once for each new choice.
   void noteVectors(const Config& config, vtkDataObject* input);
   std::string SaidVectors; ///< the last note said (or found empty)
+  /// On a flat field, drops the velocity's components across its plane
+  /// (bp::dropFlatComponents), and says so once per configuration.
+  void keepInPlane(const bp::GridGeometry& grid, bp::FieldSlice& slice);
   /// The mask's and the NaNs' warnings, once per configuration.
   void warnOfSlice(const std::string& maskProblem, std::size_t nonFinite, std::size_t points);
   /// The time this pass's slice stands for; warns when upstream delivered another.

@@ -2,7 +2,8 @@
 (issue 38 item 3): of several 3-component arrays, the input's active
 vectors, else the one named like a velocity (VEL over ACCL and DISPL, as on
 Exodus's can), else the first; and Output Messages says which it traces and
-why, once per choice.
+why, once per choice. A flat field whose vectors cross its plane (issue 46
+item 5) keeps its elements in the plane, and says so once.
 """
 import os
 import sys
@@ -77,6 +78,37 @@ plain = can_like(names=("first", "second", "third"))
 tracer = BoundParticleTracer(Input=plain)
 bptest.check(list(tracer.Vectors) == ["POINTS", "first"],
              "with no velocity name, the first: %s" % list(tracer.Vectors))
+Delete(tracer)
+
+# A flat image (one z point, at z = 0.25) whose vectors cross its plane: the
+# elements stay in it, and that is said once.
+from paraview import servermanager  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+flat = ProgrammableSource(OutputDataSetType="vtkImageData")
+flat.ScriptRequestInformation = (
+    "from paraview import util\n"
+    "util.SetOutputWholeExtent(self, [0, 20, 0, 10, 0, 0])\n")
+flat.Script = (
+    "import numpy\n"
+    "from vtkmodules.util.numpy_support import numpy_to_vtk\n"
+    "out = self.GetOutput()\n"
+    "out.SetExtent(0, 20, 0, 10, 0, 0)\n"
+    "out.SetOrigin(0.0, 0.0, 0.25)\n"
+    "out.SetSpacing(0.1, 0.1, 1.0)\n"
+    "v = numpy_to_vtk(numpy.tile([0.3, 0.1, 0.5], (231, 1)), deep=True)\n"
+    "v.SetName('velocity')\n"
+    "out.GetPointData().SetVectors(v)\n")
+flat.UpdatePipeline()
+tracer = BoundParticleTracer(Input=flat, NumberOfElements=50)
+with bptest.CapturedMessages() as said:
+    for t in tracer.TimestepValues[::10]:
+        tracer.UpdatePipeline(t)
+z = vtk_to_numpy(servermanager.Fetch(tracer).GetPoints().GetData())[:, 2]
+crossing = [m for m in said.messages if "crosses its plane" in m or "cross its plane" in m]
+bptest.check(len(crossing) == 1 and "flat along Z" in crossing[0] and "up to 0.5" in crossing[0],
+             "vectors across a flat field's plane are said once: %s" % said.messages)
+bptest.check(abs(z - 0.25).max() < 1e-5, "the elements stay in the plane (off by %.3g)" %
+             abs(z - 0.25).max())
 Delete(tracer)
 
 # One array only: nothing to say.
