@@ -360,6 +360,10 @@ int vtkBoundParticleRepresentation::RequestData(
     {
       I.RequestHeld = true;
     }
+    else
+    {
+      inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+    }
     // The render runs the recorded work and reports its progress from 0 to
     // 1: this update's own end (the executive's 1 after RequestData) would
     // make an observer see 0, 1, then the run's 0.03 ... 1. It reports 0 instead.
@@ -369,10 +373,6 @@ int vtkBoundParticleRepresentation::RequestData(
     if (runFollows)
     {
       I.GpuMapper->OweProgressEnd();
-    }
-    else
-    {
-      inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
     }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
