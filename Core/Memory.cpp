@@ -7,6 +7,10 @@
 
 #include <sys/resource.h>
 #include <unistd.h>
+#if defined(__GLIBC__) && __has_include(<malloc.h>)
+#include <malloc.h>
+#define BOUNDPARTICLES_HAS_MALLOC_TRIM 1
+#endif
 
 namespace bp
 {
@@ -82,6 +86,13 @@ std::string checkAllocatable(double bytes, const std::string& what)
   }
   return what + " needs about " + gigabytes(bytes) + ", more than the " + gigabytes(available) +
     " this process can allocate";
+}
+
+void returnFreedMemory()
+{
+#ifdef BOUNDPARTICLES_HAS_MALLOC_TRIM
+  malloc_trim(0);
+#endif
 }
 
 } // namespace bp

@@ -2,6 +2,7 @@
 #include "vtkBoundParticleTracer.h"
 
 #include "ElementTemplate.h"
+#include "Memory.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
 #include "TracerFieldProbe.h"
@@ -98,7 +99,18 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
 }
 
-vtkBoundParticleTracer::~vtkBoundParticleTracer() = default;
+void vtkBoundParticleTracer::ReturnFreedMemory()
+{
+  bp::returnFreedMemory();
+}
+
+vtkBoundParticleTracer::~vtkBoundParticleTracer()
+{
+  // The trace, its field time steps and its output's memory are freed here:
+  // handed back to the system, so Delete and Reset Session show it.
+  this->Internals.reset();
+  bp::returnFreedMemory();
+}
 
 double vtkBoundParticleTracer::GetSimulationTime() const
 {

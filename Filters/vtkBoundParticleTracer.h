@@ -493,6 +493,14 @@ public:
   /// Where the output records the GPU_WORK_QUEUE it was made for.
   static vtkInformationIntegerKey* DATA_GPU_WORK_QUEUE();
 
+  /**
+   * Hands the memory this process has freed back to the system (glibc keeps
+   * freed blocks in its heap otherwise). A tracer does it when it is
+   * destroyed; the GUI does it again once a deleted tracer's displays are
+   * gone too (their copies of its output are freed after it).
+   */
+  static void ReturnFreedMemory();
+
   ///@{
   /// What the last update did: the simulation time of the output, the number
   /// of steps it took, whether it replayed from the start, and the resolved

@@ -2,6 +2,7 @@
 #include "pqBoundParticleDisplays.h"
 
 #include "pqBoundParticleIsTracer.h"
+#include "vtkBoundParticleTracer.h"
 
 #include <QTimer>
 
@@ -30,7 +31,15 @@ void pqBoundParticleDisplays::onStartup()
   QObject::connect(model, &pqServerManagerModel::sourceAdded, this,
     [this](pqPipelineSource* source) { this->watch(source); });
   QObject::connect(model, &pqServerManagerModel::sourceRemoved, this,
-    [this](pqPipelineSource* source) { this->Vectors.remove(source); });
+    [this](pqPipelineSource* source)
+    {
+      if (this->Vectors.remove(source) > 0)
+      {
+        // A tracer went: once ParaView has let go of it and of its displays
+        // (their copies of its output go after it), the memory goes back.
+        QTimer::singleShot(0, [] { vtkBoundParticleTracer::ReturnFreedMemory(); });
+      }
+    });
   QObject::connect(model, &pqServerManagerModel::representationRemoved, this,
     [this](pqRepresentation* r)
     {
