@@ -6,6 +6,8 @@
 #   bash scripts/chroot-test.sh forky     # ParaView 6.1,  VTK 9.6, Qt 6
 #   bash scripts/chroot-test.sh forky COMMAND...   # build, then run COMMAND
 #                                                  # inside (in the repository)
+#   bash scripts/chroot-test.sh forky --package    # the Debian package: build it,
+#                                  # install, check and purge it (scripts/package-test.sh)
 #
 # The chroot is kept between runs in $BOUNDPARTICLES_CHROOT_DIR (default
 # /var/cache/boundparticles/chroots/SUITE); a kept one is updated only when
@@ -103,6 +105,12 @@ inside() {
 }
 # An install interrupted in an earlier run leaves packages half-configured.
 inside dpkg --configure -a >/dev/null 2>&1 || true
+if [ "${1:-}" = --package ]; then
+  say "the Debian package (chroot ready after $((SECONDS - start)) s)"
+  inside bash /work/main/scripts/package-test.sh || fail "the Debian package (see above)"
+  say "package passed in $((SECONDS - start)) s"
+  exit
+fi
 if [ $# -gt 0 ]; then
   inside bash -c 'cd /work/main && bash scripts/build.sh >/dev/null && exec "$@"' command "$@"
   exit
