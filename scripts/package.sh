@@ -58,10 +58,13 @@ find "$stage" -name '*.so' -type f -exec strip --strip-unneeded \
 
 # The exact ParaView package this build is for: the one that holds the
 # ParaView libraries the plugin links (paraview on Debian).
-remoting="$(find /usr/lib -name 'libvtkRemotingCore-pv*.so.*' -print -quit)"
-[ -n "$remoting" ] || fail "no ParaView library (libvtkRemotingCore-pv*.so) under /usr/lib"
+paraview_dir="$(sed -n 's/^ParaView_DIR:PATH=//p' "$build/CMakeCache.txt")"
+remoting="$(find "$(dirname "$(dirname "$paraview_dir")")" -maxdepth 1 \
+  -name 'libvtkRemotingCore-pv*.so.*' -print -quit 2>/dev/null || true)"
+[ -n "$remoting" ] || fail "no ParaView library (libvtkRemotingCore-pv*.so) beside $paraview_dir"
 paraview_package="$(dpkg -S "$(realpath "$remoting")" 2>/dev/null | head -n 1 | cut -d: -f1)"
-[ -n "$paraview_package" ] || fail "$remoting belongs to no Debian package"
+[ -n "$paraview_package" ] || fail "the ParaView built against ($paraview_dir) is not \
+Debian's: $remoting belongs to no Debian package"
 paraview_version="$(dpkg-query -W -f='${Version}' "$paraview_package")"
 paraview_upstream="$(echo "$paraview_version" | sed -E 's/^[0-9]+://; s/[+~-].*//')"
 project_version="$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCache.txt")"
