@@ -6,6 +6,8 @@
 #   bash scripts/chroot-test.sh forky     # ParaView 6.1,  VTK 9.6, Qt 6
 #   bash scripts/chroot-test.sh forky COMMAND...   # build, then run COMMAND
 #                                                  # inside (in the repository)
+#   bash scripts/chroot-test.sh forky --package    # the Debian package: build it,
+#                                  # install, check and purge it (scripts/package-test.sh)
 #
 # The chroot is kept between runs in $BOUNDPARTICLES_CHROOT_DIR (default
 # /var/cache/boundparticles/chroots/SUITE); a kept one is updated only when
@@ -86,6 +88,9 @@ cp /etc/resolv.conf "$dir/etc/resolv.conf" 2>/dev/null || true
 # Packages installed inside start no services (there is no init to run them).
 printf '#!/bin/sh\nexit 101\n' >"$dir/usr/sbin/policy-rc.d"
 chmod +x "$dir/usr/sbin/policy-rc.d"
+# A chroot for tests need not survive a crash: dpkg unpacks without syncing
+# each file (the first run installs some 4 GB of packages).
+echo force-unsafe-io >"$dir/etc/dpkg/dpkg.cfg.d/99boundparticles"
 
 bind /proc "$dir/proc"
 bind /sys "$dir/sys"
@@ -103,6 +108,12 @@ inside() {
 }
 # An install interrupted in an earlier run leaves packages half-configured.
 inside dpkg --configure -a >/dev/null 2>&1 || true
+if [ "${1:-}" = --package ]; then
+  say "the Debian package (chroot ready after $((SECONDS - start)) s)"
+  inside bash /work/main/scripts/package-test.sh || fail "the Debian package (see above)"
+  say "package passed in $((SECONDS - start)) s"
+  exit
+fi
 if [ $# -gt 0 ]; then
   inside bash -c 'cd /work/main && bash scripts/build.sh >/dev/null && exec "$@"' command "$@"
   exit

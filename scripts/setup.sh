@@ -3,6 +3,8 @@
 # for the Debian suite this runs on: bookworm (ParaView 5.11, Qt 5), trixie
 # (ParaView 5.13, Qt 6) or forky/sid (ParaView 6.x on the system VTK, Qt 6).
 # Idempotent and quiet: it does nothing when everything is already installed.
+#
+#   setup.sh [PACKAGE...]    # also the packages named (scripts/package.sh: lintian)
 set -euo pipefail
 
 codename="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
@@ -39,7 +41,7 @@ case "$codename" in
     exit 1
     ;;
 esac
-PACKAGES=("${COMMON[@]}" "${SUITE[@]}")
+PACKAGES=("${COMMON[@]}" "${SUITE[@]}" "$@")
 
 # Debian's trixie and forky paraview-dev name the Python modules by their plain
 # file names (vtkmodules/vtkCommonCore.so) while the packages ship them as

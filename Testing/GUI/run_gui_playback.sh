@@ -15,6 +15,9 @@ plugin_dir="$1"
 data_dir="$2"
 script="$3"
 export PV_PLUGIN_PATH="$plugin_dir${4:+:$4}"
+# An installed package's plugin (its login script sets PV_PLUGIN_CONFIG_FILE)
+# must not load beside the one under test.
+unset PV_PLUGIN_CONFIG_FILE
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
 trap 'rm -rf "$HOME"' EXIT

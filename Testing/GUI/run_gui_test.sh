@@ -6,6 +6,9 @@ plugin_dir="$1"
 marker="$2"
 rm -f "$marker"
 export PV_PLUGIN_PATH="$plugin_dir" BOUNDPARTICLES_GUI_MARKER="$marker"
+# An installed package's plugin (its login script sets PV_PLUGIN_CONFIG_FILE)
+# must not load beside the one under test.
+unset PV_PLUGIN_CONFIG_FILE
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
 timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
