@@ -424,7 +424,8 @@ bool bpFinite(vec3 p)
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where
-// the two coincide. Each pass scales it by the particle's share.
+// the two coincide. Each kernel scales it by the particle's share. The one
+// GLSL definition, springForce in Core/SpringForce.h the one C++ one.
 bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force)
 {
   vec3 d = pa - pb;
