@@ -35,6 +35,13 @@ shared vec4 bpLocalFit[BP_GROUP_ELEMENTS]; // shape matching's fit, then the tes
 shared vec4 bpLocalLinear0[BP_GROUP_ELEMENTS];
 shared vec4 bpLocalLinear1[BP_GROUP_ELEMENTS];
 
+// Every thread of the workgroup here, and what they wrote to shared memory
+// visible to all (barrier() alone orders execution; OpenGL's GLSL leaves its
+// effect on shared memory to memoryBarrierShared()).
+#define bpSync()             \
+  memoryBarrierShared();     \
+  barrier()
+
 int bpGroupFirstElement()
 {
   int group = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
@@ -74,7 +81,7 @@ void main()
     bpLocalOrientation[thread] = orientation;
     imageStore(bpCentersOut, at, center);
   }
-  barrier();
+  bpSync();
 
   // 2. Advect.
   vec3 before = vec3(0.0), advected = vec3(0.0);
@@ -85,7 +92,7 @@ void main()
   }
   bpLocalPositions[thread] = advected;
   vec3 p = advected;
-  barrier();
+  bpSync();
 
   // 3. Restore: K iterations, each phase's positions shared once every
   // thread has read the last ones.
@@ -96,9 +103,9 @@ void main()
     {
       p = bpJacobiParticle(e, i, p);
     }
-    barrier();
+    bpSync();
     bpLocalPositions[thread] = p;
-    barrier();
+    bpSync();
 #elif BP_RESTORATION == 2
     for (int colour = 0; colour < bpColourCount; ++colour)
     {
@@ -106,9 +113,9 @@ void main()
       {
         p = bpGaussSeidelParticle(e, i, p, colour);
       }
-      barrier();
+      bpSync();
       bpLocalPositions[thread] = p;
-      barrier();
+      bpSync();
     }
 #elif BP_RESTORATION == 3
     if (lead)
@@ -120,15 +127,15 @@ void main()
       bpLocalLinear0[thread] = linear0;
       bpLocalLinear1[thread] = linear1;
     }
-    barrier();
+    bpSync();
     if (live)
     {
       p = bpMatchParticle(i, p, bpLocalFit[local], bpLocalOrientation[local],
         bpLocalLinear0[local], bpLocalLinear1[local]);
     }
-    barrier();
+    bpSync();
     bpLocalPositions[thread] = p;
-    barrier();
+    bpSync();
 #endif
   }
 
@@ -142,7 +149,7 @@ void main()
     imageStore(bpElementStateOut, at, tested);
     imageStore(bpOrientationsOut, at, bpLocalOrientation[thread]);
   }
-  barrier();
+  bpSync();
 
   // 5. Finalize.
   vec4 after = vec4(0.0);
@@ -155,9 +162,9 @@ void main()
   // 6. Poses and spins, from the positions after the step.
   if (bpTrackPoses)
   {
-    barrier();
+    bpSync();
     bpLocalPositions[thread] = after.xyz;
-    barrier();
+    bpSync();
     if (lead)
     {
       vec4 spin;
