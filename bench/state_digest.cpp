@@ -56,15 +56,15 @@ struct Config
   void (*adjust)(bp::Parameters&, bp::ElementTemplate&);
 };
 
-bp::GridGeometry grid(int nx, int ny, int nz, const std::array<double, 6>& b)
+/// The parity tests' fields: a 24^3 grid over [-1, 1]^3 (steady) or 41 x 21 x 6
+/// points 0.05 apart from the origin (the double gyre's box, unsteady).
+bp::GridGeometry gridFor(bool unsteady)
 {
   bp::GridGeometry g;
-  g.dims = { nx, ny, nz };
-  for (int a = 0; a < 3; ++a)
-  {
-    g.origin[a] = b[2 * a];
-    g.spacing[a] = g.dims[a] > 1 ? (b[2 * a + 1] - b[2 * a]) / (g.dims[a] - 1) : 1.0;
-  }
+  g.dims = unsteady ? std::array<int, 3>{ 41, 21, 6 } : std::array<int, 3>{ 24, 24, 24 };
+  const double spacing = unsteady ? 0.05 : 2.0 / 23;
+  g.origin = unsteady ? std::array<double, 3>{ 0, 0, 0 } : std::array<double, 3>{ -1, -1, -1 };
+  g.spacing = { spacing, spacing, spacing };
   return g;
 }
 
@@ -240,7 +240,7 @@ int main(int argc, char** argv)
   const std::array<double, 6> steadyBox{ -1, 1, -1, 1, -1, 1 }, gyreBox{ 0, 2, 0, 1, 0, 0.25 };
   for (const Config& c : Configs)
   {
-    const bp::GridGeometry g = c.unsteady ? grid(41, 21, 6, gyreBox) : grid(24, 24, 24, steadyBox);
+    const bp::GridGeometry g = gridFor(c.unsteady);
     const std::array<double, 6>& box = c.unsteady ? gyreBox : steadyBox;
     auto slice = [&](bp::AnalyticFlow flow, double t)
     {
