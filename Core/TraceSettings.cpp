@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TraceSettings.h"
 
+#include "ElementStretch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -125,7 +127,19 @@ std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resoluti
     }
   }
   p.lattice = releaseLattice(lo, hi, p.numberOfElements, s.latticeSpacing);
+  const std::size_t asked = p.numberOfElements;
   p.numberOfElements = p.lattice.size();
+  if (s.latticeSpacing > 0.0 && p.numberOfElements >= LatticeOverrunWarning * asked)
+  {
+    // A set spacing decides the count: say so when it is far from the one asked.
+    std::ostringstream w;
+    w << "LatticeSpacing " << s.latticeSpacing << " gives a lattice of " << p.numberOfElements
+      << " points (" << p.lattice.counts[0] << " x " << p.lattice.counts[1] << " x "
+      << p.lattice.counts[2] << "), an element each: " << p.numberOfElements / asked
+      << " times Number Of Elements (" << asked
+      << "). Raise LatticeSpacing, or set it to 0 to release Number Of Elements on the lattice.";
+    r.warnings.push_back(w.str());
+  }
   return std::string();
 }
 
@@ -192,6 +206,32 @@ void resolvePlane(const FieldFacts& f, Parameters& p)
   p.frame = flat == 2 ? rotationFromDegrees(0, 0, 0)
     : flat == 1       ? rotationFromDegrees(-90, 0, 0)
                       : rotationFromDegrees(0, 90, 0);
+}
+
+/// The warning of an unsteady field whose typical speed crosses more than
+/// UnitsWarningShare of it between two input time steps; empty otherwise.
+std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeScale& scale)
+{
+  double longest = 0.0;
+  for (std::size_t k = 1; k < inputTimes.size(); ++k)
+  {
+    longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
+  }
+  const double share = scale.extent > 0.0 ? scale.typicalSpeed * longest / scale.extent : 0.0;
+  if (!(share > UnitsWarningShare) || !std::isfinite(share))
+  {
+    return std::string();
+  }
+  std::ostringstream w;
+  w << "At the field's typical speed (" << scale.typicalSpeed
+    << ": 90% of its moving points are slower) an element crosses "
+    << int(std::round(100.0 * std::min(share, 1e6))) << "% of the field (" << scale.extent
+    << " long) between two input time steps (" << longest
+    << " apart), so the trace crumples: the velocity's units may not match the grid's or the "
+       "time's (e.g. m/s on a grid in degrees, with time in hours). Pick Vectors in the grid's "
+       "units per time unit, or convert them with a Calculator; Step Size in Time units then "
+       "steps in the data's own time.";
+  return w.str();
 }
 
 Resolution failure(const std::string& message)
@@ -268,6 +308,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   }
   // A pose every TrailSpacing steps of the schedule (recordsTrailAt); the
   // schedule's start is the tracer's (Parameters::trailStart).
+  r.parameters.ftleMinimumAge = MinimumFtleSteps * r.dt;
   r.parameters.trailLength = s.trailLength;
   r.parameters.trailInterval = s.trailSpacing * r.dt;
   if (!s.seeded)
@@ -340,6 +381,11 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
         << " steps; check the velocity's units, or set Step Size in time units.";
       line.warnings.push_back(w.str());
     }
+  }
+  const std::string perInterval = unitsPerInterval(inputTimes, scale);
+  if (!perInterval.empty())
+  {
+    line.warnings.push_back(perInterval);
   }
   if (!stepKnown)
   {

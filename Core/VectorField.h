@@ -120,6 +120,16 @@ struct FieldSlice
   std::shared_ptr<const std::vector<float>> releaseWeights;
 };
 
+/**
+ * A flat field (one point along an axis) has no flow across its plane: the
+ * velocity's components along `flat` axes are dropped (made 0), so elements
+ * stay in the plane instead of leaving it unseen. Returns the largest
+ * component dropped (0 where none was), and the largest speed kept in the
+ * plane through `inPlane`. `velocity` holds 3 floats per point.
+ */
+float dropFlatComponents(
+  std::vector<float>& velocity, const std::array<bool, 3>& flat, float& inPlane);
+
 class VectorField
 {
 public:
@@ -175,6 +185,10 @@ public:
 
   /// Largest speed over the grid points of the first slice.
   double maxSpeed() const;
+  /// The speed 90% of the first time step's moving points (speed above 0)
+  /// are slower than: a typical fast speed, untouched by a few spikes; 0 for
+  /// a still field.
+  double typicalSpeed() const;
 
   /// The largest velocity component the engine supports (its square, summed
   /// over three components, must stay finite in float), and the largest

@@ -21,7 +21,8 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const std::size_t n = this->shape.particleCount();
   const ParticleLayout wanted = ParticleLayout::of(p.numberOfElements, n);
   this->layout = GpuLayout(wanted, p.numberOfElements, n);
-  this->FrameQuaternion = quaternionFromRotation(p.frame);
+    this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->LongAxis = longAxis(this->shape);
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   if (!error.empty())
   {

@@ -12,7 +12,8 @@ void GpuSystem::resetInputs(GpuPass& pass, bool initialize, bool releasing, doub
   this->bindCurrent(pass, { E::State, E::Centers, E::Orientations, E::Poses });
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setInt("bpReleasing", releasing ? 1 : 0);
-  pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
+    pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
+  pass.setVec3("bpLongAxis", this->LongAxis.data());
   pass.setInt("bpPlaneAxis", this->parameters.planeAxis);
   // Along Flow samples the flow at the release centre at t (Engine::alignToFlow).
   const VectorField* field = this->fieldCache.field();
