@@ -66,8 +66,12 @@ public:
 double median(const std::function<double()>& run)
 {
   run(); // warm-up (Google Benchmark 1.7 has no warm-up of its own)
-  benchmark::RegisterBenchmark("run", [&](benchmark::State& state)
-    { for (auto _ : state) state.SetIterationTime(run()); })
+  benchmark::RegisterBenchmark("run",
+    [&](benchmark::State& state)
+    {
+      for (auto _ : state)
+        state.SetIterationTime(run());
+    })
     ->UseManualTime()
     ->Iterations(1)
     ->Repetitions(5)
@@ -289,6 +293,19 @@ void printPassTimes(
   }
 }
 
+/// What the GPU engine said (its path, GpuPath.h), printed after the table
+/// instead of inside its rows.
+std::vector<std::string>& engineMessages()
+{
+  static std::vector<std::string> messages;
+  return messages;
+}
+
+void keepMessage(const std::string& text, bool warning)
+{
+  engineMessages().push_back((warning ? "warning: " : "") + text);
+}
+
 /// The options.
 struct Options
 {
@@ -361,8 +378,8 @@ std::vector<Config> rowsFor(const Options& o)
     return configs;
   std::vector<Config> wanted;
   for (const std::string& name : o.only)
-    for (auto shape : { bp::BuiltinShape::Point, bp::BuiltinShape::Square,
-           bp::BuiltinShape::Strip8, bp::BuiltinShape::Strip16 })
+    for (auto shape : { bp::BuiltinShape::Point, bp::BuiltinShape::Square, bp::BuiltinShape::Strip8,
+           bp::BuiltinShape::Strip16 })
       for (std::size_t n : { 256, 1024, 4096, 16384, 65536, 262144, 1048576 })
       {
         const bool seen = std::any_of(wanted.begin(), wanted.end(),
@@ -399,8 +416,8 @@ std::size_t stateBytesPerElement(const bp::ElementTemplate& t, const bp::Paramet
   e.configure(t, p);
   e.initialize(bp::serialRunner());
   return (sizeof(float) *
-             (e.positions().size() + e.normals().size() + e.forces().size() +
-               e.lifetimes().size() + e.initialCenters().size() + e.orientations().size()) +
+             (e.positions().size() + e.normals().size() + e.forces().size() + e.lifetimes().size() +
+               e.initialCenters().size() + e.orientations().size()) +
            e.generations().size() * 4 + e.resetFlags().size()) /
     p.numberOfElements;
 }
@@ -418,12 +435,13 @@ void printHeads(const Options& o, bool cpuAll, std::FILE* csv)
   std::printf(" %7s\n", "B/elem");
   if (csv)
   {
-    std::fprintf(csv, "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
-                      "cpu_all_threads,cpu_all_steps_per_s,cpu2_particle_steps_per_s,"
-                      "plain2_particle_steps_per_s,bytes_per_element,bytes_per_particle_step");
+    std::fprintf(csv,
+      "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
+      "cpu_all_threads,cpu_all_steps_per_s,cpu2_particle_steps_per_s,"
+      "plain2_particle_steps_per_s,bytes_per_element,bytes_per_particle_step");
     for (const bench::GpuVariant& v : bench::gpuVariants())
-      std::fprintf(csv, ",%s_steps_per_s,%s_particle_steps_per_s,%s_bandwidth_share", v.name,
-        v.name, v.name);
+      std::fprintf(
+        csv, ",%s_steps_per_s,%s_particle_steps_per_s,%s_bandwidth_share", v.name, v.name, v.name);
     std::fprintf(csv, "\n");
   }
 }
@@ -451,6 +469,7 @@ int main(int argc, char** argv)
   const bp::VectorField unsteady(
     g, slice(bp::AnalyticFlow::DoubleGyre, 0.0), slice(bp::AnalyticFlow::DoubleGyre, 100.0));
 
+  bp::setGpuMessageSink(keepMessage);
   bp::HeadlessContext context;
   std::string gpuName = "none", bandwidthSource;
   double bandwidth = 0.0;
@@ -462,8 +481,8 @@ int main(int argc, char** argv)
     gpuName = gpu ? context.description() : error;
     const char* renderer = gpu ? reinterpret_cast<const char*>(glGetString(GL_RENDERER)) : "";
     if (gpu)
-      bandwidth = bench::deviceBandwidth(o.bandwidth, renderer ? renderer : "", o.threads,
-        bandwidthSource);
+      bandwidth =
+        bench::deviceBandwidth(o.bandwidth, renderer ? renderer : "", o.threads, bandwidthSource);
   }
   const std::vector<Config> configs = rowsFor(o);
   if (configs.empty())
@@ -542,6 +561,8 @@ int main(int argc, char** argv)
     }
   }
   printPassTimes(passTimes);
+  for (const std::string& message : engineMessages())
+    std::printf("%s\n", message.c_str());
   // One-particle elements with RK4 (the job of ParaView's Particle Tracer)
   // against the plain RK4 loop: how close the engine runs to this machine's
   // limit when there is nothing to restore.
