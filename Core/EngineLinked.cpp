@@ -3,9 +3,9 @@
 // phases over the whole system, with an averaged Jacobi pass over the links
 // after every restoration iteration, so linked elements wait for each other.
 #include "Engine.h"
+#include "SpringForce.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace bp
 {
@@ -35,15 +35,13 @@ void Engine::restoreLinks(std::size_t e)
       }
       ++count;
       const float* o = snapshot + 3 * (std::size_t(neighbour[d]) * n + i);
-      const float v[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] };
-      const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      if (len > 0.0f)
+      float force[3];
+      if (springForce(q, o, rest[d], stiffness, force))
       {
         // Each end takes half, as a spring within an element does.
-        const float f = stiffness * (rest[d] - len) / len;
         for (int k = 0; k < 3; ++k)
         {
-          acc[k] += 0.5f * (f * v[k]);
+          acc[k] += 0.5f * force[k];
         }
       }
     }

@@ -8,6 +8,7 @@
 #include "Engine.h"
 #include "Pose.h"
 #include "ShapeMatching.h"
+#include "SpringForce.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,21 +81,8 @@ void Engine::advectParticle(
 
 inline bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
 {
-  // Thesis eqs. 2.3-2.5: the whole correction moves end a away from end b by
-  // stiffness * (rest - length) along their difference; the ends share it.
-  const float* pa = p + 3 * s.a;
-  const float* pb = p + 3 * s.b;
-  const float d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
-  const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(len > 0.0f))
-  {
-    return false; // coincident ends give no direction to restore along
-  }
-  const float f = s.stiffness * (s.rest - len) / len;
-  c[0] = f * d[0];
-  c[1] = f * d[1];
-  c[2] = f * d[2];
-  return true;
+  // The whole correction moves end a away from end b; the ends share it.
+  return springForce(p + 3 * s.a, p + 3 * s.b, s.rest, s.stiffness, c);
 }
 
 void Engine::matchShape(float* p, float* orientation) const

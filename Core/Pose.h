@@ -5,7 +5,7 @@
  * best rigid fit of its particles, and its angular velocity over a step.
  *
  * Shared operation for operation by the CPU engine (Engine::settle) and the
- * GPU engine's pose pass (Shaders/bp_pose.frag). Every restoration method
+ * GPU engine's pose pass (Shaders/bp_pose.glsl). Every restoration method
  * gets a pose this way, not only shape matching: at the end of every step the
  * fit (fitRotation in ShapeMatching.h, the extraction shape matching uses,
  * warm-started from the pose of the step before) gives the new pose, and the

@@ -3,7 +3,7 @@
  * @file GlObjects.h
  * @brief Move-only owners of the GPU engine's GL objects, and the textures it makes.
  *
- * An owner holds one GL name (texture, framebuffer, program or vertex array)
+ * An owner holds one GL name (texture, framebuffer, program, vertex array or query)
  * and deletes it in reset(), or when another object is assigned over it.
  * Both need the GL context current, and so does everything that makes an
  * object here.
@@ -98,47 +98,56 @@ struct GlVertexArrayTraits
   static void destroy(GLuint name) { glDeleteVertexArrays(1, &name); }
 };
 
+struct GlQueryTraits
+{
+  static void destroy(GLuint name) { glDeleteQueries(1, &name); }
+};
+
 using GlTexture = GlObject<GlTextureTraits>;
 using GlFramebuffer = GlObject<GlFramebufferTraits>;
 using GlProgram = GlObject<GlProgramTraits>;
 using GlVertexArray = GlObject<GlVertexArrayTraits>;
+using GlQuery = GlObject<GlQueryTraits>;
 
 /**
- * A list of textures that deletes them when another list is assigned over
- * it, as GlObject does; a std::vector<GlTexture> would only forget them (its
+ * A list of GL objects that deletes them when another list is assigned over
+ * it, as GlObject does; a std::vector<GlObject> would only forget them (its
  * move assignment destroys the old elements, and ~GlObject calls no GL).
  */
-class GlTextureList
+template <typename Traits>
+class GlObjectList
 {
 public:
-  GlTextureList() = default;
-  GlTextureList(GlTextureList&&) noexcept = default;
-  GlTextureList& operator=(GlTextureList&& other) noexcept
+  GlObjectList() = default;
+  GlObjectList(GlObjectList&&) noexcept = default;
+  GlObjectList& operator=(GlObjectList&& other) noexcept
   {
     if (this != &other)
     {
       this->clear();
-      this->Textures = std::move(other.Textures);
+      this->Objects = std::move(other.Objects);
     }
     return *this;
   }
 
-  /// Deletes every texture (the context must be current) and empties the list.
+  /// Deletes every object (the context must be current) and empties the list.
   void clear()
   {
-    for (GlTexture& texture : this->Textures)
+    for (GlObject<Traits>& object : this->Objects)
     {
-      texture.reset();
+      object.reset();
     }
-    this->Textures.clear();
+    this->Objects.clear();
   }
-  void add(GlTexture texture) { this->Textures.push_back(std::move(texture)); }
-  std::size_t size() const { return this->Textures.size(); }
-  GLuint operator[](std::size_t k) const { return this->Textures[k].get(); }
+  void add(GlObject<Traits> object) { this->Objects.push_back(std::move(object)); }
+  std::size_t size() const { return this->Objects.size(); }
+  GLuint operator[](std::size_t k) const { return this->Objects[k].get(); }
 
 private:
-  std::vector<GlTexture> Textures;
+  std::vector<GlObject<Traits>> Objects;
 };
+using GlTextureList = GlObjectList<GlTextureTraits>;
+using GlQueryList = GlObjectList<GlQueryTraits>;
 
 GlFramebuffer makeFramebuffer();
 GlVertexArray makeVertexArray();

@@ -18,6 +18,8 @@ struct GpuEngine::Internals
 {
   int textureSizeLimit = 1 << 30;
   bool generatedSprings = false;
+  FusedSteps fusedSteps = FusedSteps::Automatic;
+  bool timing = false;
   GpuSystem system;
 };
 
@@ -55,6 +57,32 @@ bool GpuEngine::generatedSprings() const
   return this->I->generatedSprings;
 }
 
+void GpuEngine::setFusedSteps(FusedSteps choice)
+{
+  this->I->fusedSteps = choice;
+}
+
+GpuPath GpuEngine::path() const
+{
+  return this->I->system.passes.path();
+}
+
+bool GpuEngine::fusedStep() const
+{
+  return bool(this->I->system.passes.programs.step);
+}
+
+void GpuEngine::setPassTiming(bool on)
+{
+  this->I->timing = on;
+  this->I->system.passes.setTiming(on);
+}
+
+std::vector<PassTime> GpuEngine::passTimes()
+{
+  return this->I->system.passes.passTimes();
+}
+
 void GpuEngine::setTextureSizeLimit(int texels)
 {
   this->I->textureSizeLimit = texels;
@@ -69,11 +97,13 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
     return error;
   }
   this->release();
-  error = this->I->system.make(shape, p, this->I->textureSizeLimit, this->I->generatedSprings);
+  Internals& I = *this->I;
+  error = I.system.make(shape, p, I.textureSizeLimit, I.generatedSprings, I.fusedSteps);
   if (!error.empty())
   {
     this->release();
   }
+  I.system.passes.setTiming(I.timing);
   return error;
 }
 
@@ -144,13 +174,14 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
 {
   const GpuSystem& S = this->I->system;
   DrawInputs d;
+  using E = ElementTexture;
   d.positions = S.state.particles.current();
   d.normals = S.state.normals.get();
   d.samples = S.state.samples.get();
-  d.elements = S.state.elements.current();
-  d.centers = S.state.centers.current();
-  d.poses = S.state.poses.current();
-  d.spins = S.state.spins.get();
+  d.elements = S.state.current(E::State);
+  d.centers = S.state.current(E::Centers);
+  d.poses = S.state.current(E::Poses);
+  d.spins = S.state.current(E::Spins);
   d.elementGrid[0] = S.layout.elementGrid[0];
   d.elementGrid[1] = S.layout.elementGrid[1];
   d.blocksPerRow = S.layout.blocksPerRow;
@@ -171,8 +202,10 @@ void GpuEngine::readPoses(std::vector<float>* poses, std::vector<float>* spins) 
   const GpuSystem& S = this->I->system;
   const std::size_t values = 4 * std::size_t(S.layout.elementCount);
   std::vector<float> texels;
-  const std::pair<GLuint, std::vector<float>*> reads[] = { { S.state.poses.current(), poses },
-    { S.state.spins.get(), spins } };
+  const std::pair<GLuint, std::vector<float>*> reads[] = {
+    { S.state.current(ElementTexture::Poses), poses },
+    { S.state.current(ElementTexture::Spins), spins }
+  };
   for (const auto& read : reads)
   {
     if (read.second)
@@ -243,11 +276,11 @@ void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* 
   { S.passes.readTexture(texture, S.layout.elementGrid[0], S.layout.elementGrid[1], texels); };
   if (orientations)
   {
-    readPerElement(S.state.orientations.current());
+    readPerElement(S.state.current(ElementTexture::Orientations));
     orientations->assign(texels.begin(), texels.begin() + 4 * std::size_t(elements));
   }
   // Per element: lifetime, generation, reset flag (the fourth: non-finite).
-  readPerElement(S.state.elements.current());
+  readPerElement(S.state.current(ElementTexture::State));
   std::vector<float>* columns[3] = { lifetimes, generations, resetFlags };
   for (int c = 0; c < 3; ++c)
   {
@@ -260,7 +293,7 @@ void GpuEngine::readElements(std::vector<float>* lifetimes, std::vector<float>* 
   if (centers || hidden)
   {
     // Per element: the release centre, and whether it is hidden.
-    readPerElement(S.state.centers.current());
+    readPerElement(S.state.current(ElementTexture::Centers));
     for (int e = 0; centers && e < elements; ++e)
     {
       centers->resize(std::size_t(elements) * 3);

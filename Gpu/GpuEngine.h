@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file GpuEngine.h
- * @brief The GPU engine: the step of docs/engine-specification.md as fragment
- * passes over float textures.
+ * @brief The GPU engine: the step of docs/engine-specification.md as GLSL
+ * kernels over float textures, run as compute shaders or fragment passes.
  *
- * The same step as bp::Engine, computed per texel by the GLSL passes in
+ * The same step as bp::Engine, computed per texel by the GLSL kernels in
  * Shaders/ (reset, advect, K restoration iterations, reposition test,
  * finalize, and with Parameters::trackPoses the pose fit; normals on
  * demand), ping-ponging RGBA32F textures; a motion trail is a ring of
@@ -14,25 +14,37 @@
  * and no count needs to be a power of two; the limit is GL_MAX_TEXTURE_SIZE.
  * The field's time steps are 3D textures sampled exactly with texelFetch.
  *
- * Plain OpenGL 3.3 core through libepoxy, no VTK: it runs in any current
- * context, a headless EGL one (tests, benchmarks) or a render window's.
- * Every restoration runs here: averaged Jacobi and Jacobi as gathers over each
- * particle's springs, Gauss-Seidel as one pass per colour of a spring colouring
- * (the CPU engine applies the springs in the same colour order), shape matching
- * as a fit per element and a move per particle.
+ * Two paths run the same kernels (GpuPath.h): on OpenGL 4.3 and later the
+ * compute path, each kernel a compute dispatch and, for a system whose
+ * elements fit a workgroup, the whole step one fused dispatch that keeps an
+ * element's particles in shared memory from reset to pose; on OpenGL 3.3 the
+ * fragment path, a full-screen fragment pass per kernel. Both write the same
+ * textures, which a renderer draws from with vertex texture fetch.
+ * BOUNDPARTICLES_GPU_PATH=compute|fragment forces a path.
+ *
+ * Plain OpenGL through libepoxy, no VTK: it runs in any current context, a
+ * headless EGL one (tests, benchmarks) or a render window's. Every
+ * restoration runs here: averaged Jacobi and Jacobi as gathers over each
+ * particle's springs, Gauss-Seidel as one pass (or one barrier) per colour
+ * of a spring colouring (the CPU engine applies the springs in the same
+ * colour order), shape matching as a fit per element and a move per
+ * particle. A step never waits for the GPU nor reads from it.
  *
  * Inside, by role: GpuSystem.h (what configure() makes, a step's passes),
- * GpuPasses.h (running and reading back passes), ShaderSource.h (a pass's
- * GLSL put together, compiled, its errors named by file and line), GpuTemplate.h
- * (the template's tables), GpuState.h (the state textures), GpuFieldCache.h
- * (resident time steps), all GL objects held by the owners of GlObjects.h.
- * GpuStepper.h puts the engine behind the Stepper verbs (Core/Stepper.h).
+ * GpuPasses.h (running and reading back passes), ShaderSource.h (a program's
+ * GLSL put together, compiled, its errors named by file and line),
+ * GpuTemplate.h (the template's tables), GpuState.h (the state textures),
+ * GpuFieldCache.h (resident time steps), PassTimer.h (per-pass GPU times),
+ * all GL objects held by the owners of GlObjects.h. GpuStepper.h puts the
+ * engine behind the Stepper verbs (Core/Stepper.h).
  */
 #ifndef BoundParticles_GpuEngine_h
 #define BoundParticles_GpuEngine_h
 
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "GpuPath.h"
+#include "PassTime.h"
 #include "VectorField.h"
 
 #include <cstdint>
@@ -156,6 +168,22 @@ public:
   /// (bench/) measures which is faster.
   void setGeneratedSprings(bool generated);
   bool generatedSprings() const;
+
+  /// On the compute path, whether a system whose elements fit a workgroup
+  /// runs its step as one fused dispatch or as a dispatch per kernel, as a
+  /// super set does (FusedSteps, GpuPath.h; Automatic by default); takes
+  /// effect at the next configure(). Both run the same kernels; tests
+  /// compare them.
+  void setFusedSteps(FusedSteps choice);
+  /// The path configure() chose (GpuPath.h), and whether the step is fused.
+  GpuPath path() const;
+  bool fusedStep() const;
+
+  /// Times every pass on the GPU (GL_TIME_ELAPSED) from now on, or stops.
+  void setPassTiming(bool on);
+  /// Each pass's GPU time since the last call, in the order they first ran;
+  /// waits for the GPU to finish (never call it inside a timed loop).
+  std::vector<PassTime> passTimes();
 
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);

@@ -12,12 +12,47 @@ namespace bp
 {
 namespace
 {
-/// bp_restore.frag with the template's springs as code (thesis §3.5) in
-/// place of its reads from the springs buffer (with BP_GENERATED_SPRINGS).
-std::string generatedRestoreSource(const std::string& springSumCode)
+/// What a compute dispatch's writes must be visible to: the next dispatch's
+/// image loads and texel fetches (a draw's too), copies, reads and clears.
+constexpr GLbitfield AfterShaderWrites = GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+  GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT;
+
+/// The most workgroups a dispatch takes along x (OpenGL 4.3 promises 65,535).
+constexpr std::size_t MostGroupsAlongX = 65535;
+
+/// Elements a fused step's workgroup holds: a SIMD group's worth (a warp of
+/// 32 on NVIDIA, a wavefront of 32 or 64 on AMD, 8 lanes on llvmpipe) runs
+/// the per-element phases, and a small template fills at least 128 threads.
+int fusedGroupElements(int particles, int maxThreads)
 {
-  return spliceCode(bpShaderRestoreFrag, bpShaderRestoreFragNumber, "//BP::GeneratedSprings",
-    springSumCode, GeneratedSpringsSource);
+  const int elements = std::max(32, 128 / std::max(particles, 1));
+  return std::max(1, std::min(elements, maxThreads / std::max(particles, 1)));
+}
+
+/// A kernel run as a pass of its own (bp_pass.glsl): its file, its pass
+/// function, its domain and targets, the program it becomes and what the
+/// timer calls it.
+struct PassKernel
+{
+  ShaderPiece kernel;
+  const char* function;
+  bool perElement;
+  int targets;
+  GlProgram GpuPasses::Programs::*program;
+  const char* name;
+};
+
+/// bp_restore.glsl with the template's springs as code (thesis §3.5) in
+/// place of its reads from the springs buffer (with BP_GENERATED_SPRINGS).
+ShaderPiece restoreKernel(const std::string& springSumCode)
+{
+  if (springSumCode.empty())
+  {
+    return { bpShaderRestoreNumber, bpShaderRestore };
+  }
+  return { bpShaderRestoreNumber,
+    spliceCode(bpShaderRestore, bpShaderRestoreNumber, "//BP::GeneratedSprings", springSumCode,
+      GeneratedSpringsSource) };
 }
 
 /// Attaches `texture` (0: none) as colour attachment k of the bound framebuffer.
@@ -26,6 +61,27 @@ void attach(GLenum framebuffer, int k, GLuint texture)
   glFramebufferTexture2D(framebuffer, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D, texture, 0);
 }
 } // namespace
+
+FusedStep FusedStep::of(
+  const Parameters& parameters, int particles, bool springs, int maxThreads, int sharedBytes)
+{
+  FusedStep fused;
+  fused.particles = particles;
+  const int elements = fusedGroupElements(particles, maxThreads);
+  // Shared memory: a position per thread, six values per element (bp_step.comp).
+  const long bytes = 16L * elements * particles + 6L * 16 * elements;
+  if (parameters.linking != Linking::None || particles > maxThreads || bytes > sharedBytes)
+  {
+    return fused; // links join elements; a workgroup cannot hold one
+  }
+  fused.groupElements = elements;
+  const Restoration r = parameters.restoration;
+  fused.restoration = r == Restoration::ShapeMatching ? 3
+    : !springs                                        ? 0
+    : r == Restoration::GaussSeidel                   ? 2
+                                                      : 1;
+  return fused;
+}
 
 GpuLayout::GpuLayout(const ParticleLayout& layout, std::size_t elements, std::size_t particles)
   : elementCount(int(elements))
@@ -52,10 +108,21 @@ int GpuPass::location(const char* name) const
 
 GpuPass& GpuPass::texture(const char* name, GLuint texture, GLenum target)
 {
-  glActiveTexture(GLenum(GL_TEXTURE0 + this->Unit));
+  const int at = this->location(name);
+  if (at < 0)
+  {
+    return *this; // a sampler the program does not use
+  }
+  const auto known = std::find_if(this->Units.begin(), this->Units.end(),
+    [&](const std::pair<std::string, int>& bound) { return bound.first == name; });
+  const int unit = known != this->Units.end() ? known->second : this->Unit++;
+  if (known == this->Units.end())
+  {
+    this->Units.push_back({ name, unit });
+  }
+  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
   glBindTexture(target, texture);
-  this->setInt(name, this->Unit);
-  ++this->Unit;
+  glUniform1i(at, unit);
   return *this;
 }
 
@@ -96,6 +163,48 @@ void GpuPass::setIVec3(const char* name, int x, int y, int z) const
 
 void GpuPass::run(std::initializer_list<GLuint> targets, int width, int height) const
 {
+  this->Passes.Timer.begin(this->Passes.nameOf(this->Program));
+  if (this->Passes.Path == GpuPath::Compute)
+  {
+    this->dispatch(targets, width, height);
+  }
+  else
+  {
+    this->draw(targets, width, height);
+  }
+  this->Passes.Timer.end();
+}
+
+void GpuPass::dispatch(std::initializer_list<GLuint> targets, int width, int height) const
+{
+  GLuint k = 0;
+  for (GLuint target : targets)
+  {
+    glBindImageTexture(k++, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  }
+  this->setIVec2("bpDomainSize", width, height);
+  this->setInt("bpTargetCount", int(k));
+  glDispatchCompute(GLuint(width + 7) / 8, GLuint(height + 7) / 8, 1);
+  glMemoryBarrier(AfterShaderWrites);
+}
+
+void GpuPass::runGroups(std::size_t groups, std::initializer_list<GLuint> images) const
+{
+  this->Passes.Timer.begin(this->Passes.nameOf(this->Program));
+  GLuint k = 0;
+  for (GLuint image : images)
+  {
+    glBindImageTexture(k++, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  }
+  // Workgroups along x, then rows of them along y (bp_step.comp numbers them so).
+  const std::size_t x = std::max<std::size_t>(1, std::min(groups, MostGroupsAlongX));
+  glDispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
+  glMemoryBarrier(AfterShaderWrites);
+  this->Passes.Timer.end();
+}
+
+void GpuPass::draw(std::initializer_list<GLuint> targets, int width, int height) const
+{
   glBindFramebuffer(GL_FRAMEBUFFER, this->Passes.Framebuffer.get());
   GLenum buffers[4];
   int k = 0;
@@ -132,31 +241,55 @@ void GpuPass::runPerParticle(std::initializer_list<GLuint> targets) const
   this->run(targets, this->Layout.particleTextureWidth, this->Layout.particleTextureHeight);
 }
 
-std::string GpuPasses::compile(const std::string& springSumCode)
+std::string GpuPasses::compile(
+  GpuPath path, const std::string& springSumCode, const FusedStep& fusedStep)
 {
-  Programs& p = this->programs;
-  const bool generated = !springSumCode.empty();
-  const std::string restore =
-    generated ? generatedRestoreSource(springSumCode) : std::string(bpShaderRestoreFrag);
-  const std::pair<ShaderPiece, GlProgram*> passes[] = {
-    { { bpShaderResetFragNumber, bpShaderResetFrag }, &p.reset },
-    { { bpShaderAdvectFragNumber, bpShaderAdvectFrag }, &p.advect },
-    { { bpShaderRestoreFragNumber, restore }, &p.restore },
-    { { bpShaderMatchFragNumber, bpShaderMatchFrag }, &p.match },
-    { { bpShaderMatchApplyFragNumber, bpShaderMatchApplyFrag }, &p.matchApply },
-    { { bpShaderGaussSeidelFragNumber, bpShaderGaussSeidelFrag }, &p.gaussSeidel },
-    { { bpShaderTestFragNumber, bpShaderTestFrag }, &p.test },
-    { { bpShaderFinalizeFragNumber, bpShaderFinalizeFrag }, &p.finalize },
-    { { bpShaderNormalsFragNumber, bpShaderNormalsFrag }, &p.normals },
-    { { bpShaderSamplesFragNumber, bpShaderSamplesFrag }, &p.samples },
-    { { bpShaderLinkFragNumber, bpShaderLinkFrag }, &p.link },
-    { { bpShaderPoseFragNumber, bpShaderPoseFrag }, &p.pose }
+  this->Path = path;
+  this->fused = fusedStep;
+  using P = Programs;
+  const ShaderPiece restore = restoreKernel(springSumCode);
+  const PassKernel kernels[] = {
+    { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4, &P::reset, "reset" },
+    { { bpShaderAdvectNumber, bpShaderAdvect }, "bpAdvectPass", false, 2, &P::advect, "advect" },
+    { restore, "bpRestorePass", false, 1, &P::restore, "restore" },
+    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchPass", true, 4, &P::match, "match" },
+    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchApplyPass", false, 1, &P::matchApply,
+      "match apply" },
+    { { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, "bpGaussSeidelPass", false, 1,
+      &P::gaussSeidel, "gauss-seidel" },
+    { { bpShaderTestNumber, bpShaderTest }, "bpTestPass", true, 2, &P::test, "test" },
+    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpFinalizePass", false, 1, &P::finalize,
+      "finalize" },
+    { { bpShaderNormalsNumber, bpShaderNormals }, "bpNormalsPass", false, 1, &P::normals,
+      "normals" },
+    { { bpShaderSamplesNumber, bpShaderSamples }, "bpSamplesPass", false, 1, &P::samples,
+      "samples" },
+    { { bpShaderLinkNumber, bpShaderLink }, "bpLinkPass", false, 1, &P::link, "link" },
+    { { bpShaderPoseNumber, bpShaderPose }, "bpPosePass", true, 2, &P::pose, "pose" }
   };
-  for (const auto& pass : passes)
+  const bool compute = path == GpuPath::Compute;
+  const ShaderPiece main = compute ? ShaderPiece{ bpShaderPassCompNumber, bpShaderPassComp }
+                                   : ShaderPiece{ bpShaderPassFragNumber, bpShaderPassFrag };
+  const std::string generated = springSumCode.empty() ? "" : "#define BP_GENERATED_SPRINGS\n";
+  this->Names.clear();
+  for (const PassKernel& k : kernels)
   {
-    const bool restorePass = pass.second == &p.restore;
-    const std::string error = buildPassProgram(
-      pass.first, restorePass && generated ? "#define BP_GENERATED_SPRINGS\n" : "", *pass.second);
+    const std::string defines = std::string("#define BP_PASS ") + k.function + "\n" +
+      "#define BP_TARGETS " + std::to_string(k.targets) + "\n" +
+      (k.perElement ? "#define BP_PER_ELEMENT\n" : "") + generated;
+    GlProgram& program = this->programs.*(k.program);
+    const std::string error = buildProgram(path,
+      shaderFileName(k.kernel.number) + " (" + k.function + ", " + gpuPathName(path) + " path)",
+      defines, { k.kernel, { bpShaderPassNumber, bpShaderPass }, main }, program);
+    if (!error.empty())
+    {
+      return error;
+    }
+    this->Names.push_back({ program.get(), k.name });
+  }
+  if (compute && this->fused.groupElements > 0)
+  {
+    const std::string error = this->compileFusedStep(restore, generated);
     if (!error.empty())
     {
       return error;
@@ -166,6 +299,37 @@ std::string GpuPasses::compile(const std::string& springSumCode)
   this->Framebuffer = makeFramebuffer();
   this->CopyTarget = makeFramebuffer();
   return std::string();
+}
+
+std::string GpuPasses::compileFusedStep(const ShaderPiece& restore, const std::string& generated)
+{
+  const FusedStep& f = this->fused;
+  const std::string defines = "#define BP_N " + std::to_string(f.particles) +
+    "\n#define BP_GROUP_ELEMENTS " + std::to_string(f.groupElements) +
+    "\n#define BP_GROUP_THREADS " + std::to_string(f.groupElements * f.particles) +
+    "\n#define BP_RESTORATION " + std::to_string(f.restoration) + "\n" + generated +
+    "layout(rgba32f, binding = 0) uniform writeonly image2D bpParticlesOut;\n";
+  const std::string error = buildProgram(GpuPath::Compute, "bp_step.comp (the fused step)", defines,
+    { { bpShaderResetNumber, bpShaderReset }, { bpShaderAdvectNumber, bpShaderAdvect }, restore,
+      { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, { bpShaderMatchNumber, bpShaderMatch },
+      { bpShaderTestNumber, bpShaderTest }, { bpShaderFinalizeNumber, bpShaderFinalize },
+      { bpShaderPoseNumber, bpShaderPose }, { bpShaderStepCompNumber, bpShaderStepComp } },
+    this->programs.step, true);
+  this->Names.push_back({ this->programs.step.get(), "step (fused)" });
+  return error;
+}
+
+const std::string& GpuPasses::nameOf(GLuint program) const
+{
+  static const std::string unknown = "pass";
+  for (const auto& name : this->Names)
+  {
+    if (name.first == program)
+    {
+      return name.second;
+    }
+  }
+  return unknown;
 }
 
 GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& shared) const
@@ -260,6 +424,8 @@ void GpuPasses::clearTexture(GLuint texture, const float* value) const
 
 void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
 {
+  static const std::string copy = "copy";
+  this->Timer.begin(copy);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, this->Framebuffer.get());
   attach(GL_READ_FRAMEBUFFER, 0, from);
   // A framebuffer is as large as its smallest attachment: a per-element
@@ -274,6 +440,7 @@ void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
   glDisable(GL_SCISSOR_TEST);
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  this->Timer.end();
 }
 
 } // namespace bp

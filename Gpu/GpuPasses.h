@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file GpuPasses.h
- * @brief The GPU engine's fragment passes: compiled, fed, run and read back.
+ * @brief The GPU engine's passes: compiled for a path, fed, run and read back.
  *
- * Every pass is a full-screen triangle drawn into one to four RGBA32F
- * textures with the fragment shader of Shaders/ after bp_shared.glsl and
- * bp_common.glsl (put together by ShaderSource.h). A pass
- * begins with the uniforms every pass shares (the layout, the placement
- * parameters, the super set's lattice, the field), then takes its own
- * textures and uniforms by name, so a pass ignores what it does not use.
+ * Every kernel of Shaders/ runs as a pass of its own on either path
+ * (GpuPath.h): on the fragment path a full-screen triangle drawn into one to
+ * four RGBA32F textures, on the compute path a dispatch of an invocation per
+ * texel that stores into them as images. The compute path also has the fused
+ * step (bp_step.comp), a whole step in one dispatch, for systems whose
+ * elements fit a workgroup (FusedStep). A pass begins with the uniforms
+ * every pass shares (the layout, the placement parameters, the super set's
+ * lattice, the field), then takes its own textures and uniforms by name, so
+ * a pass ignores what it does not use. While timing is on, every pass and
+ * copy is timed on the GPU (PassTimer.h).
  *
  * Every call needs the GL context current; the programs and framebuffers are
  * deleted as GlObjects.h says.
@@ -18,10 +22,14 @@
 
 #include "Engine.h"
 #include "GlObjects.h"
+#include "GpuPath.h"
+#include "PassTimer.h"
+#include "ShaderSource.h"
 
 #include <cstddef>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bp
@@ -58,11 +66,26 @@ struct SharedPassInputs
   const GpuFieldCache* fieldCache = nullptr; ///< its field is null before one is set
 };
 
+/// The fused step of the compute path (bp_step.comp), as compiled for a system.
+struct FusedStep
+{
+  int particles = 0;     ///< n, the template's particles (BP_N)
+  int groupElements = 0; ///< elements a workgroup holds; 0: no fused step
+  int restoration = 0;   ///< 0 none, 1 (averaged) Jacobi, 2 Gauss-Seidel, 3 shape matching
+  /// The fused step for a system, or none (groupElements 0) where its
+  /// elements do not fit a workgroup of `maxThreads` invocations and
+  /// `sharedBytes` of shared memory, or a super set's links join them.
+  static FusedStep of(const Parameters& parameters, int particles, bool springs, int maxThreads,
+    int sharedBytes);
+};
+
 /// One pass being set up: its program in use, texture units handed out in turn.
 class GpuPass
 {
 public:
-  /// Binds `texture` to the next texture unit, for the sampler `name`.
+  /// Binds `texture` to a texture unit for the sampler `name`: the next
+  /// unit, or the one `name` has in this pass already. A sampler the program
+  /// does not use takes none.
   GpuPass& texture(const char* name, GLuint texture, GLenum target = GL_TEXTURE_2D);
   void setInt(const char* name, int value) const;
   void setUnsigned(const char* name, unsigned value) const;
@@ -72,13 +95,18 @@ public:
   void setIVec2(const char* name, int x, int y) const;
   void setIVec3(const char* name, int x, int y, int z) const;
 
-  /// Draws the full-screen triangle into `targets` (colour attachments in
-  /// order) over a `width` x `height` viewport.
+  /// Runs the pass over a `width` x `height` domain into `targets` (at
+  /// most four): on the fragment path the full-screen triangle drawn into
+  /// them as colour attachments, in order; on the compute path an
+  /// invocation per texel storing into them as images 0, 1, ...
   void run(std::initializer_list<GLuint> targets, int width, int height) const;
-  /// run() over the element grid: a fragment per element.
+  /// run() over the element grid: an invocation per element.
   void runPerElement(std::initializer_list<GLuint> targets) const;
-  /// run() over the particle texture: a fragment per particle.
+  /// run() over the particle texture: an invocation per particle.
   void runPerParticle(std::initializer_list<GLuint> targets) const;
+  /// Dispatches `groups` workgroups (the fused step), `images` bound to
+  /// image units 0, 1, ... (0: none there).
+  void runGroups(std::size_t groups, std::initializer_list<GLuint> images) const;
 
 private:
   friend class GpuPasses;
@@ -89,22 +117,29 @@ private:
   {
   }
   int location(const char* name) const;
+  void draw(std::initializer_list<GLuint> targets, int width, int height) const;
+  void dispatch(std::initializer_list<GLuint> targets, int width, int height) const;
 
   const GpuPasses& Passes;
   const GpuLayout& Layout;
   GLuint Program = 0;
   int Unit = 0;
+  std::vector<std::pair<std::string, int>> Units; ///< the unit of each sampler bound
 };
 
 class GpuPasses
 {
 public:
-  /// Compiles every pass and makes the framebuffers. `springSumCode`, when
-  /// not empty, is the template's springs written as code (GpuTemplate.h) for
-  /// the Jacobi pass instead of its springs buffer. Empty on success,
-  /// otherwise the compiler's or linker's log, naming the pass's file and
-  /// each message's file and line (ShaderSource.h).
-  std::string compile(const std::string& springSumCode);
+  /// Compiles every pass for `path`, and on the compute path the fused step
+  /// as `fused` says (none where fused.groupElements is 0), and makes the
+  /// framebuffers. `springSumCode`, when not empty, is the template's springs
+  /// written as code (GpuTemplate.h) for the Jacobi kernel instead of its
+  /// springs buffer. Empty on success, otherwise the compiler's or linker's
+  /// log, naming the pass's file and each message's file and line
+  /// (ShaderSource.h).
+  std::string compile(GpuPath path, const std::string& springSumCode, const FusedStep& fused);
+
+  GpuPath path() const { return this->Path; }
 
   /// Uses `program` with the uniforms every pass shares.
   GpuPass begin(const GlProgram& program, const SharedPassInputs& shared) const;
@@ -120,7 +155,12 @@ public:
   /// Sets every texel of a texture to `value` (4 floats), without an upload.
   void clearTexture(GLuint texture, const float* value) const;
 
-  /// The passes (Shaders/bp_*.frag), in the order a step runs them.
+  /// Times every pass and copy on the GPU from now on, or stops (PassTimer.h).
+  void setTiming(bool on) { this->Timer.enable(on); }
+  /// Each pass's time since the last call (waits for the GPU).
+  std::vector<PassTime> passTimes() { return this->Timer.collect(); }
+
+  /// The passes (a kernel of Shaders/ each), in the order a step runs them.
   struct Programs
   {
     GlProgram reset;       ///< places flagged elements (all, initialising)
@@ -135,14 +175,25 @@ public:
     GlProgram normals;     ///< per particle, from the template's triangles
     GlProgram pose;        ///< the pose fit and spin (Parameters::trackPoses)
     GlProgram samples;     ///< the field at every particle, for colouring
+    GlProgram step;        ///< the compute path's fused step (bp_step.comp), or none
   };
   Programs programs;
+  /// What the fused step was compiled for (groupElements 0: none).
+  FusedStep fused;
 
 private:
   friend class GpuPass;
+  /// The name a program is timed by.
+  const std::string& nameOf(GLuint program) const;
+  /// Compiles the fused step with the Jacobi kernel `restore`.
+  std::string compileFusedStep(const ShaderPiece& restore, const std::string& generated);
+
+  GpuPath Path = GpuPath::Fragment;
+  std::vector<std::pair<GLuint, std::string>> Names; ///< each program's name
   GlVertexArray Triangle; ///< empty: bp_fullscreen.vert makes the triangle from gl_VertexID
   GlFramebuffer Framebuffer;
   GlFramebuffer CopyTarget; ///< the draw side of copyTexture's blit
+  mutable PassTimer Timer;
 };
 
 } // namespace bp

@@ -17,6 +17,22 @@ void TexturePair::make(int width, int height)
   this->Current = 0;
 }
 
+std::string elementStateDeclarations(bool images)
+{
+  std::string out;
+  for (int row = 0; row < ElementTextureCount; ++row)
+  {
+    const std::string sampler = ElementTextureSamplers[row];
+    out += "uniform sampler2D " + sampler + ";\n";
+    if (images)
+    {
+      out += "layout(rgba32f, binding = " + std::to_string(1 + row) +
+        ") uniform writeonly image2D " + sampler + "Out;\n";
+    }
+  }
+  return out;
+}
+
 int TrailRing::slot(int k) const
 {
   const int slots = this->length();
@@ -37,11 +53,10 @@ void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLe
   this->normals = makeTexture2D(pw, ph);
   this->samples = makeTexture2D(pw, ph);
 
-  this->elements.make(w, h);
-  this->centers.make(w, h);
-  this->orientations.make(w, h);
-  this->poses.make(w, h);
-  this->spins = makeTexture2D(w, h);
+  for (TexturePair& pair : this->perElement)
+  {
+    pair.make(w, h);
+  }
   this->matchCenters = makeTexture2D(w, h);
   this->anchorShifts = makeTexture2D(w, h);
   for (GlTexture& texture : this->matchLinear)
@@ -108,8 +123,8 @@ void GpuState::recordTrail(const GpuPasses& passes, const GpuLayout& layout, dou
   r.times[std::size_t(slot)] = t;
   passes.copyTexture(this->particles.current(), r.particles[std::size_t(slot)],
     layout.particleTextureWidth, layout.particleTextureHeight);
-  passes.copyTexture(this->elements.current(), r.elements[std::size_t(slot)], layout.elementGrid[0],
-    layout.elementGrid[1]);
+  passes.copyTexture(this->current(ElementTexture::State), r.elements[std::size_t(slot)],
+    layout.elementGrid[0], layout.elementGrid[1]);
 }
 
 void GpuState::copyTrailSlot(
@@ -136,11 +151,10 @@ void GpuState::save(const GpuPasses& passes, const GpuLayout& layout)
   if (!this->Copy.particles)
   {
     this->Copy.particles = makeTexture2D(pw, ph);
-    this->Copy.elements = makeTexture2D(w, h);
-    this->Copy.centers = makeTexture2D(w, h);
-    this->Copy.orientations = makeTexture2D(w, h);
-    this->Copy.poses = makeTexture2D(w, h);
-    this->Copy.spins = makeTexture2D(w, h);
+    for (GlTexture& copy : this->Copy.perElement)
+    {
+      copy = makeTexture2D(w, h);
+    }
     if (this->trail.length() > 0)
     {
       this->Copy.trailParticles = makeTexture2D(pw, ph);
@@ -176,26 +190,20 @@ void GpuState::restore(const GpuPasses& passes, const GpuLayout& layout)
 
 void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool intoCopy) const
 {
-  struct Kept
-  {
-    GLuint live, copy;
-    int width, height;
-  };
-  const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
-  const int w = layout.elementGrid[0], h = layout.elementGrid[1];
   // The current textures of the pairs, which stay current either way.
-  const Kept kept[] = { { this->particles.current(), this->Copy.particles.get(), pw, ph },
-    { this->elements.current(), this->Copy.elements.get(), w, h },
-    { this->centers.current(), this->Copy.centers.get(), w, h },
-    { this->orientations.current(), this->Copy.orientations.get(), w, h },
-    { this->poses.current(), this->Copy.poses.get(), w, h },
-    { this->spins.get(), this->Copy.spins.get(), w, h } };
-  for (const Kept& k : kept)
+  const auto copy = [&](GLuint live, GLuint kept, int width, int height)
   {
     if (intoCopy)
-      passes.copyTexture(k.live, k.copy, k.width, k.height);
+      passes.copyTexture(live, kept, width, height);
     else
-      passes.copyTexture(k.copy, k.live, k.width, k.height);
+      passes.copyTexture(kept, live, width, height);
+  };
+  copy(this->particles.current(), this->Copy.particles.get(), layout.particleTextureWidth,
+    layout.particleTextureHeight);
+  for (int row = 0; row < ElementTextureCount; ++row)
+  {
+    copy(this->perElement[std::size_t(row)].current(), this->Copy.perElement[std::size_t(row)].get(),
+      layout.elementGrid[0], layout.elementGrid[1]);
   }
 }
 

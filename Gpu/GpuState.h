@@ -5,12 +5,14 @@
  *
  * A pass never reads the texture it writes, so what a step carries over
  * lives in pairs: a pass reads one and writes the other, which then becomes
- * current. Each pair flips on its own (the centres only when elements are
- * placed, the orientations only with shape matching, the poses in the
- * reset and pose passes; the spins, which no pass reads, are one texture
- * the pose pass writes). The scratch textures hold a step's
- * intermediate positions and shape-matching fits. Motion trails are a ring
- * of copies of the particle and element textures (TrailRing).
+ * current. Each pair flips when a pass writes it (the centres only when
+ * elements are placed, the orientations in the reset pass and with shape
+ * matching, the poses in the reset and pose passes, the spins in the pose
+ * pass). The per-element state is one list, ElementTexture: the textures,
+ * the saved copy and the passes' GLSL declarations all follow it. The
+ * scratch textures hold a step's intermediate positions and shape-matching
+ * fits. Motion trails are a ring of copies of the particle and element
+ * textures (TrailRing).
  *
  * Needs the GL context current; the textures are deleted as GlObjects.h says.
  */
@@ -22,6 +24,7 @@
 #include "SuperSet.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace bp
@@ -40,6 +43,36 @@ private:
   std::array<GlTexture, 2> Textures;
   int Current = 0;
 };
+
+/**
+ * The GPU engine's per-element state, the one list (as
+ * Engine::forEachElementArray is the CPU engine's): one RGBA32F texture pair
+ * each, element e at texel (e % W, e / W). GpuState makes, saves and
+ * restores every row's pair by it, and the passes' GLSL gets each row's
+ * sampler (ElementTextureSamplers) and, in the fused step, its image (the
+ * sampler's name + "Out") declared from it (elementStateDeclarations). A
+ * new row is a line here and its sampler's name below; the kernels that
+ * read and write it are the physics.
+ */
+enum class ElementTexture
+{
+  State,        ///< lifetime, generation, reset flag, non-finite flag
+  Centers,      ///< the generation's initial centre; w: hidden (placed outside the release window)
+  Orientations, ///< rotation as placed, then as fitted: a quaternion
+  Poses,        ///< Engine::poses(): a quaternion
+  Spins,        ///< Engine::spins(): angular velocity, SpinVorticityRatio
+  Count
+};
+constexpr int ElementTextureCount = int(ElementTexture::Count);
+
+/// Each row's sampler in the kernels' GLSL (Shaders/), in ElementTexture's order.
+constexpr const char* ElementTextureSamplers[ElementTextureCount] = { "bpElementState",
+  "bpCenters", "bpOrientations", "bpPoses", "bpSpins" };
+
+/// The GLSL declarations of the per-element state: a sampler per row, and
+/// with `images` also a write-only image per row, `<sampler>Out` at image
+/// unit 1 + row (unit 0: the particle state's, bpParticlesOut).
+std::string elementStateDeclarations(bool images);
 
 /**
  * Motion trails (Parameters::trailLength): slot s holds the particle texture
@@ -93,11 +126,14 @@ public:
   GlTexture samples;                 ///< velocity, |curl v| (updateFieldSamples)
 
   // Per element, a texel each (element e at (e % W, e / W)).
-  TexturePair elements;                 ///< lifetime, generation, reset flag, non-finite
-  TexturePair centers;                  ///< the generation's initial centre
-  TexturePair orientations;             ///< rotation as placed, then as fitted: a quaternion
-  TexturePair poses;                    ///< Engine::poses(): a quaternion
-  GlTexture spins;                      ///< Engine::spins(): angular velocity, SpinVorticityRatio
+  std::array<TexturePair, ElementTextureCount> perElement; ///< by ElementTexture
+  TexturePair& element(ElementTexture row) { return this->perElement[std::size_t(row)]; }
+  const TexturePair& element(ElementTexture row) const
+  {
+    return this->perElement[std::size_t(row)];
+  }
+  /// The current texture of a row.
+  GLuint current(ElementTexture row) const { return this->element(row).current(); }
   GlTexture matchCenters;               ///< shape matching: the fit's centre
   GlTexture anchorShifts;               ///< Anchor = Centre: a step's move back to the anchor
   std::array<GlTexture, 2> matchLinear; ///< linear shape matching: the goal matrix, packed
@@ -120,7 +156,8 @@ private:
   /// trail ring the times and the one slot a step since save() overwrote.
   struct Saved
   {
-    GlTexture particles, elements, centers, orientations, poses, spins;
+    GlTexture particles;
+    std::array<GlTexture, ElementTextureCount> perElement;
     GlTexture trailParticles, trailElements;
     std::vector<double> trailTimes;
     int trailNewest = -1;

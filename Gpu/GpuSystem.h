@@ -3,13 +3,17 @@
  * @file GpuSystem.h
  * @brief A system of bound particles on the GPU, and the passes of its step.
  *
- * What GpuEngine::configure() makes: the template's tables, the compiled
- * passes and the state textures, with the field's resident time steps. A step
- * runs the passes in the order of docs/engine-specification.md, as the CPU
- * engine (Core/Engine.h) runs its stages: the trail's record (a copy, when
- * the step starts on the trail's interval), reset, advect, K restoration
- * iterations (each followed, in a super set, by a pass over the links), the
- * reposition test, finalize, and with Parameters::trackPoses the pose pass.
+ * What GpuEngine::configure() makes: the template's tables, the passes
+ * compiled for the path the context allows (GpuPath.h) and the state
+ * textures, with the field's resident time steps. A step runs the kernels in
+ * the order of docs/engine-specification.md, as the CPU engine
+ * (Core/Engine.h) runs its stages: the trail's record (a copy, when the step
+ * starts on the trail's interval), reset, advect, K restoration iterations
+ * (each followed, in a super set, by a pass over the links), the reposition
+ * test, finalize, and with Parameters::trackPoses the pose. On the compute
+ * path a system whose elements fit a workgroup runs them all in one
+ * dispatch, the fused step; otherwise each kernel is a pass of its own.
+ * Nothing in a step waits for the GPU or reads from it.
  *
  * Needs the GL context current. Assigning an empty system over one deletes
  * every GL object it holds (GlObjects.h): that is how GpuEngine releases.
@@ -25,6 +29,7 @@
 #include "GpuTemplate.h"
 
 #include <array>
+#include <initializer_list>
 #include <string>
 
 namespace bp
@@ -35,11 +40,12 @@ class GpuSystem
 public:
   /// Makes the system for a template and parameters the CPU engine accepts
   /// (Engine::validate), its textures at most `textureSizeLimit` texels wide,
-  /// with the Jacobi pass's springs as code if `generatedSprings`. Empty on
+  /// with the Jacobi pass's springs as code if `generatedSprings`, its step
+  /// fused on the compute path as `fusedSteps` says. Empty on
   /// success, otherwise why the GPU cannot run it (the system is then partly
   /// made: assign an empty one over it).
   std::string make(const ElementTemplate& elementTemplate, const Parameters& systemParameters,
-    int textureSizeLimit, bool generatedSprings);
+    int textureSizeLimit, bool generatedSprings, FusedSteps fusedSteps);
 
   /// Places every element (generation 0), as Engine::initialize leaves them.
   void initialize(double startTime);
@@ -61,7 +67,11 @@ public:
 private:
   GpuPass begin(const GlProgram& program) const;
   std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
+  /// The fused step this system can run on the compute path (FusedStep::of).
+  FusedStep fusedStep() const;
 
+  /// @name The passes of a step, each a kernel's pass of its own
+  ///@{
   /// `releasing`: the step overlaps the release window (releasesAt).
   void reset(bool initialize, bool releasing, double t);
   void advect(bool placeOnly, double t, double h);
@@ -74,13 +84,30 @@ private:
   /// `endWeight`: the second time step's weight at the step's end.
   void test(GLuint positions, bool settleOnly, double h, float endWeight);
   void finalize(GLuint restored, bool placed);
+  /// `endWeight`: as test()'s, for the curl at the centres.
+  void updatePoses(double h, float endWeight);
+  ///@}
+  /// The compute path's fused step: the same kernels in one dispatch.
+  void runFusedStep(double t, double h, float endWeight);
+
+  /// @name Each kernel's inputs, for its pass or the fused step
+  ///@{
+  void resetInputs(GpuPass& pass, bool initialize, bool releasing, double t);
+  void advectInputs(GpuPass& pass, bool placeOnly, double t, double h) const;
+  void jacobiInputs(GpuPass& pass, GLuint positions) const;
+  void matchInputs(GpuPass& pass, GLuint positions) const;
+  void testInputs(GpuPass& pass, GLuint positions, bool settleOnly, double h, float endWeight) const;
+  void finalizeInputs(GpuPass& pass, GLuint restored, bool placed) const;
+  void poseInputs(GpuPass& pass, double h, float endWeight) const;
+  ///@}
+  /// Binds the current textures of the per-element state's `rows` to their samplers.
+  void bindCurrent(GpuPass& pass, std::initializer_list<ElementTexture> rows) const;
+
   /// Whether a step (not the placing at initialisation) anchors elements.
   bool anchored(bool placing) const
   {
     return !placing && this->parameters.anchor == Anchor::Centre;
   }
-  /// `endWeight`: as test()'s, for the curl at the centres.
-  void updatePoses(double h, float endWeight);
 
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };

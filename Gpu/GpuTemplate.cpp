@@ -97,7 +97,7 @@ TemplateTables makeTables(
   return t;
 }
 
-/// bpSpringSum() of bp_restore.frag with the springs as code: one case per
+/// bpSpringSum() of bp_restore.glsl with the springs as code: one case per
 /// particle, its springs' corrections in list order (so the same bits as the
 /// buffer), constants written to float precision.
 std::string writeSpringSum(const TemplateTables& t, int n)

@@ -67,10 +67,21 @@ std::string HeadlessContext::create()
   EGLConfig config = nullptr;
   EGLint configs = 0;
   eglChooseConfig(display, configAttributes, &config, 1, &configs);
-  const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
-  this->Context = eglCreateContext(
-    display, configs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttributes);
+  // 4.3 core (the GPU engine's compute path) where the driver has it, else
+  // 3.3 core (its fragment path); a driver may give a later version of either.
+  const EGLint versions[2][2] = { { 4, 3 }, { 3, 3 } };
+  for (const EGLint* version : versions)
+  {
+    const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, version[0],
+      EGL_CONTEXT_MINOR_VERSION, version[1], EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+    this->Context = eglCreateContext(
+      display, configs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttributes);
+    if (this->Context)
+    {
+      break;
+    }
+  }
   if (!this->Context)
   {
     return "EGL cannot create an OpenGL 3.3 core context";

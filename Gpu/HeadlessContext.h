@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file HeadlessContext.h
- * @brief An OpenGL 3.3+ core context with no window and no X: EGL on Mesa's
+ * @brief An OpenGL core context with no window and no X: EGL on Mesa's
  * surfaceless platform, or on an EGL device (NVIDIA), for tests and benchmarks
- * of the GPU engine.
+ * of the GPU engine. It asks for 4.3 (the engine's compute path), then 3.3
+ * (its fragment path); a driver may give a later version (Mesa's llvmpipe
+ * gives 4.5 to either).
  */
 #ifndef BoundParticles_HeadlessContext_h
 #define BoundParticles_HeadlessContext_h

@@ -5,10 +5,12 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "Engine.h"
+#include "GpuState.h"
 #include "Pose.h"
 #include "ShapeMatching.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <locale>
 #include <regex>
 #include <sstream>
@@ -116,9 +118,12 @@ std::string shaderFileName(int number)
                                        : "(source " + std::to_string(number) + ")";
 }
 
-std::string assembleShader(const std::string& preamble, const std::vector<ShaderPiece>& pieces)
+std::string assembleShader(
+  GpuPath path, const std::string& preamble, const std::vector<ShaderPiece>& pieces)
 {
-  std::string source = "#version 330 core\n" + preamble;
+  std::string source =
+    std::string(path == GpuPath::Compute ? "#version 430 core\n" : "#version 330 core\n") +
+    preamble;
   for (const ShaderPiece& piece : pieces)
   {
     // The newline ends a last line without one; #line numbers the next line.
@@ -162,36 +167,23 @@ std::string describeShaderLog(const std::string& log)
   return out;
 }
 
-std::string buildPassProgram(
-  const ShaderPiece& pass, const std::string& extraDefines, GlProgram& out)
+namespace
 {
-  const std::string name = shaderFileName(pass.number);
-  GLuint vs = 0, fs = 0;
-  std::string error = compileShader(GL_VERTEX_SHADER,
-    assembleShader(std::string(), { { bpShaderFullscreenVertNumber, bpShaderFullscreenVert } }),
-    "bp_fullscreen.vert", vs);
-  if (error.empty())
-  {
-    error = compileShader(GL_FRAGMENT_SHADER,
-      assembleShader(engineConstantDefinitions() + extraDefines,
-        { { bpShaderSharedNumber, bpShaderShared }, { bpShaderCommonNumber, bpShaderCommon },
-          pass }),
-      name, fs);
-  }
-  if (!error.empty())
-  {
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    return "a GPU engine shader (" + name + ") does not compile:\n" + error;
-  }
+/// Links `shaders` (deleted after) into `out`; empty on success, otherwise the log.
+std::string linkProgram(const std::string& name, std::initializer_list<GLuint> shaders, GlProgram& out)
+{
   // Owned before linking, so a program that fails to link is deleted with the rest.
   out = GlProgram(glCreateProgram());
   label(GL_PROGRAM, out.get(), name);
-  glAttachShader(out.get(), vs);
-  glAttachShader(out.get(), fs);
+  for (GLuint shader : shaders)
+  {
+    glAttachShader(out.get(), shader);
+  }
   glLinkProgram(out.get());
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint shader : shaders)
+  {
+    glDeleteShader(shader);
+  }
   GLint ok = 0;
   glGetProgramiv(out.get(), GL_LINK_STATUS, &ok);
   if (!ok)
@@ -201,6 +193,38 @@ std::string buildPassProgram(
     return "a GPU engine program (" + name + ") does not link:\n" + describeShaderLog(log);
   }
   return std::string();
+}
+} // namespace
+
+std::string buildProgram(GpuPath path, const std::string& name, const std::string& defines,
+  const std::vector<ShaderPiece>& pieces, GlProgram& out, bool images)
+{
+  std::vector<ShaderPiece> all = { { bpShaderSharedNumber, bpShaderShared },
+    { 0, elementStateDeclarations(images) }, { bpShaderInputsNumber, bpShaderInputs },
+    { bpShaderCommonNumber, bpShaderCommon } };
+  all.insert(all.end(), pieces.begin(), pieces.end());
+  const std::string source = assembleShader(path, engineConstantDefinitions() + defines, all);
+  GLuint vs = 0, main = 0;
+  std::string error;
+  if (path == GpuPath::Fragment)
+  {
+    error = compileShader(GL_VERTEX_SHADER,
+      assembleShader(path, std::string(), { { bpShaderFullscreenVertNumber, bpShaderFullscreenVert } }),
+      "bp_fullscreen.vert", vs);
+  }
+  if (error.empty())
+  {
+    error = compileShader(
+      path == GpuPath::Compute ? GL_COMPUTE_SHADER : GL_FRAGMENT_SHADER, source, name, main);
+  }
+  if (!error.empty())
+  {
+    glDeleteShader(vs);
+    glDeleteShader(main);
+    return "a GPU engine shader (" + name + ") does not compile:\n" + error;
+  }
+  return path == GpuPath::Compute ? linkProgram(name, { main }, out)
+                                  : linkProgram(name, { vs, main }, out);
 }
 
 } // namespace bp

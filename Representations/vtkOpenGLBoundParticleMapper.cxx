@@ -38,6 +38,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOutputWindow.h"
 #include "vtkPVVersion.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -70,6 +71,21 @@ constexpr bool GpuRunReportsProgress = false;
 #else
 constexpr bool GpuRunReportsProgress = true;
 #endif
+
+/// The GPU engine's messages (which path it runs, GpuPath.h) in VTK's
+/// output window, where the tracer's own notes go: said once per process.
+void sayInOutputWindow(const std::string& text, bool warning)
+{
+  const std::string line = text + "\n";
+  if (warning)
+  {
+    vtkOutputWindowDisplayWarningText(line.c_str());
+  }
+  else
+  {
+    vtkOutputWindowDisplayText(line.c_str());
+  }
+}
 
 /// What a frame spends on uploading the next field time step: a 128^3
 /// float time step (24 MiB) then arrives over a few frames on a software
@@ -138,6 +154,7 @@ vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
   // buffer (which the shaders do not read) and fold that in as well.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   this->SetScalarVisibility(0);
+  bp::setGpuMessageSink(sayInOutputWindow);
 }
 
 vtkOpenGLBoundParticleMapper::~vtkOpenGLBoundParticleMapper() = default;

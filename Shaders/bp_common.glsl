@@ -1,7 +1,7 @@
-// Shared by every pass of the GPU engine, after bp_shared.glsl (the
-// layout). It mirrors Core/ operation for operation (same formulas, same
-// order of float operations) so that the GPU engine matches the CPU engine to
-// rounding. The BP_* constants are #defines made from Core/'s C++ values
+// Shared by every kernel of the GPU engine, after bp_shared.glsl (the
+// layout) and bp_inputs.glsl. It mirrors Core/ operation for operation
+// (same formulas, same order of float operations) so that the GPU engine
+// matches the CPU engine to rounding. The BP_* constants are #defines made from Core/'s C++ values
 // (Gpu/ShaderSource.cpp: engineConstantDefinitions).
 
 // ---- Layout (continued from bp_shared.glsl) -------------------------------
@@ -424,7 +424,8 @@ bool bpFinite(vec3 p)
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where
-// the two coincide. Each pass scales it by the particle's share.
+// the two coincide. Each kernel scales it by the particle's share. The one
+// GLSL definition, springForce in Core/SpringForce.h the one C++ one.
 bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force)
 {
   vec3 d = pa - pb;
@@ -549,15 +550,14 @@ vec4 bpFitRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q, int iterations)
 
 // ---- Poses and spins (Core/Pose.h) ------------------------------------------
 
-// momentOf: the centre c of element e's particles in `positions` and their
+// momentOf: the centre c of element e's particles (bpPositionOf) and their
 // moment A = sum (x_i - c)(s r_i)^T against the rest shape, by rows.
-void bpMomentOf(sampler2D positions, sampler2D rest, int e, out vec3 c, out vec3 a0, out vec3 a1,
-  out vec3 a2)
+void bpMomentOf(int e, out vec3 c, out vec3 a0, out vec3 a1, out vec3 a2)
 {
   c = vec3(0.0);
   for (int i = 0; i < bpParticles; ++i)
   {
-    c += texelFetch(positions, bpParticleTexel(e, i), 0).xyz;
+    c += bpPositionOf(e, i);
   }
   c = c / float(bpParticles);
   a0 = vec3(0.0);
@@ -565,8 +565,8 @@ void bpMomentOf(sampler2D positions, sampler2D rest, int e, out vec3 c, out vec3
   a2 = vec3(0.0);
   for (int i = 0; i < bpParticles; ++i)
   {
-    vec3 d = texelFetch(positions, bpParticleTexel(e, i), 0).xyz - c;
-    vec3 q = bpElementSize * texelFetch(rest, ivec2(i, 0), 0).xyz;
+    vec3 d = bpPositionOf(e, i) - c;
+    vec3 q = bpElementSize * texelFetch(bpRest, ivec2(i, 0), 0).xyz;
     a0 += d.x * q;
     a1 += d.y * q;
     a2 += d.z * q;

@@ -1,15 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Speed of the engines, side by side in one run: the CPU engine (1 and 2
-// threads) and the GPU engine (headless EGL) on the element shapes and counts
-// of thesis Table 4.1 plus single-particle elements, on a steady and an
-// unsteady field, against a plain trilinear Euler loop (no springs) compiled
-// in the same build. Every cell is the median of 5 timed runs after a warm-up.
-// Prints a table; --csv FILE also writes it as CSV.
+// threads, and all the host's cores where it has more) and the GPU engine
+// (headless EGL) each way it steps (the fragment path, the compute path with
+// a dispatch per kernel, the compute path's fused step: gpu_columns.h), on
+// the element shapes and counts of thesis Table 4.1 plus single-particle
+// elements, on a steady and an unsteady field, against a plain trilinear
+// Euler loop (no springs) compiled in the same build. Every cell is the
+// median of 5 timed runs after a warm-up. Each GPU column gives steps/s,
+// particle-steps/s and the share of the device's memory bandwidth the
+// state a step must move would take at that rate. Prints a table; --csv
+// FILE also writes it as CSV; --pass-times adds each pass's GPU time per
+// step for every row.
 #include "AnalyticFlows.h"
 #include "CounterHash.h"
 #include "Engine.h"
 #include "GpuEngine.h"
 #include "HeadlessContext.h"
+#include "gpu_columns.h"
 
 #include <benchmark/benchmark.h>
 #include <epoxy/gl.h>
@@ -26,6 +33,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -58,8 +66,12 @@ public:
 double median(const std::function<double()>& run)
 {
   run(); // warm-up (Google Benchmark 1.7 has no warm-up of its own)
-  benchmark::RegisterBenchmark("run", [&](benchmark::State& state)
-    { for (auto _ : state) state.SetIterationTime(run()); })
+  benchmark::RegisterBenchmark("run",
+    [&](benchmark::State& state)
+    {
+      for (auto _ : state)
+        state.SetIterationTime(run());
+    })
     ->UseManualTime()
     ->Iterations(1)
     ->Repetitions(5)
@@ -239,38 +251,208 @@ long peakRssKiB()
       return std::atol(line.c_str() + 6);
   return 0;
 }
+
+/// Each pass's GPU time per step, by row and GPU column (--pass-times).
+void printPassTimes(
+  const std::vector<std::pair<std::string, std::vector<std::vector<bp::PassTime>>>>& rows)
+{
+  for (const auto& row : rows)
+  {
+    std::printf("\nGPU time per step, by pass (GL_TIME_ELAPSED), %s: ms per step (runs a step)\n",
+      row.first.c_str());
+    std::vector<std::string> passes;
+    for (const auto& times : row.second)
+      for (const bp::PassTime& t : times)
+        if (std::find(passes.begin(), passes.end(), t.pass) == passes.end())
+          passes.push_back(t.pass);
+    std::printf("%-14s", "pass");
+    for (const bench::GpuVariant& v : bench::gpuVariants())
+      std::printf(" %18s", v.name);
+    std::printf("\n");
+    std::vector<double> totals(row.second.size(), 0.0);
+    for (const std::string& pass : passes)
+    {
+      std::printf("%-14s", pass.c_str());
+      for (std::size_t k = 0; k < row.second.size(); ++k)
+      {
+        const auto& times = row.second[k];
+        const auto t = std::find_if(
+          times.begin(), times.end(), [&](const bp::PassTime& x) { return x.pass == pass; });
+        if (t == times.end())
+          std::printf(" %18s", "-");
+        else
+          std::printf(" %11.3f (%3ld)", 1e3 * t->seconds, t->runs);
+        totals[k] += t == times.end() ? 0.0 : t->seconds;
+      }
+      std::printf("\n");
+    }
+    std::printf("%-14s", "total");
+    for (double total : totals)
+      std::printf(" %11.3f      ", 1e3 * total);
+    std::printf("\n");
+  }
+}
+
+/// What the GPU engine said (its path, GpuPath.h), printed after the table
+/// instead of inside its rows.
+std::vector<std::string>& engineMessages()
+{
+  static std::vector<std::string> messages;
+  return messages;
+}
+
+void keepMessage(const std::string& text, bool warning)
+{
+  engineMessages().push_back((warning ? "warning: " : "") + text);
+}
+
+/// The options.
+struct Options
+{
+  int resolution = 128;
+  bool quick = false, gpu = true, passTimes = false;
+  unsigned threads = std::max(1u, std::thread::hardware_concurrency()); ///< "all cores"
+  double bandwidth = 0.0; ///< GB/s; 0: from the device's name, or measured
+  std::string csvPath;
+  std::vector<std::string> only; ///< "Strip16x65536": just these rows
+};
+
+/// False, after the usage, for arguments it does not know.
+bool parse(int argc, char** argv, Options& o)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const bool value = i + 1 < argc;
+    if (!std::strcmp(argv[i], "--resolution") && value)
+      o.resolution = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--quick"))
+      o.quick = true;
+    else if (!std::strcmp(argv[i], "--no-gpu"))
+      o.gpu = false;
+    else if (!std::strcmp(argv[i], "--pass-times"))
+      o.passTimes = true;
+    else if (!std::strcmp(argv[i], "--threads") && value)
+      o.threads = unsigned(std::max(1, std::atoi(argv[++i])));
+    else if (!std::strcmp(argv[i], "--bandwidth") && value)
+      o.bandwidth = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--csv") && value)
+      o.csvPath = argv[++i];
+    else if (!std::strcmp(argv[i], "--only") && value)
+      o.only.push_back(argv[++i]);
+    else
+    {
+      std::fprintf(stderr,
+        "usage: %s [--quick] [--no-gpu] [--pass-times] [--threads N] [--bandwidth GB/s]\n"
+        "       [--resolution N] [--csv FILE] [--only SHAPExCOUNT]...\n"
+        "  --quick       4096 elements of each shape only\n"
+        "  --no-gpu      CPU engine and plain loop only\n"
+        "  --pass-times  each GPU pass's time per step, for every row\n"
+        "  --threads N   the CPU engine's \"all cores\" column (default: this host's cores)\n"
+        "  --bandwidth   the GPU's memory bandwidth (default: known GPUs' data sheets;\n"
+        "                on a software renderer this host's memory copy rate)\n"
+        "  --only S xN   only the rows of shape S with N elements, e.g. --only Strip16x65536\n",
+        argv[0]);
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The rows: every shape and count asked for.
+std::vector<Config> rowsFor(const Options& o)
+{
+  std::vector<Config> configs;
+  const std::vector<std::size_t> counts = o.quick
+    ? std::vector<std::size_t>{ 4096 }
+    : std::vector<std::size_t>{ 256, 1024, 4096, 16384, 65536 };
+  for (auto shape :
+    { bp::BuiltinShape::Square, bp::BuiltinShape::Strip8, bp::BuiltinShape::Strip16 })
+    for (std::size_t n : counts)
+      configs.push_back({ shape, n });
+  if (!o.quick)
+  {
+    configs.push_back({ bp::BuiltinShape::Point, 262144 });
+    configs.push_back({ bp::BuiltinShape::Point, 1048576 });
+  }
+  if (o.only.empty())
+    return configs;
+  std::vector<Config> wanted;
+  for (const std::string& name : o.only)
+    for (auto shape : { bp::BuiltinShape::Point, bp::BuiltinShape::Square, bp::BuiltinShape::Strip8,
+           bp::BuiltinShape::Strip16 })
+      for (std::size_t n : { 256, 1024, 4096, 16384, 65536, 262144, 1048576 })
+      {
+        const bool seen = std::any_of(wanted.begin(), wanted.end(),
+          [&](const Config& k) { return k.shape == shape && k.elements == n; });
+        if (name == bp::builtinTemplate(shape).name + "x" + std::to_string(n) && !seen)
+          wanted.push_back({ shape, n });
+      }
+  return wanted;
+}
+
+/// The CPU engine's steps per second on `threads` threads (median of 5).
+double cpuStepsPerSecond(const bp::ElementTemplate& t, const bp::Parameters& p,
+  const bp::VectorField& field, int steps, double dt, unsigned threads)
+{
+  return steps /
+    median(
+      [&]
+      {
+        bp::Engine engine;
+        engine.configure(t, p);
+        const bp::RangeRunner run = bp::poolRunner(threads);
+        engine.initialize(run);
+        const auto start = Clock::now();
+        for (int s = 0; s < steps; ++s)
+          engine.step(field, s * dt, dt, run);
+        return seconds(start);
+      });
+}
+
+/// The engine's state in bytes per element (the table's last column).
+std::size_t stateBytesPerElement(const bp::ElementTemplate& t, const bp::Parameters& p)
+{
+  bp::Engine e;
+  e.configure(t, p);
+  e.initialize(bp::serialRunner());
+  return (sizeof(float) *
+             (e.positions().size() + e.normals().size() + e.forces().size() + e.lifetimes().size() +
+               e.initialCenters().size() + e.orientations().size()) +
+           e.generations().size() * 4 + e.resetFlags().size()) /
+    p.numberOfElements;
+}
+
+/// The columns' heads, for the table and the CSV.
+void printHeads(const Options& o, bool cpuAll, std::FILE* csv)
+{
+  std::printf("%-8s %-8s %9s %9s %10s %10s", "field", "shape", "elements", "particles", "CPU1 st/s",
+    "CPU2 st/s");
+  if (cpuAll)
+    std::printf(" %10s", ("CPU" + std::to_string(o.threads) + " st/s").c_str());
+  std::printf(" %9s %9s", "CPU Mps/s", "vs plain");
+  for (const bench::GpuVariant& v : bench::gpuVariants())
+    std::printf(" | %-8s %8s %8s %6s", v.name, "st/s", "Mps/s", "%BW");
+  std::printf(" %7s\n", "B/elem");
+  if (csv)
+  {
+    std::fprintf(csv,
+      "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
+      "cpu_all_threads,cpu_all_steps_per_s,cpu2_particle_steps_per_s,"
+      "plain2_particle_steps_per_s,bytes_per_element,bytes_per_particle_step");
+    for (const bench::GpuVariant& v : bench::gpuVariants())
+      std::fprintf(
+        csv, ",%s_steps_per_s,%s_particle_steps_per_s,%s_bandwidth_share", v.name, v.name, v.name);
+    std::fprintf(csv, "\n");
+  }
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
-  int resolution = 128;
-  bool quick = false, gpu = true;
-  std::string csvPath;
-  std::vector<std::string> only; // "Strip16x65536": just these rows
-  for (int i = 1; i < argc; ++i)
-  {
-    if (!std::strcmp(argv[i], "--resolution") && i + 1 < argc)
-      resolution = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--quick"))
-      quick = true;
-    else if (!std::strcmp(argv[i], "--no-gpu"))
-      gpu = false;
-    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
-      csvPath = argv[++i];
-    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
-      only.push_back(argv[++i]);
-    else
-    {
-      std::fprintf(stderr,
-        "usage: %s [--quick] [--no-gpu] [--resolution N] [--csv FILE] [--only SHAPExCOUNT]...\n"
-        "  --quick       4096 elements of each shape only\n"
-        "  --no-gpu      CPU engine and plain loop only\n"
-        "  --only S xN   only the rows of shape S with N elements, e.g. --only Strip16x65536\n",
-        argv[0]);
-      return std::strcmp(argv[i], "--help") ? 2 : 0;
-    }
-  }
-
+  Options o;
+  if (!parse(argc, argv, o))
+    return 2;
+  const int resolution = o.resolution;
   bp::GridGeometry g;
   g.dims = { resolution, resolution, resolution };
   g.origin = { -1, -1, -1 };
@@ -287,65 +469,41 @@ int main(int argc, char** argv)
   const bp::VectorField unsteady(
     g, slice(bp::AnalyticFlow::DoubleGyre, 0.0), slice(bp::AnalyticFlow::DoubleGyre, 100.0));
 
+  bp::setGpuMessageSink(keepMessage);
   bp::HeadlessContext context;
-  std::string gpuName = "none";
+  std::string gpuName = "none", bandwidthSource;
+  double bandwidth = 0.0;
+  bool gpu = o.gpu;
   if (gpu)
   {
     const std::string error = context.create();
     gpu = error.empty();
     gpuName = gpu ? context.description() : error;
+    const char* renderer = gpu ? reinterpret_cast<const char*>(glGetString(GL_RENDERER)) : "";
+    if (gpu)
+      bandwidth =
+        bench::deviceBandwidth(o.bandwidth, renderer ? renderer : "", o.threads, bandwidthSource);
   }
-
-  std::vector<Config> configs;
-  const std::vector<std::size_t> counts = quick
-    ? std::vector<std::size_t>{ 4096 }
-    : std::vector<std::size_t>{ 256, 1024, 4096, 16384, 65536 };
-  for (auto shape :
-    { bp::BuiltinShape::Square, bp::BuiltinShape::Strip8, bp::BuiltinShape::Strip16 })
-    for (std::size_t n : counts)
-      configs.push_back({ shape, n });
-  if (!quick)
+  const std::vector<Config> configs = rowsFor(o);
+  if (configs.empty())
   {
-    configs.push_back({ bp::BuiltinShape::Point, 262144 });
-    configs.push_back({ bp::BuiltinShape::Point, 1048576 });
+    std::fprintf(stderr, "--only matched no shape and count (names as in the table)\n");
+    return 2;
   }
-  if (!only.empty())
-  {
-    std::vector<Config> all = configs;
-    for (auto shape : { bp::BuiltinShape::Point, bp::BuiltinShape::Square, bp::BuiltinShape::Strip8,
-           bp::BuiltinShape::Strip16 })
-      for (std::size_t n : { 256, 1024, 4096, 16384, 65536, 262144, 1048576 })
-        all.push_back({ shape, n });
-    configs.clear();
-    for (const Config& c : all)
-    {
-      const std::string name = bp::builtinTemplate(c.shape).name + "x" + std::to_string(c.elements);
-      const bool wanted = std::find(only.begin(), only.end(), name) != only.end();
-      const bool seen = std::any_of(configs.begin(), configs.end(),
-        [&](const Config& k) { return k.shape == c.shape && k.elements == c.elements; });
-      if (wanted && !seen)
-        configs.push_back(c);
-    }
-    if (configs.empty())
-    {
-      std::fprintf(stderr, "--only matched no shape and count (names as in the table)\n");
-      return 2;
-    }
-  }
+  const bool cpuAll = o.threads > 2;
 
   std::printf(
     "Bound particles, %d^3 fields; Euler, 1 averaged-Jacobi iteration; median of 5 runs\n",
     resolution);
   std::printf("GPU engine on: %s\n", gpuName.c_str());
-  std::printf("%-8s %-8s %9s %9s %11s %11s %11s %9s %9s %11s %11s %8s\n", "field", "shape",
-    "elements", "particles", "CPU1 st/s", "CPU2 st/s", "CPU2 Mps/s", "2 vs 1", "vs plain",
-    "GPU st/s", "GPUgen st/s", "B/elem");
-  std::FILE* csv = csvPath.empty() ? nullptr : std::fopen(csvPath.c_str(), "w");
-  if (csv)
-    std::fprintf(csv,
-      "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
-      "cpu2_particle_steps_per_s,plain2_particle_steps_per_s,gpu_steps_per_s,bytes_per_element,"
-      "gpu_generated_steps_per_s\n");
+  if (gpu)
+    std::printf("GPU columns: fragment path, compute path (a dispatch per kernel), compute path's "
+                "fused step; %%BW: the share of %.0f GB/s (%s) that the state a step moves "
+                "(bytes per particle-step below) takes at that rate\n",
+      bandwidth / 1e9, bandwidthSource.c_str());
+  std::FILE* csv = o.csvPath.empty() ? nullptr : std::fopen(o.csvPath.c_str(), "w");
+  printHeads(o, cpuAll, csv);
+  std::vector<std::pair<std::string, std::vector<std::vector<bp::PassTime>>>> passTimes;
 
   for (const bool isUnsteady : { false, true })
   {
@@ -357,77 +515,61 @@ int main(int argc, char** argv)
       const std::size_t particles = c.elements * t.particleCount();
       const int steps = int(std::max<std::size_t>(5, 3000000 / particles));
       const bp::Parameters p = parametersFor(field, c.elements);
-      std::size_t stateBytes = 0;
-      auto cpu = [&](unsigned threads)
-      {
-        return median(
-          [&]
-          {
-            bp::Engine engine;
-            engine.configure(t, p);
-            const bp::RangeRunner run = bp::poolRunner(threads);
-            engine.initialize(run);
-            stateBytes = sizeof(float) *
-                (engine.positions().size() + engine.normals().size() + engine.forces().size() +
-                  engine.lifetimes().size() + engine.initialCenters().size() +
-                  engine.orientations().size()) +
-              engine.generations().size() * 4 + engine.resetFlags().size();
-            const auto start = Clock::now();
-            for (int s = 0; s < steps; ++s)
-              engine.step(field, s * dt, dt, run);
-            return seconds(start);
-          });
-      };
-      const double one = cpu(1), two = cpu(2);
+      const double one = cpuStepsPerSecond(t, p, field, steps, dt, 1);
+      const double two = cpuStepsPerSecond(t, p, field, steps, dt, 2);
+      const double all = cpuAll ? cpuStepsPerSecond(t, p, field, steps, dt, o.threads) : two;
       const double plain =
         median([&] { return referenceLoop(field, particles, steps, dt, bp::poolRunner(2)); });
-      // The GPU engine, its Jacobi pass reading the springs from a buffer or
-      // with them generated into the program (GpuEngine::setGeneratedSprings).
-      auto gpuSteps = [&](bool generated)
+      const double bytes = bench::bytesPerParticleStep(t.particleCount(), p.trackPoses);
+      const char* fieldName = isUnsteady ? "unsteady" : "steady";
+      std::printf("%-8s %-8s %9zu %9zu %10.1f %10.1f", fieldName, t.name.c_str(), c.elements,
+        particles, one, two);
+      if (cpuAll)
+        std::printf(" %10.1f", all);
+      const double ps = particles * two;
+      std::printf(" %9.2f %8.2fx", ps / 1e6, (particles * steps / plain) / ps);
+      std::vector<double> rates;
+      for (const bench::GpuVariant& v : bench::gpuVariants())
       {
-        double rate = 0.0;
-        bp::GpuEngine engine;
-        engine.setGeneratedSprings(generated);
-        if (engine.configure(t, p).empty() && engine.setField(field).empty())
-        {
-          engine.initialize();
-          const double took = median(
-            [&]
-            {
-              glFinish();
-              const auto start = Clock::now();
-              for (int s = 0; s < steps; ++s)
-                engine.step(s * dt, dt);
-              glFinish();
-              return seconds(start);
-            });
-          rate = steps / took;
-        }
-        engine.release();
-        return rate;
-      };
-      const double gpuRate = gpu ? gpuSteps(false) : 0.0;
-      const double gpuGeneratedRate = gpu ? gpuSteps(true) : 0.0;
-      const double ps = particles * steps / two;
-      const double plainPs = particles * steps / plain;
-      std::printf("%-8s %-8s %9zu %9zu %11.1f %11.1f %11.2f %8.2fx %8.2fx %11.1f %11.1f %8zu\n",
-        isUnsteady ? "unsteady" : "steady", t.name.c_str(), c.elements, particles, steps / one,
-        steps / two, ps / 1e6, one / two, plainPs / ps, gpuRate, gpuGeneratedRate,
-        stateBytes / c.elements);
+        const double rate =
+          gpu ? bench::gpuStepsPerSecond(v, t, p, field, steps, dt, false, median) : 0.0;
+        const double share = bandwidth > 0.0 ? rate * particles * bytes / bandwidth : 0.0;
+        rates.push_back(rate);
+        std::printf(" | %-8s %8.1f %8.1f %5.1f%%", "", rate, rate * particles / 1e6, 100 * share);
+      }
+      const std::size_t stateBytes = stateBytesPerElement(t, p);
+      std::printf(" %7zu\n", stateBytes);
       if (csv)
-        std::fprintf(csv, "%s,%s,%zu,%zu,%.3f,%.3f,%.1f,%.1f,%.3f,%zu,%.3f\n",
-          isUnsteady ? "unsteady" : "steady", t.name.c_str(), c.elements, particles, steps / one,
-          steps / two, ps, plainPs, gpuRate, stateBytes / c.elements, gpuGeneratedRate);
+      {
+        std::fprintf(csv, "%s,%s,%zu,%zu,%.3f,%.3f,%u,%.3f,%.1f,%.1f,%zu,%.1f", fieldName,
+          t.name.c_str(), c.elements, particles, one, two, cpuAll ? o.threads : 2u, all, ps,
+          particles * steps / plain, stateBytes, bytes);
+        for (double rate : rates)
+          std::fprintf(csv, ",%.3f,%.1f,%.5f", rate, rate * particles,
+            bandwidth > 0.0 ? rate * particles * bytes / bandwidth : 0.0);
+        std::fprintf(csv, "\n");
+      }
+      if (gpu && o.passTimes)
+      {
+        std::vector<std::vector<bp::PassTime>> times;
+        for (const bench::GpuVariant& v : bench::gpuVariants())
+          times.push_back(bench::gpuPassTimes(v, t, p, field, std::min(steps, 50), dt));
+        passTimes.push_back(
+          { std::string(fieldName) + " " + t.name + " x " + std::to_string(c.elements), times });
+      }
       std::fflush(stdout);
     }
   }
+  printPassTimes(passTimes);
+  for (const std::string& message : engineMessages())
+    std::printf("%s\n", message.c_str());
   // One-particle elements with RK4 (the job of ParaView's Particle Tracer)
   // against the plain RK4 loop: how close the engine runs to this machine's
   // limit when there is nothing to restore.
   std::printf("\nPoint elements, RK4, 2 threads: engine against the plain RK4 loop\n");
   std::printf(
     "%-8s %9s %14s %14s %9s\n", "field", "particles", "engine Mps/s", "plain Mps/s", "vs plain");
-  const std::size_t points = quick ? 65536 : 262144;
+  const std::size_t points = o.quick ? 65536 : 262144;
   for (const bool isUnsteady : { false, true })
   {
     const bp::VectorField& field = isUnsteady ? unsteady : steady;

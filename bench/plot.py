@@ -17,9 +17,11 @@ for axis, field in zip(axes, ("steady", "unsteady")):
         n = [int(r["elements"]) for r in sel]
         axis.plot(n, [float(r["cpu2_particle_steps_per_s"]) for r in sel], "-o", color=colour,
                   label="%s CPU, 2 threads" % shape)
-        gpu = [int(r["particles"]) * float(r["gpu_steps_per_s"]) for r in sel]
-        if any(gpu):
-            axis.plot(n, gpu, "--s", color=colour, label="%s GPU engine (headless EGL)" % shape)
+        for path, style in (("fragment", "--s"), ("compute", "-.^"), ("fused", "--D")):
+            gpu = [float(r.get("%s_particle_steps_per_s" % path) or 0) for r in sel]
+            if any(gpu):
+                axis.plot(n, gpu, style, color=colour, alpha=0.8,
+                          label="%s GPU engine, %s (headless EGL)" % (shape, path))
         axis.plot(n, [float(r["plain2_particle_steps_per_s"]) for r in sel], ":", color=colour,
                   alpha=0.6, label="%s plain Euler loop" % shape)
     axis.set_xscale("log", base=2)

@@ -12,11 +12,13 @@
 #include "ReleaseWeights.h"
 #include "WorkQueue.h"
 
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -1207,4 +1209,27 @@ TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
     ASSERT_EQ(call.applyTo(replayed), "");
   expectSameBits(Readback(replayed.engine()), expected);
   replayed.engine().release();
+}
+
+// The path (and fused step) the suite's environment asks for is the one that
+// runs: a silent fallback would run the same path three times (CMakeLists.txt).
+TEST(GpuPath, IsTheOneTheEnvironmentAsks)
+{
+  ASSERT_NE(context(), nullptr);
+  const char* path = std::getenv(bp::GpuPathVariable);
+  const char* fused = std::getenv(bp::FusedStepVariable);
+  bp::Parameters p;
+  p.numberOfElements = 64;
+  p.elementSize = 0.1f;
+  bp::GpuEngine gpu;
+  const Released released{ gpu };
+  ASSERT_EQ(gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Strip16), p), "");
+  const bool compute = epoxy_gl_version() >= bp::ComputePathVersion &&
+    !(path && std::strcmp(path, "fragment") == 0);
+  EXPECT_EQ(gpu.path(), compute ? bp::GpuPath::Compute : bp::GpuPath::Fragment);
+  if (compute && fused)
+    EXPECT_EQ(gpu.fusedStep(), std::strcmp(fused, "on") == 0);
+  std::printf("path %s, fused step %s (%s=%s, %s=%s)\n", bp::gpuPathName(gpu.path()),
+    gpu.fusedStep() ? "yes" : "no", bp::GpuPathVariable, path ? path : "", bp::FusedStepVariable,
+    fused ? fused : "");
 }

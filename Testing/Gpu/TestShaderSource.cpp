@@ -9,6 +9,8 @@
 #include "ShapeMatching.h"
 #include "SharedContext.h"
 
+#include <epoxy/gl.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -55,13 +57,19 @@ TEST(ShaderSource, ACompileErrorNamesThePassFileAndLine)
 {
   if (!bp::haveSharedContext())
     return;
-  // Line 3 of the pass, after bp_shared.glsl and bp_common.glsl.
-  bp::GlProgram program;
-  const std::string error = bp::buildPassProgram(
-    { bpShaderTestFragNumber, "void main()\n{\n  float x = bpNoSuchName;\n}\n" }, "", program);
-  EXPECT_TRUE(names(error, "bp_test.frag", 3)) << error;
-  std::printf("%s", error.c_str());
-  EXPECT_NE(error.find("(bp_test.frag) does not compile"), std::string::npos) << error;
+  // Line 3 of the kernel, after bp_shared.glsl, bp_inputs.glsl and bp_common.glsl,
+  // on either path (the compute path on a context that has it).
+  for (bp::GpuPath path : { bp::GpuPath::Fragment, bp::GpuPath::Compute })
+  {
+    if (path == bp::GpuPath::Compute && epoxy_gl_version() < bp::ComputePathVersion)
+      continue;
+    bp::GlProgram program;
+    const std::string error = bp::buildProgram(path, "bp_test.glsl", "",
+      { { bpShaderTestNumber, "void main()\n{\n  float x = bpNoSuchName;\n}\n" } }, program);
+    EXPECT_TRUE(names(error, "bp_test.glsl", 3)) << error;
+    std::printf("%s", error.c_str());
+    EXPECT_NE(error.find("(bp_test.glsl) does not compile"), std::string::npos) << error;
+  }
 }
 
 TEST(ShaderSource, ErrorsInAndAfterGeneratedSpringsNameTheirSource)
@@ -70,30 +78,31 @@ TEST(ShaderSource, ErrorsInAndAfterGeneratedSpringsNameTheirSource)
     return;
   const std::string pass = "void main()\n{\n//TAG\n  float y = BROKEN_AFTER;\n}\n";
   const std::string code = "  float a = 1.0;\n  float b = BROKEN_IN;";
-  const int restore = bpShaderRestoreFragNumber;
+  const int restore = bpShaderRestoreNumber;
+  const bp::ShaderPiece spliced = { restore,
+    bp::spliceCode(pass, restore, "//TAG", code, bp::GeneratedSpringsSource) };
   bp::GlProgram program;
-  std::string error = bp::buildPassProgram(
-    { restore, bp::spliceCode(pass, restore, "//TAG", code, bp::GeneratedSpringsSource) },
-    "#define BROKEN_AFTER 0.0\n", program);
+  std::string error = bp::buildProgram(
+    bp::GpuPath::Fragment, "restore", "#define BROKEN_AFTER 0.0\n", { spliced }, program);
   EXPECT_TRUE(names(error, bp::shaderFileName(bp::GeneratedSpringsSource), 2)) << error;
-  error = bp::buildPassProgram(
-    { restore, bp::spliceCode(pass, restore, "//TAG", code, bp::GeneratedSpringsSource) },
-    "#define BROKEN_IN 0.0\n", program);
-  EXPECT_TRUE(names(error, "bp_restore.frag", 4)) << error;
+  error = bp::buildProgram(
+    bp::GpuPath::Fragment, "restore", "#define BROKEN_IN 0.0\n", { spliced }, program);
+  EXPECT_TRUE(names(error, "bp_restore.glsl", 4)) << error;
 }
 
 TEST(ShaderSource, LogsOfOtherDriversNameTheFile)
 {
   const std::string common = bp::shaderFileName(bpShaderCommonNumber);
   EXPECT_EQ(common, "bp_common.glsl");
-  EXPECT_EQ(bp::describeShaderLog("2(17) : error C1008: undefined variable \"x\"\n"),
+  const std::string n = std::to_string(bpShaderCommonNumber);
+  EXPECT_EQ(bp::describeShaderLog(n + "(17) : error C1008: undefined variable \"x\"\n"),
     common + "(17) : error C1008: undefined variable \"x\"\n");
-  EXPECT_EQ(bp::describeShaderLog("ERROR: 2:17: 'x' : undeclared identifier\n"),
+  EXPECT_EQ(bp::describeShaderLog("ERROR: " + n + ":17: 'x' : undeclared identifier\n"),
     "ERROR: " + common + ":17: 'x' : undeclared identifier\n");
-  EXPECT_EQ(bp::describeShaderLog("2:17(3): error: `x' undeclared\n"),
+  EXPECT_EQ(bp::describeShaderLog(n + ":17(3): error: `x' undeclared\n"),
     common + ":17(3): error: `x' undeclared\n");
   // Mesa keeps the line of a #line directive but not its source-string number.
-  EXPECT_EQ(bp::describeShaderLog("0:200017(3): error: `x' undeclared\n"),
+  EXPECT_EQ(bp::describeShaderLog("0:" + n + "00017(3): error: `x' undeclared\n"),
     common + ":17(3): error: `x' undeclared\n");
 }
 

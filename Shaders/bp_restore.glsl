@@ -1,16 +1,12 @@
 // Step 3, per particle, one Jacobi iteration (Engine::restore): the sum of the
 // corrections of the particle's springs, gathered in spring order, averaged
 // (thesis §3.5) or scaled by the relaxation factor.
-uniform sampler2D bpPositions;
-uniform sampler2D bpParticleInfo;
 uniform sampler2D bpSprings; // two texels per (particle, spring): (a, b, share, 0), (rest, stiffness, 0, 0)
 uniform int bpSpringsWidth;  // texels per row, even
 uniform bool bpAveraged;
 uniform float bpRelaxation;
 
-out vec4 outPosition;
-
-vec4 entry(int k)
+vec4 bpSpringEntry(int k)
 {
   return texelFetch(bpSprings, ivec2(k % bpSpringsWidth, k / bpSpringsWidth), 0);
 }
@@ -18,10 +14,10 @@ vec4 entry(int k)
 // The correction of one spring on particle (e, i), `share` its signed share.
 vec3 bpSpringCorrection(int e, int a, int b, float share, float rest, float stiffness)
 {
-  vec3 pa = texelFetch(bpPositions, bpParticleTexel(e, a), 0).xyz;
-  vec3 pb = texelFetch(bpPositions, bpParticleTexel(e, b), 0).xyz;
   vec3 force;
-  return bpSpringForce(pa, pb, rest, stiffness, force) ? share * force : vec3(0.0);
+  return bpSpringForce(bpPositionOf(e, a), bpPositionOf(e, b), rest, stiffness, force)
+    ? share * force
+    : vec3(0.0);
 }
 
 #ifdef BP_GENERATED_SPRINGS
@@ -36,25 +32,24 @@ vec3 bpSpringSum(int e, int i, vec4 info)
   vec3 acc = vec3(0.0);
   for (int k = first; k < first + count; ++k)
   {
-    vec4 ends = entry(2 * k);
-    vec4 spring = entry(2 * k + 1);
+    vec4 ends = bpSpringEntry(2 * k);
+    vec4 spring = bpSpringEntry(2 * k + 1);
     acc += bpSpringCorrection(e, int(ends.x), int(ends.y), ends.z, spring.x, spring.y);
   }
   return acc;
 }
 #endif
 
-void main()
+// Particle i of element e, at p, after one Jacobi iteration.
+vec3 bpJacobiParticle(int e, int i, vec3 p)
 {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e, i;
-  if (!bpParticleOf(texel, e, i))
-  {
-    outPosition = vec4(0.0);
-    return;
-  }
-  vec3 p = texelFetch(bpPositions, texel, 0).xyz;
   vec4 info = texelFetch(bpParticleInfo, ivec2(i, 0), 0);
   vec3 acc = bpSpringSum(e, i, info);
-  outPosition = vec4(bpAveraged ? p + acc * info.z : p + bpRelaxation * acc, 0.0);
+  return bpAveraged ? p + acc * info.z : p + bpRelaxation * acc;
+}
+
+void bpRestorePass(ivec2 texel, int e, int i, inout vec4 position, inout vec4 unused1,
+  inout vec4 unused2, inout vec4 unused3)
+{
+  position = vec4(bpJacobiParticle(e, i, bpPositionOf(e, i)), 0.0);
 }

@@ -3,22 +3,13 @@
 // trilinear interpolant in the cell that holds the particle
 // (VectorField::sampleWithVorticity, the same operations in the same order;
 // bp_common.glsl: bpCurl).
-uniform sampler2D bpState;
 uniform float bpSampleWeight;
 
-out vec4 outSample;
-
-void main()
+void bpSamplesPass(ivec2 texel, int e, int i, inout vec4 sampled, inout vec4 unused1,
+  inout vec4 unused2, inout vec4 unused3)
 {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e, i;
-  if (!bpParticleOf(texel, e, i))
-  {
-    outSample = vec4(0.0);
-    return;
-  }
   vec3 p = texelFetch(bpState, texel, 0).xyz;
   vec3 v = bpSample(p, bpSampleWeight);
   vec3 c = bpCurl(p, bpSampleWeight);
-  outSample = vec4(v, sqrt(c.x * c.x + c.y * c.y + c.z * c.z));
+  sampled = vec4(v, sqrt(c.x * c.x + c.y * c.y + c.z * c.z));
 }

@@ -1,27 +1,18 @@
 // Step 3 of a super set, per particle, after each restoration iteration
 // (Engine::restoreLinks): one averaged Jacobi pass over the links that join
-// particle i of an element to particle i of its lattice neighbours.
-uniform sampler2D bpPositions;
-uniform sampler2D bpParticleInfo;
+// particle i of an element to particle i of its lattice neighbours. It reads
+// other elements' particles, so it is a pass of its own on both paths.
 uniform isampler2D bpLinkNeighbours; // per element: +u, -u, +v, -v; -1 where none
 uniform sampler2D bpLinkRest;        // per element: the rest length of each
 uniform float bpLinkStiffness;
 
-out vec4 outPosition;
-
-void main()
+void bpLinkPass(ivec2 texel, int e, int i, inout vec4 position, inout vec4 unused1,
+  inout vec4 unused2, inout vec4 unused3)
 {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e, i;
-  if (!bpParticleOf(texel, e, i))
+  vec3 q = bpPositionOf(e, i);
+  if (bpPinned(i))
   {
-    outPosition = vec4(0.0);
-    return;
-  }
-  vec3 q = texelFetch(bpPositions, texel, 0).xyz;
-  if (texelFetch(bpParticleInfo, ivec2(i, 0), 0).w > 0.5)
-  {
-    outPosition = vec4(q, 0.0);
+    position = vec4(q, 0.0);
     return;
   }
   ivec4 neighbour = texelFetch(bpLinkNeighbours, bpElementTexel(e), 0);
@@ -35,9 +26,8 @@ void main()
       continue;
     }
     ++count;
-    vec3 o = texelFetch(bpPositions, bpParticleTexel(neighbour[d], i), 0).xyz;
     vec3 force;
-    if (bpSpringForce(q, o, rest[d], bpLinkStiffness, force))
+    if (bpSpringForce(q, bpPositionOf(neighbour[d], i), rest[d], bpLinkStiffness, force))
     {
       acc += 0.5 * force;
     }
@@ -47,5 +37,5 @@ void main()
     float average = 1.0 / float(count);
     q = q + acc * average;
   }
-  outPosition = vec4(q, 0.0);
+  position = vec4(q, 0.0);
 }

@@ -3,53 +3,40 @@
 // outside the flow's domain, when in its first step its centre moved slower
 // than the release speed, or when a position is not finite; and take the
 // step off its lifetime.
-uniform sampler2D bpElementState; // after the reset pass
-uniform sampler2D bpPositions;    // after restoration
-uniform sampler2D bpCenters;      // release centres
 uniform bool bpAnyParticle;
-uniform float bpStep;
-uniform float bpEndWeight;       // the second time step's weight after the step
 uniform float bpReleaseMinSpeed; // 0: every release stays
+uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
+// Anchor = Centre (bpAnchored): the element is tested where it is moved back
+// to, its release centre, and the move is written for the finalize pass.
 
-// Engine::releasedStagnant.
-bool bpReleasedStagnant(int e, vec4 state, vec3 c)
+// Engine::releasedStagnant: `released`, the element's release centre.
+bool bpReleasedStagnant(int e, vec4 state, vec3 c, vec3 released)
 {
   if (!(bpReleaseMinSpeed > 0.0) || bpLinked)
   {
     return false;
   }
-  vec3 d = c - texelFetch(bpCenters, bpElementTexel(e), 0).xyz;
+  vec3 d = c - released;
   float reach = bpReleaseMinSpeed * bpStep;
   return dot(d, d) < reach * reach && bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep;
 }
-uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
-// Anchor = Centre: the element is tested where it is moved back to, its
-// release centre, and the move is written for the finalize pass.
-uniform bool bpAnchored;
 
-layout(location = 0) out vec4 outState; // (lifetime, generation, flag, non-finite)
-layout(location = 1) out vec4 outShift; // anchored: the element's move (only then a target)
-
-void main()
+// Element e with its state after the reset and its release centre, its
+// particles restored (bpPositionOf): its state after the test (lifetime,
+// generation, flag, non-finite) and, anchored, its move to the anchor.
+void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shift)
 {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  int e;
-  if (!bpElementOf(texel, e))
-  {
-    outState = vec4(0.0);
-    return;
-  }
-  vec4 state = texelFetch(bpElementState, texel, 0);
+  shift = vec4(0.0);
   if (bpSettleOnly)
   {
-    outState = vec4(state.x, state.y, 0.0, 0.0);
+    tested = vec4(state.x, state.y, 0.0, 0.0);
     return;
   }
   vec3 c = vec3(0.0);
   bool finite = true, anyOutside = false;
   for (int i = 0; i < bpParticles; ++i)
   {
-    vec3 q = texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz;
+    vec3 q = bpPositionOf(e, i);
     finite = finite && bpFinite(q);
     c += q;
     anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
@@ -60,20 +47,26 @@ void main()
   {
     // Engine::anchor: every particle moved by the release centre minus the
     // mean; the release-speed test below still reads the mean the flow gave.
-    at = texelFetch(bpCenters, bpElementTexel(e), 0).xyz;
-    vec3 shift = at - c;
-    outShift = vec4(shift, 0.0);
+    at = center.xyz;
+    shift = vec4(at - c, 0.0);
     anyOutside = false;
     for (int i = 0; bpAnyParticle && i < bpParticles; ++i)
     {
-      vec3 q = texelFetch(bpPositions, bpParticleTexel(e, i), 0).xyz + shift;
+      vec3 q = bpPositionOf(e, i) + shift.xyz;
       anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
     }
   }
   bool leave = !finite || (bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight)) ||
-    bpReleasedStagnant(e, state, c);
+    bpReleasedStagnant(e, state, c, center.xyz);
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure.
   leave = leave && !bpLinked;
-  outState = vec4(state.x - bpStep, state.y, leave ? 1.0 : 0.0, finite ? 0.0 : 1.0);
+  tested = vec4(state.x - bpStep, state.y, leave ? 1.0 : 0.0, finite ? 0.0 : 1.0);
+}
+
+void bpTestPass(ivec2 texel, int e, int i, inout vec4 tested, inout vec4 shift,
+  inout vec4 unused2, inout vec4 unused3)
+{
+  bpTestElement(
+    e, texelFetch(bpElementState, texel, 0), texelFetch(bpCenters, texel, 0), tested, shift);
 }

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file GpuPath.h
+ * @brief Which of the GPU engine's two paths runs a system: compute shaders
+ * or fragment passes, and the one message that says so.
+ *
+ * The compute path (OpenGL 4.3 and later) runs each kernel as a compute
+ * dispatch, and a system's whole step as one fused dispatch where its
+ * elements fit a workgroup (GpuPasses.h); the fragment path (OpenGL 3.3)
+ * draws a full-screen triangle per pass. Both run the same kernels
+ * (Shaders/), so they give the same physics.
+ *
+ * The path is the compute path wherever the context has OpenGL 4.3, unless
+ * the environment variable BOUNDPARTICLES_GPU_PATH says `fragment`;
+ * `compute` on an older context falls back to the fragment path with a
+ * warning that names the context's version. The path in use is said once
+ * per process (and once more for each other path or context), through the
+ * message sink.
+ */
+#ifndef BoundParticles_GpuPath_h
+#define BoundParticles_GpuPath_h
+
+#include <string>
+
+namespace bp
+{
+
+enum class GpuPath
+{
+  Fragment, ///< full-screen fragment passes: any OpenGL 3.3 core context
+  Compute   ///< compute shaders and a fused step: OpenGL 4.3 and later
+};
+
+/// "fragment" or "compute".
+const char* gpuPathName(GpuPath path);
+
+/// The environment variable that forces a path.
+constexpr const char* GpuPathVariable = "BOUNDPARTICLES_GPU_PATH";
+/// The lowest OpenGL version (major * 10 + minor) the compute path runs on.
+constexpr int ComputePathVersion = 43;
+
+/// The path for a context and what to say about it.
+struct GpuPathChoice
+{
+  GpuPath path = GpuPath::Fragment;
+  std::string note;    ///< the path in use and why, for the log
+  std::string warning; ///< empty unless the request could not be followed
+};
+
+/**
+ * The path for a context of OpenGL `version` (major * 10 + minor, as
+ * epoxy_gl_version()) described by `context` (its GL_VERSION, for
+ * messages), asked for by `requested` (BOUNDPARTICLES_GPU_PATH's value;
+ * null or empty: automatic).
+ */
+GpuPathChoice chooseGpuPath(int version, const std::string& context, const char* requested);
+
+/// chooseGpuPath() for the current context and the environment.
+GpuPathChoice currentGpuPath();
+
+/// Whether the compute path runs a system's step as one fused dispatch
+/// (bp_step.comp), where its elements fit a workgroup, or as a dispatch per
+/// kernel.
+enum class FusedSteps
+{
+  Automatic, ///< fused on a GPU, a dispatch per kernel on a software rasterizer
+  Always,
+  Never
+};
+
+/// The environment variable that overrides FusedSteps::Automatic: `on` or `off`.
+constexpr const char* FusedStepVariable = "BOUNDPARTICLES_GPU_FUSED_STEP";
+
+/**
+ * Whether `choice` fuses the steps on the renderer named `renderer`
+ * (GL_RENDERER), `requested` the value of BOUNDPARTICLES_GPU_FUSED_STEP (null
+ * or empty: none). Automatic follows `requested` (`on`, `off`), else fuses
+ * them on a GPU, which skips a phase for a SIMD group whose threads all wait
+ * (the fused step's per-element phases leave most of a workgroup waiting),
+ * and not on a software rasterizer (llvmpipe), which runs every phase for
+ * every thread and where the fused step measured about half as fast as a
+ * dispatch per kernel.
+ */
+bool fusesSteps(FusedSteps choice, const std::string& renderer, const char* requested);
+
+/// Where the engine's messages go: `warning` tells a warning from a note.
+/// The default writes them to standard error; a renderer routes them to its
+/// own log (the plugin: VTK's output window).
+using GpuMessageSink = void (*)(const std::string& text, bool warning);
+void setGpuMessageSink(GpuMessageSink sink);
+
+/// Says the choice's note (and warning) through the sink, unless the same
+/// was said before in this process.
+void sayGpuPathOnce(const GpuPathChoice& choice);
+
+} // namespace bp
+
+#endif

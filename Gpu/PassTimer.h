@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file PassTimer.h
+ * @brief Where the GPU engine's time goes: a GL_TIME_ELAPSED query around
+ * every pass (and copy) while timing is on, summed per pass.
+ *
+ * Nothing waits while the passes run: a query's result is read only by
+ * collect(), or when very many are pending (then the oldest, long finished).
+ * Off, it costs nothing. Needs the GL context current; the queries are
+ * deleted as GlObjects.h says.
+ */
+#ifndef BoundParticles_PassTimer_h
+#define BoundParticles_PassTimer_h
+
+#include "GlObjects.h"
+#include "PassTime.h"
+
+#include <cstddef>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace bp
+{
+
+class PassTimer
+{
+public:
+  /// Starts or stops timing; stopping drops what was not collected.
+  void enable(bool on);
+  bool enabled() const { return this->On; }
+
+  /// Opens the query of a run of `pass`; one at a time (GL_TIME_ELAPSED
+  /// queries do not nest).
+  void begin(const std::string& pass);
+  void end();
+
+  /// Every pass's time since the last collect(), in the order each first
+  /// ran; waits for the GPU to finish what was timed.
+  std::vector<PassTime> collect();
+
+private:
+  /// Adds the results of the pending queries but the newest `keep`.
+  void settle(std::size_t keep);
+
+  struct Pending
+  {
+    std::size_t query; ///< in Queries
+    std::size_t pass;  ///< in Times
+  };
+  bool On = false;
+  GlQueryList Queries;           ///< every query made; reused
+  std::vector<std::size_t> Free; ///< queries not pending
+  std::deque<Pending> Open;      ///< begun, results not read yet, oldest first
+  std::vector<PassTime> Times;
+};
+
+} // namespace bp
+
+#endif

@@ -1,0 +1,47 @@
+// Step 2, per particle: the particle's position before the step (placed anew
+// for elements reset in this step) and after advection (Engine::advectParticle).
+uniform int bpIntegrator; // 0 Euler, 1 RK2 (midpoint), 2 RK4
+uniform vec3 bpWeights;   // second-slice weights at t, t + h/2, t + h
+uniform bool bpPlaceOnly;
+
+vec3 bpIntegrate(vec3 p)
+{
+  float h = bpStep;
+  vec3 k1 = bpSample(p, bpWeights.x);
+  if (bpIntegrator == 0)
+  {
+    return p + h * k1;
+  }
+  if (bpIntegrator == 1)
+  {
+    vec3 k2 = bpSample(p + 0.5 * h * k1, bpWeights.y);
+    return p + h * k2;
+  }
+  vec3 k2 = bpSample(p + 0.5 * h * k1, bpWeights.y);
+  vec3 k3 = bpSample(p + 0.5 * h * k2, bpWeights.y);
+  vec3 k4 = bpSample(p + h * k3, bpWeights.z);
+  return p + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+// Particle i of an element with state, centre and orientation after the
+// reset, at `current` after the last step: where it starts the step
+// (`before`) and where advection takes it.
+void bpAdvectParticle(int i, vec4 element, vec4 center, vec4 orientation, vec3 current,
+  out vec3 before, out vec3 advected)
+{
+  before = element.z > 0.5
+    ? bpPlace(center.xyz, orientation, texelFetch(bpRest, ivec2(i, 0), 0).xyz)
+    : current;
+  advected = (bpPlaceOnly || bpPinned(i)) ? before : bpIntegrate(before);
+}
+
+void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 before,
+  inout vec4 unused2, inout vec4 unused3)
+{
+  ivec2 at = bpElementTexel(e);
+  vec3 b, a;
+  bpAdvectParticle(i, texelFetch(bpElementState, at, 0), texelFetch(bpCenters, at, 0),
+    texelFetch(bpOrientations, at, 0), texelFetch(bpState, texel, 0).xyz, b, a);
+  advected = vec4(a, 0.0);
+  before = vec4(b, 0.0);
+}

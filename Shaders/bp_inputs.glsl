@@ -1,0 +1,32 @@
+// What several of the GPU engine's kernels read, declared once (a program
+// that puts several kernels together, the compute path's fused step, has
+// each declaration once). After bp_shared.glsl and the per-element state's
+// samplers (bpElementState, bpCenters, bpOrientations, bpPoses, bpSpins),
+// which Gpu/GpuState.cpp declares from its one list; before bp_common.glsl.
+
+// Per particle: the state after the last step (position, force), read at
+// the particle's own texel.
+uniform sampler2D bpState;
+// Per particle: the positions the kernel at hand works on (after advection
+// or the last restoration pass; after the step for the pose and normals).
+uniform sampler2D bpPositions;
+// Particle i of element e in those positions: a texel of bpPositions in a
+// pass of its own (bp_pass.glsl), the workgroup's shared memory in the
+// fused step (bp_step.comp).
+vec3 bpPositionOf(int e, int i);
+
+// The template: n x 1 rest positions; n x 2 per particle (spring offset,
+// count, 1/degree, pinned), (triangle offset, count, 0, 0).
+uniform sampler2D bpRest;
+uniform sampler2D bpParticleInfo;
+
+uniform float bpStep;          // float(h)
+uniform float bpEndWeight;     // the second time step's weight at t + h
+uniform bool bpAnchored;       // Anchor = Centre (bp_test.glsl, bp_finalize.glsl)
+uniform bool bpLinearMatching; // linear shape matching (bp_match.glsl)
+
+// Whether particle i is pinned (it never moves).
+bool bpPinned(int i)
+{
+  return texelFetch(bpParticleInfo, ivec2(i, 0), 0).w > 0.5;
+}

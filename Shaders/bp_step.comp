@@ -1,0 +1,179 @@
+// The compute path's fused step: a whole step of every element in one
+// dispatch, for a system without links whose elements fit a workgroup
+// (FusedStep::of in GpuPasses.cpp). The same kernels as the passes
+// (bp_reset.glsl to bp_pose.glsl) in the same order, each element's
+// particles held in shared memory between them: the particle state is read once and written
+// once, the per-element state likewise, and an element's K restoration
+// iterations run with barriers between them instead of passes.
+//
+// A workgroup holds BP_GROUP_ELEMENTS consecutive elements of BP_N
+// particles. In the particle phases thread t works on particle t / G of
+// element t % G (G = BP_GROUP_ELEMENTS), so neighbouring threads read
+// neighbouring texels and run the same springs; in the per-element phases
+// (reset, shape matching's fit, test, pose) thread t < G works on element t,
+// so those phases run on whole SIMD groups while the other threads wait at
+// the barrier (a GPU runs other workgroups meanwhile). Gpu/GpuPasses.cpp
+// defines BP_N, BP_GROUP_ELEMENTS, BP_GROUP_THREADS (their product) and
+// BP_RESTORATION (0 none, 1 Jacobi, 2 Gauss-Seidel, 3 shape matching), and
+// declares the images it writes: the particle state's next texture
+// (bpParticlesOut) and each per-element texture's (bpElementStateOut,
+// bpCentersOut, bpOrientationsOut, bpPosesOut, bpSpinsOut: GpuState's one
+// list). Workgroups run along x, then y, as many as the system needs.
+layout(local_size_x = BP_GROUP_THREADS) in;
+
+uniform int bpIterations;  // K
+uniform int bpColourCount; // Gauss-Seidel: colours of springs
+uniform bool bpTrackPoses;
+
+// The positions of the phase at hand (particle i of element e0 + k at
+// i * G + k), then the elements' per-element values.
+shared vec3 bpLocalPositions[BP_GROUP_THREADS];
+shared vec4 bpLocalState[BP_GROUP_ELEMENTS];
+shared vec4 bpLocalCenter[BP_GROUP_ELEMENTS];
+shared vec4 bpLocalOrientation[BP_GROUP_ELEMENTS];
+shared vec4 bpLocalFit[BP_GROUP_ELEMENTS]; // shape matching's fit, then the test's move
+shared vec4 bpLocalLinear0[BP_GROUP_ELEMENTS];
+shared vec4 bpLocalLinear1[BP_GROUP_ELEMENTS];
+
+// Every thread of the workgroup here, and what they wrote to shared memory
+// visible to all (barrier() alone orders execution; OpenGL's GLSL leaves its
+// effect on shared memory to memoryBarrierShared()).
+#define bpSync()             \
+  memoryBarrierShared();     \
+  barrier()
+
+int bpGroupFirstElement()
+{
+  int group = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
+  return group * BP_GROUP_ELEMENTS;
+}
+
+vec3 bpPositionOf(int e, int i)
+{
+  return bpLocalPositions[i * BP_GROUP_ELEMENTS + e - bpGroupFirstElement()];
+}
+
+void main()
+{
+  int thread = int(gl_LocalInvocationID.x);
+  int first = bpGroupFirstElement();
+  // This thread's particle ...
+  int i = thread / BP_GROUP_ELEMENTS, local = thread - i * BP_GROUP_ELEMENTS;
+  int e = first + local;
+  bool live = e < bpElements;
+  ivec2 texel = bpParticleTexel(e, i);
+  // ... and, for thread < G, its element.
+  int own = first + thread;
+  bool lead = thread < BP_GROUP_ELEMENTS && own < bpElements;
+  ivec2 at = bpElementTexel(own);
+
+  // 1. Reset.
+  vec4 pose = vec4(0.0);
+  if (lead)
+  {
+    vec4 state = texelFetch(bpElementState, at, 0);
+    vec4 center = texelFetch(bpCenters, at, 0);
+    vec4 orientation = texelFetch(bpOrientations, at, 0);
+    pose = texelFetch(bpPoses, at, 0);
+    bpResetElement(own, state, center, orientation, pose);
+    bpLocalState[thread] = state;
+    bpLocalCenter[thread] = center;
+    bpLocalOrientation[thread] = orientation;
+    imageStore(bpCentersOut, at, center);
+  }
+  bpSync();
+
+  // 2. Advect.
+  vec3 before = vec3(0.0), advected = vec3(0.0);
+  if (live)
+  {
+    bpAdvectParticle(i, bpLocalState[local], bpLocalCenter[local], bpLocalOrientation[local],
+      texelFetch(bpState, texel, 0).xyz, before, advected);
+  }
+  bpLocalPositions[thread] = advected;
+  vec3 p = advected;
+  bpSync();
+
+  // 3. Restore: K iterations, each phase's positions shared once every
+  // thread has read the last ones.
+  for (int k = 0; k < bpIterations; ++k)
+  {
+#if BP_RESTORATION == 1
+    if (live)
+    {
+      p = bpJacobiParticle(e, i, p);
+    }
+    bpSync();
+    bpLocalPositions[thread] = p;
+    bpSync();
+#elif BP_RESTORATION == 2
+    for (int colour = 0; colour < bpColourCount; ++colour)
+    {
+      if (live)
+      {
+        p = bpGaussSeidelParticle(e, i, p, colour);
+      }
+      bpSync();
+      bpLocalPositions[thread] = p;
+      bpSync();
+    }
+#elif BP_RESTORATION == 3
+    if (lead)
+    {
+      vec4 orientation = bpLocalOrientation[thread], fit, linear0, linear1;
+      bpMatchElement(own, orientation, fit, linear0, linear1);
+      bpLocalOrientation[thread] = orientation;
+      bpLocalFit[thread] = fit;
+      bpLocalLinear0[thread] = linear0;
+      bpLocalLinear1[thread] = linear1;
+    }
+    bpSync();
+    if (live)
+    {
+      p = bpMatchParticle(i, p, bpLocalFit[local], bpLocalOrientation[local],
+        bpLocalLinear0[local], bpLocalLinear1[local]);
+    }
+    bpSync();
+    bpLocalPositions[thread] = p;
+    bpSync();
+#endif
+  }
+
+  // 4. Test, on the restored positions.
+  if (lead)
+  {
+    vec4 tested, shift;
+    bpTestElement(own, bpLocalState[thread], bpLocalCenter[thread], tested, shift);
+    bpLocalState[thread] = tested;
+    bpLocalFit[thread] = shift;
+    imageStore(bpElementStateOut, at, tested);
+    imageStore(bpOrientationsOut, at, bpLocalOrientation[thread]);
+  }
+  bpSync();
+
+  // 5. Finalize.
+  vec4 after = vec4(0.0);
+  if (live)
+  {
+    after = bpFinalParticle(p, advected, before, bpLocalState[local], bpLocalFit[local]);
+    imageStore(bpParticlesOut, texel, after);
+  }
+
+  // 6. Poses and spins, from the positions after the step.
+  if (bpTrackPoses)
+  {
+    bpSync();
+    bpLocalPositions[thread] = after.xyz;
+    bpSync();
+    if (lead)
+    {
+      vec4 spin;
+      bpPoseElement(own, bpLocalState[thread], pose, spin);
+      imageStore(bpSpinsOut, at, spin);
+    }
+  }
+  if (lead)
+  {
+    imageStore(bpPosesOut, at, pose);
+  }
+}

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The GPU engine's paths (Gpu/GpuPath.h): which one a context gets, the
+// message that says so, the fused step against a dispatch per kernel, and the
+// per-pass timer. The parity and physics suites run on every path
+// (CMakeLists.txt), each checking that it runs the path asked for
+// (TestGpuEngine.cpp: GpuPath.IsTheOneTheEnvironmentAsks).
+#include "AnalyticFlows.h"
+#include "GpuEngine.h"
+#include "SharedContext.h"
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// What the engine said (setGpuMessageSink), in order.
+std::vector<std::pair<std::string, bool>>& said()
+{
+  static std::vector<std::pair<std::string, bool>> messages;
+  return messages;
+}
+
+void listen(const std::string& text, bool warning)
+{
+  said().push_back({ text, warning });
+}
+
+bp::VectorField rotation()
+{
+  bp::GridGeometry g;
+  g.dims = { 16, 16, 16 };
+  g.origin = { -1, -1, -1 };
+  g.spacing = { 2.0 / 15, 2.0 / 15, 2.0 / 15 };
+  bp::FieldSlice s;
+  s.velocity = std::make_shared<std::vector<float>>(
+    bp::sampleAnalyticFlow(bp::AnalyticFlow::SolidBodyRotation, g, 0.0));
+  return bp::VectorField(g, s);
+}
+
+bp::Parameters strips(std::size_t elements)
+{
+  bp::Parameters p;
+  p.numberOfElements = elements;
+  p.elementSize = 0.1f;
+  p.emitterMin = { -0.6f, -0.6f, -0.6f };
+  p.emitterMax = { 0.6f, 0.6f, 0.6f };
+  p.lifetimeMin = 0.1f;
+  p.lifetimeMax = 0.3f; // resets within the run
+  p.iterations = 3;
+  p.trackPoses = true;
+  p.seed = 5;
+  return p;
+}
+
+/// Positions and poses after `steps` steps of a Strip16 system.
+std::vector<float> trace(bp::GpuEngine& gpu, const bp::Parameters& p, int steps)
+{
+  const bp::VectorField field = rotation();
+  EXPECT_EQ(gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Strip16), p), "");
+  EXPECT_EQ(gpu.setField(field), "");
+  gpu.initialize();
+  for (int s = 0; s < steps; ++s)
+    gpu.step(0.01 * s, 0.01);
+  std::vector<float> positions, poses;
+  gpu.read(&positions, nullptr, nullptr);
+  gpu.readPoses(&poses, nullptr);
+  positions.insert(positions.end(), poses.begin(), poses.end());
+  return positions;
+}
+} // namespace
+
+TEST(GpuPath, ComputeFromOpenGL43UnlessTheFragmentPathIsAsked)
+{
+  const std::string mesa = "4.5 (Core Profile) Mesa";
+  bp::GpuPathChoice c = bp::chooseGpuPath(45, mesa, nullptr);
+  EXPECT_EQ(c.path, bp::GpuPath::Compute);
+  EXPECT_EQ(c.warning, "");
+  EXPECT_NE(c.note.find("the compute path, chosen automatically, on OpenGL " + mesa), std::string::npos)
+    << c.note;
+  EXPECT_EQ(bp::chooseGpuPath(43, mesa, "").path, bp::GpuPath::Compute);
+  EXPECT_EQ(bp::chooseGpuPath(45, mesa, "compute").path, bp::GpuPath::Compute);
+  c = bp::chooseGpuPath(46, mesa, "fragment");
+  EXPECT_EQ(c.path, bp::GpuPath::Fragment);
+  EXPECT_NE(c.note.find("fragment path, as BOUNDPARTICLES_GPU_PATH asks"), std::string::npos)
+    << c.note;
+  EXPECT_EQ(bp::chooseGpuPath(42, "4.2", nullptr).path, bp::GpuPath::Fragment);
+  EXPECT_EQ(bp::chooseGpuPath(33, "3.3", nullptr).warning, "");
+}
+
+TEST(GpuPath, ForcedComputeBelow43WarnsWithTheVersionAndRunsTheFragmentPath)
+{
+  const bp::GpuPathChoice c = bp::chooseGpuPath(41, "4.1 (Core Profile) Mesa 22.3.6", "compute");
+  EXPECT_EQ(c.path, bp::GpuPath::Fragment);
+  EXPECT_NE(c.warning.find("this OpenGL context is version 4.1"), std::string::npos) << c.warning;
+  EXPECT_NE(c.warning.find("compute shaders need 4.3"), std::string::npos) << c.warning;
+  EXPECT_NE(c.note.find("the fragment path"), std::string::npos) << c.note;
+  // A value it does not know is said, and the choice is automatic.
+  const bp::GpuPathChoice odd = bp::chooseGpuPath(45, "4.5", "vulkan");
+  EXPECT_EQ(odd.path, bp::GpuPath::Compute);
+  EXPECT_NE(odd.warning.find("=vulkan is not one of"), std::string::npos) << odd.warning;
+}
+
+TEST(GpuPath, StepsFuseOnAGpuUnlessTold)
+{
+  using F = bp::FusedSteps;
+  const std::string gpu = "NVIDIA H200/PCIe/SSE2", software = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  EXPECT_TRUE(bp::fusesSteps(F::Automatic, gpu, nullptr));
+  EXPECT_FALSE(bp::fusesSteps(F::Automatic, software, nullptr));
+  EXPECT_TRUE(bp::fusesSteps(F::Automatic, software, "on"));
+  EXPECT_FALSE(bp::fusesSteps(F::Automatic, gpu, "off"));
+  EXPECT_TRUE(bp::fusesSteps(F::Always, software, "off")); // the caller's word wins
+  EXPECT_FALSE(bp::fusesSteps(F::Never, gpu, "on"));
+}
+
+// Run with BOUNDPARTICLES_GPU_PATH=compute on a context Mesa made to offer
+// OpenGL 4.1 (ctest's GpuPath.ForcedComputeOnOpenGL41FallsBack): the engine
+// runs its fragment path and warns once, naming the version.
+TEST(GpuPath, ForcedComputeFallsBackBelow43)
+{
+  bp::setGpuMessageSink(listen);
+  if (!bp::haveSharedContext())
+    return;
+  if (epoxy_gl_version() >= bp::ComputePathVersion)
+    GTEST_SKIP() << "this context offers OpenGL " << epoxy_gl_version()
+                 << " (MESA_GL_VERSION_OVERRIDE=4.1 acts on Mesa only)";
+  bp::GpuEngine gpu;
+  const std::vector<float> state = trace(gpu, strips(64), 5);
+  EXPECT_EQ(gpu.path(), bp::GpuPath::Fragment);
+  for (float v : state)
+    ASSERT_TRUE(std::isfinite(v));
+  gpu.release();
+  bp::GpuEngine again;
+  trace(again, strips(16), 1);
+  again.release();
+  bp::setGpuMessageSink(nullptr);
+  int warnings = 0;
+  for (const auto& message : said())
+  {
+    std::printf("%s%s\n", message.second ? "warning: " : "", message.first.c_str());
+    if (message.second)
+    {
+      ++warnings;
+      EXPECT_NE(message.first.find("version 4.1"), std::string::npos) << message.first;
+    }
+  }
+  EXPECT_EQ(warnings, 1) << "said once for two configurations";
+}
+
+// The fused step and a dispatch per kernel run the same kernels on the same
+// values: they agree to the parity bar (on Mesa's llvmpipe, bit for bit).
+TEST(GpuPath, FusedAndPerKernelStepsAgree)
+{
+  if (!bp::haveSharedContext())
+    return;
+  if (epoxy_gl_version() < bp::ComputePathVersion ||
+    (std::getenv(bp::GpuPathVariable) &&
+      std::strcmp(std::getenv(bp::GpuPathVariable), "fragment") == 0))
+    GTEST_SKIP() << "the compute path does not run here";
+  for (bp::Restoration r : { bp::Restoration::AveragedJacobi, bp::Restoration::GaussSeidel,
+         bp::Restoration::ShapeMatching })
+  {
+    bp::Parameters p = strips(100);
+    p.restoration = r;
+    bp::GpuEngine fused, kernels;
+    fused.setFusedSteps(bp::FusedSteps::Always);
+    kernels.setFusedSteps(bp::FusedSteps::Never);
+    const std::vector<float> a = trace(fused, p, 25), b = trace(kernels, p, 25);
+    EXPECT_TRUE(fused.fusedStep());
+    EXPECT_FALSE(kernels.fusedStep());
+    ASSERT_EQ(a.size(), b.size());
+    double worst = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k)
+      worst = std::max(worst, double(std::abs(a[k] - b[k])));
+    EXPECT_LT(worst, 1e-4 * std::sqrt(12.0)) << "restoration " << int(r);
+    std::printf("restoration %d: fused and per kernel differ by %.3g%s\n", int(r), worst,
+      std::memcmp(a.data(), b.data(), 4 * a.size()) == 0 ? " (the same bits)" : "");
+    fused.release();
+    kernels.release();
+  }
+}
+
+// Per-pass GPU times (GL_TIME_ELAPSED) name every pass a step runs, once a
+// step each, and nothing while timing is off.
+TEST(GpuEngine, PassTimesSayWhereTheTimeGoes)
+{
+  if (!bp::haveSharedContext())
+    return;
+  bp::GpuEngine gpu;
+  gpu.setPassTiming(true);
+  trace(gpu, strips(64), 6);
+  const std::vector<bp::PassTime> times = gpu.passTimes();
+  ASSERT_FALSE(times.empty());
+  long runs = 0;
+  for (const bp::PassTime& t : times)
+  {
+    std::printf("  %-14s %3ld runs %9.3f ms\n", t.pass.c_str(), t.runs, 1e3 * t.seconds);
+    EXPECT_GE(t.seconds, 0.0) << t.pass;
+    if (t.pass == (gpu.fusedStep() ? "step (fused)" : "finalize"))
+      runs = t.runs;
+  }
+  EXPECT_EQ(runs, gpu.fusedStep() ? 6 : 7) << "a run a step (finalize also at initialisation)";
+  gpu.setPassTiming(false);
+  gpu.step(0.1, 0.01);
+  EXPECT_TRUE(gpu.passTimes().empty());
+  gpu.release();
+}
