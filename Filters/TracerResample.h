@@ -6,10 +6,17 @@
  * partitioned, AMR), point or cell vectors.
  *
  * The grid is bp::chooseResampleGrid()'s over the whole data's bounds. Each
- * grid point is located in the mesh with VTK's vtkStaticCellLocator and takes
- * the interpolation weights of the cell that holds it (vtkProbeFilter's rule,
- * which vtkResampleToImage applies: point vectors interpolated with the cell's
- * weights, cell vectors the cell's value). A point in no cell lies outside the
+ * grid point takes the interpolation weights of the cell that holds it
+ * (vtkProbeFilter's rule, which vtkResampleToImage applies: point vectors
+ * interpolated with the cell's weights, cell vectors the cell's value). The
+ * cells are searched cell by cell, in parallel: each cell tests the grid
+ * points within its bounds with VTK's own EvaluatePosition, the test
+ * vtkStaticCellLocator::FindCell makes, so a point is inside exactly where a
+ * FindCell per point finds it; where several cells hold a point (on a shared
+ * face, or within a tetrahedron's 0.001 parametric tolerance of one) the
+ * lowest-numbered cell gives its weights, the same on every VTK and thread
+ * count (the locator took whichever its bin's unstable sort put first). A
+ * point in no cell lies outside the
  * flow's domain: vtkValidPointMask 0, as ParaView's resamplers write it, so the
  * masked-grid machinery (releases, resets, both engines) applies unchanged.
  *
@@ -37,6 +44,7 @@
 #include "vtkWeakPointer.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,7 +52,6 @@
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
-class vtkGenericCell;
 class vtkImageData;
 class vtkMultiProcessController;
 
@@ -143,16 +150,28 @@ private:
     std::vector<Sample> samples;
     std::vector<vtkIdType> points;
     std::vector<float> weights;
-    /// Appends `sample` (its point, block and cell) with `cell`'s points and
-    /// their `cellWeights`.
-    void add(Sample sample, vtkGenericCell* cell, const std::vector<double>& cellWeights);
+    /// Appends `sample` (its point, block and cell) with its cell's `n`
+    /// point `ids` and their `cellWeights`.
+    void add(Sample sample, vtkIdType n, const vtkIdType* ids, const float* cellWeights);
   };
   /// Finds each grid point's cell (the first block's that holds it) and
-  /// weights; a surface's cells up to `offPlane` from the grid's plane.
+  /// weights; a surface's cells up to `offPlane` from the grid's plane
+  /// (TracerResampleLocate.cxx).
   void locate(const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run);
-  /// locate() in block `b`: the grid points it holds that no earlier block
-  /// took (`taken`, per grid point).
+  /**
+   * locate() in block `b`: the grid points it holds that no earlier block
+   * took (`taken`, per grid point). Cell by cell, in parallel: each cell
+   * tests the grid points within its bounds (EvaluatePosition, as
+   * vtkStaticCellLocator::FindCell tests a cell whose bounds hold the point),
+   * and of the cells that hold a point the lowest-numbered wins.
+   */
   void locateBlock(vtkDataSet* block, std::uint32_t b, double offPlane,
+    std::vector<std::uint8_t>& taken, const bp::RangeRunner& run);
+  /// locateBlock()'s samples: the grid points of the box `range` that have
+  /// an `owner` (per point of the box; its `weights`, `stride` per point),
+  /// marked taken.
+  void keepFound(vtkDataSet* block, std::uint32_t b, const std::array<std::array<int, 2>, 3>& range,
+    const std::atomic<vtkIdType>* owner, const float* weights, std::size_t stride,
     std::vector<std::uint8_t>& taken, const bp::RangeRunner& run);
   /// Appends a range's samples, shifted past the weights already held.
   void append(const Found& found);
