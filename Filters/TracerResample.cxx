@@ -138,6 +138,29 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
   return std::string();
 }
 
+/// What a mesh whose `bounds` reach beyond the grid (chosen at an earlier
+/// time step) loses; empty when they do not.
+std::string beyondGrid(const bp::ResampleGrid& g, const std::array<double, 6>& bounds)
+{
+  std::ostringstream say;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double last = g.origin[a] + (g.dims[a] - 1) * g.spacing[a];
+    const double slack = 1e-9 * std::max({ 1.0, std::abs(g.origin[a]), std::abs(last) });
+    if (g.dims[a] > 1 && (bounds[2 * a] < g.origin[a] - slack || bounds[2 * a + 1] > last + slack))
+    {
+      say << (say.str().empty() ? "" : " and ") << "XYZ"[a];
+    }
+  }
+  if (say.str().empty())
+  {
+    return std::string();
+  }
+  return "The mesh of a later time step reaches beyond the resampled grid along " + say.str() +
+    ": the grid spans the mesh of the first time step read, and cells outside it are left out "
+    "(outside the flow).";
+}
+
 /// Collective sum, min or max in place (nothing without a controller).
 template <typename T>
 void allReduce(vtkMultiProcessController* controller, std::vector<T>& values, int operation)
@@ -197,11 +220,13 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   std::vector<int> same(1, key == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
   allReduce(controller, same, vtkCommunicator::MIN_OP);
   this->Kept = same[0] == 1;
+  // The same mesh keeps its grid, chosen anew or not.
+  this->GridKept = this->GridKept || this->Kept;
   if (!this->Kept)
   {
     this->clear();
-    double thickness = 0.0;
-    std::string error = this->chooseGrid(selected, requested, controller, thickness);
+    double offPlane = 0.0;
+    std::string error = this->chooseGrid(selected, requested, controller, offPlane);
     if (error.empty())
     {
       error = agreeOnError(controller,
@@ -213,13 +238,17 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
     {
       return error;
     }
-    // A surface's grid plane lies mid-way through its thickness (rounding, a
-    // slight tilt): its cells are found that far off their plane.
-    this->locate(selected.blocks, 0.5 * thickness, run);
+    // A surface's cells are found as far off the grid's plane as they lie
+    // (rounding, a slight tilt: the plane lies mid-way through its thickness).
+    this->locate(selected.blocks, offPlane, run);
     this->keepOwnSamples(controller);
     this->GeometryKey = key;
   }
   this->Hashed = std::move(hashed);
+  for (const std::string* note : { &this->GridNote, &this->BeyondNote })
+  {
+    warning += warning.empty() || note->empty() ? *note : " " + *note;
+  }
   std::vector<float> values;
   this->interpolate(selected.blocks, selected.cellVectors, run, values);
   allReduce(controller, values, vtkCommunicator::SUM_OP);
@@ -294,7 +323,7 @@ FieldResampler::Selection FieldResampler::select(
 }
 
 std::string FieldResampler::chooseGrid(const Selection& selected,
-  const std::array<int, 3>& requested, vtkMultiProcessController* controller, double& thickness)
+  const std::array<int, 3>& requested, vtkMultiProcessController* controller, double& offPlane)
 {
   // Bounds as (-min, max) pairs reduced by max; the cells counted once (no ghosts).
   std::vector<double> extremes(6, -1e300);
@@ -341,12 +370,25 @@ std::string FieldResampler::chooseGrid(const Selection& selected,
   // (every process decides alike from the smallest share).
   std::vector<double> affordable(1, 0.5 * bp::allocatableBytes() / BytesPerGridPoint);
   allReduce(controller, affordable, vtkCommunicator::MIN_OP);
-  this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface, affordable[0]);
-  thickness = 0.0;
+  if (!this->GridKept || requested != this->GridRequested)
+  {
+    // Chosen once while time steps hold it: an adapting mesh (other cells,
+    // another point count at each step) is resampled onto the same grid.
+    this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface, affordable[0]);
+    this->GridKept = this->Grid.error.empty();
+    this->GridRequested = requested;
+    this->GridNote = this->Grid.note;
+  }
+  offPlane = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    thickness = surface && this->Grid.dims[a] == 1 ? bounds[2 * a + 1] - bounds[2 * a] : thickness;
+    if (surface && this->Grid.dims[a] == 1)
+    {
+      offPlane = std::max(std::abs(bounds[2 * a] - this->Grid.origin[a]),
+        std::abs(bounds[2 * a + 1] - this->Grid.origin[a]));
+    }
   }
+  this->BeyondNote = beyondGrid(this->Grid, bounds);
   return this->Grid.error;
 }
 

@@ -95,6 +95,14 @@ public:
   const std::string& arrayName() const { return this->ArrayName; }
   /// Forgets the kept weights.
   void clear();
+  /**
+   * The grid of the next resample is chosen anew. Until then it is kept,
+   * whatever the mesh: the tracer's time steps must share one grid, and an
+   * adapting mesh (cells refined or coarsened, another point count) or a
+   * moving one is resampled at every time step onto the grid chosen for the
+   * first one read. The tracer calls this while it holds no time step.
+   */
+  void forgetGrid() { this->GridKept = false; }
   /// Release Weights: the input's array (point data with point vectors,
   /// cell data with cell vectors; its magnitude) that resample() also puts
   /// on the grid under that name, one float per point; empty for none.
@@ -135,14 +143,15 @@ private:
   /// The blocks of `input` to sample, and the array's name (ArrayName).
   Selection select(
     vtkDataObject* input, const VectorsChoice& vectors, vtkMultiProcessController* controller);
-  /// Grid: chooseResampleGrid() over every process's blocks; `thickness` is a
-  /// surface's extent along its flat axis. Returns the error, if any.
+  /// Grid: chooseResampleGrid() over every process's blocks, or the grid
+  /// kept (forgetGrid()); `offPlane`: how far a surface's cells lie off the
+  /// grid's plane. Returns the error, if any.
   /// The Release Weights interpolated onto the grid as the vectors are
   /// (zero where a block lacks the array); `found` whether any block has it.
   void interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
     const bp::RangeRunner& run, std::vector<float>& values, bool& found) const;
   std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
-    vtkMultiProcessController* controller, double& thickness);
+    vtkMultiProcessController* controller, double& offPlane);
   /// What a range of grid rows located in one block: its samples and their
   /// cells' point ids and weights (Sample::first indexes these).
   struct Found
@@ -186,6 +195,10 @@ private:
   void fillImage(const std::vector<float>& values, vtkImageData* image) const;
 
   bp::ResampleGrid Grid;
+  bool GridKept = false;              ///< forgetGrid()
+  std::array<int, 3> GridRequested{}; ///< the Resample Dimensions it was chosen for
+  std::string GridNote;               ///< what the automatic choice gave up (a warning)
+  std::string BeyondNote;             ///< the last mesh reached beyond the grid (a warning)
   std::uint64_t GeometryKey = 0;
   std::vector<HashedArray> Hashed; ///< the arrays of the last key
   bool Kept = false;

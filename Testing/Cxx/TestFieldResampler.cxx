@@ -169,6 +169,40 @@ TEST(FieldResampler, AStaticMeshKeepsItsWeightsAndNewVectorsGiveNewValues)
   EXPECT_FALSE(kept.keptWeights());
 }
 
+TEST(FieldResampler, AnAdaptingMeshKeepsTheGridOfItsFirstStepUntilToldToChooseAgain)
+{
+  // Issue 46: the automatic grid followed each step's cell count, so the
+  // steps of an adapting mesh did not share one grid.
+  bpvtk::FieldResampler r;
+  Resampled first, finer, wider;
+  resample(r, hexMesh(6, linear), first);
+  ASSERT_TRUE(first.error.empty()) << first.error;
+  const bp::ResampleGrid chosen = r.grid();
+  resample(r, hexMesh(11, linear), finer); // 8 times the cells
+  ASSERT_TRUE(finer.error.empty()) << finer.error;
+  EXPECT_FALSE(r.keptWeights());
+  EXPECT_EQ(r.grid().dims, chosen.dims);
+  EXPECT_EQ(r.grid().spacing, chosen.spacing);
+  EXPECT_TRUE(finer.warning.empty()) << finer.warning;
+  // The finer mesh's own values on the kept grid.
+  for (vtkIdType p = 0; p < finer.image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    finer.image->GetPoint(p, x);
+    ASSERT_NEAR(finer.vectors()->GetComponent(p, 1), 2.0 * x[1], 2e-6) << p;
+  }
+  // A mesh that moved beyond the kept grid: cut to it, and said.
+  resample(r, hexMesh(6, linear, nullptr, 0.5), wider);
+  ASSERT_TRUE(wider.error.empty()) << wider.error;
+  EXPECT_EQ(r.grid().origin, chosen.origin);
+  EXPECT_NE(wider.warning.find("beyond the resampled grid along X"), std::string::npos)
+    << wider.warning;
+  // Told to choose again (the tracer holds no time step): the finer mesh's own grid.
+  r.forgetGrid();
+  resample(r, hexMesh(11, linear), finer);
+  EXPECT_GT(r.grid().pointCount(), chosen.pointCount());
+}
+
 TEST(FieldResampler, CellVectorsGiveTheValueOfTheCellThatHoldsThePoint)
 {
   auto mesh = hexMesh(5, linear);
