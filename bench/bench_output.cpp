@@ -3,8 +3,9 @@
 // by side in one run (issue 40): Strip16 elements on the 128^3 shear layer,
 // the tracer's own output code (bpvtk::fillParticleOutput) with the default
 // Output Arrays, and the cost of each array alone over the points. Every
-// figure is the median of interleaved rounds (a step, then an output of it),
-// wall clock and the process's CPU time, so a busy machine shows in both.
+// figure is the median of rounds as Play makes them (a step, then an output
+// of it, the same arrays each round), wall clock and the process's CPU
+// time, so a busy machine shows in both.
 //
 //   BoundParticlesOutputBench [--elements N]... [--threads T] [--rounds R]
 #include "AnalyticFlows.h"
@@ -127,33 +128,51 @@ void run(std::size_t elements, unsigned threads, int rounds)
       alone.push_back(row.id);
     }
   }
-  for (int r = 0; r < rounds; ++r)
+  auto keep = [](Row& row, const Cost& c)
   {
-    auto keep = [&](Row& row, const Cost& c)
+    row.wall.push_back(c.wall);
+    row.cpu.push_back(c.cpu);
+  };
+  // Each output goes to a new polydata, as the tracer's output object is
+  // handed on and the last one let go of (its arrays are reused).
+  auto output = [&](const bpvtk::OutputFrame& frame)
+  {
+    vtkNew<vtkPolyData> out;
+    return timed([&] { bpvtk::fillParticleOutput(out, engine, field, frame, storage, pool); });
+  };
+  // Rounds as Play makes them, a step and its output, with the same arrays
+  // from one round to the next: the defaults; the points alone; each array
+  // with the points.
+  auto play = [&](const bpvtk::OutputFrame& wanted, Row* stepRow, Row& outputRow)
+  {
+    for (int r = 0; r < rounds; ++r)
     {
-      row.wall.push_back(c.wall);
-      row.cpu.push_back(c.cpu);
-    };
-    keep(rows[0], timed([&] { engine.step(field, t, dt, pool); }));
-    t += dt;
-    // Each output goes to a new polydata, as the tracer's output object is
-    // handed on and the last one let go of (its arrays are reused).
-    auto output = [&](const bpvtk::OutputFrame& frame)
-    {
-      vtkNew<vtkPolyData> out;
-      return timed([&] { bpvtk::fillParticleOutput(out, engine, field, frame, storage, pool); });
-    };
-    bpvtk::OutputFrame frame = frameOf(field, t);
-    keep(rows[1], output(frame));
-    frame.wanted.fill(false);
-    keep(rows[2], output(frame));
-    for (std::size_t k = 0; k < alone.size(); ++k)
-    {
-      frame.wanted.fill(false);
-      frame.wanted[std::size_t(alone[k])] = true;
-      const Cost with = output(frame);
-      keep(rows[3 + k], { with.wall - rows[2].wall.back(), with.cpu - rows[2].cpu.back() });
+      const Cost step = timed([&] { engine.step(field, t, dt, pool); });
+      t += dt;
+      bpvtk::OutputFrame frame = wanted;
+      frame.time = t;
+      const Cost out = output(frame);
+      if (r > 0) // the first round after a change of arrays writes them all
+      {
+        if (stepRow)
+          keep(*stepRow, step);
+        keep(outputRow, out);
+      }
     }
+  };
+  bpvtk::OutputFrame frame = frameOf(field, t);
+  play(frame, &rows[0], rows[1]);
+  frame.wanted.fill(false);
+  play(frame, nullptr, rows[2]);
+  for (std::size_t k = 0; k < alone.size(); ++k)
+  {
+    frame.wanted.fill(false);
+    frame.wanted[std::size_t(alone[k])] = true;
+    Row with;
+    play(frame, nullptr, with);
+    const double wall = median(rows[2].wall), cpu = median(rows[2].cpu);
+    for (std::size_t r = 0; r < with.wall.size(); ++r)
+      keep(rows[3 + k], { with.wall[r] - wall, with.cpu[r] - cpu });
   }
   const double step = median(rows[0].wall);
   std::printf("\n%zu Strip16 elements (%zu particles), %u threads, medians of %d rounds\n",
