@@ -23,6 +23,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -571,6 +572,69 @@ TEST(FieldResampler, EachGridPointTakesTheLowestNumberedCellThatHoldsIt)
         EXPECT_GT(inside, out.image->GetNumberOfPoints() / 2);
       }
     }
+}
+
+TEST(FieldResampler, AMeshThatChangesEveryStepIsSearchedAgainAsANewOne)
+{
+  // Issue 38: a script whose mesh changed topology between time steps
+  // (point count, cells) ended with a SIGSEGV once. One resampler on threads
+  // through meshes of every kind in turn, some arrays changed in place as a
+  // reader may change them; each step's values are a fresh resampler's on the
+  // same grid (run under AddressSanitizer: BOUNDPARTICLES_SANITIZE_RESAMPLER).
+  auto hexes = hexMesh(6, linear);
+  auto hole = hexMesh(9, linear, [](double x, double y, double) { return x + y < 0.6; });
+  vtkNew<vtkMultiBlockDataSet> zones;
+  zones->SetBlock(0, hexMesh(5, linear));
+  zones->SetBlock(1, hexMesh(7, linear, nullptr, 0.3));
+  zones->SetBlock(2, vtkNew<vtkUnstructuredGrid>()); // an empty block
+  const std::vector<vtkSmartPointer<vtkDataObject>> steps = { hexes, jitteredMesh(7, true, false),
+    zones.Get(), hole, jitteredMesh(5, false, true), hexes };
+  bpvtk::FieldResampler kept;
+  kept.setReleaseWeights("v");
+  int compared = 0;
+  for (std::size_t s = 0; s < steps.size(); ++s)
+  {
+    if (s == 5)
+    {
+      // The first mesh again, its points moved and fewer of them in place.
+      hexes->GetPoints()->SetNumberOfPoints(150);
+      hexes->GetPointData()->GetArray("v")->SetNumberOfTuples(150);
+      vtkNew<vtkCellArray> fewer;
+      for (vtkIdType c = 0; c < hexes->GetNumberOfCells(); ++c)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        hexes->GetCellPoints(c, n, ids);
+        if (*std::max_element(ids, ids + n) < 150)
+          fewer->InsertNextCell(n, ids);
+      }
+      hexes->SetCells(VTK_HEXAHEDRON, fewer);
+      hexes->GetPoints()->Modified();
+    }
+    Resampled out, reference;
+    bpvtk::VectorsChoice choice;
+    choice.name = "v";
+    out.error = kept.resample(
+      steps[s], choice, { 0, 0, 0 }, nullptr, bp::threadRunner(3), out.image, out.warning);
+    ASSERT_TRUE(out.error.empty()) << "step " << s << ": " << out.error;
+    EXPECT_FALSE(kept.keptWeights()) << "step " << s;
+    bpvtk::FieldResampler fresh;
+    fresh.setReleaseWeights("v");
+    const bp::ResampleGrid g = kept.grid();
+    reference.error = fresh.resample(steps[s], choice, { g.dims[0], g.dims[1], g.dims[2] }, nullptr,
+      bp::serialRunner(), reference.image, reference.warning);
+    ASSERT_TRUE(reference.error.empty()) << reference.error;
+    if (fresh.grid().spacing != g.spacing || fresh.grid().origin != g.origin)
+    {
+      continue; // the mesh lies elsewhere than the kept grid: nothing to compare
+    }
+    for (vtkIdType i = 0; i < out.vectors()->GetNumberOfValues(); ++i)
+    {
+      ASSERT_EQ(out.vectors()->GetValue(i), reference.vectors()->GetValue(i)) << "step " << s;
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
 }
 
 TEST(FieldResampler, InputsWithoutAMeshOrTheArrayAreRefusedWithAReason)
