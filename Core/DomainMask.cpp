@@ -62,6 +62,13 @@ DomainMask maskOutsidePoints(
   return mask;
 }
 
+ReleaseMask releaseMaskOf(const VectorField& field, float minSpeed)
+{
+  auto unfit = releaseUnfitCells(field, minSpeed);
+  auto weights = releaseWeightsOf(field.grid(), field.firstSlice().releaseWeights, unfit.get());
+  return { field.grid(), std::move(unfit), std::move(weights) };
+}
+
 bool leavesNoCell(const ReleaseMask& mask)
 {
   if (!mask.unfit)

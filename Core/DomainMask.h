@@ -67,6 +67,11 @@ struct ReleaseMask
   std::shared_ptr<const ReleaseWeights> weights;
 };
 
+/// The release mask of `field` alone (a process that holds the whole field):
+/// releaseUnfitCells() and the first slice's Release Weights where they
+/// reach a cell where releases may land (releaseWeightsOf).
+ReleaseMask releaseMaskOf(const VectorField& field, float minSpeed);
+
 /// Whether `mask` leaves no cell of its grid where a release may land (and
 /// so no element could be released anywhere).
 bool leavesNoCell(const ReleaseMask& mask);

@@ -95,9 +95,9 @@ std::array<float, 2> StretchFit::stretch(const float* positions) const
   return { float(largest), float(smallest) };
 }
 
-float elementFtle(float largestStretch, double age)
+float elementFtle(float largestStretch, double age, double minimumAge)
 {
-  if (!(age > 0.0) || !std::isfinite(age) || !(largestStretch > 0.0f) ||
+  if (!(age > 0.0) || !(age >= minimumAge) || !std::isfinite(age) || !(largestStretch > 0.0f) ||
     !std::isfinite(largestStretch))
   {
     return 0.0f;
@@ -107,14 +107,14 @@ float elementFtle(float largestStretch, double age)
 }
 
 std::array<float, 3> elementDeformation(
-  const StretchFit& fit, const float* positions, double age, bool hidden)
+  const StretchFit& fit, const float* positions, double age, bool hidden, double minimumAge)
 {
   if (hidden)
   {
     return { 1.0f, 1.0f, 0.0f };
   }
   const std::array<float, 2> s = fit.stretch(positions);
-  return { s[0], s[1], elementFtle(s[0], age) };
+  return { s[0], s[1], elementFtle(s[0], age, minimumAge) };
 }
 
 } // namespace bp

@@ -57,15 +57,24 @@ private:
   int Span = 0;
 };
 
-/// ln(largest stretch) / age: 0 where the age is not positive or either is
-/// not finite (an element just placed has no exponent yet).
-float elementFtle(float largestStretch, double age);
+/// The steps an element must have been traced for before it has an FTLE
+/// (Parameters::ftleMinimumAge is this many of the trace's steps). Over a
+/// shorter age ln(stretch) / age is ill-conditioned: the deformation the
+/// springs leave of the last steps (a few percent for a stiff element in
+/// strong strain), divided by an age of a step or two, read up to 437 on
+/// the combustor where grown elements read 5 to 30.
+constexpr int MinimumFtleSteps = 10;
+
+/// ln(largest stretch) / age: 0 where the age is not positive, is below
+/// `minimumAge`, or either is not finite (an element just placed has no
+/// exponent yet).
+float elementFtle(float largestStretch, double age, double minimumAge = 0.0);
 
 /// What the output shows of one element: its largest and smallest stretch
-/// and its FTLE over `age`; (1, 1, 0) for an element not yet released
-/// (`hidden`), which shows nothing.
+/// and its FTLE over `age` (0 below `minimumAge`); (1, 1, 0) for an element
+/// not yet released (`hidden`), which shows nothing.
 std::array<float, 3> elementDeformation(
-  const StretchFit& fit, const float* positions, double age, bool hidden);
+  const StretchFit& fit, const float* positions, double age, bool hidden, double minimumAge = 0.0);
 
 } // namespace bp
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ElementTemplate.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -357,6 +359,37 @@ const char* builtinShapeName(BuiltinShape shape)
       return "Fish";
   }
   return "Unknown";
+}
+
+std::array<float, 3> longAxis(const ElementTemplate& shape)
+{
+  const std::size_t n = shape.particleCount();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& q : shape.rest)
+  {
+    mean += Eigen::Vector3d(q[0], q[1], q[2]) / double(std::max<std::size_t>(n, 1));
+  }
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const auto& q : shape.rest)
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d(q[0], q[1], q[2]) - mean;
+    spread += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(spread);
+  const double largest = solver.eigenvalues()[2];
+  // As long along x as along any direction (within rounding): x, exactly.
+  if (!(largest > spread(0, 0) * (1.0 + 1e-6) + 1e-300) || !std::isfinite(largest))
+  {
+    return { 1.0f, 0.0f, 0.0f };
+  }
+  Eigen::Vector3d axis = solver.eigenvectors().col(2).normalized();
+  int biggest = 0;
+  for (int a = 1; a < 3; ++a)
+  {
+    biggest = std::abs(axis[a]) > std::abs(axis[biggest]) ? a : biggest;
+  }
+  axis *= axis[biggest] < 0.0 ? -1.0 : 1.0; // one sign, whatever the solver's
+  return { float(axis[0]), float(axis[1]), float(axis[2]) };
 }
 
 ElementTemplate builtinTemplate(BuiltinShape shape)

@@ -50,6 +50,16 @@ struct ElementTemplate
   void normalize();
 };
 
+/**
+ * The template's long axis, a unit vector in its own coordinates: what
+ * Release Orientation = Along Flow turns onto the flow. The x axis (exactly)
+ * where the template is at least as long along x as along any direction,
+ * as every built-in shape is; otherwise the principal axis of its rest
+ * positions (the direction of their largest spread), so a custom template
+ * laid along y or z still swims along the flow, not across it.
+ */
+std::array<float, 3> longAxis(const ElementTemplate& shape);
+
 /// The built-in shapes of thesis Fig. 3.4, with no power-of-two padding.
 enum class BuiltinShape
 {

@@ -300,10 +300,12 @@ private:
     return (this->ResetFlags[e] & (ResetDue | ReleaseHidden)) || this->Lifetimes[e] <= 0.0f;
   }
   /// The release centre of element `element`'s generation (Engine::place);
-  /// false for a lattice point that does not fit (the element is hidden).
+  /// false for a lattice point, or a weighted release with no candidate,
+  /// that does not fit (the element is hidden).
   bool releaseCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
-  /// The Random pattern's centre with Release Weights (ReleaseWeights.h).
-  void weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
+  /// The Random pattern's centre with Release Weights (ReleaseWeights.h);
+  /// false where no candidate fits.
+  bool weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const;
   /// What a step decides once for every element: the second slice's weight
   /// at t, t + h/2 and t + h, the release window, and who resets.
   struct StepWeights
@@ -410,6 +412,8 @@ private:
   std::vector<float> Poses; ///< poses(): 4 floats per element
   std::vector<float> Spins; ///< spins(): 4 floats per element
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+  /// The template's long axis (longAxis()), which Along Flow turns onto the flow.
+  std::array<float, 3> LongAxis = { 1, 0, 0 };
   std::vector<std::uint8_t> ResetFlags;
   std::array<float, 9> RestMomentInverse = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
 

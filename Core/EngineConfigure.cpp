@@ -71,6 +71,7 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   this->buildIncidences();
   this->sizeElements(p.numberOfElements);
   this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->LongAxis = longAxis(shape);
   this->RestMomentInverse = restMomentInverse(shape, p.elementSize);
   this->Links =
     makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax);

@@ -163,6 +163,10 @@ struct Parameters
   int trailLength = 0;
   double trailStart = 0.0;
   double trailInterval = 0.0;
+  /// The age an element needs for an FTLE (ElementFTLE, the FTLE map; time
+  /// units): bp::MinimumFtleSteps of the trace's largest step. Neither
+  /// engine's step reads it.
+  double ftleMinimumAge = 0.0;
 };
 
 /// The most poses a trail keeps (Parameters::trailLength).

@@ -103,8 +103,9 @@ void Engine::alignToFlow(std::size_t e, const ReleaseFlow& flow)
 {
   float v[3];
   flow.field->sampleWeighted(this->InitialCenters.data() + 3 * e, flow.weight, v);
-  this->orient(
-    e, alongFlowQuaternion(v, this->Params.planeAxis, this->Params.frame, this->FrameQuaternion));
+  this->orient(e,
+    alongFlowQuaternion(
+      v, this->Params.planeAxis, this->Params.frame, this->LongAxis, this->FrameQuaternion));
   this->ResetFlags[e] &= std::uint8_t(~AlignPending);
 }
 
@@ -138,8 +139,7 @@ bool Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, floa
   }
   if (this->Weights)
   {
-    this->weightedCenter(element, generation, c);
-    return true;
+    return this->weightedCenter(element, generation, c);
   }
   auto candidate = [&](int k)
   {
@@ -161,13 +161,15 @@ bool Engine::releaseCenter(std::uint32_t element, std::uint32_t generation, floa
   return true;
 }
 
-void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
+bool Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, float c[3]) const
 {
   const Parameters& P = this->Params;
   const ReleaseWeights& W = *this->Weights;
   // Candidate k, drawn where weights may be above 0, is taken where it fits
   // with probability w(c) / maximum; else the fitting candidate of the
-  // largest weight seen, else the last.
+  // largest weight seen; else (none fits) the last, which the release then
+  // keeps hidden, due again at the next step, as a lattice point that does
+  // not fit: a weighted release never lands where the mask forbids.
   float lo[3], hi[3];
   weightedBox(P.emitterMin, P.emitterMax, W, lo, hi);
   float best[3];
@@ -188,7 +190,7 @@ void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, flo
     const float w = W.at(c);
     if (uniformDraw(P.seed, element, generation, weightDraw(k)) * W.maximum() < w)
     {
-      return;
+      return true;
     }
     if (w > bestWeight)
     {
@@ -200,6 +202,7 @@ void Engine::weightedCenter(std::uint32_t element, std::uint32_t generation, flo
   {
     std::copy_n(best, 3, c);
   }
+  return bestWeight >= 0.0f;
 }
 
 void Engine::setReleaseMask(const GridGeometry& grid,

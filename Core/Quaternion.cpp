@@ -45,7 +45,8 @@ std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float
 }
 
 std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
-  const std::array<float, 9>& frame, const std::array<float, 4>& first)
+  const std::array<float, 9>& frame, const std::array<float, 3>& axis,
+  const std::array<float, 4>& first)
 {
   float d[3] = { v[0], v[1], v[2] };
   if (planeAxis >= 0)
@@ -66,8 +67,13 @@ std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
   d[0] = d[0] * inverse;
   d[1] = d[1] * inverse;
   d[2] = d[2] * inverse;
-  // a = frame * e_x, the long axis as the frame leaves it.
-  const float a[3] = { frame[0], frame[3], frame[6] };
+  // a = frame * axis, the long axis as the frame leaves it (exactly the
+  // frame's first column for the x axis).
+  float a[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    a[k] = frame[3 * k] * axis[0] + frame[3 * k + 1] * axis[1] + frame[3 * k + 2] * axis[2];
+  }
   const float c = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
   float r[4];
   if (1.0f + c < 1e-6f)

@@ -80,14 +80,16 @@ std::array<float, 4> inPlaneQuaternion(int axis, float u, const std::array<float
 
 /**
  * Along Flow's orientation for a flow `v` at the release centre: the shortest
- * turn of the frame's x axis (the template's long axis) onto v, after the
- * frame (row-major `frame`, as the quaternion `first`). On a flat field
+ * turn of the template's long axis (`axis`, longAxis() in ElementTemplate.h:
+ * the x axis for the built-in shapes) as the frame leaves it onto v, after
+ * the frame (row-major `frame`, as the quaternion `first`). On a flat field
  * (`planeAxis` >= 0) v's component along that axis is dropped, so the turn is
  * about it. Opposite directions turn by a half turn about the frame's z axis;
  * a zero or non-finite v keeps `first`.
  */
 std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
-  const std::array<float, 9>& frame, const std::array<float, 4>& first);
+  const std::array<float, 9>& frame, const std::array<float, 3>& axis,
+  const std::array<float, 4>& first);
 
 } // namespace bp
 

@@ -28,44 +28,59 @@ std::array<float, 3> ReleaseLattice::point(std::size_t id) const
 
 namespace
 {
+/// The automatic spacing and the axes it cuts.
+struct AutomaticSpacing
+{
+  double spacing = 0.0;
+  std::array<bool, 3> spread = { false, false, false }; ///< axes with more than one point
+};
+
 /// The spacing that cuts the box into about `elements` cells: the volume
 /// (area, length) of its spread axes over `elements`, to the power of one
-/// over their number. An axis thinner than that (one point across) is as
-/// flat, and the spacing is found again without it, so a thin slab keeps
-/// the target instead of spending it across its thickness.
-double spacingFor(const std::array<double, 3>& extent, std::size_t elements)
+/// over their number. The thinnest axis that this leaves one point across
+/// is as flat (one point, at its middle) and the spacing is found again
+/// without it, one axis at a time, so a thin slab keeps the target instead
+/// of spending it across its thickness, and a box of a few elements keeps
+/// its points inside (all three axes of a cube are one point across for one
+/// element: the point is the box's centre).
+AutomaticSpacing spacingFor(const std::array<double, 3>& extent, std::size_t elements)
 {
-  std::array<bool, 3> spread;
+  AutomaticSpacing result;
   for (int a = 0; a < 3; ++a)
   {
-    spread[a] = extent[a] > 0.0;
+    result.spread[a] = extent[a] > 0.0;
   }
-  double s = 0.0;
-  for (bool again = true; again;)
+  for (;;)
   {
     double volume = 1.0;
     int axes = 0;
     for (int a = 0; a < 3; ++a)
     {
-      volume *= spread[a] ? extent[a] : 1.0;
-      axes += spread[a];
+      volume *= result.spread[a] ? extent[a] : 1.0;
+      axes += result.spread[a];
     }
     if (axes == 0)
     {
-      return 0.0;
+      return result;
     }
-    s = std::pow(volume / double(std::max<std::size_t>(elements, 1)), 1.0 / axes);
-    again = false;
+    const double s = std::pow(volume / double(std::max<std::size_t>(elements, 1)), 1.0 / axes);
+    result.spacing = s;
+    int thinnest = -1;
     for (int a = 0; a < 3; ++a)
     {
-      if (spread[a] && axes > 1 && std::round(extent[a] / s) <= 1.0)
+      const bool onePoint = std::round(extent[a] / s) <= 1.0;
+      if (result.spread[a] && axes > 1 && onePoint &&
+        (thinnest < 0 || extent[a] < extent[std::size_t(thinnest)]))
       {
-        spread[a] = false;
-        again = true;
+        thinnest = a;
       }
     }
+    if (thinnest < 0)
+    {
+      return result;
+    }
+    result.spread[std::size_t(thinnest)] = false;
   }
-  return s;
 }
 } // namespace
 
@@ -77,16 +92,31 @@ ReleaseLattice releaseLattice(const std::array<float, 3>& emitterMin,
   {
     extent[a] = double(emitterMax[a]) - double(emitterMin[a]);
   }
-  const double s = spacing > 0.0 ? spacing : spacingFor(extent, elements);
+  AutomaticSpacing cut;
+  if (spacing > 0.0)
+  {
+    cut.spacing = spacing;
+    for (int a = 0; a < 3; ++a)
+    {
+      cut.spread[a] = extent[a] > 0.0;
+    }
+  }
+  else
+  {
+    cut = spacingFor(extent, elements);
+  }
   ReleaseLattice lattice;
   for (int a = 0; a < 3; ++a)
   {
-    if (!(extent[a] > 0.0) || !(s > 0.0))
+    if (!(extent[a] > 0.0))
     {
       lattice.origin[a] = emitterMin[a];
       continue;
     }
-    const double n = std::min(std::max(std::round(extent[a] / s), 1.0), double(MaxLatticeCount));
+    // An axis left one point across has it at its middle.
+    const double n = cut.spread[a] && cut.spacing > 0.0
+      ? std::min(std::max(std::round(extent[a] / cut.spacing), 1.0), double(MaxLatticeCount))
+      : 1.0;
     lattice.counts[a] = int(n);
     const double step = extent[a] / n;
     lattice.spacing[a] = float(step);

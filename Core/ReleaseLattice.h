@@ -44,7 +44,9 @@ struct ReleaseLattice
  * gives the box's volume (area, length) over `elements` cells on its
  * non-flat axes, each count its extent over s rounded, so size() is close to
  * `elements` but not always equal to it (the engine then holds size()
- * elements). An axis is flat when its extent is not above 0.
+ * elements). An axis is flat when its extent is not above 0. An axis of
+ * one point that is not flat has it at its middle (one element in a cube:
+ * the cube's centre).
  */
 ReleaseLattice releaseLattice(const std::array<float, 3>& emitterMin,
   const std::array<float, 3>& emitterMax, std::size_t elements, double spacing);

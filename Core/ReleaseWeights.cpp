@@ -67,6 +67,16 @@ void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float,
   }
 }
 
+double releaseWeightScale(double largest)
+{
+  if (!(largest > 0.0) || !std::isfinite(largest))
+  {
+    return 1.0;
+  }
+  const int e = std::ilogb(largest);
+  return e > 60 || e < -60 ? std::ldexp(1.0, -e) : 1.0;
+}
+
 std::vector<float> releaseWeightValues(const std::vector<float>& values, int components)
 {
   const std::size_t n = components > 0 ? values.size() / std::size_t(components) : 0;
@@ -86,10 +96,50 @@ std::vector<float> releaseWeightValues(const std::vector<float>& values, int com
   return out;
 }
 
-std::shared_ptr<const ReleaseWeights> releaseWeightsOf(
-  const GridGeometry& grid, const std::shared_ptr<const std::vector<float>>& values)
+bool weightsReachFitCells(const GridGeometry& grid, const std::vector<float>& values,
+  const std::vector<std::uint8_t>* unfit)
 {
-  if (!values || values->size() != grid.pointCount() || values->empty())
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  if (values.size() != grid.pointCount() || (unfit && unfit->size() != grid.pointCount()))
+  {
+    return false;
+  }
+  // Cells are indexed by their lowest corner; along an axis of one point the
+  // cell's "next" corner is the point itself (as releaseUnfitCells).
+  const std::size_t step[3] = { nx > 1 ? 1u : 0u, ny > 1 ? std::size_t(nx) : 0u,
+    nz > 1 ? std::size_t(nx) * std::size_t(ny) : 0u };
+  for (int k = 0; k < std::max(nz - 1, 1); ++k)
+  {
+    for (int j = 0; j < std::max(ny - 1, 1); ++j)
+    {
+      for (int i = 0; i < std::max(nx - 1, 1); ++i)
+      {
+        const std::size_t base =
+          std::size_t(i) + std::size_t(nx) * (std::size_t(j) + std::size_t(ny) * k);
+        if (unfit && (*unfit)[base])
+        {
+          continue;
+        }
+        for (int c = 0; c < 8; ++c)
+        {
+          const std::size_t id =
+            base + ((c & 1) ? step[0] : 0) + ((c & 2) ? step[1] : 0) + ((c & 4) ? step[2] : 0);
+          if (std::isfinite(values[id]) && std::abs(values[id]) > 0.0f)
+          {
+            return true;
+          }
+        }
+      }
+    }
+  }
+  return false;
+}
+
+std::shared_ptr<const ReleaseWeights> releaseWeightsOf(const GridGeometry& grid,
+  const std::shared_ptr<const std::vector<float>>& values, const std::vector<std::uint8_t>* unfit)
+{
+  if (!values || values->size() != grid.pointCount() || values->empty() ||
+    (unfit && !weightsReachFitCells(grid, *values, unfit)))
   {
     return nullptr;
   }

@@ -69,19 +69,40 @@ void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float,
   const ReleaseWeights& weights, float lo[3], float hi[3]);
 
 /**
+ * The power of two that brings weights whose largest finite component is
+ * `largest` into float's range without losing them (2^-e for largest = 2^e
+ * beyond 2^60 or below 2^-60; 1 otherwise, and for 0 or no finite value):
+ * releases depend only on ratios of weights, and a power of two keeps them
+ * exactly, so a double array of 1e39 or 1e300, or of 1e-50, weighs as it
+ * should instead of reading as Inf or 0.
+ */
+double releaseWeightScale(double largest);
+
+/**
  * Per point, |value| of a `components`-component array (its magnitude for
  * more than one), NaN and Inf as 0: what FieldSlice::releaseWeights holds.
  */
 std::vector<float> releaseWeightValues(const std::vector<float>& values, int components);
 
 /**
+ * Whether some cell of `grid` where releases may land (not `unfit`, per
+ * cell as releaseUnfitCells(); null: every cell) has a corner whose weight
+ * in `values` (one per point) is above 0: where no such cell is left,
+ * weighted releases would all fall where the mask forbids them.
+ */
+bool weightsReachFitCells(const GridGeometry& grid, const std::vector<float>& values,
+  const std::vector<std::uint8_t>* unfit);
+
+/**
  * The release weights `values` (releaseWeightValues: one per point of
  * `grid`, the field's or the whole field's of a distributed run); null when
- * there are none, they do not fit the grid, or none is above 0 (releases
- * are then uniform: the filter warns).
+ * there are none, they do not fit the grid, none is above 0, or none is
+ * above 0 at a corner of a cell where releases may land (`unfit`, as
+ * weightsReachFitCells): releases are then uniform (the filter warns).
  */
-std::shared_ptr<const ReleaseWeights> releaseWeightsOf(
-  const GridGeometry& grid, const std::shared_ptr<const std::vector<float>>& values);
+std::shared_ptr<const ReleaseWeights> releaseWeightsOf(const GridGeometry& grid,
+  const std::shared_ptr<const std::vector<float>>& values,
+  const std::vector<std::uint8_t>* unfit = nullptr);
 
 } // namespace bp
 

@@ -32,8 +32,7 @@ std::string CpuStepper::setField(const VectorField& field)
 
 ReleaseMask CpuStepper::releaseMaskOf(const VectorField& field, float minSpeed)
 {
-  return { field.grid(), releaseUnfitCells(field, minSpeed),
-    releaseWeightsOf(field.grid(), field.firstSlice().releaseWeights) };
+  return bp::releaseMaskOf(field, minSpeed);
 }
 
 void CpuStepper::initialize(double startTime)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TraceSettings.h"
 
+#include "ElementStretch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -125,7 +127,19 @@ std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resoluti
     }
   }
   p.lattice = releaseLattice(lo, hi, p.numberOfElements, s.latticeSpacing);
+  const std::size_t asked = p.numberOfElements;
   p.numberOfElements = p.lattice.size();
+  if (s.latticeSpacing > 0.0 && p.numberOfElements >= LatticeOverrunWarning * asked)
+  {
+    // A set spacing decides the count: say so when it is far from the one asked.
+    std::ostringstream w;
+    w << "LatticeSpacing " << s.latticeSpacing << " gives a lattice of " << p.numberOfElements
+      << " points (" << p.lattice.counts[0] << " x " << p.lattice.counts[1] << " x "
+      << p.lattice.counts[2] << "), an element each: " << p.numberOfElements / asked
+      << " times Number Of Elements (" << asked
+      << "). Raise LatticeSpacing, or set it to 0 to release Number Of Elements on the lattice.";
+    r.warnings.push_back(w.str());
+  }
   return std::string();
 }
 
@@ -268,6 +282,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   }
   // A pose every TrailSpacing steps of the schedule (recordsTrailAt); the
   // schedule's start is the tracer's (Parameters::trailStart).
+  r.parameters.ftleMinimumAge = MinimumFtleSteps * r.dt;
   r.parameters.trailLength = s.trailLength;
   r.parameters.trailInterval = s.trailSpacing * r.dt;
   if (!s.seeded)

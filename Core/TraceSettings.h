@@ -25,6 +25,10 @@
 namespace bp
 {
 
+/// A set LatticeSpacing whose lattice has this many times Number Of
+/// Elements or more is warned of (it decides the count, and so the memory).
+constexpr std::size_t LatticeOverrunWarning = 100;
+
 struct TraceSettings
 {
   long long numberOfElements = 1000;

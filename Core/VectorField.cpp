@@ -565,4 +565,30 @@ double VectorField::maxSpeed() const
   return std::sqrt(m);
 }
 
+float dropFlatComponents(
+  std::vector<float>& velocity, const std::array<bool, 3>& flat, float& inPlane)
+{
+  float dropped = 0.0f;
+  inPlane = 0.0f;
+  for (std::size_t i = 0; i + 2 < velocity.size(); i += 3)
+  {
+    float kept = 0.0f;
+    for (int a = 0; a < 3; ++a)
+    {
+      float& v = velocity[i + std::size_t(a)];
+      if (flat[std::size_t(a)])
+      {
+        dropped = std::max(dropped, std::abs(v));
+        v = 0.0f;
+      }
+      else
+      {
+        kept += v * v;
+      }
+    }
+    inPlane = std::max(inPlane, std::sqrt(kept));
+  }
+  return dropped;
+}
+
 } // namespace bp

@@ -120,6 +120,16 @@ struct FieldSlice
   std::shared_ptr<const std::vector<float>> releaseWeights;
 };
 
+/**
+ * A flat field (one point along an axis) has no flow across its plane: the
+ * velocity's components along `flat` axes are dropped (made 0), so elements
+ * stay in the plane instead of leaving it unseen. Returns the largest
+ * component dropped (0 where none was), and the largest speed kept in the
+ * plane through `inPlane`. `velocity` holds 3 floats per point.
+ */
+float dropFlatComponents(
+  std::vector<float>& velocity, const std::array<bool, 3>& flat, float& inPlane);
+
 class VectorField
 {
 public:

@@ -117,6 +117,8 @@ public:
   void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
   /// Drops every pending call (a replay makes them moot).
   void clear() { this->Pending.clear(); }
+  /// Whether calls wait for the renderer.
+  bool hasPending() const { return !this->Pending.empty(); }
 
   // Running (the renderer).
   std::vector<EngineCall> take();

@@ -43,8 +43,11 @@ struct TracerConfig
   VectorsChoice vectors;      ///< the Vectors property
   /// Release Weights: the input's array to weigh releases by; empty for none.
   std::string releaseWeights;
+  /// Its association (vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS).
+  int releaseWeightsAssociation = 0;
 
   bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
+  bool wants(bp::OutputArrayId id) const { return this->wanted[std::size_t(id)]; }
 };
 
 } // namespace bpvtk

@@ -8,8 +8,11 @@
 
 #include "ElementStretch.h"
 #include "Engine.h"
+#include "TracerConfig.h"
+#include "TracerFieldProbe.h"
 
 #include "vtkCommunicator.h"
+#include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -37,15 +40,20 @@ std::vector<float> localValues(const bp::Engine& engine, std::size_t points)
   std::vector<float> values(Fields * points, 0.0f);
   const std::size_t n = engine.particlesPerElement();
   const bp::StretchFit fit(engine.shape().rest, engine.parameters().elementSize);
+  if (fit.span() == 0)
+  {
+    return values; // one particle measures no stretch: every point invalid
+  }
   for (std::size_t e = 0; e < engine.elementCount(); ++e)
   {
     const std::size_t id = engine.elementIds()[e];
     const bool hidden = engine.resetFlags()[e] & bp::ReleaseHidden;
-    if (id >= points || hidden)
+    const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
+    // Too young for an FTLE: invalid, as a point not yet released.
+    if (id >= points || hidden || !(age >= engine.parameters().ftleMinimumAge))
     {
       continue;
     }
-    const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
     const std::array<float, 3> d =
       bp::elementDeformation(fit, engine.positions().data() + 3 * e * n, age, false);
     float* v = values.data() + Fields * id;
@@ -116,6 +124,36 @@ void fillFtleMap(vtkImageData* image, const bp::Engine& engine, const std::array
   image->GetPointData()->AddArray(stretch);
   image->GetPointData()->AddArray(valid);
   image->GetPointData()->AddArray(age);
+}
+
+bool mapsLattice(const TracerConfig& config)
+{
+  return config.trace.engine.releasePattern == bp::ReleasePattern::Lattice && !config.seedSource &&
+    !config.seedType && !config.linking();
+}
+
+void announceFtleMap(vtkInformation* info, const TracerConfig& config, const FieldProbe& probe)
+{
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  double origin[3] = { 0, 0, 0 }, spacing[3] = { 1, 1, 1 };
+  const bp::Resolution resolved = mapsLattice(config) && probe.read
+    ? bp::resolveSettings(config.trace, probe.facts)
+    : bp::Resolution();
+  const bp::Parameters& p = resolved.parameters;
+  if (resolved.error.empty() && p.releasePattern == bp::ReleasePattern::Lattice)
+  {
+    // As fillFtleMap places the image (one point per lattice point).
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[2 * a + 1] = p.lattice.counts[a] - 1;
+      origin[a] = double(p.lattice.origin[a]) + probe.facts.offset[a];
+      spacing[a] = p.lattice.spacing[a] > 0.0f ? double(p.lattice.spacing[a]) : 1.0;
+    }
+  }
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  info->Set(SDDP::WHOLE_EXTENT(), extent, 6);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
 }
 
 void askAlike(vtkInformation* asked, vtkInformation* other)

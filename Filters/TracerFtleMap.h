@@ -27,6 +27,21 @@ class Engine;
 
 namespace bpvtk
 {
+struct FieldProbe;
+struct TracerConfig;
+
+/// Whether `config` releases on a lattice, so that the FTLE map is not
+/// empty (Release Pattern = Lattice, no seed points, no Linking).
+bool mapsLattice(const TracerConfig& config);
+
+/**
+ * Sets the FTLE map's whole extent, origin and spacing in `info` (its
+ * port's, in RequestInformation) to the lattice `config` releases on over
+ * the probed field, so a consumer asks for the points the map will have
+ * (Slice, Contour, a view). Empty where the release is not a lattice, or the
+ * field could not be probed or refuses the settings (the update says why).
+ */
+void announceFtleMap(vtkInformation* info, const TracerConfig& config, const FieldProbe& probe);
 
 /**
  * Fills `image` with the FTLE map of `engine`'s elements: dimensions the

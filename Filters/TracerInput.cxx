@@ -2,6 +2,7 @@
 #include "TracerInput.h"
 
 #include "DomainMask.h"
+#include "VelocityNames.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkArrayDispatch.h"
@@ -30,12 +31,33 @@ namespace
 struct CopyToFloat
 {
   template <typename ArrayT>
-  void operator()(ArrayT* array, std::vector<float>& out) const
+  void operator()(ArrayT* array, std::vector<float>& out, double scale) const
   {
     const auto values = vtk::DataArrayValueRange(array);
+    using Value = typename decltype(values)::ValueType;
     out.resize(values.size());
+    if (scale == 1.0)
+    {
+      std::transform(
+        values.begin(), values.end(), out.begin(), [](Value v) { return static_cast<float>(v); });
+      return;
+    }
     std::transform(values.begin(), values.end(), out.begin(),
-      [](typename decltype(values)::ValueType v) { return static_cast<float>(v); });
+      [scale](Value v) { return static_cast<float>(double(v) * scale); });
+  }
+};
+
+struct LargestFinite
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, double& largest) const
+  {
+    largest = 0.0;
+    for (const auto v : vtk::DataArrayValueRange(array))
+    {
+      const double x = std::abs(double(v));
+      largest = std::isfinite(x) && x > largest ? x : largest;
+    }
   }
 };
 
@@ -367,13 +389,24 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   return std::string();
 }
 
-void copyToFloats(vtkDataArray* array, std::vector<float>& out)
+void copyToFloats(vtkDataArray* array, std::vector<float>& out, double scale)
 {
   using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
-  if (!Dispatch::Execute(array, CopyToFloat{}, out))
+  if (!Dispatch::Execute(array, CopyToFloat{}, out, scale))
   {
-    CopyToFloat{}(array, out);
+    CopyToFloat{}(array, out, scale);
   }
+}
+
+double largestFinite(vtkDataArray* array)
+{
+  using Dispatch = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::AllTypes>;
+  double largest = 0.0;
+  if (!Dispatch::Execute(array, LargestFinite{}, largest))
+  {
+    LargestFinite{}(array, largest);
+  }
+  return largest;
 }
 
 vtkPolyData* templateMesh(vtkDataObject* data, std::string& error)
@@ -538,6 +571,85 @@ std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::El
   }
   const std::string error = out.validate();
   return error.empty() ? error : "The Element Template input is unusable: " + error + ".";
+}
+
+namespace
+{
+/// The first dataset of `input` (itself, or a composite's first leaf with
+/// point or cell arrays).
+vtkDataSet* firstDataSet(vtkDataObject* input)
+{
+  if (auto* set = vtkDataSet::SafeDownCast(input))
+  {
+    return set;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  if (!composite)
+  {
+    return nullptr;
+  }
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* set = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    if (set && set->GetPointData()->GetNumberOfArrays() + set->GetCellData()->GetNumberOfArrays())
+    {
+      return set;
+    }
+  }
+  return nullptr;
+}
+} // namespace
+
+std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association)
+{
+  vtkDataSet* set = firstDataSet(input);
+  if (!set || name.empty())
+  {
+    return std::string();
+  }
+  std::vector<std::string> others;
+  bool active = false;
+  for (vtkDataSetAttributes* arrays : { static_cast<vtkDataSetAttributes*>(set->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(set->GetCellData()) })
+  {
+    const int at = arrays == set->GetPointData() ? vtkDataObject::FIELD_ASSOCIATION_POINTS
+                                                 : vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    for (int i = 0; i < arrays->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* array = arrays->GetArray(i);
+      if (!array || array->GetNumberOfComponents() != 3 || !array->GetName())
+      {
+        continue;
+      }
+      if (at == association && name == array->GetName())
+      {
+        active = arrays->GetVectors() == array;
+        continue;
+      }
+      if (std::find(others.begin(), others.end(), array->GetName()) == others.end())
+      {
+        others.emplace_back(array->GetName());
+      }
+    }
+  }
+  if (others.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream note;
+  note << "Bound Particle Tracer: traces '" << name << "' ("
+       << (active                               ? "the input's active vectors"
+              : bp::velocityNameRank(name) >= 0 ? "named like a velocity"
+                                                : "as Vectors asks")
+       << "); the input's other 3-component arrays: ";
+  for (std::size_t k = 0; k < others.size(); ++k)
+  {
+    note << (k ? ", " : "") << others[k];
+  }
+  note << ". Set Vectors to trace another.\n";
+  return note.str();
 }
 
 } // namespace bpvtk

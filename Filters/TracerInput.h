@@ -41,8 +41,22 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
   bp::GridGeometry& grid, bp::FieldSlice& slice, int extent[6], std::size_t& nonFinitePoints,
   const std::string& requested = std::string(), std::string* maskProblem = nullptr);
 
-/// Every value of `array` (all components, tuple by tuple) as floats.
-void copyToFloats(vtkDataArray* array, std::vector<float>& out);
+/**
+ * What the tracer traces of `input`, for Output Messages, when it offers
+ * more than one 3-component array (point or cell; a composite's first block
+ * that has some): the array `name` (of `association`) and why (the input's
+ * active vectors, named like a velocity, or chosen in Vectors), with the
+ * others. Empty where there was no choice to make.
+ */
+std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association);
+
+/// Every value of `array` (all components, tuple by tuple) as floats, each
+/// times `scale` in double first where it is not 1.
+void copyToFloats(vtkDataArray* array, std::vector<float>& out, double scale = 1.0);
+
+/// The largest absolute finite value of `array` (any component), in double;
+/// 0 where there is none.
+double largestFinite(vtkDataArray* array);
 
 /// The element template of a polydata (TemplateSprings: `mode`).
 std::string templateFromPolyData(vtkPolyData* mesh, bp::MeshSprings mode, bp::ElementTemplate& out);

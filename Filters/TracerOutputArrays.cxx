@@ -139,8 +139,9 @@ void writeDeformation(
   for (std::size_t e = begin / n; e < end / n; ++e)
   {
     const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
-    const std::array<float, 3> d = bp::elementDeformation(
-      fit, engine.positions().data() + 3 * e * n, age, engine.resetFlags()[e] & bp::ReleaseHidden);
+    const std::array<float, 3> d =
+      bp::elementDeformation(fit, engine.positions().data() + 3 * e * n, age,
+        engine.resetFlags()[e] & bp::ReleaseHidden, engine.parameters().ftleMinimumAge);
     for (std::size_t i = e * n; i < (e + 1) * n; ++i)
     {
       if (stretch)

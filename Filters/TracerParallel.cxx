@@ -472,8 +472,8 @@ bp::ReleaseMaskFunction PieceLayout::releaseMask() const
       mine.data(), unfit->data(), vtkIdType(mine.size()), vtkCommunicator::MAX_OP);
     const bool any = std::find(unfit->begin(), unfit->end(), 1) != unfit->end();
     // Release Weights over the whole field, as the mask (TracerReleaseWeights.h).
-    const auto weights = gatherReleaseWeights(
-      this->Controller, whole, local, shift, piece.firstSlice().releaseWeights);
+    const auto weights = gatherReleaseWeights(this->Controller, whole, local, shift,
+      piece.firstSlice().releaseWeights, any ? unfit.get() : nullptr);
     return bp::ReleaseMask{ whole, any ? unfit : nullptr, weights };
   };
 }

@@ -5,11 +5,15 @@
 
 #include "TracerInput.h"
 
+#include "vtkCellData.h"
+#include "vtkCellDataToPointData.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <sstream>
@@ -17,36 +21,80 @@
 namespace bpvtk
 {
 
-std::string readReleaseWeights(vtkDataObject* input, const std::string& name,
+namespace
+{
+/// The weights `name` of `data` as a point array: the point array where the
+/// association asks for points and there is one; else the cell array of that
+/// name averaged onto the points around each cell, as ParaView's Cell Data
+/// to Point Data does (and as its panel offers a cell array for points).
+vtkSmartPointer<vtkDataArray> weightsOnPoints(
+  vtkDataSet* data, const std::string& name, int association)
+{
+  vtkDataArray* points = data->GetPointData()->GetArray(name.c_str());
+  if (association != vtkDataObject::FIELD_ASSOCIATION_CELLS && points &&
+    points->GetNumberOfTuples() == data->GetNumberOfPoints())
+  {
+    return points;
+  }
+  vtkDataArray* cells = data->GetCellData()->GetArray(name.c_str());
+  if (!cells || cells->GetNumberOfTuples() != data->GetNumberOfCells() ||
+    data->GetNumberOfCells() == 0)
+  {
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataSet> alone;
+  alone.TakeReference(data->NewInstance());
+  alone->CopyStructure(data);
+  alone->GetCellData()->AddArray(cells);
+  vtkNew<vtkCellDataToPointData> toPoints;
+  toPoints->SetInputData(alone);
+  toPoints->ProcessAllArraysOn();
+  toPoints->Update();
+  return toPoints->GetOutput()->GetPointData()->GetArray(name.c_str());
+}
+} // namespace
+
+std::string readReleaseWeights(vtkDataObject* input, const std::string& name, int association,
   vtkMultiProcessController* controller, bp::FieldSlice& slice)
 {
   vtkDataSet* data = vtkDataSet::SafeDownCast(input);
-  vtkDataArray* array = data ? data->GetPointData()->GetArray(name.c_str()) : nullptr;
-  float found[2] = { 0.0f, 0.0f }; // has the array; its largest weight
-  if (array && array->GetNumberOfTuples() == data->GetNumberOfPoints())
+  const vtkSmartPointer<vtkDataArray> array =
+    data ? weightsOnPoints(data, name, association) : nullptr;
+  // Has the array; its largest finite component (so that values beyond
+  // float's range scale into it, bp::releaseWeightScale, alike everywhere).
+  double found[2] = { array ? 1.0 : 0.0, array ? largestFinite(array) : 0.0 };
+  if (controller)
+  {
+    double all[2];
+    controller->AllReduce(found, all, 2, vtkCommunicator::MAX_OP);
+    std::copy_n(all, 2, found);
+  }
+  float top = 0.0f; // the largest weight, after scaling
+  if (array)
   {
     std::vector<float> values;
-    copyToFloats(array, values);
+    copyToFloats(array, values, bp::releaseWeightScale(found[1]));
     auto weights = std::make_shared<const std::vector<float>>(
       bp::releaseWeightValues(values, array->GetNumberOfComponents()));
-    found[0] = 1.0f;
-    found[1] = weights->empty() ? 0.0f : *std::max_element(weights->begin(), weights->end());
+    top = weights->empty() ? 0.0f : *std::max_element(weights->begin(), weights->end());
     slice.releaseWeights = weights;
   }
   if (controller)
   {
-    float all[2];
-    controller->AllReduce(found, all, 2, vtkCommunicator::MAX_OP);
-    std::copy_n(all, 2, found);
+    float all = 0.0f;
+    controller->AllReduce(&top, &all, 1, vtkCommunicator::MAX_OP);
+    top = all;
   }
   std::ostringstream say;
-  if (found[0] == 0.0f)
+  if (found[0] == 0.0)
   {
-    say << "Release Weights: the input has no point array '" << name
-        << "' (one value, or a vector whose magnitude is used, per point); releases are "
+    say << "Release Weights: the input has no "
+        << (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "point or cell")
+        << " array '" << name
+        << "' (one value, or a vector whose magnitude is used, per point or cell); releases are "
            "uniform.";
   }
-  else if (!(found[1] > 0.0f))
+  else if (!(top > 0.0f))
   {
     say << "Release Weights: the array '" << name
         << "' is 0, NaN or Inf at every point of this time step; releases are uniform.";
@@ -57,7 +105,7 @@ std::string readReleaseWeights(vtkDataObject* input, const std::string& name,
 std::shared_ptr<const bp::ReleaseWeights> gatherReleaseWeights(
   vtkMultiProcessController* controller, const bp::GridGeometry& whole,
   const bp::GridGeometry& piece, const int shift[3],
-  const std::shared_ptr<const std::vector<float>>& local)
+  const std::shared_ptr<const std::vector<float>>& local, const std::vector<std::uint8_t>* unfit)
 {
   // A feature that is off costs one small reduction per time step.
   const bool mine = local && local->size() == piece.pointCount();
@@ -84,7 +132,7 @@ std::shared_ptr<const bp::ReleaseWeights> gatherReleaseWeights(
   auto all = std::make_shared<std::vector<float>>(values.size());
   controller->AllReduce(
     values.data(), all->data(), vtkIdType(values.size()), vtkCommunicator::MAX_OP);
-  return bp::releaseWeightsOf(whole, all);
+  return bp::releaseWeightsOf(whole, all, unfit);
 }
 
 } // namespace bpvtk

@@ -27,25 +27,29 @@ namespace bpvtk
 {
 
 /**
- * Sets `slice.releaseWeights` from the point array `name` of `input` (the
- * field's image or rectilinear grid). Returns a warning when no process's
- * input has that point array, or when every weight is 0 (or not finite):
- * releases are then uniform. With a `controller` every process must call
- * it (the warning is agreed).
+ * Sets `slice.releaseWeights` from the array `name` of `input` (the field's
+ * image or rectilinear grid): its point array, or (for `association` CELLS,
+ * or where it has no such point array) its cell array averaged onto the
+ * points. Values beyond float's range are scaled by a power of two over
+ * every process (bp::releaseWeightScale). Returns a warning when no
+ * process's input has that array, or when every weight is 0 (or not
+ * finite): releases are then uniform. With a `controller` every process
+ * must call it (the warning is agreed).
  */
-std::string readReleaseWeights(vtkDataObject* input, const std::string& name,
+std::string readReleaseWeights(vtkDataObject* input, const std::string& name, int association,
   vtkMultiProcessController* controller, bp::FieldSlice& slice);
 
 /**
  * The whole field's weights on `whole` from every process's piece:
  * `local` (one per point of the piece's grid `piece`, or null) placed at
  * `shift` (the piece's first point in the whole grid). Collective; null
- * when no process has weights.
+ * when no process has weights, or they reach no cell of `whole` where
+ * releases may land (`unfit`, the whole field's, as bp::releaseWeightsOf).
  */
 std::shared_ptr<const bp::ReleaseWeights> gatherReleaseWeights(
   vtkMultiProcessController* controller, const bp::GridGeometry& whole,
   const bp::GridGeometry& piece, const int shift[3],
-  const std::shared_ptr<const std::vector<float>>& local);
+  const std::shared_ptr<const std::vector<float>>& local, const std::vector<std::uint8_t>* unfit);
 
 } // namespace bpvtk
 

@@ -4,6 +4,7 @@
 // placed at the start. See vtkBoundParticleTracerInternals.h.
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "ElementStretch.h"
 #include "ElementTemplate.h"
 #include "Memory.h"
 #include "Partition.h"
@@ -99,6 +100,12 @@ std::string vtkBoundParticleTracer::vtkInternals::gatherSeeds(const Config& conf
   if (!config.seedSource)
   {
     this->seedTypePoints(config, field, seeds);
+    const std::string unusable =
+      config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
+    if (!unusable.empty() && !this->WarnedSeeds)
+    {
+      vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
+    }
   }
   return std::string();
 }
@@ -175,6 +182,22 @@ void vtkBoundParticleTracer::vtkInternals::warnOfReleaseWindow(const bp::Paramet
   }
 }
 
+void vtkBoundParticleTracer::vtkInternals::warnOfDeformation(
+  const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p)
+{
+  const bool map = p.releasePattern == bp::ReleasePattern::Lattice;
+  const bool arrays =
+    config.wants(bp::OutputArrayId::ElementFTLE) || config.wants(bp::OutputArrayId::ElementStretch);
+  if ((map || arrays) && bp::StretchFit(shape.rest, 1.0).span() == 0)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "The element template has a single particle (Element Shape Point), which cannot stretch: "
+        << (arrays ? "ElementFTLE is 0 and ElementStretch 1 everywhere" : "")
+        << (arrays && map ? ", and " : "") << (map ? "the FTLE map marks every point invalid" : "")
+        << ". Choose a shape of several particles (Cross, Strip...) to measure stretch.");
+  }
+}
+
 std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
@@ -184,6 +207,7 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Confi
   {
     return templateError;
   }
+  this->warnOfDeformation(config, shape, p);
   p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
   if (!seeds.xyz.empty())
   {
@@ -254,6 +278,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const C
                       "cell has a corner where vtkValidPointMask is 0 or the vector is NaN or "
                       "Inf, in one of its time steps): there is nowhere to release elements.");
   }
+  this->warnOfUnreachableWeights(config, field, p);
   bp::Stepper& stepper = this->stepper();
   error = stepper.setField(field);
   if (!error.empty())
@@ -275,6 +300,34 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const C
       this->Grid.bounds(), shape.particleCount());
   }
   return Pass();
+}
+
+void vtkBoundParticleTracer::vtkInternals::warnOfUnreachableWeights(
+  const Config& config, const bp::VectorField& field, const bp::Parameters& p)
+{
+  const bool weighted = !config.releaseWeights.empty() && p.seedPoints.empty() &&
+    p.releasePattern == bp::ReleasePattern::Random && p.linking == bp::Linking::None;
+  if (!weighted || this->WarnedWeights)
+  {
+    return; // not used, or already said to be unusable
+  }
+  // Collective in a distributed run, as every process takes this path alike.
+  const auto& values = field.firstSlice().releaseWeights;
+  const bool local = values && bp::releaseWeightsOf(field.grid(), values) != nullptr;
+  const bool any =
+    this->Layout.distributed() ? this->Layout.globalMax(local ? 1.0 : 0.0) > 0.0 : local;
+  const bp::ReleaseMask mask = this->Layout.distributed()
+    ? this->Layout.releaseMask()(field, p.releaseMinSpeed)
+    : bp::releaseMaskOf(field, p.releaseMinSpeed);
+  if (any && !mask.weights)
+  {
+    this->WarnedWeights = true;
+    vtkWarningWithObjectMacro(this->Owner,
+      "Release Weights: the array '"
+        << config.releaseWeights
+        << "' is above 0 only where releases may not land (vtkValidPointMask 0, NaN or Inf "
+           "vectors, or flow slower than MinimumReleaseSpeed); releases are uniform.");
+  }
 }
 
 void vtkBoundParticleTracer::vtkInternals::startTrace()

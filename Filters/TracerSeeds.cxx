@@ -18,6 +18,9 @@
 
 namespace
 {
+/// The share of seed points in still flow that is warned of.
+constexpr double StillShareWarning = 0.1;
+
 /// How many seed points could not serve, and why: for the messages.
 struct SeedCounts
 {
@@ -113,7 +116,9 @@ void warnOfSeeds(vtkObject* owner, const bpvtk::TracerSeeds& seeds, std::size_t 
              << "when the centre leaves.");
   }
   const std::size_t kept = p.seedPoints.size() / 3;
-  if (n.still > n.noFlow)
+  // A few seeds in still flow are the flow's business; a share that changes
+  // the picture is said.
+  if (n.still > n.noFlow && double(n.still - n.noFlow) >= StillShareWarning * double(kept))
   {
     vtkWarningWithObjectMacro(
       owner, << n.still - n.noFlow << " of the " << name << "'s " << kept
@@ -201,7 +206,7 @@ void vtkBoundParticleTracer::vtkInternals::seedTypePoints(
 }
 
 std::string vtkBoundParticleTracer::vtkInternals::seedPoints(
-  const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p) const
+  const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p)
 {
   const std::size_t count = seeds.total;
   if (count > bp::MaxSeedPoints)
@@ -247,6 +252,12 @@ std::string vtkBoundParticleTracer::vtkInternals::seedPoints(
   {
     return noSeedInFlow(seeds.name, used, n);
   }
-  warnOfSeeds(this->Owner, seeds, used, n, p);
+  if (!this->WarnedSeeds)
+  {
+    // Once per configuration: a replay (going back in time, another
+    // display's update) would say it again.
+    this->WarnedSeeds = true;
+    warnOfSeeds(this->Owner, seeds, used, n, p);
+  }
   return std::string();
 }

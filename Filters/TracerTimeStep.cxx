@@ -14,6 +14,7 @@
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 
 #include <algorithm>
@@ -37,6 +38,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     return std::string();
   }
   vtkDataObject* input = step.data;
+  this->noteVectors(config, input);
   vtkDataArray* vectors = step.vectors;
   int association = step.association;
   std::string requested = config.vectors.name;
@@ -79,6 +81,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   {
     return error;
   }
+  this->keepInPlane(grid, slice);
   if (!config.releaseWeights.empty())
   {
     this->takeReleaseWeights(config, input, slice);
@@ -90,12 +93,86 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
 }
 
+void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtkDataObject* input)
+{
+  // Said once for each choice among an input's arrays, by one process.
+  const std::string note =
+    bpvtk::describeVectorsChoice(input, config.vectors.name, config.vectors.association);
+  if (note != this->SaidVectors && (!this->Layout.distributed() || this->Layout.Piece == 0))
+  {
+    if (!note.empty())
+    {
+      vtkOutputWindowDisplayText(note.c_str());
+    }
+  }
+  this->SaidVectors = note;
+}
+
+void vtkBoundParticleTracer::vtkInternals::keepInPlane(
+  const bp::GridGeometry& grid, bp::FieldSlice& slice)
+{
+  // The whole field's flat axes (a process's block of an image may be thin).
+  std::array<bool, 3> flat;
+  bool any = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int points = this->Layout.distributed()
+      ? this->Layout.WholeExtent[2 * a + 1] - this->Layout.WholeExtent[2 * a] + 1
+      : grid.dims[a];
+    flat[a] = points == 1;
+    any = any || flat[a];
+  }
+  if (!any || !slice.velocity)
+  {
+    return;
+  }
+  // Copied only where a component crosses the plane.
+  const std::vector<float>& given = *slice.velocity;
+  bool crosses = false;
+  for (std::size_t i = 0; i + 2 < given.size() && !crosses; i += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      crosses = crosses || (flat[a] && given[i + std::size_t(a)] != 0.0f);
+    }
+  }
+  double dropped = 0.0;
+  float inPlane = 0.0f;
+  if (crosses)
+  {
+    auto velocity = std::make_shared<std::vector<float>>(given);
+    dropped = bp::dropFlatComponents(*velocity, flat, inPlane);
+    slice.velocity = velocity;
+  }
+  if (this->Layout.distributed())
+  {
+    // Collective: every process reads in this pass.
+    dropped = this->Layout.globalMax(dropped);
+    inPlane = float(this->Layout.globalMax(inPlane));
+  }
+  if (dropped > 0.0 && !this->WarnedOutOfPlane)
+  {
+    this->WarnedOutOfPlane = true; // once per configuration, as the mask's
+    std::string axes;
+    for (int a = 0; a < 3; ++a)
+    {
+      axes += flat[a] ? std::string(axes.empty() ? "" : " and ") + "XYZ"[a] : "";
+    }
+    vtkWarningWithObjectMacro(this->Owner,
+      "The field is flat along " << axes << " (one point) but its vectors cross its plane (up to "
+                                 << dropped << ", against a top speed in the plane of " << inPlane
+                                 << "): elements stay in the plane, the crossing component is "
+                                    "not traced.");
+  }
+}
+
 void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
   const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
 {
   // Collective in a distributed run, as every process reads in this pass.
-  const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights,
-    this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
+  const std::string warning =
+    bpvtk::readReleaseWeights(input, config.releaseWeights, config.releaseWeightsAssociation,
+      this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
   if (!warning.empty() && !this->WarnedWeights)
   {
     this->WarnedWeights = true; // once per configuration, as the mask's

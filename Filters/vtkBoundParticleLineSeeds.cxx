@@ -14,12 +14,19 @@ void vtkBoundParticleLineSeeds::AppendPoints(
   xyz.reserve(xyz.size() + 3 * std::size_t(std::max<vtkIdType>(count, 0)));
   for (vtkIdType i = 0; i < count; ++i)
   {
-    const double t = double(i) / double(this->Resolution);
+    const double t = double(i) / double(this->Segments());
     for (int a = 0; a < 3; ++a)
     {
       xyz.push_back(this->Point1[a] + t * (this->Point2[a] - this->Point1[a]));
     }
   }
+}
+
+std::string vtkBoundParticleLineSeeds::DescribeUnusableParameters()
+{
+  return this->Resolution >= 1 ? std::string()
+                               : "The Line's Resolution " + std::to_string(this->Resolution) +
+      " is below 1: it has 1 segment (its two ends). Raise the Resolution.";
 }
 
 void vtkBoundParticleLineSeeds::PrintSelf(ostream& os, vtkIndent indent)

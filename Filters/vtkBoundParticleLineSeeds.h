@@ -29,17 +29,19 @@ public:
   ///@}
 
   ///@{
-  /// Segments along the line (default 1000, at least 1): Resolution + 1 points.
-  vtkSetClampMacro(Resolution, int, 1, VTK_INT_MAX - 1);
+  /// Segments along the line (default 1000): Resolution + 1 points; below
+  /// 1, one segment (its two ends), said by DescribeUnusableParameters.
+  vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
   ///@}
 
   const char* GetSeedTypeName() override { return "Line"; }
   const char* GetPointCountName() override { return "Resolution"; }
-  vtkIdType GetNumberOfSeedPoints() override { return vtkIdType(this->Resolution) + 1; }
+  vtkIdType GetNumberOfSeedPoints() override { return vtkIdType(this->Segments()) + 1; }
 #ifndef __VTK_WRAP__
   void AppendPoints(
     std::uint32_t seed, const bool flat[3], vtkIdType maxPoints, std::vector<double>& xyz) override;
+  std::string DescribeUnusableParameters() override;
 #endif
 
 protected:
@@ -51,6 +53,12 @@ protected:
   int Resolution = 1000;
 
 private:
+  /// The segments used: Resolution, at least 1.
+  int Segments() const
+  {
+    return this->Resolution < 1 ? 1 : this->Resolution;
+  }
+
   vtkBoundParticleLineSeeds(const vtkBoundParticleLineSeeds&) = delete;
   void operator=(const vtkBoundParticleLineSeeds&) = delete;
 };

@@ -6,6 +6,8 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkBoundParticlePointCloudSeeds);
 
@@ -23,7 +25,8 @@ constexpr int Candidates = 64;
 void vtkBoundParticlePointCloudSeeds::AppendPoints(
   std::uint32_t seed, const bool flat[3], vtkIdType maxPoints, std::vector<double>& xyz)
 {
-  const vtkIdType count = std::min<vtkIdType>(this->NumberOfPoints, maxPoints);
+  const vtkIdType count = std::min<vtkIdType>(this->GetNumberOfSeedPoints(), maxPoints);
+  const double radius = this->Radius > 0.0 && std::isfinite(this->Radius) ? this->Radius : 0.0;
   xyz.reserve(xyz.size() + 3 * std::size_t(std::max<vtkIdType>(count, 0)));
   for (vtkIdType i = 0; i < count; ++i)
   {
@@ -51,9 +54,25 @@ void vtkBoundParticlePointCloudSeeds::AppendPoints(
     }
     for (int a = 0; a < 3; ++a)
     {
-      xyz.push_back(this->Center[a] + this->Radius * offset[a]);
+      xyz.push_back(this->Center[a] + radius * offset[a]);
     }
   }
+}
+
+std::string vtkBoundParticlePointCloudSeeds::DescribeUnusableParameters()
+{
+  std::ostringstream say;
+  if (!(this->Radius > 0.0) || !std::isfinite(this->Radius))
+  {
+    say << "The Point Cloud's Radius " << this->Radius
+        << " is not a positive number: every seed point is its Center. Give a positive Radius.";
+  }
+  if (this->NumberOfPoints < 1)
+  {
+    say << (say.tellp() > 0 ? " " : "") << "The Point Cloud's Number Of Points "
+        << this->NumberOfPoints << " is below 1: it has 1 point.";
+  }
+  return say.str();
 }
 
 void vtkBoundParticlePointCloudSeeds::PrintSelf(ostream& os, vtkIndent indent)

@@ -17,6 +17,8 @@
 #include "BoundParticlesFiltersModule.h" // for export macro
 #include "vtkBoundParticleSeedType.h"
 
+#include <algorithm> // for std::max
+
 class BOUNDPARTICLESFILTERS_EXPORT vtkBoundParticlePointCloudSeeds : public vtkBoundParticleSeedType
 {
 public:
@@ -28,22 +30,26 @@ public:
   /// The sphere's centre (default the origin) and radius (default 1).
   vtkSetVector3Macro(Center, double);
   vtkGetVector3Macro(Center, double);
-  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  /// (one not above 0, or not finite, puts every point on the centre, said
+  /// by DescribeUnusableParameters).
+  vtkSetMacro(Radius, double);
   vtkGetMacro(Radius, double);
   ///@}
 
   ///@{
-  /// How many points (default 1000, at least 1).
-  vtkSetClampMacro(NumberOfPoints, int, 1, VTK_INT_MAX);
+  /// How many points (default 1000; below 1, one, said by
+  /// DescribeUnusableParameters).
+  vtkSetMacro(NumberOfPoints, int);
   vtkGetMacro(NumberOfPoints, int);
   ///@}
 
   const char* GetSeedTypeName() override { return "Point Cloud"; }
   const char* GetPointCountName() override { return "Number Of Points"; }
-  vtkIdType GetNumberOfSeedPoints() override { return this->NumberOfPoints; }
+  vtkIdType GetNumberOfSeedPoints() override { return std::max(this->NumberOfPoints, 1); }
 #ifndef __VTK_WRAP__
   void AppendPoints(
     std::uint32_t seed, const bool flat[3], vtkIdType maxPoints, std::vector<double>& xyz) override;
+  std::string DescribeUnusableParameters() override;
 #endif
 
 protected:

@@ -21,6 +21,7 @@
 #include "vtkObject.h"
 
 #include <cstdint> // for std::uint32_t
+#include <string>  // for std::string
 #include <vector>  // for std::vector
 
 class BOUNDPARTICLESFILTERS_EXPORT vtkBoundParticleSeedType : public vtkObject
@@ -50,6 +51,17 @@ public:
    */
   virtual void AppendPoints(
     std::uint32_t seed, const bool flat[3], vtkIdType maxPoints, std::vector<double>& xyz) = 0;
+
+  /**
+   * What of the parameters cannot be used as set (a radius below 0, a count
+   * below 1: a script's or a state file's typo), and what is used instead,
+   * for the tracer's warning; empty where all is well. The setters take any
+   * value, so the message names the value given.
+   */
+  virtual std::string DescribeUnusableParameters()
+  {
+    return std::string();
+  }
 #endif
 
 protected:

@@ -4,8 +4,8 @@
 #include "ElementTemplate.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
+#include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
-#include "TracerTimeScale.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
@@ -184,6 +184,10 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
       (row.id != bp::OutputArrayId::Vorticity || this->ComputeVorticity);
   }
+  // Trails fade by their poses' Age (the Bound Particles display's fade of
+  // the CPU output): it comes with them whatever Output Arrays holds.
+  c.wanted[std::size_t(bp::OutputArrayId::Age)] =
+    c.wanted[std::size_t(bp::OutputArrayId::Age)] || this->Trails;
   c.seedType = this->SeedType;
   c.templateInput = this->GetNumberOfInputConnections(1) > 0;
   c.seedSource = this->GetNumberOfInputConnections(2) > 0;
@@ -201,6 +205,9 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     ? weights->Get(vtkDataObject::FIELD_NAME())
     : nullptr;
   c.releaseWeights = weightsName && std::string(weightsName) != "None" ? weightsName : "";
+  c.releaseWeightsAssociation = weights && weights->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? weights->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   c.trace.weighted = !c.releaseWeights.empty();
   return c;
 }
@@ -292,32 +299,68 @@ int vtkBoundParticleTracer::RequestInformation(
     const double* steps = inInfo->Get(SDDP::TIME_STEPS());
     inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
   }
-  const bp::TimeLine line = this->ResolveTimeLine(inInfo, inputTimes);
+  // The field is probed once here where the time line is automatic or the
+  // FTLE map's extent (a lattice release's) depends on it.
+  const bpvtk::TracerConfig config = this->Config();
+  const bool automatic = this->AutomaticTimeLine(inputTimes);
+  const bpvtk::FieldProbe probe =
+    (automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT())
+    ? this->ProbeField(inInfo, inputTimes)
+    : bpvtk::FieldProbe();
+  const bp::TimeLine line =
+    this->ResolveTimeLine(inputTimes, automatic ? probe.scale : bp::TimeScale());
+  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
   const std::string error =
     I.Plan.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
-    outInfo->Remove(SDDP::TIME_STEPS());
-    outInfo->Remove(SDDP::TIME_RANGE());
+    for (vtkInformation* info : { outInfo, mapInfo })
+    {
+      info->Remove(SDDP::TIME_STEPS());
+      info->Remove(SDDP::TIME_RANGE());
+    }
+    bpvtk::announceFtleMap(mapInfo, config, bpvtk::FieldProbe());
     return 1;
   }
   const std::vector<double>& times = I.Plan.outputTimes();
   outInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
   const double range[2] = { times.front(), times.back() };
   outInfo->Set(SDDP::TIME_RANGE(), range, 2);
-  // The FTLE map shares the time line; its extent is known only once a
-  // trace has its lattice, so it claims none (the input's, copied by the
-  // executive, would be asked for and never produced).
-  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
+  // The FTLE map shares the time line; its extent is the lattice's, known
+  // from the settings and the field (empty for other releases).
   mapInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
   mapInfo->Set(SDDP::TIME_RANGE(), range, 2);
-  mapInfo->Remove(SDDP::WHOLE_EXTENT());
+  bpvtk::announceFtleMap(mapInfo, config, probe);
   return 1;
 }
 
-bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
+bool vtkBoundParticleTracer::AutomaticTimeLine(const std::vector<double>& inputTimes) const
+{
+  return inputTimes.size() >= 2
+    ? this->FramesPerInputStep <= 0 || this->FramesPerInputStep > bp::MaxFramesPerInterval
+    : this->Duration <= 0.0;
+}
+
+bpvtk::FieldProbe vtkBoundParticleTracer::ProbeField(
   vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  return bpvtk::probeField(this->GetInputConnection(0, 0), inInfo, inputTimes,
+    [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
+    {
+      if (bpvtk::FieldResampler::needed(data))
+      {
+        return this->Internals->probeGrid(this->Config(), data, grid);
+      }
+      grid = data;
+      // Only a dataset has arrays to choose from (readSlice says what else came).
+      return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
+                                            : nullptr;
+    });
+}
+
+bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
+  const std::vector<double>& inputTimes, const bp::TimeScale& scale)
 {
   const bool unsteady = inputTimes.size() >= 2;
   const bool framesOutOfRange =
@@ -328,24 +371,6 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
       << bp::MaxFramesPerInterval << " (it is " << this->FramesPerInputStep
       << "); using automatic frames.");
   }
-  const bool automatic =
-    unsteady ? this->FramesPerInputStep <= 0 || framesOutOfRange : this->Duration <= 0.0;
-  // Only an automatic time line needs the field's scale: no data is read for
-  // a time line the user set.
-  const bp::TimeScale scale = automatic && inInfo->Has(vtkDataObject::DATA_OBJECT())
-    ? bpvtk::probeTimeScale(this->GetInputConnection(0, 0), inInfo, inputTimes,
-        [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
-        {
-          if (bpvtk::FieldResampler::needed(data))
-          {
-            return this->Internals->probeGrid(this->Config(), data, grid);
-          }
-          grid = data;
-          // Only a dataset has arrays to choose from (readSlice says what else came).
-          return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
-                                                : nullptr;
-        })
-    : bp::TimeScale();
   const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
     framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
     this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);

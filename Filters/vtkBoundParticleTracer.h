@@ -54,9 +54,11 @@ namespace bp
 {
 struct TraceSettings;
 struct TimeLine;
+struct TimeScale;
 }
 namespace bpvtk
 {
+struct FieldProbe;
 struct TracerConfig;
 struct TracerInputStep;
 struct TracerPass;
@@ -529,9 +531,14 @@ protected:
   /// What this pass brought on input 0: the data, and the Vectors array
   /// when it is a dataset traced as it is.
   bpvtk::TracerInputStep InputStep(vtkInformationVector** inputVector);
+  /// Whether the time line is automatic (Duration, or FramesPerInputStep
+  /// for an input with time steps), so it needs the field's scale.
+  bool AutomaticTimeLine(const std::vector<double>& inputTimes) const;
+  /// The field's facts, read once upstream (TracerFieldProbe.h; collective).
+  bpvtk::FieldProbe ProbeField(vtkInformation* inInfo, const std::vector<double>& inputTimes);
   /// The time line to offer: Duration or FramesPerInputStep, automatic ones
-  /// from the field's scale (probed upstream); warns of mismatched units.
-  bp::TimeLine ResolveTimeLine(vtkInformation* inInfo, const std::vector<double>& inputTimes);
+  /// from the field's `scale` (probed upstream); warns of mismatched units.
+  bp::TimeLine ResolveTimeLine(const std::vector<double>& inputTimes, const bp::TimeScale& scale);
 #endif
 
   int ResampleDimensions[3] = { 0, 0, 0 };

@@ -59,6 +59,8 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->WarnedMask = false;
   this->WarnedResample.clear();
   this->WarnedWeights = false;
+  this->WarnedSeeds = false;
+  this->WarnedOutOfPlane = false;
   this->Steppers.invalidate();
 }
 

@@ -119,6 +119,8 @@ struct vtkBoundParticleTracer::vtkInternals
   std::string
     WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
   bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
+  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
+  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
@@ -238,6 +240,13 @@ private:
   /// Release Weights for `slice` from `input` (TracerReleaseWeights.h), and
   /// their warning once per configuration.
   void takeReleaseWeights(const Config& config, vtkDataObject* input, bp::FieldSlice& slice);
+  /// Says which of the input's 3-component arrays is traced and why
+  /// (bpvtk::describeVectorsChoice), once for each new choice.
+  void noteVectors(const Config& config, vtkDataObject* input);
+  std::string SaidVectors; ///< the last note said (or found empty)
+  /// On a flat field, drops the velocity's components across its plane
+  /// (bp::dropFlatComponents), and says so once per configuration.
+  void keepInPlane(const bp::GridGeometry& grid, bp::FieldSlice& slice);
   /// The mask's and the NaNs' warnings, once per configuration.
   void warnOfSlice(const std::string& maskProblem, std::size_t nonFinite, std::size_t points);
   /// The time this pass's slice stands for; warns when upstream delivered another.
@@ -265,6 +274,13 @@ private:
   std::string checkConfiguration(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bpvtk::TracerSeeds& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);
+  /// Warns when stretch is asked of a template that cannot stretch (one particle).
+  void warnOfDeformation(
+    const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// Warns when Release Weights are above 0 only where releases may not
+  /// land (the engines then release uniformly, bp::releaseWeightsOf).
+  void warnOfUnreachableWeights(
+    const Config& config, const bp::VectorField& field, const bp::Parameters& p);
   /// Warns when the Release Window releases nothing in the offered times.
   void warnOfReleaseWindow(const bp::Parameters& p);
   /// The element template: the built-in shape or the template input.
@@ -285,7 +301,7 @@ private:
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
   std::string seedPoints(
-    const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p) const;
+    const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p);
 
   // The output (vtkBoundParticleTracerInternals.cxx).
   /// In parallel: the balance, the migrations and exchange errors of the steps.

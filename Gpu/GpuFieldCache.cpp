@@ -181,11 +181,12 @@ void GpuFieldCache::applyReleaseMaskTo(GpuPass& pass, float minSpeed)
   const VectorField* field = this->Field.get();
   if (field && this->ReleaseFrom.changes(*field, minSpeed))
   {
-    const auto unfit = releaseUnfitCells(*field, minSpeed);
+    this->ReleaseUnfit = releaseUnfitCells(*field, minSpeed);
     const auto& dims = field->grid().dims;
-    this->ReleaseTexture = unfit
-      ? makeByteTexture3D(dims[0], dims[1], std::max(dims[2], 1), unfit->data())
+    this->ReleaseTexture = this->ReleaseUnfit
+      ? makeByteTexture3D(dims[0], dims[1], std::max(dims[2], 1), this->ReleaseUnfit->data())
       : GlTexture();
+    this->WeightsFrom = nullptr; // the weights' reach depends on the mask
   }
   const bool masked = field && this->ReleaseTexture;
   pass.setInt("bpReleaseMasked", masked ? 1 : 0);
@@ -202,7 +203,8 @@ void GpuFieldCache::applyReleaseWeightsTo(GpuPass& pass)
   {
     // Made once per time step's weights (ReleaseWeights.h).
     this->WeightsFrom = values;
-    const auto weights = field ? releaseWeightsOf(field->grid(), values) : nullptr;
+    const auto weights =
+      field ? releaseWeightsOf(field->grid(), values, this->ReleaseUnfit.get()) : nullptr;
     const auto& dims = field ? field->grid().dims : std::array<int, 3>{ 0, 0, 0 };
     this->WeightsTexture = weights
       ? makeFloatTexture3D(dims[0], dims[1], std::max(dims[2], 1), weights->triples().data())

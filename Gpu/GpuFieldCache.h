@@ -103,6 +103,8 @@ private:
 
   GlTexture NoOutsideTexture; ///< one cell, inside
   GlTexture ReleaseTexture;   ///< the release mask, or none
+  /// The mask's cells (releaseUnfitCells), for the weights' reach.
+  std::shared_ptr<const std::vector<std::uint8_t>> ReleaseUnfit;
   ReleaseMaskSource ReleaseFrom;
   GlTexture WeightsTexture;                              ///< (|w|, 0, 0) per grid point, or none
   GlTexture NoWeightsTexture;                            ///< one point of weight 0

@@ -19,6 +19,7 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const ParticleLayout wanted = ParticleLayout::of(p.numberOfElements, n);
   this->layout = GpuLayout(wanted, p.numberOfElements, n);
   this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->LongAxis = longAxis(this->shape);
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   if (!error.empty())
   {
@@ -148,6 +149,7 @@ void GpuSystem::reset(bool initialize, bool releasing, double t)
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setInt("bpReleasing", releasing ? 1 : 0);
   pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
+  pass.setVec3("bpLongAxis", this->LongAxis.data());
   pass.setInt("bpPlaneAxis", this->parameters.planeAxis);
   // Along Flow samples the flow at the release centre at t (Engine::alignToFlow).
   const VectorField* field = this->fieldCache.field();

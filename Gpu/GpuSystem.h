@@ -84,6 +84,7 @@ private:
 
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
+  std::array<float, 3> LongAxis = { 1, 0, 0 }; ///< longAxis() of the template
   /// parameters.seedPoints, 256 texels a row (one texel when there are none).
   GlTexture SeedPoints;
 };

@@ -41,6 +41,7 @@ void DeformationTable::set(const bp::ElementTemplate& shape, const bp::Parameter
   this->Seed = p.seed;
   this->LifetimeMin = p.lifetimeMin;
   this->LifetimeMax = p.lifetimeMax;
+  this->FtleMinimumAge = float(p.ftleMinimumAge);
   this->Linked =
     !bp::makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax)
        .empty();
@@ -91,6 +92,7 @@ void DeformationTable::setUniforms(vtkShaderProgram* program) const
   program->SetUniformMatrix3x3("bpStretchInverse", m);
   program->SetUniformf("bpLifetimeMin", this->LifetimeMin);
   program->SetUniformf("bpLifetimeMax", this->LifetimeMax);
+  program->SetUniformf("bpFtleMinimumAge", this->FtleMinimumAge);
   program->SetUniformi("bpLinked", this->Linked ? 1 : 0);
   program->SetUniformi("bpLattice", this->Lattice ? 1 : 0);
   // VTK sets no unsigned uniforms; the program is bound.

@@ -69,6 +69,7 @@ private:
   std::uint32_t Seed = 0;
   float LifetimeMin = 0.0f;
   float LifetimeMax = 0.0f;
+  float FtleMinimumAge = 0.0f; ///< bp::Parameters::ftleMinimumAge
   bool Linked = false;
   bool Lattice = false;
   vtkNew<vtkTextureObject> Texture;

@@ -360,6 +360,16 @@ int vtkBoundParticleRepresentation::RequestData(
     {
       I.RequestHeld = true;
     }
+    // The render runs the recorded work and reports its progress from 0 to
+    // 1: this update's own end (the executive's 1 after RequestData) would
+    // make an observer see 0, 1, then the run's 0.03 ... 1. It reports 0 instead.
+    const bool runFollows = I.Gpu && I.Queue->hasPending() &&
+      vtkOpenGLBoundParticleMapper::ReportsReplayProgress();
+    this->SetProgressShiftScale(0.0, runFollows ? 0.0 : 1.0);
+    if (runFollows)
+    {
+      I.GpuMapper->OweProgressEnd();
+    }
     else
     {
       inInfo->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);

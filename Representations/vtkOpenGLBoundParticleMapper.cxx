@@ -66,9 +66,9 @@ namespace
 // (python.GUI hung in Render), so the GPU replay reports no progress on 6.1
 // and later. An abort request is still honoured between steps.
 #if PARAVIEW_VERSION_NUMBER >= PARAVIEW_VERSION_CHECK(6, 1, 0)
-constexpr bool ReportsReplayProgress = false;
+constexpr bool GpuRunReportsProgress = false;
 #else
-constexpr bool ReportsReplayProgress = true;
+constexpr bool GpuRunReportsProgress = true;
 #endif
 
 /// What a frame spends on uploading the next field time step: a 128^3
@@ -265,7 +265,7 @@ bp::ReplayProgress::Hooks replayHooks(
   // Finished before an abort is asked too, so a stop comes when the work does.
   hooks.settle = [] { glFinish(); };
   hooks.stop = std::move(stop);
-  if (ReportsReplayProgress)
+  if (GpuRunReportsProgress)
   {
     hooks.report = [owner](double share)
     {
@@ -278,6 +278,11 @@ bp::ReplayProgress::Hooks replayHooks(
   return hooks;
 }
 } // namespace
+
+bool vtkOpenGLBoundParticleMapper::ReportsReplayProgress()
+{
+  return GpuRunReportsProgress;
+}
 
 void vtkOpenGLBoundParticleMapper::RunCalls(
   const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window)
@@ -298,7 +303,7 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   bpvtk::QueueReplay::Running running(I.Replay);
   I.Replay.run(calls, progress, listener);
   progress.finish();
-  if (ReportsReplayProgress && progress.reports() > 0)
+  if (GpuRunReportsProgress && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
   }
@@ -370,9 +375,21 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   I.Queue->maxTextureSize = I.SizeLimit > 0 ? std::min<int>(maxSize, I.SizeLimit) : maxSize;
 
   std::vector<bp::EngineCall> calls = I.Queue->take();
+  vtkAlgorithm* owner = this->GetContainerAlgorithm();
+  const bool owed = this->ProgressOwed && owner;
+  this->ProgressOwed = false;
+  if (owed)
+  {
+    owner->SetProgressShiftScale(0.0, 1.0); // the run's share of the progress
+  }
+  const double reportedBefore = owner ? owner->GetProgress() : 0.0;
   if (!calls.empty())
   {
     this->RunCalls(calls, window);
+  }
+  if (owed && owner->GetProgress() == reportedBefore && !owner->GetAbortExecute())
+  {
+    owner->UpdateProgress(1.0); // a run too short to report: the update's end
   }
   if (!I.Replay.ready())
   {

@@ -126,6 +126,21 @@ public:
    */
   void SetExpectedTrailSpan(double span);
 
+  /**
+   * Whether this ParaView lets the GPU run report its progress (not 6.1 and
+   * later, whose GUI processes events on a report).
+   */
+  static bool ReportsReplayProgress();
+
+  /**
+   * The display's update reported progress 0 but not its end (its progress
+   * shifted and scaled to 0, SetProgressShiftScale): the next render's run
+   * reports the rest from 0 to 1, so the progress an observer of the display
+   * sees rises once over update and run. The render puts the shift and
+   * scale back, and reports 1 at the end of a run too short to report.
+   */
+  void OweProgressEnd() { this->ProgressOwed = true; }
+
   /// Runs the queued engine work (reporting progress where ParaView allows,
   /// and taking an abort request, while a long one runs), then draws.
   void Render(vtkRenderer* ren, vtkActor* act) override;
@@ -137,6 +152,8 @@ public:
 protected:
   vtkOpenGLBoundParticleMapper();
   ~vtkOpenGLBoundParticleMapper() override;
+
+  bool ProgressOwed = false; ///< OweProgressEnd(): the render's run ends the progress
 
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;

@@ -41,6 +41,7 @@ uniform int bpStretchRestWidth;
 uniform mat3 bpStretchInverse;   // Aqq^+ over the template's span (symmetric)
 uniform int bpStretchSpan;       // directions the template spans, 0 to 3
 uniform int bpStretchParticles;  // particles per element
+uniform float bpFtleMinimumAge;  // bp::Parameters::ftleMinimumAge: younger, no FTLE
 out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
 vec4 bpVertexMC;
 vec3 bpNormalMC;
@@ -119,13 +120,14 @@ vec2 bpStretchOf(int e)
 
 // ln(largest stretch) / age (bp::elementFtle), the age being the lifetime
 // the element was drawn less the one it has left; 0 where the age is not
-// positive or anything is not finite.
+// positive or below bpFtleMinimumAge, or anything is not finite.
 float bpFtleOf(int e)
 {
   vec4 element = texelFetch(bpElements, bpElementTexel(e), 0);
   float age = bpLifetimeOf(e, element.y) - element.x;
   float largest = bpStretchOf(e).x;
-  if (!(age > 0.0) || isinf(age) || !(largest > 0.0) || isinf(largest))
+  if (!(age > 0.0) || !(age >= bpFtleMinimumAge) || isinf(age) || !(largest > 0.0) ||
+    isinf(largest))
     return 0.0;
   float ftle = log(largest) / age;
   return isnan(ftle) || isinf(ftle) ? 0.0 : ftle;

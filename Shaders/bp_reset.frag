@@ -13,11 +13,13 @@ uniform sampler2D bpPoses;
 uniform bool bpInitialize; // place every element as generation 0
 uniform bool bpReleasing;  // the step overlaps the release window (releasesAt)
 uniform vec4 bpFrameQuaternion;
+uniform vec3 bpLongAxis;       // the template's long axis (longAxis in ElementTemplate.h)
 uniform int bpPlaneAxis;       // Parameters::planeAxis
 uniform bool bpAlongFlow;      // Orientation::AlongFlow, with a field to sample
 uniform float bpReleaseWeight; // the second slice's weight at the step's start
 
-// The frame's x axis turned onto the flow v (alongFlowQuaternion).
+// The template's long axis, as the frame leaves it, turned onto the flow v
+// (alongFlowQuaternion).
 vec4 bpAlongFlowQuaternion(vec3 v)
 {
   vec3 d = v;
@@ -33,7 +35,10 @@ vec4 bpAlongFlowQuaternion(vec3 v)
   d = vec3(d.x / m, d.y / m, d.z / m);
   float inverse = 1.0 / sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   d = vec3(d.x * inverse, d.y * inverse, d.z * inverse);
-  vec3 a = vec3(bpFrameRow0.x, bpFrameRow1.x, bpFrameRow2.x);
+  vec3 a;
+  a.x = bpFrameRow0.x * bpLongAxis.x + bpFrameRow0.y * bpLongAxis.y + bpFrameRow0.z * bpLongAxis.z;
+  a.y = bpFrameRow1.x * bpLongAxis.x + bpFrameRow1.y * bpLongAxis.y + bpFrameRow1.z * bpLongAxis.z;
+  a.z = bpFrameRow2.x * bpLongAxis.x + bpFrameRow2.y * bpLongAxis.y + bpFrameRow2.z * bpLongAxis.z;
   float c = a.x * d.x + a.y * d.y + a.z * d.z;
   vec4 r;
   if (1.0 + c < 1e-6)
@@ -75,8 +80,10 @@ void main()
     float generation = bpInitialize ? 0.0 : state.y + 1.0;
     outState = vec4(bpLifetimeOf(e, generation), generation, 1.0, 0.0);
     outCenter = vec4(bpCenterOf(e, generation), bpReleasing ? 0.0 : 1.0);
-    // A lattice point that does not fit is never shown (Engine::place).
-    outCenter.w = bpLattice && bpSeedCount == 0 && !bpSeedFits(outCenter.xyz) ? 1.0 : outCenter.w;
+    // A lattice point, or a weighted release none of whose candidates fits,
+    // is not shown (Engine::place): due again at the next step.
+    bool placedByBox = bpSeedCount == 0 && !bpLinked && (bpLattice || bpWeighted);
+    outCenter.w = placedByBox && !bpSeedFits(outCenter.xyz) ? 1.0 : outCenter.w;
     outOrientation = bpFrameQuaternion;
     if (bpOrientation == 1 && bpPlaneAxis >= 0)
     {

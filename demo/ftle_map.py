@@ -41,16 +41,11 @@ def lattice_points(counts=COUNTS, box=(0.0, 2.0, 0.0, 1.0)):
     return np.column_stack([X.ravel(), Y.ravel()])
 
 
-def has_lattice(tracer):
-    """Whether this build's tracer has Release Pattern (the Lattice release)."""
-    return "ReleasePattern" in tracer.ListProperties()
-
-
-def gyre_scene(engine="CPU", counts=COUNTS, lattice=None):
+def gyre_scene(engine="CPU", counts=COUNTS, lattice=True):
     """The double gyre (one z layer's thickness) and a tracer of spring-free
-    crosses on the lattice: Release Pattern = Lattice where the tracer has
-    it (`lattice` None: if it has), else seed points at the lattice's points,
-    which place element e at point e alike."""
+    crosses on the lattice: Release Pattern = Lattice, or (`lattice` False)
+    seed points at the lattice's points, which place element e at point e
+    alike."""
     flow = AnalyticFlow(Flow="Double Gyre", Resolution=[129, 65, 2],
                         Bounds=[0.0, 2.0, 0.0, 1.0, -0.01, 0.01],
                         NumberOfTimeSteps=int(round(T / 0.5)) + 1)
@@ -64,8 +59,6 @@ def gyre_scene(engine="CPU", counts=COUNTS, lattice=None):
                                  LifetimeRange=[2 * T, 2 * T], MinimumReleaseSpeed=0.0,
                                  Engine=engine)
     tracer.OutputArrays = ["ElementFTLE", "ElementStretch", "ElementId", "ParticleIndex"]
-    if lattice is None:
-        lattice = has_lattice(tracer)
     if lattice:
         tracer.ReleasePattern = "Lattice"
         tracer.EmitterCenter = [1.0, 0.5, 0.0]
@@ -198,7 +191,7 @@ def both_maps(flow, tracer, counts=COUNTS):
     tracer.UpdatePipeline(T)
     times = np.arange(0.0, T + 0.25, 0.5)
     field = sampled_field(flow, times)
-    if has_lattice(tracer) and tracer.ReleasePattern == "Lattice":
+    if tracer.ReleasePattern == "Lattice":
         _, points, elements, valid = ftle_image(tracer)
     else:
         points = lattice_points(counts)
@@ -232,12 +225,14 @@ def main():
     lut = GetColorTransferFunction("FTLE")
     apply_preset(lut, "Inferno (matplotlib)")
     lut.RescaleTransferFunction(0.0, float(np.percentile(reference, 99.5)))
+    # The tracer's map as it is (FTLE 0 where a point is not valid), and
+    # numpy's beside it.
     first = points[0]
-    for values, shift in ((np.where(valid, elements, 0.0), 0.0), (reference, 2.15)):
-        producer = TrivialProducer()
-        producer.GetClientSideObject().SetOutput(
-            image_of(values, COUNTS, (first[0] + shift, first[1])))
-        display = Show(producer, view)
+    numpy_map = TrivialProducer()
+    numpy_map.GetClientSideObject().SetOutput(
+        image_of(reference, COUNTS, (first[0] + 2.15, first[1])))
+    for port in (OutputPort(tracer, 1), numpy_map):
+        display = Show(port, view)
         display.SetRepresentationType("Slice")
         ColorBy(display, ("POINTS", "FTLE"))
         display.LookupTable = lut

@@ -475,6 +475,9 @@ double degreesBetween(const std::array<float, 3>& a, const float v[3])
 }
 } // namespace
 
+/// The built-in shapes' long axis.
+const std::array<float, 3> XAxis = { 1, 0, 0 };
+
 TEST(Engine, AlongFlowTurnsTheLongAxisOntoTheFlowByTheShortestTurn)
 {
   const std::array<float, 9> frame = bp::rotationFromDegrees(0, 0, 0);
@@ -487,7 +490,7 @@ TEST(Engine, AlongFlowTurnsTheLongAxisOntoTheFlowByTheShortestTurn)
     const float scale = std::pow(10.0f, float(k % 7) * 10.0f - 30.0f);
     const float v[3] = { scale * uniform(random), scale * uniform(random),
       scale * uniform(random) };
-    const std::array<float, 4> q = bp::alongFlowQuaternion(v, -1, frame, first);
+    const std::array<float, 4> q = bp::alongFlowQuaternion(v, -1, frame, XAxis, first);
     EXPECT_NEAR(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-5);
     EXPECT_LT(degreesBetween(longAxisOf(q.data()), v), 0.05) << "flow " << k;
     // The shortest turn: about an axis across both directions (none along x).
@@ -496,13 +499,13 @@ TEST(Engine, AlongFlowTurnsTheLongAxisOntoTheFlowByTheShortestTurn)
   }
   // Against the frame's axis: a half turn about its z axis.
   const float against[3] = { -2, 0, 0 };
-  const std::array<float, 4> back = bp::alongFlowQuaternion(against, -1, frame, first);
+  const std::array<float, 4> back = bp::alongFlowQuaternion(against, -1, frame, XAxis, first);
   EXPECT_LT(degreesBetween(longAxisOf(back.data()), against), 0.05);
   EXPECT_NEAR(std::abs(back[2]), 1.0, 1e-6);
   // No direction to follow: the frame stays.
   const float none[3][3] = { { 0, 0, 0 }, { NAN, 1, 0 }, { INFINITY, 0, 0 } };
   for (const auto& v : none)
-    EXPECT_EQ(bp::alongFlowQuaternion(v, -1, frame, first), first);
+    EXPECT_EQ(bp::alongFlowQuaternion(v, -1, frame, XAxis, first), first);
 }
 
 TEST(Engine, AlongFlowOnAFlatFieldTurnsAboutItsAxisFromElementRotation)
@@ -512,7 +515,7 @@ TEST(Engine, AlongFlowOnAFlatFieldTurnsAboutItsAxisFromElementRotation)
   const std::array<float, 9> frame = bp::rotationFromDegrees(-90, 0, 0);
   const std::array<float, 4> first = bp::quaternionFromRotation(frame);
   const float v[3] = { 1, 5, 1 };
-  const std::array<float, 4> q = bp::alongFlowQuaternion(v, 1, frame, first);
+  const std::array<float, 4> q = bp::alongFlowQuaternion(v, 1, frame, XAxis, first);
   const float inPlane[3] = { 1, 0, 1 };
   EXPECT_LT(degreesBetween(longAxisOf(q.data()), inPlane), 0.05);
   float R[9];
@@ -523,8 +526,56 @@ TEST(Engine, AlongFlowOnAFlatFieldTurnsAboutItsAxisFromElementRotation)
   const std::array<float, 9> rolled = bp::rotationFromDegrees(30, 0, 0);
   const float along[3] = { 0.2f, 1, 0.1f };
   const std::array<float, 4> r =
-    bp::alongFlowQuaternion(along, -1, rolled, bp::quaternionFromRotation(rolled));
+    bp::alongFlowQuaternion(along, -1, rolled, XAxis, bp::quaternionFromRotation(rolled));
   EXPECT_LT(degreesBetween(longAxisOf(r.data()), along), 0.05);
+}
+
+TEST(Engine, ATemplatesLongAxisIsXForTheBuiltInsAndItsPrincipalAxisOtherwise)
+{
+  for (int s = 0; s <= int(bp::BuiltinShape::Fish); ++s)
+  {
+    EXPECT_EQ(bp::longAxis(bp::builtinTemplate(bp::BuiltinShape(s))), XAxis) << s;
+  }
+  // A custom template laid along y, and one along a diagonal of x and z.
+  bp::ElementTemplate along = bp::builtinTemplate(bp::BuiltinShape::Strip8);
+  for (auto& q : along.rest)
+    q = { -q[1], q[0], q[2] };
+  EXPECT_EQ(bp::longAxis(along), (std::array<float, 3>{ 0, 1, 0 }));
+  for (auto& q : along.rest)
+    q = { q[1] * 0.6f, q[0], q[1] * 0.8f };
+  const std::array<float, 3> diagonal = bp::longAxis(along);
+  EXPECT_NEAR(diagonal[0], 0.6f, 1e-5);
+  EXPECT_NEAR(diagonal[2], 0.8f, 1e-5);
+}
+
+TEST(Engine, AlongFlowTurnsACustomTemplatesLongAxisOntoTheFlow)
+{
+  // A strip laid along y in a uniform flow along x: it ends along the flow
+  // (its rest y axis turned onto x), not across it.
+  bp::ElementTemplate along = bp::builtinTemplate(bp::BuiltinShape::Strip8);
+  for (auto& q : along.rest)
+    q = { -q[1], q[0], q[2] };
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(9));
+  bp::Parameters p = centralParameters(40, 0.2f);
+  p.orientation = bp::Orientation::AlongFlow;
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(along, p), "");
+  engine.initialize(bp::serialRunner(), 0.0, &field);
+  const std::size_t n = along.particleCount();
+  for (std::size_t e = 0; e < engine.elementCount(); ++e)
+  {
+    const float* c = engine.initialCenters().data() + 3 * e;
+    float v[3];
+    field.sample(c, 0.0, v);
+    // The element's spread: from its first particle to its last (its ends).
+    const float* first = engine.positions().data() + 3 * e * n;
+    const float* last = first + 3 * (n - 1);
+    const std::array<float, 3> span = { last[0] - first[0], last[1] - first[1],
+      last[2] - first[2] };
+    const double angle = degreesBetween(span, v);
+    EXPECT_LT(std::min(angle, 180.0 - angle), 20.0) << "element " << e;
+  }
 }
 
 TEST(Engine, AlongFlowPlacesEveryElementAlongTheFlowAtItsCentre)

@@ -51,6 +51,34 @@ TEST(ReleaseLattice, DegenerateBoxesGiveOnePointOrACappedCount)
   EXPECT_EQ(one.size(), 1u);
 }
 
+TEST(ReleaseLattice, AFewElementsStayInsideTheBox)
+{
+  // One element: the box's centre, not its lowest corner.
+  const bp::ReleaseLattice one = bp::releaseLattice({ 0, 0, 0 }, { 1, 2, 4 }, 1, 0.0);
+  EXPECT_EQ(one.size(), 1u);
+  EXPECT_EQ(one.point(0), (std::array<float, 3>{ 0.5f, 1, 2 }));
+  // Two or three in a cube: a row of two or a square of four about the centre.
+  for (std::size_t elements : { 2u, 3u })
+  {
+    const bp::ReleaseLattice few = bp::releaseLattice({ -1, -1, -1 }, { 1, 1, 1 }, elements, 0.0);
+    EXPECT_GE(few.size(), elements);
+    EXPECT_LE(few.size(), 2 * elements);
+    std::array<double, 3> mean = { 0, 0, 0 };
+    for (std::size_t e = 0; e < few.size(); ++e)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        EXPECT_GT(few.point(e)[a], -1.0f);
+        EXPECT_LT(few.point(e)[a], 1.0f);
+        mean[a] += few.point(e)[a] / double(few.size());
+      }
+    }
+    EXPECT_NEAR(mean[0], 0.0, 1e-6);
+    EXPECT_NEAR(mean[1], 0.0, 1e-6);
+    EXPECT_NEAR(mean[2], 0.0, 1e-6);
+  }
+}
+
 TEST(ReleaseLattice, AThinSlabKeepsTheTarget)
 {
   // 1000 over a 2 x 1 x 0.01 slab: the slab is one point thick, and the

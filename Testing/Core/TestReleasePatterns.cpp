@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 namespace
@@ -130,6 +131,18 @@ TEST(ReleasePatterns, SettingsMakeAFlatLatticeOnAFlatField)
   s.latticeSpacing = 0.5;
   r = bp::resolveSettings(s, f);
   EXPECT_EQ(r.parameters.numberOfElements, 8u);
+  EXPECT_TRUE(r.warnings.empty());
+  // A spacing that makes the lattice 100 times the count asked or more is said.
+  s.latticeSpacing = 0.01;
+  r = bp::resolveSettings(s, f);
+  EXPECT_EQ(r.parameters.numberOfElements, 200u * 100u);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(
+    r.warnings[0].find("LatticeSpacing 0.01 gives a lattice of 20000 points (200 x 100 x 1)"),
+    std::string::npos)
+    << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find("200 times Number Of Elements (100)"), std::string::npos);
+  s.latticeSpacing = 0.5;
   // Seed points win, with a warning.
   s.seeded = true;
   r = bp::resolveSettings(s, f);
@@ -285,6 +298,87 @@ TEST(ReleasePatterns, ASmallRegionOfInterestTakesItsReleases)
   bp::weightedBox({ 0, 0, 0 }, { 0.2f, 1, 1 }, *weights, lo, hi);
   EXPECT_FLOAT_EQ(lo[0], 0.19f);
   EXPECT_EQ(hi[0], 0.2f);
+}
+
+TEST(ReleasePatterns, WeightsHonourTheMask)
+{
+  // Still flow (speed 0) at x <= 0.4, speed 1 beyond; MinimumReleaseSpeed
+  // 0.5 makes cells [0, 0.4] unfit. Weights above 0 only at x <= 0.3: they
+  // reach no fit cell, so they are dropped and releases are uniform, over
+  // fit cells only (they all landed in the still flow).
+  const bp::GridGeometry g = unitGrid(11);
+  bp::FieldSlice slice;
+  auto velocity = std::make_shared<std::vector<float>>(3 * g.pointCount(), 0.0f);
+  std::vector<float> values(g.pointCount(), 0.0f);
+  for (std::size_t q = 0; q < g.pointCount(); ++q)
+  {
+    (*velocity)[3 * q] = q % 11 <= 4 ? 0.0f : 1.0f;
+    values[q] = q % 11 <= 3 ? 1.0f : 0.0f;
+  }
+  slice.velocity = velocity;
+  slice.releaseWeights = std::make_shared<const std::vector<float>>(values);
+  const bp::VectorField field(g, slice);
+  const bp::ReleaseMask mask = bp::releaseMaskOf(field, 0.5f);
+  ASSERT_TRUE(mask.unfit);
+  EXPECT_FALSE(bp::weightsReachFitCells(g, values, mask.unfit.get()));
+  EXPECT_TRUE(bp::weightsReachFitCells(g, values, nullptr));
+  EXPECT_FALSE(mask.weights) << "weights only where releases may not land are not used";
+  bp::Parameters p;
+  p.numberOfElements = 2000;
+  p.elementSize = 0.01f;
+  p.releaseMinSpeed = 0.5f;
+  bp::CpuStepper stepper(bp::serialRunner());
+  ASSERT_EQ(stepper.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  ASSERT_EQ(stepper.setField(field), "");
+  stepper.initialize(0.0);
+  int inStill = 0;
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    inStill += stepper.particles()->initialCenters()[3 * e] < 0.4f;
+  EXPECT_EQ(inStill, 0);
+  // One more point of weight reaches a fit cell: the weights are used.
+  values[4] = values[15] = values[26] = values[37] = 1.0f; // x = 0.4, every y and z
+  EXPECT_TRUE(bp::weightsReachFitCells(g, values, mask.unfit.get()));
+}
+
+TEST(ReleasePatterns, AWeightedReleaseWithNoFitCandidateWaitsHidden)
+{
+  // Weights everywhere, but the emitter box over unfit cells only: no
+  // candidate fits, and the element is hidden (due again) instead of shown
+  // where the mask forbids.
+  const bp::GridGeometry g = unitGrid(11);
+  auto unfit = std::make_shared<std::vector<std::uint8_t>>(g.pointCount(), std::uint8_t(0));
+  for (int i = 0; i <= 4; ++i)
+    (*unfit)[std::size_t(i)] = 1; // cells [0, 0.5] (one cell along y and z)
+  const auto weights = bp::releaseWeightsOf(
+    g, std::make_shared<const std::vector<float>>(g.pointCount(), 1.0f), unfit.get());
+  ASSERT_TRUE(weights);
+  bp::Parameters p;
+  p.numberOfElements = 200;
+  p.elementSize = 0.01f;
+  p.emitterMin = { 0.0f, 0.0f, 0.0f };
+  p.emitterMax = { 0.3f, 1.0f, 1.0f };
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.setReleaseMask(g, unfit, weights);
+  engine.initialize(bp::serialRunner());
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    EXPECT_TRUE(engine.resetFlags()[e] & bp::ReleaseHidden) << e;
+}
+
+TEST(ReleasePatterns, WeightsBeyondFloatScaleByAPowerOfTwo)
+{
+  EXPECT_EQ(bp::releaseWeightScale(1.0), 1.0);
+  EXPECT_EQ(bp::releaseWeightScale(1e18), 1.0);
+  EXPECT_EQ(bp::releaseWeightScale(0.0), 1.0);
+  EXPECT_EQ(bp::releaseWeightScale(std::numeric_limits<double>::quiet_NaN()), 1.0);
+  for (double largest : { 1e39, 1e300, 1e-50, 1e-300 })
+  {
+    const double scale = bp::releaseWeightScale(largest);
+    EXPECT_EQ(std::exp2(std::round(std::log2(scale))), scale) << largest; // a power of two
+    EXPECT_GE(largest * scale, 1.0) << largest;
+    EXPECT_LT(largest * scale, 2.0) << largest;
+    EXPECT_TRUE(std::isfinite(float(largest * scale))) << largest;
+  }
 }
 
 } // namespace

@@ -252,3 +252,13 @@ TEST(VectorField, RectilinearGridsAreValidatedMovedAndCompared)
   bp::GridGeometry uniform = bptest::grid(4, 0.0, 1.0);
   EXPECT_FALSE(uniform.sameAs(g, 1e-9));
 }
+
+TEST(VectorField, AFlatFieldsComponentAcrossItsPlaneIsDropped)
+{
+  std::vector<float> v = { 1, 2, -3, 0, 0.5f, 0.25f };
+  float inPlane = 0.0f;
+  EXPECT_EQ(bp::dropFlatComponents(v, { false, false, true }, inPlane), 3.0f);
+  EXPECT_EQ(v, (std::vector<float>{ 1, 2, 0, 0, 0.5f, 0 }));
+  EXPECT_FLOAT_EQ(inPlane, std::sqrt(5.0f));
+  EXPECT_EQ(bp::dropFlatComponents(v, { false, false, true }, inPlane), 0.0f);
+}

@@ -88,10 +88,11 @@ struct Case
   bool window = false;       // release only while 0.3 <= t <= 0.8
   bool poses = false;        // Parameters::trackPoses, and a trail of 4 poses every 3 steps
   bp::Orientation orientation = bp::Orientation::Random;
-  bool anchored = false; // Anchor = Centre
-  bool lattice = false;  // Release Pattern = Lattice (elements: the lattice's size)
-  bool weighted = false; // Release Weights |x - 0.2|
-  bool flat = false;     // a flat field (one z point), steady
+  bool anchored = false;   // Anchor = Centre
+  bool lattice = false;    // Release Pattern = Lattice (elements: the lattice's size)
+  bool weighted = false;   // Release Weights |x - 0.2|
+  bool flat = false;       // a flat field (one z point), steady
+  bool laidAlongY = false; // the template turned so its long axis is y (a custom template)
 };
 
 /// The largest difference of a quaternion's components, taking the GPU's q
@@ -326,6 +327,11 @@ void compare(const Case& c, int steps, bool pinSome = false)
     p.frame = bp::rotationFromDegrees(c.planeAxis == 1 ? -90 : 0, c.planeAxis == 0 ? 90 : 0, 0);
   }
   bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
+  if (c.laidAlongY)
+  {
+    for (auto& q : shape.rest)
+      q = { -q[1], q[0], q[2] };
+  }
   if (pinSome)
   {
     shape.pinned.assign(shape.particleCount(), 0);
@@ -556,6 +562,10 @@ TEST(GpuEngine, MatchesWithAlongFlowOrientations)
     flat.planeAxis = axis;
     compare(flat, 100);
   }
+  // A custom template whose long axis is y: that axis is turned onto the flow.
+  Case laid = unsteady;
+  laid.laidAlongY = true;
+  compare(laid, 100);
 }
 
 TEST(GpuEngine, MatchesWithAReleaseWindow)

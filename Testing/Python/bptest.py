@@ -33,7 +33,11 @@ def arguments(*extra):
 
 
 class CapturedMessages:
-    """Collects the VTK errors and warnings shown in ParaView's Output Messages."""
+    """Collects the VTK errors and warnings shown in ParaView's Output Messages
+    (and, with `texts`, its plain messages: notes that do not pop it open)."""
+
+    def __init__(self, texts=False):
+        self.events = ["ErrorEvent", "WarningEvent"] + (["TextEvent"] if texts else [])
 
     def __enter__(self):
         self.messages = []
@@ -44,8 +48,7 @@ class CapturedMessages:
 
         self._keep = keep
         window = vtkOutputWindow.GetInstance()
-        self._tags = [window.AddObserver("ErrorEvent", keep),
-                      window.AddObserver("WarningEvent", keep)]
+        self._tags = [window.AddObserver(event, keep) for event in self.events]
         return self
 
     def __exit__(self, *exc):

@@ -99,24 +99,62 @@ area = np.abs(stretch[:, 0] * stretch[:, 1] - 1.0)
 print("largest stretch * smallest stretch - 1: median %.3g" % np.median(area))
 bptest.check(np.median(area) < 0.01, "area kept: median |s1 s2 - 1| %g" % np.median(area))
 
-# The FTLE map of a Lattice release (port 1), where the tracer has one.
-if ftle_map.has_lattice(tracer):
-    gyre2, lattice = ftle_map.gyre_scene(counts=COUNTS, lattice=True)
-    with bptest.CapturedMessages() as messages:
-        points2, map_values, reference2, valid2, _ = ftle_map.both_maps(gyre2, lattice, COUNTS)
-    bptest.check(not messages.messages, "no warnings: %s" % messages.messages[:3])
-    image = servermanager.Fetch(lattice, 0, None, 1)
-    dims = image.GetDimensions()
-    print("FTLE map: dimensions %s, origin %s, spacing %s" %
-          (dims, image.GetOrigin(), image.GetSpacing()))
-    bptest.check(tuple(dims) == (COUNTS[0], COUNTS[1], 1), "map dimensions %s" % (dims,))
-    bptest.check(np.allclose(points2, ftle_map.lattice_points(COUNTS), atol=1e-6),
-                 "the map's points are the lattice's, in world coordinates")
-    check_maps("FTLE map against numpy (sampled field)", map_values, reference2, valid2)
-    bptest.check(np.abs(map_values - elements).max() < 1e-4,
-                 "the map is the seeded elements' ElementFTLE (off by %g)" %
-                 np.abs(map_values - elements).max())
-else:
-    print("this tracer has no Release Pattern: the FTLE map's checks wait for it")
+# The FTLE map of a Lattice release (port 1).
+gyre2, lattice = ftle_map.gyre_scene(counts=COUNTS, lattice=True)
+with bptest.CapturedMessages() as messages:
+    points2, map_values, reference2, valid2, _ = ftle_map.both_maps(gyre2, lattice, COUNTS)
+bptest.check(not messages.messages, "no warnings: %s" % messages.messages[:3])
+image = servermanager.Fetch(lattice, 0, None, 1)
+dims = image.GetDimensions()
+print("FTLE map: dimensions %s, origin %s, spacing %s" %
+      (dims, image.GetOrigin(), image.GetSpacing()))
+bptest.check(tuple(dims) == (COUNTS[0], COUNTS[1], 1), "map dimensions %s" % (dims,))
+bptest.check(np.allclose(points2, ftle_map.lattice_points(COUNTS), atol=1e-6),
+             "the map's points are the lattice's, in world coordinates")
+check_maps("FTLE map against numpy (sampled field)", map_values, reference2, valid2)
+bptest.check(np.abs(map_values - elements).max() < 1e-4,
+             "the map is the seeded elements' ElementFTLE (off by %g)" %
+             np.abs(map_values - elements).max())
+
+# The map through consumers, as the GUI meets it: its whole extent is the
+# lattice's before any trace, so a filter or a view asks for its points.
+T = ftle_map.T
+map_port = OutputPort(lattice, 1)
+bptest.check(lattice.GetDataInformation(1).GetExtent() == (0, COUNTS[0] - 1, 0, COUNTS[1] - 1,
+                                                            0, 0),
+             "the map's extent in its information: %s" %
+             (lattice.GetDataInformation(1).GetExtent(),))
+shrunk = Shrink(Input=map_port)
+shrunk.UpdatePipeline(T)
+cells = (COUNTS[0] - 1) * (COUNTS[1] - 1)
+bptest.check(shrunk.GetDataInformation().GetNumberOfCells() == cells,
+             "Shrink of the map has its %d cells: %d" %
+             (cells, shrunk.GetDataInformation().GetNumberOfCells()))
+contour = Contour(Input=map_port, ContourBy=["POINTS", "FTLE"],
+                  Isosurfaces=[0.5 * float(map_values.max())])
+contour.UpdatePipeline(T)
+bptest.check(contour.GetDataInformation().GetNumberOfPoints() > 50,
+             "a contour of the map's FTLE has points: %d" %
+             contour.GetDataInformation().GetNumberOfPoints())
+cut = Slice(Input=map_port)
+cut.SliceType.Origin = [1.0, 0.5, 0.0]
+cut.SliceType.Normal = [1.0, 0.0, 0.0]
+cut.UpdatePipeline(T)
+bptest.check(cut.GetDataInformation().GetNumberOfPoints() >= COUNTS[1] and
+             "FTLE" in cut.PointData.keys(),
+             "a slice across the map has a line of points with FTLE: %d" %
+             cut.GetDataInformation().GetNumberOfPoints())
+view = bptest.element_view((320, 200))
+view.ViewTime = T
+shown = Show(map_port, view)
+shown.SetRepresentationType("Slice")
+ColorBy(shown, ("POINTS", "FTLE"))
+ResetCamera(view)
+path = bptest.save_picture(view, os.environ.get("TMPDIR", "/tmp"), "ftle-map-shown")
+covered = bptest.covered_fraction(path)
+print("the map shown as a slice covers %.1f%% of the view" % (100 * covered))
+bptest.check(covered > 0.1, "the map shown in a view draws: %.3f of the pixels" % covered)
+map_time = map_port.GetDataInformation().DataInformation.GetTime()
+bptest.check(map_time == T, "the map is stamped with the time shown (%s)" % map_time)
 
 bptest.finish()

@@ -102,6 +102,20 @@ bptest.check(len(relayed) >= 2 and all(text == "Bound Particles: GPU engine" for
              "ParaView's progress handler relayed %r" % relayed[:5])
 bptest.check(not replay.messages, "messages during the replay: %r" % replay.messages)
 
+# Update and run in one Render, as a script's observer meets them: the
+# progress rises once from 0 to 1 (the update no longer reports its own end
+# before the run starts from 0 again).
+render_at(times[0])
+view.ViewTime = times[-1]
+del shares[:]
+Render(view)
+print("update and run in one render: %d reports, %s ... %s" % (len(shares), shares[:3], shares[-2:]))
+bptest.check(len(shares) >= 4 and shares[0] == 0.0 and shares[-1] == 1.0 and drops(shares) == 0,
+             "one render's progress rises once from 0 to 1: %s ... %s" % (shares[:4], shares[-2:]))
+bptest.check(1.0 not in shares[:-1] or shares[shares.index(1.0):] == [1.0] * (len(shares) -
+                                                                       shares.index(1.0)),
+             "no 1 before the run's reports: %s" % shares[:6])
+
 # Back to the start (a short replay), then to the frame before the last,
 # aborted from a progress observer a quarter of the way, as ParaView 6.1's
 # Abort button does it.

@@ -100,7 +100,8 @@ bptest.check(chi_square(points, numpy.full(10, 0.1)) < 27.9, "None: uniform rele
 tracer.ReleaseWeights = ["POINTS", "nosuch"]
 with bptest.CapturedMessages() as said:
     points, ids = releases(tracer)
-bptest.check(said.mentions("no point array 'nosuch'"), "a missing array warns: %s" % said.messages)
+bptest.check(said.mentions("no point or cell array 'nosuch'"),
+             "a missing array warns: %s" % said.messages)
 bptest.check(chi_square(points, numpy.full(10, 0.1)) < 27.9, "a missing array: uniform releases")
 
 # Weights of 0 everywhere warn and release uniformly.
@@ -111,6 +112,63 @@ with bptest.CapturedMessages() as said:
     points, ids = releases(tracer)
 bptest.check(said.mentions("is 0, NaN or Inf at every point"), "weights of 0 warn: %s" % said.messages)
 bptest.check(chi_square(points, numpy.full(10, 0.1)) < 27.9, "weights of 0: uniform releases")
+Delete(tracer)
+
+# Weights honour the mask: above 0 only where vtkValidPointMask is 0 (x < 1.6),
+# they warn and release uniformly over the valid part, never in the masked one.
+masked = ProgrammableFilter(Input=box, OutputDataSetType="vtkImageData")
+masked.Script = """import numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+x = numpy.array([out.GetPoint(i)[0] for i in range(out.GetNumberOfPoints())])
+def add(name, values, dtype):
+    a = numpy_to_vtk(numpy.ascontiguousarray(values, dtype=dtype), deep=True)
+    a.SetName(name)
+    out.GetPointData().AddArray(a)
+add("vtkValidPointMask", x >= 1.6, numpy.uint8)
+add("there", x < 1.2, numpy.float32)
+add("big", numpy.where(x > 2.0, 1e39, 0.0), numpy.float64)
+add("huge", numpy.full(len(x), 1e300), numpy.float64)
+# A cell array (cells of 0.1 along x): 1 for cells beyond x = 2, 0 before.
+cx = numpy.array([out.GetCell(c).GetBounds()[0] for c in range(out.GetNumberOfCells())])
+c = numpy_to_vtk(numpy.ascontiguousarray(cx >= 2.0, dtype=numpy.float32), deep=True)
+c.SetName("cw")
+out.GetCellData().AddArray(c)
+"""
+masked.UpdatePipeline()
+tracer = BoundParticleTracer(Input=masked, Vectors=VELOCITY, ElementShape="Point",
+                             NumberOfElements=2000, MinimumReleaseSpeed=0.0,
+                             ReleaseWeights=["POINTS", "there"])
+with bptest.CapturedMessages() as said:
+    points, ids = releases(tracer)
+bptest.check(said.mentions("above 0 only where releases may not land"),
+             "weights only in the masked part warn: %s" % said.messages)
+bptest.check(len(points) == 2000 and points[:, 0].min() >= 1.6,
+             "and no release lands in the masked part (lowest x %.3g)" % points[:, 0].min())
+bptest.check(numpy.histogram(points[:, 0], bins=4, range=(1.6, 4.0))[0].min() > 300,
+             "releases spread uniformly over the valid part")
+# A double array beyond float's range (1e39 where x > 2, 0 elsewhere) weighs
+# as it is; 1e300 everywhere is not "0, NaN or Inf".
+tracer.ReleaseWeights = ["POINTS", "big"]
+with bptest.CapturedMessages() as said:
+    points, ids = releases(tracer)
+bptest.check(not said.messages and points[:, 0].min() > 1.9,
+             "weights of 1e39 take every release (lowest x %.3g): %s" %
+             (points[:, 0].min(), said.messages))
+tracer.ReleaseWeights = ["POINTS", "huge"]
+with bptest.CapturedMessages() as said:
+    points, ids = releases(tracer)
+bptest.check(not said.messages, "weights of 1e300 are weights: %s" % said.messages)
+# A cell array, asked as cells or (as ParaView's panel offers it) as points:
+# averaged onto the points, so releases land beyond x = 1.9.
+for association in ("CELLS", "POINTS"):
+    tracer.ReleaseWeights = [association, "cw"]
+    with bptest.CapturedMessages() as said:
+        points, ids = releases(tracer)
+    bptest.check(not said.messages and points[:, 0].min() > 1.85,
+                 "a cell array as %s weighs releases (lowest x %.3g): %s" %
+                 (association, points[:, 0].min(), said.messages))
 Delete(tracer)
 
 # Too fine a lattice and a lattice with Linking are refused with a message

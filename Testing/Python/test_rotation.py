@@ -244,6 +244,37 @@ print("own fade, CPU vs GPU engine: mean %.3f, pixels %.4f" % (mean, pixels))
 mean, pixels = bptest.image_difference(cpu_mapped, with_trails)
 bptest.check(mean <= CPU_MEAN and pixels <= CPU_PIXELS,
              "CPU display vs CPU Surface, opacity mapped: mean %.3f, pixels %.4f" % (mean, pixels))
+# Output Arrays cut to what is drawn (no Age): the trails still fade (Age
+# comes with Trails), the same picture as with Age ticked.
+def solid_trails_picture(path, arrays):
+    trailed.OutputArrays = arrays
+    trailed.Trails = 1
+    view = picture.dark_view(trails.TIME, (480, 270))
+    view.EnableRenderOnInteraction = 0
+    display = Show(trailed, view)
+    display.SetRepresentationType("Bound Particles")
+    ColorBy(display, ("POINTS", None))
+    trails.place_camera(view)
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=[480, 270])
+    Delete(display)
+    Delete(view)
+
+
+kept_arrays = list(trailed.OutputArrays)
+trailed.OutputArrays = ["Normals"]
+trailed.UpdatePipeline(trails.TIME)
+bptest.check(servermanager.Fetch(trailed).GetPointData().GetArray("Age") is not None,
+             "Age comes with Trails whatever Output Arrays holds")
+cut = os.path.join(args.output, "Trails_BoundParticles_cpu_cut.png")
+ticked = os.path.join(args.output, "Trails_BoundParticles_cpu_age.png")
+solid_trails_picture(cut, ["Normals"])
+solid_trails_picture(ticked, ["Normals", "Age"])
+mean, pixels = bptest.image_difference(cut, ticked)
+bptest.check(mean < 0.01 and pixels == 0.0,
+             "without Age ticked the CPU trails fade as with it: mean %.3f, pixels %.4f" %
+             (mean, pixels))
+trailed.OutputArrays = kept_arrays
 keep_baseline(gpu_with, "Trails_BoundParticles")
 Delete(gpu_trailed)
 Delete(flow_g)

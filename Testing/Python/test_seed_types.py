@@ -149,9 +149,47 @@ still.SeedType.Point2 = [0.0, 0.5, 0.0]
 still.SeedType.Resolution = 20
 with bptest.CapturedMessages() as log:
     still.UpdatePipeline(still.TimestepValues[0])
-bptest.check(log.mentions("of the Line's 21 points in the flow lie where it is slower than 1%"),
-             "seeds in still flow: %s" % log.messages)
+    # Back from a later time: a replay of the same configuration says nothing again.
+    still.UpdatePipeline(still.TimestepValues[3])
+    still.UpdatePipeline(still.TimestepValues[1])
+said = [m for m in log.messages if "slower than 1%" in m]
+bptest.check(len(said) == 1 and "of the Line's 21 points in the flow lie where it is slower" in
+             said[0], "seeds in still flow, said once: %s" % log.messages)
 Delete(still)
+# Parameters a script or a state file got wrong are said, with what is used.
+odd = BoundParticleTracer(Input=still_flow, Vectors=["POINTS", "v"], NumberOfElements=10,
+                          SeedType="Point Cloud")
+for properties, words in (({"Radius": -0.2}, "Radius -0.2 is not a positive number"),
+                          ({"Radius": -1e30}, "Radius -1e+30 is not a positive number"),
+                          ({"NumberOfPoints": 0}, "Number Of Points 0 is below 1"),
+                          ({"NumberOfPoints": -5}, "Number Of Points -5 is below 1")):
+    odd.SeedType = "Point Cloud"
+    odd.SeedType.Radius = 0.3
+    odd.SeedType.NumberOfPoints = 100
+    for name, value in properties.items():
+        setattr(odd.SeedType, name, value)
+    with bptest.CapturedMessages() as log:
+        odd.UpdatePipeline(odd.TimestepValues[0])
+    bptest.check(log.mentions(words), "%s is said: %s" % (properties, log.messages))
+odd.SeedType = "Line"
+for resolution in (0, -3):
+    odd.SeedType.Resolution = resolution
+    with bptest.CapturedMessages() as log:
+        odd.UpdatePipeline(odd.TimestepValues[0])
+    bptest.check(log.mentions("Line's Resolution %d is below 1" % resolution),
+                 "Resolution %d is said: %s" % (resolution, log.messages))
+Delete(odd)
+# A few seeds in still flow (about 1% of a cloud) are not worth a warning.
+few = BoundParticleTracer(Input=still_flow, Vectors=["POINTS", "v"], NumberOfElements=1000,
+                          SeedType="Point Cloud")
+few.SeedType.Center = [0.0, 0.0, 0.0]
+few.SeedType.Radius = 0.4
+few.SeedType.NumberOfPoints = 1000
+with bptest.CapturedMessages() as log:
+    few.UpdatePipeline(few.TimestepValues[0])
+bptest.check(not log.mentions("slower than 1%"),
+             "a small share of seeds in still flow is not warned of: %s" % log.messages)
+Delete(few)
 
 # A connected Seed Source wins over the Seed Type, and says so.
 tracer.SeedType = "Line"

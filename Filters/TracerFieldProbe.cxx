@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "TracerTimeScale.h"
+#include "TracerFieldProbe.h"
 
 #include "TracerInput.h"
 #include "VectorField.h"
@@ -46,10 +46,15 @@ vtkDataObject* updateInput(vtkAlgorithmOutput* connection, vtkInformation* inInf
   return inInfo->Get(vtkDataObject::DATA_OBJECT());
 }
 
-/// This process's share: (top speed, -lower, upper per axis, cell length).
-std::array<double, 8> localScale(vtkDataObject* data, const GridOf& gridOf)
+/// This process's share, reduced with MAX over processes: top speed; lower
+/// bounds negated and upper bounds per axis; the cell length; points per
+/// axis (this grid's, or the image's whole extent's: each process holds a
+/// piece of an image, a resampled mesh is whole everywhere); read (1 or 0).
+using Share = std::array<double, 12>;
+
+Share localShare(vtkDataObject* data, vtkInformation* inInfo, const GridOf& gridOf)
 {
-  std::array<double, 8> local = { 0, -1e300, -1e300, -1e300, -1e300, -1e300, -1e300, 0 };
+  Share local = { 0, -1e300, -1e300, -1e300, -1e300, -1e300, -1e300, 0, 0, 0, 0, 0 };
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   vtkSmartPointer<vtkDataObject> field;
   vtkDataArray* vectors = gridOf(data, field, association);
@@ -68,56 +73,87 @@ std::array<double, 8> localScale(vtkDataObject* data, const GridOf& gridOf)
   }
   local[0] = bp::VectorField(grid, slice).maxSpeed();
   const std::array<double, 6> b = grid.bounds();
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int* whole = field == data && inInfo->Has(SDDP::WHOLE_EXTENT())
+    ? inInfo->Get(SDDP::WHOLE_EXTENT())
+    : nullptr;
   for (int a = 0; a < 3; ++a)
   {
     local[1 + 2 * a] = -b[2 * a];
     local[2 + 2 * a] = b[2 * a + 1];
+    local[8 + a] = whole ? whole[2 * a + 1] - whole[2 * a] + 1 : grid.dims[a];
   }
   local[7] = grid.cellLength();
+  local[11] = 1.0;
   return local;
 }
 } // namespace
 
-bp::TimeScale probeTimeScale(vtkAlgorithmOutput* input, vtkInformation* inInfo,
+FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int pieces = controller ? std::max(controller->GetNumberOfProcesses(), 1) : 1;
   const int piece = controller ? controller->GetLocalProcessId() : 0;
-  std::array<double, 8> scale =
-    localScale(updateInput(input, inInfo, inputTimes, piece, pieces), gridOf);
+  Share share =
+    localShare(updateInput(input, inInfo, inputTimes, piece, pieces), inInfo, gridOf);
   if (pieces > 1)
   {
-    std::array<double, 8> global;
-    controller->AllReduce(scale.data(), global.data(), 8, vtkCommunicator::MAX_OP);
-    scale = global;
+    Share global;
+    controller->AllReduce(share.data(), global.data(), vtkIdType(share.size()),
+      vtkCommunicator::MAX_OP);
+    share = global;
   }
-  // The whole field's extent and mean cell length, as the update's
-  // (PieceLayout::cellLength): span over cells along each axis with cells.
+  FieldProbe probe;
+  probe.read = share[11] > 0.5;
+  if (!probe.read)
+  {
+    return probe;
+  }
+  // The whole field's bounds (grid-local: the engine's origin is the whole
+  // grid's first point) and points per axis; its cell length as the
+  // update's (PieceLayout::cellLength).
+  bp::FieldFacts& f = probe.facts;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double lo = -share[1 + 2 * a], hi = share[2 + 2 * a];
+    f.offset[a] = lo;
+    f.bounds[2 * a] = 0.0;
+    f.bounds[2 * a + 1] = hi - lo;
+    f.dims[a] = int(share[8 + a]);
+  }
+  f.cellLength = share[7];
+  f.maxSpeed = share[0];
+  if (!inputTimes.empty())
+  {
+    f.timeSpan = inputTimes.back() - inputTimes.front();
+  }
+  // The time line's scale: the longest side, and the mean cell length over
+  // the input's whole extent where it has one.
   using SDDP = vtkStreamingDemandDrivenPipeline;
   const int* whole =
     inInfo->Has(SDDP::WHOLE_EXTENT()) ? inInfo->Get(SDDP::WHOLE_EXTENT()) : nullptr;
-  bp::TimeScale result;
-  result.maxSpeed = scale[0];
-  result.cellLength = scale[7];
+  bp::TimeScale& scale = probe.scale;
+  scale.maxSpeed = share[0];
+  scale.cellLength = share[7];
   double sum = 0.0;
   int axes = 0;
   for (int a = 0; a < 3; ++a)
   {
-    const double span = scale[2 + 2 * a] + scale[1 + 2 * a];
+    const double span = share[2 + 2 * a] + share[1 + 2 * a];
     const int cells = whole ? whole[2 * a + 1] - whole[2 * a] : 1;
     if (cells >= 1 && span > 0.0)
     {
-      result.extent = std::max(result.extent, span);
+      scale.extent = std::max(scale.extent, span);
       sum += span / cells;
       ++axes;
     }
   }
   if (whole && axes > 0)
   {
-    result.cellLength = sum / axes;
+    scale.cellLength = sum / axes;
   }
-  return result;
+  return probe;
 }
 
 } // namespace bpvtk

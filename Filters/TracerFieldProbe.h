@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerFieldProbe.h
+ * @brief The field's facts before the first update: its scale for the
+ * automatic time line, and its geometry for the FTLE map's extent.
+ *
+ * The time values a filter offers, and the extent of an image output, are set
+ * in RequestInformation, before any data flows. An automatic Duration (or
+ * frames per input time step) needs the field's top speed and extent; the
+ * FTLE map's extent is the release lattice's, which needs the field's bounds
+ * (an emitter box spanning the field) and its flat axes. So the probe
+ * updates the input once there (this process's piece, at the first input
+ * time step), reads the selected vectors as an update would (a mesh
+ * resampled, masks and NaN included), and, under MPI, takes the largest
+ * speed and the whole field's bounds over every process (a collective call,
+ * as every pipeline pass of a distributed run is).
+ */
+#ifndef BoundParticles_TracerFieldProbe_h
+#define BoundParticles_TracerFieldProbe_h
+
+#include "TraceSettings.h"
+
+#include "vtkDataObject.h"
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <vector>
+
+class vtkAlgorithmOutput;
+class vtkDataArray;
+class vtkInformation;
+
+namespace bpvtk
+{
+
+/**
+ * The filter's reading of the delivered data: sets `grid` to the grid it
+ * traces (the data itself, or the mesh resampled, which `grid` keeps alive)
+ * and returns its vectors (and their association). Called on every process,
+ * as resampling is collective.
+ */
+using GridOf = std::function<vtkDataArray*(
+  vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)>;
+
+/// What the probe found.
+struct FieldProbe
+{
+  bool read = false; ///< the field could be read (facts and scale are set)
+  /// Its scale; invalid (bp::TimeScale::valid()) where it does not move.
+  bp::TimeScale scale;
+  /// Its facts as a replay resolves settings against them (the whole field's
+  /// bounds, grid-local; its first point; points per axis; the mean cell
+  /// length; the top speed of the time step probed).
+  bp::FieldFacts facts;
+};
+
+/// Probes the field `input` (the filter's input connection, `inInfo` its
+/// information) delivers at its first time step.
+FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
+  const std::vector<double>& inputTimes, const GridOf& gridOf);
+
+} // namespace bpvtk
+
+#endif
