@@ -74,11 +74,20 @@ parser.add_argument("--frames-per-step", type=int, default=1,
                          "held (ParaView's tracer offers the input's times either way)")
 parser.add_argument("--keep", metavar="DIR",
                     help="write the data here and keep it (default: a temporary folder)")
+parser.add_argument("--cut", type=int, choices=(5, 6), default=6,
+                    help="tetrahedra per hexahedron: 6 (default, along the main diagonal) or 5 "
+                         "(a middle one and four corners, mirrored between neighbours)")
+parser.add_argument("--jitter", type=float, default=0.1,
+                    help="how far inner points move, in cells (default 0.1; 0: a regular lattice)")
+parser.add_argument("--static", action="store_true",
+                    help="one file, no time steps (a steady field): the first frame only")
 args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
 DT = 0.5  # between data time steps, as the plugin's Analytic Flow
-JITTER = 0.1  # of a cell, per axis, interior points only (keeps every tetrahedron valid)
+JITTER = args.jitter  # of a cell, per axis, interior points only (0.1 keeps every tetrahedron valid)
+if args.static:
+    args.steps = 1
 
 
 def gyre(xyz, t):
@@ -106,12 +115,22 @@ def grid_points(dims, spacing):
 
 def tetrahedra(dims):
     """6 tetrahedra per hexahedron (Kuhn: along each order of the three axes
-    from the hexahedron's first corner to its last), point ids, C x 4."""
+    from the hexahedron's first corner to its last), or 5 (--cut 5: the
+    corners of one parity around a middle one, mirrored between neighbours
+    so that faces match), point ids, C x 4."""
     nx, ny, nz = dims
     k, j, i = numpy.meshgrid(numpy.arange(nz - 1), numpy.arange(ny - 1), numpy.arange(nx - 1),
                              indexing="ij")
     corner = (i + nx * (j + ny * k)).ravel().astype(numpy.int64)
     step = [1, nx, nx * ny]
+    if args.cut == 5:
+        # Corner c of a hexahedron: bit 0 along x, bit 1 along y, bit 2 along z.
+        at = numpy.stack([corner + (c & 1) * step[0] + (c >> 1 & 1) * step[1] +
+                          (c >> 2 & 1) * step[2] for c in range(8)], axis=1)
+        even = [[0, 1, 2, 4], [1, 3, 2, 7], [1, 4, 5, 7], [2, 7, 6, 4], [1, 2, 4, 7]]
+        odd = [[1, 3, 0, 5], [0, 2, 3, 6], [0, 5, 4, 6], [3, 6, 7, 5], [0, 3, 5, 6]]
+        parity = ((i + j + k).ravel() % 2)[:, None, None]
+        return numpy.where(parity == 0, at[:, even], at[:, odd]).reshape(-1, 4)
     tets = numpy.empty((corner.size, 6, 4), dtype=numpy.int64)
     for n, (a, b, c) in enumerate(itertools.permutations(range(3))):
         tets[:, n, 0] = corner
@@ -177,7 +196,7 @@ def image_over_box(dims, name):
 def make_mesh():
     """Writes the mesh's steps: its .pvd, cell count, point count and the
     dimensions of the grid it was made from."""
-    n = max(2, int(round((args.cells / 12.0) ** (1.0 / 3.0))))
+    n = max(2, int(round((args.cells / (2.0 * args.cut)) ** (1.0 / 3.0))))
     dims = (2 * n + 1, n + 1, n + 1)
     spacing = (2.0 / (dims[0] - 1), 1.0 / (dims[1] - 1), 1.0 / (dims[2] - 1))
     regular = grid_points(dims, spacing)
@@ -309,7 +328,9 @@ def timed(make, reader):
     positions by seed and the resampled dimensions (or None)."""
     reader.proxy.UpdatePipeline(reader.times[-1])  # the reader holds another step
     tracer = make(reader)
-    times = list(tracer.TimestepValues)
+    times = list(tracer.TimestepValues) or [0.0]
+    if args.static:
+        times = times[:3]  # the first frame, and two on the same field
     own = Stopwatch(tracer)
     first_play = play(tracer, times, own, reader)
     output = servermanager.Fetch(tracer)
@@ -330,11 +351,15 @@ def timed(make, reader):
 
 def summary(runs):
     """Medians over the repeats (of each repeat's median frame)."""
-    def median(key, of="play", reduce=statistics.median):
-        return statistics.median(reduce(r[of][key]) if reduce else r[of][key] for r in runs)
+    def middle(values):
+        values = list(values)
+        return statistics.median(values) if values else float("nan")
+
+    def median(key, of="play", reduce=middle):
+        return middle(reduce(r[of][key]) if reduce else r[of][key] for r in runs)
     return dict(first=median("first", reduce=None), frame=median("frames"),
                 own=median("frames_own"), read=median("frames_read"),
-                slowest=median("frames", reduce=max),
+                slowest=median("frames", reduce=lambda v: max(v, default=float("nan"))),
                 first_reads=median("first_reads", reduce=None),
                 frame_reads=median("frame_reads", reduce=None),
                 replay_first=median("first", "replay", None), replay=median("frames", "replay"),
@@ -352,10 +377,12 @@ try:
     made = time.perf_counter() - began
     seeds = make_seeds()
     mesh, image = Reader(mesh_path), Reader(image_path)
-    print("mesh: %d tetrahedra, %d points (%d x %d x %d hexahedra of 6, jittered); image: "
-          "%d x %d x %d points; %d time steps 0.5 apart; written in %.1f s to %s"
-          % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, dims[0], dims[1],
-             dims[2], len(mesh.times), made, folder))
+    print("mesh: %d tetrahedra, %d points (%d x %d x %d hexahedra of %d, jittered by %g of a "
+          "cell); image: %d x %d x %d points; %s; written in %.1f s to %s"
+          % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, args.cut, JITTER,
+             dims[0], dims[1], dims[2],
+             "one file, no time steps" if args.static else "%d time steps 0.5 apart"
+             % len(mesh.times), made, folder))
     print("job: %d one-particle elements from the same seed points, RK4, 2 sub-steps per "
           "interval, %d repeats (medians, interleaved)" % (args.seeds, args.repeats))
 
