@@ -411,6 +411,17 @@ void FieldResampler::keepFound(vtkDataSet* block, std::uint32_t b,
       vtkNew<vtkGenericCell> cell;
       vtkNew<vtkIdList> scratch;
       std::vector<vtkIdType> ids(stride);
+      // Sized once: growing them copied what they held, a tenth of the search.
+      std::size_t held = 0;
+      const std::size_t rowLength =
+        std::size_t(box.count(0)); // row r's points follow r * rowLength
+      for (std::size_t q = begin * rowLength; q < end * rowLength; ++q)
+      {
+        held += owner[q].load(std::memory_order_relaxed) != NoCell ? 1 : 0;
+      }
+      found.samples.reserve(held);
+      found.points.reserve(held * stride);
+      found.weights.reserve(held * stride);
       for (std::size_t row = begin; row < end; ++row)
       {
         const int j = range[1][0] + int(row % std::size_t(rowsY));
@@ -449,6 +460,15 @@ void FieldResampler::keepFound(vtkDataSet* block, std::uint32_t b,
     });
   std::sort(
     parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::size_t samples = this->Samples.size(), entries = this->Weights.size();
+  for (const auto& part : parts)
+  {
+    samples += part.second.samples.size();
+    entries += part.second.weights.size();
+  }
+  this->Samples.reserve(samples);
+  this->WeightPoints.reserve(entries);
+  this->Weights.reserve(entries);
   for (auto& part : parts)
   {
     this->append(part.second);

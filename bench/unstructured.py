@@ -79,15 +79,15 @@ parser.add_argument("--cut", type=int, choices=(5, 6), default=6,
                          "(a middle one and four corners, mirrored between neighbours)")
 parser.add_argument("--jitter", type=float, default=0.1,
                     help="how far inner points move, in cells (default 0.1; 0: a regular lattice)")
-parser.add_argument("--static", action="store_true",
-                    help="one file, no time steps (a steady field): the first frame only")
+parser.add_argument("--moving", action="store_true",
+                    help="the inner points jittered anew at every time step (a moving mesh: "
+                         "each step is searched again; ParaView's tracer with Mesh Over Time: "
+                         "Different); by default the mesh is static and only the vectors change")
 args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
 DT = 0.5  # between data time steps, as the plugin's Analytic Flow
 JITTER = args.jitter  # of a cell, per axis, interior points only (0.1 keeps every tetrahedron valid)
-if args.static:
-    args.steps = 1
 
 
 def gyre(xyz, t):
@@ -168,12 +168,16 @@ def raw_writer(writer, data, path):
     writer.Write()
 
 
-def write_series(data, xyz, name):
+def write_series(data, xyz, name, move=None):
     """Writes `data` with the flow at `xyz` at every time step, and a .pvd of
-    them, into the folder; the .pvd's path."""
+    them, into the folder; the .pvd's path. `move(s)`, if given, gives step
+    s's points (set as the data's)."""
     writer = vtkXMLImageDataWriter() if data.IsA("vtkImageData") else vtkXMLUnstructuredGridWriter()
     files = []
     for s in range(args.steps):
+        if move:
+            xyz = move(s)
+            data.GetPoints().SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
         velocity = numpy_to_vtk(gyre(xyz, DT * s), deep=True)
         velocity.SetName("velocity")
         data.GetPointData().SetVectors(velocity)
@@ -200,12 +204,17 @@ def make_mesh():
     dims = (2 * n + 1, n + 1, n + 1)
     spacing = (2.0 / (dims[0] - 1), 1.0 / (dims[1] - 1), 1.0 / (dims[2] - 1))
     regular = grid_points(dims, spacing)
-    rng = numpy.random.default_rng(1)
-    xyz = regular.copy()
     index = [numpy.rint(regular[:, a] / spacing[a]).astype(int) for a in range(3)]
-    for a in range(3):
-        interior = (index[a] > 0) & (index[a] < dims[a] - 1)
-        xyz[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
+
+    def jittered(seed):
+        rng = numpy.random.default_rng(seed)
+        moved = regular.copy()
+        for a in range(3):
+            interior = (index[a] > 0) & (index[a] < dims[a] - 1)
+            moved[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
+        return moved
+
+    xyz = jittered(1)
     tets = tetrahedra(dims)
     assert orient(tets, xyz) > 0, "a flat tetrahedron"
     mesh = vtkUnstructuredGrid()
@@ -217,7 +226,8 @@ def make_mesh():
     cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
                   numpy_to_vtkIdTypeArray(tets.ravel(), deep=True))
     mesh.SetCells(VTK_TETRA, cells)
-    return write_series(mesh, xyz, "mesh"), len(tets), len(xyz), dims
+    move = (lambda s: jittered(1 + s)) if args.moving else None
+    return write_series(mesh, xyz, "mesh", move), len(tets), len(xyz), dims
 
 
 def make_seeds():
@@ -290,7 +300,7 @@ def particle_tracer(reader):
     tracer = ParticleTracer(Input=reader.proxy, SeedSource=seeds)
     tracer.SelectInputVectors = ["POINTS", "velocity"]
     tracer.StaticSeeds = 1
-    tracer.MeshOverTime = "Static"
+    tracer.MeshOverTime = "Different" if args.moving else "Static"
     tracer.ComputeVorticity = 0
     tracer.ForceReinjectionEveryNSteps = 0
     return tracer
@@ -328,9 +338,7 @@ def timed(make, reader):
     positions by seed and the resampled dimensions (or None)."""
     reader.proxy.UpdatePipeline(reader.times[-1])  # the reader holds another step
     tracer = make(reader)
-    times = list(tracer.TimestepValues) or [0.0]
-    if args.static:
-        times = times[:3]  # the first frame, and two on the same field
+    times = list(tracer.TimestepValues)
     own = Stopwatch(tracer)
     first_play = play(tracer, times, own, reader)
     output = servermanager.Fetch(tracer)
@@ -381,8 +389,9 @@ try:
           "cell); image: %d x %d x %d points; %s; written in %.1f s to %s"
           % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, args.cut, JITTER,
              dims[0], dims[1], dims[2],
-             "one file, no time steps" if args.static else "%d time steps 0.5 apart"
-             % len(mesh.times), made, folder))
+             "%d time steps 0.5 apart, %s" % (len(mesh.times), "the points moved at each"
+                                              if args.moving else "the same points and cells"),
+             made, folder))
     print("job: %d one-particle elements from the same seed points, RK4, 2 sub-steps per "
           "interval, %d repeats (medians, interleaved)" % (args.seeds, args.repeats))
 
