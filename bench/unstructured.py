@@ -6,9 +6,10 @@ The data, generated here and written to a temporary folder as one file per
 time step with a .pvd (so both tracers read it as a user's would, a reader
 re-reading a step it does not hold):
 - mesh: the box [0,2] x [0,1] x [0,1], 2n x n x n hexahedra of 6 tetrahedra
-  each (--cells, about 1 M by default), interior points jittered by up to a
-  tenth of a cell so that no cell lines up with the axes; the same points and
-  cells at every time step, only the vectors change;
+  each (--cells, about 1 M by default; --cut 5 for five), interior points
+  jittered by up to a tenth of a cell (--jitter) so that no cell lines up
+  with the axes; the same points and cells at every time step, only the
+  vectors change (--moving: the points jittered anew at every step);
 - image: a uniform grid with the same points per axis (so the same number of
   points) over the same box;
 - flow: the unsteady double gyre (the plugin's Analytic Flow), with a weak
