@@ -208,6 +208,32 @@ void resolvePlane(const FieldFacts& f, Parameters& p)
                       : rotationFromDegrees(0, 90, 0);
 }
 
+/// The warning of an unsteady field whose typical speed crosses more than
+/// UnitsWarningShare of it between two input time steps; empty otherwise.
+std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeScale& scale)
+{
+  double longest = 0.0;
+  for (std::size_t k = 1; k < inputTimes.size(); ++k)
+  {
+    longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
+  }
+  const double share = scale.extent > 0.0 ? scale.typicalSpeed * longest / scale.extent : 0.0;
+  if (!(share > UnitsWarningShare) || !std::isfinite(share))
+  {
+    return std::string();
+  }
+  std::ostringstream w;
+  w << "At the field's typical speed (" << scale.typicalSpeed
+    << ": 90% of its moving points are slower) an element crosses "
+    << int(std::round(100.0 * std::min(share, 1e6))) << "% of the field (" << scale.extent
+    << " long) between two input time steps (" << longest
+    << " apart), so the trace crumples: the velocity's units may not match the grid's or the "
+       "time's (e.g. m/s on a grid in degrees, with time in hours). Pick Vectors in the grid's "
+       "units per time unit, or convert them with a Calculator; Step Size in Time units then "
+       "steps in the data's own time.";
+  return w.str();
+}
+
 Resolution failure(const std::string& message)
 {
   Resolution r;
@@ -355,6 +381,11 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
         << " steps; check the velocity's units, or set Step Size in time units.";
       line.warnings.push_back(w.str());
     }
+  }
+  const std::string perInterval = unitsPerInterval(inputTimes, scale);
+  if (!perInterval.empty())
+  {
+    line.warnings.push_back(perInterval);
   }
   if (!stepKnown)
   {

@@ -86,9 +86,10 @@ Resolution resolveSettings(const TraceSettings& settings, const FieldFacts& fiel
 /// update (the filter's RequestInformation); valid only with a top speed > 0.
 struct TimeScale
 {
-  double maxSpeed = 0.0;   ///< the largest speed of the time step probed
-  double extent = 0.0;     ///< the field's longest side (over axes with cells)
-  double cellLength = 0.0; ///< the mean cell length, as FieldFacts::cellLength
+  double maxSpeed = 0.0;     ///< the largest speed of the time step probed
+  double typicalSpeed = 0.0; ///< VectorField::typicalSpeed of it (0: not known)
+  double extent = 0.0;       ///< the field's longest side (over axes with cells)
+  double cellLength = 0.0;   ///< the mean cell length, as FieldFacts::cellLength
   bool valid() const { return maxSpeed > 0.0 && extent > 0.0 && cellLength > 0.0; }
 };
 
@@ -107,6 +108,11 @@ struct TimeLine
 /// steps, and at least MinAutomaticFrames frames in all (as many as a steady
 /// input's default), so a short series still plays smoothly.
 constexpr double AutomaticCrossings = 5.0;
+/// An unsteady field whose typical speed carries an element across this
+/// share of the field between two input time steps is warned of: data is
+/// written often enough to follow its flow, so such a speed is a units
+/// mismatch (gfs_wind10m's m/s on a degree grid with time in hours: 19%).
+constexpr double UnitsWarningShare = 0.1;
 constexpr double FrameSteps = 10.0;
 /// A steady input's Duration when the field cannot be probed (or is still).
 constexpr double FallbackDuration = 10.0;

@@ -565,6 +565,29 @@ double VectorField::maxSpeed() const
   return std::sqrt(m);
 }
 
+double VectorField::typicalSpeed() const
+{
+  const std::vector<float>& v = *this->First.velocity;
+  std::vector<double> speeds;
+  speeds.reserve(v.size() / 3);
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+  {
+    const double s2 =
+      double(v[i]) * v[i] + double(v[i + 1]) * v[i + 1] + double(v[i + 2]) * v[i + 2];
+    if (s2 > 0.0 && std::isfinite(s2))
+    {
+      speeds.push_back(s2);
+    }
+  }
+  if (speeds.empty())
+  {
+    return 0.0;
+  }
+  const auto at = speeds.begin() + std::ptrdiff_t(0.9 * double(speeds.size() - 1));
+  std::nth_element(speeds.begin(), at, speeds.end());
+  return std::sqrt(*at);
+}
+
 float dropFlatComponents(
   std::vector<float>& velocity, const std::array<bool, 3>& flat, float& inPlane)
 {

@@ -185,6 +185,10 @@ public:
 
   /// Largest speed over the grid points of the first slice.
   double maxSpeed() const;
+  /// The speed 90% of the first time step's moving points (speed above 0)
+  /// are slower than: a typical fast speed, untouched by a few spikes; 0 for
+  /// a still field.
+  double typicalSpeed() const;
 
   /// The largest velocity component the engine supports (its square, summed
   /// over three components, must stay finite in float), and the largest

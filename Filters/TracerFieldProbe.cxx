@@ -49,12 +49,13 @@ vtkDataObject* updateInput(vtkAlgorithmOutput* connection, vtkInformation* inInf
 /// This process's share, reduced with MAX over processes: top speed; lower
 /// bounds negated and upper bounds per axis; the cell length; points per
 /// axis (this grid's, or the image's whole extent's: each process holds a
-/// piece of an image, a resampled mesh is whole everywhere); read (1 or 0).
-using Share = std::array<double, 12>;
+/// piece of an image, a resampled mesh is whole everywhere); read (1 or 0);
+/// the typical speed (the largest of the processes' own).
+using Share = std::array<double, 13>;
 
 Share localShare(vtkDataObject* data, vtkInformation* inInfo, const GridOf& gridOf)
 {
-  Share local = { 0, -1e300, -1e300, -1e300, -1e300, -1e300, -1e300, 0, 0, 0, 0, 0 };
+  Share local = { 0, -1e300, -1e300, -1e300, -1e300, -1e300, -1e300, 0, 0, 0, 0, 0, 0 };
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   vtkSmartPointer<vtkDataObject> field;
   vtkDataArray* vectors = gridOf(data, field, association);
@@ -71,7 +72,9 @@ Share localShare(vtkDataObject* data, vtkInformation* inInfo, const GridOf& grid
   {
     return local;
   }
-  local[0] = bp::VectorField(grid, slice).maxSpeed();
+  const bp::VectorField sampled(grid, slice);
+  local[0] = sampled.maxSpeed();
+  local[12] = sampled.typicalSpeed();
   const std::array<double, 6> b = grid.bounds();
   using SDDP = vtkStreamingDemandDrivenPipeline;
   const int* whole = field == data && inInfo->Has(SDDP::WHOLE_EXTENT())
@@ -95,13 +98,12 @@ FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int pieces = controller ? std::max(controller->GetNumberOfProcesses(), 1) : 1;
   const int piece = controller ? controller->GetLocalProcessId() : 0;
-  Share share =
-    localShare(updateInput(input, inInfo, inputTimes, piece, pieces), inInfo, gridOf);
+  Share share = localShare(updateInput(input, inInfo, inputTimes, piece, pieces), inInfo, gridOf);
   if (pieces > 1)
   {
     Share global;
-    controller->AllReduce(share.data(), global.data(), vtkIdType(share.size()),
-      vtkCommunicator::MAX_OP);
+    controller->AllReduce(
+      share.data(), global.data(), vtkIdType(share.size()), vtkCommunicator::MAX_OP);
     share = global;
   }
   FieldProbe probe;
@@ -135,6 +137,7 @@ FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
     inInfo->Has(SDDP::WHOLE_EXTENT()) ? inInfo->Get(SDDP::WHOLE_EXTENT()) : nullptr;
   bp::TimeScale& scale = probe.scale;
   scale.maxSpeed = share[0];
+  scale.typicalSpeed = share[12];
   scale.cellLength = share[7];
   double sum = 0.0;
   int axes = 0;

@@ -374,10 +374,18 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
   const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
     framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
     this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
+  // Said once: the pipeline asks for information again after every change
+  // (the Vectors set after the filter is made, say), and the same warning
+  // twice in a row says nothing new.
+  std::vector<std::string>& said = this->Internals->SaidTimeLine;
   for (const std::string& warning : line.warnings)
   {
-    vtkWarningMacro(<< warning);
+    if (std::find(said.begin(), said.end(), warning) == said.end())
+    {
+      vtkWarningMacro(<< warning);
+    }
   }
+  said = line.warnings;
   return line;
 }
 

@@ -122,6 +122,9 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
+  /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
+  /// says each once, not again at the next request for information).
+  std::vector<std::string> SaidTimeLine;
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
   bpvtk::FieldResampler Resampler;

@@ -14,20 +14,30 @@
 #include "pqPipelineSource.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
+#include "vtkPVDataInformation.h"
+#include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMParaViewPipelineControllerWithRendering.h"
 #include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyListDomain.h"
+#include "vtkSMRenderViewProxy.h"
 #include "vtkSMSourceProxy.h"
 #include "vtkSMViewProxy.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace
 {
+/// How far a 2D input's display moves behind the elements' plane, as a share
+/// of its size: far enough for the depth buffer, too little to see.
+constexpr double ContextBehind = 0.01;
+
 /// No array named in Vectors: its default found no input arrays.
 bool lacksVectors(vtkSMProxy* tracer)
 {
@@ -140,22 +150,58 @@ void pqBoundParticleDefaults::shown(pqDataRepresentation* representation)
   for (pqOutputPort* input : tracer->getInputs("Input"))
   {
     pqDataRepresentation* field = input ? input->getRepresentation(view) : nullptr;
-    vtkSMProxy* proxy = field ? field->getProxy() : nullptr;
-    if (!proxy || !field->isVisible() || !proxy->GetProperty("Representation"))
+    if (field && field->isVisible() && field->getProxy()->GetProperty("Representation"))
     {
-      continue;
+      keepAsContext(input, field, view);
     }
-    const char* type = vtkSMPropertyHelper(proxy, "Representation").GetAsString();
-    if (type && !std::strcmp(type, "Slice"))
+  }
+}
+
+void pqBoundParticleDefaults::keepAsContext(
+  pqOutputPort* input, pqDataRepresentation* field, pqView* view)
+{
+  vtkSMProxy* display = field->getProxy();
+  vtkPVDataInformation* info = input->getDataInformation();
+  double bounds[6];
+  info->GetBounds(bounds);
+  int flat = -1;
+  double extent = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double span = bounds[2 * a + 1] - bounds[2 * a];
+    flat = span == 0.0 ? a : flat;
+    extent = std::max(extent, span);
+  }
+  if (flat < 0 || !(extent > 0.0))
+  {
+    // A 3D field: a display that would cover the elements (a surface, a
+    // volume, a mesh's points) becomes its outline; an outline stays.
+    const std::string type = vtkSMPropertyHelper(display, "Representation").GetAsString();
+    auto* pv = vtkSMPVRepresentationProxy::SafeDownCast(display);
+    if (type != "Outline" && type != "Feature Edges" && pv)
     {
-      // A 2D image's default display, a slice in the elements' own plane:
-      // like the opaque surface the tracer's replace_input="2" hides, it
-      // covers the elements. Its reader would also read a time series' step
-      // again in every frame of Play (the slice asks for the view's time, the
-      // tracer for the steps it traces through).
-      vtkNew<vtkSMParaViewPipelineControllerWithRendering> controller;
-      controller->Hide(input->getSourceProxy(), input->getPortNumber(), view->getViewProxy());
+      pv->SetRepresentationType("Outline");
+      display->UpdateVTKObjects();
     }
+    return;
+  }
+  // A 2D field (a slice, a flat surface: a map, say) lies in the elements'
+  // plane: it stays, moved a hundredth of its size away from the camera
+  // along its normal, so the elements draw in front of it.
+  auto* renderView = vtkSMRenderViewProxy::SafeDownCast(view->getViewProxy());
+  vtkCamera* camera = renderView ? renderView->GetActiveCamera() : nullptr;
+  double direction[3] = { 0.0, 0.0, -1.0 };
+  if (camera)
+  {
+    camera->GetDirectionOfProjection(direction);
+  }
+  if (vtkSMProperty* position = display->GetProperty("Position"))
+  {
+    vtkSMPropertyHelper helper(position);
+    double moved[3] = { helper.GetAsDouble(0), helper.GetAsDouble(1), helper.GetAsDouble(2) };
+    moved[flat] += (direction[flat] < 0.0 ? -1.0 : 1.0) * ContextBehind * extent;
+    helper.Set(moved, 3);
+    display->UpdateVTKObjects();
   }
 }
 

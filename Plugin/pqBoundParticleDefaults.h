@@ -14,10 +14,14 @@
  * input updated and those properties set from its data, as if it had been
  * made after the update.
  *
- * On the Apply that first shows a tracer made in the GUI, it also hides the
- * field input's display in that view when it is a slice (a 2D image's
- * default), which lies in the elements' plane and covers them, as the
- * tracer's replace_input="2" hides an opaque surface; an outline stays.
+ * On the Apply that first shows a tracer made in the GUI, it also keeps the
+ * field input's display in that view as context that does not cover the
+ * elements: a 3D input's surface (an Exodus disk, a mesh) becomes its
+ * outline, an outline stays; a 2D input (a slice, a map) stays as it is,
+ * moved just behind the elements' plane, away from the camera, so its
+ * continents or features stay behind the elements. (Its reader, for a time
+ * series, reads a step again in frames of Play where the slice and the
+ * tracer ask for different times.)
  * At startup it installs the pqBoundParticleTickGuard and the
  * pqBoundParticlePlayUpdates.
  */
@@ -27,7 +31,9 @@
 #include <QObject>
 
 class pqDataRepresentation;
+class pqOutputPort;
 class pqPipelineSource;
+class pqView;
 
 class pqBoundParticleDefaults : public QObject
 {
@@ -43,8 +49,13 @@ public:
   static void complete(pqPipelineSource* source);
 
   /// When `representation` is a tracer's first display, made by the GUI's
-  /// Apply: hides the field input's display in that view if it shows a slice.
+  /// Apply: keeps the field input's displays in that view as context.
   static void shown(pqDataRepresentation* representation);
+
+private:
+  /// `field`, the display of `input` in `view`: a 3D field's outline, a 2D
+  /// field's display moved behind the elements' plane.
+  static void keepAsContext(pqOutputPort* input, pqDataRepresentation* field, pqView* view);
 };
 
 #endif

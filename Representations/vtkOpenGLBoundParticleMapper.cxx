@@ -390,6 +390,7 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   if (owed && owner->GetProgress() == reportedBefore && !owner->GetAbortExecute())
   {
     owner->UpdateProgress(1.0); // a run too short to report: the update's end
+    window->MakeCurrent();      // whatever listens may have drawn elsewhere
   }
   if (!I.Replay.ready())
   {

@@ -5,7 +5,9 @@ shared data set and on an Analytic Flow, before and after issue 29.
   input hidden (ParaView's default for a filter's input);
 - after: the defaults now: Along Flow orientation, coloured by Speed (the
   output's active scalars, which the GUI picks on Apply), the input kept as
-  its outline (what the GUI does on Apply; gui.defaults checks both).
+  context: a 3D field's outline, a 2D field's slice a hundredth of its size
+  behind the elements' plane (what the GUI does on Apply; gui.defaults
+  checks both).
 
 Each picture is taken a few frames into the offered time line, as a user sees
 it after pressing Play, from ParaView's default camera.
@@ -53,7 +55,17 @@ def picture(name, after):
     view.ViewTime = time
     view.OrientationAxesVisibility = 0
     if after:
-        Show(reader, view, Representation="Outline")
+        context = Show(reader, view)
+        bounds = reader.GetDataInformation().GetBounds()
+        spans = [bounds[2 * a + 1] - bounds[2 * a] for a in range(3)]
+        if 0.0 in spans:
+            # As the GUI's first Apply: behind the plane, seen from +z.
+            flat = spans.index(0.0)
+            position = [0.0, 0.0, 0.0]
+            position[flat] = -0.01 * max(spans)
+            context.Position = position
+        else:
+            context.SetRepresentationType("Outline")
     display = Show(tracer, view)
     if after:
         ColorBy(display, ("POINTS", "Speed"))

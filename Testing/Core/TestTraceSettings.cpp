@@ -302,3 +302,27 @@ TEST(TraceSettings, AFlatFieldTurnsElementsInItsPlaneOnly)
   fixed.engine.orientation = bp::Orientation::Fixed;
   EXPECT_EQ(bp::resolveSettings(fixed, f).parameters.planeAxis, -1);
 }
+
+TEST(TimeLine, ATypicalSpeedCrossingMuchOfTheFieldBetweenTimeStepsIsSaid)
+{
+  // gfs_wind10m's m/s on a 359-degree grid, time steps 6 hours apart: 11.3
+  // units per hour cross 19% of the field between two of them.
+  bp::TimeScale s;
+  s.maxSpeed = 26.8;
+  s.typicalSpeed = 11.3;
+  s.extent = 359.0;
+  s.cellLength = 1.0;
+  const std::vector<double> times = { 0, 6, 12, 18, 24 };
+  const bp::TimeLine wrong = bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, s);
+  ASSERT_EQ(wrong.warnings.size(), 1u);
+  EXPECT_NE(wrong.warnings[0].find("crosses 19% of the field"), std::string::npos)
+    << wrong.warnings[0];
+  EXPECT_NE(wrong.warnings[0].find("Calculator"), std::string::npos);
+  // Its velocity_deg_per_hour (typical 0.75): 1.3%, nothing said; nor for a
+  // steady field, which has no time steps to cross between.
+  s.maxSpeed = 5.4;
+  s.typicalSpeed = 0.75;
+  EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, s).warnings.empty());
+  s.typicalSpeed = 1e6;
+  EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, s).warnings.empty());
+}

@@ -1,16 +1,28 @@
 # Run from the GUI's Python shell by defaults.xml after the tracer was applied
-# to an Analytic Flow with its defaults: when the flow's outline is still shown
-# and the tracer's display is coloured by Speed, sets the tracer's Coloring
-# Axis to X, which defaults.xml then checks.
+# to an Analytic Flow with its defaults: when the flow's outline is still shown,
+# the tracer's display is coloured by Speed and its FTLE Map (port 1, empty
+# for a random release) has no display in the view, sets the tracer's Coloring
+# Axis to X, which defaults.xml then checks; what failed is printed.
+import os
+
 from paraview.simple import FindSource, GetActiveView, GetDisplayProperties
 
 view = GetActiveView()
 flow = GetDisplayProperties(FindSource("AnalyticFlow1"), view)
 tracer = FindSource("BoundParticleTracer1")
 elements = GetDisplayProperties(tracer, view)
-if (
-    flow.Visibility == 1
-    and flow.Representation == "Outline"
-    and list(elements.ColorArrayName) == ["POINTS", "Speed"]
-):
+# The tracer's ports shown by a visible display in the view.
+shown_ports = []
+for r in view.Representations:
+    given = r.SMProxy.GetProperty("Input")
+    if given is not None and given.GetNumberOfProxies() > 0 and r.Visibility and \
+            given.GetProxy(0) == tracer.SMProxy:
+        shown_ports.append(given.GetOutputPortForConnection(0))
+found = {
+    "outline kept": flow.Visibility == 1 and flow.Representation == "Outline",
+    "coloured by Speed": list(elements.ColorArrayName) == ["POINTS", "Speed"],
+    "FTLE map not shown": shown_ports == [0],
+}
+os.write(2, ("check_defaults: %s\n" % found).encode())  # the terminal, not the shell
+if all(found.values()):
     tracer.ColoringAxis = 0
