@@ -9,6 +9,7 @@
 //
 //   BoundParticlesThreadsBench [--threads 1,2,4,8,16] [--repeats R] [--quick]
 #include "AnalyticFlows.h"
+#include "BenchFields.h"
 #include "Engine.h"
 
 #include <algorithm>
@@ -90,17 +91,8 @@ struct Job
 std::pair<double, double> engineRate(
   const Job& job, const bp::VectorField& field, double dt, unsigned threads, int repeats)
 {
-  bp::Parameters p;
-  p.numberOfElements = job.elements;
-  p.elementSize = 0.04f;
-  const auto b = field.grid().bounds();
-  for (int a = 0; a < 3; ++a)
-  {
-    p.emitterMin[a] = float(b[2 * a]);
-    p.emitterMax[a] = float(b[2 * a + 1]);
-  }
-  p.lifetimeMin = 2.0f;
-  p.lifetimeMax = 4.0f;
+  bp::Parameters p = bench::parametersFor(field, job.elements);
+  p.elementSize = 0.04f; // as the tracer's benches (play_frames.py)
   const bp::ElementTemplate shape = bp::builtinTemplate(job.shape);
   const std::size_t particles = job.elements * shape.particleCount();
   const int steps = int(std::max<std::size_t>(5, 4000000 / particles));
@@ -161,21 +153,10 @@ int main(int argc, char** argv)
   for (unsigned t : wanted)
     (t <= cores ? counts : skipped).push_back(t);
   const int res = 128;
-  bp::GridGeometry g;
-  g.dims = { res, res, res };
-  g.origin = { -1, -1, -1 };
-  const double h = 2.0 / (res - 1);
-  g.spacing = { h, h, h };
-  auto slice = [&](bp::AnalyticFlow flow, double t)
-  {
-    bp::FieldSlice s;
-    s.time = t;
-    s.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t));
-    return s;
-  };
-  const bp::VectorField steady(g, slice(bp::AnalyticFlow::ShearLayer, 0.0));
-  const bp::VectorField unsteady(
-    g, slice(bp::AnalyticFlow::DoubleGyre, 0.0), slice(bp::AnalyticFlow::DoubleGyre, 100.0));
+  const bench::Fields fields = bench::benchFields(res);
+  const double h = fields.spacing;
+  const bp::VectorField& steady = fields.steady;
+  const bp::VectorField& unsteady = fields.unsteady;
   std::vector<Job> jobs = { { "Strip16", bp::BuiltinShape::Strip16, 65536, false },
     { "Strip16", bp::BuiltinShape::Strip16, 65536, true },
     { "Point", bp::BuiltinShape::Point, 1048576, false } };
