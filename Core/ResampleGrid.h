@@ -28,6 +28,9 @@ struct ResampleGrid
   std::array<double, 3> origin = { 0, 0, 0 };
   std::array<double, 3> spacing = { 1, 1, 1 };
   std::string error; ///< why no grid could be chosen; empty on success
+  /// What the automatic choice had to give up (a thin axis, the cap), for a
+  /// warning; empty when it chose freely.
+  std::string note;
 
   std::size_t pointCount() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   /// Point (i, j, k) of the grid, i fastest, as a linear index.
@@ -49,10 +52,10 @@ constexpr double MaxResamplePoints = 2147483647.0;
 /**
  * The grid over `bounds` (xmin, xmax, ymin, ymax, zmin, zmax; the whole
  * data's) for a mesh of `cellCount` cells. `requested` gives the points per
- * axis; 0 on an axis (all 0 by default) chooses that axis automatically, and
- * an axis along which the data is flat (extent at most 1e-9 of the largest)
- * always has one point. A `surface` (a mesh of 2D cells) lies in a plane of
- * constant X, Y or Z: its thinnest axis is flat if its extent is at most
+ * axis; 0 on an axis (all 0 by default) chooses that axis automatically
+ * (automaticDimensions()), and an axis along which the data is flat (extent
+ * at most 1e-9 of the largest) always has one point. A `surface` (a mesh of 2D cells) lies in a
+ * plane of constant X, Y or Z: its thinnest axis is flat if its extent is at most
  * MaxSurfaceThickness of the largest (rounding or a slight tilt), and an error
  * says what to do otherwise. Also an error for bounds that are empty or not
  * finite, a requested count below 2 on an axis with extent (other than 0), or
@@ -62,6 +65,21 @@ constexpr double MaxResamplePoints = 2147483647.0;
 ResampleGrid chooseResampleGrid(const std::array<double, 6>& bounds, double cellCount,
   const std::array<int, 3>& requested, bool surface = false,
   double automaticCap = double(MaxAutomaticResamplePoints));
+
+/**
+ * The points per axis: `requested` where set, 1 along an axis that does not
+ * span, and on the others about `cellCount` points in all over the spanning
+ * `volume`, in cells close to cubes. An axis that would get fewer than
+ * MinAutomaticResampleAxisPoints (a slab's thickness, a rod's width) gets
+ * that many, and the grid then keeps to at most 8 times the cells for each
+ * such axis (the others are not refined to make up for it: a slab of 40,000
+ * hexahedra gets about 200 x 200 x 8); always at most `cap` points (the cap,
+ * or what memory allows), coarsening the automatic axes together, none below
+ * the minimum. `note` says what was given up, when anything was.
+ */
+std::array<int, 3> automaticDimensions(const std::array<double, 3>& extent,
+  const std::array<bool, 3>& spans, const std::array<int, 3>& requested, double cellCount,
+  double volume, int spanning, double cap, std::string& note);
 
 /// How thick, relative to its largest extent, a surface mesh may be and still
 /// be resampled as flat.

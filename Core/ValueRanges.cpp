@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <type_traits>
+#include <utility>
 
 namespace bp
 {
@@ -429,6 +430,10 @@ std::vector<ValueRanges> writeTogether(const std::vector<WrittenArray>& arrays, 
     total.push_back(scannerOf(a));
   }
   std::mutex merging;
+  // Each range's ranges, merged in the ranges' order once all are done: the
+  // same result whichever thread took which range when (a -0 and a 0 are
+  // different ends to VTK).
+  std::vector<std::pair<std::size_t, std::vector<std::unique_ptr<Scanner>>>> parts;
   // About 2,048 tuples a block: written and scanned while in the core's cache.
   const std::size_t block = std::max<std::size_t>(1, 2048 / align) * align;
   run(tuples / align,
@@ -448,11 +453,17 @@ std::vector<ValueRanges> writeTogether(const std::vector<WrittenArray>& arrays, 
         }
       }
       std::lock_guard<std::mutex> lock(merging);
-      for (std::size_t k = 0; k < part.size(); ++k)
-      {
-        total[k]->merge(*part[k]);
-      }
+      parts.emplace_back(first, std::move(part));
     });
+  std::sort(
+    parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& part : parts)
+  {
+    for (std::size_t k = 0; k < part.second.size(); ++k)
+    {
+      total[k]->merge(*part.second[k]);
+    }
+  }
   std::vector<ValueRanges> r;
   for (const auto& t : total)
   {

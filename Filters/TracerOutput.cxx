@@ -437,6 +437,18 @@ vtkSmartPointer<vtkDataArray> OutputStorage::pointData(int dataType, vtkIdType c
   return this->take(this->Kept.back(), dataType, 3, count);
 }
 
+vtkDataArray* OutputStorage::unchanged(const bp::OutputArray& row, std::uint64_t key) const
+{
+  const auto& last = this->Unchanged[std::size_t(row.id)];
+  return key != 0 && last.first == key ? last.second.Get() : nullptr;
+}
+
+void OutputStorage::setUnchanged(const bp::OutputArray& row, std::uint64_t key, vtkDataArray* array)
+{
+  // Without a key nothing is held: the array's memory is free to be reused.
+  this->Unchanged[std::size_t(row.id)] = { key, key != 0 ? array : nullptr };
+}
+
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
   const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run)
 {
@@ -447,21 +459,32 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
     vtkIdType(engine.particleCount() + trail.size() * engine.particlesPerElement());
   FillContext context{ engine, field, frame, run, trail, {} };
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;
+  std::array<std::uint64_t, std::size_t(bp::OutputArrayId::Count)> keys{};
+  std::array<bool, std::size_t(bp::OutputArrayId::Count)> shownAgain{};
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     // Age only with trails: without, it would be 0 everywhere.
     const bool trails = !engine.trailTimes().empty();
+    const std::size_t r = std::size_t(row.id);
+    keys[r] = unchangedKey(row, context);
     if (frame.wants(row) && (row.source != bp::ArraySource::TrailAge || trails))
     {
-      arrays.push_back(storage.array(row, points));
-      context.arrays[std::size_t(row.id)] = arrays.back();
+      vtkDataArray* last = storage.unchanged(row, keys[r]);
+      shownAgain[r] = last != nullptr;
+      arrays.push_back(last ? vtkSmartPointer<vtkDataArray>(last) : storage.array(row, points));
+      context.arrays[r] = arrays.back();
     }
   }
   // In the table's order: a row may read the arrays of rows before it.
   vtkPointData* pd = output->GetPointData();
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    if (vtkDataArray* array = context.array(row.id))
+    vtkDataArray* array = context.array(row.id);
+    if (array && shownAgain[std::size_t(row.id)])
+    {
+      addToPointData(pd, row, array); // its values and ranges as they were
+    }
+    else if (array)
     {
       writes.push_back({ array,
         [&row, array, &context](std::size_t begin, std::size_t end)
@@ -471,6 +494,12 @@ void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp:
     }
   }
   writeAll(writes, engine.particleCount(), engine.particlesPerElement(), run);
+  // Once written: the arrays that may be shown again as they are.
+  for (const bp::OutputArray& row : bp::outputArrays())
+  {
+    vtkDataArray* array = context.array(row.id);
+    storage.setUnchanged(row, array ? keys[std::size_t(row.id)] : 0, array);
+  }
 }
 
 void fillRangeOutput(

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 class vtkCellArray;
@@ -60,7 +61,10 @@ struct OutputFrame
  * else holds any more (a display's copy of the output lets go of it when it
  * updates) is written again in place, so a frame does not pay the kernel for
  * tens of megabytes of fresh pages. Two of each are kept: the one a display
- * still holds and the one being written.
+ * still holds and the one being written. An array whose values depend only
+ * on what does not change from frame to frame (ElementId, ParticleIndex;
+ * Layer and Radius until an element is released again) is shown again as it
+ * is, not written at all.
  */
 class OutputStorage
 {
@@ -73,6 +77,11 @@ public:
   vtkSmartPointer<vtkDataArray> array(const bp::OutputArray& row, vtkIdType tuples);
   /// Points' storage of `dataType` (VTK_FLOAT or VTK_DOUBLE) for `count` points.
   vtkSmartPointer<vtkDataArray> pointData(int dataType, vtkIdType count);
+  /// The array last shown for `row` with the same `key` (unchangedKey()),
+  /// values and ranges as they were; null when there is none (key 0: never).
+  vtkDataArray* unchanged(const bp::OutputArray& row, std::uint64_t key) const;
+  /// Keeps `array`, written, as `row`'s for `key` (0: keeps none).
+  void setUnchanged(const bp::OutputArray& row, std::uint64_t key, vtkDataArray* array);
   /// Forgets the cells (the shape may have changed).
   void reset() { this->Cells = nullptr; }
 
@@ -90,6 +99,10 @@ private:
   /// Per array of the table (by id), then the points' storage last.
   std::array<std::vector<vtkSmartPointer<vtkDataArray>>, std::size_t(bp::OutputArrayId::Count) + 1>
     Kept;
+  /// Per array of the table: the last one written with a key, and the key.
+  std::array<std::pair<std::uint64_t, vtkSmartPointer<vtkDataArray>>,
+    std::size_t(bp::OutputArrayId::Count)>
+    Unchanged;
 };
 
 /// One point per particle with every array of the table the frame wants,

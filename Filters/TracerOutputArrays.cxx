@@ -214,13 +214,82 @@ void writeTemplateIndex(const bp::OutputArray& row, vtkDataArray* out, const Fil
   {
     int* index = static_cast<vtkIntArray*>(out)->GetPointer(0);
     const std::size_t n = c.engine.particlesPerElement();
-    for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t e = begin / n; e < end / n; ++e)
     {
-      index[i] = int(i % n);
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        index[e * n + i] = int(i);
+      }
     }
   }
 }
+
+/// FNV-1a over 64-bit words.
+class Key
+{
+public:
+  Key& add(std::uint64_t word)
+  {
+    this->Value = (this->Value ^ word) * 1099511628211ull;
+    return *this;
+  }
+  Key& add(double value)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, &value, sizeof(word));
+    return this->add(word);
+  }
+  template <typename T>
+  Key& add(const std::vector<T>& values)
+  {
+    const std::size_t bytes = values.size() * sizeof(T);
+    const auto* p = reinterpret_cast<const unsigned char*>(values.data());
+    this->add(std::uint64_t(bytes));
+    std::size_t k = 0;
+    for (; k + 8 <= bytes; k += 8)
+    {
+      std::uint64_t word;
+      std::memcpy(&word, p + k, 8);
+      this->add(word);
+    }
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, p + k, bytes - k);
+    return this->add(tail);
+  }
+  std::uint64_t value() const { return this->Value | 1; } // never 0
+
+private:
+  std::uint64_t Value = 1469598103934665603ull;
+};
 } // namespace
+
+std::uint64_t unchangedKey(const bp::OutputArray& row, const FillContext& c)
+{
+  if (!c.trail.empty())
+  {
+    return 0;
+  }
+  Key key;
+  key.add(std::uint64_t(row.id)).add(std::uint64_t(c.engine.particlesPerElement()));
+  switch (row.id)
+  {
+    case bp::OutputArrayId::ParticleIndex:
+      return key.add(std::uint64_t(c.engine.elementCount())).value();
+    case bp::OutputArrayId::ElementId:
+      return key.add(c.engine.elementIds()).value();
+    case bp::OutputArrayId::Layer:
+    case bp::OutputArrayId::Radius:
+      // The release centres, in the frame they are measured in.
+      key.add(c.engine.initialCenters()).add(std::uint64_t(c.frame.coloringAxis));
+      for (int a = 0; a < 3; ++a)
+      {
+        key.add(c.frame.offset[a]).add(c.frame.domain[2 * a]).add(c.frame.domain[2 * a + 1]);
+      }
+      return key.value();
+    default:
+      return 0;
+  }
+}
 
 std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
 {

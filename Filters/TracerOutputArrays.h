@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 class vtkDataArray;
@@ -49,6 +50,15 @@ struct FillContext
 
   vtkDataArray* array(bp::OutputArrayId id) const { return this->arrays[std::size_t(id)]; }
 };
+
+/**
+ * For a row whose values do not change while its inputs stay (ElementId,
+ * ParticleIndex, Layer, Radius), a key of those inputs (the elements' ids,
+ * the template's size, the release centres and the frame they are measured
+ * in): the last output's array is shown again while the key stays. 0 for the
+ * other rows, and for every row when trails add tuples.
+ */
+std::uint64_t unchangedKey(const bp::OutputArray& row, const FillContext& c);
 
 /// Writes particles [begin, end) of `out` as its row's source says (the
 /// block's ends are whole elements).

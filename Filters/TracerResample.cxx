@@ -18,7 +18,6 @@
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
-#include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMultiProcessController.h"
@@ -29,7 +28,6 @@
 #include "vtkPolyData.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticCellLocator.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -140,20 +138,27 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
   return std::string();
 }
 
-/// The range of grid indices along `a` within [low, high] (empty: first > last).
-std::array<int, 2> indexRange(const bp::ResampleGrid& g, int a, double low, double high)
+/// What a mesh whose `bounds` reach beyond the grid (chosen at an earlier
+/// time step) loses; empty when they do not.
+std::string beyondGrid(const bp::ResampleGrid& g, const std::array<double, 6>& bounds)
 {
-  if (g.dims[a] == 1)
+  std::ostringstream say;
+  for (int a = 0; a < 3; ++a)
   {
-    const double slack = 1e-9 * std::max(1.0, std::abs(g.origin[a]) + (high - low));
-    return g.origin[a] >= low - slack && g.origin[a] <= high + slack ? std::array<int, 2>{ 0, 0 }
-                                                                     : std::array<int, 2>{ 1, 0 };
+    const double last = g.origin[a] + (g.dims[a] - 1) * g.spacing[a];
+    const double slack = 1e-9 * std::max({ 1.0, std::abs(g.origin[a]), std::abs(last) });
+    if (g.dims[a] > 1 && (bounds[2 * a] < g.origin[a] - slack || bounds[2 * a + 1] > last + slack))
+    {
+      say << (say.str().empty() ? "" : " and ") << "XYZ"[a];
+    }
   }
-  const double h = g.spacing[a];
-  // A point on the block's boundary is in it: round inwards by a hair.
-  const int first = int(std::ceil((low - g.origin[a]) / h - 1e-6));
-  const int last = int(std::floor((high - g.origin[a]) / h + 1e-6));
-  return { std::max(first, 0), std::min(last, g.dims[a] - 1) };
+  if (say.str().empty())
+  {
+    return std::string();
+  }
+  return "The mesh of a later time step reaches beyond the resampled grid along " + say.str() +
+    ": the grid spans the mesh of the first time step read, and cells outside it are left out "
+    "(outside the flow).";
 }
 
 /// Collective sum, min or max in place (nothing without a controller).
@@ -172,9 +177,11 @@ void allReduce(vtkMultiProcessController* controller, std::vector<T>& values, in
 namespace bpvtk
 {
 
-// The vectors and mask (13 bytes), the owner in parallel (4), a sample, and
-// the weights of a cell of up to 8 points (12 bytes each).
-const double FieldResampler::BytesPerGridPoint = 17.0 + sizeof(Sample) + 96.0;
+// The vectors and mask (13 bytes), the owner in parallel (4), while the cells
+// are searched the winning cell and its weights (8 + 32) and whether a block
+// took the point (1), then a sample and the weights of a cell of up to 8 points
+// (12 bytes each).
+const double FieldResampler::BytesPerGridPoint = 58.0 + sizeof(Sample) + 96.0;
 
 bool FieldResampler::needed(vtkDataObject* input)
 {
@@ -213,11 +220,13 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   std::vector<int> same(1, key == this->GeometryKey && !this->Inside.empty() ? 1 : 0);
   allReduce(controller, same, vtkCommunicator::MIN_OP);
   this->Kept = same[0] == 1;
+  // The same mesh keeps its grid, chosen anew or not.
+  this->GridKept = this->GridKept || this->Kept;
   if (!this->Kept)
   {
     this->clear();
-    double thickness = 0.0;
-    std::string error = this->chooseGrid(selected, requested, controller, thickness);
+    double offPlane = 0.0;
+    std::string error = this->chooseGrid(selected, requested, controller, offPlane);
     if (error.empty())
     {
       error = agreeOnError(controller,
@@ -229,13 +238,17 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
     {
       return error;
     }
-    // A surface's grid plane lies mid-way through its thickness (rounding, a
-    // slight tilt): its cells are found that far off their plane.
-    this->locate(selected.blocks, 0.5 * thickness, run);
+    // A surface's cells are found as far off the grid's plane as they lie
+    // (rounding, a slight tilt: the plane lies mid-way through its thickness).
+    this->locate(selected.blocks, offPlane, run);
     this->keepOwnSamples(controller);
     this->GeometryKey = key;
   }
   this->Hashed = std::move(hashed);
+  for (const std::string* note : { &this->GridNote, &this->BeyondNote })
+  {
+    warning += warning.empty() || note->empty() ? *note : " " + *note;
+  }
   std::vector<float> values;
   this->interpolate(selected.blocks, selected.cellVectors, run, values);
   allReduce(controller, values, vtkCommunicator::SUM_OP);
@@ -310,7 +323,7 @@ FieldResampler::Selection FieldResampler::select(
 }
 
 std::string FieldResampler::chooseGrid(const Selection& selected,
-  const std::array<int, 3>& requested, vtkMultiProcessController* controller, double& thickness)
+  const std::array<int, 3>& requested, vtkMultiProcessController* controller, double& offPlane)
 {
   // Bounds as (-min, max) pairs reduced by max; the cells counted once (no ghosts).
   std::vector<double> extremes(6, -1e300);
@@ -357,12 +370,25 @@ std::string FieldResampler::chooseGrid(const Selection& selected,
   // (every process decides alike from the smallest share).
   std::vector<double> affordable(1, 0.5 * bp::allocatableBytes() / BytesPerGridPoint);
   allReduce(controller, affordable, vtkCommunicator::MIN_OP);
-  this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface, affordable[0]);
-  thickness = 0.0;
+  if (!this->GridKept || requested != this->GridRequested)
+  {
+    // Chosen once while time steps hold it: an adapting mesh (other cells,
+    // another point count at each step) is resampled onto the same grid.
+    this->Grid = bp::chooseResampleGrid(bounds, cells[0], requested, surface, affordable[0]);
+    this->GridKept = this->Grid.error.empty();
+    this->GridRequested = requested;
+    this->GridNote = this->Grid.note;
+  }
+  offPlane = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    thickness = surface && this->Grid.dims[a] == 1 ? bounds[2 * a + 1] - bounds[2 * a] : thickness;
+    if (surface && this->Grid.dims[a] == 1)
+    {
+      offPlane = std::max(std::abs(bounds[2 * a] - this->Grid.origin[a]),
+        std::abs(bounds[2 * a + 1] - this->Grid.origin[a]));
+    }
   }
+  this->BeyondNote = beyondGrid(this->Grid, bounds);
   return this->Grid.error;
 }
 
@@ -385,111 +411,6 @@ void FieldResampler::fillImage(const std::vector<float>& values, vtkImageData* i
   image->GetPointData()->AddArray(velocity);
   image->GetPointData()->SetVectors(velocity);
   image->GetPointData()->AddArray(mask);
-}
-
-void FieldResampler::locate(
-  const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run)
-{
-  std::vector<std::uint8_t> taken(this->Grid.pointCount(), 0);
-  for (std::size_t b = 0; b < blocks.size(); ++b)
-  {
-    this->locateBlock(blocks[b], std::uint32_t(b), offPlane, taken, run);
-  }
-}
-
-void FieldResampler::locateBlock(vtkDataSet* block, std::uint32_t b, double offPlane,
-  std::vector<std::uint8_t>& taken, const bp::RangeRunner& run)
-{
-  const bp::ResampleGrid& g = this->Grid;
-  double bounds[6];
-  block->GetBounds(bounds);
-  std::array<std::array<int, 2>, 3> range;
-  for (int a = 0; a < 3; ++a)
-  {
-    range[a] = indexRange(g, a, bounds[2 * a], bounds[2 * a + 1]);
-  }
-  if (range[0][0] > range[0][1] || range[1][0] > range[1][1] || range[2][0] > range[2][1])
-  {
-    return;
-  }
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(block);
-  locator->BuildLocator();
-  const int rowsY = range[1][1] - range[1][0] + 1;
-  const std::size_t rows = std::size_t(rowsY) * std::size_t(range[2][1] - range[2][0] + 1);
-  const int maxCellSize = std::max(1, block->GetMaxCellSize());
-  // Points on a surface mesh lie in its plane only up to rounding.
-  const double tolerance = offPlane + 1e-9 * std::max(block->GetLength(), 1e-300);
-  // Each range of grid rows gathers its samples apart; they are joined in
-  // row order, so the samples come out the same whatever the threads did.
-  std::mutex joining;
-  std::vector<std::pair<std::size_t, Found>> parts;
-  run(rows,
-    [&](std::size_t begin, std::size_t end)
-    {
-      Found found;
-      vtkNew<vtkGenericCell> cell;
-      std::vector<double> weights(static_cast<std::size_t>(maxCellSize));
-      for (std::size_t row = begin; row < end; ++row)
-      {
-        const int j = range[1][0] + int(row % std::size_t(rowsY));
-        const int k = range[2][0] + int(row / std::size_t(rowsY));
-        for (int i = range[0][0]; i <= range[0][1]; ++i)
-        {
-          const std::size_t p = g.index(i, j, k);
-          if (taken[p])
-          {
-            continue;
-          }
-          double x[3] = { g.origin[0] + i * g.spacing[0], g.origin[1] + j * g.spacing[1],
-            g.origin[2] + k * g.spacing[2] };
-          int subId = 0;
-          double pcoords[3];
-          const vtkIdType c =
-            locator->FindCell(x, tolerance * tolerance, cell, subId, pcoords, weights.data());
-          if (c < 0)
-          {
-            continue;
-          }
-          taken[p] = 1;
-          found.add({ std::uint32_t(p), b, c, 0, 0 }, cell, weights);
-        }
-      }
-      std::lock_guard<std::mutex> lock(joining);
-      parts.emplace_back(begin, std::move(found));
-    });
-  std::sort(
-    parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (auto& part : parts)
-  {
-    this->append(part.second);
-  }
-}
-
-void FieldResampler::Found::add(
-  Sample sample, vtkGenericCell* cell, const std::vector<double>& cellWeights)
-{
-  const vtkIdType n = cell->GetNumberOfPoints();
-  sample.first = std::uint64_t(this->points.size());
-  sample.count = std::uint32_t(n);
-  this->samples.push_back(sample);
-  for (vtkIdType q = 0; q < n; ++q)
-  {
-    this->points.push_back(cell->GetPointId(q));
-    this->weights.push_back(float(cellWeights[std::size_t(q)]));
-  }
-}
-
-void FieldResampler::append(const Found& found)
-{
-  const std::uint64_t shift = this->WeightPoints.size();
-  for (Sample s : found.samples)
-  {
-    s.first += shift;
-    this->Samples.push_back(s);
-  }
-  this->WeightPoints.insert(this->WeightPoints.end(), found.points.begin(), found.points.end());
-  this->Weights.insert(this->Weights.end(), found.weights.begin(), found.weights.end());
 }
 
 void FieldResampler::keepOwnSamples(vtkMultiProcessController* controller)

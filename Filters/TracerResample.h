@@ -6,10 +6,17 @@
  * partitioned, AMR), point or cell vectors.
  *
  * The grid is bp::chooseResampleGrid()'s over the whole data's bounds. Each
- * grid point is located in the mesh with VTK's vtkStaticCellLocator and takes
- * the interpolation weights of the cell that holds it (vtkProbeFilter's rule,
- * which vtkResampleToImage applies: point vectors interpolated with the cell's
- * weights, cell vectors the cell's value). A point in no cell lies outside the
+ * grid point takes the interpolation weights of the cell that holds it
+ * (vtkProbeFilter's rule, which vtkResampleToImage applies: point vectors
+ * interpolated with the cell's weights, cell vectors the cell's value). The
+ * cells are searched cell by cell, in parallel: each cell tests the grid
+ * points within its bounds with VTK's own EvaluatePosition, the test
+ * vtkStaticCellLocator::FindCell makes, so a point is inside exactly where a
+ * FindCell per point finds it; where several cells hold a point (on a shared
+ * face, or within a tetrahedron's 0.001 parametric tolerance of one) the
+ * lowest-numbered cell gives its weights, the same on every VTK and thread
+ * count (the locator took whichever its bin's unstable sort put first). A
+ * point in no cell lies outside the
  * flow's domain: vtkValidPointMask 0, as ParaView's resamplers write it, so the
  * masked-grid machinery (releases, resets, both engines) applies unchanged.
  *
@@ -37,6 +44,7 @@
 #include "vtkWeakPointer.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,7 +52,6 @@
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
-class vtkGenericCell;
 class vtkImageData;
 class vtkMultiProcessController;
 
@@ -88,6 +95,14 @@ public:
   const std::string& arrayName() const { return this->ArrayName; }
   /// Forgets the kept weights.
   void clear();
+  /**
+   * The grid of the next resample is chosen anew. Until then it is kept,
+   * whatever the mesh: the tracer's time steps must share one grid, and an
+   * adapting mesh (cells refined or coarsened, another point count) or a
+   * moving one is resampled at every time step onto the grid chosen for the
+   * first one read. The tracer calls this while it holds no time step.
+   */
+  void forgetGrid() { this->GridKept = false; }
   /// Release Weights: the input's array (point data with point vectors,
   /// cell data with cell vectors; its magnitude) that resample() also puts
   /// on the grid under that name, one float per point; empty for none.
@@ -128,14 +143,15 @@ private:
   /// The blocks of `input` to sample, and the array's name (ArrayName).
   Selection select(
     vtkDataObject* input, const VectorsChoice& vectors, vtkMultiProcessController* controller);
-  /// Grid: chooseResampleGrid() over every process's blocks; `thickness` is a
-  /// surface's extent along its flat axis. Returns the error, if any.
+  /// Grid: chooseResampleGrid() over every process's blocks, or the grid
+  /// kept (forgetGrid()); `offPlane`: how far a surface's cells lie off the
+  /// grid's plane. Returns the error, if any.
   /// The Release Weights interpolated onto the grid as the vectors are
   /// (zero where a block lacks the array); `found` whether any block has it.
   void interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
     const bp::RangeRunner& run, std::vector<float>& values, bool& found) const;
   std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
-    vtkMultiProcessController* controller, double& thickness);
+    vtkMultiProcessController* controller, double& offPlane);
   /// What a range of grid rows located in one block: its samples and their
   /// cells' point ids and weights (Sample::first indexes these).
   struct Found
@@ -143,16 +159,28 @@ private:
     std::vector<Sample> samples;
     std::vector<vtkIdType> points;
     std::vector<float> weights;
-    /// Appends `sample` (its point, block and cell) with `cell`'s points and
-    /// their `cellWeights`.
-    void add(Sample sample, vtkGenericCell* cell, const std::vector<double>& cellWeights);
+    /// Appends `sample` (its point, block and cell) with its cell's `n`
+    /// point `ids` and their `cellWeights`.
+    void add(Sample sample, vtkIdType n, const vtkIdType* ids, const float* cellWeights);
   };
   /// Finds each grid point's cell (the first block's that holds it) and
-  /// weights; a surface's cells up to `offPlane` from the grid's plane.
+  /// weights; a surface's cells up to `offPlane` from the grid's plane
+  /// (TracerResampleLocate.cxx).
   void locate(const std::vector<vtkDataSet*>& blocks, double offPlane, const bp::RangeRunner& run);
-  /// locate() in block `b`: the grid points it holds that no earlier block
-  /// took (`taken`, per grid point).
+  /**
+   * locate() in block `b`: the grid points it holds that no earlier block
+   * took (`taken`, per grid point). Cell by cell, in parallel: each cell
+   * tests the grid points within its bounds (EvaluatePosition, as
+   * vtkStaticCellLocator::FindCell tests a cell whose bounds hold the point),
+   * and of the cells that hold a point the lowest-numbered wins.
+   */
   void locateBlock(vtkDataSet* block, std::uint32_t b, double offPlane,
+    std::vector<std::uint8_t>& taken, const bp::RangeRunner& run);
+  /// locateBlock()'s samples: the grid points of the box `range` that have
+  /// an `owner` (per point of the box; its `weights`, `stride` per point),
+  /// marked taken.
+  void keepFound(vtkDataSet* block, std::uint32_t b, const std::array<std::array<int, 2>, 3>& range,
+    const std::atomic<vtkIdType>* owner, const float* weights, std::size_t stride,
     std::vector<std::uint8_t>& taken, const bp::RangeRunner& run);
   /// Appends a range's samples, shifted past the weights already held.
   void append(const Found& found);
@@ -167,6 +195,10 @@ private:
   void fillImage(const std::vector<float>& values, vtkImageData* image) const;
 
   bp::ResampleGrid Grid;
+  bool GridKept = false;              ///< forgetGrid()
+  std::array<int, 3> GridRequested{}; ///< the Resample Dimensions it was chosen for
+  std::string GridNote;               ///< what the automatic choice gave up (a warning)
+  std::string BeyondNote;             ///< the last mesh reached beyond the grid (a warning)
   std::uint64_t GeometryKey = 0;
   std::vector<HashedArray> Hashed; ///< the arrays of the last key
   bool Kept = false;

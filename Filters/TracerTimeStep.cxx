@@ -223,11 +223,17 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
   vtkNew<vtkImageData> whole;
   std::string warning;
   this->Resampler.setReleaseWeights(config.releaseWeights);
+  if (this->Cache.size() == 0)
+  {
+    this->Resampler.forgetGrid(); // no time step holds the last one
+  }
   const std::string error = this->Resampler.resample(input, config.vectors,
     config.resampleDimensions, this->Layout.Controller, this->Steppers.runner(), whole, warning);
-  if (!warning.empty() && !this->WarnedResample)
+  if (!warning.empty() && warning != this->WarnedResample)
   {
-    this->WarnedResample = true; // once per configuration, as the mask's
+    // Once per configuration, as the mask's, and again only when it says
+    // something new (a later time step's mesh beyond the grid).
+    this->WarnedResample = warning;
     vtkWarningWithObjectMacro(this->Owner, << warning);
   }
   if (error.empty())
@@ -245,6 +251,10 @@ vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
     global && global->GetNumberOfProcesses() > 1 ? global : nullptr;
   vtkNew<vtkImageData> image;
   std::string warning;
+  if (this->Cache.size() == 0)
+  {
+    this->Resampler.forgetGrid(); // no time step holds the last one
+  }
   if (!this->Resampler
          .resample(data, config.vectors, config.resampleDimensions, controller,
            this->Steppers.runner(), image, warning)

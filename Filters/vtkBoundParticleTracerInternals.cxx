@@ -57,7 +57,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   ++this->Configuration;
   this->WarnedNonFinite = false;
   this->WarnedMask = false;
-  this->WarnedResample = false;
+  this->WarnedResample.clear();
   this->WarnedWeights = false;
   this->WarnedSeeds = false;
   this->WarnedOutOfPlane = false;

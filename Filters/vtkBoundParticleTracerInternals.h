@@ -114,9 +114,10 @@ struct vtkBoundParticleTracer::vtkInternals
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
-  bool WarnedNonFinite = false;  ///< the input's NaN share was reported for this configuration
-  bool WarnedMask = false;       ///< an unusable vtkValidPointMask was reported for it
-  bool WarnedResample = false;   ///< blocks without the Vectors were reported for it
+  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
+  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
+  std::string
+    WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
   bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it

@@ -12,6 +12,7 @@
 // FILE also writes it as CSV; --pass-times adds each pass's GPU time per
 // step for every row.
 #include "AnalyticFlows.h"
+#include "BenchFields.h"
 #include "CounterHash.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -89,21 +90,7 @@ struct Config
   std::size_t elements;
 };
 
-bp::Parameters parametersFor(const bp::VectorField& field, std::size_t elements)
-{
-  bp::Parameters p;
-  p.numberOfElements = elements;
-  p.elementSize = 0.05f;
-  const auto b = field.grid().bounds();
-  for (int a = 0; a < 3; ++a)
-  {
-    p.emitterMin[a] = float(b[2 * a]);
-    p.emitterMax[a] = float(b[2 * a + 1]);
-  }
-  p.lifetimeMin = 2.0f;
-  p.lifetimeMax = 4.0f;
-  return p;
-}
+using bench::parametersFor;
 
 /// The plain reference's own sampler, written apart from the engine's: a
 /// uniform grid, trilinear in space and linear in time, nothing else (no
@@ -453,21 +440,10 @@ int main(int argc, char** argv)
   if (!parse(argc, argv, o))
     return 2;
   const int resolution = o.resolution;
-  bp::GridGeometry g;
-  g.dims = { resolution, resolution, resolution };
-  g.origin = { -1, -1, -1 };
-  const double h = 2.0 / (resolution - 1);
-  g.spacing = { h, h, h };
-  auto slice = [&](bp::AnalyticFlow flow, double t)
-  {
-    bp::FieldSlice s;
-    s.time = t;
-    s.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t));
-    return s;
-  };
-  const bp::VectorField steady(g, slice(bp::AnalyticFlow::ShearLayer, 0.0));
-  const bp::VectorField unsteady(
-    g, slice(bp::AnalyticFlow::DoubleGyre, 0.0), slice(bp::AnalyticFlow::DoubleGyre, 100.0));
+  const bench::Fields fields = bench::benchFields(resolution);
+  const double h = fields.spacing;
+  const bp::VectorField& steady = fields.steady;
+  const bp::VectorField& unsteady = fields.unsteady;
 
   bp::setGpuMessageSink(keepMessage);
   bp::HeadlessContext context;

@@ -23,10 +23,21 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
   --plugin "$plugin" \
   --csv "$out/play_frames.csv" | tee "$out/play_frames.txt"
 /usr/bin/python3 "$root/bench/plot_play.py" "$out/play_frames.csv" "$out/play_frames.png"
+# The CPU output against the engine's step, array by array; the engine on 1 to 16
+# threads (those this machine has); the mesh resampler's first and kept resample.
+"$build/bin/BoundParticlesOutputBench" | tee "$out/output.txt"
+"$build/bin/BoundParticlesThreadsBench" | tee "$out/threads.txt"
+"$build/bin/BoundParticlesResampleBench" | tee "$out/resample.txt"
 # An unstructured mesh of ~1 M tetrahedra: first frame (resample included) and Play,
-# beside an image of the same size and ParaView's Particle Tracer on the mesh.
+# beside an image of the same size and ParaView's Particle Tracer on the mesh; then
+# hexahedra cut in five, and a mesh whose points move at every step.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/unstructured.py" \
   --plugin "$plugin" | tee "$out/unstructured.txt"
+for mesh in "--cut 5" "--moving"; do
+  # shellcheck disable=SC2086 # two words: an option and its value
+  bash "$root/scripts/with-display.sh" pvpython "$root/bench/unstructured.py" \
+    --plugin "$plugin" $mesh | tee -a "$out/unstructured.txt"
+done
 # Steps per second under pvbatch with 1, 2 and 4 MPI ranks (and 1 rank of 2 threads).
 bash "$root/scripts/with-display.sh" /usr/bin/python3 "$root/bench/parallel_scaling.py" \
   --plugin "$plugin" | tee "$out/parallel_scaling.txt"
@@ -42,4 +53,4 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/first_minutes.py" \
   --plugin "$plugin" --data "$root/../shared/data" --pictures "$out/first-minutes"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
 bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
-echo "bench: wrote $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt"

@@ -6,9 +6,10 @@ The data, generated here and written to a temporary folder as one file per
 time step with a .pvd (so both tracers read it as a user's would, a reader
 re-reading a step it does not hold):
 - mesh: the box [0,2] x [0,1] x [0,1], 2n x n x n hexahedra of 6 tetrahedra
-  each (--cells, about 1 M by default), interior points jittered by up to a
-  tenth of a cell so that no cell lines up with the axes; the same points and
-  cells at every time step, only the vectors change;
+  each (--cells, about 1 M by default; --cut 5 for five), interior points
+  jittered by up to a tenth of a cell (--jitter) so that no cell lines up
+  with the axes; the same points and cells at every time step, only the
+  vectors change (--moving: the points jittered anew at every step);
 - image: a uniform grid with the same points per axis (so the same number of
   points) over the same box;
 - flow: the unsteady double gyre (the plugin's Analytic Flow), with a weak
@@ -74,11 +75,20 @@ parser.add_argument("--frames-per-step", type=int, default=1,
                          "held (ParaView's tracer offers the input's times either way)")
 parser.add_argument("--keep", metavar="DIR",
                     help="write the data here and keep it (default: a temporary folder)")
+parser.add_argument("--cut", type=int, choices=(5, 6), default=6,
+                    help="tetrahedra per hexahedron: 6 (default, along the main diagonal) or 5 "
+                         "(a middle one and four corners, mirrored between neighbours)")
+parser.add_argument("--jitter", type=float, default=0.1,
+                    help="how far inner points move, in cells (default 0.1; 0: a regular lattice)")
+parser.add_argument("--moving", action="store_true",
+                    help="the inner points jittered anew at every time step (a moving mesh: "
+                         "each step is searched again; ParaView's tracer with Mesh Over Time: "
+                         "Different); by default the mesh is static and only the vectors change")
 args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
 DT = 0.5  # between data time steps, as the plugin's Analytic Flow
-JITTER = 0.1  # of a cell, per axis, interior points only (keeps every tetrahedron valid)
+JITTER = args.jitter  # of a cell, per axis, interior points only (0.1 keeps every tetrahedron valid)
 
 
 def gyre(xyz, t):
@@ -106,12 +116,22 @@ def grid_points(dims, spacing):
 
 def tetrahedra(dims):
     """6 tetrahedra per hexahedron (Kuhn: along each order of the three axes
-    from the hexahedron's first corner to its last), point ids, C x 4."""
+    from the hexahedron's first corner to its last), or 5 (--cut 5: the
+    corners of one parity around a middle one, mirrored between neighbours
+    so that faces match), point ids, C x 4."""
     nx, ny, nz = dims
     k, j, i = numpy.meshgrid(numpy.arange(nz - 1), numpy.arange(ny - 1), numpy.arange(nx - 1),
                              indexing="ij")
     corner = (i + nx * (j + ny * k)).ravel().astype(numpy.int64)
     step = [1, nx, nx * ny]
+    if args.cut == 5:
+        # Corner c of a hexahedron: bit 0 along x, bit 1 along y, bit 2 along z.
+        at = numpy.stack([corner + (c & 1) * step[0] + (c >> 1 & 1) * step[1] +
+                          (c >> 2 & 1) * step[2] for c in range(8)], axis=1)
+        even = [[0, 1, 2, 4], [1, 3, 2, 7], [1, 4, 5, 7], [2, 7, 6, 4], [1, 2, 4, 7]]
+        odd = [[1, 3, 0, 5], [0, 2, 3, 6], [0, 5, 4, 6], [3, 6, 7, 5], [0, 3, 5, 6]]
+        parity = ((i + j + k).ravel() % 2)[:, None, None]
+        return numpy.where(parity == 0, at[:, even], at[:, odd]).reshape(-1, 4)
     tets = numpy.empty((corner.size, 6, 4), dtype=numpy.int64)
     for n, (a, b, c) in enumerate(itertools.permutations(range(3))):
         tets[:, n, 0] = corner
@@ -149,12 +169,16 @@ def raw_writer(writer, data, path):
     writer.Write()
 
 
-def write_series(data, xyz, name):
+def write_series(data, xyz, name, move=None):
     """Writes `data` with the flow at `xyz` at every time step, and a .pvd of
-    them, into the folder; the .pvd's path."""
+    them, into the folder; the .pvd's path. `move(s)`, if given, gives step
+    s's points (set as the data's)."""
     writer = vtkXMLImageDataWriter() if data.IsA("vtkImageData") else vtkXMLUnstructuredGridWriter()
     files = []
     for s in range(args.steps):
+        if move:
+            xyz = move(s)
+            data.GetPoints().SetData(numpy_to_vtk(xyz.astype(numpy.float32), deep=True))
         velocity = numpy_to_vtk(gyre(xyz, DT * s), deep=True)
         velocity.SetName("velocity")
         data.GetPointData().SetVectors(velocity)
@@ -177,16 +201,21 @@ def image_over_box(dims, name):
 def make_mesh():
     """Writes the mesh's steps: its .pvd, cell count, point count and the
     dimensions of the grid it was made from."""
-    n = max(2, int(round((args.cells / 12.0) ** (1.0 / 3.0))))
+    n = max(2, int(round((args.cells / (2.0 * args.cut)) ** (1.0 / 3.0))))
     dims = (2 * n + 1, n + 1, n + 1)
     spacing = (2.0 / (dims[0] - 1), 1.0 / (dims[1] - 1), 1.0 / (dims[2] - 1))
     regular = grid_points(dims, spacing)
-    rng = numpy.random.default_rng(1)
-    xyz = regular.copy()
     index = [numpy.rint(regular[:, a] / spacing[a]).astype(int) for a in range(3)]
-    for a in range(3):
-        interior = (index[a] > 0) & (index[a] < dims[a] - 1)
-        xyz[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
+
+    def jittered(seed):
+        rng = numpy.random.default_rng(seed)
+        moved = regular.copy()
+        for a in range(3):
+            interior = (index[a] > 0) & (index[a] < dims[a] - 1)
+            moved[interior, a] += rng.uniform(-JITTER, JITTER, interior.sum()) * spacing[a]
+        return moved
+
+    xyz = jittered(1)
     tets = tetrahedra(dims)
     assert orient(tets, xyz) > 0, "a flat tetrahedron"
     mesh = vtkUnstructuredGrid()
@@ -198,7 +227,8 @@ def make_mesh():
     cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
                   numpy_to_vtkIdTypeArray(tets.ravel(), deep=True))
     mesh.SetCells(VTK_TETRA, cells)
-    return write_series(mesh, xyz, "mesh"), len(tets), len(xyz), dims
+    move = (lambda s: jittered(1 + s)) if args.moving else None
+    return write_series(mesh, xyz, "mesh", move), len(tets), len(xyz), dims
 
 
 def make_seeds():
@@ -271,7 +301,7 @@ def particle_tracer(reader):
     tracer = ParticleTracer(Input=reader.proxy, SeedSource=seeds)
     tracer.SelectInputVectors = ["POINTS", "velocity"]
     tracer.StaticSeeds = 1
-    tracer.MeshOverTime = "Static"
+    tracer.MeshOverTime = "Different" if args.moving else "Static"
     tracer.ComputeVorticity = 0
     tracer.ForceReinjectionEveryNSteps = 0
     return tracer
@@ -330,11 +360,15 @@ def timed(make, reader):
 
 def summary(runs):
     """Medians over the repeats (of each repeat's median frame)."""
-    def median(key, of="play", reduce=statistics.median):
-        return statistics.median(reduce(r[of][key]) if reduce else r[of][key] for r in runs)
+    def middle(values):
+        values = list(values)
+        return statistics.median(values) if values else float("nan")
+
+    def median(key, of="play", reduce=middle):
+        return middle(reduce(r[of][key]) if reduce else r[of][key] for r in runs)
     return dict(first=median("first", reduce=None), frame=median("frames"),
                 own=median("frames_own"), read=median("frames_read"),
-                slowest=median("frames", reduce=max),
+                slowest=median("frames", reduce=lambda v: max(v, default=float("nan"))),
                 first_reads=median("first_reads", reduce=None),
                 frame_reads=median("frame_reads", reduce=None),
                 replay_first=median("first", "replay", None), replay=median("frames", "replay"),
@@ -352,10 +386,13 @@ try:
     made = time.perf_counter() - began
     seeds = make_seeds()
     mesh, image = Reader(mesh_path), Reader(image_path)
-    print("mesh: %d tetrahedra, %d points (%d x %d x %d hexahedra of 6, jittered); image: "
-          "%d x %d x %d points; %d time steps 0.5 apart; written in %.1f s to %s"
-          % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, dims[0], dims[1],
-             dims[2], len(mesh.times), made, folder))
+    print("mesh: %d tetrahedra, %d points (%d x %d x %d hexahedra of %d, jittered by %g of a "
+          "cell); image: %d x %d x %d points; %s; written in %.1f s to %s"
+          % (cell_count, point_count, dims[0] - 1, dims[1] - 1, dims[2] - 1, args.cut, JITTER,
+             dims[0], dims[1], dims[2],
+             "%d time steps 0.5 apart, %s" % (len(mesh.times), "the points moved at each"
+                                              if args.moving else "the same points and cells"),
+             made, folder))
     print("job: %d one-particle elements from the same seed points, RK4, 2 sub-steps per "
           "interval, %d repeats (medians, interleaved)" % (args.seeds, args.repeats))
 

@@ -86,6 +86,59 @@ TEST(ResampleGrid, CoarseMeshesGetAUsableGridAndHugeOnesACappedOne)
   EXPECT_NEAR(double(capped.pointCount()), 1e6, 0.05e6);
 }
 
+TEST(ResampleGrid, AThinMeshKeepsToTheCapAndAMultipleOfItsCells)
+{
+  // Issue 38: a slab of 40,000 hexahedra over 1 x 1 x 1e-5 got 1587 x 1587 x 8
+  // = 20.1 M points (500 times its cells, above the cap) and no word.
+  const bp::ResampleGrid slab = bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1e-5 }, 40000, { 0, 0, 0 });
+  ASSERT_TRUE(slab.error.empty()) << slab.error;
+  EXPECT_EQ(slab.dims[2], bp::MinAutomaticResampleAxisPoints);
+  EXPECT_LE(double(slab.pointCount()), 8.0 * 40000);
+  EXPECT_GE(slab.dims[0], 190); // the slab's own 200 x 200 cells in the plane
+  EXPECT_NEAR(slab.spacing[0] / slab.spacing[1], 1.0, 0.02);
+  EXPECT_NE(slab.note.find("thin along Z"), std::string::npos) << slab.note;
+  EXPECT_NE(slab.note.find("Resample Dimensions"), std::string::npos) << slab.note;
+  // A mesh that is not thin chooses freely and says nothing.
+  EXPECT_TRUE(bp::chooseResampleGrid({ 0, 4, 0, 2, 0, 1 }, 1e6, { 0, 0, 0 }).note.empty());
+
+  // Every aspect ratio, thin along one, two or no axes, flat axes included,
+  // small and huge meshes: within the cap, at most 8 times the cells for each
+  // thin axis (or the fewest points a grid of 8 per axis has), at least 8
+  // points along each axis with extent.
+  const double cap = double(bp::MaxAutomaticResamplePoints);
+  for (double cells : { 10.0, 4e4, 1e6, 1e8, 1e12 })
+    for (double y : { 1.0, 1e-2, 1e-5, 0.0 })
+      for (double z : { 1.0, 1e-3, 1e-5, 1e-8, 0.0 })
+      {
+        const bp::ResampleGrid g = bp::chooseResampleGrid({ 0, 1, 0, y, 0, z }, cells, { 0, 0, 0 });
+        ASSERT_TRUE(g.error.empty()) << g.error;
+        int thin = 0, spanning = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+          if (g.dims[a] > 1)
+          {
+            ++spanning;
+            EXPECT_GE(g.dims[a], bp::MinAutomaticResampleAxisPoints);
+            thin += g.dims[a] == bp::MinAutomaticResampleAxisPoints ? 1 : 0;
+          }
+        }
+        const double points = double(g.pointCount());
+        const double floor = std::pow(double(bp::MinAutomaticResampleAxisPoints), spanning);
+        EXPECT_LE(points, std::max(cap, floor)) << cells << " cells, " << y << " x " << z;
+        EXPECT_LE(points, std::max(1.1 * std::pow(8.0, thin) * std::min(cells, cap), floor))
+          << cells << " cells, " << y << " x " << z;
+        if (cells > cap)
+        {
+          EXPECT_FALSE(g.note.empty()) << "a mesh coarsened to the cap says so";
+        }
+      }
+  // Where memory allows less, the thin slab keeps to that too.
+  const bp::ResampleGrid short_ =
+    bp::chooseResampleGrid({ 0, 1, 0, 1, 0, 1e-5 }, 4e6, { 0, 0, 0 }, false, 1e6);
+  EXPECT_LE(double(short_.pointCount()), 1e6);
+  EXPECT_NE(short_.note.find("coarsened"), std::string::npos) << short_.note;
+}
+
 TEST(ResampleGrid, UnusableBoundsAndRequestsAreRefusedWithAReason)
 {
   const double inf = std::numeric_limits<double>::infinity();

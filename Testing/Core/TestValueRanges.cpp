@@ -186,6 +186,30 @@ TEST(ValueRanges, MergedRangesCoverBothParts)
   EXPECT_EQ(merged.magnitude, whole.magnitude);
 }
 
+TEST(ValueRanges, TheSameEndsWhateverOrderTheRangesEndIn)
+{
+  // -0 and 0 compare equal, so the one an end keeps depends on which came
+  // first: the ranges' parts are merged in the ranges' order, not the order
+  // the threads finished them in.
+  std::vector<float> values(4096, 1.0f);
+  values[10] = -0.0f;
+  values[3000] = 0.0f;
+  const bp::RangeRunner forwards = [](std::size_t count, const bp::RangeFunction& f)
+  {
+    for (std::size_t c = 0; c < 4; ++c)
+      f(count * c / 4, count * (c + 1) / 4);
+  };
+  const bp::RangeRunner backwards = [](std::size_t count, const bp::RangeFunction& f)
+  {
+    for (std::size_t c = 4; c-- > 0;)
+      f(count * c / 4, count * (c + 1) / 4);
+  };
+  const bp::ValueRanges a = bp::valueRanges(values.data(), values.size(), 1, forwards);
+  const bp::ValueRanges b = bp::valueRanges(values.data(), values.size(), 1, backwards);
+  EXPECT_EQ(std::signbit(a.component[0][0]), std::signbit(b.component[0][0]));
+  EXPECT_EQ(std::signbit(a.finiteComponent[0][0]), std::signbit(b.finiteComponent[0][0]));
+}
+
 TEST(Parallel, APoolCalledFromItsOwnJobRunsTheInnerCallOnItsCaller)
 {
   // The output's writers run inside pool jobs; a nested call must neither
