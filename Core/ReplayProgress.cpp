@@ -2,6 +2,8 @@
 #include "ReplayProgress.h"
 
 #include <chrono>
+#include <cmath>
+#include <sstream>
 #include <utility>
 
 namespace bp
@@ -73,6 +75,34 @@ void ReplayProgress::finish()
   {
     this->reportShare(1.0, false);
   }
+}
+
+std::string longReplayNote(
+  double steps, double particles, double from, double to, const WorkQueue& queue)
+{
+  const bool measured = queue.particleStepsPerSecond > 0.0;
+  const double rate = measured
+    ? queue.particleStepsPerSecond
+    : (queue.renderer == RendererKind::Software ? AssumedSoftwareRate : AssumedHardwareRate);
+  const double seconds = steps * particles / rate;
+  if (!(seconds > LongReplaySeconds))
+  {
+    return std::string();
+  }
+  std::ostringstream say;
+  say.precision(3);
+  say << "The GPU engine runs " << std::llround(steps) << " steps of " << std::llround(particles)
+      << " particles (t = " << from << " to " << to << ") before this frame is drawn: about "
+      << std::llround(seconds) << " s "
+      << (measured ? "at the rate it last ran at"
+                   : (queue.renderer == RendererKind::Software
+                         ? "on a software renderer"
+                         : "at a modest GPU's rate (not yet measured here)"))
+      << (queue.rendererName.empty() ? std::string() : " (" + queue.rendererName + ")")
+      << ", while the view waits. A trace is replayed from its start when it is new, changed, "
+         "or its engine switched: to wait less, set Engine before going to a late time, lower "
+         "Number Of Elements, or keep Engine = CPU on a software renderer.";
+  return say.str();
 }
 
 } // namespace bp

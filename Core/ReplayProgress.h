@@ -30,6 +30,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace bp
@@ -82,6 +83,24 @@ private:
   double StoppedAt = 0.0;
   std::size_t StoppedBefore = 0;
 };
+
+/// The engine's rates assumed where the renderer has measured none yet
+/// (WorkQueue::particleStepsPerSecond): what llvmpipe reaches on a few cores,
+/// and the low end of GPUs (an H200 runs hundreds of times faster).
+constexpr double AssumedSoftwareRate = 2.0e7;
+constexpr double AssumedHardwareRate = 1.0e9;
+/// A replay the view waits longer for is said before it is recorded.
+constexpr double LongReplaySeconds = 5.0;
+
+/**
+ * What to tell the user before a GPU run of `steps` steps of `particles`
+ * particles from t = `from` to `to`, on `queue`'s renderer at its measured
+ * rate (or the assumed one for its kind): a note that the view will wait
+ * about that long, and what shortens the wait, when that is longer than
+ * LongReplaySeconds; empty otherwise.
+ */
+std::string longReplayNote(
+  double steps, double particles, double from, double to, const WorkQueue& queue);
 
 } // namespace bp
 

@@ -145,6 +145,11 @@ public:
   /// The renderer's GL_RENDERER string, for messages.
   std::string rendererName;
 
+  /// The engine's rate on this renderer as the last long run measured it
+  /// (particle-steps per second; 0 until one was measured), so the filter can
+  /// say before recording a long replay how long the view will wait.
+  double particleStepsPerSecond = 0.0;
+
   /// The renderer's last failure, if any (empty when the engine ran).
   std::string failure;
 

@@ -257,7 +257,7 @@ std::string FieldResampler::resample(vtkDataObject* input, const VectorsChoice& 
   if (!this->WeightsName.empty() && this->WeightsName != this->ArrayName)
   {
     bool found = false;
-    this->interpolateWeights(selected.blocks, selected.cellVectors, run, values, found);
+    this->interpolateWeights(selected.blocks, controller, run, values, found);
     std::vector<int> any(1, found ? 1 : 0);
     allReduce(controller, any, vtkCommunicator::MAX_OP);
     allReduce(controller, values, vtkCommunicator::SUM_OP);
@@ -481,36 +481,50 @@ void FieldResampler::interpolate(const std::vector<vtkDataSet*>& blocks, bool ce
     });
 }
 
-void FieldResampler::interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
-  const bp::RangeRunner& run, std::vector<float>& values, bool& found) const
+void FieldResampler::interpolateWeights(const std::vector<vtkDataSet*>& blocks,
+  vtkMultiProcessController* controller, const bp::RangeRunner& run, std::vector<float>& values,
+  bool& found) const
 {
-  std::vector<std::vector<float>> arrays(blocks.size());
-  // Per block: the weights are a cell array (taken per cell, as cell vectors
-  // are), else a point array (interpolated as point vectors are). The panel
-  // offers point arrays, so one is taken first even with cell vectors.
+  // Per block: the weights are a point array (interpolated as point vectors
+  // are) or a cell array (taken per cell, as cell vectors are), whichever the
+  // block has, the cell array first where the user picked one.
+  std::vector<vtkDataArray*> chosen(blocks.size(), nullptr);
   std::vector<char> perCell(blocks.size(), 0);
+  double largest = 0.0; // the largest finite value, for one scale everywhere
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    vtkDataArray* points = blocks[b]->GetPointData()->GetArray(this->WeightsName.c_str());
+    vtkDataArray* cells = blocks[b]->GetCellData()->GetArray(this->WeightsName.c_str());
+    const bool pointsFit = points && points->GetNumberOfTuples() == blocks[b]->GetNumberOfPoints();
+    const bool cellsFit = cells && cells->GetNumberOfTuples() == blocks[b]->GetNumberOfCells();
+    const bool cellsFirst = this->WeightsAssociation == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    perCell[b] = cellsFit && (cellsFirst || !pointsFit);
+    chosen[b] = perCell[b] ? cells : (pointsFit ? points : nullptr);
+    if (chosen[b])
+    {
+      largest = std::max(largest, largestFinite(chosen[b]));
+    }
+  }
+  std::vector<double> top(1, largest);
+  allReduce(controller, top, vtkCommunicator::MAX_OP);
+  const double scale = bp::releaseWeightScale(top[0]);
+  std::vector<std::vector<float>> arrays(blocks.size());
   found = false;
   for (std::size_t b = 0; b < blocks.size(); ++b)
   {
-    vtkDataArray* array = blocks[b]->GetPointData()->GetArray(this->WeightsName.c_str());
-    const bool points = array && array->GetNumberOfTuples() == blocks[b]->GetNumberOfPoints();
-    if (!points && cellVectors)
+    if (chosen[b])
     {
-      array = blocks[b]->GetCellData()->GetArray(this->WeightsName.c_str());
-      perCell[b] = 1;
-    }
-    const vtkIdType tuples =
-      perCell[b] ? blocks[b]->GetNumberOfCells() : blocks[b]->GetNumberOfPoints();
-    std::vector<float> raw;
-    if (array && array->GetNumberOfTuples() == tuples)
-    {
-      copyToFloats(array, raw);
-      arrays[b] = bp::releaseWeightValues(raw, array->GetNumberOfComponents());
+      std::vector<float> raw;
+      copyToFloats(chosen[b], raw, scale);
+      arrays[b] = bp::releaseWeightValues(raw, chosen[b]->GetNumberOfComponents());
       found = true;
     }
     else
     {
-      arrays[b].assign(std::size_t(tuples), 0.0f); // a block without them weighs nothing
+      // A block without them weighs nothing.
+      arrays[b].assign(
+        std::size_t(perCell[b] ? blocks[b]->GetNumberOfCells() : blocks[b]->GetNumberOfPoints()),
+        0.0f);
     }
   }
   values.assign(this->Grid.pointCount(), 0.0f);

@@ -103,10 +103,17 @@ public:
    * first one read. The tracer calls this while it holds no time step.
    */
   void forgetGrid() { this->GridKept = false; }
-  /// Release Weights: the input's array (point data with point vectors,
-  /// cell data with cell vectors; its magnitude) that resample() also puts
-  /// on the grid under that name, one float per point; empty for none.
-  void setReleaseWeights(const std::string& name) { this->WeightsName = name; }
+  /// Release Weights: the input's array (its magnitude), a point array
+  /// interpolated as point vectors are or a cell array taken per cell
+  /// (`association` CELLS takes the cell array first, otherwise the point
+  /// array is taken where a block has one), that resample() also puts on the
+  /// grid under that name, one float per point; empty for none. Values
+  /// beyond float's range are scaled into it alike on every process.
+  void setReleaseWeights(const std::string& name, int association)
+  {
+    this->WeightsName = name;
+    this->WeightsAssociation = association;
+  }
 
   /// About what resampling takes per grid point, while a grid is located.
   static const double BytesPerGridPoint;
@@ -148,8 +155,10 @@ private:
   /// grid's plane. Returns the error, if any.
   /// The Release Weights interpolated onto the grid as the vectors are
   /// (zero where a block lacks the array); `found` whether any block has it.
-  void interpolateWeights(const std::vector<vtkDataSet*>& blocks, bool cellVectors,
-    const bp::RangeRunner& run, std::vector<float>& values, bool& found) const;
+  /// Collective with a `controller` (the scale for values beyond float).
+  void interpolateWeights(const std::vector<vtkDataSet*>& blocks,
+    vtkMultiProcessController* controller, const bp::RangeRunner& run, std::vector<float>& values,
+    bool& found) const;
   std::string chooseGrid(const Selection& selected, const std::array<int, 3>& requested,
     vtkMultiProcessController* controller, double& offPlane);
   /// What a range of grid rows located in one block: its samples and their
@@ -203,7 +212,8 @@ private:
   std::vector<HashedArray> Hashed; ///< the arrays of the last key
   bool Kept = false;
   std::string ArrayName;
-  std::string WeightsName; ///< setReleaseWeights()
+  std::string WeightsName;    ///< setReleaseWeights()
+  int WeightsAssociation = 0; ///< setReleaseWeights(): vtkDataObject's FIELD_ASSOCIATION_*
   std::vector<Sample> Samples;
   std::vector<vtkIdType> WeightPoints;
   std::vector<float> Weights;

@@ -170,9 +170,12 @@ void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
   const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
 {
   // Collective in a distributed run, as every process reads in this pass.
-  const std::string warning =
-    bpvtk::readReleaseWeights(input, config.releaseWeights, config.releaseWeightsAssociation,
-      this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
+  // A resampled mesh's weights are the grid's point array, whichever
+  // association the mesh's had (FieldResampler::setReleaseWeights).
+  const int association = this->Resampled ? int(vtkDataObject::FIELD_ASSOCIATION_POINTS)
+                                          : config.releaseWeightsAssociation;
+  const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights, association,
+    this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
   if (!warning.empty() && !this->WarnedWeights)
   {
     this->WarnedWeights = true; // once per configuration, as the mask's
@@ -222,7 +225,7 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
 {
   vtkNew<vtkImageData> whole;
   std::string warning;
-  this->Resampler.setReleaseWeights(config.releaseWeights);
+  this->Resampler.setReleaseWeights(config.releaseWeights, config.releaseWeightsAssociation);
   if (this->Cache.size() == 0)
   {
     this->Resampler.forgetGrid(); // no time step holds the last one

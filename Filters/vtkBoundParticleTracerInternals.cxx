@@ -4,6 +4,8 @@
 // output shown. See vtkBoundParticleTracerInternals.h.
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "ReplayProgress.h"
+
 #include "ElementTemplate.h"
 #include "Memory.h"
 #include "Partition.h"
@@ -185,6 +187,17 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::stepToTarget()
   if (!tooMuch.empty())
   {
     return Pass::fail(tooMuch);
+  }
+  if (const bp::WorkQueue* queue = this->Steppers.queue())
+  {
+    // The GPU engine runs in the render, where ParaView 5.11 offers no Abort.
+    const std::string note = bp::longReplayNote((target - committed) / this->Schedule->dt(),
+      double(this->Parameters.numberOfElements) * double(this->ParticlesPerElement), committed,
+      target, *queue);
+    if (!note.empty())
+    {
+      vtkWarningWithObjectMacro(this->Owner, << note);
+    }
   }
   bool aborted = false;
   auto keepGoing = [&](double t)

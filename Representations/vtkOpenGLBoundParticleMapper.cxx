@@ -54,6 +54,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -91,6 +92,10 @@ void sayInOutputWindow(const std::string& text, bool warning)
 /// float time step (24 MiB) then arrives over a few frames on a software
 /// renderer, in one or two on a GPU.
 constexpr double StagingSecondsPerFrame = 0.004;
+
+/// A run of at least this many steps measures the engine's rate
+/// (WorkQueue::particleStepsPerSecond).
+constexpr long MeasuredRunSteps = 32;
 } // namespace
 
 struct vtkOpenGLBoundParticleMapper::vtkInternals
@@ -101,6 +106,7 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   std::string LastError;
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
   bp::GpuEngine::DrawInputs Inputs;
+  double Particles = 0.0; ///< of the configured system, for the measured rate
 
   bp::ColorSource ScalarMode = bp::ColorSource::Solid;
   int Component = -1;
@@ -318,8 +324,10 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   listener.failed = [this](const std::string& message) { this->Fail(message); };
   // A render asked for from inside a report returns at once (Render).
   bpvtk::QueueReplay::Running running(I.Replay);
+  const auto started = std::chrono::steady_clock::now();
   I.Replay.run(calls, progress, listener);
   progress.finish();
+  this->MeasureRate(calls, std::chrono::steady_clock::now() - started, progress.stopped());
   if (GpuRunReportsProgress && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
@@ -347,11 +355,33 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   }
 }
 
+void vtkOpenGLBoundParticleMapper::MeasureRate(
+  const std::vector<bp::EngineCall>& calls, std::chrono::steady_clock::duration took, bool stopped)
+{
+  vtkInternals& I = *this->Internals;
+  const auto steps = std::count_if(calls.begin(), calls.end(),
+    [](const bp::EngineCall& call) { return call.kind == bp::EngineCall::Kind::Step; });
+  // Only a run long enough to time (a replay, not a frame's step or two,
+  // whose GL work is still queued when it returns): it waited for the GPU
+  // while it reported its progress, and its last steps are waited for here.
+  if (stopped || steps < MeasuredRunSteps || I.Particles <= 0.0)
+  {
+    return;
+  }
+  glFinish();
+  const double seconds = std::chrono::duration<double>(took).count();
+  if (seconds > 0.0)
+  {
+    I.Queue->particleStepsPerSecond = double(steps) * I.Particles / seconds;
+  }
+}
+
 void vtkOpenGLBoundParticleMapper::ConfigureDraw(const bp::EngineCall& configure)
 {
   vtkInternals& I = *this->Internals;
   const bp::Parameters& p = configure.parameters;
   const bp::ElementTemplate& shape = *configure.shape;
+  I.Particles = double(p.numberOfElements) * double(shape.particleCount());
   I.LinkTable.set(bpvtk::linkPairs(p), 0);
   I.TemplateLines = shape.triangles.empty() && !shape.springs.empty();
   I.TrailLength = std::max(p.trailLength, 0);

@@ -67,6 +67,7 @@
 #include "BoundParticlesRepresentationsModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <chrono> // for std::chrono::steady_clock
 #include <memory> // for std::unique_ptr, std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -139,7 +140,10 @@ public:
    * sees rises once over update and run. The render puts the shift and
    * scale back, and reports 1 at the end of a run too short to report.
    */
-  void OweProgressEnd() { this->ProgressOwed = true; }
+  void OweProgressEnd()
+  {
+    this->ProgressOwed = true;
+  }
 
   /// Runs the queued engine work (reporting progress where ParaView allows,
   /// and taking an abort request, while a long one runs), then draws.
@@ -180,6 +184,10 @@ private:
   /// After a configure that succeeded: the template as this mapper's input,
   /// and the draw's tables for the new system (DrawTables.h).
   void ConfigureDraw(const bp::EngineCall& configure);
+  /// After a run of `calls` that took `took`: a long one that was not
+  /// stopped gives the queue the engine's rate (WorkQueue::particleStepsPerSecond).
+  void MeasureRate(const std::vector<bp::EngineCall>& calls,
+    std::chrono::steady_clock::duration took, bool stopped);
 #endif
   /// A failure of the queued work: an error, the last error, and the queue's
   /// failure, so that the display draws the CPU result from the next update on.

@@ -590,7 +590,7 @@ TEST(FieldResampler, AMeshThatChangesEveryStepIsSearchedAgainAsANewOne)
   const std::vector<vtkSmartPointer<vtkDataObject>> steps = { hexes, jitteredMesh(7, true, false),
     zones.Get(), hole, jitteredMesh(5, false, true), hexes };
   bpvtk::FieldResampler kept;
-  kept.setReleaseWeights("v");
+  kept.setReleaseWeights("v", vtkDataObject::FIELD_ASSOCIATION_POINTS);
   int compared = 0;
   for (std::size_t s = 0; s < steps.size(); ++s)
   {
@@ -619,7 +619,7 @@ TEST(FieldResampler, AMeshThatChangesEveryStepIsSearchedAgainAsANewOne)
     ASSERT_TRUE(out.error.empty()) << "step " << s << ": " << out.error;
     EXPECT_FALSE(kept.keptWeights()) << "step " << s;
     bpvtk::FieldResampler fresh;
-    fresh.setReleaseWeights("v");
+    fresh.setReleaseWeights("v", vtkDataObject::FIELD_ASSOCIATION_POINTS);
     const bp::ResampleGrid g = kept.grid();
     reference.error = fresh.resample(steps[s], choice, { g.dims[0], g.dims[1], g.dims[2] }, nullptr,
       bp::serialRunner(), reference.image, reference.warning);

@@ -75,6 +75,36 @@ def drops(values):
     return sum(1 for a, b in zip(values, values[1:]) if b < a - 1e-12)
 
 
+# A long replay is said before it is recorded (the render that runs it may
+# take many seconds, and ParaView 5.11 gives no Abort there): here 60,000
+# Strip16 elements sent to the last time at once, at llvmpipe's assumed rate.
+# The display is not rendered there, so the replay never runs.
+SetActiveSource(flow)  # a tracer made while another is active takes its arrays
+big = BoundParticleTracer(Input=flow, NumberOfElements=60000, ElementShape="Strip16", Engine="GPU")
+big_shown = Show(big, view)
+big_shown.SetRepresentationType("Bound Particles")
+Render(view)  # at the first time: the display learns its renderer
+Hide(tracer, view)
+with bptest.CapturedMessages() as said:
+    view.ViewTime = times[-1]
+    view.Update()
+print("a long replay: %r" % said.messages)
+bptest.check(said.mentions("particles (t = 0 to %g) before this frame is drawn" % times[-1]) and
+             said.mentions("software renderer"),
+             "a long GPU replay is said before it runs: %r" % said.messages)
+Delete(big_shown)
+Delete(big)
+Show(tracer, view)
+view.ViewTime = times[0]
+Render(view)
+
+
+def unexpected(messages):
+    """Messages but the note of a long replay (whose estimate follows the
+    rate llvmpipe reached on this loaded machine)."""
+    return [m for m in messages if "before this frame is drawn" not in m]
+
+
 with bptest.CapturedMessages() as replay:
     seconds = render_at(times[-1])
 print("replay to t = %g in the render: %.2f s, %d progress reports, first %s, last %s; "
@@ -88,7 +118,7 @@ if version >= (6, 1):
     # ReportsReplayProgress), and an abort cannot be asked through a report.
     bptest.check(not shares, "%d progress reports on ParaView %d.%d" % ((len(shares),) + version))
     bptest.check(bptest.covered_fraction(picture("replayed")) > 0.002, "the replay drew nothing")
-    bptest.check(not replay.messages, "messages during the replay: %r" % replay.messages)
+    bptest.check(not unexpected(replay.messages), "messages during the replay: %r" % replay.messages)
     Delete(shown)
     Delete(view)
     del view
@@ -100,7 +130,7 @@ bptest.check(shares and shares[-1] == 1.0, "progress ends at %s" % shares[-1:])
 bptest.check(drops(shares) == 0, "progress went back %d times" % drops(shares))
 bptest.check(len(relayed) >= 2 and all(text == "Bound Particles: GPU engine" for text, _ in relayed),
              "ParaView's progress handler relayed %r" % relayed[:5])
-bptest.check(not replay.messages, "messages during the replay: %r" % replay.messages)
+bptest.check(not unexpected(replay.messages), "messages during the replay: %r" % replay.messages)
 
 # Update and run in one Render, as a script's observer meets them: the
 # progress rises once from 0 to 1 (the update no longer reports its own end
@@ -142,7 +172,8 @@ bptest.check(bool(asked), "no progress report reached 0.25 to abort at")
 bptest.check(shares and 0.25 <= shares[-1] < 0.6,
              "the replay stopped at %s, asked at 0.25" % shares[-1:])
 bptest.check(latency < 2.0, "the render returned %.2f s after the abort" % latency)
-bptest.check(len(aborted.messages) == 1 and aborted.mentions("Aborted: the GPU engine stopped at"),
+bptest.check(len(unexpected(aborted.messages)) == 1 and
+             aborted.mentions("Aborted: the GPU engine stopped at"),
              "the abort was said as %r" % aborted.messages)
 bptest.check(display.GetAbortExecute() == 0, "the abort request was not taken")
 
@@ -163,7 +194,7 @@ continued = picture("continued")
 print("went on to t = %g: %d reports from %s to %s" % (times[-1], len(shares), shares[:1], shares[-1:]))
 bptest.check(shares and shares[-1] == 1.0, "the update after the abort ends at %s" % shares[-1:])
 bptest.check(drops(shares) == 0, "progress went back %d times" % drops(shares))
-bptest.check(not resumed.messages, "messages going on: %r" % resumed.messages)
+bptest.check(not unexpected(resumed.messages), "messages going on: %r" % resumed.messages)
 # ...to the picture of a replay to the same time that was never stopped.
 render_at(times[0])
 render_at(times[-1])

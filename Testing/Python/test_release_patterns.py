@@ -148,27 +148,32 @@ bptest.check(len(points) == 2000 and points[:, 0].min() >= 1.6,
              "and no release lands in the masked part (lowest x %.3g)" % points[:, 0].min())
 bptest.check(numpy.histogram(points[:, 0], bins=4, range=(1.6, 4.0))[0].min() > 300,
              "releases spread uniformly over the valid part")
+Delete(tracer)
 # A double array beyond float's range (1e39 where x > 2, 0 elsewhere) weighs
-# as it is; 1e300 everywhere is not "0, NaN or Inf".
-tracer.ReleaseWeights = ["POINTS", "big"]
-with bptest.CapturedMessages() as said:
-    points, ids = releases(tracer)
-bptest.check(not said.messages and points[:, 0].min() > 1.9,
-             "weights of 1e39 take every release (lowest x %.3g): %s" %
-             (points[:, 0].min(), said.messages))
-tracer.ReleaseWeights = ["POINTS", "huge"]
-with bptest.CapturedMessages() as said:
-    points, ids = releases(tracer)
-bptest.check(not said.messages, "weights of 1e300 are weights: %s" % said.messages)
-# A cell array, asked as cells or (as ParaView's panel offers it) as points:
-# averaged onto the points, so releases land beyond x = 1.9.
-for association in ("CELLS", "POINTS"):
-    tracer.ReleaseWeights = [association, "cw"]
+# as it is; 1e300 everywhere is not "0, NaN or Inf". A cell array, asked as
+# cells or (as ParaView's panel offers it) as points, weighs releases beyond
+# x = 1.9: averaged onto an image's points, taken per cell on a mesh.
+for name, source in (("an image", masked), ("a mesh", AppendDatasets(Input=masked))):
+    source.UpdatePipeline()
+    tracer = BoundParticleTracer(Input=source, Vectors=VELOCITY, ElementShape="Point",
+                                 NumberOfElements=2000, MinimumReleaseSpeed=0.0,
+                                 ReleaseWeights=["POINTS", "big"])
     with bptest.CapturedMessages() as said:
         points, ids = releases(tracer)
-    bptest.check(not said.messages and points[:, 0].min() > 1.85,
-                 "a cell array as %s weighs releases (lowest x %.3g): %s" %
-                 (association, points[:, 0].min(), said.messages))
+    bptest.check(not said.messages and points[:, 0].min() > 1.9,
+                 "%s: weights of 1e39 take every release (lowest x %.3g): %s" %
+                 (name, points[:, 0].min(), said.messages))
+    tracer.ReleaseWeights = ["POINTS", "huge"]
+    with bptest.CapturedMessages() as said:
+        points, ids = releases(tracer)
+    bptest.check(not said.messages, "%s: weights of 1e300 are weights: %s" % (name, said.messages))
+    for association in ("CELLS", "POINTS"):
+        tracer.ReleaseWeights = [association, "cw"]
+        with bptest.CapturedMessages() as said:
+            points, ids = releases(tracer)
+        bptest.check(not said.messages and points[:, 0].min() > 1.85,
+                     "%s: a cell array as %s weighs releases (lowest x %.3g): %s" %
+                     (name, association, points[:, 0].min(), said.messages))
 Delete(tracer)
 
 # Too fine a lattice and a lattice with Linking are refused with a message
