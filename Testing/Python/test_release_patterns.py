@@ -167,6 +167,10 @@ for name, source in (("an image", masked), ("a mesh", AppendDatasets(Input=maske
     with bptest.CapturedMessages() as said:
         points, ids = releases(tracer)
     bptest.check(not said.messages, "%s: weights of 1e300 are weights: %s" % (name, said.messages))
+    domain = tracer.SMProxy.GetProperty("ReleaseWeights").FindDomain("vtkSMArrayListDomain")
+    offered = [domain.GetString(i) for i in range(domain.GetNumberOfStrings())]
+    bptest.check("cw" in offered and "big" in offered,
+                 "%s: the panel's list offers cell and point arrays: %s" % (name, offered))
     for association in ("CELLS", "POINTS"):
         tracer.ReleaseWeights = [association, "cw"]
         with bptest.CapturedMessages() as said:
