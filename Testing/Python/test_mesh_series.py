@@ -8,7 +8,8 @@ issues 38 and 46), each written here as a .pvd series of .vtu files:
   2 was read);
 - topology: hexahedra, then tetrahedra, then a mix, points renumbered,
   vectors on points or cells, played forward, back and forward again (issue
-  38: a SIGSEGV once; also run under valgrind, see --valgrind-cases);
+  38: a SIGSEGV once; run under valgrind's memcheck with `--cases
+  topology` it reports nothing in the plugin, only ld.so's strncmp);
 - moving: the mesh shifts out of the first step's bounds: it traces on the
   first step's grid and says that the part beyond is left out;
 - slab: 40,000 hexahedra over 1 x 1 x 1e-5 (issue 38: 1587 x 1587 x 8 =
