@@ -7,7 +7,12 @@ build="${BOUNDPARTICLES_BUILD_DIR:-$root/build}"
 
 bash "$root/scripts/setup.sh"
 mkdir -p "$build"
-if ! cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build/configure.log" 2>&1; then
+# ccache (setup.sh installs it): a clone elsewhere, or the same sources built
+# again, compiles only what changed (paths taken relative to the clone).
+export CCACHE_BASEDIR="$root"
+if ! cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+  >"$build/configure.log" 2>&1; then
   cat "$build/configure.log" >&2
   exit 1
 fi

@@ -37,6 +37,7 @@ export CFLAGS CXXFLAGS LDFLAGS
 launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$root" # as scripts/build.sh
 fi
 if ! cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr \
   -DBUILD_TESTING=OFF -DBOUNDPARTICLES_BUILD_BENCH=OFF \

@@ -10,7 +10,7 @@ set -euo pipefail
 codename="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
 
 COMMON=(
-  build-essential cmake git pkgconf python3-dev
+  build-essential cmake ccache git pkgconf python3-dev
   paraview paraview-dev python3-paraview python3-numpy libgl1-mesa-dri
   libopenmpi-dev openmpi-bin libutfcpp-dev libglew-dev liblz4-dev libdouble-conversion-dev
   libtiff-dev libnetcdf-dev libgdal-dev libavformat-dev libavcodec-dev
