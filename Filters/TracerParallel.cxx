@@ -116,13 +116,18 @@ namespace bpvtk
 
 std::string agreeOnError(vtkMultiProcessController* controller, const std::string& error)
 {
+  return firstNonEmpty(controller, error);
+}
+
+std::string firstNonEmpty(vtkMultiProcessController* controller, const std::string& text)
+{
   if (!controller)
   {
-    return error;
+    return text;
   }
   const int processes = controller->GetNumberOfProcesses();
   std::vector<long long> lengths(std::size_t(processes), 0);
-  const long long mine = (long long)error.size();
+  const long long mine = (long long)text.size();
   controller->AllGather(&mine, lengths.data(), 1);
   for (int q = 0; q < processes; ++q)
   {
@@ -130,7 +135,7 @@ std::string agreeOnError(vtkMultiProcessController* controller, const std::strin
     if (length > 0)
     {
       std::string first(
-        q == controller->GetLocalProcessId() ? error : std::string(std::size_t(length), ' '));
+        q == controller->GetLocalProcessId() ? text : std::string(std::size_t(length), ' '));
       controller->Broadcast(&first[0], vtkIdType(length), q);
       return first;
     }

@@ -41,6 +41,13 @@ namespace bpvtk
  */
 std::string agreeOnError(vtkMultiProcessController* controller, const std::string& error);
 
+/**
+ * The lowest process's non-empty `text`, on every process (collective over
+ * `controller`; empty when every process's is empty): a choice that one
+ * process makes from data the others may lack. Without a controller, `text`.
+ */
+std::string firstNonEmpty(vtkMultiProcessController* controller, const std::string& text);
+
 class PieceLayout
 {
 public:

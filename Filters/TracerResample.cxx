@@ -138,6 +138,38 @@ std::string firstVectorName(const std::vector<vtkDataSet*>& blocks, bool& cells)
   return std::string();
 }
 
+/// The array the Vectors name (unnamed: the first 3-component point, else
+/// cell array) and, in `cells`, whether it is a cell array, alike on every
+/// process: the lowest process whose blocks hold it decides. Another process
+/// may hold no cells (a serial file read by every process gives them all to
+/// process 0) or other arrays, and the name and association decide which
+/// collective steps follow (the weights' own interpolation when they are not
+/// the vectors).
+std::string agreedVectors(const std::vector<vtkDataSet*>& blocks,
+  const bpvtk::VectorsChoice& vectors, vtkMultiProcessController* controller, bool& cells)
+{
+  cells = vectors.association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  std::string name = vectors.name.empty() ? firstVectorName(blocks, cells) : vectors.name;
+  // A name given as point data that only the cells have (or the reverse) is taken where it is.
+  const auto hasArray = [&](bool cellData)
+  {
+    return std::any_of(blocks.begin(), blocks.end(),
+      [&](vtkDataSet* b) { return vectorArray(b, name, cellData) != nullptr; });
+  };
+  if (!hasArray(cells) && hasArray(!cells))
+  {
+    cells = !cells;
+  }
+  const std::string mine = hasArray(cells) ? (cells ? "c" : "p") + name : std::string();
+  const std::string agreed = bpvtk::firstNonEmpty(controller, mine);
+  if (!agreed.empty())
+  {
+    cells = agreed[0] == 'c';
+    name = agreed.substr(1);
+  }
+  return name;
+}
+
 /// What a mesh whose `bounds` reach beyond the grid (chosen at an earlier
 /// time step) loses; empty when they do not.
 std::string beyondGrid(const bp::ResampleGrid& g, const std::array<double, 6>& bounds)
@@ -279,19 +311,7 @@ FieldResampler::Selection FieldResampler::select(
 {
   Selection s;
   const std::vector<vtkDataSet*> blocks = blocksWithCells(input);
-  s.cellVectors = vectors.association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-  const std::string name =
-    vectors.name.empty() ? firstVectorName(blocks, s.cellVectors) : vectors.name;
-  // A name given as point data that only the cells have (or the reverse) is taken where it is.
-  const auto hasArray = [&](bool cells)
-  {
-    return std::any_of(blocks.begin(), blocks.end(),
-      [&](vtkDataSet* b) { return vectorArray(b, name, cells) != nullptr; });
-  };
-  if (!hasArray(s.cellVectors) && hasArray(!s.cellVectors))
-  {
-    s.cellVectors = !s.cellVectors;
-  }
+  const std::string name = agreedVectors(blocks, vectors, controller, s.cellVectors);
   this->ArrayName = name;
   // Only the blocks of the highest cell dimension carry the flow (every
   // process decides from the same global dimension).
