@@ -3,15 +3,20 @@
 then) with exit status 0, printing its result from rank 0. A case where one
 process's input differs from the others' (data on rank 0 only) must not leave
 the others waiting in a collective step: it traces, or every rank fails with
-the message (issue 27, items 2 and 11).
+the message (issue 27, items 2 and 11). Neither may a rank whose piece of a
+mesh is empty (a serial file read by every rank), alone or among the newest
+features in one script (issue 38, item 8).
 
 Run as the driver; it runs itself under pvbatch with `--case NAME`.
 """
 import argparse
+import builtins
 import os
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -22,6 +27,7 @@ parser.add_argument("--plugin", required=True)
 parser.add_argument("--case")
 parser.add_argument("--pvbatch", default="pvbatch")
 parser.add_argument("--mpiexec", default="mpiexec")
+parser.add_argument("--meshes", help="(set by the driver) the folder of the tetrahedral meshes")
 args = parser.parse_args()
 
 TIME_LIMIT = 90
@@ -82,7 +88,70 @@ def spiked_flow():
     return f
 
 
-# name: (what to build, time, whether it must trace something, what a
+def write_meshes(folder):
+    """A tetrahedral mesh of a smooth flow (`velocity`, and the wavelet's
+    `RTData`) as one serial .vtu, which every rank reads and only rank 0 gets
+    cells from, and as a .pvtu of 4 pieces."""
+    from vtkmodules.vtkFiltersCore import vtkArrayCalculator
+    from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+    from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+    from vtkmodules.vtkIOParallelXML import vtkXMLPUnstructuredGridWriter
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    wavelet = vtkRTAnalyticSource()
+    wavelet.SetWholeExtent(0, 12, 0, 12, 0, 12)
+    flow = vtkArrayCalculator()
+    flow.SetInputConnection(wavelet.GetOutputPort())
+    for a, name in enumerate("xyz"):
+        flow.AddCoordinateScalarVariable(name, a)
+    flow.SetFunction("sin(z/4)*iHat + cos(x/4)*jHat + (sin(y/4)+0.3)*kHat")
+    flow.SetResultArrayName("velocity")
+    tets = vtkDataSetTriangleFilter()
+    tets.SetInputConnection(flow.GetOutputPort())
+    serial = vtkXMLUnstructuredGridWriter()
+    serial.SetInputConnection(tets.GetOutputPort())
+    serial.SetFileName(os.path.join(folder, "tets.vtu"))
+    serial.Write()
+    pieces = vtkXMLPUnstructuredGridWriter()
+    pieces.SetInputConnection(tets.GetOutputPort())
+    pieces.SetFileName(os.path.join(folder, "tets.pvtu"))
+    pieces.SetNumberOfPieces(4)
+    pieces.SetStartPiece(0)
+    pieces.SetEndPiece(3)
+    pieces.Write()
+
+
+def serial_mesh_weighted_by_vectors():
+    """The serial .vtu, traced as a script does it without updating the
+    reader first (so Vectors is left unnamed and the tracer picks the array),
+    weighted by the vectors themselves: rank 0 picked `velocity` and ranks
+    with no cells picked nothing, so only they interpolated the weights apart
+    and waited in a collective rank 0 never joined (issue 38, item 8)."""
+    reader = XMLUnstructuredGridReader(FileName=[os.path.join(args.meshes, "tets.vtu")])
+    return BoundParticleTracer(Input=reader, NumberOfElements=200,
+                               ReleaseWeights=["POINTS", "velocity"])
+
+
+def newest_features_together():
+    """Issue 38, item 8's script: a serial mesh (Vectors unnamed, weighted by
+    the vectors), the same mesh in 4 pieces, Release Weights on an image, a
+    lattice with its FTLE map, anchored paddlewheels and a Point Cloud, each
+    output fetched. Returns the outputs as (proxy, port)."""
+    pieces = XMLPartitionedUnstructuredGridReader(
+        FileName=[os.path.join(args.meshes, "tets.pvtu")])
+    weighted = Calculator(Input=flow(), ResultArrayName="w", Function="coordsX+1")
+    lattice = tracer(flow(), ReleasePattern="Lattice")
+    cloud = tracer(flow(), SeedType="Point Cloud")
+    cloud.SeedType.NumberOfPoints = 100
+    return [(serial_mesh_weighted_by_vectors(), 0),
+            (tracer(pieces, ResampleDimensions=[16, 16, 16]), 0),
+            (tracer(weighted, ReleaseWeights=["POINTS", "w"]), 0),
+            (lattice, 0), (lattice, 1),
+            (tracer(flow(), ElementShape="Paddlewheel", Anchor="Centre"), 0),
+            (cloud, 0)]
+
+
+# name: (what to build (a proxy, or a list of (proxy, output port)), time,
+# whether it must trace something (every output, for a list), what a
 # refusal or warning must say)
 CASES = {
     "seeds on rank 0 only": (lambda: tracer(flow(Flow="ABC"), SeedSource=rank0_points(
@@ -100,16 +169,26 @@ CASES = {
                                   "vector array holds values up to 1e+30"),
     "a 2x2x2 field": (lambda: tracer(flow(Resolution=[2, 2, 2])), 0.5, True, "too few cells"),
     "a field of 3 cells along x": (lambda: tracer(flow(Resolution=[4, 2, 2])), 0.5, True, None),
+    "a serial mesh weighted by its unnamed vectors": (serial_mesh_weighted_by_vectors, 0.5, True,
+                                                      None),
+    "the newest features together": (newest_features_together, 0.5, True, None),
 }
 
 
 def run_case(name):
     from paraview import servermanager
     build, t = CASES[name][:2]
-    proxy = build()
-    proxy.UpdatePipeline(t)
-    data = servermanager.Fetch(proxy)
-    print("RESULT %d" % (data.GetNumberOfPoints() if data else 0), flush=True)
+    built = build()
+    outputs = built if isinstance(built, list) else [(built, 0)]
+    counts = []
+    for proxy, port in outputs:
+        proxy.UpdatePipeline(t)
+        data = servermanager.Fetch(proxy, idx=port)
+        counts.append(data.GetNumberOfPoints() if data else 0)
+    # The fewest: a list traces only if every output does. Python's own min:
+    # paraview.simple's `*` brings numpy_interface's, a reduction over every
+    # rank that rank 0 alone would enter here, and wait in.
+    print("RESULT %d" % builtins.min(counts), flush=True)
 
 
 if args.case:
@@ -125,11 +204,13 @@ def drive():
     # mpiexec believe it runs inside that job.
     environment = {k: v for k, v in os.environ.items()
                    if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
+    meshes = tempfile.mkdtemp(prefix="bp-parallel-hostile-")
+    write_meshes(meshes)
     for name, (_, _, traces, says) in CASES.items():
         for ranks in (2, 4):
             command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
                        args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
-                       "--case", name]
+                       "--case", name, "--meshes", meshes]
             started = time.time()
             process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                        text=True, env=environment, start_new_session=True)
@@ -157,6 +238,7 @@ def drive():
             said = " | ".join(messages)
             bptest.check(not says or says in said, "%s, %d ranks: no message saying '%s' (%s)" % (
                 name, ranks, says, said[:300] or "none"))
+    shutil.rmtree(meshes, ignore_errors=True)
     bptest.finish()
 
 
