@@ -10,7 +10,6 @@
 #include "pqDataRepresentation.h"
 #include "pqPipelineRepresentation.h"
 #include "pqPipelineSource.h"
-#include "pqResetScalarRangeReaction.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkOutputWindow.h"
@@ -138,9 +137,13 @@ void pqBoundParticleDisplays::rescaleIfVectorsChanged(pqPipelineSource* source)
   }
   for (pqDataRepresentation* display : source->getRepresentations(nullptr))
   {
-    // The GUI's own "Rescale to Data Range" (it does nothing for a solid colour).
+    // What the GUI's "Rescale to Data Range" does (nothing for a solid colour,
+    // nor where the user locked the range); that reaction's header is not
+    // installed by Debian's ParaView 5.13 and 6.1.
     auto* shown = qobject_cast<pqPipelineRepresentation*>(display);
-    if (shown && shown->isVisible() && pqResetScalarRangeReaction::resetScalarRangeToData(shown))
+    auto* proxy = shown ? vtkSMPVRepresentationProxy::SafeDownCast(shown->getProxy()) : nullptr;
+    if (proxy && shown->isVisible() &&
+      proxy->RescaleTransferFunctionToDataRange(/*extend=*/false, /*force=*/false))
     {
       shown->renderViewEventually();
     }
