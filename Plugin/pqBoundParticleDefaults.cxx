@@ -195,7 +195,10 @@ void pqBoundParticleDefaults::keepAsContext(
   {
     camera->GetDirectionOfProjection(direction);
   }
-  if (vtkSMProperty* position = display->GetProperty("Position"))
+  // The display's offset: "Translation" from ParaView 5.13 on, "Position" before.
+  vtkSMProperty* position = display->GetProperty("Translation");
+  position = position ? position : display->GetProperty("Position");
+  if (position)
   {
     vtkSMPropertyHelper helper(position);
     double moved[3] = { helper.GetAsDouble(0), helper.GetAsDouble(1), helper.GetAsDouble(2) };

@@ -63,7 +63,11 @@ def picture(name, after):
             flat = spans.index(0.0)
             position = [0.0, 0.0, 0.0]
             position[flat] = -0.01 * max(spans)
-            context.Position = position
+            # Translation from ParaView 5.13 on, Position before.
+            if hasattr(context, "Translation"):
+                context.Translation = position
+            else:
+                context.Position = position
         else:
             context.SetRepresentationType("Outline")
     display = Show(tracer, view)

@@ -1,8 +1,8 @@
 # Run from the GUI's Python shell by defaults.xml after the tracer was applied
 # to an Analytic Flow with its defaults: when the flow's outline is still shown,
 # the tracer's display is coloured by Speed and its FTLE Map (port 1, empty
-# for a random release) has no display in the view, sets the tracer's Coloring
-# Axis to X, which defaults.xml then checks; what failed is printed.
+# for a random release) has no display in the view, sets the tracer's Number
+# Of Elements to 999, which defaults.xml then checks; what failed is printed.
 import os
 
 from paraview.simple import FindSource, GetActiveView, GetDisplayProperties
@@ -25,4 +25,6 @@ found = {
 }
 os.write(2, ("check_defaults: %s\n" % found).encode())  # the terminal, not the shell
 if all(found.values()):
-    tracer.ColoringAxis = 0
+    # Number Of Elements, not Coloring Axis as the other checks: ParaView
+    # 5.13's panel kept that combo box at Z here though the property held X.
+    tracer.NumberOfElements = 999

@@ -9,7 +9,8 @@
 #
 # The events are recorded in ParaView 5.11. From ParaView 6 on, a box
 # widget's Translate, Rotate and Scale fields sit on the "Fields" page of a
-# tab widget: their object paths are rewritten for the ParaView that plays.
+# tab widget: their object paths are rewritten for the ParaView that plays;
+# from 5.13 on, Reset Session's confirmation is not played (none comes).
 set -u
 plugin_dir="$1"
 data_dir="$2"
@@ -21,12 +22,20 @@ unset PV_PLUGIN_CONFIG_FILE
 # A fresh settings folder keeps the user's ParaView settings out of the test.
 export HOME="$(mktemp -d)"
 trap 'rm -rf "$HOME"' EXIT
-major="$(pvpython --version 2>/dev/null | sed -nE 's/.*version ([0-9]+).*/\1/p')"
-if [ "${major:-0}" -ge 6 ]; then
-  sed -E 's#(BoundParticleEmitterBox)/((translate|rotate|scale)[XYZ])#\1/tabWidget/qt_tabwidget_stackedwidget/fieldsPage/\2#g' \
-    "$script" >"$HOME/$(basename "$script")"
-  script="$HOME/$(basename "$script")"
+version="$(pvpython --version 2>/dev/null | sed -nE 's/.*version ([0-9]+)[.]([0-9]+).*/\1 \2/p')"
+read -r major minor <<<"${version:-0 0}"
+played="$HOME/$(basename "$script")"
+cp "$script" "$played"
+if [ "$major" -ge 6 ]; then
+  sed -i -E 's#(BoundParticleEmitterBox)/((translate|rotate|scale)[XYZ])#\1/tabWidget/qt_tabwidget_stackedwidget/fieldsPage/\2#g' \
+    "$played"
 fi
+# From ParaView 5.13 on, Edit > Reset Session asks nothing: its
+# confirmation's Yes (the message box after actionDelete_All) is not played.
+if [ "$major" -ge 6 ] || { [ "$major" -eq 5 ] && [ "$minor" -ge 13 ]; }; then
+  sed -i -E '/actionDelete_All/{n;/1QMessageBox0\/qt_msgbox_buttonbox/d}' "$played"
+fi
+script="$played"
 timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
   paraview --dr --data-directory="$data_dir" --test-directory="$HOME" \
   --test-script="$script" --exit
