@@ -117,6 +117,9 @@ def field(output, name):
 def trace(reader, times, vectors=("POINTS", "velocity"), **properties):
     """A tracer updated at each of `times` in turn: per time (particles,
     ResampledDimensions, messages)."""
+    # The reader runs first, as a user's script would: ParaView 6.1 gives a
+    # tracer on a source that never ran a zero-size emitter box.
+    reader.UpdatePipeline()
     tracer = BoundParticleTracer(Input=reader, Vectors=list(vectors), ElementShape="Point",
                                  NumberOfElements=200, Seed=3, FramesPerInputStep=2,
                                  **properties)
