@@ -47,6 +47,7 @@
 #include "ElementNormals.h"
 #include "ElementTemplate.h"
 #include "EngineParameters.h"
+#include "Inertia.h"
 #include "Parallel.h"
 #include "ParticleLayout.h"
 #include "Quaternion.h"
@@ -164,6 +165,10 @@ public:
   /// against the field at its centre at the step's end (Pose.h); 0 when
   /// placed, for one particle, and for a step whose positions turned non-finite.
   const std::vector<float>& spins() const { return this->Spins; }
+  /// Heavy particles (Inertia.h): each particle's slip velocity, its velocity
+  /// less the flow's at its position (3 floats per particle, element-major);
+  /// 0 when placed. Empty unless the parameters carry inertia.
+  const std::vector<float>& slips() const { return this->Slips; }
   /// Elements flagged for reset at the next step.
   const std::vector<std::uint8_t>& resetFlags() const { return this->ResetFlags; }
   /// @name Motion trails (Parameters::trailLength slots, a ring)
@@ -218,6 +223,8 @@ public:
 
   /// For tests: direct access to the positions of the system.
   std::vector<float>& mutablePositions() { return this->Positions; }
+  /// For tests: direct access to the slips (a particle released at rest).
+  std::vector<float>& mutableSlips() { return this->Slips; }
 
 private:
   /**
@@ -247,6 +254,7 @@ private:
     f(self.Spins, 4, 1, 0.0f);
     f(self.Positions, 3 * n, 1, 0.0f);
     f(self.Forces, n, 1, 0.0f);
+    f(self.Slips, carriesInertia(self.Params) ? 3 * n : 0, 1, 0.0f);
     f(self.TrailGenerations, 1, slots, NoTrailPose);
     f(self.TrailPositions, 3 * n, slots, 0.0f);
   }
@@ -313,6 +321,7 @@ private:
     float start, middle, end;
     bool releasing; ///< the step overlaps the release window (releasesAt)
     bool resets;    ///< due elements are placed in this step (not done by resetDue())
+    InertiaStep inertia; ///< the slip's step (with carriesInertia())
   };
   /// The step [t, t + h)'s StepWeights; takes back resetDue()'s mark.
   StepWeights beginStep(const VectorField& field, double t, double h);
@@ -324,6 +333,11 @@ private:
   void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     std::vector<float>& scratch);
   void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3]) const;
+  /// A heavy particle's step: its slip's (Inertia.h), from the field at its
+  /// position at the step's start, then the tracer's advection, then the
+  /// slip's displacement.
+  void advectHeavyParticle(
+    const VectorField& field, const StepWeights& w, double h, float p[3], float slip[3]) const;
   /// The correction of spring s at positions p; false when its ends coincide.
   static bool springCorrection(const float* p, const SpringWork& s, float c[3]);
   /// K iterations on one element's positions; `scratch` holds
@@ -398,6 +412,7 @@ private:
 
   std::vector<float> Positions;
   std::vector<float> Forces;
+  std::vector<float> Slips; ///< slips()
   std::vector<float> Lifetimes;
   std::vector<std::uint32_t> Generations;
   std::vector<float> InitialCenters;

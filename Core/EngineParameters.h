@@ -59,6 +59,15 @@ enum class Anchor
   Centre    ///< its centre kept where it was released; it still turns and deforms
 };
 
+/// Whether particles carry inertia (Core/Inertia.h): None, the massless
+/// tracer; MaxeyRiley, the reduced Maxey-Riley equation with drag, the
+/// fluid's acceleration with added mass, and gravity with buoyancy.
+enum class Inertia
+{
+  None = 0,
+  MaxeyRiley
+};
+
 enum class ResetWhen
 {
   CenterLeaves = 0,
@@ -135,6 +144,13 @@ struct Parameters
   /// (resolveSettings makes numberOfElements its size()).
   ReleaseLattice lattice;
   Anchor anchor = Anchor::None;
+  /// Heavy particles (Core/Inertia.h): with Inertia::MaxeyRiley and a
+  /// response time tau > 0 each particle keeps its slip velocity (its
+  /// velocity less the flow's) and drifts from the flow by it.
+  Inertia inertia = Inertia::None;
+  float responseTime = 0.0f; ///< tau, the Stokes response time, in time units
+  float densityRatio = 1.0f; ///< the particle's density over the fluid's, > 0
+  std::array<float, 3> gravity = { 0, 0, 0 }; ///< in world units per time unit squared
   /// Release centres, 3 floats per point (at most MaxSeedPoints): release r
   /// = generation * numberOfElements + id of an element is at point r modulo
   /// their count, so releases take the points in order, cycling. Empty: the

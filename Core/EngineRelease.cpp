@@ -53,6 +53,10 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
   const std::size_t n = this->Shape.particleCount();
   std::fill_n(this->Forces.data() + e * n, n, 0.0f);
+  if (!this->Slips.empty())
+  {
+    std::fill_n(this->Slips.data() + 3 * e * n, 3 * n, 0.0f); // released with the flow's velocity
+  }
   this->Lifetimes[e] = lifetimeDraw(P, element, generation);
   // A lattice point that does not fit is never shown (due again each step).
   this->ResetFlags[e] = releasing && fits ? 0 : ReleaseHidden;

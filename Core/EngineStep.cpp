@@ -79,6 +79,19 @@ void Engine::advectParticle(
   }
 }
 
+void Engine::advectHeavyParticle(
+  const VectorField& field, const StepWeights& w, double h, float p[3], float slip[3]) const
+{
+  float u[3], d[3][3], dudt[3], move[3];
+  field.sampleWithDerivatives(p, w.start, u, d, dudt);
+  slipStep(w.inertia, u, d, dudt, slip, move);
+  this->advectParticle(field, w, h, p);
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] += move[k];
+  }
+}
+
 inline bool Engine::springCorrection(const float* p, const SpringWork& s, float c[3])
 {
   // The whole correction moves end a away from end b; the ends share it.
@@ -219,7 +232,7 @@ Engine::StepWeights Engine::beginStep(const VectorField& field, double t, double
   const bool resets = !this->ResetsDone;
   this->ResetsDone = false;
   return { field.timeWeight(t), field.timeWeight(t + 0.5 * h), field.timeWeight(t + h),
-    this->releasesAt(t, h), resets };
+    this->releasesAt(t, h), resets, inertiaStepOf(this->Params, h) };
 }
 
 void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
@@ -237,9 +250,18 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   }
   float* p = this->Positions.data() + 3 * e * n;
   std::copy_n(p, 3 * n, before);
+  float* slips = this->Slips.empty() ? nullptr : this->Slips.data() + 3 * e * n;
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (!this->Pinned[i])
+    if (this->Pinned[i])
+    {
+      continue;
+    }
+    if (slips)
+    {
+      this->advectHeavyParticle(field, weights, h, p + 3 * i, slips + 3 * i);
+    }
+    else
     {
       this->advectParticle(field, weights, h, p + 3 * i);
     }
@@ -298,12 +320,21 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     }
     anyOutside = anyOutside || (testParticles && !this->inDomain(field, q, weights.end));
   }
+  float* slips = this->Slips.empty() ? nullptr : this->Slips.data() + 3 * e * n;
+  if (slips && advected)
+  {
+    shareSlip(slips, n); // restored: the element moves as one body
+  }
   bool leave;
   if (!finite)
   {
     // Keep the last good positions on view until the reset at the next step.
     std::copy_n(before, 3 * n, p);
     std::fill_n(force, n, 0.0f);
+    if (slips)
+    {
+      std::fill_n(slips, 3 * n, 0.0f);
+    }
     leave = true;
   }
   else

@@ -221,6 +221,42 @@ std::string checkAnchor(const ElementTemplate& shape, const Parameters& p)
   }
   return std::string();
 }
+std::string checkInertia(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (p.inertia == Inertia::None)
+  {
+    return std::string();
+  }
+  if (p.inertia != Inertia::MaxeyRiley)
+  {
+    return "Inertia must be None or Maxey-Riley";
+  }
+  if (!(p.responseTime >= 0.0f) || !std::isfinite(p.responseTime))
+  {
+    return "ResponseTime (the particles' response time tau) must be a finite number of at "
+           "least 0 (0 traces massless particles)";
+  }
+  if (!(p.densityRatio > 0.0f) || !std::isfinite(p.densityRatio))
+  {
+    return "DensityRatio (the particles' density over the fluid's) must be a finite number "
+           "above 0";
+  }
+  for (const float g : p.gravity)
+  {
+    if (!std::isfinite(g))
+    {
+      return "Gravity must be a finite vector (0 0 0 for none)";
+    }
+  }
+  if (p.anchor != Anchor::None)
+  {
+    // An anchored element is held where it was released: it has no path
+    // for inertia to change.
+    return "Anchor = Centre holds elements in place, where inertia has no meaning: set Anchor "
+           "to None or Inertia to None";
+  }
+  return std::string();
+}
 } // namespace
 
 std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
@@ -230,7 +266,7 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
   const Check checks[] = { checkShape, checkLattice, checkSize, checkTrail, checkReleaseWindow,
-    checkRelease, checkRestoration, checkLinking, checkAnchor };
+    checkRelease, checkRestoration, checkLinking, checkAnchor, checkInertia };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);

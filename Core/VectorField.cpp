@@ -488,10 +488,10 @@ float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3
   return std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]);
 }
 
-void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const
+void VectorField::locateWithSlopes(
+  const float p[3], std::size_t& base, float f[3], float w[3]) const
 {
-  std::size_t base = 0;
-  float f[3], w[3];
+  base = 0;
   for (int a = 0; a < 3; ++a)
   {
     std::size_t i;
@@ -500,10 +500,48 @@ void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], flo
     // d(fraction)/dx: 0 along a flat axis, where nothing varies.
     w[a] = this->Rectilinear[a] ? this->AxisTable[a][2 * i + 1] : this->InverseSpacing[a];
   }
+}
+
+void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const
+{
+  std::size_t base = 0;
+  float f[3], w[3];
+  this->locateWithSlopes(p, base, f, w);
   this->sampleCell(base, f, weight, v); // the cell is found once for both
-  const bool blend = this->SecondData && weight > 0.0f;
   // d[a][k] = d v_k / d x_a
   float d[3][3];
+  this->blendedGradient(base, f, w, weight, d);
+  curl[0] = d[1][2] - d[2][1];
+  curl[1] = d[2][0] - d[0][2];
+  curl[2] = d[0][1] - d[1][0];
+}
+
+void VectorField::sampleWithDerivatives(
+  const float p[3], float weight, float v[3], float d[3][3], float dvdt[3]) const
+{
+  std::size_t base = 0;
+  float f[3], w[3];
+  this->locateWithSlopes(p, base, f, w);
+  this->sampleCell(base, f, weight, v);
+  this->blendedGradient(base, f, w, weight, d);
+  std::fill_n(dvdt, 3, 0.0f);
+  if (this->SecondData)
+  {
+    float first[3], second[3];
+    this->interpolate(this->FirstData, base, f, first);
+    this->interpolate(this->SecondData, base, f, second);
+    const float rate = float(1.0 / (this->Second.time - this->First.time));
+    for (int k = 0; k < 3; ++k)
+    {
+      dvdt[k] = (second[k] - first[k]) * rate;
+    }
+  }
+}
+
+void VectorField::blendedGradient(
+  std::size_t base, const float f[3], const float w[3], float weight, float d[3][3]) const
+{
+  const bool blend = this->SecondData && weight > 0.0f;
 #if BOUNDPARTICLES_SSE2
   if (this->Stride[0] == 1)
   {
@@ -543,9 +581,6 @@ void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], flo
       }
     }
   }
-  curl[0] = d[1][2] - d[2][1];
-  curl[1] = d[2][0] - d[0][2];
-  curl[2] = d[0][1] - d[1][0];
 }
 
 float VectorField::vorticityMagnitude(const float p[3], double t) const

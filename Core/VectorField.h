@@ -164,6 +164,14 @@ public:
   float sampleWithVorticity(const float p[3], float weight, float v[3]) const;
   /// Velocity at p and curl v there, as sampleWithVorticity().
   void sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const;
+  /**
+   * Velocity at p (as sampleWithCurl), its gradient d[a][k] = d v_k / d x_a
+   * there, and dv/dt: the slices' difference over their times at p (the
+   * field is linear in time between them; 0 for a steady field). What a
+   * heavy particle's step reads (Inertia.h).
+   */
+  void sampleWithDerivatives(
+    const float p[3], float weight, float v[3], float d[3][3], float dvdt[3]) const;
   /// |curl v| at p and time t (sampleWithVorticity).
   float vorticityMagnitude(const float p[3], double t) const;
 
@@ -238,6 +246,12 @@ private:
   inline void sampleCell(std::size_t base, const float f[3], float weight, float v[3]) const;
   /// Trilinear interpolation in the cell at `base` (a point index) with weights f.
   inline void interpolate(const float* data, std::size_t base, const float f[3], float v[3]) const;
+  /// The cell that holds p: its base point, fractions and the fractions'
+  /// derivatives along each axis.
+  void locateWithSlopes(const float p[3], std::size_t& base, float f[3], float w[3]) const;
+  /// The gradient at the located cell, both slices blended (sampleWithCurl).
+  void blendedGradient(std::size_t base, const float f[3], const float w[3], float weight,
+    float d[3][3]) const;
   /// The velocity's derivatives d[a][k] = d v_k / d x_a of that interpolant,
   /// with w[a] the derivative of the fraction along axis a.
   void gradient(

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Inertia.h
+ * @brief Heavy particles: the reduced Maxey-Riley equation (Haller and
+ * Sapsis 2008) as one step of a particle's slip velocity, the maths every
+ * engine shares.
+ *
+ * A particle of velocity v at x in the flow u follows
+ *
+ *     dv/dt = (u(x, t) - v) / tau + beta Du/Dt + (1 - beta) g,   dx/dt = v,
+ *
+ * with beta = 3 / (1 + 2 rho_p / rho_f) (0 for heavy particles, 1 for
+ * neutrally buoyant ones, 3 for bubbles) and Du/Dt = du/dt + (u . grad) u.
+ * The engines keep the slip s = v - u(x, t) instead of v: the massless
+ * tracer's step moves a particle by the flow (with the trace's integrator),
+ * and the slip adds its own displacement. Along the particle's path
+ * du(x, t)/dt = Du/Dt + (s . grad) u, so the slip follows
+ *
+ *     ds/dt = -s / tau + a,   a = (1 - beta) (g - Du/Dt) - (s . grad) u,
+ *
+ * which one step solves exactly for a held constant over the step (an
+ * exponential integrator): with the terminal slip T = tau a and E =
+ * exp(-h / tau),
+ *
+ *     s(t + h) = T + (s - T) E,   displacement = h T + tau (1 - E) (s - T).
+ *
+ * It is stable for any tau > 0, however far below the step (E -> 0: the
+ * slip is T, the drift h T), and exact for a constant a (settling in still
+ * fluid, drag relaxation in a uniform flow). tau -> 0 gives the tracer;
+ * tau = 0 is the tracer itself (carriesInertia() is false, nothing runs).
+ */
+#ifndef BoundParticles_Inertia_h
+#define BoundParticles_Inertia_h
+
+#include "EngineParameters.h"
+
+#include <cmath>
+
+namespace bp
+{
+
+/// beta = 3 / (1 + 2 R) for a density ratio R = rho_p / rho_f > 0.
+inline float addedMassFactor(float densityRatio)
+{
+  return 3.0f / (1.0f + 2.0f * densityRatio);
+}
+
+/// Whether a step moves particles by their slip: Maxey-Riley with tau > 0.
+inline bool carriesInertia(const Parameters& p)
+{
+  return p.inertia == Inertia::MaxeyRiley && p.responseTime > 0.0f;
+}
+
+/// A step's constants, the same for every particle.
+struct InertiaStep
+{
+  float h = 0.0f;        ///< the step
+  float tau = 0.0f;      ///< the response time
+  float decay = 1.0f;    ///< E = exp(-h / tau)
+  float memory = 0.0f;   ///< tau (1 - E): the displacement per unit of slip off its terminal
+  float buoyancy = 0.0f; ///< 1 - beta
+  float gravity[3] = { 0, 0, 0 };
+};
+
+/// The constants of a step of size h (in double, then float).
+inline InertiaStep inertiaStepOf(const Parameters& p, double h)
+{
+  InertiaStep k;
+  k.h = float(h);
+  k.tau = p.responseTime;
+  if (!carriesInertia(p))
+  {
+    return k;
+  }
+  const double tau = p.responseTime;
+  const double decay = std::exp(-h / tau);
+  k.decay = float(decay);
+  k.memory = float(tau * (1.0 - decay));
+  k.buoyancy = 1.0f - addedMassFactor(p.densityRatio);
+  for (int a = 0; a < 3; ++a)
+  {
+    k.gravity[a] = p.gravity[a];
+  }
+  return k;
+}
+
+/**
+ * One particle's slip over a step: `u` the flow, `d[a][c]` = du_c/dx_a and
+ * `dudt` = du/dt at its position at the step's start. Updates `slip` and
+ * writes the displacement the slip adds to the tracer's in `move`.
+ */
+inline void slipStep(const InertiaStep& k, const float u[3], const float d[3][3],
+  const float dudt[3], float slip[3], float move[3])
+{
+  float terminal[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const float material = dudt[c] + (u[0] * d[0][c] + u[1] * d[1][c] + u[2] * d[2][c]);
+    const float turning = slip[0] * d[0][c] + slip[1] * d[1][c] + slip[2] * d[2][c];
+    terminal[c] = k.tau * (k.buoyancy * (k.gravity[c] - material) - turning);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    const float off = slip[c] - terminal[c];
+    move[c] = k.h * terminal[c] + k.memory * off;
+    slip[c] = terminal[c] + k.decay * off;
+  }
+}
+
+/// A rigid element's particles move as one body: each takes the element's
+/// mean slip (the springs' correction of the positions, in the velocities),
+/// which never adds kinetic energy. `slips` holds n particles' slips.
+inline void shareSlip(float* slips, std::size_t n)
+{
+  if (n < 2)
+  {
+    return;
+  }
+  float mean[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] += slips[3 * i + c];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    mean[c] /= float(n);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      slips[3 * i + c] = mean[c];
+    }
+  }
+}
+
+/// A step far above tau makes the trace nearly massless: the slip relaxes to
+/// its terminal in under a thousandth of a step. The tracer notes it.
+inline bool nearlyMassless(const Parameters& p, double h)
+{
+  return carriesInertia(p) && double(p.responseTime) < 1e-3 * h;
+}
+
+} // namespace bp
+
+#endif
