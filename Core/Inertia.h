@@ -35,6 +35,7 @@
 #include "EngineParameters.h"
 
 #include <cmath>
+#include <string>
 
 namespace bp
 {
@@ -135,6 +136,16 @@ inline void shareSlip(float* slips, std::size_t n)
       slips[3 * i + c] = mean[c];
     }
   }
+}
+
+/// Why the GPU engine cannot run `p` (empty when it can): it does not yet
+/// step heavy particles. The tracer then runs the CPU engine and the GPU
+/// display draws its result; the GPU engine itself refuses them.
+inline std::string cpuOnlyReason(const Parameters& p)
+{
+  return carriesInertia(p) ? "the GPU engine does not run Inertia = Maxey-Riley (heavy "
+                             "particles) yet: set Engine to CPU to trace them without this note"
+                           : std::string();
 }
 
 /// A step far above tau makes the trace nearly massless: the slip relaxes to

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Memory.h"
 
+#include "Inertia.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -58,7 +60,8 @@ double traceBytes(const ElementTemplate& shape, const Parameters& p)
   // normals for the output), twice (the copy a short step is shown on); the
   // output's points (up to 24), normals, velocity (12 each), six float
   // arrays, ElementId (8) and ParticleIndex (4).
-  const double engine = 16;
+  // Heavy particles (Inertia.h) keep a slip velocity more: 12 bytes.
+  const double engine = 16 + (carriesInertia(p) ? 12 : 0);
   const double perParticle = 2 * engine + 24 + 12 + 12 + 6 * 4 + 8 + 4;
   // Per element: lifetimes, generations, centres, orientations, flags and
   // visiting order, twice; and its cells (a vtkIdType per corner plus offsets).

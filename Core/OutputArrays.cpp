@@ -73,6 +73,11 @@ const std::vector<OutputArray>& outputArrays()
       C::Stretch, R::Stretch, OffByDefault),
     row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Ftle,
       R::Ftle, OffByDefault),
+    // Heavy particles (Inertia.h): the CPU engine's slip, 0 without inertia.
+    row(Id::ParticleVelocity, "ParticleVelocity", 3, V::Float, Role::Plain, Src::Derived,
+      C::Solid, R::SignedSpeed, OffByDefault),
+    row(Id::SlipVelocity, "SlipVelocity", 3, V::Float, Role::Plain, Src::ParticleState, C::Solid,
+      R::SignedSpeed, OffByDefault),
   };
   return table;
 }

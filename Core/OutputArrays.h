@@ -51,6 +51,8 @@ enum class OutputArrayId
   Age,
   ElementStretch,
   ElementFTLE,
+  ParticleVelocity, ///< a heavy particle's velocity: the flow's plus its slip (Inertia.h)
+  SlipVelocity,     ///< its velocity less the flow's; 0 without inertia
   Count ///< not an array: how many there are
 };
 

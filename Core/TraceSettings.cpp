@@ -330,6 +330,14 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   {
     return failure(lifetimeError);
   }
+  if (nearlyMassless(r.parameters, r.dt))
+  {
+    std::ostringstream w;
+    w << "Response Time " << r.parameters.responseTime << " is far below the step (" << r.dt
+      << "): the particles keep up with the flow within the step, so the trace is close to "
+         "massless (Inertia = None traces the same, faster).";
+    r.warnings.push_back(w.str());
+  }
   return r;
 }
 

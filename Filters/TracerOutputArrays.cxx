@@ -23,7 +23,20 @@ float* floats(vtkDataArray* a)
   return static_cast<vtkFloatArray*>(a)->GetPointer(0);
 }
 
-/// Normals (of whole elements: the block's ends are whole elements) and Force.
+/// Each particle's slip (0 without inertia) at `out`, 3 floats a particle.
+void copySlips(const bp::Engine& engine, std::size_t begin, std::size_t end, float* out)
+{
+  const std::vector<float>& slips = engine.slips();
+  if (slips.empty())
+  {
+    std::fill(out + 3 * begin, out + 3 * end, 0.0f);
+    return;
+  }
+  std::copy(slips.data() + 3 * begin, slips.data() + 3 * end, out + 3 * begin);
+}
+
+/// Normals (of whole elements: the block's ends are whole elements), Force
+/// and SlipVelocity.
 void writeParticleState(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
   std::size_t begin, std::size_t end)
 {
@@ -39,6 +52,9 @@ void writeParticleState(const bp::OutputArray& row, vtkDataArray* out, const Fil
     case bp::OutputArrayId::Force:
       std::copy(
         c.engine.forces().data() + begin, c.engine.forces().data() + end, floats(out) + begin);
+      break;
+    case bp::OutputArrayId::SlipVelocity:
+      copySlips(c.engine, begin, end, floats(out));
       break;
     default:
       break;
@@ -80,11 +96,12 @@ void writeFieldSample(const bp::OutputArray& row, vtkDataArray* /*out*/, const F
   }
 }
 
-/// Speed: |Velocity|, from the Velocity array where the output has it.
+/// Speed: |Velocity|, and ParticleVelocity: Velocity plus the slip, from
+/// the Velocity array where the output has it.
 void writeDerived(const bp::OutputArray& row, vtkDataArray* out, const FillContext& c,
   std::size_t begin, std::size_t end)
 {
-  if (row.id != bp::OutputArrayId::Speed)
+  if (row.id != bp::OutputArrayId::Speed && row.id != bp::OutputArrayId::ParticleVelocity)
   {
     return;
   }
@@ -99,6 +116,16 @@ void writeDerived(const bp::OutputArray& row, vtkDataArray* out, const FillConte
     sampled.resize(3 * (end - begin));
     sampleParticles(c, begin, end, sampled.data(), nullptr);
     v = sampled.data();
+  }
+  if (row.id == bp::OutputArrayId::ParticleVelocity)
+  {
+    float* particle = floats(out);
+    copySlips(c.engine, begin, end, particle);
+    for (std::size_t i = 0; i < 3 * (end - begin); ++i)
+    {
+      particle[3 * begin + i] += v[i];
+    }
+    return;
   }
   float* speed = floats(out) + begin;
   for (std::size_t i = 0; i < end - begin; ++i)

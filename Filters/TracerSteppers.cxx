@@ -167,12 +167,19 @@ std::string TracerSteppers::fallBackIfTooLarge(
   const int maxSize = this->Queue->maxTextureSize;
   const std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
-  if (limit.empty())
-  {
-    return std::string();
-  }
+  return limit.empty() ? std::string() : this->fallBack(limit);
+}
+
+std::string TracerSteppers::fallBackIfCpuOnly(const bp::Parameters& p)
+{
+  const std::string reason = this->Queue ? bp::cpuOnlyReason(p) : std::string();
+  return reason.empty() ? std::string() : this->fallBack(reason);
+}
+
+std::string TracerSteppers::fallBack(const std::string& reason)
+{
   // The display falls back to the CPU result, from this update on.
-  std::string message = limit + "; the CPU engine runs this trace instead.";
+  std::string message = reason + "; the CPU engine runs this trace instead.";
   message[0] = char(std::toupper(static_cast<unsigned char>(message[0])));
   this->Queue->clear();
   this->Queue->cursor.valid = false;

@@ -78,6 +78,7 @@ BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
 BP_CLAMPED_SETTER(Anchor, int, NO_ANCHOR, ANCHOR_CENTRE)
+BP_CLAMPED_SETTER(Inertia, int, NO_INERTIA, MAXEY_RILEY)
 BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
 BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
@@ -167,6 +168,10 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.linkStiffness = float(this->LinkStiffness);
   p.resetWhen = bp::ResetWhen(this->ResetWhen);
   p.anchor = bp::Anchor(this->Anchor);
+  p.inertia = bp::Inertia(this->Inertia);
+  p.responseTime = float(this->ResponseTime);
+  p.densityRatio = float(this->DensityRatio);
+  std::transform(this->Gravity, this->Gravity + 3, p.gravity.begin(), [](double g) { return float(g); });
   if (this->ReleaseWindow)
   {
     p.releaseStart = this->ReleaseStart;
@@ -664,6 +669,9 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "Anchor: " << this->Anchor << "\n";
+  os << indent << "Inertia: " << this->Inertia << " (tau " << this->ResponseTime << ", density ratio "
+     << this->DensityRatio << ", gravity " << this->Gravity[0] << " " << this->Gravity[1] << " "
+     << this->Gravity[2] << ")\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
      << this->TrailSpacing << " steps)\n";

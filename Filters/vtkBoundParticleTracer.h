@@ -107,6 +107,11 @@ public:
     NO_ANCHOR = 0,
     ANCHOR_CENTRE
   };
+  enum InertiaModels
+  {
+    NO_INERTIA = 0,
+    MAXEY_RILEY
+  };
   enum ReleasePatterns
   {
     RANDOM_RELEASES = 0,
@@ -350,6 +355,26 @@ public:
   ///@}
 
   ///@{
+  /// Heavy particles (Core/Inertia.h). NO_INERTIA: massless tracers.
+  /// MAXEY_RILEY: each particle follows the reduced Maxey-Riley equation,
+  /// dv/dt = (u - v) / ResponseTime + beta Du/Dt + (1 - beta) Gravity with
+  /// beta = 3 / (1 + 2 DensityRatio), starting at the flow's velocity. The
+  /// response time is in the data's time units (0 is massless), Gravity in
+  /// its units of length per time squared. Not with Anchor; CPU engine only
+  /// (the GPU display falls back to the CPU result). A negative or NaN
+  /// ResponseTime, a DensityRatio not above 0 or a NaN Gravity is refused.
+  /// Clamped to [NO_INERTIA, MAXEY_RILEY]; a value outside warns.
+  virtual void SetInertia(int value);
+  vtkGetMacro(Inertia, int);
+  vtkSetMacro(ResponseTime, double);
+  vtkGetMacro(ResponseTime, double);
+  vtkSetMacro(DensityRatio, double);
+  vtkGetMacro(DensityRatio, double);
+  vtkSetVector3Macro(Gravity, double);
+  vtkGetVector3Macro(Gravity, double);
+  ///@}
+
+  ///@{
   /// When an element is put back into the emitter besides running out of
   /// lifetime: its centre leaves the field (thesis) or any particle does.
   /// Clamped to [CENTER_LEAVES, ANY_PARTICLE_LEAVES]; a value outside warns.
@@ -575,6 +600,10 @@ protected:
   double LinkStiffness = 1.0;
   int ResetWhen = CENTER_LEAVES;
   int Anchor = NO_ANCHOR;
+  int Inertia = NO_INERTIA;
+  double ResponseTime = 0.1;
+  double DensityRatio = 1000.0;
+  double Gravity[3] = { 0.0, 0.0, 0.0 };
   double MinimumReleaseSpeed = 0.01;
   int ReleaseWindow = 0;
   double ReleaseStart = 0.0;

@@ -92,6 +92,10 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
 {
   // The same checks as the CPU engine, then the GPU's own limits.
   std::string error = Engine::validate(shape, p);
+  if (error.empty())
+  {
+    error = cpuOnlyReason(p);
+  }
   if (!error.empty())
   {
     return error;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -33,6 +34,26 @@ TEST(TraceSettings, StepInCellLengthsMovesTheFastestParticleThatFar)
   EXPECT_DOUBLE_EQ(r.dt, 0.5 * 0.5 / 2.0);
   s.stepInCellLengths = false;
   EXPECT_DOUBLE_EQ(bp::resolveSettings(s, box()).dt, 0.5);
+}
+
+TEST(TraceSettings, AResponseTimeFarBelowTheStepIsNotedAsNearlyMassless)
+{
+  bp::TraceSettings s;
+  s.stepSize = 0.5;
+  s.stepInCellLengths = false;
+  s.engine.inertia = bp::Inertia::MaxeyRiley;
+  s.engine.responseTime = 1e-5f;
+  auto noted = [](const bp::Resolution& r)
+  {
+    return std::any_of(r.warnings.begin(), r.warnings.end(),
+      [](const std::string& w) { return w.find("close to massless") != std::string::npos; });
+  };
+  EXPECT_TRUE(noted(bp::resolveSettings(s, box())));
+  s.engine.responseTime = 0.1f;
+  EXPECT_FALSE(noted(bp::resolveSettings(s, box())));
+  s.engine.responseTime = 1e-5f;
+  s.engine.inertia = bp::Inertia::None;
+  EXPECT_FALSE(noted(bp::resolveSettings(s, box())));
 }
 
 TEST(TraceSettings, ZeroFieldWarnsAndStepsAsAtUnitSpeed)

@@ -94,6 +94,13 @@ def placement_traces():
                                    Restoration="Shape Matching", LifetimeRange=[0.3, 0.6])
     anchored.OutputArrays = list(anchored.OutputArrays) + ["ElementSpin"]
     cases["anchored"] = (anchored, [0.5, 1.0])
+    # Heavy particles settling through the hurricane: each particle's slip
+    # velocity travels with its element between pieces.
+    heavy = BoundParticleTracer(Input=hurricane, ElementShape="Square", NumberOfElements=400,
+                                Seed=9, Inertia="Maxey-Riley", ResponseTime=0.05,
+                                DensityRatio=500, Gravity=[0, 0, -2])
+    heavy.OutputArrays = list(heavy.OutputArrays) + ["SlipVelocity"]
+    cases["inertial"] = (heavy, [0.5, 1.0])
     # A release window: hidden elements cross pieces and are released together.
     cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,
@@ -257,7 +264,7 @@ for name, (tracer, times) in all_traces().items():
         result[key + "_velocity"] = vtk_to_numpy(pd.GetArray("Velocity"))[order].astype(float)
         result[key + "_process"] = vtk_to_numpy(pd.GetArray(process_array))[order].astype(int)
         result[key + "_cells"] = numpy.array([data.GetNumberOfCells()])
-        for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin"),
+        for name_in, suffix in (("Age", "_age"), ("ElementSpin", "_spin"), ("SlipVelocity", "_slip"),
                                 ("ElementFTLE", "_ftle"), ("ElementStretch", "_stretch")):
             if pd.GetArray(name_in) is not None:
                 result[key + suffix] = vtk_to_numpy(pd.GetArray(name_in))[order].astype(float)

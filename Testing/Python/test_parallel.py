@@ -209,7 +209,7 @@ def compare(reference, result, name, ranks):
                   (name, base, array, error, scale))
             bptest.check(error <= share * scale, "%s %s%s differ by %g" %
                          (name, base, array, error))
-        for array in ("_age", "_spin", "_ftle", "_stretch"):
+        for array in ("_age", "_spin", "_ftle", "_stretch", "_slip"):
             if base + array in reference.files:
                 scale = max(float(abs(reference[base + array]).max()), 1e-9)
                 error = float(abs(result[base + array] - reference[base + array]).max())

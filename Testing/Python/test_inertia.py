@@ -1,0 +1,182 @@
+"""Heavy particles (Inertia = Maxey-Riley) through the tracer, as pvpython users meet it.
+
+- The properties' defaults, and Inertia off by default: the trace of a
+  tracer with Inertia = Maxey-Riley and Response Time 0 is the massless one,
+  point for point.
+- Settling in still fluid: SlipVelocity and ParticleVelocity reach the
+  terminal velocity Response Time x (1 - beta) x Gravity (within 1%), and the
+  particles sink by the distance it gives.
+- Solid-body rotation: heavy particles drift outwards, bubbles inwards, at
+  tau (1 - beta) omega^2 r (within 5%).
+- Bad settings are refused with a message naming the property and an empty
+  output; Anchor with inertia is refused; a response time far below the step
+  is noted as nearly massless.
+- The GPU display falls back to the CPU result, with a message.
+- A state file brings the settings back; the Python trace records them.
+"""
+import math
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+import paraview.simple  # noqa: E402
+from paraview import servermanager, smtrace  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+args = bptest.arguments()
+LoadPlugin(args.plugin, ns=globals())
+paraview.simple._DisableFirstRenderCameraReset()
+VELOCITY = ["POINTS", "velocity"]
+
+
+def fetch(proxy, time):
+    proxy.UpdatePipeline(time)
+    return servermanager.Fetch(proxy)
+
+
+def array(data, name):
+    a = data.GetPointData().GetArray(name)
+    return None if a is None else vtk_to_numpy(a)
+
+
+def points(data):
+    return vtk_to_numpy(data.GetPoints().GetData()) if data.GetNumberOfPoints() else np.zeros((0, 3))
+
+
+vortex = AnalyticFlow(Flow="Solid Body Rotation", Resolution=[17, 17, 17])
+vortex.UpdatePipeline()
+bounds = vortex.GetDataInformation().GetBounds()
+centre = [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+          0.5 * (bounds[4] + bounds[5])]
+still = Calculator(Input=vortex, ResultArrayName="still", Function="velocity*0")
+still.UpdatePipeline()
+
+
+def tracer(flow, vectors, **settings):
+    base = dict(Input=flow, Vectors=vectors, ElementShape="Point", NumberOfElements=40,
+                EmitterCenter=centre, EmitterSize=[0.2, 0.2, 0.2], LifetimeRange=[100, 100],
+                Integrator="Runge-Kutta 4", StepSizeUnit="Time", StepSize=0.005, Duration=1.0,
+                Seed=4, OutputArrays=["ElementId", "ParticleVelocity", "SlipVelocity",
+                                      "Velocity"])
+    base.update(settings)
+    return BoundParticleTracer(**base)
+
+
+massless = tracer(vortex, VELOCITY)
+bptest.check(massless.Inertia == "None" and massless.ResponseTime == 0.1 and
+             massless.DensityRatio == 1000 and list(massless.Gravity) == [0, 0, 0],
+             "defaults: Inertia None, Response Time 0.1, Density Ratio 1000, no gravity")
+zero = tracer(vortex, VELOCITY, Inertia="Maxey-Riley", ResponseTime=0.0, Gravity=[0, 0, -9.81])
+a, b = fetch(massless, 1.0), fetch(zero, 1.0)
+bptest.check(np.array_equal(points(a), points(b)) and len(points(a)) == 40,
+             "Response Time 0 traces the massless particles, point for point")
+bptest.check(not np.any(array(a, "SlipVelocity")) and
+             np.array_equal(array(a, "ParticleVelocity"), array(a, "Velocity")),
+             "without inertia the slip is 0 and ParticleVelocity is the flow's")
+
+# Settling in still fluid.
+tau, ratio, g = 0.05, 2.65, -4.0
+beta = 3.0 / (1.0 + 2.0 * ratio)
+terminal = tau * (1.0 - beta) * g
+settling = tracer(still, ["POINTS", "still"], Inertia="Maxey-Riley", ResponseTime=tau,
+                  DensityRatio=ratio, Gravity=[0, 0, g])
+start = points(fetch(settling, 0.0))
+data = fetch(settling, 0.5)
+slip = array(data, "SlipVelocity")
+expected = terminal * (1.0 - math.exp(-0.5 / tau))
+worst = np.abs(slip[:, 2] - expected).max()
+print("settling: terminal %.5f, slip within %.2e; sideways %.2e" %
+      (terminal, worst, np.abs(slip[:, :2]).max()))
+bptest.check(worst < 0.01 * abs(terminal) and not np.any(slip[:, :2]),
+             "settles at Response Time x (1 - beta) x Gravity within 1%% (off by %.2e)" % worst)
+bptest.check(np.allclose(array(data, "ParticleVelocity"), slip),
+             "in still fluid the particle's velocity is its slip")
+sunk = points(data)[:, 2] - start[:, 2]
+fall = terminal * (0.5 - tau * (1.0 - math.exp(-0.5 / tau)))
+bptest.check(np.abs(sunk - fall).max() < 0.01 * abs(fall),
+             "sinks by %.4f (expected %.4f)" % (sunk.mean(), fall))
+
+
+def drift(flow, ratio):
+    """Mean log radial growth rate over [0, 1] of particles about the axis."""
+    t = tracer(vortex, VELOCITY, Inertia="Maxey-Riley", ResponseTime=0.01, DensityRatio=ratio,
+               EmitterSize=[0.6, 0.6, 0.2])
+    r = []
+    for time in (0.0, 1.0):
+        p = points(fetch(t, time))
+        ids = array(servermanager.Fetch(t), "ElementId")
+        r.append(np.hypot(p[:, 0] - centre[0], p[:, 1] - centre[1])[np.argsort(ids)])
+    Delete(t)
+    return np.median(np.log(r[1] / r[0]))
+
+
+for ratio in (1000.0, 0.001):
+    rate = drift(vortex, ratio)
+    expected = 0.01 * (1.0 - 3.0 / (1.0 + 2.0 * ratio))
+    print("vortex, density ratio %g: radial rate %.5f, expected %.5f" % (ratio, rate, expected))
+    bptest.check(abs(rate - expected) < 0.05 * abs(expected),
+                 "density ratio %g drifts at tau (1 - beta) omega^2 r: %.5f against %.5f" %
+                 (ratio, rate, expected))
+
+# Bad settings: refused by name, with an empty output.
+for name, value in (("ResponseTime", -1.0), ("ResponseTime", float("nan")),
+                    ("DensityRatio", 0.0), ("Gravity", [0, float("nan"), 0])):
+    setattr(settling, name, value)
+    with bptest.CapturedMessages() as said:
+        out = fetch(settling, 0.5)
+    bptest.check(said.mentions(name) and out.GetNumberOfPoints() == 0,
+                 "%s = %s is refused by name: %s" % (name, value, said.messages))
+    settling.ResponseTime, settling.DensityRatio, settling.Gravity = tau, ratio, [0, 0, g]
+settling.Anchor = "Centre"
+with bptest.CapturedMessages() as said:
+    out = fetch(settling, 0.5)
+bptest.check(said.mentions("inertia has no meaning") and out.GetNumberOfPoints() == 0,
+             "Anchor with inertia is refused: %s" % said.messages)
+settling.Anchor = "None"
+settling.ResponseTime = 1e-7
+with bptest.CapturedMessages() as said:
+    out = fetch(settling, 0.5)
+bptest.check(said.mentions("close to massless") and out.GetNumberOfPoints() == 40,
+             "a response time far below the step is noted: %s" % said.messages)
+settling.ResponseTime = tau
+
+# The GPU display: the CPU result, with a message.
+gpu = tracer(vortex, VELOCITY, Inertia="Maxey-Riley", ResponseTime=0.01, Engine="GPU")
+view = bptest.element_view((200, 150))
+shown = Show(gpu, view)
+shown.SetRepresentationType("Bound Particles")
+with bptest.CapturedMessages() as said:
+    view.ViewTime = 0.5
+    Render(view)
+bptest.check(said.mentions("does not run Inertia") and
+             said.mentions("the CPU engine runs this trace instead"),
+             "the GPU display falls back to the CPU engine: %s" % said.messages)
+Delete(gpu)
+del shown
+
+# The Python trace records the settings of a tracer made while tracing.
+smtrace.start_trace()
+traced_tracer = BoundParticleTracer(Input=vortex, Vectors=VELOCITY, Inertia="Maxey-Riley",
+                                    ResponseTime=0.25, DensityRatio=3.5, Gravity=[0, -2, 0])
+traced = smtrace.stop_trace()
+for text in (".Inertia = 'Maxey-Riley'", ".ResponseTime = 0.25", ".DensityRatio = 3.5",
+             ".Gravity = [0.0, -2.0, 0.0]"):
+    bptest.check(text in traced, "the trace records %s:\n%s" % (text, traced))
+
+# A state file brings them back.
+state = os.path.join(tempfile.mkdtemp(), "inertia.pvsm")
+SaveState(state)
+ResetSession()
+LoadPlugin(args.plugin, ns=globals())
+LoadState(state)
+loaded = [s for s in GetSources().values() if s.GetXMLName() == "BoundParticleTracer" and
+          s.ResponseTime == 0.25]
+bptest.check(len(loaded) == 1 and loaded[0].Inertia == "Maxey-Riley" and
+             loaded[0].DensityRatio == 3.5 and list(loaded[0].Gravity) == [0, -2, 0],
+             "the state file brings the settings back")
+bptest.finish()
