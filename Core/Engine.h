@@ -332,7 +332,9 @@ private:
     float* before, float* advected);
   void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
     std::vector<float>& scratch);
-  void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3]) const;
+  /// `sampled`, when given, is the field at p at the step's start (k1).
+  void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3],
+    const float* sampled = nullptr) const;
   /// A heavy particle's step: its slip's (Inertia.h), from the field at its
   /// position at the step's start, then the tracer's advection, then the
   /// slip's displacement.

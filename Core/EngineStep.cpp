@@ -25,11 +25,18 @@ inline bool finite3(const float* p)
 } // namespace
 
 void Engine::advectParticle(
-  const VectorField& field, const StepWeights& w, double h, float p[3]) const
+  const VectorField& field, const StepWeights& w, double h, float p[3], const float* sampled) const
 {
   const float hf = float(h);
   float k1[3];
-  field.sampleWeighted(p, w.start, k1);
+  if (sampled)
+  {
+    std::copy_n(sampled, 3, k1);
+  }
+  else
+  {
+    field.sampleWeighted(p, w.start, k1);
+  }
   switch (this->Params.integrator)
   {
     case Integrator::Euler:
@@ -85,7 +92,7 @@ void Engine::advectHeavyParticle(
   float u[3], d[3][3], dudt[3], move[3];
   field.sampleWithDerivatives(p, w.start, u, d, dudt);
   slipStep(w.inertia, u, d, dudt, slip, move);
-  this->advectParticle(field, w, h, p);
+  this->advectParticle(field, w, h, p, u); // u is the integrator's first sample
   for (int k = 0; k < 3; ++k)
   {
     p[k] += move[k];

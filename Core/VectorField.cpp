@@ -522,19 +522,36 @@ void VectorField::sampleWithDerivatives(
   std::size_t base = 0;
   float f[3], w[3];
   this->locateWithSlopes(p, base, f, w);
-  this->sampleCell(base, f, weight, v);
   this->blendedGradient(base, f, w, weight, d);
-  std::fill_n(dvdt, 3, 0.0f);
-  if (this->SecondData)
+  if (!this->SecondData)
   {
-    float first[3], second[3];
+    this->sampleCell(base, f, weight, v);
+    std::fill_n(dvdt, 3, 0.0f);
+    return;
+  }
+  // Both slices once: the velocity blended as sampleCell blends them, and
+  // their difference over their times.
+  float first[3], second[3];
+#if BOUNDPARTICLES_SSE2
+  if (this->Stride[0] == 1)
+  {
+    alignas(16) float lanes[2][4];
+    _mm_store_ps(lanes[0], this->interpolateLanes(this->FirstData, base, f));
+    _mm_store_ps(lanes[1], this->interpolateLanes(this->SecondData, base, f));
+    std::copy_n(lanes[0], 3, first);
+    std::copy_n(lanes[1], 3, second);
+  }
+  else
+#endif
+  {
     this->interpolate(this->FirstData, base, f, first);
     this->interpolate(this->SecondData, base, f, second);
-    const float rate = float(1.0 / (this->Second.time - this->First.time));
-    for (int k = 0; k < 3; ++k)
-    {
-      dvdt[k] = (second[k] - first[k]) * rate;
-    }
+  }
+  const float rate = float(1.0 / (this->Second.time - this->First.time));
+  for (int k = 0; k < 3; ++k)
+  {
+    v[k] = first[k] + weight * (second[k] - first[k]);
+    dvdt[k] = (second[k] - first[k]) * rate;
   }
 }
 

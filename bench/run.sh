@@ -28,6 +28,8 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
 "$build/bin/BoundParticlesOutputBench" | tee "$out/output.txt"
 "$build/bin/BoundParticlesThreadsBench" | tee "$out/threads.txt"
 "$build/bin/BoundParticlesResampleBench" | tee "$out/resample.txt"
+# Heavy particles (Inertia = Maxey-Riley) against massless tracers, the same jobs.
+"$build/bin/BoundParticlesInertiaBench" | tee "$out/inertia.txt"
 # An unstructured mesh of ~1 M tetrahedra: first frame (resample included) and Play,
 # beside an image of the same size and ParaView's Particle Tracer on the mesh; then
 # hexahedra cut in five, and a mesh whose points move at every step.
@@ -53,4 +55,4 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/first_minutes.py" \
   --plugin "$plugin" --data "$root/../shared/data" --pictures "$out/first-minutes"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
 bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
-echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/inertia.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt"

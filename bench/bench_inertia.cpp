@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Heavy particles' step cost (issue 44): the CPU engine's step with Inertia
+// = Maxey-Riley against the same job without, side by side in one run
+// (alternating, medians of --repeats), for one-particle and Strip16 elements
+// with each integrator, on the 128^3 shear layer (steady) and the double gyre
+// (unsteady, where du/dt is sampled too), on every core. The target is at
+// most 1.3 times the massless step. The GPU engine does not step heavy
+// particles yet (bp::cpuOnlyReason): its rows say so rather than measure.
+//
+//   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick]
+#include "BenchFields.h"
+#include "Engine.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Job
+{
+  const char* shape;
+  bp::BuiltinShape builtin;
+  std::size_t elements;
+  bp::Integrator integrator;
+  const char* integratorName;
+};
+
+/// Seconds per step of `steps` steps of a fresh system (after one warm-up step).
+double stepSeconds(const bp::VectorField& field, const Job& job, bool inertia, int steps,
+  const bp::RangeRunner& run)
+{
+  bp::Parameters p = bench::parametersFor(field, job.elements);
+  p.integrator = job.integrator;
+  if (inertia)
+  {
+    p.inertia = bp::Inertia::MaxeyRiley;
+    p.responseTime = 0.05f;
+    p.densityRatio = 1000.0f;
+    p.gravity = { 0.0f, 0.0f, -1.0f };
+  }
+  bp::Engine engine;
+  engine.configure(bp::builtinTemplate(job.builtin), p);
+  engine.initialize(run);
+  const double dt = 0.01;
+  engine.step(field, 0.0, dt, run);
+  const auto start = Clock::now();
+  for (int s = 1; s <= steps; ++s)
+  {
+    engine.step(field, s * dt, dt, run);
+  }
+  return std::chrono::duration<double>(Clock::now() - start).count() / steps;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  int repeats = 5, resolution = 128, steps = 20;
+  bool quick = false;
+  for (int a = 1; a < argc; ++a)
+  {
+    if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
+      repeats = std::max(1, std::atoi(argv[++a]));
+    else if (!std::strcmp(argv[a], "--resolution") && a + 1 < argc)
+      resolution = std::max(8, std::atoi(argv[++a]));
+    else if (!std::strcmp(argv[a], "--quick"))
+      quick = true;
+  }
+  if (quick)
+  {
+    repeats = 3;
+    resolution = 64;
+    steps = 5;
+  }
+  const bench::Fields fields = bench::benchFields(resolution);
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  const bp::RangeRunner run = bp::poolRunner(threads);
+  const Job jobs[] = {
+    { "Point", bp::BuiltinShape::Point, 262144, bp::Integrator::Euler, "Euler" },
+    { "Point", bp::BuiltinShape::Point, 262144, bp::Integrator::RK4, "RK4" },
+    { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::Euler, "Euler" },
+    { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::RK2, "RK2" },
+  };
+  std::printf("Heavy particles against massless, CPU engine, %u threads, %d^3 grid, medians of "
+              "%d runs of %d steps\n",
+    threads, resolution, repeats, steps);
+  std::printf("%-8s %-9s %-8s %8s %14s %14s %7s %s\n", "shape", "field", "integr.", "particles",
+    "massless ms", "inertia ms", "ratio", "target <= 1.3");
+  for (const Job& job : jobs)
+  {
+    for (int f = 0; f < 2; ++f)
+    {
+      const bp::VectorField& field = f == 0 ? fields.steady : fields.unsteady;
+      std::vector<double> off, on;
+      for (int r = 0; r < repeats; ++r)
+      {
+        off.push_back(stepSeconds(field, job, false, steps, run));
+        on.push_back(stepSeconds(field, job, true, steps, run));
+      }
+      const double a = median(off), b = median(on);
+      const std::size_t particles =
+        job.elements * bp::builtinTemplate(job.builtin).particleCount();
+      std::printf("%-8s %-9s %-8s %8zu %14.3f %14.3f %7.2f %s\n", job.shape,
+        f == 0 ? "steady" : "unsteady", job.integratorName, particles, 1e3 * a, 1e3 * b, b / a,
+        b / a <= 1.3 ? "met" : "missed");
+    }
+  }
+  std::printf("GPU engine: not measured: it does not step heavy particles yet (a GPU display "
+              "falls back to the CPU engine).\n");
+  return 0;
+}
