@@ -28,6 +28,10 @@
  * slip is T, the drift h T), and exact for a constant a (settling in still
  * fluid, drag relaxation in a uniform flow). tau -> 0 gives the tracer;
  * tau = 0 is the tracer itself (carriesInertia() is false, nothing runs).
+ *
+ * The GPU engine runs the same maths in Shaders/bp_slip.glsl (a slip pass
+ * before advection and a share pass after the test, or both inside the
+ * compute path's fused step).
  */
 #ifndef BoundParticles_Inertia_h
 #define BoundParticles_Inertia_h
@@ -35,7 +39,6 @@
 #include "EngineParameters.h"
 
 #include <cmath>
-#include <string>
 
 namespace bp
 {
@@ -136,16 +139,6 @@ inline void shareSlip(float* slips, std::size_t n)
       slips[3 * i + c] = mean[c];
     }
   }
-}
-
-/// Why the GPU engine cannot run `p` (empty when it can): it does not yet
-/// step heavy particles. The tracer then runs the CPU engine and the GPU
-/// display draws its result; the GPU engine itself refuses them.
-inline std::string cpuOnlyReason(const Parameters& p)
-{
-  return carriesInertia(p) ? "the GPU engine does not run Inertia = Maxey-Riley (heavy "
-                             "particles) yet: set Engine to CPU to trace them without this note"
-                           : std::string();
 }
 
 /// A step far above tau makes the trace nearly massless: the slip relaxes to

@@ -246,11 +246,6 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Confi
   {
     vtkErrorWithObjectMacro(this->Owner, << fallback);
   }
-  const std::string cpuOnly = this->Steppers.fallBackIfCpuOnly(p);
-  if (!cpuOnly.empty())
-  {
-    vtkWarningWithObjectMacro(this->Owner, << cpuOnly);
-  }
   const std::string error = this->stepper().configure(shape, p);
   return error.empty() ? error : error + ".";
 }

@@ -167,19 +167,12 @@ std::string TracerSteppers::fallBackIfTooLarge(
   const int maxSize = this->Queue->maxTextureSize;
   const std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
-  return limit.empty() ? std::string() : this->fallBack(limit);
-}
-
-std::string TracerSteppers::fallBackIfCpuOnly(const bp::Parameters& p)
-{
-  const std::string reason = this->Queue ? bp::cpuOnlyReason(p) : std::string();
-  return reason.empty() ? std::string() : this->fallBack(reason);
-}
-
-std::string TracerSteppers::fallBack(const std::string& reason)
-{
+  if (limit.empty())
+  {
+    return std::string();
+  }
   // The display falls back to the CPU result, from this update on.
-  std::string message = reason + "; the CPU engine runs this trace instead.";
+  std::string message = limit + "; the CPU engine runs this trace instead.";
   message[0] = char(std::toupper(static_cast<unsigned char>(message[0])));
   this->Queue->clear();
   this->Queue->cursor.valid = false;

@@ -91,13 +91,6 @@ public:
    * when nothing changed).
    */
   std::string fallBackIfTooLarge(const bp::ElementTemplate& shape, const bp::Parameters& p);
-  /// The same for what only the CPU engine runs (bp::cpuOnlyReason: heavy
-  /// particles, Inertia = Maxey-Riley).
-  std::string fallBackIfCpuOnly(const bp::Parameters& p);
-
-  /// Gives the display `reason` (why its GPU cannot run this system) and
-  /// takes the CPU engine instead; returns the message to show.
-  std::string fallBack(const std::string& reason);
 
   /// Forgets every stepper's trace and any pending GPU work.
   void invalidate();

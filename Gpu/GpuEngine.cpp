@@ -92,10 +92,6 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
 {
   // The same checks as the CPU engine, then the GPU's own limits.
   std::string error = Engine::validate(shape, p);
-  if (error.empty())
-  {
-    error = cpuOnlyReason(p);
-  }
   if (!error.empty())
   {
     return error;
@@ -266,6 +262,16 @@ void GpuEngine::read(
   if (normals)
   {
     S.passes.readParticles(S.state.normals.get(), S.layout, normals, nullptr);
+  }
+}
+
+void GpuEngine::readSlips(std::vector<float>& slips) const
+{
+  const GpuSystem& S = this->I->system;
+  slips.clear();
+  if (carriesInertia(S.parameters))
+  {
+    S.passes.readParticles(S.state.slips.get(), S.layout, &slips, nullptr);
   }
 }
 

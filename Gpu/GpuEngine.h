@@ -98,6 +98,9 @@ public:
   /// The state in the CPU engine's element-major order (null to skip).
   void read(
     std::vector<float>* positions, std::vector<float>* forces, std::vector<float>* normals) const;
+  /// Heavy particles: each particle's slip, as Engine::slips() (empty
+  /// without inertia).
+  void readSlips(std::vector<float>& slips) const;
   /// `hidden`: 1 for an element placed outside the release window, else 0.
   void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
     std::vector<float>* centers, std::vector<float>* orientations = nullptr,

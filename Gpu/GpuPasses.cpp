@@ -3,6 +3,7 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "GpuFieldCache.h"
+#include "GpuState.h"
 #include "ShaderSource.h"
 
 #include <algorithm>
@@ -68,8 +69,10 @@ FusedStep FusedStep::of(
   FusedStep fused;
   fused.particles = particles;
   const int elements = fusedGroupElements(particles, maxThreads);
-  // Shared memory: a position per thread, six values per element (bp_step.comp).
-  const long bytes = 16L * elements * particles + 6L * 16 * elements;
+  // Shared memory: a position per thread (and a slip, for heavy particles),
+  // six values per element (bp_step.comp).
+  fused.inertial = carriesInertia(parameters);
+  const long bytes = 16L * elements * particles * (fused.inertial ? 2 : 1) + 6L * 16 * elements;
   if (parameters.linking != Linking::None || particles > maxThreads || bytes > sharedBytes)
   {
     return fused; // links join elements; a workgroup cannot hold one
@@ -250,6 +253,9 @@ std::string GpuPasses::compile(
   const ShaderPiece restore = restoreKernel(springSumCode);
   const PassKernel kernels[] = {
     { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4, &P::reset, "reset" },
+    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipPass", false, 2, &P::slip, "slip" },
+    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipSharePass", false, 1, &P::slipShare,
+      "slip share" },
     { { bpShaderAdvectNumber, bpShaderAdvect }, "bpAdvectPass", false, 2, &P::advect, "advect" },
     { restore, "bpRestorePass", false, 1, &P::restore, "restore" },
     { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchPass", true, 4, &P::match, "match" },
@@ -308,9 +314,13 @@ std::string GpuPasses::compileFusedStep(const ShaderPiece& restore, const std::s
     "\n#define BP_GROUP_ELEMENTS " + std::to_string(f.groupElements) +
     "\n#define BP_GROUP_THREADS " + std::to_string(f.groupElements * f.particles) +
     "\n#define BP_RESTORATION " + std::to_string(f.restoration) + "\n" + generated +
-    "layout(rgba32f, binding = 0) uniform writeonly image2D bpParticlesOut;\n";
+    "layout(rgba32f, binding = 0) uniform writeonly image2D bpParticlesOut;\n" +
+    (f.inertial ? "#define BP_INERTIAL\nlayout(rgba32f, binding = " +
+          std::to_string(1 + ElementTextureCount) + ") uniform writeonly image2D bpSlipsOut;\n"
+                : std::string());
   const std::string error = buildProgram(GpuPath::Compute, "bp_step.comp (the fused step)", defines,
-    { { bpShaderResetNumber, bpShaderReset }, { bpShaderAdvectNumber, bpShaderAdvect }, restore,
+    { { bpShaderResetNumber, bpShaderReset }, { bpShaderSlipNumber, bpShaderSlip },
+      { bpShaderAdvectNumber, bpShaderAdvect }, restore,
       { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, { bpShaderMatchNumber, bpShaderMatch },
       { bpShaderTestNumber, bpShaderTest }, { bpShaderFinalizeNumber, bpShaderFinalize },
       { bpShaderPoseNumber, bpShaderPose }, { bpShaderStepCompNumber, bpShaderStepComp } },

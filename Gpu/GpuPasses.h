@@ -72,6 +72,7 @@ struct FusedStep
   int particles = 0;     ///< n, the template's particles (BP_N)
   int groupElements = 0; ///< elements a workgroup holds; 0: no fused step
   int restoration = 0;   ///< 0 none, 1 (averaged) Jacobi, 2 Gauss-Seidel, 3 shape matching
+  bool inertial = false; ///< heavy particles: slips stepped and shared (BP_INERTIAL)
   /// The fused step for a system, or none (groupElements 0) where its
   /// elements do not fit a workgroup of `maxThreads` invocations and
   /// `sharedBytes` of shared memory, or a super set's links join them.
@@ -164,6 +165,8 @@ public:
   struct Programs
   {
     GlProgram reset;       ///< places flagged elements (all, initialising)
+    GlProgram slip;        ///< heavy particles: the slip's step and displacement
+    GlProgram slipShare;   ///< heavy particles: an element's shared slip
     GlProgram advect;      ///< moves particles through the field
     GlProgram restore;     ///< (averaged) Jacobi over each particle's springs
     GlProgram gaussSeidel; ///< one colour of springs

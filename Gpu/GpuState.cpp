@@ -39,11 +39,17 @@ int TrailRing::slot(int k) const
   return ((this->newest - k) % slots + slots) % slots;
 }
 
-void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLength)
+void GpuState::make(const GpuLayout& layout, const LinkTable& links, int trailLength, bool inertial)
 {
   const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
   const int w = layout.elementGrid[0], h = layout.elementGrid[1];
   this->particles.make(pw, ph);
+  this->SlipWidth = inertial ? pw : 1;
+  this->SlipHeight = inertial ? ph : 1;
+  for (GlTexture* slip : { &this->slips, &this->slipsNext, &this->slipMoves })
+  {
+    *slip = makeTexture2D(this->SlipWidth, this->SlipHeight);
+  }
   this->advected = makeTexture2D(pw, ph);
   this->before = makeTexture2D(pw, ph);
   for (GlTexture& texture : this->restored)
@@ -151,6 +157,7 @@ void GpuState::save(const GpuPasses& passes, const GpuLayout& layout)
   if (!this->Copy.particles)
   {
     this->Copy.particles = makeTexture2D(pw, ph);
+    this->Copy.slips = makeTexture2D(this->SlipWidth, this->SlipHeight);
     for (GlTexture& copy : this->Copy.perElement)
     {
       copy = makeTexture2D(w, h);
@@ -200,6 +207,7 @@ void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool 
   };
   copy(this->particles.current(), this->Copy.particles.get(), layout.particleTextureWidth,
     layout.particleTextureHeight);
+  copy(this->slips.get(), this->Copy.slips.get(), this->SlipWidth, this->SlipHeight);
   for (int row = 0; row < ElementTextureCount; ++row)
   {
     copy(this->perElement[std::size_t(row)].current(), this->Copy.perElement[std::size_t(row)].get(),

@@ -98,7 +98,7 @@ public:
   /// Makes every texture for `layout` (and the super set's, from `links`,
   /// and a trail ring of `trailLength` slots); the saved copy waits for the
   /// first save().
-  void make(const GpuLayout& layout, const LinkTable& links, int trailLength);
+  void make(const GpuLayout& layout, const LinkTable& links, int trailLength, bool inertial);
 
   /// Keeps a copy of what a step carries over; restore() goes back to it.
   /// The trail ring is kept by its slot times and, copied when a step is
@@ -124,6 +124,9 @@ public:
   std::array<GlTexture, 2> restored; ///< restoration passes write these in turn
   GlTexture normals;                 ///< unit normal (updateNormals)
   GlTexture samples;                 ///< velocity, |curl v| (updateFieldSamples)
+  /// Heavy particles (bp_slip.glsl; 1 x 1 each without inertia): the slip
+  /// (carried over, saved), the slip pass's new slip and its displacement.
+  GlTexture slips, slipsNext, slipMoves;
 
   // Per element, a texel each (element e at (e % W, e / W)).
   std::array<TexturePair, ElementTextureCount> perElement; ///< by ElementTexture
@@ -157,6 +160,7 @@ private:
   struct Saved
   {
     GlTexture particles;
+    GlTexture slips;
     std::array<GlTexture, ElementTextureCount> perElement;
     GlTexture trailParticles, trailElements;
     std::vector<double> trailTimes;
@@ -165,6 +169,7 @@ private:
     bool watchesTrail = false; ///< from save() to restore(): keep the first slot overwritten
   };
   Saved Copy;
+  int SlipWidth = 1, SlipHeight = 1; ///< the slips' textures' size
 };
 
 } // namespace bp

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 
 namespace bp
 {
@@ -50,7 +51,7 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   // The super set's lattice, the same table the CPU engine builds.
   this->state.make(this->layout,
     makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax),
-    p.trailLength);
+    p.trailLength, carriesInertia(p));
   // Release centres of a seed source (bp_common.glsl: 256 a row); one texel
   // when there is none, since the reset pass binds it.
   std::vector<float> seeds(4 * std::max<std::size_t>(p.seedPoints.size() / 3, 1), 0.0f);
@@ -91,6 +92,9 @@ void GpuSystem::initialize(double startTime)
   const GLuint placed = this->state.advected.get();
   this->test(placed, true, 0.0, 0.0f);
   this->finalize(placed, true);
+  // Released with the flow's velocity: no slip (Engine::place).
+  const float none[4] = { 0, 0, 0, 0 };
+  this->passes.clearTexture(this->state.slips.get(), none);
   // Every spin 0 (the reset pass placed every pose), and no trail yet.
   const float zero[4] = { 0, 0, 0, 0 };
   this->passes.clearTexture(this->state.current(ElementTexture::Spins), zero);
@@ -114,7 +118,11 @@ void GpuSystem::step(double t, double h)
   }
   // 1. Reset.
   this->reset(false, releasesAt(this->parameters, t, h), t);
-  // 2. Advect.
+  // 2. Advect (heavy particles: their slip's step first).
+  if (carriesInertia(this->parameters))
+  {
+    this->stepSlips(t, h);
+  }
   this->advect(false, t, h);
   // 3. Restore: K iterations of the elements' own restoration, each followed,
   // in a super set, by one pass over the links (Engine::stepLinked).
@@ -127,6 +135,10 @@ void GpuSystem::step(double t, double h)
   // 5. Reposition test, then the new state.
   this->test(positions, false, h, endWeight);
   this->finalize(positions, false);
+  if (carriesInertia(this->parameters))
+  {
+    this->shareSlips();
+  }
   // 6. Poses and spins.
   if (this->parameters.trackPoses)
   {
@@ -148,6 +160,7 @@ void GpuSystem::runFusedStep(double t, double h, float endWeight)
   this->testInputs(pass, 0, false, h, endWeight);
   this->finalizeInputs(pass, 0, false);
   this->poseInputs(pass, h, endWeight);
+  this->slipInputs(pass, t, h);
   pass.setInt("bpIterations", this->parameters.iterations);
   pass.setInt("bpColourCount", this->shapeTables.colourCount);
   const bool poses = this->parameters.trackPoses;
@@ -155,10 +168,24 @@ void GpuSystem::runFusedStep(double t, double h, float endWeight)
   using E = ElementTexture;
   const int perGroup = this->passes.fused.groupElements;
   // Images: the particles', then each per-element row's (GpuState.h's order).
-  pass.runGroups(std::size_t((this->layout.elementCount + perGroup - 1) / perGroup),
-    { s.particles.next(), s.element(E::State).next(), s.element(E::Centers).next(),
-      s.element(E::Orientations).next(), s.element(E::Poses).next(),
-      s.element(E::Spins).next() });
+  const std::size_t groups = std::size_t((this->layout.elementCount + perGroup - 1) / perGroup);
+  if (this->passes.fused.inertial)
+  {
+    // The slips' image last (GpuPasses::compileFusedStep); the new ones
+    // become current.
+    pass.runGroups(groups,
+      { s.particles.next(), s.element(E::State).next(), s.element(E::Centers).next(),
+        s.element(E::Orientations).next(), s.element(E::Poses).next(), s.element(E::Spins).next(),
+        s.slipsNext.get() });
+    std::swap(s.slips, s.slipsNext);
+  }
+  else
+  {
+    pass.runGroups(groups,
+      { s.particles.next(), s.element(E::State).next(), s.element(E::Centers).next(),
+        s.element(E::Orientations).next(), s.element(E::Poses).next(),
+        s.element(E::Spins).next() });
+  }
   s.particles.flip();
   for (E row : { E::State, E::Centers, E::Orientations, E::Poses })
   {

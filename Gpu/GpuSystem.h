@@ -75,6 +75,10 @@ private:
   /// `releasing`: the step overlaps the release window (releasesAt).
   void reset(bool initialize, bool releasing, double t);
   void advect(bool placeOnly, double t, double h);
+  /// Heavy particles: the slip pass (new slips and their displacements),
+  /// and after the test the share pass (a restored element's mean slip).
+  void stepSlips(double t, double h);
+  void shareSlips();
   GLuint restoreOnce(GLuint positions, int& restorationPass);
   GLuint matchShapes(GLuint positions, int& restorationPass);
   GLuint gaussSeidel(GLuint positions, int& restorationPass);
@@ -94,6 +98,7 @@ private:
   ///@{
   void resetInputs(GpuPass& pass, bool initialize, bool releasing, double t);
   void advectInputs(GpuPass& pass, bool placeOnly, double t, double h) const;
+  void slipInputs(GpuPass& pass, double t, double h) const;
   void jacobiInputs(GpuPass& pass, GLuint positions) const;
   void matchInputs(GpuPass& pass, GLuint positions) const;
   void testInputs(GpuPass& pass, GLuint positions, bool settleOnly, double h, float endWeight) const;

@@ -41,6 +41,51 @@ void GpuSystem::advectInputs(GpuPass& pass, bool placeOnly, double t, double h) 
       field->timeWeight(t + h) };
     pass.setVec3("bpWeights", weights);
   }
+  pass.setInt("bpInertial", !placeOnly && carriesInertia(this->parameters) ? 1 : 0);
+  pass.texture("bpSlipMoves", this->state.slipMoves.get());
+}
+
+void GpuSystem::slipInputs(GpuPass& pass, double t, double h) const
+{
+  using E = ElementTexture;
+  const Parameters& p = this->parameters;
+  pass.texture("bpState", this->state.particles.current());
+  this->bindCurrent(pass, { E::State, E::Centers, E::Orientations });
+  pass.texture("bpRest", this->shapeTables.rest.get());
+  pass.texture("bpParticleInfo", this->shapeTables.particleInfo.get());
+  pass.texture("bpSlips", this->state.slips.get());
+  pass.texture("bpSlipsNext", this->state.slipsNext.get());
+  const InertiaStep k = inertiaStepOf(p, h);
+  pass.setFloat("bpStep", k.h);
+  pass.setFloat("bpSlipTau", k.tau);
+  pass.setFloat("bpSlipDecay", k.decay);
+  pass.setFloat("bpSlipMemory", k.memory);
+  pass.setFloat("bpSlipBuoyancy", k.buoyancy);
+  pass.setVec3("bpSlipGravity", k.gravity);
+  pass.setInt("bpShareSlip", !this->shape.springs.empty() ||
+      p.restoration == Restoration::ShapeMatching || this->state.linked);
+  const VectorField* field = this->fieldCache.field();
+  const float weights[3] = { field ? field->timeWeight(t) : 0.0f, 0.0f, 0.0f };
+  pass.setVec3("bpSlipWeights", weights);
+  // As VectorField::sampleWithDerivatives: in double, then float.
+  const bool unsteady = field && !field->isSteady();
+  pass.setFloat("bpTimeRate", unsteady ? float(1.0 / (field->secondSlice().time -
+                                                       field->firstSlice().time))
+                                       : 0.0f);
+}
+
+void GpuSystem::stepSlips(double t, double h)
+{
+  GpuPass pass = this->begin(this->passes.programs.slip);
+  this->slipInputs(pass, t, h);
+  pass.runPerParticle({ this->state.slipsNext.get(), this->state.slipMoves.get() });
+}
+
+void GpuSystem::shareSlips()
+{
+  GpuPass pass = this->begin(this->passes.programs.slipShare);
+  this->slipInputs(pass, 0.0, 0.0);
+  pass.runPerParticle({ this->state.slips.get() });
 }
 
 void GpuSystem::jacobiInputs(GpuPass& pass, GLuint positions) const

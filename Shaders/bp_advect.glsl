@@ -42,6 +42,10 @@ void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 bef
   vec3 b, a;
   bpAdvectParticle(i, texelFetch(bpElementState, at, 0), texelFetch(bpCenters, at, 0),
     texelFetch(bpOrientations, at, 0), texelFetch(bpState, texel, 0).xyz, b, a);
+  if (bpInertial && !bpPlaceOnly)
+  {
+    a += texelFetch(bpSlipMoves, texel, 0).xyz; // the slip's own (bp_slip.glsl)
+  }
   advected = vec4(a, 0.0);
   before = vec4(b, 0.0);
 }

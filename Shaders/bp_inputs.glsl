@@ -24,6 +24,10 @@ uniform float bpStep;          // float(h)
 uniform float bpEndWeight;     // the second time step's weight at t + h
 uniform bool bpAnchored;       // Anchor = Centre (bp_test.glsl, bp_finalize.glsl)
 uniform bool bpLinearMatching; // linear shape matching (bp_match.glsl)
+// Heavy particles (bp_slip.glsl): per particle, the displacement the slip adds
+// to the tracer's in this step (bp_advect.glsl adds it).
+uniform bool bpInertial;
+uniform sampler2D bpSlipMoves;
 
 // Whether particle i is pinned (it never moves).
 bool bpPinned(int i)

@@ -34,6 +34,11 @@ shared vec4 bpLocalOrientation[BP_GROUP_ELEMENTS];
 shared vec4 bpLocalFit[BP_GROUP_ELEMENTS]; // shape matching's fit, then the test's move
 shared vec4 bpLocalLinear0[BP_GROUP_ELEMENTS];
 shared vec4 bpLocalLinear1[BP_GROUP_ELEMENTS];
+#ifdef BP_INERTIAL
+// Heavy particles (bp_slip.glsl): each particle's new slip, for its
+// element's mean after the test.
+shared vec3 bpLocalSlips[BP_GROUP_THREADS];
+#endif
 
 // Every thread of the workgroup here, and what they wrote to shared memory
 // visible to all (barrier() alone orders execution; OpenGL's GLSL leaves its
@@ -85,10 +90,21 @@ void main()
 
   // 2. Advect.
   vec3 before = vec3(0.0), advected = vec3(0.0);
+#ifdef BP_INERTIAL
+  vec3 slip = vec3(0.0);
+#endif
   if (live)
   {
     bpAdvectParticle(i, bpLocalState[local], bpLocalCenter[local], bpLocalOrientation[local],
       texelFetch(bpState, texel, 0).xyz, before, advected);
+#ifdef BP_INERTIAL
+    // The slip's step from where the particle starts, and its displacement
+    // added to the tracer's (the slip and advect passes).
+    vec3 move;
+    slip = texelFetch(bpSlips, texel, 0).xyz;
+    bpSlipParticle(i, bpLocalState[local], before, slip, move);
+    advected += move;
+#endif
   }
   bpLocalPositions[thread] = advected;
   vec3 p = advected;
@@ -158,6 +174,25 @@ void main()
     after = bpFinalParticle(p, advected, before, bpLocalState[local], bpLocalFit[local]);
     imageStore(bpParticlesOut, texel, after);
   }
+#ifdef BP_INERTIAL
+  // A restored element's mean slip, 0 where its positions turned non-finite
+  // (the share pass).
+  bpLocalSlips[thread] = slip;
+  bpSync();
+  if (live)
+  {
+    if (bpShareSlip && bpParticles > 1)
+    {
+      vec3 mean = vec3(0.0);
+      for (int k = 0; k < BP_N; ++k)
+      {
+        mean += bpLocalSlips[k * BP_GROUP_ELEMENTS + local];
+      }
+      slip = mean / float(bpParticles);
+    }
+    imageStore(bpSlipsOut, texel, vec4(bpLocalState[local].w > 0.5 ? vec3(0.0) : slip, 0.0));
+  }
+#endif
 
   // 6. Poses and spins, from the positions after the step.
   if (bpTrackPoses)

@@ -11,7 +11,8 @@
 - Bad settings are refused with a message naming the property and an empty
   output; Anchor with inertia is refused; a response time far below the step
   is noted as nearly massless.
-- The GPU display falls back to the CPU result, with a message.
+- The Bound Particles display with the GPU engine draws what the CPU engine's
+  Surface display shows.
 - A state file brings the settings back; the Python trace records them.
 """
 import math
@@ -145,19 +146,37 @@ bptest.check(said.mentions("close to massless") and out.GetNumberOfPoints() == 4
              "a response time far below the step is noted: %s" % said.messages)
 settling.ResponseTime = tau
 
-# The GPU display: the CPU result, with a message.
-gpu = tracer(vortex, VELOCITY, Inertia="Maxey-Riley", ResponseTime=0.01, Engine="GPU")
-view = bptest.element_view((200, 150))
-shown = Show(gpu, view)
-shown.SetRepresentationType("Bound Particles")
-with bptest.CapturedMessages() as said:
+# The GPU display steps heavy particles itself and draws what the CPU
+# engine's Surface shows.
+def picture(engine, representation, name):
+    t = tracer(vortex, VELOCITY, ElementShape="Strip8", NumberOfElements=60, ElementSize=0.15,
+               EmitterSize=[1.2, 1.2, 1.2], Inertia="Maxey-Riley", ResponseTime=0.05,
+               DensityRatio=50, Gravity=[0, 0, -3], Engine=engine, OutputArrays=["Normals"])
+    view = bptest.element_view((240, 180))
+    shown = Show(t, view)
+    shown.SetRepresentationType(representation)
+    bptest.colour_display(shown, None, None)
     view.ViewTime = 0.5
-    Render(view)
-bptest.check(said.mentions("does not run Inertia") and
-             said.mentions("the CPU engine runs this trace instead"),
-             "the GPU display falls back to the CPU engine: %s" % said.messages)
-Delete(gpu)
-del shown
+    with bptest.CapturedMessages() as said:
+        Render(view)
+    image = bptest.save_picture(view, output, name)
+    Delete(t)
+    return image, said
+
+
+output = tempfile.mkdtemp()
+cpu_image, _ = picture("CPU", "Surface", "inertia_cpu")
+gpu_image, said = picture("GPU", "Bound Particles", "inertia_gpu")
+mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+covered = bptest.covered_fraction(gpu_image)
+print("GPU display against CPU Surface: mean %.3f, pixels %.4f; %.3f of the picture drawn" %
+      (mean, pixels, covered))
+bptest.check(covered > 0.01, "the GPU display draws the elements (%.4f covered)" % covered)
+bptest.check(not said.messages, "the GPU display runs heavy particles without a message: %s" %
+             said.messages)
+bptest.check(mean <= 0.5 and pixels <= 0.002,
+             "the GPU display draws the CPU engine's heavy particles: mean %.3f, pixels %.4f" %
+             (mean, pixels))
 
 # The Python trace records the settings of a tracer made while tracing.
 smtrace.start_trace()
