@@ -22,7 +22,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import apply_preset, dark_view, picture_arguments  # noqa: E402
+from picture import apply_preset, dark_view, look_down, picture_arguments  # noqa: E402
 
 T = 10.0          # one period of the gyre
 STEP = 0.02       # the tracer's step and the reference's, in time units
@@ -242,11 +242,7 @@ def main():
         shown.WindowLocation = "Any Location"
         shown.Position = [x, 0.83]
         shown.FontSize = 14
-    view.CameraPosition = [2.075, 0.5, 6.0]
-    view.CameraFocalPoint = [2.075, 0.5, 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraParallelProjection = 1
-    view.CameraParallelScale = 0.85
+    look_down(view, 2.075, 0.5, 0.85)
     path = os.path.join(args.output, "ftle-map.png")
     SaveScreenshot(path, view, ImageResolution=[1600, 620])
     print("wrote " + path)

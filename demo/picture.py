@@ -29,6 +29,16 @@ def dark_view(time, size=(1280, 720)):
     return view
 
 
+def look_down(view, x, y, scale):
+    """A parallel projection looking down -z at (x, y), `scale` high from
+    the centre to the top: the flat flows' pictures."""
+    view.CameraPosition = [x, y, 6.0]
+    view.CameraFocalPoint = [x, y, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = scale
+
+
 def apply_preset(lut, name):
     """Applies a colour-map preset by its ParaView 5 name: ParaView 6 names the
     matplotlib maps without the " (matplotlib)" suffix ("Viridis")."""
