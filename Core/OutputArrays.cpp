@@ -73,10 +73,10 @@ const std::vector<OutputArray>& outputArrays()
       C::Stretch, R::Stretch, OffByDefault),
     row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Ftle,
       R::Ftle, OffByDefault),
-    // Heavy particles (Inertia.h): the CPU engine's slip, 0 without inertia.
+    // Heavy particles (Inertia.h): the slip, 0 without inertia.
     row(Id::ParticleVelocity, "ParticleVelocity", 3, V::Float, Role::Plain, Src::Derived,
-      C::Solid, R::SignedSpeed, OffByDefault),
-    row(Id::SlipVelocity, "SlipVelocity", 3, V::Float, Role::Plain, Src::ParticleState, C::Solid,
+      C::ParticleVelocity, R::SignedSpeed, OffByDefault),
+    row(Id::SlipVelocity, "SlipVelocity", 3, V::Float, Role::Plain, Src::ParticleState, C::Slip,
       R::SignedSpeed, OffByDefault),
   };
   return table;
@@ -109,7 +109,7 @@ std::string colorSourceDefinitions()
 {
   static const char* const names[] = { "SOLID", "FORCE", "LIFETIME", "VELOCITY", "VORTICITY",
     "LAYER", "RADIUS", "ELEMENT_INDEX", "PARTICLE_INDEX", "ORIENTATION", "SPIN", "SPIN_RATIO",
-    "AGE", "STRETCH", "FTLE" };
+    "AGE", "STRETCH", "FTLE", "SLIP", "PARTICLE_VELOCITY" };
   static_assert(sizeof(names) / sizeof(names[0]) == std::size_t(ColorSource::Count),
     "a name per colour source");
   std::ostringstream out;

@@ -102,6 +102,8 @@ enum class ColorSource
   Age,         ///< of a trail's pose (0 on the elements)
   Stretch,     ///< ElementStretch: a component (largest, smallest), or the magnitude
   Ftle,        ///< ElementFTLE
+  Slip,        ///< SlipVelocity: a component, or the magnitude (0 without inertia)
+  ParticleVelocity, ///< Velocity plus the slip: a component, or the magnitude
   Count
 };
 

@@ -182,6 +182,7 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   d.centers = S.state.current(E::Centers);
   d.poses = S.state.current(E::Poses);
   d.spins = S.state.current(E::Spins);
+  d.slips = carriesInertia(S.parameters) ? S.state.slips.get() : 0u;
   d.elementGrid[0] = S.layout.elementGrid[0];
   d.elementGrid[1] = S.layout.elementGrid[1];
   d.blocksPerRow = S.layout.blocksPerRow;

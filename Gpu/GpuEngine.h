@@ -148,6 +148,7 @@ public:
     unsigned centers = 0;   ///< per element: the generation's initial centre
     unsigned poses = 0;     ///< per element: pose quaternion (x, y, z, w)
     unsigned spins = 0;     ///< per element: angular velocity xyz, SpinVorticityRatio
+    unsigned slips = 0;     ///< per particle: the slip (heavy particles; 0: none)
     int elementGrid[2] = { 0, 0 };
     int blocksPerRow = 0;
     int elementCount = 0;

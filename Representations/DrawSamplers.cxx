@@ -20,7 +20,7 @@ namespace
 /// The uniforms' names in Shaders/bp_draw_vs_dec.glsl, in the order of Sampler.
 const char* const Names[DrawSamplers::Count] = { "bpPositions", "bpNormals", "bpSamples",
   "bpElements", "bpCenters", "bpLinks", "bpPoses", "bpSpins", "bpTrailPositions", "bpTrailElements",
-  "bpAdjacency", "bpStretchRest" };
+  "bpAdjacency", "bpStretchRest", "bpSlips" };
 } // namespace
 
 void DrawSamplers::bindAll(vtkOpenGLRenderWindow* window, const Textures& textures)

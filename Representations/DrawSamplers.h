@@ -38,6 +38,7 @@ public:
     TrailElements,  ///< bound per trail pose (bind)
     Corners,
     StretchRest, ///< the template's rest offsets (DrawDeformation.h)
+    Slips,       ///< heavy particles' slips (none: reads 0)
     Count
   };
   using Textures = std::array<unsigned, Count>;
@@ -52,7 +53,7 @@ public:
   void setUniforms(vtkShaderProgram* program) const;
 
 private:
-  int Units[Count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+  int Units[Count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 };
 
 } // namespace bpvtk

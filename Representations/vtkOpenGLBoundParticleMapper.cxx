@@ -461,7 +461,8 @@ void vtkOpenGLBoundParticleMapper::PrepareEngineTextures()
   }
   // Orientation and spin need nothing here: the display's engine fits the
   // poses every step (GpuStepper turns Parameters::trackPoses on).
-  if (I.ScalarMode == bp::ColorSource::Velocity || I.ScalarMode == bp::ColorSource::Vorticity)
+  if (I.ScalarMode == bp::ColorSource::Velocity || I.ScalarMode == bp::ColorSource::Vorticity ||
+    I.ScalarMode == bp::ColorSource::ParticleVelocity)
   {
     if (I.SamplesSerial != I.Queue->draw.serial)
     {
@@ -548,7 +549,7 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   I.Samplers.bindAll(window,
     { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
       I.LinkTable.handle(), I.Inputs.poses, I.Inputs.spins, 0u, 0u, I.CornerTable.handle(),
-      I.Deformation.handle() });
+      I.Deformation.handle(), I.Inputs.slips });
   for (int p = PrimitiveStart; p <= PrimitiveTris; ++p)
   {
     this->DrawPrimitive(p, ren, act);

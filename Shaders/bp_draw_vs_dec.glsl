@@ -22,6 +22,7 @@ uniform sampler2D bpCenters;   // per element: the generation's initial centre, 
 uniform isampler2D bpLinks;    // per link: its two elements (the CPU output's link cells)
 uniform sampler2D bpPoses;     // per element: pose quaternion (x, y, z, w)
 uniform sampler2D bpSpins;     // per element: angular velocity xyz, SpinVorticityRatio
+uniform sampler2D bpSlips;     // per particle: heavy particles' slip (none bound: 0)
 uniform sampler2D bpTrailPositions; // per particle, in the trail draw: the slot's positions
 uniform sampler2D bpTrailElements;  // per element, in the trail draw: the slot's generation (.y)
 uniform isampler2D bpAdjacency; // per template particle (row): the triangles it is a corner of
@@ -180,6 +181,13 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
   }
   if (bpScalarMode == BP_COLOR_FTLE)
     return bpFtleOf(e);
+  if (bpScalarMode == BP_COLOR_SLIP || bpScalarMode == BP_COLOR_PARTICLE_VELOCITY)
+  {
+    vec3 v = texelFetch(bpSlips, texel, 0).xyz;
+    if (bpScalarMode == BP_COLOR_PARTICLE_VELOCITY)
+      v += texelFetch(bpSamples, texel, 0).xyz;
+    return bpComponent >= 0 ? v[bpComponent] : length(v);
+  }
   return 0.0;
 }
 

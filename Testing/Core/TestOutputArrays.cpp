@@ -39,11 +39,7 @@ TEST(OutputArrays, ColorSourcesBecomeShaderDefinitions)
   EXPECT_TRUE(speed->colorsMagnitude);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    // The heavy particles' arrays: the CPU output's (the GPU display colours
-    // them solid).
-    const bool cpuOnly = row.id == bp::OutputArrayId::ParticleVelocity ||
-      row.id == bp::OutputArrayId::SlipVelocity;
-    EXPECT_EQ(row.color == bp::ColorSource::Solid, row.id == bp::OutputArrayId::Normals || cpuOnly)
+    EXPECT_EQ(row.color == bp::ColorSource::Solid, row.id == bp::OutputArrayId::Normals)
       << row.name;
   }
 }

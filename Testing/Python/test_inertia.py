@@ -195,14 +195,15 @@ bptest.check(len(inertial_map) == len(tracer_map) > 0 and np.isfinite(inertial_m
 
 # The GPU display steps heavy particles itself and draws what the CPU
 # engine's Surface shows.
-def picture(engine, representation, name):
+def picture(engine, representation, name, color=None, scalar_range=None):
     t = tracer(vortex, VELOCITY, ElementShape="Strip8", NumberOfElements=60, ElementSize=0.15,
                EmitterSize=[1.2, 1.2, 1.2], Inertia="Maxey-Riley", ResponseTime=0.05,
-               DensityRatio=50, Gravity=[0, 0, -3], Engine=engine, OutputArrays=["Normals"])
+               DensityRatio=50, Gravity=[0, 0, -3], Engine=engine,
+               OutputArrays=["Normals", "SlipVelocity", "ParticleVelocity"])
     view = bptest.element_view((240, 180))
     shown = Show(t, view)
     shown.SetRepresentationType(representation)
-    bptest.colour_display(shown, None, None)
+    bptest.colour_display(shown, color, scalar_range)
     view.ViewTime = 0.5
     with bptest.CapturedMessages() as said:
         Render(view)
@@ -212,18 +213,21 @@ def picture(engine, representation, name):
 
 
 output = tempfile.mkdtemp()
-cpu_image, _ = picture("CPU", "Surface", "inertia_cpu")
-gpu_image, said = picture("GPU", "Bound Particles", "inertia_gpu")
-mean, pixels = bptest.image_difference(cpu_image, gpu_image)
-covered = bptest.covered_fraction(gpu_image)
-print("GPU display against CPU Surface: mean %.3f, pixels %.4f; %.3f of the picture drawn" %
-      (mean, pixels, covered))
-bptest.check(covered > 0.01, "the GPU display draws the elements (%.4f covered)" % covered)
-bptest.check(not said.messages, "the GPU display runs heavy particles without a message: %s" %
-             said.messages)
-bptest.check(mean <= 0.5 and pixels <= 0.002,
-             "the GPU display draws the CPU engine's heavy particles: mean %.3f, pixels %.4f" %
-             (mean, pixels))
+for color, scalar_range in ((None, None), ("SlipVelocity", (0.0, 0.2)),
+                            ("ParticleVelocity", (0.0, 1.2))):
+    name = "inertia_" + (color or "solid")
+    cpu_image, _ = picture("CPU", "Surface", name + "_cpu", color, scalar_range)
+    gpu_image, said = picture("GPU", "Bound Particles", name + "_gpu", color, scalar_range)
+    mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+    covered = bptest.covered_fraction(gpu_image)
+    print("GPU display against CPU Surface, %s: mean %.3f, pixels %.4f; %.3f of the picture "
+          "drawn" % (color or "solid", mean, pixels, covered))
+    bptest.check(covered > 0.01, "the GPU display draws the elements (%.4f covered)" % covered)
+    bptest.check(not said.messages, "the GPU display runs heavy particles without a message: %s"
+                 % said.messages)
+    bptest.check(mean <= 0.5 and pixels <= 0.002,
+                 "the GPU display draws the CPU engine's heavy particles, %s: mean %.3f, pixels "
+                 "%.4f" % (color or "solid", mean, pixels))
 
 # The Python trace records the settings of a tracer made while tracing.
 smtrace.start_trace()
