@@ -367,8 +367,8 @@ int vtkBoundParticleRepresentation::RequestData(
     // The render runs the recorded work and reports its progress from 0 to
     // 1: this update's own end (the executive's 1 after RequestData) would
     // make an observer see 0, 1, then the run's 0.03 ... 1. It reports 0 instead.
-    const bool runFollows = I.Gpu && I.Queue->hasPending() &&
-      vtkOpenGLBoundParticleMapper::ReportsReplayProgress();
+    const bool runFollows =
+      I.Gpu && I.Queue->hasPending() && vtkOpenGLBoundParticleMapper::ReportsReplayProgress();
     this->SetProgressShiftScale(0.0, runFollows ? 0.0 : 1.0);
     if (runFollows)
     {
@@ -432,6 +432,16 @@ void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
 {
   this->Internals->TextureSizeLimit = texels;
   this->Internals->GpuMapper->SetTextureSizeLimit(texels);
+}
+
+int vtkBoundParticleRepresentation::GetGpuTextureSizeLimit() const
+{
+  return this->Internals->TextureSizeLimit;
+}
+
+bool vtkBoundParticleRepresentation::GetStreamTimeSteps() const
+{
+  return this->Internals->StreamTimeSteps;
 }
 
 bool vtkBoundParticleRepresentation::FadesTrails(vtkPolyData* piece)
