@@ -5,7 +5,8 @@
 // wrapping, as ParaView calls the class; every enumeration's values are
 // valid, distinct and its default among them. A property whose setter has no
 // getter must be listed below with the reason. An enumeration's setter
-// keeps each value the XML offers and none past them. The test reads the XML where
+// keeps each value the XML offers and none past them; a numeric setter keeps
+// both ends of the range the XML's panel offers. The test reads the XML where
 // it is written (Plugin/), so that an edit is checked without a new build.
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerStream.h"
@@ -14,6 +15,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLUtilities.h"
+
+#include "AnalyticFlows.h"
+#include "ElementTemplate.h"
 
 #include <gtest/gtest.h>
 
@@ -126,7 +130,8 @@ public:
   }
 
   /// Calls the object's setter with one integer.
-  bool set(vtkTypeUInt32 object, const std::string& setter, int value)
+  template <typename T>
+  bool set(vtkTypeUInt32 object, const std::string& setter, T value)
   {
     vtkClientServerStream s;
     s << vtkClientServerStream::Invoke << vtkClientServerID(object) << setter.c_str() << value
@@ -207,6 +212,38 @@ void checkEnumeration(Classes& classes, const std::string& className, const std:
   vtkObject::SetGlobalWarningDisplay(warnings);
 }
 
+/// The class keeps the ends of the range the XML's panel offers (a setter
+/// that clamps tighter would take a value the panel shows away from it).
+void checkRange(Classes& classes, const std::string& className, vtkXMLDataElement* property)
+{
+  vtkXMLDataElement* range = property->FindNestedElementWithName("IntRangeDomain");
+  const bool integer = range != nullptr;
+  range = range ? range : property->FindNestedElementWithName("DoubleRangeDomain");
+  const char* elements = property->GetAttribute("number_of_elements");
+  if (!range || !elements || std::string(elements) != "1")
+  {
+    return;
+  }
+  const std::string setter = property->GetAttribute("command");
+  const std::string getter = "Get" + setter.substr(3);
+  for (const char* end : { "min", "max" })
+  {
+    const char* text = range->GetAttribute(end);
+    if (!text)
+    {
+      continue;
+    }
+    const double value = numbers(text).at(0);
+    const vtkTypeUInt32 object = classes.create(className);
+    const bool sent =
+      integer ? classes.set(object, setter, int(value)) : classes.set(object, setter, value);
+    std::vector<double> kept;
+    ASSERT_TRUE(sent && classes.get(object, getter, kept));
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0], value) << "the range's " << end << " " << value << " becomes " << kept[0];
+  }
+}
+
 void checkFile(const std::string& path)
 {
   SCOPED_TRACE(path);
@@ -252,6 +289,7 @@ void checkFile(const std::string& path)
       {
         continue;
       }
+      checkRange(classes, className, property);
       ASSERT_EQ(setter.rfind("Set", 0), 0u) << "command " << setter;
       std::vector<double> actual;
       ASSERT_TRUE(classes.get(object, "Get" + setter.substr(3), actual))
@@ -270,7 +308,49 @@ void checkFile(const std::string& path)
   EXPECT_GT(compared, 0) << "no property compared";
   std::printf("%s: %d defaults compared\n", path.c_str(), compared);
 }
+
+/// The entries of source proxy `proxy`'s enumeration `property` in the XML, value: text.
+std::map<int, std::string> entries(
+  const std::string& path, const std::string& proxy, const std::string& property)
+{
+  std::map<int, std::string> found;
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
+  for (int g = 0; root && g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement* p = root->GetNestedElement(g)->FindNestedElementWithNameAndAttribute(
+      "SourceProxy", "name", proxy.c_str());
+    vtkXMLDataElement* e = p
+      ? p->FindNestedElementWithNameAndAttribute("IntVectorProperty", "name", property.c_str())
+      : nullptr;
+    vtkXMLDataElement* domain = e ? enumeration(e) : nullptr;
+    for (int k = 0; domain && k < domain->GetNumberOfNestedElements(); ++k)
+    {
+      int value = -1;
+      domain->GetNestedElement(k)->GetScalarAttribute("value", value);
+      found[value] = domain->GetNestedElement(k)->GetAttribute("text");
+    }
+  }
+  return found;
+}
 } // namespace
+
+TEST(PropertyDefaults, TheXmlNamesCoreShapesAndFlowsAsCoreDoes)
+{
+  const std::string path = BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml";
+  const auto shapes = entries(path, "BoundParticleTracer", "ElementShape");
+  ASSERT_EQ(int(shapes.size()), bp::BuiltinShapeCount);
+  for (const auto& [value, text] : shapes)
+  {
+    EXPECT_EQ(text, bp::builtinShapeName(bp::BuiltinShape(value)));
+  }
+  const auto flows = entries(path, "AnalyticFlow", "Flow");
+  ASSERT_EQ(int(flows.size()), bp::AnalyticFlowCount);
+  for (const auto& [value, text] : flows)
+  {
+    EXPECT_EQ(text, bp::analyticFlowName(bp::AnalyticFlow(value)));
+  }
+}
 
 TEST(PropertyDefaults, TheXmlAndTheFiltersAgree)
 {
