@@ -31,9 +31,10 @@ namespace bp
 
 /// The draw of the acceptance test of a release's k-th candidate: after
 /// every candidate's (candidateDraw(ReleaseTries - 1) + 2 = 196).
+constexpr std::uint32_t FirstWeightDraw = 200;
 constexpr std::uint32_t weightDraw(int k)
 {
-  return std::uint32_t(200 + k);
+  return FirstWeightDraw + std::uint32_t(k);
 }
 
 class ReleaseWeights

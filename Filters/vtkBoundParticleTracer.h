@@ -455,7 +455,8 @@ public:
   ///@{
   /**
    * Which point arrays the CPU output carries, by name (the rows of the table
-   * in Core/OutputArrays.cpp; all but the pose arrays by default), as a
+   * in Core/OutputArrays.cpp, whose flags say which are on by default: all
+   * but the pose arrays and the deformation arrays), as a
    * vtkDataArraySelection, the way VTK's readers select theirs. A name the
    * table lacks is refused with a warning. An array left out is not computed,
    * which is what makes a frame of Play cheaper: the field samples behind

@@ -22,7 +22,7 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const std::size_t n = this->shape.particleCount();
   const ParticleLayout wanted = ParticleLayout::of(p.numberOfElements, n);
   this->layout = GpuLayout(wanted, p.numberOfElements, n);
-    this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->FrameQuaternion = quaternionFromRotation(p.frame);
   this->LongAxis = longAxis(this->shape);
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   if (!error.empty())
@@ -52,14 +52,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   this->state.make(this->layout,
     makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax),
     p.trailLength, carriesInertia(p));
-  // Release centres of a seed source (bp_common.glsl: 256 a row); one texel
+  // Release centres of a seed source (SeedPointsPerRow a row); one texel
   // when there is none, since the reset pass binds it.
   std::vector<float> seeds(4 * std::max<std::size_t>(p.seedPoints.size() / 3, 1), 0.0f);
   for (std::size_t k = 0; k < p.seedPoints.size() / 3; ++k)
   {
     std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
   }
-  this->SeedPoints = makeListTexture(seeds, 256);
+  this->SeedPoints = makeListTexture(seeds, SeedPointsPerRow);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");

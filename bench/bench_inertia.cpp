@@ -135,6 +135,7 @@ void printGpuRows(const bench::Fields& fields, const Job (&jobs)[4], int repeats
       const double a = median(off), b = median(on);
       std::printf("%-8s %-9s %-8s %-9s %14.3f %14.3f %7.2f %s\n", job.shape, "unsteady",
         job.integratorName, path[0], 1e3 * a, 1e3 * b, b / a, b / a <= 1.3 ? "met" : "missed");
+      std::fflush(stdout);
     }
   }
   unsetenv(bp::GpuPathVariable);
@@ -194,6 +195,7 @@ int main(int argc, char** argv)
         b / a <= 1.3 ? "met" : "missed");
     }
   }
+  std::fflush(stdout);
   printGpuRows(fields, jobs, repeats, steps);
   return 0;
 }

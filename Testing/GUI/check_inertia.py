@@ -6,19 +6,28 @@
 # inertia.xml checks.
 import math
 
+import gui_check
 from paraview import servermanager
 from paraview.simple import FindSource
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-tracer = FindSource("tracer") or FindSource("BoundParticleTracer1")
-settings = (tracer.Inertia == "Maxey-Riley" and abs(tracer.ResponseTime - 0.05) < 1e-12 and
-            abs(tracer.DensityRatio - 2.65) < 1e-12 and list(tracer.Gravity) == [0, 0, -4])
-print("check_inertia: panel settings applied:", settings)
-tracer.UpdatePipeline(0.5)
-slip = vtk_to_numpy(servermanager.Fetch(tracer).GetPointData().GetArray("SlipVelocity"))
-beta = 3.0 / (1.0 + 2.0 * 2.65)
-terminal = 0.05 * (1.0 - beta) * -4.0 * (1.0 - math.exp(-0.5 / 0.05))
-worst = float(abs(slip[:, 2] - terminal).max())
-print("check_inertia: slip within", worst, "of", terminal)
-if settings and len(slip) == 20 and worst < 0.01 * abs(terminal):
-    tracer.ColoringAxis = "X"
+tracer = FindSource("BoundParticleTracer1")
+
+
+def check():
+    tracer.UpdatePipeline(0.5)
+    slip = vtk_to_numpy(servermanager.Fetch(tracer).GetPointData().GetArray("SlipVelocity"))
+    beta = 3.0 / (1.0 + 2.0 * 2.65)
+    terminal = 0.05 * (1.0 - beta) * -4.0 * (1.0 - math.exp(-0.5 / 0.05))
+    worst = float(abs(slip[:, 2] - terminal).max())
+    found = {"Maxey-Riley": tracer.Inertia == "Maxey-Riley",
+             "Response Time 0.05": abs(tracer.ResponseTime - 0.05) < 1e-12,
+             "Density Ratio 2.65": abs(tracer.DensityRatio - 2.65) < 1e-12,
+             "Gravity 0 0 -4": list(tracer.Gravity) == [0, 0, -4],
+             "20 particles": len(slip) == 20,
+             "terminal velocity within 1%": worst < 0.01 * abs(terminal)}
+    if gui_check.passed("check_inertia", found, {"slip off by": worst, "terminal": terminal}):
+        tracer.ColoringAxis = "X"
+
+
+gui_check.run("check_inertia", check)

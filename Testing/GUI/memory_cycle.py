@@ -11,17 +11,9 @@ import os
 
 import ctypes
 
+import gui_check
 from paraview.simple import (AnalyticFlow, BoundParticleTracer, Delete, FindSource,
                              GetActiveView, GetAnimationScene, Render, Show)
-
-
-def resident():
-    with open("/proc/self/status") as status:
-        for line in status:
-            if line.startswith("VmRSS"):
-                return int(line.split()[1]) / 1024.0
-    return 0.0
-
 
 saved = os.path.join(os.environ["HOME"], "memory.txt")
 flow = FindSource("Flow")
@@ -35,10 +27,10 @@ with open(saved) as past:
 # What was freed goes back to the system first, as the GUI does it a moment
 # after a tracer is deleted (glibc's malloc_trim): what remains is held.
 ctypes.CDLL("libc.so.6").malloc_trim(0)
-reading = resident()
+reading = gui_check.resident_mib()
 with open(saved, "a") as out:
     out.write("%.1f " % reading)
-os.write(2, ("memory_cycle: %.0f MiB before cycle %d\n" % (reading, cycle)).encode())
+gui_check.say("memory_cycle", "%.0f MiB before cycle %d" % (reading, cycle))
 # The 21st run only reads the memory after the 20th cycle. (No SystemExit:
 # in the GUI's Python shell it quits ParaView.)
 if cycle < 20:
