@@ -12,7 +12,9 @@
  *     in [min, max]; every draw comes from counterHash(seed, element,
  *     generation, draw), draws 0-2 the centre (candidateDraw() for further
  *     candidates), 3-5 the rotation, 6 the lifetime;
- *  2. advection of every particle (Euler, RK2 midpoint or classic RK4);
+ *  2. advection of every particle (Euler, RK2 midpoint or classic RK4), a
+ *     heavy particle's with its slip velocity's own displacement added
+ *     (Inertia.h; after restoration a restored element shares its mean slip);
  *  3. restoration, K iterations of averaged Jacobi (thesis §3.5), Jacobi with
  *     relaxation, Gauss-Seidel, or shape matching (ShapeMatching.h); the
  *     per-particle "force" is the length of the particle's total restoration
