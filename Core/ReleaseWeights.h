@@ -64,7 +64,7 @@ private:
 
 /// Where a weighted release draws its candidates: the emitter box
 /// [emitterMin, emitterMax] cut to the weights' support, axis by axis (min
-/// and max in float, as the GPU's bpWeightedBox); the emitter box itself
+/// and max in float, as the GPU's bpWeightedCenter does); the emitter box itself
 /// where the two do not meet.
 void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float, 3>& emitterMax,
   const ReleaseWeights& weights, float lo[3], float hi[3]);

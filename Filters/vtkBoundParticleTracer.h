@@ -2,7 +2,8 @@
 /**
  * @class vtkBoundParticleTracer
  * @brief Traces bound particles (small shapes of particles tied by springs)
- * through a steady or unsteady vector field on a uniform or rectilinear grid.
+ * through a steady or unsteady vector field on any grid or mesh (meshes and
+ * composite data resampled onto a uniform grid first).
  *
  * Each of NumberOfElements elements is an instance of ElementShape, scaled to
  * ElementSize, placed in the emitter box, advected with the flow and restored

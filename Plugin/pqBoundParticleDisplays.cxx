@@ -39,6 +39,16 @@ void pqBoundParticleDisplays::onStartup()
         QTimer::singleShot(0, [] { vtkBoundParticleTracer::ReturnFreedMemory(); });
       }
     });
+  // Reset Session and a disconnect remove the whole session at once (not
+  // always through sourceRemoved): once it is gone, so is its memory.
+  QObject::connect(model, &pqServerManagerModel::finishedRemovingServer, this,
+    [this]()
+    {
+      this->Vectors.clear();
+      this->SeenTrails.clear();
+      this->SeenGpu.clear();
+      QTimer::singleShot(0, [] { vtkBoundParticleTracer::ReturnFreedMemory(); });
+    });
   QObject::connect(model, &pqServerManagerModel::representationRemoved, this,
     [this](pqRepresentation* r)
     {

@@ -57,7 +57,7 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/first_minutes.py" \
   --plugin "$plugin" --data "$root/../shared/data" --pictures "$out/first-minutes"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
-bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt"
+bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
 # The defaults straight on ParaView's mesh readers (times and element counts).
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/mesh_data.py" \
   --plugin "$plugin" --data "$root/../shared/data" | tee "$out/mesh_data.txt"

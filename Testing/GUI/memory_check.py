@@ -6,13 +6,11 @@
 # is held must not grow (the last ten readings within 50 MiB of the first
 # five), and after Reset Session the process holds at most 60 MiB more than
 # before the first trace. Written to the terminal.
-import ctypes
 import os
 
 import gui_check
 from paraview.simple import AnalyticFlow, BoundParticleTracer, SetActiveSource
 
-ctypes.CDLL("libc.so.6").malloc_trim(0)  # as memory_cycle.py
 with open(os.path.join(os.environ["HOME"], "memory.txt")) as saved:
     readings = [float(x) for x in saved.read().split()]
 after_reset = gui_check.resident_mib()
