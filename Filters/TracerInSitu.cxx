@@ -100,7 +100,10 @@ int vtkBoundParticleTracer::RequestStreamInformation(
   const double time = bpvtk::presentTime(inInfo);
   const Arrival arrival = I.Stream.offer(time);
   const std::string refusal = I.Stream.refusal(arrival, time);
-  if (!refusal.empty())
+  // The first step announced again is no step lost (5.11's Catalyst hands
+  // its producer the first step twice, and says so itself): refused quietly.
+  const bool firstAgain = arrival == Arrival::Repeat && I.Stream.times().size() == 1;
+  if (!refusal.empty() && !firstAgain)
   {
     vtkWarningMacro(<< refusal);
   }
