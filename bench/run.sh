@@ -51,6 +51,9 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
 # The defaults before and after issue 29, a picture per data set.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/first_minutes.py" \
   --plugin "$plugin" --data "$root/../shared/data" --pictures "$out/first-minutes"
+# In situ (a step at a time through a trivial producer) against post hoc.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/insitu_steps.py" \
+  --plugin "$plugin" | tee "$out/insitu_steps.txt"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
 bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
-echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/insitu_steps.txt"
