@@ -18,14 +18,19 @@
 namespace bp
 {
 
+/// pcg4d's linear congruential step, x * HashMultiplier + HashIncrement
+/// (bpHash in bp_shared.glsl gets both as generated #defines).
+constexpr std::uint32_t HashMultiplier = 1664525u;
+constexpr std::uint32_t HashIncrement = 1013904223u;
+
 /// pcg4d over the four counters; returns the first lane.
 inline std::uint32_t counterHash(
   std::uint32_t seed, std::uint32_t element, std::uint32_t generation, std::uint32_t draw)
 {
-  std::uint32_t x = seed * 1664525u + 1013904223u;
-  std::uint32_t y = element * 1664525u + 1013904223u;
-  std::uint32_t z = generation * 1664525u + 1013904223u;
-  std::uint32_t w = draw * 1664525u + 1013904223u;
+  std::uint32_t x = seed * HashMultiplier + HashIncrement;
+  std::uint32_t y = element * HashMultiplier + HashIncrement;
+  std::uint32_t z = generation * HashMultiplier + HashIncrement;
+  std::uint32_t w = draw * HashMultiplier + HashIncrement;
   x += y * w;
   y += z * x;
   z += x * y;

@@ -85,12 +85,19 @@ constexpr std::uint8_t AlignPending = 4;
 /// How many candidate centres a release draws before it takes the last one
 /// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
 constexpr int ReleaseTries = 64;
+/// The draws of a release, by number (counterHash's fourth counter; the GPU
+/// kernels get them as generated #defines): the first candidate centre's
+/// coordinates are draws 0-2, a random orientation's draws 3-5
+/// (OrientationDraw on), the lifetime's draw 6, the further candidates'
+/// coordinates from draw 8 (candidateDraw).
+constexpr std::uint32_t OrientationDraw = 3;
+constexpr std::uint32_t LifetimeDraw = 6;
+constexpr std::uint32_t FurtherCandidateDraw = 8;
 /// The draw of a release's k-th candidate centre's first coordinate (then
-/// the next two): 0 for the first, after the orientation and lifetime draws
-/// (3-6) for the others.
+/// the next two).
 constexpr std::uint32_t candidateDraw(int k)
 {
-  return k == 0 ? 0u : std::uint32_t(8 + 3 * (k - 1));
+  return k == 0 ? 0u : std::uint32_t(FurtherCandidateDraw + 3 * (k - 1));
 }
 
 struct Parameters

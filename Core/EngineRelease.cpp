@@ -17,7 +17,7 @@ float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t
   // A lattice's generation is released together: its lifetime is element 0's.
   const std::uint32_t element = p.releasePattern == ReleasePattern::Lattice ? 0u : drawElement;
   return p.lifetimeMin +
-    uniformDraw(p.seed, element, generation, 6) * (p.lifetimeMax - p.lifetimeMin);
+    uniformDraw(p.seed, element, generation, LifetimeDraw) * (p.lifetimeMax - p.lifetimeMin);
 }
 
 void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
@@ -28,12 +28,12 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   const bool linked = !this->Links.empty();
   const std::uint32_t element = this->drawElement(e);
   const std::uint32_t generation = this->Generations[e];
-  // Draws 3-5 (the centre's are releaseCenter()'s, the lifetime's lifetimeDraw()'s:
+  // The orientation draws (the centre's are releaseCenter()'s, the lifetime's lifetimeDraw()'s:
   // a lattice's generation is released together, with element 0's lifetime).
-  float u[6];
-  for (std::uint32_t d = 3; d < 6; ++d)
+  float u[3];
+  for (std::uint32_t k = 0; k < 3; ++k)
   {
-    u[d] = uniformDraw(P.seed, element, generation, d);
+    u[k] = uniformDraw(P.seed, element, generation, OrientationDraw + k);
   }
   float c[3];
   bool fits = true;
@@ -47,8 +47,8 @@ void Engine::place(std::size_t e, bool releasing, const ReleaseFlow& flow)
   }
   std::copy_n(c, 3, this->InitialCenters.data() + 3 * e);
   const std::array<float, 4> q = P.orientation != Orientation::Random ? this->FrameQuaternion
-    : P.planeAxis >= 0 ? inPlaneQuaternion(P.planeAxis, u[3], this->FrameQuaternion)
-                       : quaternionFromUniforms(u[3], u[4], u[5]);
+    : P.planeAxis >= 0 ? inPlaneQuaternion(P.planeAxis, u[0], this->FrameQuaternion)
+                       : quaternionFromUniforms(u[0], u[1], u[2]);
   this->orient(e, q);
   std::fill_n(this->Spins.begin() + 4 * e, 4, 0.0f);
   const std::size_t n = this->Shape.particleCount();

@@ -135,7 +135,8 @@ struct OutputArray
   bool colorsMagnitude; ///< colours the magnitude of a vector's colour source
   RangeSource range;
   /// Ticked in Output Arrays by default: the pose arrays are not, since
-  /// they make the CPU engine fit every element every step (trackPoses).
+  /// they make the CPU engine fit every element every step (trackPoses),
+  /// nor the deformation arrays (a fit per element every output).
   bool onByDefault;
   /// Needs Parameters::trackPoses.
   bool needsPoses;

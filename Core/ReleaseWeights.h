@@ -31,9 +31,10 @@ namespace bp
 
 /// The draw of the acceptance test of a release's k-th candidate: after
 /// every candidate's (candidateDraw(ReleaseTries - 1) + 2 = 196).
+constexpr std::uint32_t FirstWeightDraw = 200;
 constexpr std::uint32_t weightDraw(int k)
 {
-  return std::uint32_t(200 + k);
+  return FirstWeightDraw + std::uint32_t(k);
 }
 
 class ReleaseWeights
@@ -63,7 +64,7 @@ private:
 
 /// Where a weighted release draws its candidates: the emitter box
 /// [emitterMin, emitterMax] cut to the weights' support, axis by axis (min
-/// and max in float, as the GPU's bpWeightedBox); the emitter box itself
+/// and max in float, as the GPU's bpWeightedCenter does); the emitter box itself
 /// where the two do not meet.
 void weightedBox(const std::array<float, 3>& emitterMin, const std::array<float, 3>& emitterMax,
   const ReleaseWeights& weights, float lo[3], float hi[3]);

@@ -80,10 +80,11 @@ void ReplayProgress::finish()
 std::string longReplayNote(
   double steps, double particles, double from, double to, const WorkQueue& queue)
 {
-  const bool measured = queue.particleStepsPerSecond > 0.0;
+  const RendererReport& report = queue.report();
+  const bool measured = report.particleStepsPerSecond > 0.0;
   const double rate = measured
-    ? queue.particleStepsPerSecond
-    : (queue.renderer == RendererKind::Software ? AssumedSoftwareRate : AssumedHardwareRate);
+    ? report.particleStepsPerSecond
+    : (report.renderer == RendererKind::Software ? AssumedSoftwareRate : AssumedHardwareRate);
   const double seconds = steps * particles / rate;
   if (!(seconds > LongReplaySeconds))
   {
@@ -95,10 +96,10 @@ std::string longReplayNote(
       << " particles (t = " << from << " to " << to << ") before this frame is drawn: about "
       << std::llround(seconds) << " s "
       << (measured ? "at the rate it last ran at"
-                   : (queue.renderer == RendererKind::Software
+                   : (report.renderer == RendererKind::Software
                          ? "on a software renderer"
                          : "at a modest GPU's rate (not yet measured here)"))
-      << (queue.rendererName.empty() ? std::string() : " (" + queue.rendererName + ")")
+      << (report.rendererName.empty() ? std::string() : " (" + report.rendererName + ")")
       << ", while the view waits. A trace is replayed from its start when it is new, changed, "
          "or its engine switched: to wait less, set Engine before going to a late time, lower "
          "Number Of Elements, or keep Engine = CPU on a software renderer.";

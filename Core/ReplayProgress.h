@@ -85,7 +85,7 @@ private:
 };
 
 /// The engine's rates assumed where the renderer has measured none yet
-/// (WorkQueue::particleStepsPerSecond): what llvmpipe reaches on a few cores,
+/// (RendererReport::particleStepsPerSecond): what llvmpipe reaches on a few cores,
 /// and the low end of GPUs (an H200 runs hundreds of times faster).
 constexpr double AssumedSoftwareRate = 2.0e7;
 constexpr double AssumedHardwareRate = 1.0e9;

@@ -93,47 +93,13 @@ struct DrawSettings
   std::uint64_t serial = 0; ///< changes with every update of the filter
 };
 
-class WorkQueue : public Stepper
+/**
+ * What a display tells the tracer about its renderer and its runs: written
+ * by the display alone (its representation and its mapper), read by the
+ * tracer (WorkQueue::report()).
+ */
+struct RendererReport
 {
-public:
-  explicit WorkQueue(int id)
-    : Id(id)
-  {
-  }
-  WorkQueue(const WorkQueue&) = delete;
-  WorkQueue& operator=(const WorkQueue&) = delete;
-
-  int id() const { return this->Id; }
-
-  // Recording (the tracer). configure() makes the CPU engine's checks, so a
-  // system no engine could run is refused before it is recorded.
-  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
-  std::string setField(const VectorField& field) override;
-  void initialize(double startTime) override;
-  void step(double t, double h) override;
-  void save() override;
-  void restore() override;
-  bool readsAhead() const override { return this->streamTimeSteps; }
-  void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
-  /// Drops every pending call (a replay makes them moot).
-  void clear() { this->Pending.clear(); }
-  /// Whether calls wait for the renderer.
-  bool hasPending() const { return !this->Pending.empty(); }
-
-  // Running (the renderer).
-  std::vector<EngineCall> take();
-  /**
-   * The renderer ran the calls take() gave only up to a Step call from
-   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
-   * that step boundary, showing no short step, and the next update continues
-   * from there. Calls recorded meanwhile (an update inside the run) continue
-   * from where every taken call would have led: they are dropped and the
-   * next update replays.
-   */
-  void stoppedAt(double committed);
-
-  DrawSettings draw;
-
   /// The largest texture the renderer's GPU takes (0: not known yet), so the
   /// filter can refuse a system before recording it.
   int maxTextureSize = 0;
@@ -157,6 +123,59 @@ public:
   /// renderer uploads it a slab of z layers per frame (the display's choice);
   /// otherwise a time step is uploaded whole when a step first needs it.
   bool streamTimeSteps = true;
+};
+
+/**
+ * The requests: the engine calls the tracer records, what to draw and the
+ * next time step, written by the tracer; the renderer drains the calls
+ * (take(), stoppedAt()). The renderer's side comes back in report().
+ */
+class WorkQueue : public Stepper
+{
+public:
+  explicit WorkQueue(int id)
+    : Id(id)
+  {
+  }
+  WorkQueue(const WorkQueue&) = delete;
+  WorkQueue& operator=(const WorkQueue&) = delete;
+
+  int id() const { return this->Id; }
+
+  // Recording (the tracer). configure() makes the CPU engine's checks, so a
+  // system no engine could run is refused before it is recorded.
+  std::string configure(const ElementTemplate& shape, const Parameters& parameters) override;
+  std::string setField(const VectorField& field) override;
+  void initialize(double startTime) override;
+  void step(double t, double h) override;
+  void save() override;
+  void restore() override;
+  bool readsAhead() const override { return this->Report.streamTimeSteps; }
+  void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
+  /// Drops every pending call (a replay makes them moot).
+  void clear() { this->Pending.clear(); }
+  /// Whether calls wait for the renderer.
+  bool hasPending() const { return !this->Pending.empty(); }
+
+  // Running (the renderer).
+  std::vector<EngineCall> take();
+  /**
+   * The renderer ran the calls take() gave only up to a Step call from
+   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
+   * that step boundary, showing no short step, and the next update continues
+   * from there. Calls recorded meanwhile (an update inside the run) continue
+   * from where every taken call would have led: they are dropped and the
+   * next update replays.
+   */
+  void stoppedAt(double committed);
+
+  /// What the renderer reported, as the tracer reads it.
+  const RendererReport& report() const { return this->Report; }
+  /// The report, for the display that owns this queue: the one writer.
+  RendererReport& reportFromDisplay() { return this->Report; }
+
+  DrawSettings draw;
+
   /// The time step the next update forward will need, once the filter has it
   /// (empty otherwise).
   FieldSlice upcoming;
@@ -164,6 +183,7 @@ public:
 private:
   int Id = 0;
   std::vector<EngineCall> Pending;
+  RendererReport Report;
 };
 
 } // namespace bp

@@ -47,9 +47,11 @@ void announceFtleMap(vtkInformation* info, const TracerConfig& config, const Fie
  * Fills `image` with the FTLE map of `engine`'s elements: dimensions the
  * lattice's counts, origin its first point plus `offset` (the world position
  * of the grid-local origin), spacing the lattice's (1 along a flat axis);
- * point arrays "FTLE", "Stretch" (largest, smallest) and vtkValidPointMask
- * (1 where element e is released and shown; 0, with FTLE 0 and Stretch 1,
- * where it is not yet, or its point lies outside the flow). Empty unless the
+ * point arrays "FTLE", "Stretch" (largest, smallest), "Age" and
+ * vtkValidPointMask (1 where element e is released, shown and old enough
+ * for an FTLE, Parameters::ftleMinimumAge; 0, with FTLE 0 and Stretch 1,
+ * where it is not yet, is younger, or its point lies outside the flow).
+ * Empty unless the
  * engine releases on a lattice of as many points as elements.
  *
  * With a `controller` (a distributed run, whose processes each hold some of

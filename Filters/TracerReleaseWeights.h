@@ -6,9 +6,10 @@
  * point, bp::releaseWeightValues) and, in a distributed run, gathered over
  * the whole field so every process draws the same releases.
  *
- * An image or rectilinear grid gives its point array as it is; any other
- * input is resampled first (FieldResampler::setReleaseWeights adds the
- * array to the resampled image, interpolated as the vectors are).
+ * An image or rectilinear grid gives its point array as it is (a cell array
+ * averaged onto its points); any other input is resampled first
+ * (FieldResampler::setReleaseWeights adds the array to the resampled image:
+ * a point array interpolated, a cell array taken per cell).
  */
 #ifndef BoundParticles_TracerReleaseWeights_h
 #define BoundParticles_TracerReleaseWeights_h

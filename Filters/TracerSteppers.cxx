@@ -138,11 +138,11 @@ void TracerSteppers::select(
   {
     this->Queue = FindWorkQueue(outInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()));
   }
-  if (this->Queue && !bp::usesGpuEngine(engine, this->Queue->renderer))
+  if (this->Queue && !bp::usesGpuEngine(engine, this->Queue->report().renderer))
   {
-    if (this->Queue->renderer == bp::RendererKind::Software)
+    if (this->Queue->report().renderer == bp::RendererKind::Software)
     {
-      this->AutomaticCpuOn = this->Queue->rendererName;
+      this->AutomaticCpuOn = this->Queue->report().rendererName;
     }
     this->Queue = nullptr;
   }
@@ -164,19 +164,19 @@ std::string TracerSteppers::fallBackIfTooLarge(
   {
     return std::string();
   }
-  const int maxSize = this->Queue->maxTextureSize;
+  const int maxSize = this->Queue->report().maxTextureSize;
   const std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
   if (limit.empty())
   {
     return std::string();
   }
-  // The display falls back to the CPU result, from this update on.
+  // The display, given a CPU trace for its GPU request, draws the CPU result
+  // until a property changes (vtkBoundParticleRepresentation's CpuAnswer).
   std::string message = limit + "; the CPU engine runs this trace instead.";
   message[0] = char(std::toupper(static_cast<unsigned char>(message[0])));
   this->Queue->clear();
   this->Queue->cursor.valid = false;
-  this->Queue->failure = message;
   this->Queue = nullptr;
   this->Active = &this->Cpu;
   return message;

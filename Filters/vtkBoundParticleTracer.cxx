@@ -91,7 +91,8 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   this->SetNumberOfOutputPorts(2);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
-    // Off by default: the pose arrays (they cost a fit a step).
+    // Off by default (the table's flags): the pose arrays (a fit per element a
+    // step) and the deformation arrays (a fit per element an output).
     this->OutputArraySelection->AddArray(row.name, row.onByDefault);
   }
   // By default the active point vectors (or, failing that, the first

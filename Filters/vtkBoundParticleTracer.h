@@ -2,7 +2,8 @@
 /**
  * @class vtkBoundParticleTracer
  * @brief Traces bound particles (small shapes of particles tied by springs)
- * through a steady or unsteady vector field on a uniform or rectilinear grid.
+ * through a steady or unsteady vector field on any grid or mesh (meshes and
+ * composite data resampled onto a uniform grid first).
  *
  * Each of NumberOfElements elements is an instance of ElementShape, scaled to
  * ElementSize, placed in the emitter box, advected with the flow and restored
@@ -430,7 +431,8 @@ public:
   ///@{
   /**
    * Which point arrays the CPU output carries, by name (the rows of the table
-   * in Core/OutputArrays.cpp; all but the pose arrays by default), as a
+   * in Core/OutputArrays.cpp, whose flags say which are on by default: all
+   * but the pose arrays and the deformation arrays), as a
    * vtkDataArraySelection, the way VTK's readers select theirs. A name the
    * table lacks is refused with a warning. An array left out is not computed,
    * which is what makes a frame of Play cheaper: the field samples behind

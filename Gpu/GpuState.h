@@ -44,6 +44,9 @@ private:
   int Current = 0;
 };
 
+/// Seed points a row of the seed points' list texture (bpSeedPoints).
+constexpr int SeedPointsPerRow = 256;
+
 /**
  * The GPU engine's per-element state, the one list (as
  * Engine::forEachElementArray is the CPU engine's): one RGBA32F texture pair
@@ -66,8 +69,8 @@ enum class ElementTexture
 constexpr int ElementTextureCount = int(ElementTexture::Count);
 
 /// Each row's sampler in the kernels' GLSL (Shaders/), in ElementTexture's order.
-constexpr const char* ElementTextureSamplers[ElementTextureCount] = { "bpElementState",
-  "bpCenters", "bpOrientations", "bpPoses", "bpSpins" };
+constexpr const char* ElementTextureSamplers[ElementTextureCount] = { "bpElementState", "bpCenters",
+  "bpOrientations", "bpPoses", "bpSpins" };
 
 /// The GLSL declarations of the per-element state: a sampler per row, and
 /// with `images` also a write-only image per row, `<sampler>Out` at image

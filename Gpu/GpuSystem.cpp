@@ -21,7 +21,7 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const std::size_t n = this->shape.particleCount();
   const ParticleLayout wanted = ParticleLayout::of(p.numberOfElements, n);
   this->layout = GpuLayout(wanted, p.numberOfElements, n);
-    this->FrameQuaternion = quaternionFromRotation(p.frame);
+  this->FrameQuaternion = quaternionFromRotation(p.frame);
   this->LongAxis = longAxis(this->shape);
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   if (!error.empty())
@@ -51,14 +51,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   this->state.make(this->layout,
     makeLinkTable(p.linking, p.numberOfElements, p.latticeWidth, p.emitterMin, p.emitterMax),
     p.trailLength);
-  // Release centres of a seed source (bp_common.glsl: 256 a row); one texel
+  // Release centres of a seed source (SeedPointsPerRow a row); one texel
   // when there is none, since the reset pass binds it.
   std::vector<float> seeds(4 * std::max<std::size_t>(p.seedPoints.size() / 3, 1), 0.0f);
   for (std::size_t k = 0; k < p.seedPoints.size() / 3; ++k)
   {
     std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
   }
-  this->SeedPoints = makeListTexture(seeds, 256);
+  this->SeedPoints = makeListTexture(seeds, SeedPointsPerRow);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
@@ -157,8 +157,7 @@ void GpuSystem::runFusedStep(double t, double h, float endWeight)
   // Images: the particles', then each per-element row's (GpuState.h's order).
   pass.runGroups(std::size_t((this->layout.elementCount + perGroup - 1) / perGroup),
     { s.particles.next(), s.element(E::State).next(), s.element(E::Centers).next(),
-      s.element(E::Orientations).next(), s.element(E::Poses).next(),
-      s.element(E::Spins).next() });
+      s.element(E::Orientations).next(), s.element(E::Poses).next(), s.element(E::Spins).next() });
   s.particles.flip();
   for (E row : { E::State, E::Centers, E::Orientations, E::Poses })
   {

@@ -96,7 +96,8 @@ private:
   void advectInputs(GpuPass& pass, bool placeOnly, double t, double h) const;
   void jacobiInputs(GpuPass& pass, GLuint positions) const;
   void matchInputs(GpuPass& pass, GLuint positions) const;
-  void testInputs(GpuPass& pass, GLuint positions, bool settleOnly, double h, float endWeight) const;
+  void testInputs(
+    GpuPass& pass, GLuint positions, bool settleOnly, double h, float endWeight) const;
   void finalizeInputs(GpuPass& pass, GLuint restored, bool placed) const;
   void poseInputs(GpuPass& pass, double h, float endWeight) const;
   ///@}
@@ -112,7 +113,7 @@ private:
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::array<float, 3> LongAxis = { 1, 0, 0 }; ///< longAxis() of the template
-  /// parameters.seedPoints, 256 texels a row (one texel when there are none).
+  /// parameters.seedPoints, SeedPointsPerRow texels a row (one texel when there are none).
   GlTexture SeedPoints;
 };
 

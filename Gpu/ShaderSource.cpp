@@ -4,9 +4,11 @@
 #include "ShaderSource.h"
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
+#include "CounterHash.h"
 #include "Engine.h"
 #include "GpuState.h"
 #include "Pose.h"
+#include "ReleaseWeights.h"
 #include "ShapeMatching.h"
 
 #include <algorithm>
@@ -94,6 +96,32 @@ std::string compileShader(
   log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
   return describeShaderLog(log);
 }
+
+/// The hash and the draws of a release (CounterHash.h, EngineParameters.h,
+/// ReleaseWeights.h) and the seed points' row (GpuState.h).
+std::string drawConstantDefinitions()
+{
+  return define("BP_HASH_MULTIPLIER", std::to_string(HashMultiplier) + "u") +
+    define("BP_HASH_INCREMENT", std::to_string(HashIncrement) + "u") +
+    define("BP_ORIENTATION_DRAW", std::to_string(OrientationDraw) + "u") +
+    define("BP_LIFETIME_DRAW", std::to_string(LifetimeDraw) + "u") +
+    define("BP_FURTHER_CANDIDATE_DRAW", std::to_string(FurtherCandidateDraw) + "u") +
+    define("BP_FIRST_WEIGHT_DRAW", std::to_string(FirstWeightDraw) + "u") +
+    define("BP_SEED_ROW", std::to_string(SeedPointsPerRow) + "u");
+}
+
+/// The enums the kernels compare with: one #define per value, from Core's.
+std::string enumDefinitions()
+{
+  const auto value = [](auto e) { return std::to_string(static_cast<int>(e)); };
+  return define("BP_INTEGRATOR_EULER", value(Integrator::Euler)) +
+    define("BP_INTEGRATOR_RK2", value(Integrator::RK2)) +
+    define("BP_INTEGRATOR_RK4", value(Integrator::RK4)) +
+    define("BP_ORIENTATION_FIXED", value(Orientation::Fixed)) +
+    define("BP_ORIENTATION_RANDOM", value(Orientation::Random)) +
+    define("BP_ORIENTATION_ALONG_FLOW", value(Orientation::AlongFlow));
+}
+
 } // namespace
 
 std::string engineConstantDefinitions()
@@ -104,7 +132,8 @@ std::string engineConstantDefinitions()
     define("BP_ROTATION_DAMPING", floatLiteral(RotationDamping)) +
     define("BP_MAX_NEWTON_STEP", floatLiteral(MaxNewtonStep)) +
     define("BP_MIN_VORTICITY_STEP", floatLiteral(MinVorticityStep)) +
-    define("BP_MAX_SPIN_VORTICITY_RATIO", floatLiteral(MaxSpinVorticityRatio));
+    define("BP_MAX_SPIN_VORTICITY_RATIO", floatLiteral(MaxSpinVorticityRatio)) +
+    drawConstantDefinitions() + enumDefinitions();
 }
 
 std::string shaderFileName(int number)
@@ -170,7 +199,8 @@ std::string describeShaderLog(const std::string& log)
 namespace
 {
 /// Links `shaders` (deleted after) into `out`; empty on success, otherwise the log.
-std::string linkProgram(const std::string& name, std::initializer_list<GLuint> shaders, GlProgram& out)
+std::string linkProgram(
+  const std::string& name, std::initializer_list<GLuint> shaders, GlProgram& out)
 {
   // Owned before linking, so a program that fails to link is deleted with the rest.
   out = GlProgram(glCreateProgram());
@@ -209,7 +239,8 @@ std::string buildProgram(GpuPath path, const std::string& name, const std::strin
   if (path == GpuPath::Fragment)
   {
     error = compileShader(GL_VERTEX_SHADER,
-      assembleShader(path, std::string(), { { bpShaderFullscreenVertNumber, bpShaderFullscreenVert } }),
+      assembleShader(
+        path, std::string(), { { bpShaderFullscreenVertNumber, bpShaderFullscreenVert } }),
       "bp_fullscreen.vert", vs);
   }
   if (error.empty())

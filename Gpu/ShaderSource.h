@@ -45,7 +45,9 @@ struct ShaderPiece
 };
 
 /// "#define BP_RELEASE_TRIES 64" and so on, one line per constant the
-/// shaders share with Core/ (Engine.h, ShapeMatching.h, Pose.h), written from
+/// shaders share with Core/ (Engine.h, ShapeMatching.h, Pose.h, the hash and
+/// the draws of a release, the enums the kernels compare with) and with the
+/// GPU engine's texture layout (the seed points' row), written from
 /// the C++ values so the two cannot drift; floats in the fewest digits that
 /// read back as the same float.
 std::string engineConstantDefinitions();

@@ -4,6 +4,7 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "OutputArrays.h"
+#include "ShaderSource.h"
 
 #include "vtkShaderProgram.h"
 
@@ -41,7 +42,9 @@ void spliceDrawCode(ShaderMap& shaders)
   vtkShaderProgram::Substitute(
     gs, "//BP::Color::Impl", "bpScalarGSOutput = bpScalarVSOutput[i];", false);
   shaders[vtkShader::Geometry]->SetSource(gs);
-  const std::string colorModes = bp::colorSourceDefinitions();
+  // The colour sources and the engine's constants (bp_shared.glsl's hash
+  // and draws) as #defines, ahead of the draw's declarations.
+  const std::string colorModes = bp::colorSourceDefinitions() + bp::engineConstantDefinitions();
   vtkShaderProgram::Substitute(vs, "vertexMC", "bpVertexMC", true);
   vtkShaderProgram::Substitute(vs, "normalMC", "bpNormalMC", true);
   vtkShaderProgram::Substitute(

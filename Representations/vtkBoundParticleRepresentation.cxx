@@ -83,12 +83,13 @@ namespace
 void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
 {
   vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
-  if (queue.renderer != bp::RendererKind::Unknown || !window || window->GetNeverRendered())
+  bp::RendererReport& report = queue.reportFromDisplay();
+  if (report.renderer != bp::RendererKind::Unknown || !window || window->GetNeverRendered())
   {
     return;
   }
-  const char* report = window->ReportCapabilities();
-  const std::string text = report ? report : "";
+  const char* capabilities = window->ReportCapabilities();
+  const std::string text = capabilities ? capabilities : "";
   const std::string key = "OpenGL renderer string:";
   const std::size_t at = text.find(key);
   if (at == std::string::npos)
@@ -97,8 +98,8 @@ void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
   }
   const std::size_t first = text.find_first_not_of(" \t", at + key.size());
   const std::size_t end = text.find('\n', at);
-  queue.rendererName = first < end ? text.substr(first, end - first) : std::string();
-  queue.renderer = bp::rendererKind(queue.rendererName);
+  report.rendererName = first < end ? text.substr(first, end - first) : std::string();
+  report.renderer = bp::rendererKind(report.rendererName);
 }
 } // namespace
 
@@ -258,7 +259,8 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   {
     pipelineTime = executive->GetPipelineMTime();
   }
-  if (!I.Queue->failure.empty())
+  bp::RendererReport& report = I.Queue->reportFromDisplay();
+  if (!report.failure.empty())
   {
     if (!I.GpuFailed)
     {
@@ -269,21 +271,21 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
     {
       // The user changed something: try the GPU again.
       I.GpuFailed = false;
-      I.Queue->failure.clear();
+      report.failure.clear();
     }
   }
   if (I.CpuAnswer &&
-    (pipelineTime != I.CpuAnswerPipelineTime || I.Queue->renderer != I.CpuAnswerRenderer))
+    (pipelineTime != I.CpuAnswerPipelineTime || report.renderer != I.CpuAnswerRenderer))
   {
     // A property changed, or Automatic now knows the renderer: ask again.
     I.CpuAnswer = false;
   }
   I.RequestPipelineTime = pipelineTime;
-  I.Queue->streamTimeSteps = I.StreamTimeSteps;
+  report.streamTimeSteps = I.StreamTimeSteps;
   if (I.TextureSizeLimit > 0)
   {
-    I.Queue->maxTextureSize = I.Queue->maxTextureSize > 0
-      ? std::min(I.Queue->maxTextureSize, I.TextureSizeLimit)
+    report.maxTextureSize = report.maxTextureSize > 0
+      ? std::min(report.maxTextureSize, I.TextureSizeLimit)
       : I.TextureSizeLimit;
   }
   // The GPU engine's state lives in the GL context that draws it, so it runs
@@ -332,7 +334,7 @@ int vtkBoundParticleRepresentation::RequestData(
       {
         I.CpuAnswer = true;
         I.CpuAnswerPipelineTime = I.RequestPipelineTime;
-        I.CpuAnswerRenderer = I.Queue->renderer;
+        I.CpuAnswerRenderer = I.Queue->report().renderer;
       }
       if (I.Gpu)
       {
@@ -367,8 +369,8 @@ int vtkBoundParticleRepresentation::RequestData(
     // The render runs the recorded work and reports its progress from 0 to
     // 1: this update's own end (the executive's 1 after RequestData) would
     // make an observer see 0, 1, then the run's 0.03 ... 1. It reports 0 instead.
-    const bool runFollows = I.Gpu && I.Queue->hasPending() &&
-      vtkOpenGLBoundParticleMapper::ReportsReplayProgress();
+    const bool runFollows =
+      I.Gpu && I.Queue->hasPending() && vtkOpenGLBoundParticleMapper::ReportsReplayProgress();
     this->SetProgressShiftScale(0.0, runFollows ? 0.0 : 1.0);
     if (runFollows)
     {
@@ -432,6 +434,16 @@ void vtkBoundParticleRepresentation::SetGpuTextureSizeLimit(int texels)
 {
   this->Internals->TextureSizeLimit = texels;
   this->Internals->GpuMapper->SetTextureSizeLimit(texels);
+}
+
+int vtkBoundParticleRepresentation::GetGpuTextureSizeLimit() const
+{
+  return this->Internals->TextureSizeLimit;
+}
+
+bool vtkBoundParticleRepresentation::GetStreamTimeSteps() const
+{
+  return this->Internals->StreamTimeSteps;
 }
 
 bool vtkBoundParticleRepresentation::FadesTrails(vtkPolyData* piece)

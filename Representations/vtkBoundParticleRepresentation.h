@@ -88,14 +88,19 @@ public:
   void SetInterpolateScalarsBeforeMapping(int value);
   ///@}
 
-  /// For tests: caps the GPU engine's textures below GL_MAX_TEXTURE_SIZE.
+  ///@{
+  /// For tests: caps the GPU engine's textures below GL_MAX_TEXTURE_SIZE
+  /// (0, the default: no cap).
   void SetGpuTextureSizeLimit(int texels);
+  int GetGpuTextureSizeLimit() const;
+  ///@}
 
   /// With the GPU engine and an unsteady field: read the next time step
   /// ahead of need and upload it a slab of z layers per frame (on, the
   /// default), or upload each time step whole in the frame that first needs
   /// it (off).
   void SetStreamTimeSteps(bool stream);
+  bool GetStreamTimeSteps() const;
 
 protected:
   vtkBoundParticleRepresentation();

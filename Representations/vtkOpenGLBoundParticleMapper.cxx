@@ -372,7 +372,7 @@ void vtkOpenGLBoundParticleMapper::MeasureRate(
   const double seconds = std::chrono::duration<double>(took).count();
   if (seconds > 0.0)
   {
-    I.Queue->particleStepsPerSecond = double(steps) * I.Particles / seconds;
+    I.Queue->reportFromDisplay().particleStepsPerSecond = double(steps) * I.Particles / seconds;
   }
 }
 
@@ -401,7 +401,7 @@ void vtkOpenGLBoundParticleMapper::Fail(const std::string& message)
   I.Replay.fail();
   I.LastError = message;
   vtkErrorMacro(<< message);
-  I.Queue->failure = message;
+  I.Queue->reportFromDisplay().failure = message;
 }
 
 void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
@@ -419,7 +419,8 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   window->MakeCurrent();
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  I.Queue->maxTextureSize = I.SizeLimit > 0 ? std::min<int>(maxSize, I.SizeLimit) : maxSize;
+  I.Queue->reportFromDisplay().maxTextureSize =
+    I.SizeLimit > 0 ? std::min<int>(maxSize, I.SizeLimit) : maxSize;
 
   std::vector<bp::EngineCall> calls = I.Queue->take();
   vtkAlgorithm* owner = this->GetContainerAlgorithm();
@@ -452,7 +453,7 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
 void vtkOpenGLBoundParticleMapper::PrepareEngineTextures()
 {
   vtkInternals& I = *this->Internals;
-  if (I.Queue->streamTimeSteps && I.Queue->upcoming.velocity)
+  if (I.Queue->report().streamTimeSteps && I.Queue->upcoming.velocity)
   {
     // Upload the next time step a slab at a time, within a small time
     // budget per frame, so the frame that crosses into it does not stall.
@@ -561,7 +562,8 @@ void vtkOpenGLBoundParticleMapper::UploadTables(vtkOpenGLRenderWindow* window)
 {
   // Nothing about them changes while the engine steps: once per configuration.
   vtkInternals& I = *this->Internals;
-  const int maxSize = I.Queue->maxTextureSize > 0 ? I.Queue->maxTextureSize : 4096;
+  const int reported = I.Queue->report().maxTextureSize;
+  const int maxSize = reported > 0 ? reported : 4096;
   const std::size_t links = I.LinkTable.texelCount();
   if (!I.LinkTable.upload(window, maxSize))
   {

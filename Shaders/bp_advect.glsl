@@ -1,6 +1,6 @@
 // Step 2, per particle: the particle's position before the step (placed anew
 // for elements reset in this step) and after advection (Engine::advectParticle).
-uniform int bpIntegrator; // 0 Euler, 1 RK2 (midpoint), 2 RK4
+uniform int bpIntegrator; // BP_INTEGRATOR_EULER, _RK2 (midpoint) or _RK4
 uniform vec3 bpWeights;   // second-slice weights at t, t + h/2, t + h
 uniform bool bpPlaceOnly;
 
@@ -8,11 +8,11 @@ vec3 bpIntegrate(vec3 p)
 {
   float h = bpStep;
   vec3 k1 = bpSample(p, bpWeights.x);
-  if (bpIntegrator == 0)
+  if (bpIntegrator == BP_INTEGRATOR_EULER)
   {
     return p + h * k1;
   }
-  if (bpIntegrator == 1)
+  if (bpIntegrator == BP_INTEGRATOR_RK2)
   {
     vec3 k2 = bpSample(p + 0.5 * h * k1, bpWeights.y);
     return p + h * k2;

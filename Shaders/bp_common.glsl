@@ -41,7 +41,7 @@ uniform sampler2D bpLatticeSites; // per element: the lattice site
 // box [lo, hi].
 vec3 bpCandidateIn(int e, float generation, int k, vec3 lo, vec3 hi)
 {
-  uint d = k == 0 ? 0u : uint(8 + 3 * (k - 1));
+  uint d = k == 0 ? 0u : BP_FURTHER_CANDIDATE_DRAW + uint(3 * (k - 1));
   vec3 u = vec3(bpDraw(e, generation, d), bpDraw(e, generation, d + 1u),
     bpDraw(e, generation, d + 2u));
   return lo + u * (hi - lo);
@@ -119,7 +119,7 @@ vec3 bpWeightedCenter(int e, float generation)
     }
     float w = bpSampleSlice(bpReleaseWeights, c).x;
     // The acceptance draw weightDraw(k), after every candidate's (as bpCandidate's).
-    if (bpDraw(e, generation, uint(200 + k)) * bpWeightMax < w)
+    if (bpDraw(e, generation, BP_FIRST_WEIGHT_DRAW + uint(k)) * bpWeightMax < w)
     {
       return c;
     }
@@ -144,11 +144,11 @@ vec3 bpCenterOf(int e, float generation)
     // exact. A seed point that does not fit gives way to the next ones.
     uint S = uint(bpSeedCount);
     uint r = ((uint(generation) % S) * (uint(bpElements) % S) + uint(e) % S) % S;
-    vec3 c = texelFetch(bpSeedPoints, ivec2(int(r % 256u), int(r / 256u)), 0).xyz;
+    vec3 c = texelFetch(bpSeedPoints, ivec2(int(r % BP_SEED_ROW), int(r / BP_SEED_ROW)), 0).xyz;
     for (int k = 1; k < BP_RELEASE_TRIES && !bpSeedFits(c); ++k)
     {
       uint q = (r + uint(k)) % S;
-      c = texelFetch(bpSeedPoints, ivec2(int(q % 256u), int(q / 256u)), 0).xyz;
+      c = texelFetch(bpSeedPoints, ivec2(int(q % BP_SEED_ROW), int(q / BP_SEED_ROW)), 0).xyz;
     }
     return c;
   }
@@ -201,7 +201,7 @@ vec4 bpQuaternionProduct(vec4 a, vec4 b)
 vec3 bpPlace(vec3 c, vec4 q, vec3 rest)
 {
   vec3 r0 = bpFrameRow0, r1 = bpFrameRow1, r2 = bpFrameRow2;
-  if (bpOrientation != 0)
+  if (bpOrientation != BP_ORIENTATION_FIXED)
   {
     // The reset pass's quaternion as a matrix.
     bpQuaternionRows(q, r0, r1, r2);

@@ -53,21 +53,21 @@ vec4 bpAlongFlowQuaternion(vec3 v)
 // The orientation of element e placed as `generation` at `center`.
 vec4 bpPlacedOrientation(int e, float generation, vec3 center)
 {
-  if (bpOrientation == 1 && bpPlaneAxis >= 0)
+  if (bpOrientation == BP_ORIENTATION_RANDOM && bpPlaneAxis >= 0)
   {
     // A turn about the flat field's axis after the frame (inPlaneQuaternion).
-    float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, 3u);
+    float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, BP_ORIENTATION_DRAW);
     vec4 r = vec4(0.0, 0.0, 0.0, cos(turn)); // half the angle
     r[bpPlaneAxis] = sin(turn);
     return bpQuaternionProduct(r, bpFrameQuaternion);
   }
-  if (bpOrientation == 1)
+  if (bpOrientation == BP_ORIENTATION_RANDOM)
   {
     // Shoemake's quaternion (quaternionFromUniforms).
     int d = bpDrawElement(e);
-    float u1 = bpDraw(d, generation, 3u);
-    float u2 = bpDraw(d, generation, 4u);
-    float u3 = bpDraw(d, generation, 5u);
+    float u1 = bpDraw(d, generation, BP_ORIENTATION_DRAW);
+    float u2 = bpDraw(d, generation, BP_ORIENTATION_DRAW + 1u);
+    float u3 = bpDraw(d, generation, BP_ORIENTATION_DRAW + 2u);
     float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
     float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
     return vec4(s1 * sin(a), s1 * cos(a), s2 * sin(b), s2 * cos(b));

@@ -50,7 +50,7 @@ vec3 bpNormalOfSum(vec3 sum)
 // ---- Counter-based random numbers (Core/CounterHash.h) ----------------------
 uint bpHash(uint seed, uint element, uint generation, uint draw)
 {
-  uvec4 v = uvec4(seed, element, generation, draw) * 1664525u + 1013904223u;
+  uvec4 v = uvec4(seed, element, generation, draw) * BP_HASH_MULTIPLIER + BP_HASH_INCREMENT;
   v.x += v.y * v.w;
   v.y += v.z * v.x;
   v.z += v.x * v.y;
@@ -89,5 +89,6 @@ int bpDrawElement(int e)
 float bpLifetimeOf(int e, float generation)
 {
   return bpLifetimeMin +
-    bpDraw(bpLattice ? 0 : bpDrawElement(e), generation, 6u) * (bpLifetimeMax - bpLifetimeMin);
+    bpDraw(bpLattice ? 0 : bpDrawElement(e), generation, BP_LIFETIME_DRAW) *
+      (bpLifetimeMax - bpLifetimeMin);
 }

@@ -4,7 +4,10 @@
 # ParaView's Particle Tracer against the Bound Particle Tracer on one job, and
 # what a frame of Play costs inside ParaView (both engines and displays), the
 # first frame and Play on a ~1 M-cell unstructured mesh, and steps per second
-# under pvbatch with 1, 2 and 4 MPI ranks.
+# under pvbatch with 1, 2 and 4 MPI ranks, the defaults on the shared real data
+# and ParaView's mesh readers, GPU streaming and the SMP loops: every table
+# docs/performance.md quotes but the real GPU's (bench/real_gpu.sh, on a GPU
+# machine) and the state digests (bench/state_digest.cpp: a check, not a timing).
 # Options after the folder go to the benchmark (--quick, --no-gpu, --resolution N).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -56,4 +59,15 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/insitu_steps.py" \
   --plugin "$plugin" | tee "$out/insitu_steps.txt"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
 bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
-echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/insitu_steps.txt"
+# The defaults straight on ParaView's mesh readers (times and element counts).
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/mesh_data.py" \
+  --plugin "$plugin" --data "$root/../shared/data" | tee "$out/mesh_data.txt"
+# An unsteady field's time steps going by on the GPU engine: uploaded whole or
+# streamed in slabs, in the engine alone and in the Bound Particles display.
+"$build/bin/BoundParticlesStreamingBench" --resolution 160 | tee "$out/streaming.txt"
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/stream_frames.py" \
+  --plugin "$plugin" | tee "$out/stream_frames.txt"
+# The tracer's loops on the plugin's thread pool against vtkSMPTools.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/smp_loops.py" \
+  --plugin "$plugin" | tee "$out/smp_loops.txt, $out/insitu_steps.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt, $out/insitu_steps.txt"

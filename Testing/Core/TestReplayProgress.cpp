@@ -185,8 +185,8 @@ TEST(ReplayProgress, TheQueueContinuesFromWhereTheRunStopped)
 TEST(ReplayProgress, ALongRunIsSaidBeforeItIsRecorded)
 {
   bp::WorkQueue queue(1);
-  queue.renderer = bp::RendererKind::Software;
-  queue.rendererName = "llvmpipe";
+  queue.reportFromDisplay().renderer = bp::RendererKind::Software;
+  queue.reportFromDisplay().rendererName = "llvmpipe";
   // A frame's few steps: nothing to say.
   EXPECT_TRUE(bp::longReplayNote(4, 16000, 0.0, 0.1, queue).empty());
   // 2,000 steps of 160,000 particles at llvmpipe's assumed rate: 16 s.
@@ -195,11 +195,11 @@ TEST(ReplayProgress, ALongRunIsSaidBeforeItIsRecorded)
   EXPECT_NE(slow.find("about 16 s on a software renderer (llvmpipe)"), std::string::npos) << slow;
   EXPECT_NE(slow.find("Number Of Elements"), std::string::npos) << slow;
   // The same on a GPU whose measured rate is 1e10: 0.03 s, nothing said.
-  queue.renderer = bp::RendererKind::Hardware;
-  queue.particleStepsPerSecond = 1.0e10;
+  queue.reportFromDisplay().renderer = bp::RendererKind::Hardware;
+  queue.reportFromDisplay().particleStepsPerSecond = 1.0e10;
   EXPECT_TRUE(bp::longReplayNote(2000, 160000, 0.0, 50.0, queue).empty());
   // A measured rate is what the note quotes.
-  queue.particleStepsPerSecond = 1.0e7;
+  queue.reportFromDisplay().particleStepsPerSecond = 1.0e7;
   const std::string measured = bp::longReplayNote(2000, 160000, 0.0, 50.0, queue);
   EXPECT_NE(measured.find("about 32 s at the rate it last ran at"), std::string::npos) << measured;
 }

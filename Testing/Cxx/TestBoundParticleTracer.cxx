@@ -2,6 +2,7 @@
 #include "vtkAnalyticFlowSource.h"
 #include "vtkBoundParticleTracer.h"
 
+#include "ElementTemplate.h"
 #include "OutputArrays.h"
 
 #include "vtkCallbackCommand.h"
@@ -740,14 +741,12 @@ TEST(BoundParticleTracer, BuiltinElementFilesTraceLikeTheBuiltins)
 {
   // Elements/<Shape>.vtp, loaded as the Element Template, is the built-in shape.
   auto source = flow(vtkAnalyticFlowSource::HURRICANE, 16);
-  const char* names[] = { "Point", "Square", "Strip4", "Strip8", "Strip16", "Cross", "Paddlewheel",
-    "Tetrahedron", "Fish" };
-  for (int shape = 0; shape < 9; ++shape)
+  for (int shape = 0; shape < bp::BuiltinShapeCount; ++shape)
   {
-    SCOPED_TRACE(names[shape]);
+    const char* name = bp::builtinShapeName(bp::BuiltinShape(shape));
+    SCOPED_TRACE(name);
     vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(
-      (std::string(BOUNDPARTICLES_ELEMENTS_DIR) + "/" + names[shape] + ".vtp").c_str());
+    reader->SetFileName((std::string(BOUNDPARTICLES_ELEMENTS_DIR) + "/" + name + ".vtp").c_str());
     auto fromFile = tracerOn(source, 30);
     fromFile->SetTemplateConnection(reader->GetOutputPort());
     fromFile->SetElementSize(0.2);

@@ -3,6 +3,7 @@
 # where it was released over the first steps of the time line, then sets
 # Anchor = None and checks that the elements drift with the shear layer.
 # Only when both hold does it set Coloring Axis to X, which anchor.xml checks.
+import gui_check
 from paraview import servermanager
 from paraview.simple import FindSource
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -23,10 +24,15 @@ def moved():
     return max(float(abs(centres(t) - first).max()) for t in times[1:4])
 
 
-held = tracer.Anchor == "Centre" and moved() < 1e-5
-print("check_anchor: anchored centres held:", held)
-tracer.Anchor = "None"
-drift = moved()
-print("check_anchor: free centres drift by up to", drift)
-if held and drift > 1e-3:
-    tracer.ColoringAxis = "X"
+def check():
+    anchored = tracer.Anchor == "Centre"  # now: the property reads live
+    held = moved()
+    tracer.Anchor = "None"
+    drift = moved()
+    found = {"anchored at centres": anchored, "anchored centres held": held < 1e-5,
+             "free centres drift": drift > 1e-3}
+    if gui_check.passed("check_anchor", found, {"anchored move": held, "free drift": drift}):
+        tracer.ColoringAxis = "X"
+
+
+gui_check.run("check_anchor", check)

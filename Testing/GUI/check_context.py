@@ -8,12 +8,11 @@
 # surface: when the mesh is shown as its outline (not hidden, not covering
 # the elements), sets the third tracer's Number Of Elements to 997.
 # defaults.xml checks the count each time; what failed is printed.
-import os
-import traceback
-
+import gui_check
 from paraview.simple import FindSource, GetActiveView, GetDisplayProperties
 
-try:
+
+def check():
     view = GetActiveView()
     mesh = FindSource("Tetrahedralize1")
     if mesh is None:
@@ -36,9 +35,9 @@ try:
             "mesh as its outline": shown.Representation == "Outline" and shown.Visibility == 1,
             "elements shown": GetDisplayProperties(tracer, view).Visibility == 1,
         }
-    os.write(2, ("check_context: %s\n" % found).encode())  # the terminal, not the shell
-    if all(found.values()):
+    if gui_check.passed("check_context", found):
         # Number Of Elements, as check_defaults.py says why.
         tracer.NumberOfElements = 997 if mesh is not None else 998
-except Exception:  # said in the terminal, where the test's log has it
-    os.write(2, traceback.format_exc().encode())
+
+
+gui_check.run("check_context", check)

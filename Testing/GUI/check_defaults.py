@@ -3,8 +3,7 @@
 # the tracer's display is coloured by Speed and its FTLE Map (port 1, empty
 # for a random release) has no display in the view, sets the tracer's Number
 # Of Elements to 999, which defaults.xml then checks; what failed is printed.
-import os
-
+import gui_check
 from paraview.simple import FindSource, GetActiveView, GetDisplayProperties
 
 view = GetActiveView()
@@ -23,8 +22,7 @@ found = {
     "coloured by Speed": list(elements.ColorArrayName) == ["POINTS", "Speed"],
     "FTLE map not shown": shown_ports == [0],
 }
-os.write(2, ("check_defaults: %s\n" % found).encode())  # the terminal, not the shell
-if all(found.values()):
+if gui_check.passed("check_defaults", found, {"ports shown": shown_ports}):
     # Number Of Elements, not Coloring Axis as the other checks: ParaView
     # 5.13's panel kept that combo box at Z here though the property held X.
     tracer.NumberOfElements = 999

@@ -5,8 +5,7 @@
 #     over a range beyond 1e5;
 #  Y: then with 'velocity': the colour map rescaled to its speed (below 10);
 #  Z: then with Engine GPU: the display moved to Bound Particles.
-import os
-
+import gui_check
 from paraview.simple import (FindSource, GetActiveView, GetColorTransferFunction,
                              GetDisplayProperties)
 
@@ -14,14 +13,19 @@ tracer = FindSource("BoundParticleTracer1")
 display = GetDisplayProperties(tracer, GetActiveView())
 top = GetColorTransferFunction("Speed").RGBPoints[-4]
 vectors = tracer.Vectors[1]
-found = {"vectors": vectors, "engine": tracer.Engine, "representation": display.Representation,
-         "colour": list(display.ColorArrayName), "top of the colour map": top}
-os.write(2, ("check_displays: %s\n" % found).encode())  # the terminal, not the shell
+seen = {"vectors": vectors, "engine": tracer.Engine, "representation": display.Representation,
+        "colour": list(display.ColorArrayName), "top of the colour map": top}
 coloured = list(display.ColorArrayName) == ["POINTS", "Speed"]
 if tracer.Engine == "GPU":
-    if display.Representation == "Bound Particles":
-        tracer.ColoringAxis = 2
-elif vectors == "fast" and coloured and top > 1e5 and display.Representation == "Surface":
-    tracer.ColoringAxis = 0
-elif vectors == "velocity" and coloured and top < 10:
-    tracer.ColoringAxis = 1
+    found = {"GPU engine in Bound Particles": display.Representation == "Bound Particles"}
+    axis = 2
+elif vectors == "fast":
+    found = {"coloured by Speed": coloured, "colour map rescaled up": top > 1e5,
+             "Surface kept": display.Representation == "Surface"}
+    axis = 0
+else:
+    found = {"vectors velocity": vectors == "velocity", "coloured by Speed": coloured,
+             "colour map rescaled down": top < 10}
+    axis = 1
+if gui_check.passed("check_displays", found, seen):
+    tracer.ColoringAxis = axis

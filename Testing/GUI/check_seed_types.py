@@ -4,6 +4,7 @@
 # after the Line, Y after the Point Cloud), which seeds.xml then checks.
 import numpy
 
+import gui_check
 from paraview import servermanager
 from paraview.simple import FindSource
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -18,19 +19,23 @@ ids = vtk_to_numpy(data.GetPointData().GetArray("ElementId"))
 # mean is its seed point (releases take the seeds in order).
 centres = numpy.array([points[ids == e].mean(axis=0) for e in range(50)])
 kind = seeds.GetXMLLabel()
-if kind == "Line" and len(numpy.unique(ids)) == 50:
-    typed = (list(seeds.Point1) == [-0.5, 0.0, 0.25] and list(seeds.Point2) == [0.5, 0.0, 0.25]
-             and seeds.Resolution == 49)
+found = {"50 elements": len(numpy.unique(ids)) == 50}
+if kind == "Line":
+    found["line as typed"] = (list(seeds.Point1) == [-0.5, 0.0, 0.25]
+                              and list(seeds.Point2) == [0.5, 0.0, 0.25]
+                              and seeds.Resolution == 49)
     expected = numpy.linspace([-0.5, 0.0, 0.25], [0.5, 0.0, 0.25], 50)
-    if typed and abs(centres - expected).max() < 1e-4:
-        tracer.ColoringAxis = 0
-elif kind == "Point Cloud" and len(numpy.unique(ids)) == 50:
-    typed = (list(seeds.Center) == [0.25, 0.0, 0.0] and seeds.Radius == 0.3
-             and seeds.NumberOfPoints == 60)
+    found["centres on the line's points"] = abs(centres - expected).max() < 1e-4
+    axis = 0
+else:
+    found["point cloud as typed"] = (kind == "Point Cloud"
+                                     and list(seeds.Center) == [0.25, 0.0, 0.0]
+                                     and seeds.Radius == 0.3 and seeds.NumberOfPoints == 60)
     distance = numpy.linalg.norm(centres - [0.25, 0.0, 0.0], axis=1)
     # Inside the sphere, spread through it (not all at its centre), and
     # every element at a point of its own.
-    inside = distance.max() <= 0.3 + 1e-4 and distance.max() > 0.15
-    distinct = len(numpy.unique(centres.round(6), axis=0)) == 50
-    if typed and inside and distinct:
-        tracer.ColoringAxis = 1
+    found["inside the sphere, spread"] = distance.max() <= 0.3 + 1e-4 and distance.max() > 0.15
+    found["a point each"] = len(numpy.unique(centres.round(6), axis=0)) == 50
+    axis = 1
+if gui_check.passed("check_seed_types", found, {"seed type": kind}):
+    tracer.ColoringAxis = axis

@@ -3,8 +3,11 @@
 // the file and line through the path every pass takes, and the constants the
 // shaders get from Core/ read back as the C++ values.
 #include "BoundParticlesShaders.h"
+#include "CounterHash.h"
 #include "Engine.h"
+#include "GpuState.h"
 #include "Pose.h"
+#include "ReleaseWeights.h"
 #include "ShaderSource.h"
 #include "ShapeMatching.h"
 #include "SharedContext.h"
@@ -116,12 +119,34 @@ TEST(ShaderSource, ConstantsReadBackAsTheCoreValues)
   EXPECT_EQ(readFloat(d["BP_MAX_NEWTON_STEP"]), bp::MaxNewtonStep);
   EXPECT_EQ(readFloat(d["BP_MIN_VORTICITY_STEP"]), bp::MinVorticityStep);
   EXPECT_EQ(readFloat(d["BP_MAX_SPIN_VORTICITY_RATIO"]), bp::MaxSpinVorticityRatio);
-  for (const auto& value : d)
+  for (const char* name : { "BP_ROTATION_DAMPING", "BP_MAX_NEWTON_STEP", "BP_MIN_VORTICITY_STEP",
+         "BP_MAX_SPIN_VORTICITY_RATIO" })
   {
     // GLSL reads "2" as an int: a float constant needs its point.
-    if (value.first.find("ITERATIONS") == std::string::npos && value.first != "BP_RELEASE_TRIES")
-    {
-      EXPECT_NE(value.second.find_first_of(".e"), std::string::npos) << value.first;
-    }
+    EXPECT_NE(d[name].find_first_of(".e"), std::string::npos) << name;
+  }
+  // The hash and the draws are unsigned in GLSL, as in counterHash.
+  EXPECT_EQ(d["BP_HASH_MULTIPLIER"], std::to_string(bp::HashMultiplier) + "u");
+  EXPECT_EQ(d["BP_HASH_INCREMENT"], std::to_string(bp::HashIncrement) + "u");
+  EXPECT_EQ(d["BP_ORIENTATION_DRAW"], std::to_string(bp::OrientationDraw) + "u");
+  EXPECT_EQ(d["BP_LIFETIME_DRAW"], std::to_string(bp::LifetimeDraw) + "u");
+  EXPECT_EQ(d["BP_FURTHER_CANDIDATE_DRAW"], std::to_string(bp::FurtherCandidateDraw) + "u");
+  EXPECT_EQ(d["BP_FIRST_WEIGHT_DRAW"], std::to_string(bp::FirstWeightDraw) + "u");
+  EXPECT_EQ(d["BP_SEED_ROW"], std::to_string(bp::SeedPointsPerRow) + "u");
+  EXPECT_EQ(d["BP_INTEGRATOR_RK4"], std::to_string(int(bp::Integrator::RK4)));
+  EXPECT_EQ(d["BP_ORIENTATION_ALONG_FLOW"], std::to_string(int(bp::Orientation::AlongFlow)));
+}
+
+TEST(ShaderSource, KernelsNameTheSharedConstantsNotTheirValues)
+{
+  // A number the shaders share with C++ reaches them as a #define; a literal
+  // copy in a kernel would drift from Core's unseen.
+  for (const char* text : { bpShaderShared, bpShaderCommon, bpShaderReset, bpShaderAdvect })
+  {
+    const std::string source = text;
+    EXPECT_EQ(source.find("1664525"), std::string::npos);
+    EXPECT_EQ(source.find("bpIntegrator == 0"), std::string::npos);
+    EXPECT_EQ(source.find("bpOrientation == 1"), std::string::npos);
+    EXPECT_EQ(source.find("% 256u"), std::string::npos);
   }
 }

@@ -184,9 +184,8 @@ def placement_traces():
 
 def ftle_trace():
     """Spring-free crosses on a 40 x 20 lattice over the double gyre, with
-    ElementFTLE and ElementStretch: Release Pattern = Lattice where the tracer
-    has it (the FTLE map, port 1, is then gathered on process 0), else seed
-    points at the lattice's points."""
+    ElementFTLE and ElementStretch: Release Pattern = Lattice (the FTLE map,
+    port 1, is then gathered on process 0)."""
     gyre = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[64, 32, 2],
                                 Bounds=[0, 2, 0, 1, -0.01, 0.01], NumberOfTimeSteps=5))
     tracer = BoundParticleTracer(Input=gyre, ElementShape="Cross", RestorationIterations=0,
@@ -195,14 +194,9 @@ def ftle_trace():
                                  StepSizeUnit="Time", StepSize=0.05, FramesPerInputStep=1,
                                  LifetimeRange=[10, 10], MinimumReleaseSpeed=0.0)
     tracer.OutputArrays = list(tracer.OutputArrays) + ["ElementFTLE", "ElementStretch"]
-    if "ReleasePattern" in tracer.ListProperties():
-        tracer.ReleasePattern = "Lattice"
-        tracer.EmitterCenter = [1.0, 0.5, 0.0]
-        tracer.EmitterSize = [2.0, 1.0, 0.0]
-    else:
-        x, y = numpy.meshgrid((numpy.arange(40) + 0.5) / 20.0, (numpy.arange(20) + 0.5) / 20.0)
-        points = numpy.column_stack([x.ravel(), y.ravel(), numpy.zeros(x.size)])
-        tracer.SeedSource = PolyLineSource(Points=list(points.ravel()))
+    tracer.ReleasePattern = "Lattice"
+    tracer.EmitterCenter = [1.0, 0.5, 0.0]
+    tracer.EmitterSize = [2.0, 1.0, 0.0]
     return tracer
 
 

@@ -1,0 +1,363 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The ServerManager XML and the VTK classes cannot disagree: every property
+// the XML hands to a VTK setter (command="SetX") starts at the default the
+// class itself starts with (GetX), read through the plugin's ClientServer
+// wrapping, as ParaView calls the class; every enumeration's values are
+// valid, distinct and its default among them. A property whose setter has no
+// getter must be listed below with the reason. An enumeration's setter
+// keeps each value the XML offers and none past them; a numeric setter keeps
+// both ends of the range the XML's panel offers. The test reads the XML where
+// it is written (Plugin/), so that an edit is checked without a new build.
+#include "vtkClientServerInterpreter.h"
+#include "vtkClientServerStream.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLUtilities.h"
+
+#include "AnalyticFlows.h"
+#include "ElementTemplate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern "C" void BoundParticlesFiltersCS_Initialize(vtkClientServerInterpreter*);
+extern "C" void BoundParticlesIOCS_Initialize(vtkClientServerInterpreter*);
+extern "C" void BoundParticlesRepresentationsCS_Initialize(vtkClientServerInterpreter*);
+
+namespace
+{
+/// Setters with no getter to compare, and why.
+const std::map<std::string, std::string> NoGetter = {
+  { "SetInputConnection", "a pipeline connection, not a value" },
+  { "SetInputArrayToProcess", "the array picked by the Vectors and Release Weights domains" },
+  { "SetOutputArrayStatus", "a selection, defaulted from the output table (TestTracerOutput)" },
+  { "SetSeedType", "a proxy, not a value" },
+  { "SetFileName", "a file, no default" },
+  { "SetFileNames", "files, no default" },
+};
+
+/// The display's setters that hand their value straight to its actor or
+/// property, as ParaView's own geometry representation does: VTK's defaults
+/// there, no getter on the representation.
+const std::set<std::string> ForwardedByTheDisplay = { "SetVisibility", "SetMapScalars",
+  "SetInterpolateScalarsBeforeMapping", "SetAmbientColor", "SetDiffuseColor", "SetSpecularColor",
+  "SetOpacity", "SetAmbient", "SetDiffuse", "SetSpecular", "SetSpecularPower", "SetInterpolation",
+  "SetPointSize", "SetLineWidth", "SetPosition", "SetScale", "SetOrientation", "SetOrigin",
+  "SetUserTransform", "SetPickable" };
+
+bool hasNoGetter(const std::string& className, const std::string& setter)
+{
+  return NoGetter.count(setter) ||
+    (className == "vtkBoundParticleRepresentation" && ForwardedByTheDisplay.count(setter));
+}
+
+std::vector<double> numbers(const std::string& text)
+{
+  std::vector<double> values;
+  std::istringstream in(text);
+  for (double v; in >> v;)
+  {
+    values.push_back(v);
+  }
+  return values;
+}
+
+/// The numbers a getter's reply holds (one scalar or one array).
+bool replyValues(const vtkClientServerStream& reply, std::vector<double>& values)
+{
+  if (reply.GetNumberOfMessages() != 1 || reply.GetCommand(0) != vtkClientServerStream::Reply ||
+    reply.GetNumberOfArguments(0) != 1)
+  {
+    return false;
+  }
+  vtkTypeUInt32 length = 0;
+  if (reply.GetArgumentLength(0, 0, &length) && length > 0)
+  {
+    values.resize(length);
+    return reply.GetArgument(0, 0, values.data(), length) != 0;
+  }
+  double value = 0.0;
+  bool flag = false;
+  if (reply.GetArgument(0, 0, &value))
+  {
+    values = { value };
+    return true;
+  }
+  if (reply.GetArgument(0, 0, &flag))
+  {
+    values = { flag ? 1.0 : 0.0 };
+    return true;
+  }
+  return false;
+}
+
+class Classes
+{
+public:
+  Classes()
+  {
+    BoundParticlesFiltersCS_Initialize(this->Interpreter);
+    BoundParticlesIOCS_Initialize(this->Interpreter);
+    BoundParticlesRepresentationsCS_Initialize(this->Interpreter);
+  }
+
+  /// A new object of the class, or 0 where the wrapping does not know it.
+  vtkTypeUInt32 create(const std::string& className)
+  {
+    vtkClientServerStream s;
+    const vtkClientServerID id(++this->LastId);
+    s << vtkClientServerStream::New << className.c_str() << id << vtkClientServerStream::End;
+    return this->Interpreter->ProcessStream(s) ? id.ID : 0;
+  }
+
+  /// What the object's getter returns, or false where it has none.
+  bool get(vtkTypeUInt32 object, const std::string& getter, std::vector<double>& values)
+  {
+    vtkClientServerStream s;
+    s << vtkClientServerStream::Invoke << vtkClientServerID(object) << getter.c_str()
+      << vtkClientServerStream::End;
+    return this->Interpreter->ProcessStream(s) &&
+      replyValues(this->Interpreter->GetLastResult(), values);
+  }
+
+  /// Calls the object's setter with one integer.
+  template <typename T>
+  bool set(vtkTypeUInt32 object, const std::string& setter, T value)
+  {
+    vtkClientServerStream s;
+    s << vtkClientServerStream::Invoke << vtkClientServerID(object) << setter.c_str() << value
+      << vtkClientServerStream::End;
+    return this->Interpreter->ProcessStream(s) != 0;
+  }
+
+  /// Whether the plugin's wrapping makes objects of the class.
+  bool knows(const std::string& className)
+  {
+    vtkObjectBase* object = this->Interpreter->NewInstance(className.c_str());
+    if (object)
+    {
+      object->Delete();
+    }
+    return object != nullptr;
+  }
+
+private:
+  vtkNew<vtkClientServerInterpreter> Interpreter;
+  vtkTypeUInt32 LastId = 100;
+};
+
+/// Each proxy of the XML file whose class the plugin wraps.
+std::vector<vtkXMLDataElement*> proxies(vtkXMLDataElement* root, Classes& classes)
+{
+  std::vector<vtkXMLDataElement*> found;
+  for (int g = 0; g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement* group = root->GetNestedElement(g);
+    for (int p = 0; p < group->GetNumberOfNestedElements(); ++p)
+    {
+      vtkXMLDataElement* proxy = group->GetNestedElement(p);
+      const char* className = proxy->GetAttribute("class");
+      if (className && classes.knows(className))
+      {
+        found.push_back(proxy);
+      }
+    }
+  }
+  return found;
+}
+
+bool isValueProperty(vtkXMLDataElement* property)
+{
+  const std::string tag = property->GetName();
+  return (tag == "IntVectorProperty" || tag == "DoubleVectorProperty" ||
+           tag == "IdTypeVectorProperty") &&
+    property->GetAttribute("command") && property->GetAttribute("default_values") &&
+    !property->GetAttribute("information_only");
+}
+
+vtkXMLDataElement* enumeration(vtkXMLDataElement* property)
+{
+  return property->FindNestedElementWithName("EnumerationDomain");
+}
+
+/// The class keeps every value the XML offers, and no value past them (its
+/// setter clamps or refuses, with a warning).
+void checkEnumeration(Classes& classes, const std::string& className, const std::string& setter,
+  const std::set<double>& offered)
+{
+  const vtkTypeUInt32 object = classes.create(className);
+  const std::string getter = "Get" + setter.substr(3);
+  const int warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  std::vector<int> tried(offered.begin(), offered.end());
+  tried.push_back(int(*offered.rbegin()) + 1);
+  for (int value : tried)
+  {
+    std::vector<double> kept;
+    ASSERT_TRUE(classes.set(object, setter, value) && classes.get(object, getter, kept));
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0] == value, offered.count(value) == 1)
+      << setter << "(" << value << ") keeps " << kept[0] << ": the XML offers "
+      << (offered.count(value) ? "it" : "no such value");
+  }
+  vtkObject::SetGlobalWarningDisplay(warnings);
+}
+
+/// The class keeps the ends of the range the XML's panel offers (a setter
+/// that clamps tighter would take a value the panel shows away from it).
+void checkRange(Classes& classes, const std::string& className, vtkXMLDataElement* property)
+{
+  vtkXMLDataElement* range = property->FindNestedElementWithName("IntRangeDomain");
+  const bool integer = range != nullptr;
+  range = range ? range : property->FindNestedElementWithName("DoubleRangeDomain");
+  const char* elements = property->GetAttribute("number_of_elements");
+  if (!range || !elements || std::string(elements) != "1")
+  {
+    return;
+  }
+  const std::string setter = property->GetAttribute("command");
+  const std::string getter = "Get" + setter.substr(3);
+  for (const char* end : { "min", "max" })
+  {
+    const char* text = range->GetAttribute(end);
+    if (!text)
+    {
+      continue;
+    }
+    const double value = numbers(text).at(0);
+    const vtkTypeUInt32 object = classes.create(className);
+    const bool sent =
+      integer ? classes.set(object, setter, int(value)) : classes.set(object, setter, value);
+    std::vector<double> kept;
+    ASSERT_TRUE(sent && classes.get(object, getter, kept));
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0], value) << "the range's " << end << " " << value << " becomes " << kept[0];
+  }
+}
+
+void checkFile(const std::string& path)
+{
+  SCOPED_TRACE(path);
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
+  ASSERT_TRUE(root) << "cannot read " << path;
+  // One interpreter for the process: the wrapping registers its classes
+  // with the first interpreter it is given, once.
+  static Classes classes;
+  int compared = 0;
+  for (vtkXMLDataElement* proxy : proxies(root, classes))
+  {
+    const std::string className = proxy->GetAttribute("class");
+    const vtkTypeUInt32 object = classes.create(className);
+    ASSERT_NE(object, 0u) << className;
+    for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+    {
+      vtkXMLDataElement* property = proxy->GetNestedElement(i);
+      if (!isValueProperty(property))
+      {
+        continue;
+      }
+      const std::string name = property->GetAttribute("name");
+      const std::string setter = property->GetAttribute("command");
+      SCOPED_TRACE(className + "." + name);
+      const std::vector<double> declared = numbers(property->GetAttribute("default_values"));
+      if (vtkXMLDataElement* entries = enumeration(property))
+      {
+        std::set<double> values;
+        for (int e = 0; e < entries->GetNumberOfNestedElements(); ++e)
+        {
+          double value = 0.0;
+          ASSERT_TRUE(entries->GetNestedElement(e)->GetScalarAttribute("value", value));
+          EXPECT_TRUE(values.insert(value).second) << "value " << value << " twice";
+        }
+        EXPECT_TRUE(values.count(declared.at(0))) << "default not an entry";
+        if (!hasNoGetter(className, setter))
+        {
+          checkEnumeration(classes, className, setter, values);
+        }
+      }
+      if (hasNoGetter(className, setter))
+      {
+        continue;
+      }
+      checkRange(classes, className, property);
+      ASSERT_EQ(setter.rfind("Set", 0), 0u) << "command " << setter;
+      std::vector<double> actual;
+      ASSERT_TRUE(classes.get(object, "Get" + setter.substr(3), actual))
+        << className << " has no Get" << setter.substr(3)
+        << " (add one, or list the setter in NoGetter with why)";
+      ASSERT_EQ(actual.size(), declared.size());
+      for (std::size_t k = 0; k < actual.size(); ++k)
+      {
+        EXPECT_NEAR(actual[k], declared[k], 1e-12 * std::max(1.0, std::abs(declared[k])))
+          << "component " << k << ": the XML says " << declared[k] << ", the class starts at "
+          << actual[k];
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 0) << "no property compared";
+  std::printf("%s: %d defaults compared\n", path.c_str(), compared);
+}
+
+/// The entries of source proxy `proxy`'s enumeration `property` in the XML, value: text.
+std::map<int, std::string> entries(
+  const std::string& path, const std::string& proxy, const std::string& property)
+{
+  std::map<int, std::string> found;
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
+  for (int g = 0; root && g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement* p = root->GetNestedElement(g)->FindNestedElementWithNameAndAttribute(
+      "SourceProxy", "name", proxy.c_str());
+    vtkXMLDataElement* e = p
+      ? p->FindNestedElementWithNameAndAttribute("IntVectorProperty", "name", property.c_str())
+      : nullptr;
+    vtkXMLDataElement* domain = e ? enumeration(e) : nullptr;
+    for (int k = 0; domain && k < domain->GetNumberOfNestedElements(); ++k)
+    {
+      int value = -1;
+      domain->GetNestedElement(k)->GetScalarAttribute("value", value);
+      found[value] = domain->GetNestedElement(k)->GetAttribute("text");
+    }
+  }
+  return found;
+}
+} // namespace
+
+TEST(PropertyDefaults, TheXmlNamesCoreShapesAndFlowsAsCoreDoes)
+{
+  const std::string path = BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml";
+  const auto shapes = entries(path, "BoundParticleTracer", "ElementShape");
+  ASSERT_EQ(int(shapes.size()), bp::BuiltinShapeCount);
+  for (const auto& [value, text] : shapes)
+  {
+    EXPECT_EQ(text, bp::builtinShapeName(bp::BuiltinShape(value)));
+  }
+  const auto flows = entries(path, "AnalyticFlow", "Flow");
+  ASSERT_EQ(int(flows.size()), bp::AnalyticFlowCount);
+  for (const auto& [value, text] : flows)
+  {
+    EXPECT_EQ(text, bp::analyticFlowName(bp::AnalyticFlow(value)));
+  }
+}
+
+TEST(PropertyDefaults, TheXmlAndTheFiltersAgree)
+{
+  checkFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml");
+}
+
+TEST(PropertyDefaults, TheXmlAndTheReadersAgree)
+{
+  checkFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticlesReaders.xml");
+}
