@@ -99,6 +99,19 @@ int vtkBoundParticleTracer::RequestStreamInformation(
   }
   const double time = bpvtk::presentTime(inInfo);
   const Arrival arrival = I.Stream.offer(time);
+  if (I.Stream.empty())
+  {
+    // A first step with no usable time: nothing to start from.
+    vtkErrorMacro("The input's present time step is at t = "
+      << time << "; a time step handed in situ must have a finite time.");
+    I.Plan = bp::TracePlan();
+    for (int port = 0; port < 2; ++port)
+    {
+      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_STEPS());
+      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_RANGE());
+    }
+    return 1;
+  }
   const std::string refusal = I.Stream.refusal(arrival, time);
   // The first step announced again is no step lost (5.11's Catalyst hands
   // its producer the first step twice, and says so itself): refused quietly.

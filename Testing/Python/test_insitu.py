@@ -91,4 +91,18 @@ producer.GetClientSideObject().SetOutput(step_of(later), later)
 producer.MarkModified(producer)
 gap = farthest(elements(insitu, later), elements(BoundParticleTracer(Input=longer, **SETTINGS), later))
 bptest.check(gap <= 2e-4, "after refused steps the trace goes on as post hoc (%g apart)" % gap)
+# A first step with no finite time is an error and an empty output; the next
+# good step starts the trace.
+fresh_producer = PVTrivialProducer()
+fresh = BoundParticleTracer(Input=fresh_producer, **SETTINGS)
+with bptest.CapturedMessages() as said:
+    fresh_producer.GetClientSideObject().SetOutput(step_of(times[0]), float("nan"))
+    fresh_producer.MarkModified(fresh_producer)
+    fresh.UpdatePipeline()
+    empty = servermanager.Fetch(fresh).GetNumberOfPoints()
+bptest.check(said.mentions("must have a finite time") and empty == 0,
+             "a step at NaN: error and empty output (%d points): %s" % (empty, said.messages))
+fresh_producer.GetClientSideObject().SetOutput(step_of(times[1]), times[1])
+fresh_producer.MarkModified(fresh_producer)
+bptest.check(len(elements(fresh, times[1])) > 0, "the next good step starts the trace")
 bptest.finish()
