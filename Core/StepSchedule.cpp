@@ -17,6 +17,15 @@ StepSchedule::StepSchedule(double start, double dt, std::vector<double> breaks)
   std::sort(this->Breaks.begin(), this->Breaks.end());
 }
 
+void StepSchedule::addBreak(double time)
+{
+  const auto at = std::lower_bound(this->Breaks.begin(), this->Breaks.end(), time);
+  if (at == this->Breaks.end() || *at != time)
+  {
+    this->Breaks.insert(at, time);
+  }
+}
+
 double StepSchedule::next(double t) const
 {
   const double limit = t + this->Epsilon;

@@ -26,6 +26,10 @@ public:
   /// The first boundary after t. Boundaries closer than epsilon() to t are
   /// skipped, and a grid point within epsilon() of a break yields the break.
   double next(double t) const;
+  /// Adds a break at `time`: in situ, a data time step that has just
+  /// arrived (later than the steps taken so far, so no step taken moves).
+  void addBreak(double time);
+
   double epsilon() const { return this->Epsilon; }
   double start() const { return this->Start; }
   double dt() const { return this->Dt; }

@@ -43,6 +43,7 @@ std::string TracePlan::setTimes(
   this->InputTimes.clear();
   this->OutputTimes.clear();
   this->Unsteady = false;
+  this->Streaming = false;
   const std::string timesError = checkInputTimes(inputTimes);
   if (!timesError.empty())
   {
@@ -86,6 +87,14 @@ std::string TracePlan::setTimes(
     this->OutputTimes.push_back(duration * k / (count - 1));
   }
   return std::string();
+}
+
+void TracePlan::setStreamTimes(const std::vector<double>& times)
+{
+  this->Streaming = true;
+  this->InputTimes = times;
+  this->OutputTimes = times;
+  this->Unsteady = times.size() >= 2;
 }
 
 double TracePlan::epsilon() const
@@ -140,6 +149,23 @@ int TracePlan::firstRequest(const Update& update, const FieldCache& cache, int u
   const std::vector<int> ids = this->needed(update.from, update.target);
   const int missing = cache.firstMissing(ids);
   return missing >= 0 ? missing : upstream >= 0 ? upstream : ids.back();
+}
+
+bool TracePlan::streamCanGoOn(const Update& update, const FieldCache& cache) const
+{
+  if (update.replay || this->InputTimes.empty())
+  {
+    return this->InputTimes.size() == 1;
+  }
+  const int present = int(this->InputTimes.size()) - 1;
+  for (int k = this->needed(update.from, update.target).front(); k < present; ++k)
+  {
+    if (!cache.has(k))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 std::string TracePlan::checkWork(double from, double target, double dt) const

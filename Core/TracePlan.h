@@ -47,6 +47,17 @@ public:
   std::string setTimes(
     const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval = 1);
 
+  /**
+   * Sets the time line of an input that offers only its present time step
+   * (StreamTimeLine): the times given since the trace started, each offered
+   * as it is (no frames between: the next step has not arrived). One time is
+   * the trace's start, shown as a steady field; from two on the field is
+   * sampled between the last two as post hoc. `times` must increase.
+   */
+  void setStreamTimes(const std::vector<double>& times);
+  /// Whether the time line is an in situ one (setStreamTimes).
+  bool streaming() const { return this->Streaming; }
+
   bool unsteady() const { return this->Unsteady; }
   bool hasTimes() const { return !this->OutputTimes.empty(); }
   const std::vector<double>& inputTimes() const { return this->InputTimes; }
@@ -92,6 +103,13 @@ public:
    */
   int firstRequest(const Update& update, const FieldCache& cache, int upstream) const;
 
+  /**
+   * In situ (streaming()): whether `update` can go on with what `cache`
+   * holds and the present time step upstream offers; every older time step
+   * the work needs must be held, as the past cannot be asked for again.
+   */
+  bool streamCanGoOn(const Update& update, const FieldCache& cache) const;
+
   /// Empty when stepping from `from` to `target` by at most `dt` stays within
   /// MaxStepsPerUpdate; otherwise why the update is refused.
   std::string checkWork(double from, double target, double dt) const;
@@ -102,6 +120,7 @@ public:
 
 private:
   bool Unsteady = false;
+  bool Streaming = false;
   std::vector<double> InputTimes;
   std::vector<double> OutputTimes;
 };

@@ -25,7 +25,10 @@ bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
   // A first pass with every time step in hand asked for whatever upstream
   // held: take it only if the work needs it.
   const std::vector<int> planned = this->Plan.needed(this->steppingFrom(), this->target());
-  const bool wanted = this->Continuing ||
+  // In situ the present step is taken whenever it comes: it will not come again.
+  const bool present =
+    this->Plan.streaming() && this->RequestIndex == int(this->Plan.inputTimes().size()) - 1;
+  const bool wanted = this->Continuing || present ||
     std::find(planned.begin(), planned.end(), this->RequestIndex) != planned.end();
   return wanted && !this->Cache.has(this->RequestIndex);
 }
@@ -205,7 +208,10 @@ void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
 
 double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
 {
-  const double time = this->Plan.unsteady() ? this->Plan.inputTimes()[this->RequestIndex] : 0.0;
+  // In situ the first step is shown steady but is the start of the time line.
+  const double time = this->Plan.unsteady() || this->Plan.streaming()
+    ? this->Plan.inputTimes()[this->RequestIndex]
+    : 0.0;
   vtkInformation* data = input->GetInformation();
   if (this->Plan.unsteady() && data->Has(vtkDataObject::DATA_TIME_STEP()))
   {

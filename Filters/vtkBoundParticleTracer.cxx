@@ -7,6 +7,7 @@
 #include "TraceSettings.h"
 #include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
+#include "TracerInSitu.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
@@ -307,7 +308,10 @@ int vtkBoundParticleTracer::RequestInformation(
   vtkInternals& I = *this->Internals;
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-
+  if (bpvtk::offersOnlyPresent(inInfo))
+  {
+    return this->RequestStreamInformation(inInfo, outputVector);
+  }
   // The pipeline asks for information again only when this filter or
   // something upstream changed: the trace is stale.
   I.forgetTrace();

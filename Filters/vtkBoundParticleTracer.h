@@ -569,6 +569,9 @@ protected:
   /// Whether the time line is automatic (Duration, or FramesPerInputStep
   /// for an input with time steps), so it needs the field's scale.
   bool AutomaticTimeLine(const std::vector<double>& inputTimes) const;
+  /// RequestInformation for an input that offers only its present time step
+  /// (in situ, `TracerInSitu.cxx`): the trace advances with each step.
+  int RequestStreamInformation(vtkInformation* inInfo, vtkInformationVector* outputVector);
   /// The field's facts, read once upstream (TracerFieldProbe.h; collective).
   bpvtk::FieldProbe ProbeField(vtkInformation* inInfo, const std::vector<double>& inputTimes);
   /// The time line to offer: Duration or FramesPerInputStep, automatic ones

@@ -103,11 +103,41 @@ void vtkBoundParticleTracer::vtkInternals::decide(
       "GPU engine anyway.\n";
     vtkOutputWindowDisplayText(text.c_str());
   }
-  const double target = this->Plan.targetOf(
-    outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
+  // In situ the present step is the time shown, whatever time is asked for.
+  const double target = this->Plan.streaming()
+    ? this->Plan.outputTimes().back()
+    : this->Plan.targetOf(
+        outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   this->Decision =
     this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
+  if (this->Plan.streaming())
+  {
+    this->decideInSitu(target);
+    return;
+  }
   this->RequestIndex = this->Plan.firstRequest(this->Decision, this->Cache, this->LastRequested);
+}
+
+void vtkBoundParticleTracer::vtkInternals::decideInSitu(double target)
+{
+  if (!this->Plan.streamCanGoOn(this->Decision, this->Cache))
+  {
+    // The past steps are gone: a trace that must start again, or that lost
+    // a step it needs, starts again at the present one.
+    this->Stream.restartAtPresent();
+    this->Plan.setStreamTimes(this->Stream.times());
+    this->Cache.clear();
+    this->stepper().cursor.valid = false;
+    this->Decision =
+      this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
+  }
+  else if (this->Schedule && !this->Decision.replay)
+  {
+    // Steps end on every data time step, as post hoc: the present one is new.
+    this->Schedule->addBreak(this->Plan.inputTimes().back());
+  }
+  // Upstream is only ever asked for the present.
+  this->RequestIndex = int(this->Plan.inputTimes().size()) - 1;
 }
 
 void vtkBoundParticleTracer::vtkInternals::requestTimeStep(vtkInformation* inInfo)

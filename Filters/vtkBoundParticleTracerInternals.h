@@ -31,6 +31,7 @@
 #include "Engine.h"
 #include "FieldCache.h"
 #include "OutputArrays.h"
+#include "StreamTimeLine.h"
 #include "TracePlan.h"
 #include "TraceSettings.h"
 #include "TracerConfig.h"
@@ -106,6 +107,10 @@ struct vtkBoundParticleTracer::vtkInternals
   using Config = bpvtk::TracerConfig;
 
   bp::TracePlan Plan;
+  /// In situ: the times given since the trace started (TracerInSitu.cxx),
+  /// and the filter's MTime they were given under.
+  bp::StreamTimeLine Stream;
+  vtkMTimeType StreamSettingsTime = 0;
   bp::FieldCache Cache;
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;
@@ -187,6 +192,9 @@ struct vtkBoundParticleTracer::vtkInternals
   void decide(const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo);
   /// The input time step this pass asks upstream for (RequestUpdateExtent),
   /// none for a steady input.
+  /// The decision in situ: go on from the kept step to the present one, or
+  /// start again at the present one when a step the work needs is gone.
+  void decideInSitu(double target);
   void requestTimeStep(vtkInformation* inInfo);
   /// This pass ends asking upstream for `index`: the next pass continues
   /// the same update.

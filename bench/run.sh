@@ -56,6 +56,9 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/real_data.py" \
 # The defaults before and after issue 29, a picture per data set.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/first_minutes.py" \
   --plugin "$plugin" --data "$root/../shared/data" --pictures "$out/first-minutes"
+# In situ (a step at a time through a trivial producer) against post hoc.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/insitu_steps.py" \
+  --plugin "$plugin" | tee "$out/insitu_steps.txt"
 # Play with the defaults through the real ParaView GUI, beside pvpython.
 bash "$root/bench/gui_play.sh" --plugin "$plugin" | tee "$out/gui_play.txt"
 # The defaults straight on ParaView's mesh readers (times and element counts).
@@ -69,4 +72,4 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/stream_frames.py" \
 # The tracer's loops on the plugin's thread pool against vtkSMPTools.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/smp_loops.py" \
   --plugin "$plugin" | tee "$out/smp_loops.txt"
-echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/inertia.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/inertia.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt, $out/insitu_steps.txt"

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// In situ: an input that offers only its present time step, traced one step
+// at a time (docs/design.md, "In situ").
+#include "TracerInSitu.h"
+
+#include "TracerFieldProbe.h"
+#include "TracerFtleMap.h"
+#include "vtkAlgorithm.h"
+#include "vtkBoundParticleTracer.h"
+#include "vtkBoundParticleTracerInternals.h"
+#include "vtkDataObject.h"
+#include "vtkExecutive.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationExecutivePortKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationVector.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTrivialProducer.h"
+#include "vtkVersionMacros.h"
+
+namespace
+{
+/// How far upstream the search for a trivial producer goes.
+constexpr int MaxFiltersAbove = 16;
+} // namespace
+
+namespace bpvtk
+{
+
+bool offersOnlyPresent(vtkInformation* inInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+  if (inInfo->Has(SDDP::NO_PRIOR_TEMPORAL_ACCESS()))
+  {
+    return true;
+  }
+#endif
+  // A trivial producer holds one data object: whatever times it lists, only
+  // the last is there (Catalyst's before VTK 9.3 flags nothing). Filters
+  // between it and the tracer (ParaView's post filter, a Cell Data to Point
+  // Data) pass its times on; what they give is what it holds.
+  if (!inInfo->Has(SDDP::TIME_STEPS()) || inInfo->Length(SDDP::TIME_STEPS()) == 0)
+  {
+    return false;
+  }
+  vtkExecutive* executive = vtkExecutive::PRODUCER()->GetExecutive(inInfo);
+  for (int depth = 0; executive && depth < MaxFiltersAbove; ++depth)
+  {
+    vtkAlgorithm* algorithm = executive->GetAlgorithm();
+    if (vtkTrivialProducer::SafeDownCast(algorithm))
+    {
+      return true;
+    }
+    // Only a chain of single-input filters: anything else has another source.
+    if (!algorithm || algorithm->GetNumberOfInputPorts() != 1 ||
+      algorithm->GetNumberOfInputConnections(0) != 1)
+    {
+      return false;
+    }
+    executive = vtkExecutive::PRODUCER()->GetExecutive(executive->GetInputInformation(0, 0));
+  }
+  return false;
+}
+
+double presentTime(vtkInformation* inInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (inInfo->Has(SDDP::TIME_STEPS()) && inInfo->Length(SDDP::TIME_STEPS()) > 0)
+  {
+    return inInfo->Get(SDDP::TIME_STEPS())[inInfo->Length(SDDP::TIME_STEPS()) - 1];
+  }
+  vtkDataObject* data = inInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (data && data->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    return data->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+  }
+  return 0.0;
+}
+
+} // namespace bpvtk
+
+int vtkBoundParticleTracer::RequestStreamInformation(
+  vtkInformation* inInfo, vtkInformationVector* outputVector)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  using Arrival = bp::StreamTimeLine::Arrival;
+  vtkInternals& I = *this->Internals;
+  // Upstream changes with every step that arrives; only a change of this
+  // filter's settings (or a first step, or a post hoc line before) starts the
+  // trace again, at the present step.
+  const vtkMTimeType own = this->GetMTime();
+  if (!I.Plan.streaming() || own != I.StreamSettingsTime)
+  {
+    I.forgetTrace();
+    I.Stream.clear();
+    I.StreamSettingsTime = own;
+  }
+  const double time = bpvtk::presentTime(inInfo);
+  const Arrival arrival = I.Stream.offer(time);
+  if (I.Stream.empty())
+  {
+    // A first step with no usable time: nothing to start from.
+    vtkErrorMacro("The input's present time step is at t = "
+      << time << "; a time step handed in situ must have a finite time.");
+    I.Plan = bp::TracePlan();
+    for (int port = 0; port < 2; ++port)
+    {
+      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_STEPS());
+      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_RANGE());
+    }
+    return 1;
+  }
+  const std::string refusal = I.Stream.refusal(arrival, time);
+  // The first step announced again is no step lost (5.11's Catalyst hands
+  // its producer the first step twice, and says so itself): refused quietly.
+  const bool firstAgain = arrival == Arrival::Repeat && I.Stream.times().size() == 1;
+  if (!refusal.empty() && !firstAgain)
+  {
+    vtkWarningMacro(<< refusal);
+  }
+  I.Plan.setStreamTimes(I.Stream.times());
+  const std::vector<double>& times = I.Plan.outputTimes();
+  const double range[2] = { times.front(), times.back() };
+  const bpvtk::TracerConfig config = this->Config();
+  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
+  for (vtkInformation* info : { outputVector->GetInformationObject(0), mapInfo })
+  {
+    info->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
+    info->Set(SDDP::TIME_RANGE(), range, 2);
+  }
+  bpvtk::announceFtleMap(mapInfo, config,
+    bpvtk::mapsLattice(config) && inInfo->Has(vtkDataObject::DATA_OBJECT())
+      ? this->ProbeField(inInfo, { time })
+      : bpvtk::FieldProbe());
+  return 1;
+}

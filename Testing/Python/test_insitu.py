@@ -1,0 +1,108 @@
+"""In situ (issue 42): the tracer on an input that offers only its present
+time step, fed one step at a time through a trivial producer (Catalyst's
+producer before VTK 9.3 flags anything), advances with each step that arrives
+and gets the elements a post hoc trace of the same steps gets; a repeated or
+earlier step is refused with a message and the trace keeps its state; a
+missing vector array is an error and the next good step continues.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+
+args = bptest.arguments("--engine", "--steps")
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+LoadPlugin(args.plugin, ns=globals())
+STEPS = int(args.steps or 20)
+SETTINGS = dict(Vectors=["POINTS", "velocity"], ElementShape="Paddlewheel", NumberOfElements=200,
+                Seed=3, Engine=args.engine or "CPU")
+
+flow = AnalyticFlow(Flow="Double Gyre", Resolution=[40, 20, 2], Bounds=[0, 2, 0, 1, 0, 0.05],
+                    NumberOfTimeSteps=STEPS)
+flow.UpdatePipeline()
+times = list(flow.TimestepValues)
+bptest.check(len(times) == STEPS, "the flow offers %d time steps (%d)" % (STEPS, len(times)))
+
+
+def elements(proxy, time):
+    proxy.UpdatePipeline(time)
+    data = servermanager.Fetch(proxy)
+    ids = vtk_to_numpy(data.GetPointData().GetArray("ElementId"))
+    index = vtk_to_numpy(data.GetPointData().GetArray("ParticleIndex"))
+    points = vtk_to_numpy(data.GetPoints().GetData()) if data.GetNumberOfPoints() else None
+    return {(int(e), int(p)): points[k] for k, (e, p) in enumerate(zip(ids, index))}
+
+
+def step_of(time):
+    """The flow's data at `time`, as a simulation would hand it over."""
+    flow.UpdatePipeline(time)
+    data = flow.GetClientSideObject().GetOutputDataObject(0).NewInstance()
+    data.DeepCopy(flow.GetClientSideObject().GetOutputDataObject(0))
+    return data
+
+
+def farthest(a, b):
+    if set(a) != set(b):
+        return float("inf")
+    return max(abs(a[key] - b[key]).max() for key in a)
+
+
+posthoc = BoundParticleTracer(Input=flow, **SETTINGS)
+reference = {t: elements(posthoc, t) for t in (times[STEPS // 2], times[-1])}
+
+producer = PVTrivialProducer()
+insitu = BoundParticleTracer(Input=producer, **SETTINGS)
+with bptest.CapturedMessages() as said:
+    for k, t in enumerate(times):
+        producer.GetClientSideObject().SetOutput(step_of(t), t)
+        producer.MarkModified(producer)
+        got = elements(insitu, t)
+        if t in reference:
+            gap = farthest(got, reference[t])
+            print("t = %g: in situ and post hoc %g apart" % (t, gap))
+            bptest.check(gap <= 1e-4 * 2.0, "in situ equals post hoc at t = %g (%g apart)" % (t, gap))
+said.messages = [m for m in said.messages if "New time step is not" not in m]  # ParaView's own
+bptest.check(not said.messages, "no messages while the steps increase: %s" % said.messages)
+
+# A repeated step and an earlier one are refused; the trace stays.
+last = elements(insitu, times[-1])
+for t in (times[-1], times[-3]):
+    with bptest.CapturedMessages() as said:
+        producer.GetClientSideObject().SetOutput(step_of(t), t)
+        producer.MarkModified(producer)
+        kept = elements(insitu, t)
+    bptest.check(said.mentions("the step is refused"), "step t = %g refused: %s" % (t, said.messages))
+    bptest.check(farthest(kept, last) == 0.0, "the trace keeps its state after t = %g" % t)
+
+# A step one interval on continues the trace as post hoc would.
+dt = times[1] - times[0]
+later = times[-1] + dt
+longer = AnalyticFlow(Flow="Double Gyre", Resolution=[40, 20, 2], Bounds=[0, 2, 0, 1, 0, 0.05],
+                      NumberOfTimeSteps=STEPS + 1)
+longer.UpdatePipeline()
+bptest.check(abs(list(longer.TimestepValues)[-1] - later) < 1e-9, "the longer flow ends one step on")
+flow.NumberOfTimeSteps = STEPS + 1
+producer.GetClientSideObject().SetOutput(step_of(later), later)
+producer.MarkModified(producer)
+gap = farthest(elements(insitu, later), elements(BoundParticleTracer(Input=longer, **SETTINGS), later))
+bptest.check(gap <= 2e-4, "after refused steps the trace goes on as post hoc (%g apart)" % gap)
+# A first step with no finite time is an error and an empty output; the next
+# good step starts the trace.
+fresh_producer = PVTrivialProducer()
+fresh = BoundParticleTracer(Input=fresh_producer, **SETTINGS)
+with bptest.CapturedMessages() as said:
+    fresh_producer.GetClientSideObject().SetOutput(step_of(times[0]), float("nan"))
+    fresh_producer.MarkModified(fresh_producer)
+    fresh.UpdatePipeline()
+    empty = servermanager.Fetch(fresh).GetNumberOfPoints()
+bptest.check(said.mentions("must have a finite time") and empty == 0,
+             "a step at NaN: error and empty output (%d points): %s" % (empty, said.messages))
+fresh_producer.GetClientSideObject().SetOutput(step_of(times[1]), times[1])
+fresh_producer.MarkModified(fresh_producer)
+bptest.check(len(elements(fresh, times[1])) > 0, "the next good step starts the trace")
+bptest.finish()
