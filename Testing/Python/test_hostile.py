@@ -33,6 +33,10 @@ parser.add_argument("--scratch", help="a folder for the cases' files")
 args = parser.parse_args()
 
 ADDRESS_LIMIT = 8 << 30
+# The markers a case's process prints, each on a line of its own; found
+# anywhere in a line, since ParaView's log (on the same pipe) may end a line
+# without its newline.
+CASE, SECONDS, RESULT = "@@CASE ", "@@SECONDS ", "@@RESULT "
 TIME_LIMIT = 120
 
 
@@ -476,7 +480,7 @@ def run_case(name):
                 finite = finite and numpy.isfinite(vtk_to_numpy(a)).all()
     # Plain Python values for json: under ParaView 5.13 with numpy 2 a numpy.bool
     # reached the result after a Programmable Source ran, and json refuses those.
-    print("RESULT " + json.dumps({"name": name, "points": int(points),
+    print("\n" + RESULT + json.dumps({"name": name, "points": int(points),
                                   "finite": True if finite else False,
                                   "class": str(data.GetClassName()) if data else "",
                                   "bounds": [float(b) for b in bounds],
@@ -490,14 +494,14 @@ if args.case:
     for number, name in enumerate(args.case):
         if number:
             ResetSession()  # noqa: F405
-        print("CASE " + name, flush=True)
+        print("\n" + CASE + name, flush=True)
         started = time.time()
         # Past the time limit the default action of SIGALRM ends the process,
         # which the driver reports as this case's hang.
         signal.alarm(TIME_LIMIT)
         run_case(name)
         signal.alarm(0)
-        print("SECONDS %.1f" % (time.time() - started), flush=True)
+        print("\n%s%.1f" % (SECONDS, time.time() - started), flush=True)
     sys.exit(0)
 
 
@@ -523,10 +527,10 @@ def run_cases_process(names, scratch):
     # The output case by case: each starts at its CASE line.
     runs, name, lines = [], None, []
     for line in out.splitlines(keepends=True):
-        if line.startswith("CASE "):
+        if CASE in line:
             if name is not None:
                 runs.append([name, 0, "".join(lines)])
-            name, lines = line[len("CASE "):].strip(), []
+            name, lines = line[line.index(CASE) + len(CASE):].strip(), []
         elif name is not None:
             lines.append(line)
     if name is not None:
@@ -536,8 +540,8 @@ def run_cases_process(names, scratch):
     runs[-1][1] = process.returncode
     result = []
     for name, status, text in runs:
-        seconds = [float(line.split()[1]) for line in text.splitlines()
-                   if line.startswith("SECONDS ")]
+        seconds = [float(line[line.index(SECONDS) + len(SECONDS):].split()[0])
+                   for line in text.splitlines() if SECONDS in line]
         result.append((name, status, text,
                        seconds[0] if seconds else time.time() - started))
     return result
@@ -556,7 +560,8 @@ def run_all(names, scratch):
         ran = run_cases_process(shared, scratch)
         for name, status, text, seconds in ran:
             results[name] = (status, text, seconds)
-        shared = shared[len(ran):]
+        # The next process starts at the first case without a result.
+        shared = [name for name in shared if name not in results]
     return results
 
 
@@ -569,8 +574,8 @@ for name, case in CASES.items():
     status, out, seconds = results[name]
     result = None
     for line in out.splitlines():
-        if line.startswith("RESULT "):
-            result = json.loads(line[len("RESULT "):])
+        if RESULT in line:
+            result = json.loads(line[line.index(RESULT) + len(RESULT):])
     print("%-40s exit %s, %.1f s, %s" % (name, status, seconds,
                                          "no result" if result is None else
                                          "%d points, %d message(s)" % (result["points"],
