@@ -12,6 +12,7 @@ pvpython start-up per case. A case that kills or hangs the shared process
 fails by name, and the cases after it go on in a new one.
 """
 import argparse
+import hashlib
 import json
 import math
 import os
@@ -33,10 +34,12 @@ parser.add_argument("--scratch", help="a folder for the cases' files")
 args = parser.parse_args()
 
 ADDRESS_LIMIT = 8 << 30
-# The markers a case's process prints, each on a line of its own; found
-# anywhere in a line, since ParaView's log (on the same pipe) may end a line
-# without its newline.
-CASE, SECONDS, RESULT = "@@CASE ", "@@SECONDS ", "@@RESULT "
+
+
+def result_file(scratch, name):
+    """Where a case's process writes the case's result (json): a file, not
+    the process's output, which ParaView's log shares and may cut."""
+    return os.path.join(scratch, hashlib.sha1(name.encode()).hexdigest() + ".json")
 TIME_LIMIT = 120
 
 
@@ -443,9 +446,9 @@ ALONE = {
 }
 
 
-def run_case(name):
+def run_case(name, seconds_from):
     """Builds the case, updates it (drawing it where it names a display), and
-    prints RESULT with the messages and whether the output is finite."""
+    writes its result file: the messages and whether the output is finite."""
     from paraview import servermanager
     from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy
@@ -480,11 +483,15 @@ def run_case(name):
                 finite = finite and numpy.isfinite(vtk_to_numpy(a)).all()
     # Plain Python values for json: under ParaView 5.13 with numpy 2 a numpy.bool
     # reached the result after a Programmable Source ran, and json refuses those.
-    print("\n" + RESULT + json.dumps({"name": name, "points": int(points),
-                                  "finite": True if finite else False,
-                                  "class": str(data.GetClassName()) if data else "",
-                                  "bounds": [float(b) for b in bounds],
-                                  "messages": [str(m) for m in log.messages]}))
+    result = {"name": name, "points": int(points), "finite": True if finite else False,
+              "class": str(data.GetClassName()) if data else "",
+              "bounds": [float(b) for b in bounds],
+              "messages": [str(m) for m in log.messages],
+              "seconds": time.time() - seconds_from}
+    path = result_file(args.scratch, name)
+    with open(path + ".part", "w") as out:
+        json.dump(result, out)
+    os.replace(path + ".part", path)
 
 
 if args.case:
@@ -494,14 +501,13 @@ if args.case:
     for number, name in enumerate(args.case):
         if number:
             ResetSession()  # noqa: F405
-        print("\n" + CASE + name, flush=True)
+        print("case: " + name, flush=True)
         started = time.time()
         # Past the time limit the default action of SIGALRM ends the process,
         # which the driver reports as this case's hang.
         signal.alarm(TIME_LIMIT)
-        run_case(name)
+        run_case(name, started)
         signal.alarm(0)
-        print("\n%s%.1f" % (SECONDS, time.time() - started), flush=True)
     sys.exit(0)
 
 
@@ -511,8 +517,9 @@ def limit_address_space():
 
 def run_cases_process(names, scratch):
     """Runs the cases in one process, in order, until one ends it; a list of
-    (name, exit status, output, seconds) for those it ran: every case's exit
-    status is 0 but the last's, which is the process's."""
+    (name, exit status, output, seconds, result) for those it ran: the cases
+    with a result file ran to their end (status 0); the first without one
+    ended the process (its status, and the process's output)."""
     started = time.time()
     process = subprocess.Popen(
         [args.pvpython, os.path.abspath(__file__), "--plugin", args.plugin, "--scratch", scratch,
@@ -524,42 +531,31 @@ def run_cases_process(names, scratch):
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
         out, _ = process.communicate()
-    # The output case by case: each starts at its CASE line.
-    runs, name, lines = [], None, []
-    for line in out.splitlines(keepends=True):
-        if CASE in line:
-            if name is not None:
-                runs.append([name, 0, "".join(lines)])
-            name, lines = line[line.index(CASE) + len(CASE):].strip(), []
-        elif name is not None:
-            lines.append(line)
-    if name is not None:
-        runs.append([name, 0, "".join(lines)])
-    else:
-        runs.append([names[0], None, out])  # ended before its first case
-    runs[-1][1] = process.returncode
-    result = []
-    for name, status, text in runs:
-        seconds = [float(line[line.index(SECONDS) + len(SECONDS):].split()[0])
-                   for line in text.splitlines() if SECONDS in line]
-        result.append((name, status, text,
-                       seconds[0] if seconds else time.time() - started))
-    return result
+    ran = []
+    for name in names:
+        path = result_file(scratch, name)
+        if not os.path.exists(path):
+            # The case that ended the process (or, with status 0, one that wrote nothing).
+            status = process.returncode if process.returncode != 0 else None
+            ran.append((name, status, out, time.time() - started, None))
+            break
+        with open(path) as saved:
+            result = json.load(saved)
+        ran.append((name, 0, "", result["seconds"], result))
+    return ran
 
 
 def run_all(names, scratch):
-    """Every case: (exit status, output, seconds) by name, the shared ones in
+    """Every case: (exit status, output, seconds, result) by name, the shared ones in
     as few processes as their failures allow."""
     results = {}
     for name in names:
         if name in ALONE:
-            _, status, text, seconds = run_cases_process([name], scratch)[0]
-            results[name] = (status, text, seconds)
+            results[name] = run_cases_process([name], scratch)[0][1:]
     shared = [name for name in names if name not in ALONE]
     while shared:
-        ran = run_cases_process(shared, scratch)
-        for name, status, text, seconds in ran:
-            results[name] = (status, text, seconds)
+        for row in run_cases_process(shared, scratch):
+            results[row[0]] = row[1:]
         # The next process starts at the first case without a result.
         shared = [name for name in shared if name not in results]
     return results
@@ -571,11 +567,7 @@ results = run_all(list(CASES), scratch)
 for name, case in CASES.items():
     refusal = case[2]
     expect = case[3] if len(case) > 3 else None
-    status, out, seconds = results[name]
-    result = None
-    for line in out.splitlines():
-        if RESULT in line:
-            result = json.loads(line[line.index(RESULT) + len(RESULT):])
+    status, out, seconds, result = results[name]
     print("%-40s exit %s, %.1f s, %s" % (name, status, seconds,
                                          "no result" if result is None else
                                          "%d points, %d message(s)" % (result["points"],
