@@ -7,6 +7,7 @@
 #include "AnalyticFlows.h"
 #include "Engine.h"
 #include "GpuStepper.h"
+#include "PhysicsSystem.h"
 #include "SharedContext.h"
 #include "Stepper.h"
 
@@ -21,54 +22,7 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-/// One engine or the other behind the stepper verbs, with the readbacks the
-/// checks need.
-class System
-{
-public:
-  System(bool gpu, const bp::ElementTemplate& shape, const bp::Parameters& p,
-    const bp::VectorField& field)
-  {
-    if (gpu)
-      this->Stepper.reset(this->Gpu = new bp::GpuStepper);
-    else
-      this->Stepper.reset(this->Cpu = new bp::CpuStepper(bp::serialRunner()));
-    EXPECT_EQ(this->Stepper->configure(shape, p), "");
-    EXPECT_EQ(this->Stepper->setField(field), "");
-    this->Stepper->initialize(0.0);
-  }
-  ~System()
-  {
-    if (this->Gpu)
-      this->Gpu->engine().release();
-  }
-  System(const System&) = delete;
-  System& operator=(const System&) = delete;
-
-  void step(double t, double h) { this->Stepper->step(t, h); }
-  std::vector<float> positions() const
-  {
-    if (this->Cpu)
-      return this->Cpu->engine().positions();
-    std::vector<float> p;
-    this->Gpu->engine().read(&p, nullptr, nullptr);
-    return p;
-  }
-  std::vector<float> slips() const
-  {
-    if (this->Cpu)
-      return this->Cpu->engine().slips();
-    std::vector<float> s;
-    this->Gpu->engine().readSlips(s);
-    return s;
-  }
-
-private:
-  std::unique_ptr<bp::Stepper> Stepper;
-  bp::CpuStepper* Cpu = nullptr;
-  bp::GpuStepper* Gpu = nullptr;
-};
+using bptest::System;
 
 bp::GridGeometry box(int n, double lo, double hi, int nz)
 {
@@ -167,16 +121,15 @@ TEST_P(InertiaPhysics, HeavyParticlesLeaveAVortexAndBubblesGoIn)
     const std::vector<float> x = s.positions();
     const double rate = std::log(std::hypot(x[0], x[1]) / 0.3) / (2 * Pi);
     const double expected = 0.01 * (1.0 - bp::addedMassFactor(ratio));
-    std::printf("%s, density ratio %g: radial rate %.6f, tau (1 - beta) omega^2 %.6f\n",
-      engine(), double(ratio), rate, expected);
+    std::printf("%s, density ratio %g: radial rate %.6f, tau (1 - beta) omega^2 %.6f\n", engine(),
+      double(ratio), rate, expected);
     EXPECT_NEAR(rate, expected, 0.05 * std::abs(expected));
   }
 }
 
 TEST_P(InertiaPhysics, ZeroResponseTimeIsTheMasslessTrace)
 {
-  const bp::VectorField gyre =
-    flowOn(bp::AnalyticFlow::DoubleGyre, box(33, 0, 1, 1), true);
+  const bp::VectorField gyre = flowOn(bp::AnalyticFlow::DoubleGyre, box(33, 0, 1, 1), true);
   bp::Parameters massless = heavy({ 0.1f, 0.1f, 0 }, { 0.9f, 0.9f, 0 }, 0.0f, 1000.0f);
   massless.numberOfElements = 50;
   massless.gravity = { 0, -1, 0 };
@@ -212,8 +165,8 @@ void compareEngines(const ParityCase& c)
 {
   ASSERT_TRUE(bp::haveSharedContext());
   const bp::GridGeometry g = box(24, -1, 1, 24);
-  const bp::VectorField field = flowOn(
-    c.unsteady ? bp::AnalyticFlow::DoubleGyre : bp::AnalyticFlow::ABC, g, c.unsteady);
+  const bp::VectorField field =
+    flowOn(c.unsteady ? bp::AnalyticFlow::DoubleGyre : bp::AnalyticFlow::ABC, g, c.unsteady);
   bp::Parameters p = heavy({ -0.6f, -0.6f, -0.6f }, { 0.6f, 0.6f, 0.6f }, 0.05f, 20.0f);
   p.numberOfElements = 200;
   p.elementSize = 0.1f;
