@@ -57,6 +57,12 @@ reference = {t: elements(posthoc, t) for t in (times[STEPS // 2], times[-1])}
 
 producer = PVTrivialProducer()
 insitu = BoundParticleTracer(Input=producer, **SETTINGS)
+# Made before the simulation's first step, the tracer has no bounds to take
+# its emitter box from: the default box spans the field (6.1's BoundsDomain
+# gave size 0, every element at one point).
+bptest.check(list(insitu.EmitterSize) == [-1.0, -1.0, -1.0],
+             "a tracer made before the first step spans the field: Emitter Size %s"
+             % list(insitu.EmitterSize))
 with bptest.CapturedMessages() as said:
     for k, t in enumerate(times):
         producer.GetClientSideObject().SetOutput(step_of(t), t)

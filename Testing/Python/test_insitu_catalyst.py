@@ -22,9 +22,11 @@ run = subprocess.run(command, capture_output=True, text=True, timeout=500)
 print(run.stdout[-3000:], run.stderr[-3000:])
 bptest.check(run.returncode == 0, "the simulation ran (%d)" % run.returncode)
 said = [line for line in run.stderr.splitlines() if "WARN" in line or "ERR" in line]
-# ParaView's own notes: the bridge initializes ParaView, and 5.11's Catalyst
-# hands its producer the first step twice.
-said = [line for line in said if "initialized before" not in line and "New time step is not" not in line]
+# ParaView's own notes: the bridge initializes ParaView, 5.11's Catalyst
+# hands its producer the first step twice, and 6.1 with no X display tries X
+# before it renders the picture through EGL.
+THEIRS = ("initialized before", "New time step is not", "bad X server connection")
+said = [line for line in said if not any(note in line for note in THEIRS)]
 bptest.check(not said, "nothing said while tracing in situ: %s" % said)
 
 from paraview import servermanager  # noqa: E402
