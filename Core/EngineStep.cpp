@@ -502,6 +502,15 @@ void Engine::prefetchElement(std::size_t e) const
   {
     __builtin_prefetch(positions + b, 1);
   }
+  if (!this->Slips.empty())
+  {
+    // Heavy particles: the slips are read and written with the positions.
+    const char* slips = reinterpret_cast<const char*>(this->Slips.data() + 3 * e * n);
+    for (std::size_t b = 0; b < 12 * n; b += Line)
+    {
+      __builtin_prefetch(slips + b, 1);
+    }
+  }
   if (this->restoresElements())
   {
     const char* forces = reinterpret_cast<const char*>(this->Forces.data() + e * n);

@@ -447,8 +447,8 @@ void VectorField::gradient(
 }
 
 #if BOUNDPARTICLES_SSE2
-void VectorField::gradientLanes(
-  const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const
+void VectorField::gradientLanes(const float* data, std::size_t base, const float f[3],
+  const float w[3], __m128 d[3], __m128* value) const
 {
   // The four x edges as in interpolateLanes: two overlapping loads per edge
   // give both corners in lanes 0-2 without reading past the array. The
@@ -478,6 +478,32 @@ void VectorField::gradientLanes(
   const __m128 z0 = lerp(_mm_sub_ps(c001, c000), _mm_sub_ps(c101, c100), fx);
   const __m128 z1 = lerp(_mm_sub_ps(c011, c010), _mm_sub_ps(c111, c110), fx);
   d[2] = _mm_mul_ps(lerp(z0, z1, fy), _mm_set1_ps(w[2]));
+  if (value)
+  {
+    // interpolateLanes' operations on the corners already loaded: the same bits.
+    const __m128 y0 = lerp(lerp(c000, c100, fx), lerp(c010, c110, fx), fy);
+    const __m128 y1 = lerp(lerp(c001, c101, fx), lerp(c011, c111, fx), fy);
+    *value = lerp(y0, y1, fz);
+  }
+}
+
+void VectorField::blendLanes(__m128 d[3], const __m128 second[3], float weight)
+{
+  const __m128 weights = _mm_set1_ps(weight);
+  for (int a = 0; a < 3; ++a)
+  {
+    d[a] = _mm_add_ps(d[a], _mm_mul_ps(weights, _mm_sub_ps(second[a], d[a])));
+  }
+}
+
+void VectorField::storeLanes(const __m128 d[3], float out[3][3])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, d[a]);
+    std::copy_n(lanes, 3, out[a]);
+  }
 }
 #endif
 
@@ -522,30 +548,46 @@ void VectorField::sampleWithDerivatives(
   std::size_t base = 0;
   float f[3], w[3];
   this->locateWithSlopes(p, base, f, w);
-  this->blendedGradient(base, f, w, weight, d);
-  if (!this->SecondData)
-  {
-    this->sampleCell(base, f, weight, v);
-    std::fill_n(dvdt, 3, 0.0f);
-    return;
-  }
-  // Both slices once: the velocity blended as sampleCell blends them, and
-  // their difference over their times.
+  // Each slice's velocity and gradient at p, the velocity blended as
+  // sampleCell blends the slices and the gradient as blendedGradient does.
   float first[3], second[3];
 #if BOUNDPARTICLES_SSE2
   if (this->Stride[0] == 1)
   {
-    alignas(16) float lanes[2][4];
-    _mm_store_ps(lanes[0], this->interpolateLanes(this->FirstData, base, f));
-    _mm_store_ps(lanes[1], this->interpolateLanes(this->SecondData, base, f));
-    std::copy_n(lanes[0], 3, first);
-    std::copy_n(lanes[1], 3, second);
+    // One read of the cell's corners per slice for the value and the gradient.
+    __m128 lanes[3], value;
+    this->gradientLanes(this->FirstData, base, f, w, lanes, &value);
+    alignas(16) float out[4];
+    _mm_store_ps(out, value);
+    std::copy_n(out, 3, first);
+    if (this->SecondData)
+    {
+      __m128 later[3];
+      this->gradientLanes(this->SecondData, base, f, w, later, &value);
+      _mm_store_ps(out, value);
+      std::copy_n(out, 3, second);
+      if (weight > 0.0f)
+      {
+        blendLanes(lanes, later, weight);
+      }
+    }
+    storeLanes(lanes, d);
   }
   else
 #endif
   {
+    this->blendedGradient(base, f, w, weight, d);
     this->interpolate(this->FirstData, base, f, first);
-    this->interpolate(this->SecondData, base, f, second);
+    if (this->SecondData)
+    {
+      this->interpolate(this->SecondData, base, f, second);
+    }
+  }
+  if (!this->SecondData)
+  {
+    std::copy_n(first, 3, v);
+    std::fill_n(dvdt, 3, 0.0f);
+    return;
   }
   const float rate = float(1.0 / (this->Second.time - this->First.time));
   for (int k = 0; k < 3; ++k)
@@ -568,18 +610,9 @@ void VectorField::blendedGradient(
     {
       __m128 second[3];
       this->gradientLanes(this->SecondData, base, f, w, second);
-      const __m128 weights = _mm_set1_ps(weight);
-      for (int a = 0; a < 3; ++a)
-      {
-        lanes[a] = _mm_add_ps(lanes[a], _mm_mul_ps(weights, _mm_sub_ps(second[a], lanes[a])));
-      }
+      blendLanes(lanes, second, weight);
     }
-    for (int a = 0; a < 3; ++a)
-    {
-      alignas(16) float out[4];
-      _mm_store_ps(out, lanes[a]);
-      std::copy_n(out, 3, d[a]);
-    }
+    storeLanes(lanes, d);
   }
   else
 #endif

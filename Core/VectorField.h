@@ -250,16 +250,22 @@ private:
   /// derivatives along each axis.
   void locateWithSlopes(const float p[3], std::size_t& base, float f[3], float w[3]) const;
   /// The gradient at the located cell, both slices blended (sampleWithCurl).
-  void blendedGradient(std::size_t base, const float f[3], const float w[3], float weight,
-    float d[3][3]) const;
+  void blendedGradient(
+    std::size_t base, const float f[3], const float w[3], float weight, float d[3][3]) const;
   /// The velocity's derivatives d[a][k] = d v_k / d x_a of that interpolant,
   /// with w[a] the derivative of the fraction along axis a.
   void gradient(
     const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const;
 #if BOUNDPARTICLES_SSE2
-  /// The same with the components in SSE lanes 0-2 (Stride[0] == 1).
-  void gradientLanes(
-    const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const;
+  /// The same with the components in SSE lanes 0-2 (Stride[0] == 1); with
+  /// `value`, also the velocity there from the same corners (interpolateLanes'
+  /// bits), so that a heavy particle's step reads them once.
+  void gradientLanes(const float* data, std::size_t base, const float f[3], const float w[3],
+    __m128 d[3], __m128* value = nullptr) const;
+  /// d += weight (second - d), lane by lane: the slices' gradients blended.
+  static void blendLanes(__m128 d[3], const __m128 second[3], float weight);
+  /// Lanes 0-2 of each of d's three vectors into out's rows.
+  static void storeLanes(const __m128 d[3], float out[3][3]);
 #endif
 #if BOUNDPARTICLES_SSE2
   /// The same in SSE lanes 0-2, where x is not a plane (Stride[0] == 1).
