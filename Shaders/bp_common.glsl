@@ -372,10 +372,10 @@ void bpGradient(sampler3D field, ivec3 a, vec3 f, vec3 w, out vec3 d[3])
   d[2] = (z0 + f.y * (z1 - z0)) * w.z;
 }
 
-// curl v at p: the curl of the trilinear interpolant in the cell that holds
-// p, each time step's gradient blended with `weight` as bpSample blends the
-// values. Used by the colouring samples and the pose pass's vorticity meter.
-vec3 bpCurl(vec3 p, float weight)
+// The gradient d[a][c] = dv_c/dx_a of the trilinear interpolant in the cell
+// that holds p, each time step's blended with `weight` as bpSample blends
+// the values (VectorField::blendedGradient).
+void bpBlendedGradient(vec3 p, float weight, out vec3 d[3])
 {
   vec3 f, w;
   ivec3 a = bpLocateCell(p, f);
@@ -384,7 +384,6 @@ vec3 bpCurl(vec3 p, float weight)
     // 0 along a flat axis (its inverse spacing is 0), where nothing varies.
     w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(a[k], k), 0).y : bpInverseSpacing[k];
   }
-  vec3 d[3];
   bpGradient(bpField0, a, f, w, d);
   if (bpUnsteady && weight > 0.0)
   {
@@ -395,6 +394,14 @@ vec3 bpCurl(vec3 p, float weight)
       d[k] += weight * (d1[k] - d[k]);
     }
   }
+}
+
+// curl v at p, from bpBlendedGradient. Used by the colouring samples and the
+// pose pass's vorticity meter.
+vec3 bpCurl(vec3 p, float weight)
+{
+  vec3 d[3];
+  bpBlendedGradient(p, weight, d);
   return vec3(d[1][2] - d[2][1], d[2][0] - d[0][2], d[0][1] - d[1][0]);
 }
 

@@ -18,22 +18,7 @@ uniform bool bpShareSlip;      // the element is restored (springs, shape matchi
 // VectorField::sampleWithDerivatives: u, d[a][c] = du_c/dx_a and du/dt at p.
 void bpSampleWithDerivatives(vec3 p, float weight, out vec3 u, out vec3 d[3], out vec3 dudt)
 {
-  vec3 f, w;
-  ivec3 a = bpLocateCell(p, f);
-  for (int k = 0; k < 3; ++k)
-  {
-    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(a[k], k), 0).y : bpInverseSpacing[k];
-  }
-  bpGradient(bpField0, a, f, w, d);
-  if (bpUnsteady && weight > 0.0)
-  {
-    vec3 d1[3];
-    bpGradient(bpField1, a, f, w, d1);
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] += weight * (d1[k] - d[k]);
-    }
-  }
+  bpBlendedGradient(p, weight, d);
   vec3 first = bpSampleSlice(bpField0, p);
   if (!bpUnsteady)
   {
