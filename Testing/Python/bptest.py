@@ -156,3 +156,19 @@ def element_view(size):
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.CameraViewAngle = 30
     return view
+
+
+def fetch(proxy, time):
+    """`proxy`'s output at `time`, brought to this process."""
+    from paraview import servermanager
+
+    proxy.UpdatePipeline(time)
+    return servermanager.Fetch(proxy)
+
+
+def point_array(data, name):
+    """Point array `name` of `data` as numpy, or None where it is missing."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    a = data.GetPointData().GetArray(name)
+    return None if a is None else vtk_to_numpy(a)

@@ -18,7 +18,6 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
 import paraview.simple  # noqa: E402
-from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
@@ -26,11 +25,6 @@ args = bptest.arguments()
 LoadPlugin(args.plugin, ns=globals())
 paraview.simple._DisableFirstRenderCameraReset()
 N = 8  # particles of a paddlewheel
-
-
-def fetch(proxy, time):
-    proxy.UpdatePipeline(time)
-    return servermanager.Fetch(proxy)
 
 
 def elements(data):
@@ -60,17 +54,17 @@ def tracer(anchor):
 
 anchored, free = tracer("Centre"), tracer("None")
 bptest.check(anchored.Anchor == "Centre" and free.Anchor == "None", "Anchor is set by name")
-start, _, _ = elements(fetch(anchored, 0.0))
-freeStart, _, _ = elements(fetch(free, 0.0))
+start, _, _ = elements(bptest.fetch(anchored, 0.0))
+freeStart, _, _ = elements(bptest.fetch(free, 0.0))
 bptest.check(np.allclose(start, freeStart, atol=1e-6), "both tracers release at the same places")
 worst = 0.0
 for time in (0.3, 0.6, 1.0):
-    centres, spin, q = elements(fetch(anchored, time))
+    centres, spin, q = elements(bptest.fetch(anchored, time))
     worst = max(worst, float(np.abs(centres - start).max()))
 print("anchored centres within %.2e of their release centres" % worst)
 bptest.check(worst < 1e-5, "anchored centres stay: off by up to %.2e" % worst)
 # Free ones drift downstream (not yet out of the field at x = 1).
-freeCentres, freeSpin, _ = elements(fetch(free, 0.3))
+freeCentres, freeSpin, _ = elements(bptest.fetch(free, 0.3))
 drift = freeCentres[:, 0] - freeStart[:, 0]
 expected = 0.3 * (1.25 - start[:, 2] ** 2)  # u(z) = 1.25 - z^2
 bptest.check(np.all(drift > 0.8 * expected),
@@ -98,10 +92,10 @@ bptest.check(np.median(freeErr) < 0.1, "free ones spin alike: median error %.3f"
 # A super set cannot be anchored: said, and nothing output.
 anchored.Linking = "Sheet"
 with bptest.CapturedMessages() as said:
-    data = fetch(anchored, 0.5)
+    data = bptest.fetch(anchored, 0.5)
 bptest.check(said.mentions("cannot be anchored"), "Linking with Anchor is refused with a "
              "message: %s" % said.messages)
 bptest.check(data.GetNumberOfPoints() == 0, "no output when refused")
 anchored.Linking = "None"
-bptest.check(elements(fetch(anchored, 0.5))[0].shape == start.shape, "traces again after")
+bptest.check(elements(bptest.fetch(anchored, 0.5))[0].shape == start.shape, "traces again after")
 bptest.finish()

@@ -36,16 +36,6 @@ paraview.simple._DisableFirstRenderCameraReset()
 VELOCITY = ["POINTS", "velocity"]
 
 
-def fetch(proxy, time):
-    proxy.UpdatePipeline(time)
-    return servermanager.Fetch(proxy)
-
-
-def array(data, name):
-    a = data.GetPointData().GetArray(name)
-    return None if a is None else vtk_to_numpy(a)
-
-
 def points(data):
     return vtk_to_numpy(data.GetPoints().GetData()) if data.GetNumberOfPoints() else np.zeros((0, 3))
 
@@ -74,11 +64,11 @@ bptest.check(massless.Inertia == "None" and massless.ResponseTime == 0.1 and
              massless.DensityRatio == 1000 and list(massless.Gravity) == [0, 0, 0],
              "defaults: Inertia None, Response Time 0.1, Density Ratio 1000, no gravity")
 zero = tracer(vortex, VELOCITY, Inertia="Maxey-Riley", ResponseTime=0.0, Gravity=[0, 0, -9.81])
-a, b = fetch(massless, 1.0), fetch(zero, 1.0)
+a, b = bptest.fetch(massless, 1.0), bptest.fetch(zero, 1.0)
 bptest.check(np.array_equal(points(a), points(b)) and len(points(a)) == 40,
              "Response Time 0 traces the massless particles, point for point")
-bptest.check(not np.any(array(a, "SlipVelocity")) and
-             np.array_equal(array(a, "ParticleVelocity"), array(a, "Velocity")),
+bptest.check(not np.any(bptest.point_array(a, "SlipVelocity")) and
+             np.array_equal(bptest.point_array(a, "ParticleVelocity"), bptest.point_array(a, "Velocity")),
              "without inertia the slip is 0 and ParticleVelocity is the flow's")
 
 # Settling in still fluid.
@@ -87,16 +77,16 @@ beta = 3.0 / (1.0 + 2.0 * ratio)
 terminal = tau * (1.0 - beta) * g
 settling = tracer(still, ["POINTS", "still"], Inertia="Maxey-Riley", ResponseTime=tau,
                   DensityRatio=ratio, Gravity=[0, 0, g])
-start = points(fetch(settling, 0.0))
-data = fetch(settling, 0.5)
-slip = array(data, "SlipVelocity")
+start = points(bptest.fetch(settling, 0.0))
+data = bptest.fetch(settling, 0.5)
+slip = bptest.point_array(data, "SlipVelocity")
 expected = terminal * (1.0 - math.exp(-0.5 / tau))
 worst = np.abs(slip[:, 2] - expected).max()
 print("settling: terminal %.5f, slip within %.2e; sideways %.2e" %
       (terminal, worst, np.abs(slip[:, :2]).max()))
 bptest.check(worst < 0.01 * abs(terminal) and not np.any(slip[:, :2]),
              "settles at Response Time x (1 - beta) x Gravity within 1%% (off by %.2e)" % worst)
-bptest.check(np.allclose(array(data, "ParticleVelocity"), slip),
+bptest.check(np.allclose(bptest.point_array(data, "ParticleVelocity"), slip),
              "in still fluid the particle's velocity is its slip")
 sunk = points(data)[:, 2] - start[:, 2]
 fall = terminal * (0.5 - tau * (1.0 - math.exp(-0.5 / tau)))
@@ -110,8 +100,8 @@ def drift(flow, ratio):
                EmitterSize=[0.6, 0.6, 0.2])
     r = []
     for time in (0.0, 1.0):
-        p = points(fetch(t, time))
-        ids = array(servermanager.Fetch(t), "ElementId")
+        p = points(bptest.fetch(t, time))
+        ids = bptest.point_array(servermanager.Fetch(t), "ElementId")
         r.append(np.hypot(p[:, 0] - centre[0], p[:, 1] - centre[1])[np.argsort(ids)])
     Delete(t)
     return np.median(np.log(r[1] / r[0]))
@@ -130,19 +120,19 @@ for name, value in (("ResponseTime", -1.0), ("ResponseTime", float("nan")),
                     ("DensityRatio", 0.0), ("Gravity", [0, float("nan"), 0])):
     setattr(settling, name, value)
     with bptest.CapturedMessages() as said:
-        out = fetch(settling, 0.5)
+        out = bptest.fetch(settling, 0.5)
     bptest.check(said.mentions(name) and out.GetNumberOfPoints() == 0,
                  "%s = %s is refused by name: %s" % (name, value, said.messages))
     settling.ResponseTime, settling.DensityRatio, settling.Gravity = tau, ratio, [0, 0, g]
 settling.Anchor = "Centre"
 with bptest.CapturedMessages() as said:
-    out = fetch(settling, 0.5)
+    out = bptest.fetch(settling, 0.5)
 bptest.check(said.mentions("inertia has no meaning") and out.GetNumberOfPoints() == 0,
              "Anchor with inertia is refused: %s" % said.messages)
 settling.Anchor = "None"
 settling.ResponseTime = 1e-7
 with bptest.CapturedMessages() as said:
-    out = fetch(settling, 0.5)
+    out = bptest.fetch(settling, 0.5)
 bptest.check(said.mentions("close to massless") and out.GetNumberOfPoints() == 40,
              "a response time far below the step is noted: %s" % said.messages)
 settling.ResponseTime = tau
@@ -152,8 +142,8 @@ settling.ResponseTime = tau
 def heavy_points(flow, vectors):
     t = tracer(flow, vectors, Inertia="Maxey-Riley", ResponseTime=0.05, DensityRatio=20,
                Gravity=[0, 0, -1], ResampleDimensions=[17, 17, 17])
-    p = points(fetch(t, 1.0))
-    order = np.argsort(array(servermanager.Fetch(t), "ElementId"))
+    p = points(bptest.fetch(t, 1.0))
+    order = np.argsort(bptest.point_array(servermanager.Fetch(t), "ElementId"))
     Delete(t)
     return p[order]
 

@@ -54,16 +54,6 @@ CPU_MEAN, CPU_PIXELS = 0.5, 0.002
 FADE_PIXELS = 0.0005
 
 
-def fetch(proxy, time):
-    proxy.UpdatePipeline(time)
-    return servermanager.Fetch(proxy)
-
-
-def array(data, name):
-    a = data.GetPointData().GetArray(name)
-    return None if a is None else vtk_to_numpy(a)
-
-
 # --- Pose arrays ------------------------------------------------------------
 flow = AnalyticFlow(Flow="Shear Layer", Resolution=[32, 32, 32])
 flow.UpdatePipeline()
@@ -73,14 +63,14 @@ tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
                              Integrator="Runge-Kutta 4", RestorationIterations=4,
                              StepSizeUnit="Time", StepSize=0.02, Duration=1.0,
                              LifetimeRange=[100, 100], Seed=5)
-data = fetch(tracer, 0.5)
+data = bptest.fetch(tracer, 0.5)
 for name in ("Orientation", "ElementSpin", "SpinVorticityRatio"):
-    bptest.check(array(data, name) is None, "%s is off by default" % name)
+    bptest.check(bptest.point_array(data, name) is None, "%s is off by default" % name)
 tracer.OutputArrays = ["Orientation", "ElementSpin", "SpinVorticityRatio", "ElementId",
                        "Vorticity"]
-data = fetch(tracer, 0.5)
-q, spin = array(data, "Orientation"), array(data, "ElementSpin")
-ratio, ids = array(data, "SpinVorticityRatio"), array(data, "ElementId")
+data = bptest.fetch(tracer, 0.5)
+q, spin = bptest.point_array(data, "Orientation"), bptest.point_array(data, "ElementSpin")
+ratio, ids = bptest.point_array(data, "SpinVorticityRatio"), bptest.point_array(data, "ElementId")
 points = vtk_to_numpy(data.GetPoints().GetData())
 bptest.check(q is not None and q.shape[1] == 4, "Orientation has 4 components")
 bptest.check(spin is not None and spin.shape[1] == 3, "ElementSpin has 3 components")
@@ -110,8 +100,8 @@ Delete(tracer)
 flow_t, trailed = trails.trails_scene()
 spacing, length = trailed.TrailSpacing, trailed.TrailLength
 trailed.OutputArrays = ["Age", "ElementId", "Force", "Normals"]
-data = fetch(trailed, trails.TIME)
-age = array(data, "Age")
+data = bptest.fetch(trailed, trails.TIME)
+age = bptest.point_array(data, "Age")
 n, E = 8, 4
 bptest.check(age is not None, "Age is in the output with Trails on")
 if age is not None:
@@ -126,7 +116,7 @@ if age is not None:
     bptest.check(data.GetNumberOfCells() == (1 + length) * E * 4,
                  "4 cells a pose: %d" % data.GetNumberOfCells())
     # A trail pose is its element's: same id, and it lies behind the element (the flow is +x).
-    ids = array(data, "ElementId")
+    ids = bptest.point_array(data, "ElementId")
     pts = vtk_to_numpy(data.GetPoints().GetData())
     now = pts[:n * E].reshape(E, n, 3).mean(axis=1)
     behind = all(pts[n * E + n * j: n * E + n * (j + 1)].mean(axis=0)[0] <
@@ -136,10 +126,10 @@ bptest.check(np.all(np.isfinite(vtk_to_numpy(data.GetPoints().GetData()))), "fin
 
 # Trails off: the elements alone, no Age.
 trailed.Trails = 0
-plain = fetch(trailed, trails.TIME)
-bptest.check(plain.GetNumberOfPoints() == n * E and array(plain, "Age") is None,
+plain = bptest.fetch(trailed, trails.TIME)
+bptest.check(plain.GetNumberOfPoints() == n * E and bptest.point_array(plain, "Age") is None,
              "without trails: %d points, Age %s" %
-             (plain.GetNumberOfPoints(), array(plain, "Age") is not None))
+             (plain.GetNumberOfPoints(), bptest.point_array(plain, "Age") is not None))
 
 
 def trails_picture(path, with_trails):
