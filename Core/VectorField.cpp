@@ -446,86 +446,11 @@ void VectorField::gradient(
   }
 }
 
-#if BOUNDPARTICLES_SSE2
-void VectorField::gradientLanes(const float* data, std::size_t base, const float f[3],
-  const float w[3], __m128 d[3], __m128* value) const
-{
-  // The four x edges as in interpolateLanes: two overlapping loads per edge
-  // give both corners in lanes 0-2 without reading past the array. The
-  // arithmetic is gradient()'s, operation for operation, so the bits agree.
-  auto corners = [data](std::size_t corner, __m128& c0, __m128& c1)
-  {
-    const float* c = data + 3 * corner;
-    c0 = _mm_loadu_ps(c);
-    const __m128 shifted = _mm_loadu_ps(c + 2);
-    c1 = _mm_shuffle_ps(shifted, shifted, _MM_SHUFFLE(0, 3, 2, 1));
-  };
-  const std::size_t sy = this->Stride[1], sz = this->Stride[2];
-  __m128 c000, c100, c010, c110, c001, c101, c011, c111;
-  corners(base, c000, c100);
-  corners(base + sy, c010, c110);
-  corners(base + sz, c001, c101);
-  corners(base + sy + sz, c011, c111);
-  const __m128 fx = _mm_set1_ps(f[0]), fy = _mm_set1_ps(f[1]), fz = _mm_set1_ps(f[2]);
-  auto lerp = [](__m128 a, __m128 b, __m128 t)
-  { return _mm_add_ps(a, _mm_mul_ps(t, _mm_sub_ps(b, a))); };
-  const __m128 x0 = lerp(_mm_sub_ps(c100, c000), _mm_sub_ps(c110, c010), fy);
-  const __m128 x1 = lerp(_mm_sub_ps(c101, c001), _mm_sub_ps(c111, c011), fy);
-  d[0] = _mm_mul_ps(lerp(x0, x1, fz), _mm_set1_ps(w[0]));
-  const __m128 y0 = lerp(_mm_sub_ps(c010, c000), _mm_sub_ps(c110, c100), fx);
-  const __m128 y1 = lerp(_mm_sub_ps(c011, c001), _mm_sub_ps(c111, c101), fx);
-  d[1] = _mm_mul_ps(lerp(y0, y1, fz), _mm_set1_ps(w[1]));
-  const __m128 z0 = lerp(_mm_sub_ps(c001, c000), _mm_sub_ps(c101, c100), fx);
-  const __m128 z1 = lerp(_mm_sub_ps(c011, c010), _mm_sub_ps(c111, c110), fx);
-  d[2] = _mm_mul_ps(lerp(z0, z1, fy), _mm_set1_ps(w[2]));
-  if (value)
-  {
-    // interpolateLanes' operations on the corners already loaded: the same bits.
-    const __m128 y0 = lerp(lerp(c000, c100, fx), lerp(c010, c110, fx), fy);
-    const __m128 y1 = lerp(lerp(c001, c101, fx), lerp(c011, c111, fx), fy);
-    *value = lerp(y0, y1, fz);
-  }
-}
-
-void VectorField::blendLanes(__m128 d[3], const __m128 second[3], float weight)
-{
-  const __m128 weights = _mm_set1_ps(weight);
-  for (int a = 0; a < 3; ++a)
-  {
-    d[a] = _mm_add_ps(d[a], _mm_mul_ps(weights, _mm_sub_ps(second[a], d[a])));
-  }
-}
-
-void VectorField::storeLanes(const __m128 d[3], float out[3][3])
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    alignas(16) float lanes[4];
-    _mm_store_ps(lanes, d[a]);
-    std::copy_n(lanes, 3, out[a]);
-  }
-}
-#endif
-
 float VectorField::sampleWithVorticity(const float p[3], float weight, float v[3]) const
 {
   float curl[3];
   this->sampleWithCurl(p, weight, v, curl);
   return std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]);
-}
-
-void VectorField::locateWithSlopes(
-  const float p[3], std::size_t& base, float f[3], float w[3]) const
-{
-  base = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    std::size_t i;
-    this->locate(a, p[a], i, f[a]);
-    base += i * this->Stride[a];
-    // d(fraction)/dx: 0 along a flat axis, where nothing varies.
-    w[a] = this->Rectilinear[a] ? this->AxisTable[a][2 * i + 1] : this->InverseSpacing[a];
-  }
 }
 
 void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const
@@ -540,61 +465,6 @@ void VectorField::sampleWithCurl(const float p[3], float weight, float v[3], flo
   curl[0] = d[1][2] - d[2][1];
   curl[1] = d[2][0] - d[0][2];
   curl[2] = d[0][1] - d[1][0];
-}
-
-void VectorField::sampleWithDerivatives(
-  const float p[3], float weight, float v[3], float d[3][3], float dvdt[3]) const
-{
-  std::size_t base = 0;
-  float f[3], w[3];
-  this->locateWithSlopes(p, base, f, w);
-  // Each slice's velocity and gradient at p, the velocity blended as
-  // sampleCell blends the slices and the gradient as blendedGradient does.
-  float first[3], second[3];
-#if BOUNDPARTICLES_SSE2
-  if (this->Stride[0] == 1)
-  {
-    // One read of the cell's corners per slice for the value and the gradient.
-    __m128 lanes[3], value;
-    this->gradientLanes(this->FirstData, base, f, w, lanes, &value);
-    alignas(16) float out[4];
-    _mm_store_ps(out, value);
-    std::copy_n(out, 3, first);
-    if (this->SecondData)
-    {
-      __m128 later[3];
-      this->gradientLanes(this->SecondData, base, f, w, later, &value);
-      _mm_store_ps(out, value);
-      std::copy_n(out, 3, second);
-      if (weight > 0.0f)
-      {
-        blendLanes(lanes, later, weight);
-      }
-    }
-    storeLanes(lanes, d);
-  }
-  else
-#endif
-  {
-    this->blendedGradient(base, f, w, weight, d);
-    this->interpolate(this->FirstData, base, f, first);
-    if (this->SecondData)
-    {
-      this->interpolate(this->SecondData, base, f, second);
-    }
-  }
-  if (!this->SecondData)
-  {
-    std::copy_n(first, 3, v);
-    std::fill_n(dvdt, 3, 0.0f);
-    return;
-  }
-  const float rate = float(1.0 / (this->Second.time - this->First.time));
-  for (int k = 0; k < 3; ++k)
-  {
-    v[k] = first[k] + weight * (second[k] - first[k]);
-    dvdt[k] = (second[k] - first[k]) * rate;
-  }
 }
 
 void VectorField::blendedGradient(
