@@ -5,7 +5,7 @@
  *
  * A Bound Particles display makes a queue and puts its id into its input
  * request (vtkBoundParticleTracer::GPU_WORK_QUEUE); the tracer finds the
- * queue by that id and records its engine calls into it (Core/WorkQueue.h).
+ * queue by that id and records its engine calls into it (Core/Stepping/WorkQueue.h).
  * Kept in the Filters module so that every library of the plugin sees the
  * same registry. The registry holds queues weakly (a tracer holds the one it
  * records into until its next update), so a queue lives about as long as its

@@ -4,7 +4,7 @@
  * @brief The tracer's second output: the FTLE map of a lattice release.
  *
  * With Release Pattern = Lattice, element e is released at lattice point e
- * (Core/ReleaseLattice.h) generation after generation, so its ElementFTLE
+ * (Core/Release/ReleaseLattice.h) generation after generation, so its ElementFTLE
  * and ElementStretch, put back at the point it was released from, make an
  * image over the emitter box: the classic FTLE map of its release positions,
  * for the elements' ages at the time shown (with spring-free elements small

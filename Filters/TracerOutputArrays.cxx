@@ -3,6 +3,8 @@
 
 #include "ElementStretch.h"
 
+#include "ElementNormals.h"
+#include "SampleAtPositions.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"

@@ -5,6 +5,7 @@
 #include "TracerParallel.h"
 #include "vtkBoundParticleTracer.h"
 
+#include "ParticleLayout.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkSMPTools.h"

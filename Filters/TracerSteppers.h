@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file TracerSteppers.h
- * @brief The tracer's steppers (Core/Stepper.h) and which one an update uses.
+ * @brief The tracer's steppers (Core/Stepping/Stepper.h) and which one an update uses.
  *
  * The CPU engine in this process; a piece of a distributed run; or, when the
  * Engine property is GPU and the request comes from a Bound Particles display

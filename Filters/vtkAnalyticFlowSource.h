@@ -4,7 +4,7 @@
  * @brief Vector fields with known structure on a uniform grid ("Analytic Flow").
  *
  * Produces a vtkImageData with the 3-component point array "velocity" (the
- * active vectors) for one of the flows of Core/AnalyticFlows.h, laid over
+ * active vectors) for one of the flows of Core/Field/AnalyticFlows.h, laid over
  * Bounds with Resolution points per axis: solid-body rotation, the shear layer
  * of thesis Fig. 4.2, the vertical shear of Fig. 4.4, ABC flow, a
  * hurricane-like vortex, and the unsteady double gyre, which reports

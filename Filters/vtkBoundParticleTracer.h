@@ -8,13 +8,13 @@
  * Each of NumberOfElements elements is an instance of ElementShape, scaled to
  * ElementSize, placed in the emitter box, advected with the flow and restored
  * to its shape every step (docs/engine-specification.md; the maths lives in
- * the VTK-free core, Core/Engine.h). The output is a vtkPolyData of all
+ * the VTK-free core, Core/Engine/Engine.h). The output is a vtkPolyData of all
  * particles: the shape's triangles per element (its springs as lines where it
  * has no triangles, a super set's links as lines too), or vertices for one-particle
- * elements, with the point arrays of the table in Core/OutputArrays.cpp
+ * elements, with the point arrays of the table in Core/Output/OutputArrays.cpp
  * (bp::outputArrays(); OutputArrays selects them).
  *
- * Pipeline time drives the simulation (Core/TracePlan.h decides each
+ * Pipeline time drives the simulation (Core/Plan/TracePlan.h decides each
  * request). A request for a time at or after where the trace stands steps
  * forward from there; an earlier time, or any change to the filter or its
  * input, replays from the start. Steps end on the grid start + k*dt and on
@@ -30,7 +30,7 @@
  * in its block and outputs those; in each step, after resets and before
  * advection, elements move to the
  * process that owns their new centre through the global
- * vtkMultiProcessController (Core/Partition.h). Draws hash global element ids,
+ * vtkMultiProcessController (Core/Distributed/Partition.h). Draws hash global element ids,
  * so the set of elements does not depend on the number of processes.
  */
 #ifndef vtkBoundParticleTracer_h
@@ -356,7 +356,7 @@ public:
   ///@}
 
   ///@{
-  /// Heavy particles (Core/Inertia.h). NO_INERTIA: massless tracers.
+  /// Heavy particles (Core/Engine/Inertia.h). NO_INERTIA: massless tracers.
   /// MAXEY_RILEY: each particle follows the reduced Maxey-Riley equation,
   /// dv/dt = (u - v) / ResponseTime + beta Du/Dt + (1 - beta) Gravity with
   /// beta = 3 / (1 + 2 DensityRatio), starting at the flow's velocity. The
@@ -456,7 +456,7 @@ public:
   ///@{
   /**
    * Which point arrays the CPU output carries, by name (the rows of the table
-   * in Core/OutputArrays.cpp, whose flags say which are on by default: all
+   * in Core/Output/OutputArrays.cpp, whose flags say which are on by default: all
    * but the pose arrays and the deformation arrays), as a
    * vtkDataArraySelection, the way VTK's readers select theirs. A name the
    * table lacks is refused with a warning. An array left out is not computed,
@@ -512,7 +512,7 @@ public:
    * making them, and outputs no particles: only the field data
    * BoundParticlesWorkQueue (the queue's id), TimeStep, ElementSize and
    * SimulationTime, and two points spanning the field carrying every array of
-   * the CPU output at the range it is expected to span (Core/OutputArrays.h). Any
+   * the CPU output at the range it is expected to span (Core/Output/OutputArrays.h). Any
    * other value (0, or no key) gets the CPU result; the key's value is part of
    * what makes the output up to date, so the two never mix.
    */

@@ -36,7 +36,7 @@
  * GpuTemplate.h (the template's tables), GpuState.h (the state textures),
  * GpuFieldCache.h (resident time steps), PassTimer.h (per-pass GPU times),
  * all GL objects held by the owners of GlObjects.h. GpuStepper.h puts the
- * engine behind the Stepper verbs (Core/Stepper.h).
+ * engine behind the Stepper verbs (Core/Stepping/Stepper.h).
  */
 #ifndef BoundParticles_GpuEngine_h
 #define BoundParticles_GpuEngine_h

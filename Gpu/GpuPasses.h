@@ -23,6 +23,7 @@
 #include "Engine.h"
 #include "GlObjects.h"
 #include "GpuPath.h"
+#include "ParticleLayout.h"
 #include "PassTimer.h"
 #include "ShaderSource.h"
 
@@ -76,8 +77,8 @@ struct FusedStep
   /// The fused step for a system, or none (groupElements 0) where its
   /// elements do not fit a workgroup of `maxThreads` invocations and
   /// `sharedBytes` of shared memory, or a super set's links join them.
-  static FusedStep of(const Parameters& parameters, int particles, bool springs, int maxThreads,
-    int sharedBytes);
+  static FusedStep of(
+    const Parameters& parameters, int particles, bool springs, int maxThreads, int sharedBytes);
 };
 
 /// One pass being set up: its program in use, texture units handed out in turn.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file GpuStepper.h
- * @brief The GPU engine behind the stepper verbs (Core/Stepper.h).
+ * @brief The GPU engine behind the stepper verbs (Core/Stepping/Stepper.h).
  *
  * What a renderer holds in its own GL context: it replays the calls the
  * tracer recorded into a bp::WorkQueue (EngineCall::applyTo) onto this

@@ -3,6 +3,7 @@
 // own pass are in GpuSystemPasses.cpp.
 #include "GpuSystem.h"
 
+#include "Quaternion.h"
 #include "SuperSet.h"
 
 #include <algorithm>

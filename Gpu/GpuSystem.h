@@ -7,7 +7,7 @@
  * compiled for the path the context allows (GpuPath.h) and the state
  * textures, with the field's resident time steps. A step runs the kernels in
  * the order of docs/engine-specification.md, as the CPU engine
- * (Core/Engine.h) runs its stages: the trail's record (a copy, when the step
+ * (Core/Engine/Engine.h) runs its stages: the trail's record (a copy, when the step
  * starts on the trail's interval), reset, advect, K restoration iterations
  * (each followed, in a super set, by a pass over the links), the reposition
  * test, finalize, and with Parameters::trackPoses the pose. On the compute
@@ -27,6 +27,7 @@
 #include "GpuPasses.h"
 #include "GpuState.h"
 #include "GpuTemplate.h"
+#include "ParticleLayout.h"
 
 #include <array>
 #include <initializer_list>

@@ -23,7 +23,7 @@
  *
  * Colouring by a scalar goes through the mapper's lookup table (its range
  * and colours, sampled into a table texture): any array of the tracer's
- * output that has a colour source in Core/OutputArrays.h (every one but
+ * output that has a colour source in Core/Output/OutputArrays.h (every one but
  * Normals; Velocity, Orientation, ElementSpin and ElementStretch by
  * magnitude or a component). ElementStretch and ElementFTLE are fitted in
  * the vertex shader from the element's particles against the template's

@@ -33,7 +33,7 @@ uniform int bpOrientation; // Parameters::orientation: 0 Fixed, 1 Random, 2 Alon
 uniform vec3 bpFrameRow0;
 uniform vec3 bpFrameRow1;
 uniform vec3 bpFrameRow2;
-// A super set (Core/SuperSet.h) is released as one (bpLinked and
+// A super set (Core/Elements/SuperSet.h) is released as one (bpLinked and
 // bpDrawElement are in bp_shared.glsl): every element sits at its lattice site.
 uniform sampler2D bpLatticeSites; // per element: the lattice site
 
@@ -66,7 +66,7 @@ bool bpSeedFits(vec3 c);
 uniform sampler2D bpSeedPoints;
 uniform int bpSeedCount; // 0: the emitter box
 
-// Release Pattern = Lattice (Core/ReleaseLattice.h): element e at point e,
+// Release Pattern = Lattice (Core/Release/ReleaseLattice.h): element e at point e,
 // x fastest; a generation's lifetime is element 0's.
 // (bpLattice is in bp_shared.glsl.)
 uniform ivec3 bpLatticeCounts;
@@ -85,7 +85,7 @@ vec3 bpLatticePoint(int e)
   return bpLatticeOrigin + vec3(i) * bpLatticeSpacing;
 }
 
-// Release Weights (Core/ReleaseWeights.h): (|w|, 0, 0) per grid point,
+// Release Weights (Core/Release/ReleaseWeights.h): (|w|, 0, 0) per grid point,
 // sampled as a time step; candidate k is taken with probability w / max.
 uniform sampler3D bpReleaseWeights;
 uniform bool bpWeighted;
@@ -432,7 +432,7 @@ bool bpFinite(vec3 p)
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where
 // the two coincide. Each kernel scales it by the particle's share. The one
-// GLSL definition, springForce in Core/SpringForce.h the one C++ one.
+// GLSL definition, springForce in Core/Elements/SpringForce.h the one C++ one.
 bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force)
 {
   vec3 d = pa - pb;
@@ -447,7 +447,7 @@ bool bpSpringForce(vec3 pa, vec3 pb, float rest, float stiffness, out vec3 force
   return false;
 }
 
-// ---- The rotation fit (Core/ShapeMatching.h) -------------------------------
+// ---- The rotation fit (Core/Elements/ShapeMatching.h) -------------------------------
 // The largest float: a larger (or NaN) squared step is no step.
 const float bpLargestFloat = 3.40282347e38;
 
@@ -555,7 +555,7 @@ vec4 bpFitRotation(vec3 a0, vec3 a1, vec3 a2, vec4 q, int iterations)
   return q;
 }
 
-// ---- Poses and spins (Core/Pose.h) ------------------------------------------
+// ---- Poses and spins (Core/Elements/Pose.h) ------------------------------------------
 
 // momentOf: the centre c of element e's particles (bpPositionOf) and their
 // moment A = sum (x_i - c)(s r_i)^T against the rest shape, by rows.

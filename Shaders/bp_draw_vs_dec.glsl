@@ -31,12 +31,12 @@ uniform int bpTrail;           // 1 in a trail pose's draw, 0 otherwise
 uniform float bpTrailAge;      // in a trail pose's draw: the shown time minus the slot's
 uniform int bpLinksPerRow;
 uniform int bpDrawLinks;       // 1 in the link draw, 0 in the element draw
-uniform int bpScalarMode;      // a BP_COLOR_* of Core/OutputArrays.h (ColorSource)
+uniform int bpScalarMode;      // a BP_COLOR_* of Core/Output/OutputArrays.h (ColorSource)
 uniform int bpComponent;       // for vector sources: a component, or -1 for the magnitude
 uniform vec2 bpScalarRange;    // the lookup table's range (Layer's: grid-local)
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
-// ElementStretch and ElementFTLE (bp::StretchFit, Core/ElementStretch.h):
+// ElementStretch and ElementFTLE (bp::StretchFit, Core/Elements/ElementStretch.h):
 uniform sampler2D bpStretchRest; // template particle i at (i % width, i / width): rest - mean
 uniform int bpStretchRestWidth;
 uniform mat3 bpStretchInverse;   // Aqq^+ over the template's span (symmetric)

@@ -1,5 +1,5 @@
 // Step 6 with Parameters::trackPoses, per element (Engine::updatePose,
-// Core/Pose.h): the pose, the best rigid fit of the particles after the step
+// Core/Elements/Pose.h): the pose, the best rigid fit of the particles after the step
 // warm-started from the pose before it, and the spin, the turn from the one
 // to the other over the step, with the vorticity meter's reading against the
 // curl of the field at the centre at the step's end. An element whose

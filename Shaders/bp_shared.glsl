@@ -22,7 +22,7 @@ ivec2 bpParticleTexel(int e, int i)
   return block * bpElementGrid + bpElementTexel(e);
 }
 
-// ---- Normals (bp::elementNormals in Core/ElementNormals.cpp) ----------------
+// ---- Normals (bp::elementNormals in Core/Elements/ElementNormals.cpp) ----------------
 // A particle's normal is the normalised sum of the unit normals of the
 // triangles it is a corner of, added in triangle order; (0, 0, 1) where the
 // sum is zero. The cross product and lengths are written out as the CPU
@@ -47,7 +47,7 @@ vec3 bpNormalOfSum(vec3 sum)
   return len > 0.0 ? sum / len : vec3(0.0, 0.0, 1.0);
 }
 
-// ---- Counter-based random numbers (Core/CounterHash.h) ----------------------
+// ---- Counter-based random numbers (Core/Base/CounterHash.h) ----------------------
 uint bpHash(uint seed, uint element, uint generation, uint draw)
 {
   uvec4 v = uvec4(seed, element, generation, draw) * BP_HASH_MULTIPLIER + BP_HASH_INCREMENT;
@@ -71,13 +71,13 @@ float bpDraw(int e, float generation, uint draw)
   return float(h >> 8u) * (1.0 / 16777216.0);
 }
 
-// ---- Lifetime (lifetimeDraw in Core/Engine.h) ------------------------------
+// ---- Lifetime (lifetimeDraw in Core/Engine/Engine.h) ------------------------------
 uniform float bpLifetimeMin;
 uniform float bpLifetimeMax;
-// A super set (Core/SuperSet.h) is released as one: every element draws as
+// A super set (Core/Elements/SuperSet.h) is released as one: every element draws as
 // element 0 does.
 uniform bool bpLinked;
-// Release Pattern = Lattice (Core/ReleaseLattice.h): a generation's lifetime
+// Release Pattern = Lattice (Core/Release/ReleaseLattice.h): a generation's lifetime
 // is element 0's.
 uniform bool bpLattice;
 

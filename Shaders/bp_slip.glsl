@@ -1,4 +1,4 @@
-// Heavy particles (Core/Inertia.h; engine specification 2.2), per particle:
+// Heavy particles (Core/Engine/Inertia.h; engine specification 2.2), per particle:
 // the slip pass, after the reset and before advection, steps each
 // particle's slip velocity and writes the displacement it adds to the
 // tracer's (bp_advect.glsl reads it); the share pass, after the test, gives

@@ -92,7 +92,7 @@ JITTER = args.jitter  # of a cell, per axis, interior points only (0.1 keeps eve
 
 
 def gyre(xyz, t):
-    """The double gyre on [0,2] x [0,1] (as Core/AnalyticFlows.cpp) with a
+    """The double gyre on [0,2] x [0,1] (as Core/Field/AnalyticFlows.cpp) with a
     weak swirl in z that is 0 on z = 0 and z = 1; float32, N x 3."""
     x, y, z = xyz[:, 0], xyz[:, 1], xyz[:, 2]
     A, eps, omega = 0.1, 0.25, 2 * numpy.pi / 10.0

@@ -32,7 +32,7 @@ COUNTS = (120, 60)  # the lattice over [0, 2] x [0, 1]: Lattice's own counts for
 
 def lattice_points(counts=COUNTS, box=(0.0, 2.0, 0.0, 1.0)):
     """Cell centres of counts[0] x counts[1] cells over `box`, x fastest
-    (as Core/ReleaseLattice places Release Pattern = Lattice)."""
+    (as Core/Release/ReleaseLattice places Release Pattern = Lattice)."""
     sx = (box[1] - box[0]) / counts[0]
     sy = (box[3] - box[2]) / counts[1]
     x = box[0] + (np.arange(counts[0]) + 0.5) * sx

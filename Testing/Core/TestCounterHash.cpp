@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of Core/CounterHash.h: the counter-based draws every release hashes.
+// Tests of Core/Base/CounterHash.h: the counter-based draws every release hashes.
 #include "CounterHash.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of Core/ElementNormals.h: per-particle normals of whole elements.
+// Tests of Core/Elements/ElementNormals.h: per-particle normals of whole elements.
 #include "ElementNormals.h"
 #include "ElementTemplate.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The element stretch fit (Core/ElementStretch.h): a known linear map applied
+// The element stretch fit (Core/Elements/ElementStretch.h): a known linear map applied
 // to every built-in template is recovered; flat templates are measured in
 // their own plane; one particle, coincident particles and non-finite
 // positions give finite values; the FTLE and the element's age.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "ParticleLayout.h"
 
 #include <cstdint>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Heavy particles on the CPU engine (Core/Inertia.h), against the physics:
+// Heavy particles on the CPU engine (Core/Engine/Inertia.h), against the physics:
 // settling in still fluid, drag relaxation in a uniform flow, the radial
 // drift out of (and a bubble's into) a vortex, the massless limit, a
 // response time far below the step, rigid elements, preferential

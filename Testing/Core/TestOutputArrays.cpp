@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The table of output arrays (Core/OutputArrays.h).
+// The table of output arrays (Core/Output/OutputArrays.h).
 #include "OutputArrays.h"
 
 #include "TestHelpers.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Progress and abort while a renderer runs a work queue's calls
-// (Core/ReplayProgress.h), and where the queue stands after a stop
+// (Core/Stepping/ReplayProgress.h), and where the queue stands after a stop
 // (WorkQueue::stoppedAt).
 #include "ReplayProgress.h"
 #include "WorkQueue.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of Core/ShapeMatching.h: fitRotation, the one rotation extraction of
+// Tests of Core/Elements/ShapeMatching.h: fitRotation, the one rotation extraction of
 // shape matching and the pose fit (both engines; the GPU twin's parity is in
 // Testing/Gpu/TestGpuEngine.cpp).
 #include "ElementTemplate.h"

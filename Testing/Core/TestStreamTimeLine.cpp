@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The in situ time line (Core/StreamTimeLine.h) and the trace plan it sets
+// The in situ time line (Core/Plan/StreamTimeLine.h) and the trace plan it sets
 // (TracePlan::setStreamTimes): one step at a time, never asking for the past.
 #include "FieldCache.h"
 #include "StepSchedule.h"

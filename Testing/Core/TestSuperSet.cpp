@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Super sets (Core/SuperSet.h): lattices, links and their rest lengths, and
+// Super sets (Core/Elements/SuperSet.h): lattices, links and their rest lengths, and
 // the CPU engine's linked step.
 #include "AnalyticFlows.h"
 #include "Engine.h"

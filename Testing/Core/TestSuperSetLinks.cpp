@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The order in which a super set's links are listed once (Core/SuperSetLinks.h):
+// The order in which a super set's links are listed once (Core/Elements/SuperSetLinks.h):
 // the CPU output's link cells and the display's link draw both follow it, so
 // it must stay the order they had: element by element, +u before +v.
 #include "SuperSet.h"

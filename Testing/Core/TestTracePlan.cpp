@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The trace plan (Core/TracePlan.h) and its field cache (Core/FieldCache.h):
+// The trace plan (Core/Plan/TracePlan.h) and its field cache (Core/Field/FieldCache.h):
 // replay or continue, which time steps a request needs, keeps and reads ahead.
 #include "FieldCache.h"
 #include "TracePlan.h"

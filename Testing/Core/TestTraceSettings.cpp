@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Parameter resolution (Core/TraceSettings.h): automatic step, element size,
+// Parameter resolution (Core/Plan/TraceSettings.h): automatic step, element size,
 // emitter and lifetimes, and the messages for settings that cannot work.
 #include "TraceSettings.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Which array a field's velocity is, by its name (Core/VelocityNames.h).
+// Which array a field's velocity is, by its name (Core/Field/VelocityNames.h).
 #include "VelocityNames.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The tracer's FTLE map (Filters/TracerFtleMap.h) from an engine released on
 // a lattice: the image is the lattice (world coordinates), point e holds
-// element e's ElementFTLE and ElementStretch as Core/ElementStretch computes
+// element e's ElementFTLE and ElementStretch as Core/Elements/ElementStretch computes
 // them, hidden elements are masked, and any other release gives an empty image.
 #include "TracerFtleMap.h"
 

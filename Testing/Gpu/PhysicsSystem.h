@@ -18,7 +18,7 @@
 
 namespace bptest
 {
-/// One engine or the other behind the stepper verbs (Core/Stepper.h), with
+/// One engine or the other behind the stepper verbs (Core/Stepping/Stepper.h), with
 /// the readbacks the checks need.
 class System
 {

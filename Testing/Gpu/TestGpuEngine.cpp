@@ -10,6 +10,7 @@
 #include "HeadlessContext.h"
 #include "Pose.h"
 #include "ReleaseWeights.h"
+#include "SampleAtPositions.h"
 #include "WorkQueue.h"
 
 #include <epoxy/gl.h>

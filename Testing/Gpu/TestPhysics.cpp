@@ -5,6 +5,7 @@
 #include "Engine.h"
 #include "GpuStepper.h"
 #include "PhysicsSystem.h"
+#include "Quaternion.h"
 #include "SharedContext.h"
 #include "Stepper.h"
 

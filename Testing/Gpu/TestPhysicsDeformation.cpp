@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Physics checks of ElementStretch and ElementFTLE (Core/ElementStretch.h), on
+// Physics checks of ElementStretch and ElementFTLE (Core/Elements/ElementStretch.h), on
 // the CPU engine and on the GPU engine: each engine's positions, lifetimes
 // and generations (read back from the GPU) go through the one Core fit the
 // output uses. A spring-free cross of six particles in a steady linear strain

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Heavy particles (Core/Inertia.h) on both engines: settling in still fluid,
+// Heavy particles (Core/Engine/Inertia.h) on both engines: settling in still fluid,
 // the drift out of (and a bubble's into) a vortex, the massless limit; and
 // the GPU engine against the CPU engine, positions and slips, for each
 // integrator and restoration, steady and unsteady, with gravity, on the

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The step of a super set (Core/SuperSet.h): the elements' own step in
+// The step of a super set (Core/Elements/SuperSet.h): the elements' own step in
 // phases over the whole system, with an averaged Jacobi pass over the links
 // after every restoration iteration, so linked elements wait for each other.
 #include "Engine.h"

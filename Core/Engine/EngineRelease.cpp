@@ -5,6 +5,7 @@
 // whole system and, in a distributed step, the elements that are due.
 #include "CounterHash.h"
 #include "Engine.h"
+#include "Quaternion.h"
 
 #include <algorithm>
 #include <limits>

@@ -4,6 +4,7 @@
 // EngineMigration): motion trails, normals for output, and the walk along a
 // step schedule.
 #include "Engine.h"
+#include "ElementNormals.h"
 #include "LargeVector.h"
 
 #include <algorithm>

@@ -2,6 +2,7 @@
 #include "TraceSettings.h"
 
 #include "ElementStretch.h"
+#include "Quaternion.h"
 
 #include <algorithm>
 #include <cmath>

@@ -34,7 +34,7 @@ enum class Restoration
   AveragedJacobi = 0,
   Jacobi,
   GaussSeidel,
-  ShapeMatching ///< best rigid fit (Core/ShapeMatching.h), goals blended by shapeStiffness
+  ShapeMatching ///< best rigid fit (Core/Elements/ShapeMatching.h), goals blended by shapeStiffness
 };
 
 /// How an element is turned when it is placed (Engine::place).
@@ -59,7 +59,7 @@ enum class Anchor
   Centre    ///< its centre kept where it was released; it still turns and deforms
 };
 
-/// Whether particles carry inertia (Core/Inertia.h): None, the massless
+/// Whether particles carry inertia (Core/Engine/Inertia.h): None, the massless
 /// tracer; MaxeyRiley, the reduced Maxey-Riley equation with drag, the
 /// fluid's acceleration with added mass, and gravity with buoyancy.
 enum class Inertia
@@ -138,7 +138,7 @@ struct Parameters
   /// rotation, so elements may also shear and stretch, by up to beta.
   bool linearShapeMatching = false;
   float linearBlend = 0.5f; ///< beta, in [0, 1]
-  /// Super sets (Core/SuperSet.h): springs between neighbouring elements.
+  /// Super sets (Core/Elements/SuperSet.h): springs between neighbouring elements.
   /// Linked elements are released together at their lattice sites, with one
   /// orientation and one lifetime, and are not reset when they leave the field
   /// (that would tear the structure): the structure lives out its lifetime.
@@ -151,7 +151,7 @@ struct Parameters
   /// (resolveSettings makes numberOfElements its size()).
   ReleaseLattice lattice;
   Anchor anchor = Anchor::None;
-  /// Heavy particles (Core/Inertia.h): with Inertia::MaxeyRiley and a
+  /// Heavy particles (Core/Engine/Inertia.h): with Inertia::MaxeyRiley and a
   /// response time tau > 0 each particle keeps its slip velocity (its
   /// velocity less the flow's) and drifts from the flow by it.
   Inertia inertia = Inertia::None;

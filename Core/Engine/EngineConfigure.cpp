@@ -5,6 +5,7 @@
 #include "EigenRows.h"
 #include "Engine.h"
 #include "LargeVector.h"
+#include "Quaternion.h"
 
 #include <Eigen/Eigenvalues>
 

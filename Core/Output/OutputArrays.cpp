@@ -68,7 +68,7 @@ const std::vector<OutputArray>& outputArrays()
     row(Id::SpinVorticityRatio, "SpinVorticityRatio", 1, V::Float, Role::Plain, Src::ElementState,
       C::SpinRatio, R::SpinRatio, OffByDefault | NeedsPoses),
     row(Id::Age, "Age", 1, V::Float, Role::Plain, Src::TrailAge, C::Age, R::TrailAge, NoFlags),
-    // Deformation: a fit per element per output (Core/ElementStretch.h).
+    // Deformation: a fit per element per output (Core/Elements/ElementStretch.h).
     row(Id::ElementStretch, "ElementStretch", 2, V::Float, Role::Plain, Src::ElementState,
       C::Stretch, R::Stretch, OffByDefault),
     row(Id::ElementFTLE, "ElementFTLE", 1, V::Float, Role::Plain, Src::ElementState, C::Ftle,

@@ -46,15 +46,11 @@
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
 
-#include "ElementNormals.h"
 #include "ElementTemplate.h"
 #include "EngineParameters.h"
 #include "Inertia.h"
 #include "Parallel.h"
-#include "ParticleLayout.h"
-#include "Quaternion.h"
 #include "ReleaseWeights.h"
-#include "SampleAtPositions.h"
 #include "StepSchedule.h"
 #include "SuperSet.h"
 #include "VectorField.h"
@@ -132,7 +128,7 @@ public:
   void updateNormals(const RangeRunner& run);
 
   /// The elements this engine holds: all of them, or a piece's share in a
-  /// distributed run (Core/Partition.h).
+  /// distributed run (Core/Distributed/Partition.h).
   std::size_t elementCount() const { return this->Ids.size(); }
   std::size_t particlesPerElement() const { return this->Shape.particleCount(); }
   std::size_t particleCount() const { return this->elementCount() * this->particlesPerElement(); }
@@ -321,8 +317,8 @@ private:
   struct StepWeights
   {
     float start, middle, end;
-    bool releasing; ///< the step overlaps the release window (releasesAt)
-    bool resets;    ///< due elements are placed in this step (not done by resetDue())
+    bool releasing;      ///< the step overlaps the release window (releasesAt)
+    bool resets;         ///< due elements are placed in this step (not done by resetDue())
     InertiaStep inertia; ///< the slip's step (with carriesInertia())
   };
   /// The step [t, t + h)'s StepWeights; takes back resetDue()'s mark.
