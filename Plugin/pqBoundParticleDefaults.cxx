@@ -45,29 +45,24 @@ bool lacksVectors(vtkSMProxy* tracer)
   return !name || !*name;
 }
 
-/// The emitter box its domains give before the input has bounds: Emitter
-/// Size -2 -2 -2 in ParaView 5.11 and 5.13 (the extents of bounds [1, -1] per
-/// axis), a box of size 0 at the origin in ParaView 6.
+/// Whether every element of `name` on `proxy` is still its XML default: what
+/// the bounds domains (BoundParticleBoundsDomain) leave while the input has
+/// no bounds.
+bool atXmlDefault(vtkSMProxy* proxy, const char* name)
+{
+  vtkSMProperty* property = proxy->GetProperty(name);
+  return property && property->IsValueDefault();
+}
+
+/// The emitter box as made before the input had bounds (Emitter Size -1: the
+/// field, whenever the trace runs; the panel shows the bounds once known).
 bool placeholderBox(vtkSMProxy* tracer)
 {
-  vtkSMPropertyHelper size(tracer, "EmitterSize"), center(tracer, "EmitterCenter");
-  if (size.GetNumberOfElements() != 3 || center.GetNumberOfElements() != 3)
-  {
-    return false;
-  }
-  bool unset = true, empty = true;
-  for (unsigned int k = 0; k < 3; ++k)
-  {
-    unset = unset && size.GetAsDouble(k) == -2.0;
-    empty = empty && size.GetAsDouble(k) == 0.0 && center.GetAsDouble(k) == 0.0;
-  }
-  return unset || empty;
+  return atXmlDefault(tracer, "EmitterSize") && atXmlDefault(tracer, "EmitterCenter");
 }
 
 /// The Seed Type proxies (the SeedType property's list) whose bounds-based
-/// defaults were taken before the input had bounds: a Point Cloud's radius
-/// of -0.2 (ParaView 5.11 and 5.13) or 0 (6), a Line from (1, 1, 1) to
-/// (-1, -1, -1) or from the origin to itself.
+/// properties are as made before the input had bounds.
 std::vector<vtkSMProxy*> placeholderSeeds(vtkSMProxy* tracer)
 {
   std::vector<vtkSMProxy*> placeholders;
@@ -77,27 +72,25 @@ std::vector<vtkSMProxy*> placeholderSeeds(vtkSMProxy* tracer)
   {
     vtkSMProxy* seeds = list->GetProxy(i);
     const char* name = seeds ? seeds->GetXMLName() : nullptr;
-    if (name && std::strcmp(name, "PointCloud") == 0 &&
-      vtkSMPropertyHelper(seeds, "Radius").GetAsDouble() <= 0.0)
+    const bool cloud = name && std::strcmp(name, "PointCloud") == 0 &&
+      atXmlDefault(seeds, "Center") && atXmlDefault(seeds, "Radius");
+    const bool line = name && std::strcmp(name, "Line") == 0 && atXmlDefault(seeds, "Point1") &&
+      atXmlDefault(seeds, "Point2");
+    if (cloud || line)
     {
       placeholders.push_back(seeds);
     }
-    else if (name && std::strcmp(name, "Line") == 0)
-    {
-      vtkSMPropertyHelper p1(seeds, "Point1"), p2(seeds, "Point2");
-      bool same = true, reversed = true;
-      for (unsigned int k = 0; k < 3; ++k)
-      {
-        same = same && p1.GetAsDouble(k) == p2.GetAsDouble(k);
-        reversed = reversed && p1.GetAsDouble(k) > p2.GetAsDouble(k);
-      }
-      if (same || reversed)
-      {
-        placeholders.push_back(seeds);
-      }
-    }
   }
   return placeholders;
+}
+
+/// Whether `input` (the tracer's Input proxy) has no points yet: made before
+/// it ran, the tracer's data-dependent properties hold placeholders.
+bool hasNoDataYet(vtkSMProxy* tracer, vtkSMSourceProxy* input)
+{
+  const unsigned int port = vtkSMPropertyHelper(tracer, "Input").GetOutputPort();
+  vtkPVDataInformation* info = input->GetDataInformation(port);
+  return !info || info->GetNumberOfPoints() == 0;
 }
 } // namespace
 
@@ -215,10 +208,14 @@ void pqBoundParticleDefaults::complete(pqPipelineSource* source)
   {
     return;
   }
+  auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(tracer, "Input").GetAsProxy());
+  if (!input || !hasNoDataYet(tracer, input))
+  {
+    return; // made after its input ran: its defaults came from the data
+  }
   const bool vectors = lacksVectors(tracer), box = placeholderBox(tracer);
   const std::vector<vtkSMProxy*> seeds = placeholderSeeds(tracer);
-  auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(tracer, "Input").GetAsProxy());
-  if ((!vectors && !box && seeds.empty()) || !input)
+  if (!vectors && !box && seeds.empty())
   {
     return;
   }

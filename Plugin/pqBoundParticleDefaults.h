@@ -6,13 +6,13 @@
  *
  * ParaView picks a filter's data-dependent defaults (the Vectors array, the
  * emitter box from the input's bounds) when the filter is made. From the
- * Python shell that is usually before the input has run, so the panel showed
- * no Vectors and an Emitter Size of -2 -2 -2 (the extents of bounds never
- * set) for good, and so did the Seed Types' Point Cloud and Line (a radius
- * of -0.2, a line from (1, 1, 1) to (-1, -1, -1)). This autostart watches
- * the tracers that get registered; one that holds those placeholders has its
- * input updated and those properties set from its data, as if it had been
- * made after the update.
+ * Python shell that is usually before the input has run: the bounds domains
+ * (BoundParticleBoundsDomain) then leave the XML's defaults (an Emitter Size
+ * of -1 -1 -1, which spans the field when the trace runs; the Point Cloud's
+ * and Line's placeholders), and Vectors finds no array. This autostart
+ * watches the tracers that get registered; one made before its input had
+ * data and still holding those defaults has its input updated and those
+ * properties set from its data, as if it had been made after the update.
  *
  * On the Apply that first shows a tracer made in the GUI, it also keeps the
  * field input's display in that view as context that does not cover the
