@@ -80,8 +80,8 @@ std::string signature(const std::vector<vtkDataArray*>& arrays)
   std::ostringstream text;
   for (vtkDataArray* array : arrays)
   {
-    text << array->GetName() << ":" << array->GetNumberOfComponents() << ":"
-         << array->GetDataType() << ";";
+    text << array->GetName() << ":" << array->GetNumberOfComponents() << ":" << array->GetDataType()
+         << ";";
   }
   return text.str();
 }
@@ -182,8 +182,7 @@ bool PieceLayout::blockWithGhosts(int piece, int extent[6]) const
   for (int a = 0; a < 3; ++a)
   {
     extent[2 * a] = std::max(owned[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
-    extent[2 * a + 1] =
-      std::min(owned[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
+    extent[2 * a + 1] = std::min(owned[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
   }
   return true;
 }

@@ -72,9 +72,8 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
       return gatherError; // every process fails alike
     }
     input = gathered;
-    vectors = vectors && vectors->GetName()
-      ? gathered->GetPointData()->GetArray(vectors->GetName())
-      : vectors;
+    vectors = vectors && vectors->GetName() ? gathered->GetPointData()->GetArray(vectors->GetName())
+                                            : vectors;
   }
   bp::GridGeometry grid;
   bp::FieldSlice slice;

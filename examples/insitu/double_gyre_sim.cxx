@@ -214,7 +214,8 @@ std::string writeStep(const std::string& dir, vtkImageData* grid, int step, int 
   return std::string(name) + ".pvti";
 }
 
-void writeCollection(const std::string& dir, const std::vector<std::pair<double, std::string>>& steps)
+void writeCollection(
+  const std::string& dir, const std::vector<std::pair<double, std::string>>& steps)
 {
   std::ofstream pvd(dir + "/flow.pvd");
   pvd << "<VTKFile type=\"Collection\" version=\"0.1\"><Collection>\n";
