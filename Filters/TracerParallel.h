@@ -78,6 +78,21 @@ public:
   vtkSmartPointer<vtkImageData> cutPiece(vtkImageData* whole);
 
   /**
+   * In situ each process holds the piece its simulation gave it (any extent
+   * of the announced whole extent), not the block with ghost layers it asked
+   * for: `held` itself where every process holds its block and GhostCells
+   * layers, else this process's block with its layers, the point arrays
+   * gathered from every process's piece (collective; TracerPieceGather.cxx).
+   * Null with `error` set on every process where the pieces do not cover a
+   * block or hold different arrays.
+   */
+  vtkSmartPointer<vtkImageData> gatherPiece(vtkImageData* held, std::string& error);
+
+  /// Piece `piece`'s block of the whole extent with GhostCells layers;
+  /// false where it owns nothing (more processes than blocks).
+  bool blockWithGhosts(int piece, int extent[6]) const;
+
+  /**
    * Gathers every process's block of the field (its owned extent's bounds)
    * into the partition and the whole field's domain, and sets `offset` to the
    * whole grid's first point. Collective; a process that could not read its

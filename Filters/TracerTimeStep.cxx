@@ -58,6 +58,23 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
     vectors = resampled->GetPointData()->GetArray(requested.c_str());
     association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   }
+  vtkSmartPointer<vtkImageData> gathered;
+  if (!resampled && this->Plan.streaming() && this->Layout.distributed() &&
+    vtkImageData::SafeDownCast(input) &&
+    config.vectors.association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    // In situ a process holds the piece its simulation gave it: its block
+    // and ghost layers are gathered from every process's piece.
+    std::string gatherError;
+    gathered = this->Layout.gatherPiece(vtkImageData::SafeDownCast(input), gatherError);
+    if (!gatherError.empty())
+    {
+      return gatherError; // every process fails alike
+    }
+    input = gathered;
+    vectors = vectors && vectors->GetName() ? gathered->GetPointData()->GetArray(vectors->GetName())
+                                            : vectors;
+  }
   bp::GridGeometry grid;
   bp::FieldSlice slice;
   int extent[6];

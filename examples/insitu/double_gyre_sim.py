@@ -8,8 +8,14 @@ Particle Tracer. Run it with pvpython (or pvbatch):
 
     pvpython double_gyre_sim.py --plugin /path/to/BoundParticles.so --steps 50 --out out/
 
+Under MPI (`mpiexec -n R pvbatch --symmetric double_gyre_sim.py ...`) each
+process computes and hands over only its piece of the grid: a slab along x
+with one ghost layer of points on each side, as a finite-difference solver
+would hold it; the tracer gathers what its own blocks need from the pieces.
+
 With `--write-steps DIR` it also writes every step it hands over to DIR
-(`flow.pvd`), so that the same steps can be traced post hoc.
+(`flow.pvd` over `flow_NNNN.pvti`, over a `flow_NNNN_R.vti` piece per
+process), so that the same steps can be traced post hoc.
 """
 import argparse
 import math
@@ -19,6 +25,8 @@ import numpy
 from paraview.catalyst import bridge
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -33,11 +41,27 @@ DIMS = (64, 32, 2)
 BOUNDS = (0.0, 2.0, 0.0, 1.0, 0.0, 0.05)
 
 
-def double_gyre(t):
-    """The double gyre's velocity on the grid at time t (A = 0.1, eps = 0.25, omega = pi/5)."""
+GHOST_LAYERS = 1  # points each process holds beyond its own slab
+
+
+def piece_extent(rank, ranks):
+    """This process's piece of the whole point extent: a slab along x of the
+    cells (split evenly), with GHOST_LAYERS more points where the grid goes on."""
+    cells = DIMS[0] - 1
+    first, last = cells * rank // ranks, cells * (rank + 1) // ranks
+    return [max(0, first - GHOST_LAYERS), min(DIMS[0] - 1, last + GHOST_LAYERS),
+            0, DIMS[1] - 1, 0, DIMS[2] - 1]
+
+
+def spacing(axis):
+    return (BOUNDS[2 * axis + 1] - BOUNDS[2 * axis]) / (DIMS[axis] - 1)
+
+
+def double_gyre(t, extent):
+    """The double gyre's velocity on the piece at time t (A = 0.1, eps = 0.25, omega = pi/5)."""
     a, eps, omega = 0.1, 0.25, math.pi / 5.0
-    x = numpy.linspace(BOUNDS[0], BOUNDS[1], DIMS[0])
-    y = numpy.linspace(BOUNDS[2], BOUNDS[3], DIMS[1])
+    x = BOUNDS[0] + spacing(0) * numpy.arange(extent[0], extent[1] + 1)
+    y = BOUNDS[2] + spacing(1) * numpy.arange(extent[2], extent[3] + 1)
     xx, yy = numpy.meshgrid(x, y, indexing="xy")
     at = eps * math.sin(omega * t)
     bt = 1.0 - 2.0 * eps * math.sin(omega * t)
@@ -46,18 +70,42 @@ def double_gyre(t):
     u = -math.pi * a * numpy.sin(math.pi * f) * numpy.cos(math.pi * yy)
     v = math.pi * a * numpy.cos(math.pi * f) * numpy.sin(math.pi * yy) * dfdx
     layer = numpy.stack([u, v, numpy.zeros_like(u)], axis=-1).reshape(-1, 3)
-    return numpy.concatenate([layer] * DIMS[2])
+    return numpy.concatenate([layer] * (extent[5] - extent[4] + 1))
 
 
-def grid_at(t):
+def grid_at(t, extent):
     image = vtkImageData()
-    image.SetDimensions(*DIMS)
+    image.SetExtent(*extent)
     image.SetOrigin(BOUNDS[0], BOUNDS[2], BOUNDS[4])
-    image.SetSpacing(*[(BOUNDS[2 * a + 1] - BOUNDS[2 * a]) / (DIMS[a] - 1) for a in range(3)])
-    velocity = numpy_to_vtk(numpy.ascontiguousarray(double_gyre(t), dtype=numpy.float32), deep=1)
+    image.SetSpacing(*[spacing(a) for a in range(3)])
+    velocity = numpy_to_vtk(numpy.ascontiguousarray(double_gyre(t, extent), dtype=numpy.float32), deep=1)
     velocity.SetName("velocity")
     image.GetPointData().AddArray(velocity)
     return image
+
+
+def write_step(folder, grid, step, rank, ranks):
+    """Writes this process's piece as DIR/flow_NNNN_R.vti and, on process 0,
+    DIR/flow_NNNN.pvti over every process's piece; returns the .pvti's name."""
+    os.makedirs(folder, exist_ok=True)
+    name = "flow_%04d" % step
+    writer = vtkXMLImageDataWriter()
+    writer.SetInputData(grid)
+    writer.SetFileName(os.path.join(folder, "%s_%d.vti" % (name, rank)))
+    writer.Write()
+    if rank == 0:
+        with open(os.path.join(folder, name + ".pvti"), "w") as pvti:
+            pvti.write('<VTKFile type="PImageData" version="0.1"><PImageData WholeExtent="%s" '
+                       'GhostLevel="0" Origin="%r %r %r" Spacing="%r %r %r">\n'
+                       % (" ".join(str(e) for e in [0, DIMS[0] - 1, 0, DIMS[1] - 1, 0, DIMS[2] - 1]),
+                          BOUNDS[0], BOUNDS[2], BOUNDS[4], spacing(0), spacing(1), spacing(2)))
+            pvti.write('<PPointData><PDataArray type="Float32" Name="velocity" NumberOfComponents="3"/>'
+                       '</PPointData>\n')
+            for piece in range(ranks):
+                pvti.write('<Piece Extent="%s" Source="%s_%d.vti"/>\n'
+                           % (" ".join(str(e) for e in piece_extent(piece, ranks)), name, piece))
+            pvti.write("</PImageData></VTKFile>\n")
+    return name + ".pvti"
 
 
 os.makedirs(args.out, exist_ok=True)
@@ -67,22 +115,18 @@ os.environ["BOUNDPARTICLES_INSITU_EVERY"] = str(args.every)
 os.environ["BOUNDPARTICLES_INSITU_LAST"] = str(args.steps - 1)
 bridge.initialize()
 bridge.add_pipeline(os.path.join(os.path.dirname(os.path.abspath(__file__)), "trace_elements.py"), 2)
+controller = vtkMultiProcessController.GetGlobalController()
+rank, ranks = (controller.GetLocalProcessId(), controller.GetNumberOfProcesses()) if controller else (0, 1)
+extent = piece_extent(rank, ranks)
 written = []
 for step in range(args.steps):
     t = step * args.dt
-    grid = grid_at(t)  # the solver's state at this step
+    grid = grid_at(t, extent)  # the solver's state at this step: this process's piece
     bridge.coprocess(t, step, grid, name="input", wholeExtent=[0, DIMS[0] - 1, 0, DIMS[1] - 1, 0, DIMS[2] - 1])
     if args.write_steps:
-        from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
-        os.makedirs(args.write_steps, exist_ok=True)
-        writer = vtkXMLImageDataWriter()
-        writer.SetInputData(grid)
-        name = "flow_%04d.vti" % step
-        writer.SetFileName(os.path.join(args.write_steps, name))
-        writer.Write()
-        written.append((t, name))
+        written.append((t, write_step(args.write_steps, grid, step, rank, ranks)))
 bridge.finalize()
-if args.write_steps:
+if args.write_steps and rank == 0:
     with open(os.path.join(args.write_steps, "flow.pvd"), "w") as pvd:
         pvd.write('<VTKFile type="Collection" version="0.1"><Collection>\n')
         for t, name in written:

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// In situ under MPI: each process holds the piece its simulation gave it,
+// not the block with ghost layers the tracer asked for. PieceLayout::gatherPiece
+// gathers each process's block from the pieces (docs/design.md, "In situ").
+#include "TracerParallel.h"
+
+#include "vtkDataArray.h"
+#include "vtkExtentTranslator.h"
+#include "vtkImageData.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Extent = std::array<int, 6>;
+
+bool isEmpty(const Extent& e)
+{
+  return e[0] > e[1] || e[2] > e[3] || e[4] > e[5];
+}
+
+Extent intersection(const Extent& a, const Extent& b)
+{
+  Extent c;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    c[2 * axis] = std::max(a[2 * axis], b[2 * axis]);
+    c[2 * axis + 1] = std::min(a[2 * axis + 1], b[2 * axis + 1]);
+  }
+  return c;
+}
+
+bool contains(const Extent& outer, const Extent& inner)
+{
+  return isEmpty(inner) || intersection(outer, inner) == inner;
+}
+
+vtkIdType pointsIn(const Extent& e)
+{
+  return isEmpty(e) ? 0 : vtkIdType(e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
+}
+
+std::string describe(const Extent& e)
+{
+  std::ostringstream text;
+  text << "[" << e[0] << " " << e[1] << " " << e[2] << " " << e[3] << " " << e[4] << " " << e[5]
+       << "]";
+  return text.str();
+}
+
+/// The point arrays that travel: all but VTK's ghost marks, which describe
+/// the held piece, not the gathered one.
+std::vector<vtkDataArray*> travelling(vtkImageData* image)
+{
+  std::vector<vtkDataArray*> arrays;
+  vtkPointData* pd = image->GetPointData();
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = pd->GetArray(i);
+    if (array && array->GetName() && std::string(array->GetName()) != "vtkGhostType")
+    {
+      arrays.push_back(array);
+    }
+  }
+  std::sort(arrays.begin(), arrays.end(),
+    [](vtkDataArray* a, vtkDataArray* b) { return std::string(a->GetName()) < b->GetName(); });
+  return arrays;
+}
+
+/// What every process's arrays must share: names, components and types.
+std::string signature(const std::vector<vtkDataArray*>& arrays)
+{
+  std::ostringstream text;
+  for (vtkDataArray* array : arrays)
+  {
+    text << array->GetName() << ":" << array->GetNumberOfComponents() << ":" << array->GetDataType()
+         << ";";
+  }
+  return text.str();
+}
+
+int totalComponents(const std::vector<vtkDataArray*>& arrays)
+{
+  int total = 0;
+  for (vtkDataArray* array : arrays)
+  {
+    total += array->GetNumberOfComponents();
+  }
+  return total;
+}
+
+/// Calls visit(id in `image`, index in `box`) for each point of `box`, x fastest.
+template <typename Visit>
+void forEachPoint(vtkImageData* image, const Extent& box, Visit visit)
+{
+  vtkIdType index = 0;
+  for (int k = box[4]; k <= box[5]; ++k)
+    for (int j = box[2]; j <= box[3]; ++j)
+      for (int i = box[0]; i <= box[1]; ++i)
+      {
+        int ijk[3] = { i, j, k };
+        visit(image->ComputePointId(ijk), index++);
+      }
+}
+
+/// The values of `box` in `image`'s arrays: point after point, each point's
+/// arrays in order.
+std::vector<double> pack(vtkImageData* image, const Extent& box)
+{
+  const std::vector<vtkDataArray*> arrays = travelling(image);
+  const int width = totalComponents(arrays);
+  std::vector<double> values(std::size_t(pointsIn(box)) * width);
+  forEachPoint(image, box,
+    [&](vtkIdType id, vtkIdType index)
+    {
+      double* to = values.data() + std::size_t(index) * width;
+      for (vtkDataArray* array : arrays)
+      {
+        array->GetTuple(id, to);
+        to += array->GetNumberOfComponents();
+      }
+    });
+  return values;
+}
+
+void unpack(const std::vector<double>& values, const Extent& box, vtkImageData* image,
+  std::vector<char>& covered)
+{
+  const std::vector<vtkDataArray*> arrays = travelling(image);
+  const int width = totalComponents(arrays);
+  forEachPoint(image, box,
+    [&](vtkIdType id, vtkIdType index)
+    {
+      const double* from = values.data() + std::size_t(index) * width;
+      for (vtkDataArray* array : arrays)
+      {
+        array->SetTuple(id, from);
+        from += array->GetNumberOfComponents();
+      }
+      covered[std::size_t(id)] = 1;
+    });
+}
+
+/// An image over `extent` with `like`'s geometry and empty copies of its arrays.
+vtkSmartPointer<vtkImageData> emptyLike(vtkImageData* like, const Extent& extent)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(like->GetOrigin());
+  image->SetSpacing(like->GetSpacing());
+  image->SetExtent(const_cast<int*>(extent.data()));
+  for (vtkDataArray* array : travelling(like))
+  {
+    auto copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(image->GetNumberOfPoints());
+    image->GetPointData()->AddArray(copy);
+  }
+  return image;
+}
+} // namespace
+
+namespace bpvtk
+{
+
+bool PieceLayout::blockWithGhosts(int piece, int extent[6]) const
+{
+  vtkNew<vtkExtentTranslator> translator;
+  int owned[6];
+  if (!translator->PieceToExtentThreadSafe(piece, this->Pieces, 0,
+        const_cast<int*>(this->WholeExtent), owned, vtkExtentTranslator::BLOCK_MODE, 0))
+  {
+    return false; // more processes than blocks: this one owns nothing
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    extent[2 * a] = std::max(owned[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
+    extent[2 * a + 1] = std::min(owned[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkImageData> PieceLayout::gatherPiece(vtkImageData* held, std::string& error)
+{
+  const int P = this->Pieces, me = this->Piece;
+  Extent mine;
+  held->GetExtent(mine.data());
+  std::vector<int> all(std::size_t(6) * P);
+  this->Controller->AllGather(mine.data(), all.data(), 6);
+  std::vector<Extent> holds(static_cast<std::size_t>(P)), needs(static_cast<std::size_t>(P));
+  bool everyoneHolds = true;
+  for (int q = 0; q < P; ++q)
+  {
+    std::copy(all.begin() + 6 * q, all.begin() + 6 * (q + 1), holds[std::size_t(q)].begin());
+    Extent& need = needs[std::size_t(q)];
+    if (!this->blockWithGhosts(q, need.data()))
+    {
+      need = { 0, -1, 0, -1, 0, -1 };
+    }
+    everyoneHolds = everyoneHolds && contains(holds[std::size_t(q)], need);
+  }
+  if (everyoneHolds)
+  {
+    return held; // nothing needs to travel (every piece has its block and ghosts)
+  }
+  // Every process must send what it holds in one layout.
+  const std::string mineSigned = signature(travelling(held));
+  const std::string first = firstNonEmpty(this->Controller, mineSigned);
+  error = this->agree(mineSigned == first ? std::string()
+                                          : "The processes' pieces of the input hold different "
+                                            "point arrays; every piece must hold the same ones.");
+  if (!error.empty())
+  {
+    return nullptr;
+  }
+  const Extent& want = needs[std::size_t(me)];
+  vtkSmartPointer<vtkImageData> piece = emptyLike(held, want);
+  std::vector<char> covered(std::size_t(pointsIn(want)), 0);
+  const Extent own = intersection(mine, want);
+  if (!isEmpty(own))
+  {
+    unpack(pack(held, own), own, piece, covered);
+  }
+  // Pairwise, in one global order of pairs (blocking sends never wait on
+  // each other in a cycle); only pairs with something to send talk.
+  constexpr int tag = 8732;
+  const int width = totalComponents(travelling(held));
+  for (int q = 0; q < P; ++q)
+  {
+    if (q == me)
+    {
+      continue;
+    }
+    const Extent out = intersection(mine, needs[std::size_t(q)]);
+    const Extent in = intersection(holds[std::size_t(q)], want);
+    auto send = [&]
+    {
+      if (!isEmpty(out))
+      {
+        std::vector<double> values = pack(held, out);
+        this->Controller->Send(values.data(), vtkIdType(values.size()), q, tag);
+      }
+    };
+    auto receive = [&]
+    {
+      if (!isEmpty(in))
+      {
+        std::vector<double> values(std::size_t(pointsIn(in)) * width);
+        this->Controller->Receive(values.data(), vtkIdType(values.size()), q, tag);
+        unpack(values, in, piece, covered);
+      }
+    };
+    if (me < q)
+    {
+      send();
+      receive();
+    }
+    else
+    {
+      receive();
+      send();
+    }
+  }
+  const bool whole = std::find(covered.begin(), covered.end(), 0) == covered.end();
+  error = this->agree(whole ? std::string()
+                            : "The processes' pieces of the input do not cover the extent " +
+        describe(want) + " that process " + std::to_string(me) +
+        " traces in; together they must cover the whole extent.");
+  return error.empty() ? piece : nullptr;
+}
+
+} // namespace bpvtk
