@@ -95,16 +95,7 @@ bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
           incoming.insert(incoming.end(), buffer.begin(), buffer.end());
         }
       };
-      if (me < q)
-      {
-        send();
-        receive();
-      }
-      else
-      {
-        receive();
-        send();
-      }
+      bpvtk::exchangeInOrder(me, q, send, receive);
     }
     return incoming;
   };

@@ -33,6 +33,23 @@ class vtkMultiProcessController;
 namespace bpvtk
 {
 
+/// One pairwise exchange of this process `me` with process `q` over blocking
+/// sends: the lower of the two sends first, so neither waits on the other.
+template <typename Send, typename Receive>
+void exchangeInOrder(int me, int q, const Send& send, const Receive& receive)
+{
+  if (me < q)
+  {
+    send();
+    receive();
+  }
+  else
+  {
+    receive();
+    send();
+  }
+}
+
 /**
  * Where one process failed and the others did not, every process must fail
  * before the next collective call, or the others would wait in it forever:

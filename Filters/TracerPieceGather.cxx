@@ -257,16 +257,7 @@ vtkSmartPointer<vtkImageData> PieceLayout::gatherPiece(vtkImageData* held, std::
         unpack(values, in, piece, covered);
       }
     };
-    if (me < q)
-    {
-      send();
-      receive();
-    }
-    else
-    {
-      receive();
-      send();
-    }
+    exchangeInOrder(me, q, send, receive);
   }
   const bool whole = std::find(covered.begin(), covered.end(), 0) == covered.end();
   error = this->agree(whole ? std::string()
