@@ -19,6 +19,8 @@
 #include "vtkTrivialProducer.h"
 #include "vtkVersionMacros.h"
 
+#include <sstream>
+
 namespace
 {
 /// How far upstream the search for a trivial producer goes.
@@ -135,4 +137,50 @@ int vtkBoundParticleTracer::RequestStreamInformation(
       ? this->ProbeField(inInfo, { time })
       : bpvtk::FieldProbe());
   return 1;
+}
+
+bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::skipPresentStep(const std::string& error)
+{
+  const bool kept = this->Plan.streaming() && !this->Decision.replay &&
+    this->stepper().cursor.valid && this->Stream.times().size() > 1;
+  if (!kept)
+  {
+    return Pass::fail(error);
+  }
+  const double skipped = this->Stream.present();
+  this->Stream.dropPresent();
+  this->Plan.setStreamTimes(this->Stream.times());
+  std::ostringstream text;
+  text << error << " The step at t = " << skipped
+       << " is skipped: the trace stays at t = " << this->Stream.present()
+       << " and the next good step goes on from there.";
+  return { Pass::Skipped, -1, text.str() };
+}
+
+void vtkBoundParticleTracer::vtkInternals::relocate(
+  const bp::GridGeometry& grid, const bp::FieldSlice& slice)
+{
+  const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
+  if (this->WarnedGridChange)
+  {
+    return;
+  }
+  // Once per configuration, as the mask's: a simulation that adapts its
+  // grid would say it every step.
+  this->WarnedGridChange = true;
+  std::ostringstream text;
+  text << "The input's grid changed at t = " << this->Stream.present() << " (" << this->Grid.dims[0]
+       << " x " << this->Grid.dims[1] << " x " << this->Grid.dims[2] << " points to "
+       << grid.dims[0] << " x " << grid.dims[1] << " x " << grid.dims[2]
+       << ", or their coordinates): the elements keep their places and go on in the new grid. "
+          "Until then the field blends the last step, resampled onto the new grid, with the "
+          "present one";
+  if (beyond > 0)
+  {
+    text << " (" << beyond << " of " << grid.pointCount()
+         << " new points lie beyond the old grid; there the present step's velocity holds)";
+  }
+  text << "; elements outside the new grid are released again. Later changes of grid are "
+          "followed alike, unannounced.";
+  vtkWarningWithObjectMacro(this->Owner, << text.str());
 }

@@ -293,7 +293,7 @@ vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
 }
 
 std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
-  bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice)
+  bp::GridGeometry grid, std::array<double, 3> offset, const bp::FieldSlice& slice)
 {
   // In world coordinates first, so how far from the origin the data lies counts too.
   const std::string worldError = grid.validate();
@@ -305,19 +305,11 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   // whole grid's, in parallel), so float positions keep their precision far
   // from the world origin.
   grid.translate(offset);
-  if (this->Cache.size() > 0)
+  const std::string gridError =
+    this->Cache.size() > 0 ? this->matchHeldGrid(grid, offset, slice) : std::string();
+  if (!gridError.empty())
   {
-    const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
-    bool same = grid.sameAs(this->Grid, tolerance);
-    for (int a = 0; a < 3; ++a)
-    {
-      same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
-    }
-    if (!same)
-    {
-      return "The input's time steps do not share one grid; every time step must have the same "
-             "dimensions and point coordinates.";
-    }
+    return gridError;
   }
   this->Offset = offset;
   this->Grid = grid;
@@ -329,5 +321,46 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   this->Cache.insert(
     this->RequestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
   this->ReadThisUpdate = true;
+  if (this->Plan.streaming() && this->Schedule && !this->Decision.replay)
+  {
+    // Steps end on every data time step, as post hoc: the present one is
+    // new (a step skipped before it got here adds none).
+    this->Schedule->addBreak(this->Plan.inputTimes()[this->RequestIndex]);
+  }
+  return std::string();
+}
+
+std::string vtkBoundParticleTracer::vtkInternals::matchHeldGrid(
+  bp::GridGeometry& grid, std::array<double, 3>& offset, const bp::FieldSlice& slice)
+{
+  const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
+  bool same = grid.sameAs(this->Grid, tolerance);
+  for (int a = 0; a < 3; ++a)
+  {
+    same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
+  }
+  if (same)
+  {
+    return std::string();
+  }
+  if (!this->Plan.streaming() || this->Layout.distributed())
+  {
+    return "The input's time steps do not share one grid; every time step must have the same "
+           "dimensions and point coordinates" +
+      std::string(this->Plan.streaming() ? " (in situ under MPI, too)." : ".");
+  }
+  // In situ the engine's frame stays the held steps' (after a grid change,
+  // the first step's): the elements keep their coordinates.
+  std::array<double, 3> shift;
+  for (int a = 0; a < 3; ++a)
+  {
+    shift[a] = this->Offset[a] - offset[a];
+  }
+  grid.translate(shift);
+  offset = this->Offset;
+  if (!grid.sameAs(this->Grid, tolerance))
+  {
+    this->relocate(grid, slice);
+  }
   return std::string();
 }

@@ -173,7 +173,8 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.inertia = bp::Inertia(this->Inertia);
   p.responseTime = float(this->ResponseTime);
   p.densityRatio = float(this->DensityRatio);
-  std::transform(this->Gravity, this->Gravity + 3, p.gravity.begin(), [](double g) { return float(g); });
+  std::transform(
+    this->Gravity, this->Gravity + 3, p.gravity.begin(), [](double g) { return float(g); });
   if (this->ReleaseWindow)
   {
     p.releaseStart = this->ReleaseStart;
@@ -526,11 +527,11 @@ int vtkBoundParticleTracer::EndUpdatePass(
     this->SetProgressShiftScale(I.progress(), 0.0);
     return 1;
   }
-  if (pass.kind == Pass::Failed)
+  if (pass.kind != Pass::Aborted)
   {
     vtkErrorMacro(<< pass.message);
   }
-  I.endFailedUpdate();
+  I.endFailedUpdate(pass.kind == Pass::Skipped);
   request->Remove(SDDP::CONTINUE_EXECUTING());
   output->Initialize();
   return 1;
@@ -574,7 +575,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   const std::string error = I.takeTimeStep(config, this->InputStep(inputVector));
   if (!error.empty())
   {
-    return end(Pass::fail(error));
+    return end(I.skipPresentStep(error));
   }
   Pass pass = I.replayPending() ? I.replay(config, inputVector) : Pass();
   if (pass.kind == Pass::Done)
@@ -674,9 +675,9 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResetWhen: " << this->ResetWhen << "\n";
   os << indent << "Anchor: " << this->Anchor << "\n";
-  os << indent << "Inertia: " << this->Inertia << " (tau " << this->ResponseTime << ", density ratio "
-     << this->DensityRatio << ", gravity " << this->Gravity[0] << " " << this->Gravity[1] << " "
-     << this->Gravity[2] << ")\n";
+  os << indent << "Inertia: " << this->Inertia << " (tau " << this->ResponseTime
+     << ", density ratio " << this->DensityRatio << ", gravity " << this->Gravity[0] << " "
+     << this->Gravity[1] << " " << this->Gravity[2] << ")\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
      << this->TrailSpacing << " steps)\n";

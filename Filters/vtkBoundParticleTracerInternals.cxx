@@ -63,6 +63,7 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->WarnedWeights = false;
   this->WarnedSeeds = false;
   this->WarnedOutOfPlane = false;
+  this->WarnedGridChange = false;
   this->Steppers.invalidate();
 }
 
@@ -80,8 +81,13 @@ void vtkBoundParticleTracer::vtkInternals::forgetTrace()
   this->LastRequested = -1;
 }
 
-void vtkBoundParticleTracer::vtkInternals::endFailedUpdate()
+void vtkBoundParticleTracer::vtkInternals::endFailedUpdate(bool skipped)
 {
+  if (skipped)
+  {
+    this->Continuing = false;
+    return;
+  }
   this->clear();
   this->invalidate();
 }
@@ -130,11 +136,6 @@ void vtkBoundParticleTracer::vtkInternals::decideInSitu(double target)
     this->stepper().cursor.valid = false;
     this->Decision =
       this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
-  }
-  else if (this->Schedule && !this->Decision.replay)
-  {
-    // Steps end on every data time step, as post hoc: the present one is new.
-    this->Schedule->addBreak(this->Plan.inputTimes().back());
   }
   // Upstream is only ever asked for the present.
   this->RequestIndex = int(this->Plan.inputTimes().size()) - 1;

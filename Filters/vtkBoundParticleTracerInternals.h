@@ -70,7 +70,8 @@ struct TracerPass
     Done,     ///< go on to the next step
     NeedStep, ///< end this pass asking upstream for time step `index`
     Failed,   ///< stop with `message` as the error
-    Aborted   ///< the user aborted: stop quietly
+    Aborted,  ///< the user aborted: stop quietly
+    Skipped   ///< in situ, a step not taken: `message` as the error, the trace kept
   };
   Kind kind = Done;
   int index = -1;
@@ -126,6 +127,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
+  bool WarnedGridChange = false; ///< in situ, a change of grid was reported
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
   /// says each once, not again at the next request for information).
@@ -183,18 +185,28 @@ struct vtkBoundParticleTracer::vtkInternals
   /// held time step is stale, and upstream holds nothing known.
   void forgetTrace();
   /// After a failed or aborted update: the trace and the held time steps
-  /// are dropped, so the next update replays from what upstream gives.
-  void endFailedUpdate();
+  /// are dropped, so the next update replays from what upstream gives;
+  /// after a skipped in situ step (skipPresentStep) they are kept.
+  void endFailedUpdate(bool skipped = false);
+  /// In situ, the present step's data could not be taken (`error`): the step
+  /// leaves the time line and the trace keeps its elements, so the next step
+  /// goes on from the last good one (a Skipped pass). A failure as post hoc
+  /// where there is no trace to keep (the first step).
+  Pass skipPresentStep(const std::string& error);
+  /// In situ, the present step's grid (in the engine's frame) differs from
+  /// the held steps': they are resampled onto it, and the elements keep
+  /// their places. Warns of the first change.
+  void relocate(const bp::GridGeometry& grid, const bp::FieldSlice& slice);
 
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
   void decide(const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo);
-  /// The input time step this pass asks upstream for (RequestUpdateExtent),
-  /// none for a steady input.
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
   void decideInSitu(double target);
+  /// The input time step this pass asks upstream for (RequestUpdateExtent),
+  /// none for a steady input.
   void requestTimeStep(vtkInformation* inInfo);
   /// This pass ends asking upstream for `index`: the next pass continues
   /// the same update.
@@ -264,7 +276,12 @@ private:
   double sliceTime(vtkDataObject* input);
   /// The grid check and the cache insert for a time step just read.
   std::string keepTimeStep(
-    bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice);
+    bp::GridGeometry grid, std::array<double, 3> offset, const bp::FieldSlice& slice);
+  /// A time step's grid and offset against the held steps': empty when they
+  /// match. In situ a changed grid is put in the held steps' frame and
+  /// re-located (relocate); post hoc, and in situ under MPI, it is an error.
+  std::string matchHeldGrid(
+    bp::GridGeometry& grid, std::array<double, 3>& offset, const bp::FieldSlice& slice);
 
   // Replaying: resolving the settings and configuring (TracerReplay.cxx).
   /// The Seed Source's or the Seed Type's points, with their warnings.
