@@ -9,6 +9,7 @@ spacing) warns and goes on in the new grid with every element kept.
 """
 import os
 import sys
+import tempfile
 
 import numpy
 
@@ -190,4 +191,39 @@ for name, grid_at in (("once", lambda k: OTHER if k >= BAD else FIRST),
     warned = [m for m in said.messages if "grid changed at t = %g" % times[BAD if name == "once" else 2] in m]
     bptest.check(len(warned) == 1 and len(said.messages) == 1,
                  "grid changed %s: one warning, at the first change (%s)" % (name, said.messages))
+
+
+# The GPU engine behind a Bound Particles display follows the same changes of
+# grid: its picture is the one of a trace on one grid, pixel for pixel.
+def gpu_picture(name, grid_at):
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **dict(ROTATION, Engine="GPU", NumberOfElements=400))
+    view = CreateRenderView(ViewSize=[240, 240], OrientationAxesVisibility=0)
+    shown = Show(tracer, view)
+    shown.SetRepresentationType("Bound Particles")
+    view.CameraPosition = [0, 0, 6]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 1, 0]
+    for k, t in enumerate(times):
+        feed.GetClientSideObject().SetOutput(rotation(grid_at(k)), t)
+        feed.MarkModified(feed)
+        view.ViewTime = t
+        Render(view)
+    path = os.path.join(folder, name + ".png")
+    SaveScreenshot(path, view)
+    Delete(view)
+    return path
+
+
+folder = tempfile.mkdtemp()
+gpu_picture("warm-up", lambda k: FIRST)  # a session's first view draws apart
+one_grid = gpu_picture("one-grid", lambda k: FIRST)
+bptest.check(bptest.covered_fraction(one_grid) > 0.005,
+             "the GPU picture shows elements (%g covered)" % bptest.covered_fraction(one_grid))
+for name, grid_at in (("once", lambda k: OTHER if k >= BAD else FIRST),
+                      ("back-and-forth", lambda k: OTHER if k % 3 == 2 else FIRST)):
+    mean, differing = bptest.image_difference(one_grid, gpu_picture(name, grid_at))
+    print("GPU, the grid changed %s: %g of the pixels differ from one grid's picture" % (name, differing))
+    bptest.check(differing <= 0.0005, "GPU, the grid changed %s: the picture of one grid (%g of the "
+                 "pixels differ, mean %g)" % (name, differing, mean))
 bptest.finish()
