@@ -9,7 +9,9 @@
 // llvmpipe, a CPU renderer, so its rows say how the passes' work grows, not
 // what a real GPU takes. The target is at most 1.3 times the massless step.
 //
-//   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick]
+//   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick] [--cpu-only]
+//
+// --cpu-only skips the GPU engine's rows (what a CPU change is measured by).
 #include "BenchFields.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -156,7 +158,7 @@ void printGpuRows(
 int main(int argc, char** argv)
 {
   int repeats = 5, resolution = 128, steps = 20;
-  bool quick = false;
+  bool quick = false, cpuOnly = false;
   for (int a = 1; a < argc; ++a)
   {
     if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
@@ -165,6 +167,8 @@ int main(int argc, char** argv)
       resolution = std::max(8, std::atoi(argv[++a]));
     else if (!std::strcmp(argv[a], "--quick"))
       quick = true;
+    else if (!std::strcmp(argv[a], "--cpu-only"))
+      cpuOnly = true;
   }
   if (quick)
   {
@@ -206,6 +210,9 @@ int main(int argc, char** argv)
     }
   }
   std::fflush(stdout);
-  printGpuRows(fields, jobs, repeats, steps, quick);
+  if (!cpuOnly)
+  {
+    printGpuRows(fields, jobs, repeats, steps, quick);
+  }
   return 0;
 }
