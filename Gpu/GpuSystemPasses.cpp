@@ -67,7 +67,7 @@ void GpuSystem::slipInputs(GpuPass& pass, double t, double h) const
   const VectorField* field = this->fieldCache.field();
   const float weights[3] = { field ? field->timeWeight(t) : 0.0f, 0.0f, 0.0f };
   pass.setVec3("bpSlipWeights", weights);
-  // As VectorField::sampleWithDerivatives: in double, then float.
+  // As VectorField::sampleAlong: in double, then float.
   const bool unsteady = field && !field->isSteady();
   pass.setFloat("bpTimeRate", unsteady ? float(1.0 / (field->secondSlice().time -
                                                        field->firstSlice().time))

@@ -372,18 +372,27 @@ void bpGradient(sampler3D field, ivec3 a, vec3 f, vec3 w, out vec3 d[3])
   d[2] = (z0 + f.y * (z1 - z0)) * w.z;
 }
 
+// The fractions' derivatives along each axis in the cell at `a`
+// (VectorField::locateWithSlopes): 0 along a flat axis (its inverse spacing
+// is 0), where nothing varies.
+vec3 bpSlopes(ivec3 a)
+{
+  vec3 w;
+  for (int k = 0; k < 3; ++k)
+  {
+    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(a[k], k), 0).y : bpInverseSpacing[k];
+  }
+  return w;
+}
+
 // The gradient d[a][c] = dv_c/dx_a of the trilinear interpolant in the cell
 // that holds p, each time step's blended with `weight` as bpSample blends
 // the values (VectorField::blendedGradient).
 void bpBlendedGradient(vec3 p, float weight, out vec3 d[3])
 {
-  vec3 f, w;
+  vec3 f;
   ivec3 a = bpLocateCell(p, f);
-  for (int k = 0; k < 3; ++k)
-  {
-    // 0 along a flat axis (its inverse spacing is 0), where nothing varies.
-    w[k] = bpRectilinear[k] ? texelFetch(bpAxes, ivec2(a[k], k), 0).y : bpInverseSpacing[k];
-  }
+  vec3 w = bpSlopes(a);
   bpGradient(bpField0, a, f, w, d);
   if (bpUnsteady && weight > 0.0)
   {

@@ -15,32 +15,51 @@ uniform vec3 bpSlipGravity;
 uniform float bpTimeRate;      // 1 / (t1 - t0) of the field's slices; 0 when steady
 uniform bool bpShareSlip;      // the element is restored (springs, shape matching or links)
 
-// VectorField::sampleWithDerivatives: u, d[a][c] = du_c/dx_a and du/dt at p.
-void bpSampleWithDerivatives(vec3 p, float weight, out vec3 u, out vec3 d[3], out vec3 dudt)
+// One slice's derivative along a direction in the cell at `a` with
+// fractions f, the fractions moving at g = slope * q (Core/Field/
+// TrilinearAlong.h: the interpolation's lerps carried with their derivative).
+vec3 bpSliceAlong(sampler3D field, ivec3 a, vec3 f, vec3 g)
 {
-  bpBlendedGradient(p, weight, d);
+  vec3 c[8];
+  bpCorners(field, a, c);
+  vec3 step00 = c[1] - c[0], step10 = c[3] - c[2], step01 = c[5] - c[4], step11 = c[7] - c[6];
+  vec3 x00 = c[0] + f.x * step00, x10 = c[2] + f.x * step10;
+  vec3 x01 = c[4] + f.x * step01, x11 = c[6] + f.x * step11;
+  vec3 across0 = x10 - x00, across1 = x11 - x01;
+  vec3 y0 = x00 + f.y * across0, y1 = x01 + f.y * across1;
+  vec3 d00 = g.x * step00, d10 = g.x * step10, d01 = g.x * step01, d11 = g.x * step11;
+  vec3 e0 = (d00 + f.y * (d10 - d00)) + g.y * across0;
+  vec3 e1 = (d01 + f.y * (d11 - d01)) + g.y * across1;
+  return (e0 + f.z * (e1 - e0)) + g.z * (y1 - y0);
+}
+
+// VectorField::sampleAlong with a SlipStepper: u and du/dt at p, and the
+// derivative (q . grad) u along q = (1 - beta) u + s, each slice's blended.
+void bpSampleAlong(vec3 p, float weight, vec3 s, out vec3 u, out vec3 dudt, out vec3 along)
+{
+  vec3 f;
+  ivec3 a = bpLocateCell(p, f);
   vec3 first = bpSampleSlice(bpField0, p);
-  if (!bpUnsteady)
+  u = first;
+  dudt = vec3(0.0);
+  if (bpUnsteady)
   {
-    u = first;
-    dudt = vec3(0.0);
-    return;
+    vec3 second = bpSampleSlice(bpField1, p);
+    u = first + weight * (second - first);
+    dudt = (second - first) * bpTimeRate;
   }
-  vec3 second = bpSampleSlice(bpField1, p);
-  u = first + weight * (second - first);
-  dudt = (second - first) * bpTimeRate;
+  vec3 g = bpSlopes(a) * (bpSlipBuoyancy * u + s);
+  along = bpSliceAlong(bpField0, a, f, g);
+  if (bpUnsteady && weight > 0.0)
+  {
+    along += weight * (bpSliceAlong(bpField1, a, f, g) - along);
+  }
 }
 
 // slipStep: the new slip and the displacement it adds, from the slip `s`.
-void bpSlipStep(vec3 u, vec3 d[3], vec3 dudt, inout vec3 s, out vec3 move)
+void bpSlipStep(vec3 dudt, vec3 along, inout vec3 s, out vec3 move)
 {
-  vec3 terminal;
-  for (int c = 0; c < 3; ++c)
-  {
-    float material = dudt[c] + (u.x * d[0][c] + u.y * d[1][c] + u.z * d[2][c]);
-    float turning = s.x * d[0][c] + s.y * d[1][c] + s.z * d[2][c];
-    terminal[c] = bpSlipTau * (bpSlipBuoyancy * (bpSlipGravity[c] - material) - turning);
-  }
+  vec3 terminal = bpSlipTau * (bpSlipBuoyancy * (bpSlipGravity - dudt) - along);
   vec3 off = s - terminal;
   move = bpStep * terminal + bpSlipMemory * off;
   s = terminal + bpSlipDecay * off;
@@ -59,9 +78,9 @@ void bpSlipParticle(int i, vec4 element, vec3 p, inout vec3 s, out vec3 move)
   {
     return;
   }
-  vec3 u, d[3], dudt;
-  bpSampleWithDerivatives(p, bpSlipWeights.x, u, d, dudt);
-  bpSlipStep(u, d, dudt, s, move);
+  vec3 u, dudt, along;
+  bpSampleAlong(p, bpSlipWeights.x, s, u, dudt, along);
+  bpSlipStep(dudt, along, s, move);
 }
 
 void bpSlipPass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 move,

@@ -89,9 +89,9 @@ void Engine::advectParticle(
 void Engine::advectHeavyParticle(
   const VectorField& field, const StepWeights& w, double h, float p[3], float slip[3]) const
 {
-  float u[3], d[3][3], dudt[3], move[3];
-  field.sampleWithDerivatives(p, w.start, u, d, dudt);
-  slipStep(w.inertia, u, d, dudt, slip, move);
+  float u[3], move[3];
+  SlipStepper stepper(w.inertia, slip, move);
+  field.sampleAlong(p, w.start, stepper, u);
   this->advectParticle(field, w, h, p, u); // u is the integrator's first sample
   for (int k = 0; k < 3; ++k)
   {

@@ -16,9 +16,13 @@
  * and the slip adds its own displacement. Along the particle's path
  * du(x, t)/dt = Du/Dt + (s . grad) u, so the slip follows
  *
- *     ds/dt = -s / tau + a,   a = (1 - beta) (g - Du/Dt) - (s . grad) u,
+ *     ds/dt = -s / tau + a,   a = (1 - beta) (g - Du/Dt) - (s . grad) u
+ *                               = (1 - beta) (g - du/dt) - (q . grad) u,
  *
- * which one step solves exactly for a held constant over the step (an
+ * with q = (1 - beta) u + s (SlipStepper::direction): one derivative along q, taken
+ * from the cell's corners (VectorField::sampleAlong), not the whole gradient
+ * (the same maths; the float rounding is that of this form). That is what
+ * one step solves exactly for a held constant over the step (an
  * exponential integrator): with the terminal slip T = tau a and E =
  * exp(-h / tau),
  *
@@ -37,6 +41,7 @@
 #define BoundParticles_Inertia_h
 
 #include "EngineParameters.h"
+#include "TrilinearAlong.h"
 
 #include <cmath>
 
@@ -88,28 +93,83 @@ inline InertiaStep inertiaStepOf(const Parameters& p, double h)
   return k;
 }
 
-/**
- * One particle's slip over a step: `u` the flow, `d[a][c]` = du_c/dx_a and
- * `dudt` = du/dt at its position at the step's start. Updates `slip` and
- * writes the displacement the slip adds to the tracer's in `move`.
- */
-inline void slipStep(const InertiaStep& k, const float u[3], const float d[3][3],
-  const float dudt[3], float slip[3], float move[3])
+/// slipStep's arithmetic for one component (T = float) or for the three
+/// in SSE lanes (T = Lanes): the same operations, so the same bits.
+template <class T>
+inline void slipStepOf(const InertiaStep& k, T gravity, T dudt, T along, T& slip, T& move)
 {
-  float terminal[3];
+  const T terminal = T(k.tau) * (T(k.buoyancy) * (gravity - dudt) - along);
+  const T off = slip - terminal;
+  move = T(k.h) * terminal + T(k.memory) * off;
+  slip = terminal + T(k.decay) * off;
+}
+
+/**
+ * One particle's slip over a step: `dudt` = du/dt and `along` = (q . grad) u
+ * for q = (1 - beta) u + s (SlipStepper::direction), both at its position at
+ * the step's start. Updates `slip` and writes the displacement the slip adds
+ * to the tracer's in `move`.
+ */
+inline void slipStep(
+  const InertiaStep& k, const float dudt[3], const float along[3], float slip[3], float move[3])
+{
   for (int c = 0; c < 3; ++c)
   {
-    const float material = dudt[c] + (u[0] * d[0][c] + u[1] * d[1][c] + u[2] * d[2][c]);
-    const float turning = slip[0] * d[0][c] + slip[1] * d[1][c] + slip[2] * d[2][c];
-    terminal[c] = k.tau * (k.buoyancy * (k.gravity[c] - material) - turning);
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    const float off = slip[c] - terminal[c];
-    move[c] = k.h * terminal[c] + k.memory * off;
-    slip[c] = terminal[c] + k.decay * off;
+    slipStepOf(k, k.gravity[c], dudt[c], along[c], slip[c], move[c]);
   }
 }
+
+/**
+ * A particle's slip step as VectorField::sampleAlong runs it, between its
+ * sampling of u and its derivative: direction() is q = (1 - beta) u + s
+ * (the slip's acceleration needs (1 - beta) (u . grad) u + (s . grad) u,
+ * which is (q . grad) u: one derivative instead of two), step() is
+ * slipStep. In SSE lanes where the field samples in lanes, else component
+ * by component: the same operations, the same bits.
+ */
+class SlipStepper
+{
+public:
+  SlipStepper(const InertiaStep& k, float slip[3], float move[3])
+    : K(k)
+    , Slip(slip)
+    , Move(move)
+#if BOUNDPARTICLES_SSE2
+    , Held(Lanes::load(slip)) // read first: its wait overlaps the field's
+#endif
+  {
+  }
+  float direction(int c, float u) const
+  {
+    return this->K.buoyancy * u + this->Slip[c];
+  }
+  void step(const float dudt[3], const float along[3])
+  {
+    slipStep(this->K, dudt, along, this->Slip, this->Move);
+  }
+#if BOUNDPARTICLES_SSE2
+  Lanes direction(Lanes u) const
+  {
+    return Lanes(this->K.buoyancy) * u + this->Held;
+  }
+  void step(Lanes dudt, Lanes along)
+  {
+    const Lanes gravity(_mm_setr_ps(this->K.gravity[0], this->K.gravity[1], this->K.gravity[2], 0));
+    Lanes move;
+    slipStepOf(this->K, gravity, dudt, along, this->Held, move);
+    this->Held.store(this->Slip);
+    move.store(this->Move);
+  }
+#endif
+
+private:
+  const InertiaStep& K;
+  float* Slip;
+  float* Move;
+#if BOUNDPARTICLES_SSE2
+  Lanes Held; ///< the slip, in lanes
+#endif
+};
 
 /// A rigid element's particles move as one body: each takes the element's
 /// mean slip (the springs' correction of the positions, in the velocities),

@@ -21,6 +21,7 @@
 #define BoundParticles_VectorField_h
 
 #include "Simd.h"
+#include "TrilinearAlong.h"
 
 #include <algorithm>
 #include <array>
@@ -165,13 +166,19 @@ public:
   /// Velocity at p and curl v there, as sampleWithVorticity().
   void sampleWithCurl(const float p[3], float weight, float v[3], float curl[3]) const;
   /**
-   * Velocity at p (as sampleWithCurl), its gradient d[a][k] = d v_k / d x_a
-   * there, and dv/dt: the slices' difference over their times at p (the
-   * field is linear in time between them; 0 for a steady field). What a
-   * heavy particle's step reads (Inertia.h).
+   * A heavy particle's step (Inertia.h's SlipStepper, `stepper`): the
+   * velocity v at p (as sampleWeighted, the same bits), then the stepper's
+   * direction q from it, then its step from dv/dt (the slices' difference
+   * over their times: the field is linear in time between them; 0 for a
+   * steady field) and the velocity's derivative along q, (q . grad) v, of
+   * the trilinear interpolant in p's cell, each slice's blended as the
+   * values are. That comes from the cell's corners directly
+   * (TrilinearAlong.h), never through the whole gradient; in SSE lanes
+   * (stepper.direction(Lanes), stepper.step(Lanes, Lanes)) where x is not a
+   * plane, component by component (the float overloads) elsewhere.
    */
-  inline void sampleWithDerivatives(
-    const float p[3], float weight, float v[3], float d[3][3], float dvdt[3]) const;
+  template <class Stepper>
+  inline void sampleAlong(const float p[3], float weight, Stepper& stepper, float v[3]) const;
   /// |curl v| at p and time t (sampleWithVorticity).
   float vorticityMagnitude(const float p[3], double t) const;
 
@@ -257,11 +264,9 @@ private:
   void gradient(
     const float* data, std::size_t base, const float f[3], const float w[3], float d[3][3]) const;
 #if BOUNDPARTICLES_SSE2
-  /// The same with the components in SSE lanes 0-2 (Stride[0] == 1); with
-  /// `value`, also the velocity there from the same corners (interpolateLanes'
-  /// bits), so that a heavy particle's step reads them once.
-  inline void gradientLanes(const float* data, std::size_t base, const float f[3], const float w[3],
-    __m128 d[3], __m128* value = nullptr) const;
+  /// The same with the components in SSE lanes 0-2 (Stride[0] == 1).
+  inline void gradientLanes(
+    const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const;
   /// d += weight (second - d), lane by lane: the slices' gradients blended.
   static inline void blendLanes(__m128 d[3], const __m128 second[3], float weight);
   /// Lanes 0-2 of each of d's three vectors into out's rows.
@@ -270,7 +275,13 @@ private:
 #if BOUNDPARTICLES_SSE2
   /// The same in SSE lanes 0-2, where x is not a plane (Stride[0] == 1).
   inline __m128 interpolateLanes(const float* data, std::size_t base, const float f[3]) const;
+  /// One slice's interpolation in the cell at `base`, kept for a derivative
+  /// along a direction (sampleAlong): in SSE lanes where x is not a plane.
+  inline void interpolateAlong(
+    const float* data, std::size_t base, const float f[3], TrilinearAlong<Lanes>& cell) const;
 #endif
+  inline void interpolateAlong(
+    const float* data, std::size_t base, const float f[3], TrilinearAlong<float> cell[3]) const;
 
   GridGeometry Grid;
   FieldSlice First;
@@ -467,8 +478,8 @@ inline void VectorField::locateWithSlopes(
 }
 
 #if BOUNDPARTICLES_SSE2
-inline void VectorField::gradientLanes(const float* data, std::size_t base, const float f[3],
-  const float w[3], __m128 d[3], __m128* value) const
+inline void VectorField::gradientLanes(
+  const float* data, std::size_t base, const float f[3], const float w[3], __m128 d[3]) const
 {
   // The four x edges as in interpolateLanes: two overlapping loads per edge
   // give both corners in lanes 0-2 without reading past the array. The
@@ -498,13 +509,6 @@ inline void VectorField::gradientLanes(const float* data, std::size_t base, cons
   const __m128 z0 = lerp(_mm_sub_ps(c001, c000), _mm_sub_ps(c101, c100), fx);
   const __m128 z1 = lerp(_mm_sub_ps(c011, c010), _mm_sub_ps(c111, c110), fx);
   d[2] = _mm_mul_ps(lerp(z0, z1, fy), _mm_set1_ps(w[2]));
-  if (value)
-  {
-    // interpolateLanes' operations on the corners already loaded: the same bits.
-    const __m128 y0 = lerp(lerp(c000, c100, fx), lerp(c010, c110, fx), fy);
-    const __m128 y1 = lerp(lerp(c001, c101, fx), lerp(c011, c111, fx), fy);
-    *value = lerp(y0, y1, fz);
-  }
 }
 
 inline void VectorField::blendLanes(__m128 d[3], const __m128 second[3], float weight)
@@ -527,59 +531,99 @@ inline void VectorField::storeLanes(const __m128 d[3], float out[3][3])
 }
 #endif
 
-inline void VectorField::sampleWithDerivatives(
-  const float p[3], float weight, float v[3], float d[3][3], float dvdt[3]) const
+#if BOUNDPARTICLES_SSE2
+inline void VectorField::interpolateAlong(
+  const float* data, std::size_t base, const float f[3], TrilinearAlong<Lanes>& cell) const
+{
+  // Each x edge's two corners are 6 consecutive floats: two overlapping
+  // loads, as interpolateLanes reads them, without reading past the array.
+  const std::size_t sy = this->Stride[1], sz = this->Stride[2];
+  const std::size_t edges[4] = { base, base + sy, base + sz, base + sy + sz };
+  Lanes c[8];
+  for (int e = 0; e < 4; ++e)
+  {
+    const float* corner = data + 3 * edges[e];
+    const __m128 shifted = _mm_loadu_ps(corner + 2);
+    c[2 * e] = Lanes(_mm_loadu_ps(corner));
+    c[2 * e + 1] = Lanes(_mm_shuffle_ps(shifted, shifted, _MM_SHUFFLE(0, 3, 2, 1)));
+  }
+  cell.interpolate(c, f);
+}
+#endif
+
+inline void VectorField::interpolateAlong(
+  const float* data, std::size_t base, const float f[3], TrilinearAlong<float> cell[3]) const
+{
+  const std::array<const float*, 8> corners = this->cornersOf(data, base);
+  for (int k = 0; k < 3; ++k)
+  {
+    float c[8];
+    for (int i = 0; i < 8; ++i)
+    {
+      c[i] = corners[i][k];
+    }
+    cell[k].interpolate(c, f);
+  }
+}
+
+template <class Stepper>
+inline void VectorField::sampleAlong(
+  const float p[3], float weight, Stepper& stepper, float v[3]) const
 {
   std::size_t base = 0;
-  float f[3], w[3];
-  this->locateWithSlopes(p, base, f, w);
-  // Each slice's velocity and gradient at p, the velocity blended as
-  // sampleCell blends the slices and the gradient as blendedGradient does.
-  float first[3], second[3];
+  float f[3], slope[3];
+  this->locateWithSlopes(p, base, f, slope);
+  const bool unsteady = this->SecondData != nullptr;
+  // The value as the heavy step always read it (both slices, for du/dt);
+  // the derivative blended as sampleCell blends values (not at weight 0).
+  const bool blend = unsteady && weight > 0.0f;
+  const float rate = unsteady ? float(1.0 / (this->Second.time - this->First.time)) : 0.0f;
 #if BOUNDPARTICLES_SSE2
   if (this->Stride[0] == 1)
   {
-    // One read of the cell's corners per slice for the value and the gradient.
-    __m128 lanes[3], value;
-    this->gradientLanes(this->FirstData, base, f, w, lanes, &value);
-    alignas(16) float out[4];
-    _mm_store_ps(out, value);
-    std::copy_n(out, 3, first);
-    if (this->SecondData)
+    TrilinearAlong<Lanes> first, second;
+    this->interpolateAlong(this->FirstData, base, f, first);
+    Lanes value = first.value, rateOfChange(0.0f);
+    if (unsteady)
     {
-      __m128 later[3];
-      this->gradientLanes(this->SecondData, base, f, w, later, &value);
-      _mm_store_ps(out, value);
-      std::copy_n(out, 3, second);
-      if (weight > 0.0f)
-      {
-        blendLanes(lanes, later, weight);
-      }
+      this->interpolateAlong(this->SecondData, base, f, second);
+      const Lanes change = second.value - first.value;
+      value = first.value + Lanes(weight) * change;
+      rateOfChange = change * Lanes(rate);
     }
-    storeLanes(lanes, d);
-  }
-  else
-#endif
-  {
-    this->blendedGradient(base, f, w, weight, d);
-    this->interpolate(this->FirstData, base, f, first);
-    if (this->SecondData)
+    value.store(v);
+    const Lanes g =
+      Lanes(_mm_setr_ps(slope[0], slope[1], slope[2], 0.0f)) * stepper.direction(value);
+    const Lanes gx = g.broadcast<0>(), gy = g.broadcast<1>(), gz = g.broadcast<2>();
+    Lanes along = first.along(gx, gy, gz, f);
+    if (blend)
     {
-      this->interpolate(this->SecondData, base, f, second);
+      along = along + Lanes(weight) * (second.along(gx, gy, gz, f) - along);
     }
-  }
-  if (!this->SecondData)
-  {
-    std::copy_n(first, 3, v);
-    std::fill_n(dvdt, 3, 0.0f);
+    stepper.step(rateOfChange, along);
     return;
   }
-  const float rate = float(1.0 / (this->Second.time - this->First.time));
+#endif
+  TrilinearAlong<float> first[3], second[3];
+  this->interpolateAlong(this->FirstData, base, f, first);
+  if (unsteady)
+  {
+    this->interpolateAlong(this->SecondData, base, f, second);
+  }
+  float dvdt[3], g[3], along[3];
   for (int k = 0; k < 3; ++k)
   {
-    v[k] = first[k] + weight * (second[k] - first[k]);
-    dvdt[k] = (second[k] - first[k]) * rate;
+    const float change = unsteady ? second[k].value - first[k].value : 0.0f;
+    v[k] = unsteady ? first[k].value + weight * change : first[k].value;
+    dvdt[k] = change * rate;
+    g[k] = slope[k] * stepper.direction(k, v[k]);
   }
+  for (int k = 0; k < 3; ++k)
+  {
+    const float d = first[k].along(g[0], g[1], g[2], f);
+    along[k] = blend ? d + weight * (second[k].along(g[0], g[1], g[2], f) - d) : d;
+  }
+  stepper.step(dvdt, along);
 }
 
 } // namespace bp

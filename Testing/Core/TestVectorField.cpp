@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace
@@ -175,6 +176,90 @@ TEST(VectorField, VorticityIsTheCurlOfTheCellsInterpolant)
   }
   const float corner[3] = { 1.0f, 1.0f, 1.0f };
   EXPECT_NEAR(f.vorticityMagnitude(corner, 0.0), curl, 2e-5 * curl);
+}
+
+namespace
+{
+/// A stand-in for Inertia.h's SlipStepper: the direction 0.5 u + s for a
+/// fixed s, and what sampleAlong hands its step kept.
+struct AlongProbe
+{
+  float s[3] = { 0.3f, -0.7f, 1.1f };
+  float dvdt[3], along[3];
+  float direction(int c, float u) const { return 0.5f * u + this->s[c]; }
+  void step(const float rate[3], const float d[3])
+  {
+    std::copy_n(rate, 3, this->dvdt);
+    std::copy_n(d, 3, this->along);
+  }
+#if BOUNDPARTICLES_SSE2
+  bp::Lanes direction(bp::Lanes u) const
+  {
+    return bp::Lanes(0.5f) * u + bp::Lanes::load(this->s);
+  }
+  void step(bp::Lanes rate, bp::Lanes d)
+  {
+    rate.store(this->dvdt);
+    d.store(this->along);
+  }
+#endif
+};
+} // namespace
+
+TEST(VectorField, TheDerivativeAlongADirectionIsTheCellGradients)
+{
+  // v = s (2y - z, 3x + z/2, x - 4y) with s = 1, then 2 (as the vorticity
+  // test): the interpolant is the field, so (q . grad) v = s (2 q_y - q_z,
+  // 3 q_x + q_z / 2, q_x - 4 q_y) and dv/dt = v at s = 1, on uniform and
+  // rectilinear axes and on a grid whose x is a plane (the scalar path).
+  for (const bool flatX : { false, true })
+  {
+    bp::GridGeometry g = bptest::grid(7, -1.0, 1.0);
+    g.setCoordinates(2, { -1.0, -0.9, -0.6, 0.0, 0.1, 0.7, 1.0 });
+    g.dims[0] = flatX ? 1 : 7;
+    ASSERT_EQ(g.validate(), "");
+    auto slice = [&](double time, float s)
+    {
+      auto v = std::make_shared<std::vector<float>>();
+      for (int k = 0; k < g.dims[2]; ++k)
+        for (int j = 0; j < g.dims[1]; ++j)
+          for (int i = 0; i < g.dims[0]; ++i)
+          {
+            const double x = g.coordinate(0, i), y = g.coordinate(1, j), z = g.coordinate(2, k);
+            v->push_back(s * float(2 * y - z));
+            v->push_back(s * float(3 * x + 0.5 * z));
+            v->push_back(s * float(x - 4 * y));
+          }
+      return bp::FieldSlice{ time, v };
+    };
+    const bp::VectorField f(g, slice(0.0, 1.0f), slice(1.0, 2.0f));
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+    for (int n = 0; n < 100; ++n)
+    {
+      const float p[3] = { coordinate(random), coordinate(random), coordinate(random) };
+      for (const float weight : { 0.0f, 0.25f, 1.0f })
+      {
+        AlongProbe probe;
+        float v[3], sampled[3];
+        f.sampleAlong(p, weight, probe, v);
+        f.sampleWeighted(p, weight, sampled); // the velocity is the plain sample, bit for bit
+        const float s = 1.0f + weight, x = flatX ? float(g.coordinate(0, 0)) : p[0];
+        const float first[3] = { 2 * p[1] - p[2], 3 * x + 0.5f * p[2], x - 4 * p[1] };
+        float q[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          EXPECT_EQ(v[k], sampled[k]);
+          EXPECT_NEAR(probe.dvdt[k], first[k], 1e-5);
+          q[k] = 0.5f * v[k] + probe.s[k];
+        }
+        const float qx = flatX ? 0.0f : q[0]; // nothing varies across a plane
+        EXPECT_NEAR(probe.along[0], s * (2 * q[1] - q[2]), 1e-4);
+        EXPECT_NEAR(probe.along[1], s * (3 * qx + 0.5f * q[2]), 1e-4);
+        EXPECT_NEAR(probe.along[2], s * (qx - 4 * q[1]), 1e-4);
+      }
+    }
+  }
 }
 
 TEST(VectorField, RectilinearAxesAreSampledExactly)
