@@ -26,8 +26,6 @@
 #ifndef vtkBoundParticleTracerInternals_h
 #define vtkBoundParticleTracerInternals_h
 
-#include "vtkBoundParticleTracer.h"
-
 #include "Engine.h"
 #include "FieldCache.h"
 #include "OutputArrays.h"
@@ -40,6 +38,7 @@
 #include "TracerResample.h"
 #include "TracerSteppers.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -52,7 +51,6 @@
 #include <string>
 #include <vector>
 
-class vtkAlgorithm;
 class vtkDataArray;
 class vtkDataObject;
 class vtkImageData;
@@ -102,11 +100,123 @@ struct TracerInputStep
 };
 } // namespace bpvtk
 
-struct vtkBoundParticleTracer::vtkInternals
+class vtkBoundParticleTracerInternals
 {
+public:
   using Pass = bpvtk::TracerPass;
   using Config = bpvtk::TracerConfig;
 
+  /// `owner` is the filter: the internals use it only to report (messages,
+  /// progress) and to hear an abort, never to read its properties (they come
+  /// in a bpvtk::TracerConfig).
+  explicit vtkBoundParticleTracerInternals(vtkAlgorithm* owner);
+
+  // What the filter asks of its trace.
+  bool hasTimes() const { return this->Plan.hasTimes(); }
+  double startTime() const { return this->Plan.startTime(); }
+  /// The output's time steps (both ports share them).
+  const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
+  vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
+  bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
+  int timeStepsHeld() const { return int(this->Cache.size()); }
+  double resolvedDt() const { return this->ResolvedDt; }
+  double resolvedElementSize() const { return this->ResolvedElementSize; }
+  /// Asked for pieces: this process's piece and the whole extent.
+  bool idle() const { return this->Layout.idle(); }
+  bool tooSmallToSplit() const { return this->Layout.tooSmallToSplit(); }
+
+  /// Post hoc RequestInformation: the time line follows the input's
+  /// `inputTimes` (TracePlan::setTimes). Returns the error, if any.
+  std::string setTimes(const std::vector<double>& inputTimes, double duration,
+    int numberOfTimeSteps, int framesPerInterval);
+  /// In situ RequestInformation (TracerInSitu.cxx): the present step's `time`
+  /// offered to the time line; a change of the filter's settings (its MTime
+  /// `settingsTime`) starts the trace again. Returns the error when the
+  /// step cannot start a trace (there are then no times); `warning` says a
+  /// refused step.
+  std::string offerStreamTime(vtkMTimeType settingsTime, double time, std::string& warning);
+  /// The time line's `warnings` not said at the last request for
+  /// information (the pipeline asks again after every change).
+  std::vector<std::string> unsaid(const std::vector<std::string>& warnings);
+  /// RequestUpdateExtent: the pieces this output asks for (a change of them
+  /// is a change of input: every trace is stale), then what the input is
+  /// asked for (`mesh`: an input the resampler takes whole).
+  void requestPieces(vtkInformation* outInfo, vtkInformation* inInfo, bool mesh);
+
+  /// The share of the update's stepping done, over all its passes.
+  double progress() const
+  {
+    const double span = this->target() - this->ProgressFrom;
+    return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
+                      : 0.0;
+  }
+
+  bp::Stepper& stepper() { return this->Steppers.active(); }
+  double target() const { return this->Decision.target; }
+  /// Where the work still to do starts: the start time for a replay not yet
+  /// configured, else where the stepper stands (it moves as passes step).
+  double steppingFrom()
+  {
+    return this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed;
+  }
+
+  /// After a change of the filter, its input or the pieces: every trace and
+  /// held time step is stale, and upstream holds nothing known.
+  void forgetTrace();
+  /// After a failed or aborted update: the trace and the held time steps
+  /// are dropped, so the next update replays from what upstream gives;
+  /// after a skipped in situ step (skipPresentStep) they are kept.
+  void endFailedUpdate(bool skipped = false);
+  /// In situ, the present step's data could not be taken (`error`): the step
+  /// leaves the time line and the trace keeps its elements, so the next step
+  /// goes on from the last good one (a Skipped pass). A failure as post hoc
+  /// where there is no trace to keep (the first step).
+  Pass skipPresentStep(const std::string& error);
+  /// In situ, the present step's grid (in the engine's frame) differs from
+  /// the held steps': they are resampled onto it, and the elements keep
+  /// their places. Warns of the first change.
+  void relocate(const bp::GridGeometry& grid, const bp::FieldSlice& slice);
+
+  /// The decision for a request (RequestUpdateExtent): picks the stepper
+  /// for this request, then replay or continue and the first time step.
+  /// Only for a new update (not a later pass of one), with times offered.
+  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none).
+  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue);
+  /// The decision in situ: go on from the kept step to the present one, or
+  /// start again at the present one when a step the work needs is gone.
+  void decideInSitu(double target);
+  /// The input time step this pass asks upstream for (RequestUpdateExtent),
+  /// none for a steady input.
+  void requestTimeStep(vtkInformation* inInfo);
+  /// This pass ends asking upstream for `index`: the next pass continues
+  /// the same update.
+  void continueWith(int index);
+  /// The update's last pass ends here.
+  void finishPasses() { this->Continuing = false; }
+  /// A later pass of the same update.
+  bool continuing() const { return this->Continuing; }
+  /// This update replays from the start, and has not yet configured.
+  bool replayPending() const { return this->ReplayPending; }
+
+  void begin(const Config& config);
+  std::string takeTimeStep(const Config& config, const bpvtk::TracerInputStep& input);
+  /// Resolves the settings from the start's field, then configures the stepper.
+  Pass replay(const Config& config, vtkInformationVector** inputVector);
+  Pass stepToTarget();
+  Pass readAhead();
+  /// Steps the short last step to the target (taken back at the next
+  /// update; collective in parallel, as every step), then builds the output.
+  Pass show(const Config& config, vtkPolyData* output);
+  /// The second output after show(): the FTLE map of a lattice release
+  /// (TracerFtleMap.cxx; collective in a distributed run).
+  void showFtleMap(vtkImageData* image);
+
+  /// For the time line's probe: `data` (a mesh) resampled whole on every
+  /// process (collective over the global controller) into `grid`; its vectors.
+  vtkDataArray* probeGrid(
+    const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
+
+private:
   bp::TracePlan Plan;
   /// In situ: the times given since the trace started (TracerInSitu.cxx),
   /// and the filter's MTime they were given under.
@@ -138,16 +248,7 @@ struct vtkBoundParticleTracer::vtkInternals
   bool Resampled = false; ///< the field came through the Resampler
   const std::uint64_t ProducerId;
 
-  // The update in progress (the pass state is private, below).
   bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
-
-  /// The share of the update's stepping done, over all its passes.
-  double progress() const
-  {
-    const double span = this->target() - this->ProgressFrom;
-    return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
-                      : 0.0;
-  }
 
   // The field, in grid-local coordinates (floats keep their precision far
   // from the world origin), and where its local origin lies in the world.
@@ -167,77 +268,8 @@ struct vtkBoundParticleTracer::vtkInternals
   long long Migrated = 0;                    ///< elements this process sent away
   std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
 
-  /// `owner` is the filter: the internals use it only to report (messages,
-  /// progress) and to hear an abort, never to read its properties (they come
-  /// in a bpvtk::TracerConfig).
-  explicit vtkInternals(vtkAlgorithm* owner);
-
-  bp::Stepper& stepper() { return this->Steppers.active(); }
-  double target() const { return this->Decision.target; }
-  /// Where the work still to do starts: the start time for a replay not yet
-  /// configured, else where the stepper stands (it moves as passes step).
-  double steppingFrom()
-  {
-    return this->ReplayPending ? this->Plan.startTime() : this->stepper().cursor.committed;
-  }
-
-  /// After a change of the filter, its input or the pieces: every trace and
-  /// held time step is stale, and upstream holds nothing known.
-  void forgetTrace();
-  /// After a failed or aborted update: the trace and the held time steps
-  /// are dropped, so the next update replays from what upstream gives;
-  /// after a skipped in situ step (skipPresentStep) they are kept.
-  void endFailedUpdate(bool skipped = false);
-  /// In situ, the present step's data could not be taken (`error`): the step
-  /// leaves the time line and the trace keeps its elements, so the next step
-  /// goes on from the last good one (a Skipped pass). A failure as post hoc
-  /// where there is no trace to keep (the first step).
-  Pass skipPresentStep(const std::string& error);
-  /// In situ, the present step's grid (in the engine's frame) differs from
-  /// the held steps': they are resampled onto it, and the elements keep
-  /// their places. Warns of the first change.
-  void relocate(const bp::GridGeometry& grid, const bp::FieldSlice& slice);
-
-  /// The decision for a request (RequestUpdateExtent): picks the stepper
-  /// for this request, then replay or continue and the first time step.
-  /// Only for a new update (not a later pass of one), with times offered.
-  void decide(const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo);
-  /// The decision in situ: go on from the kept step to the present one, or
-  /// start again at the present one when a step the work needs is gone.
-  void decideInSitu(double target);
-  /// The input time step this pass asks upstream for (RequestUpdateExtent),
-  /// none for a steady input.
-  void requestTimeStep(vtkInformation* inInfo);
-  /// This pass ends asking upstream for `index`: the next pass continues
-  /// the same update.
-  void continueWith(int index);
-  /// The update's last pass ends here.
-  void finishPasses() { this->Continuing = false; }
-  /// A later pass of the same update.
-  bool continuing() const { return this->Continuing; }
-  /// This update replays from the start, and has not yet configured.
-  bool replayPending() const { return this->ReplayPending; }
-
-  void begin(const Config& config);
-  std::string takeTimeStep(const Config& config, const bpvtk::TracerInputStep& input);
-  /// Resolves the settings from the start's field, then configures the stepper.
-  Pass replay(const Config& config, vtkInformationVector** inputVector);
-  Pass stepToTarget();
-  Pass readAhead();
-  /// Steps the short last step to the target (taken back at the next
-  /// update; collective in parallel, as every step), then builds the output.
-  Pass show(const Config& config, vtkPolyData* output);
-  /// The second output after show(): the FTLE map of a lattice release
-  /// (TracerFtleMap.cxx; collective in a distributed run).
-  void showFtleMap(vtkImageData* image);
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
 
-  /// For the time line's probe: `data` (a mesh) resampled whole on every
-  /// process (collective over the global controller) into `grid`; its vectors.
-  vtkDataArray* probeGrid(
-    const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
-
-private:
   vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
   bool Continuing = false;     ///< a later pass of the same update
   bool ReplayPending = false;  ///< this update replays from the start
