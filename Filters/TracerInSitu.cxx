@@ -8,6 +8,7 @@
 #include "vtkDataObject.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationExecutivePortKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -76,16 +77,51 @@ double presentTime(vtkInformation* inInfo)
   return 0.0;
 }
 
+std::vector<double> announcedGrid(vtkInformation* inInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  std::vector<double> grid;
+  if (!inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    return grid;
+  }
+  const int* extent = inInfo->Get(SDDP::WHOLE_EXTENT());
+  grid.assign(extent, extent + 6);
+  for (vtkInformationDoubleVectorKey* key : { vtkDataObject::ORIGIN(), vtkDataObject::SPACING() })
+  {
+    if (inInfo->Has(key) && inInfo->Length(key) == 3)
+    {
+      grid.insert(grid.end(), inInfo->Get(key), inInfo->Get(key) + 3);
+    }
+  }
+  return grid;
+}
+
 } // namespace bpvtk
 
 std::string vtkBoundParticleTracerInternals::offerStreamTime(
-  vtkMTimeType settingsTime, double time, std::string& warning)
+  vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning)
 {
   using Arrival = bp::StreamTimeLine::Arrival;
+  // Under MPI each process holds its block of the last step only, and the
+  // blocks follow the whole grid: a trace cannot follow the grid's change
+  // (one process alone re-locates, matchHeldGrid). Every process sees the
+  // same announcement, so all start again alike.
+  const bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
+    !this->StreamGrid.empty() && grid != this->StreamGrid;
+  if (regridded)
+  {
+    std::ostringstream text;
+    text << "The input's grid changed at t = " << time
+         << ": under MPI the trace cannot follow a change of grid in situ (each process holds "
+            "its block of the last step only), so it starts again at the present step.";
+    warning = text.str();
+  }
+  this->StreamGrid = grid;
   // Upstream changes with every step that arrives; only a change of the
-  // filter's settings (or a first step, or a post hoc line before) starts
-  // the trace again, at the present step.
-  if (!this->Plan.streaming() || settingsTime != this->StreamSettingsTime)
+  // filter's settings (or a first step, or a post hoc line before, or a
+  // change of grid under MPI) starts the trace again, at the present step.
+  if (!this->Plan.streaming() || settingsTime != this->StreamSettingsTime || regridded)
   {
     this->forgetTrace();
     this->Stream.clear();
@@ -104,7 +140,7 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
   // The first step announced again is no step lost (5.11's Catalyst hands
   // its producer the first step twice, and says so itself): refused quietly.
   const bool firstAgain = arrival == Arrival::Repeat && this->Stream.times().size() == 1;
-  warning = firstAgain ? std::string() : this->Stream.refusal(arrival, time);
+  warning += firstAgain ? std::string() : this->Stream.refusal(arrival, time);
   this->Plan.setStreamTimes(this->Stream.times());
   return std::string();
 }

@@ -134,7 +134,10 @@ public:
   /// `settingsTime`) starts the trace again. Returns the error when the
   /// step cannot start a trace (there are then no times); `warning` says a
   /// refused step.
-  std::string offerStreamTime(vtkMTimeType settingsTime, double time, std::string& warning);
+  /// Under MPI a change of the announced `grid` (bpvtk::announcedGrid) starts
+  /// it again too, with the warning.
+  std::string offerStreamTime(
+    vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning);
   /// The time line's `warnings` not said at the last request for
   /// information (the pipeline asks again after every change).
   std::vector<std::string> unsaid(const std::vector<std::string>& warnings);
@@ -222,6 +225,7 @@ private:
   /// and the filter's MTime they were given under.
   bp::StreamTimeLine Stream;
   vtkMTimeType StreamSettingsTime = 0;
+  std::vector<double> StreamGrid; ///< the grid the last step announced (announcedGrid)
   bp::FieldCache Cache;
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;

@@ -62,7 +62,8 @@ int vtkBoundParticleTracer::RequestStreamInformation(
   std::string warning;
   // Upstream changes with every step that arrives; only a change of this
   // filter's settings starts the trace again.
-  const std::string error = this->Internals->offerStreamTime(this->GetMTime(), time, warning);
+  const std::string error =
+    this->Internals->offerStreamTime(this->GetMTime(), time, bpvtk::announcedGrid(inInfo), warning);
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);
