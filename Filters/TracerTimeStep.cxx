@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
-bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
+bool vtkBoundParticleTracerInternals::wantsTimeStep()
 {
   // A first pass with every time step in hand asked for whatever upstream
   // held: take it only if the work needs it.
@@ -33,7 +33,7 @@ bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
   return wanted && !this->Cache.has(this->RequestIndex);
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
+std::string vtkBoundParticleTracerInternals::takeTimeStep(
   const Config& config, const bpvtk::TracerInputStep& step)
 {
   if (!this->wantsTimeStep())
@@ -113,7 +113,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
 }
 
-void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtkDataObject* input)
+void vtkBoundParticleTracerInternals::noteVectors(const Config& config, vtkDataObject* input)
 {
   // Said once for each choice among an input's arrays, by one process.
   const std::string note =
@@ -128,7 +128,7 @@ void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtk
   this->SaidVectors = note;
 }
 
-void vtkBoundParticleTracer::vtkInternals::keepInPlane(
+void vtkBoundParticleTracerInternals::keepInPlane(
   const bp::GridGeometry& grid, bp::FieldSlice& slice)
 {
   // The whole field's flat axes (a process's block of an image may be thin).
@@ -186,7 +186,7 @@ void vtkBoundParticleTracer::vtkInternals::keepInPlane(
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
+void vtkBoundParticleTracerInternals::takeReleaseWeights(
   const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
 {
   // Collective in a distributed run, as every process reads in this pass.
@@ -203,7 +203,7 @@ void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
+void vtkBoundParticleTracerInternals::warnOfSlice(
   const std::string& maskProblem, std::size_t nonFinite, std::size_t points)
 {
   if (!maskProblem.empty() && !this->WarnedMask)
@@ -223,7 +223,7 @@ void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
   }
 }
 
-double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
+double vtkBoundParticleTracerInternals::sliceTime(vtkDataObject* input)
 {
   // In situ the first step is shown steady but is the start of the time line.
   const double time = this->Plan.unsteady() || this->Plan.streaming()
@@ -243,7 +243,7 @@ double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
   return time;
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
+std::string vtkBoundParticleTracerInternals::resampleInput(
   const Config& config, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece)
 {
   vtkNew<vtkImageData> whole;
@@ -269,7 +269,7 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
   return error;
 }
 
-vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
+vtkDataArray* vtkBoundParticleTracerInternals::probeGrid(
   const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid)
 {
   vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
@@ -292,8 +292,8 @@ vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
   return image->GetPointData()->GetArray(this->Resampler.arrayName().c_str());
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
-  bp::GridGeometry grid, const std::array<double, 3>& offset, const bp::FieldSlice& slice)
+std::string vtkBoundParticleTracerInternals::keepTimeStep(
+  bp::GridGeometry grid, std::array<double, 3> offset, const bp::FieldSlice& slice)
 {
   // In world coordinates first, so how far from the origin the data lies counts too.
   const std::string worldError = grid.validate();
@@ -305,19 +305,11 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   // whole grid's, in parallel), so float positions keep their precision far
   // from the world origin.
   grid.translate(offset);
-  if (this->Cache.size() > 0)
+  const std::string gridError =
+    this->Cache.size() > 0 ? this->matchHeldGrid(grid, offset, slice) : std::string();
+  if (!gridError.empty())
   {
-    const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
-    bool same = grid.sameAs(this->Grid, tolerance);
-    for (int a = 0; a < 3; ++a)
-    {
-      same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
-    }
-    if (!same)
-    {
-      return "The input's time steps do not share one grid; every time step must have the same "
-             "dimensions and point coordinates.";
-    }
+    return gridError;
   }
   this->Offset = offset;
   this->Grid = grid;
@@ -329,5 +321,46 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   this->Cache.insert(
     this->RequestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
   this->ReadThisUpdate = true;
+  if (this->Plan.streaming() && this->Schedule && !this->Decision.replay)
+  {
+    // Steps end on every data time step, as post hoc: the present one is
+    // new (a step skipped before it got here adds none).
+    this->Schedule->addBreak(this->Plan.inputTimes()[this->RequestIndex]);
+  }
+  return std::string();
+}
+
+std::string vtkBoundParticleTracerInternals::matchHeldGrid(
+  bp::GridGeometry& grid, std::array<double, 3>& offset, const bp::FieldSlice& slice)
+{
+  const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
+  bool same = grid.sameAs(this->Grid, tolerance);
+  for (int a = 0; a < 3; ++a)
+  {
+    same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
+  }
+  if (same)
+  {
+    return std::string();
+  }
+  if (!this->Plan.streaming() || this->Layout.distributed())
+  {
+    return "The input's time steps do not share one grid; every time step must have the same "
+           "dimensions and point coordinates" +
+      std::string(this->Plan.streaming() ? " (in situ under MPI, too)." : ".");
+  }
+  // In situ the engine's frame stays the held steps' (after a grid change,
+  // the first step's): the elements keep their coordinates.
+  std::array<double, 3> shift;
+  for (int a = 0; a < 3; ++a)
+  {
+    shift[a] = this->Offset[a] - offset[a];
+  }
+  grid.translate(shift);
+  offset = this->Offset;
+  if (!grid.sameAs(this->Grid, tolerance))
+  {
+    this->relocate(grid, slice);
+  }
   return std::string();
 }

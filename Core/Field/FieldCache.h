@@ -40,12 +40,29 @@ public:
 
   void clear() { this->Slices.clear(); }
 
+  /// In situ, the grid changed from `from` to `to`: every time step held is
+  /// put on `to` (regridSlice). Returns how many of `to`'s points `from`
+  /// does not cover.
+  std::size_t regrid(const GridGeometry& from, const GridGeometry& to, const FieldSlice& present);
+
   /// The field of time step ids[0] (steady), or between ids[0] and ids[1].
   VectorField field(const GridGeometry& grid, const std::vector<int>& ids) const;
 
 private:
   std::map<int, FieldSlice> Slices;
 };
+
+/**
+ * A time step held on grid `from`, sampled at every point of grid `to` (both
+ * in the engine's coordinates): what an in situ trace whose grid changes
+ * keeps of its last step, so the interval to the present step still blends
+ * two steps. Where `from` does not cover a point of `to`, `present`'s value
+ * there is taken (the flow is steady there over the interval); `outside`
+ * counts those points. The domain mask and the weights are `present`'s: they
+ * describe the new grid. Velocities only: `slice`'s time is kept.
+ */
+FieldSlice regridSlice(const GridGeometry& from, const FieldSlice& slice, const GridGeometry& to,
+  const FieldSlice& present, std::size_t& outside);
 
 } // namespace bp
 

@@ -60,4 +60,12 @@ void StreamTimeLine::restartAtPresent()
   }
 }
 
+void StreamTimeLine::dropPresent()
+{
+  if (!this->Times.empty())
+  {
+    this->Times.pop_back();
+  }
+}
+
 } // namespace bp

@@ -46,6 +46,11 @@ public:
   /// trace was lost): only the last time is kept.
   void restartAtPresent();
 
+  /// The present time's step could not be taken (its data was unusable):
+  /// it leaves the line, and the next time that arrives advances the trace
+  /// from the one before it.
+  void dropPresent();
+
   void clear() { this->Times.clear(); }
   bool empty() const { return this->Times.empty(); }
   /// The times given since the trace started, increasing.

@@ -51,6 +51,79 @@ TEST(StreamTimeLine, RestartKeepsOnlyThePresent)
   EXPECT_EQ(line.offer(4.0), bp::StreamTimeLine::Arrival::Advance);
 }
 
+TEST(StreamTimeLine, ADroppedPresentLetsTheNextTimeAdvanceFromTheOneBefore)
+{
+  bp::StreamTimeLine line;
+  line.offer(1.0);
+  line.offer(2.0);
+  line.dropPresent(); // t = 2's data was unusable
+  EXPECT_EQ(line.times(), (std::vector<double>{ 1.0 }));
+  EXPECT_EQ(line.offer(3.0), bp::StreamTimeLine::Arrival::Advance);
+  EXPECT_EQ(line.times(), (std::vector<double>{ 1.0, 3.0 }));
+}
+
+namespace
+{
+/// A grid of n points an axis from `lo` with spacing h, and v = (x, 2y, 3z)
+/// on it: linear, so trilinear sampling gives it exactly.
+bp::GridGeometry cube(int n, double lo, double h)
+{
+  bp::GridGeometry g;
+  g.dims = { n, n, n };
+  g.origin = { lo, lo, lo };
+  g.spacing = { h, h, h };
+  return g;
+}
+
+bp::FieldSlice linearOn(const bp::GridGeometry& g, double time)
+{
+  auto v = std::make_shared<std::vector<float>>();
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+      {
+        v->push_back(float(g.coordinate(0, i)));
+        v->push_back(float(2 * g.coordinate(1, j)));
+        v->push_back(float(3 * g.coordinate(2, k)));
+      }
+  bp::FieldSlice s;
+  s.time = time;
+  s.velocity = v;
+  return s;
+}
+} // namespace
+
+TEST(FieldCache, RegridSamplesTheHeldStepsOnTheNewGridAndTakesThePresentBeyondTheOld)
+{
+  // The old grid spans [0, 1]; the new one [0.5, 1.5] in finer cells.
+  const bp::GridGeometry from = cube(5, 0.0, 0.25);
+  const bp::GridGeometry to = cube(6, 0.5, 0.2);
+  bp::FieldCache cache;
+  cache.insert(3, linearOn(from, 1.5), { 3 });
+  bp::FieldSlice present;
+  present.time = 2.0;
+  present.velocity = std::make_shared<std::vector<float>>(3 * to.pointCount(), 7.0f);
+  present.outsideCells = std::make_shared<std::vector<std::uint8_t>>(to.pointCount(), 0);
+  // Points with every coordinate at most 1 lie in the old grid: 0.5, 0.7, 0.9 an axis.
+  EXPECT_EQ(cache.regrid(from, to, present), to.pointCount() - 27);
+  const bp::FieldSlice& held = cache.at(3);
+  EXPECT_EQ(held.time, 1.5);
+  EXPECT_EQ(held.outsideCells, present.outsideCells);
+  ASSERT_EQ(held.velocity->size(), 3 * to.pointCount());
+  std::size_t n = 0;
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 6; ++i, n += 3)
+      {
+        const double x = to.coordinate(0, i), y = to.coordinate(1, j), z = to.coordinate(2, k);
+        const bool inOld = x <= 1.0 + 1e-9 && y <= 1.0 + 1e-9 && z <= 1.0 + 1e-9;
+        const float* v = held.velocity->data() + n;
+        EXPECT_NEAR(v[0], inOld ? x : 7.0, 1e-5);
+        EXPECT_NEAR(v[1], inOld ? 2 * y : 7.0, 1e-5);
+        EXPECT_NEAR(v[2], inOld ? 3 * z : 7.0, 1e-5);
+      }
+}
+
 TEST(TracePlan, StreamTimesStartSteadyThenStepBetweenTheLastTwo)
 {
   bp::TracePlan plan;

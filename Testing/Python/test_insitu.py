@@ -3,10 +3,15 @@ time step, fed one step at a time through a trivial producer (Catalyst's
 producer before VTK 9.3 flags anything), advances with each step that arrives
 and gets the elements a post hoc trace of the same steps gets; a repeated or
 earlier step is refused with a message and the trace keeps its state; a
-missing vector array is an error and the next good step continues.
+step without the vector array is an error and is skipped, the next good step
+going on from the last one; a step whose grid changes (dimensions, origin,
+spacing) warns and goes on in the new grid with every element kept.
 """
 import os
 import sys
+import tempfile
+
+import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -15,7 +20,8 @@ args = bptest.arguments("--engine", "--steps")
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
 
 LoadPlugin(args.plugin, ns=globals())
 STEPS = int(args.steps or 20)
@@ -32,6 +38,8 @@ bptest.check(len(times) == STEPS, "the flow offers %d time steps (%d)" % (STEPS,
 def elements(proxy, time):
     proxy.UpdatePipeline(time)
     data = servermanager.Fetch(proxy)
+    if not data.GetNumberOfPoints():
+        return {}
     ids = vtk_to_numpy(data.GetPointData().GetArray("ElementId"))
     index = vtk_to_numpy(data.GetPointData().GetArray("ParticleIndex"))
     points = vtk_to_numpy(data.GetPoints().GetData()) if data.GetNumberOfPoints() else None
@@ -111,4 +119,111 @@ bptest.check(said.mentions("must have a finite time") and empty == 0,
 fresh_producer.GetClientSideObject().SetOutput(step_of(times[1]), times[1])
 fresh_producer.MarkModified(fresh_producer)
 bptest.check(len(elements(fresh, times[1])) > 0, "the next good step starts the trace")
+
+
+def trace_in_situ(step_at, settings):
+    """The tracer fed step_at(k, t) for each time (None: that step never
+    comes); its elements at the last step, and the messages said."""
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **settings)
+    with bptest.CapturedMessages() as said:
+        for k, t in enumerate(times):
+            data = step_at(k, t)
+            if data is not None:
+                feed.GetClientSideObject().SetOutput(data, t)
+                feed.MarkModified(feed)
+                got = elements(tracer, t)
+    said.messages = [m for m in said.messages if "New time step is not" not in m]
+    Delete(tracer)
+    Delete(feed)
+    return got, said
+
+
+# A step without the Vectors array: an error, the step skipped, and the next
+# good step goes on from the last one, as if the bad step had never come.
+def renamed(t):
+    data = step_of(t)
+    data.GetPointData().GetArray("velocity").SetName("pressure_gradient")
+    return data
+
+
+BAD = STEPS // 2
+skipped, said = trace_in_situ(lambda k, t: renamed(t) if k == BAD else step_of(t), SETTINGS)
+bptest.check(said.mentions("no array 'velocity'") and said.mentions("is skipped"),
+             "a step without the vectors: an error that says the step is skipped: %s" % said.messages)
+never, _ = trace_in_situ(lambda k, t: None if k == BAD else step_of(t), SETTINGS)
+gap = farthest(skipped, never)
+print("a skipped step: %d particles, %g from a trace never given it" % (len(skipped), gap))
+bptest.check(len(skipped) > 0 and gap == 0.0,
+             "after a skipped step the trace goes on as if it never came (%g apart)" % gap)
+
+
+# A step whose grid changes: solid-body rotation about the z axis, linear in
+# x and y, so every grid samples it exactly and a trace that changes grids
+# must follow the one that never does. The second grid has other dimensions,
+# origin and spacing, and covers every element.
+def rotation(grid):
+    dims, origin, spacing = grid
+    image = vtkImageData()
+    image.SetDimensions(dims)
+    image.SetOrigin(origin)
+    image.SetSpacing(spacing)
+    z, y, x = numpy.meshgrid(*[origin[a] + spacing[a] * numpy.arange(dims[a]) for a in (2, 1, 0)],
+                             indexing="ij")
+    velocity = numpy_to_vtk(numpy.stack([-y, x, 0 * x], axis=-1).reshape(-1, 3).astype(numpy.float32),
+                            deep=1)
+    velocity.SetName("velocity")
+    image.GetPointData().AddArray(velocity)
+    return image
+
+
+FIRST = ((41, 41, 2), (-1.0, -1.0, 0.0), (0.05, 0.05, 0.05))
+OTHER = ((47, 53, 2), (-1.13, -1.07, 0.0), (0.049, 0.0431, 0.05))
+ROTATION = dict(SETTINGS, EmitterCenter=[0, 0, 0.025], EmitterSize=[0.8, 0.8, 0], LifetimeRange=[20, 30])
+kept, _ = trace_in_situ(lambda k, t: rotation(FIRST), ROTATION)
+for name, grid_at in (("once", lambda k: OTHER if k >= BAD else FIRST),
+                      ("back and forth", lambda k: OTHER if k % 3 == 2 else FIRST)):
+    moved, said = trace_in_situ(lambda k, t: rotation(grid_at(k)), ROTATION)
+    gap = farthest(moved, kept)
+    print("the grid changed %s: %d particles, %g from a trace on one grid" % (name, len(moved), gap))
+    bptest.check(len(moved) > 0 and gap <= 1e-5, "grid changed %s: every element goes on (%g apart)"
+                 % (name, gap))
+    warned = [m for m in said.messages if "grid changed at t = %g" % times[BAD if name == "once" else 2] in m]
+    bptest.check(len(warned) == 1 and len(said.messages) == 1,
+                 "grid changed %s: one warning, at the first change (%s)" % (name, said.messages))
+
+
+# The GPU engine behind a Bound Particles display follows the same changes of
+# grid: its picture is the one of a trace on one grid, pixel for pixel.
+def gpu_picture(name, grid_at):
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **dict(ROTATION, Engine="GPU", NumberOfElements=400))
+    view = CreateRenderView(ViewSize=[240, 240], OrientationAxesVisibility=0)
+    shown = Show(tracer, view)
+    shown.SetRepresentationType("Bound Particles")
+    view.CameraPosition = [0, 0, 6]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 1, 0]
+    for k, t in enumerate(times):
+        feed.GetClientSideObject().SetOutput(rotation(grid_at(k)), t)
+        feed.MarkModified(feed)
+        view.ViewTime = t
+        Render(view)
+    path = os.path.join(folder, name + ".png")
+    SaveScreenshot(path, view)
+    Delete(view)
+    return path
+
+
+folder = tempfile.mkdtemp()
+gpu_picture("warm-up", lambda k: FIRST)  # a session's first view draws apart
+one_grid = gpu_picture("one-grid", lambda k: FIRST)
+bptest.check(bptest.covered_fraction(one_grid) > 0.005,
+             "the GPU picture shows elements (%g covered)" % bptest.covered_fraction(one_grid))
+for name, grid_at in (("once", lambda k: OTHER if k >= BAD else FIRST),
+                      ("back-and-forth", lambda k: OTHER if k % 3 == 2 else FIRST)):
+    mean, differing = bptest.image_difference(one_grid, gpu_picture(name, grid_at))
+    print("GPU, the grid changed %s: %g of the pixels differ from one grid's picture" % (name, differing))
+    bptest.check(differing <= 0.0005, "GPU, the grid changed %s: the picture of one grid (%g of the "
+                 "pixels differ, mean %g)" % (name, differing, mean))
 bptest.finish()
