@@ -72,8 +72,10 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
       return gatherError; // every process fails alike
     }
     input = gathered;
-    vectors = vectors && vectors->GetName() ? gathered->GetPointData()->GetArray(vectors->GetName())
-                                            : vectors;
+    // By name: a process whose piece held no points (a bare image) found no
+    // array there, but its gathered block has the others'.
+    const std::string name = vectors && vectors->GetName() ? vectors->GetName() : requested;
+    vectors = name.empty() ? vectors : gathered->GetPointData()->GetArray(name.c_str());
   }
   bp::GridGeometry grid;
   bp::FieldSlice slice;

@@ -59,11 +59,7 @@ PIECES = {
     "grids": [(0, 23), (23, LAST_X)],    # rank 1's piece moved by half a cell
 }
 TRACED = ("far", "empty", "bare")
-# "bare" fails today: rank 1's piece has no Vectors array before the gather,
-# and the tracer looks the array up in the piece held rather than the one
-# gathered ("The input has no array 'velocity' for Vectors; its 3-component
-# point arrays are 'velocity'"). Run it with --cases bare.
-DEFAULT_CASES = [name for name in PIECES if name != "bare"]
+DEFAULT_CASES = list(PIECES)
 MESSAGES = {"gap": "do not cover the extent", "arrays": "hold different point arrays",
             "grids": "lie on different grids"}
 
