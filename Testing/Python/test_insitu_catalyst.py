@@ -13,8 +13,6 @@ hoc trace of the same steps drawn by the GPU engine in a view set up alike.
 """
 import ast
 import os
-import signal
-import subprocess
 import sys
 import tempfile
 
@@ -37,20 +35,9 @@ elif ranks > 1:
     command = mpiexec + [args.pvbatch, "--symmetric", args.example] + options
 else:
     command = [args.pvpython, args.example] + options
-# pvpython initialises MPI as a singleton; its variables would make a child
-# mpiexec (or a C++ simulation's MPI_Init) believe it runs inside that job.
-environment = {k: v for k, v in os.environ.items()
-               if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
 print("running", " ".join(command), flush=True)
-# In a process group of its own, killed whole past the limit (killing
-# mpiexec alone could leave its ranks running).
-process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                           env=environment, start_new_session=True)
-try:
-    stdout, stderr = process.communicate(timeout=400)
-except subprocess.TimeoutExpired:
-    os.killpg(process.pid, signal.SIGKILL)
-    stdout, stderr = process.communicate()
+process = bptest.run_group(command, 400, stderr_apart=True)
+stdout, stderr = process.stdout, process.stderr
 print(stdout[-3000:], stderr[-3000:])
 bptest.check(process.returncode == 0, "the simulation ran (%d)" % process.returncode)
 said = [line for line in (stdout + stderr).splitlines() if "WARN" in line or "ERR" in line]

@@ -36,14 +36,6 @@ DIMS = (64, 32, 2)
 DT = 0.1
 
 
-def resident_mib():
-    with open("/proc/self/status") as status:
-        for line in status:
-            if line.startswith("VmRSS:"):
-                return int(line.split()[1]) / 1024.0
-    return float("nan")
-
-
 def grid_at(t):
     """The double gyre (A 0.1, epsilon 0.25, omega pi/5) at t on [0, 2] x [0, 1]."""
     x = numpy.linspace(0.0, 2.0, DIMS[0])
@@ -81,7 +73,7 @@ with bptest.CapturedMessages() as said:
         tracer.UpdatePipeline(t)
         if step % 50 == 0:
             counts.append(tracer.GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints())
-            resident[step] = resident_mib()
+            resident[step] = bptest.resident_mib()
             print("step %d (t = %g): %d points, %.1f MiB resident"
                   % (step, t, counts[-1], resident[step]), flush=True)
 said.messages = [m for m in said.messages if "New time step is not" not in m]

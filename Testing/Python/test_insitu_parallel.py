@@ -22,11 +22,8 @@ Run as the driver; it runs itself under mpiexec with `--case NAME`.
 """
 import os
 import shutil
-import signal
-import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -160,19 +157,12 @@ def run_case(name):
                                    " | ".join(said.messages)[:300].replace("\n", " ")))
 
 
-def run_job(name, work, environment):
+def run_job(name, work):
     command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(RANKS),
                args.pvbatch, "--symmetric", os.path.abspath(__file__), "--plugin", args.plugin,
                "--case", name, "--work", work]
-    started = time.time()
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               text=True, env=environment, start_new_session=True)
-    try:
-        out, _ = process.communicate(timeout=TIME_LIMIT)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        out, _ = process.communicate()
-    seconds = time.time() - started
+    process = bptest.run_group(command, TIME_LIMIT)
+    out, seconds = process.stdout, process.seconds
     results = {}
     for rank in range(RANKS):
         path = os.path.join(work, "result_%s_%d.txt" % (name, rank))
@@ -210,14 +200,10 @@ def compare(name, work, times):
 
 
 def drive():
-    # pvpython initialises MPI as a singleton; its variables would make a
-    # child mpiexec believe it runs inside that job.
-    environment = {k: v for k, v in os.environ.items()
-                   if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
     work = tempfile.mkdtemp(prefix="bp-insitu-parallel-")
     times = write_steps(work)
     for name in args.cases.split(",") if args.cases else DEFAULT_CASES:
-        results = run_job(name, work, environment)
+        results = run_job(name, work)
         if name in TRACED:
             if len(results) == RANKS:
                 bptest.check(sum(points for points, _, _ in results.values()) > 0,

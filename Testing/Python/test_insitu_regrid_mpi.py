@@ -9,8 +9,6 @@ Run as the driver; it runs itself under pvbatch --symmetric on 2 ranks with
 """
 import argparse
 import os
-import signal
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -26,16 +24,9 @@ args = parser.parse_args()
 if not args.worker:
     command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", "2", args.pvbatch,
                "--symmetric", os.path.abspath(__file__), "--plugin", args.plugin, "--worker"]
-    environment = {k: v for k, v in os.environ.items()
-                   if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                               env=environment, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=180)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        output, _ = process.communicate()
-        bptest.check(False, "every rank ends within 180 s")
+    process = bptest.run_group(command, 180)
+    output = process.stdout
+    bptest.check(process.seconds < 180, "every rank ends within 180 s")
     print(output[-6000:])
     bptest.check(process.returncode == 0, "pvbatch on 2 ranks ends with 0 (%d)" % process.returncode)
     bptest.check("rank 0: all checks passed" in output, "rank 0's checks passed")
