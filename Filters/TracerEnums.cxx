@@ -45,7 +45,8 @@ static_assert(same(T::CENTER_LEAVES, bp::ResetWhen::CenterLeaves) &&
   "vtkBoundParticleTracer::ResetConditions is bp::ResetWhen");
 static_assert(same(T::NO_ANCHOR, bp::Anchor::None) && same(T::ANCHOR_CENTRE, bp::Anchor::Centre),
   "vtkBoundParticleTracer::AnchorModes is bp::Anchor");
-static_assert(same(T::NO_INERTIA, bp::Inertia::None) && same(T::MAXEY_RILEY, bp::Inertia::MaxeyRiley),
+static_assert(
+  same(T::NO_INERTIA, bp::Inertia::None) && same(T::MAXEY_RILEY, bp::Inertia::MaxeyRiley),
   "vtkBoundParticleTracer::InertiaModels is bp::Inertia");
 static_assert(same(T::RANDOM_RELEASES, bp::ReleasePattern::Random) &&
     same(T::LATTICE_RELEASES, bp::ReleasePattern::Lattice),

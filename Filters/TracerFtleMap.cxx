@@ -179,7 +179,7 @@ void askAlike(vtkInformation* asked, vtkInformation* other)
 
 } // namespace bpvtk
 
-void vtkBoundParticleTracer::vtkInternals::showFtleMap(vtkImageData* image)
+void vtkBoundParticleTracerInternals::showFtleMap(vtkImageData* image)
 {
   const bp::Engine* particles = this->stepper().particles();
   if (!particles)

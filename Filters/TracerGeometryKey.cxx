@@ -27,7 +27,7 @@ namespace
 class Hash
 {
 public:
-  using Known = std::vector<bpvtk::FieldResampler::HashedArray>;
+  using Known = std::vector<bpvtk::HashedArray>;
 
   /// `known`: arrays hashed before, whose hashes stand while they are unmodified.
   Hash(const bp::RangeRunner& run, const Known& known)
@@ -71,7 +71,7 @@ public:
       return;
     }
     const vtkMTimeType time = array->GetMTime();
-    for (const bpvtk::FieldResampler::HashedArray& known : this->Before)
+    for (const bpvtk::HashedArray& known : this->Before)
     {
       if (known.array == array && known.time == time)
       {
@@ -192,7 +192,7 @@ namespace bpvtk
 
 std::uint64_t geometryKey(const std::vector<vtkDataSet*>& blocks,
   const std::array<int, 3>& requested, vtkMultiProcessController* controller,
-  const bp::RangeRunner& run, std::vector<FieldResampler::HashedArray>& hashed)
+  const bp::RangeRunner& run, std::vector<HashedArray>& hashed)
 {
   Hash key(run, hashed);
   key.mix(blocks.size());

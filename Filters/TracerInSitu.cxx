@@ -3,10 +3,7 @@
 // at a time (docs/design.md, "In situ").
 #include "TracerInSitu.h"
 
-#include "TracerFieldProbe.h"
-#include "TracerFtleMap.h"
 #include "vtkAlgorithm.h"
-#include "vtkBoundParticleTracer.h"
 #include "vtkBoundParticleTracerInternals.h"
 #include "vtkDataObject.h"
 #include "vtkExecutive.h"
@@ -14,7 +11,6 @@
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationExecutivePortKey.h"
 #include "vtkInformationIntegerKey.h"
-#include "vtkInformationVector.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
 #include "vtkVersionMacros.h"
@@ -81,65 +77,75 @@ double presentTime(vtkInformation* inInfo)
   return 0.0;
 }
 
-} // namespace bpvtk
-
-int vtkBoundParticleTracer::RequestStreamInformation(
-  vtkInformation* inInfo, vtkInformationVector* outputVector)
+std::vector<double> announcedGrid(vtkInformation* inInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  using Arrival = bp::StreamTimeLine::Arrival;
-  vtkInternals& I = *this->Internals;
-  // Upstream changes with every step that arrives; only a change of this
-  // filter's settings (or a first step, or a post hoc line before) starts the
-  // trace again, at the present step.
-  const vtkMTimeType own = this->GetMTime();
-  if (!I.Plan.streaming() || own != I.StreamSettingsTime)
+  std::vector<double> grid;
+  if (!inInfo->Has(SDDP::WHOLE_EXTENT()))
   {
-    I.forgetTrace();
-    I.Stream.clear();
-    I.StreamSettingsTime = own;
+    return grid;
   }
-  const double time = bpvtk::presentTime(inInfo);
-  const Arrival arrival = I.Stream.offer(time);
-  if (I.Stream.empty())
+  const int* extent = inInfo->Get(SDDP::WHOLE_EXTENT());
+  grid.assign(extent, extent + 6);
+  for (vtkInformationDoubleVectorKey* key : { vtkDataObject::ORIGIN(), vtkDataObject::SPACING() })
   {
-    // A first step with no usable time: nothing to start from.
-    vtkErrorMacro("The input's present time step is at t = "
-      << time << "; a time step handed in situ must have a finite time.");
-    I.Plan = bp::TracePlan();
-    for (int port = 0; port < 2; ++port)
+    if (inInfo->Has(key) && inInfo->Length(key) == 3)
     {
-      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_STEPS());
-      outputVector->GetInformationObject(port)->Remove(SDDP::TIME_RANGE());
+      grid.insert(grid.end(), inInfo->Get(key), inInfo->Get(key) + 3);
     }
-    return 1;
   }
-  const std::string refusal = I.Stream.refusal(arrival, time);
-  // The first step announced again is no step lost (5.11's Catalyst hands
-  // its producer the first step twice, and says so itself): refused quietly.
-  const bool firstAgain = arrival == Arrival::Repeat && I.Stream.times().size() == 1;
-  if (!refusal.empty() && !firstAgain)
-  {
-    vtkWarningMacro(<< refusal);
-  }
-  I.Plan.setStreamTimes(I.Stream.times());
-  const std::vector<double>& times = I.Plan.outputTimes();
-  const double range[2] = { times.front(), times.back() };
-  const bpvtk::TracerConfig config = this->Config();
-  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
-  for (vtkInformation* info : { outputVector->GetInformationObject(0), mapInfo })
-  {
-    info->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
-    info->Set(SDDP::TIME_RANGE(), range, 2);
-  }
-  bpvtk::announceFtleMap(mapInfo, config,
-    bpvtk::mapsLattice(config) && inInfo->Has(vtkDataObject::DATA_OBJECT())
-      ? this->ProbeField(inInfo, { time })
-      : bpvtk::FieldProbe());
-  return 1;
+  return grid;
 }
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::skipPresentStep(const std::string& error)
+} // namespace bpvtk
+
+std::string vtkBoundParticleTracerInternals::offerStreamTime(
+  vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning)
+{
+  using Arrival = bp::StreamTimeLine::Arrival;
+  // Under MPI each process holds its block of the last step only, and the
+  // blocks follow the whole grid: a trace cannot follow the grid's change
+  // (one process alone re-locates, matchHeldGrid). Every process sees the
+  // same announcement, so all start again alike.
+  const bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
+    !this->StreamGrid.empty() && grid != this->StreamGrid;
+  if (regridded)
+  {
+    std::ostringstream text;
+    text << "The input's grid changed at t = " << time
+         << ": under MPI the trace cannot follow a change of grid in situ (each process holds "
+            "its block of the last step only), so it starts again at the present step.";
+    warning = text.str();
+  }
+  this->StreamGrid = grid;
+  // Upstream changes with every step that arrives; only a change of the
+  // filter's settings (or a first step, or a post hoc line before, or a
+  // change of grid under MPI) starts the trace again, at the present step.
+  if (!this->Plan.streaming() || settingsTime != this->StreamSettingsTime || regridded)
+  {
+    this->forgetTrace();
+    this->Stream.clear();
+    this->StreamSettingsTime = settingsTime;
+  }
+  const Arrival arrival = this->Stream.offer(time);
+  if (this->Stream.empty())
+  {
+    // A first step with no usable time: nothing to start from.
+    this->Plan = bp::TracePlan();
+    std::ostringstream error;
+    error << "The input's present time step is at t = " << time
+          << "; a time step handed in situ must have a finite time.";
+    return error.str();
+  }
+  // The first step announced again is no step lost (5.11's Catalyst hands
+  // its producer the first step twice, and says so itself): refused quietly.
+  const bool firstAgain = arrival == Arrival::Repeat && this->Stream.times().size() == 1;
+  warning += firstAgain ? std::string() : this->Stream.refusal(arrival, time);
+  this->Plan.setStreamTimes(this->Stream.times());
+  return std::string();
+}
+
+bpvtk::TracerPass vtkBoundParticleTracerInternals::skipPresentStep(const std::string& error)
 {
   const bool kept = this->Plan.streaming() && !this->Decision.replay &&
     this->stepper().cursor.valid && this->Stream.times().size() > 1;
@@ -157,7 +163,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::skipPresentStep(const st
   return { Pass::Skipped, -1, text.str() };
 }
 
-void vtkBoundParticleTracer::vtkInternals::relocate(
+void vtkBoundParticleTracerInternals::relocate(
   const bp::GridGeometry& grid, const bp::FieldSlice& slice)
 {
   const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);

@@ -13,6 +13,8 @@
 #ifndef BoundParticles_TracerInSitu_h
 #define BoundParticles_TracerInSitu_h
 
+#include <vector>
+
 class vtkInformation;
 
 namespace bpvtk
@@ -24,6 +26,10 @@ bool offersOnlyPresent(vtkInformation* inInfo);
 /// The input's present time: the last of its time values (a trivial producer
 /// lists them oldest first), else its data's time, else 0.
 double presentTime(vtkInformation* inInfo);
+
+/// The image grid the input announces (whole extent, origin, spacing), as
+/// numbers to compare step with step; empty where it announces none.
+std::vector<double> announcedGrid(vtkInformation* inInfo);
 
 } // namespace bpvtk
 

@@ -13,11 +13,9 @@
 #ifndef BoundParticles_TracerOutput_h
 #define BoundParticles_TracerOutput_h
 
-#include "Engine.h"
-#include "OutputArrays.h"
-#include "Parallel.h"
-#include "VectorField.h"
+#include "TracerOutputArrays.h" // for OutputFrame
 
+#include "vtkCellArray.h" // for vtkSmartPointer<vtkCellArray>
 #include "vtkSmartPointer.h"
 
 #include <array>
@@ -26,34 +24,11 @@
 #include <utility>
 #include <vector>
 
-class vtkCellArray;
 class vtkDataArray;
 class vtkPolyData;
 
 namespace bpvtk
 {
-
-/// Where the particles are shown: what turns engine state into output.
-struct OutputFrame
-{
-  double time = 0.0;                                   ///< the simulation time shown
-  std::array<double, 3> offset = { 0, 0, 0 };          ///< world position of the grid-local origin
-  std::array<double, 6> domain = { 0, 1, 0, 1, 0, 1 }; ///< the whole field, grid-local
-  double reach = 0.0;      ///< the largest world |coordinate| in the field
-  double cellLength = 1.0; ///< of the local grid (for the points' precision)
-  int coloringAxis = 2;    ///< for Layer and Radius
-  /// Per row of the table, by id: whether the output carries it (the
-  /// tracer's Output Arrays and Compute Vorticity).
-  std::array<bool, std::size_t(bp::OutputArrayId::Count)> wanted = everyArray();
-
-  bool wants(const bp::OutputArray& row) const { return this->wanted[std::size_t(row.id)]; }
-  static std::array<bool, std::size_t(bp::OutputArrayId::Count)> everyArray()
-  {
-    std::array<bool, std::size_t(bp::OutputArrayId::Count)> all;
-    all.fill(true);
-    return all;
-  }
-};
 
 /**
  * What the output keeps from one frame to the next: its cells, while the

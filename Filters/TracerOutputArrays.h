@@ -3,12 +3,16 @@
  * @file TracerOutputArrays.h
  * @brief How each row of bp::outputArrays() is written into the tracer's
  * output: a block of whole elements at a time, inside the one pass that
- * writes every array (TracerOutput.cxx), and the trails' tuples after them.
+ * writes every array (TracerOutput.cxx), and the trails' tuples after them;
+ * and the frame the output is shown in (OutputFrame).
  */
 #ifndef BoundParticles_TracerOutputArrays_h
 #define BoundParticles_TracerOutputArrays_h
 
-#include "TracerOutput.h"
+#include "Engine.h"
+#include "OutputArrays.h"
+#include "Parallel.h"
+#include "VectorField.h"
 
 #include <array>
 #include <cstddef>
@@ -19,6 +23,28 @@ class vtkDataArray;
 
 namespace bpvtk
 {
+
+/// Where the particles are shown: what turns engine state into output.
+struct OutputFrame
+{
+  double time = 0.0;                                   ///< the simulation time shown
+  std::array<double, 3> offset = { 0, 0, 0 };          ///< world position of the grid-local origin
+  std::array<double, 6> domain = { 0, 1, 0, 1, 0, 1 }; ///< the whole field, grid-local
+  double reach = 0.0;      ///< the largest world |coordinate| in the field
+  double cellLength = 1.0; ///< of the local grid (for the points' precision)
+  int coloringAxis = 2;    ///< for Layer and Radius
+  /// Per row of the table, by id: whether the output carries it (the
+  /// tracer's Output Arrays and Compute Vorticity).
+  std::array<bool, std::size_t(bp::OutputArrayId::Count)> wanted = everyArray();
+
+  bool wants(const bp::OutputArray& row) const { return this->wanted[std::size_t(row.id)]; }
+  static std::array<bool, std::size_t(bp::OutputArrayId::Count)> everyArray()
+  {
+    std::array<bool, std::size_t(bp::OutputArrayId::Count)> all;
+    all.fill(true);
+    return all;
+  }
+};
 
 /// A pose of an element's trail that the output shows.
 struct TrailPose

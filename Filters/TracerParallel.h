@@ -100,8 +100,10 @@ public:
    * for: `held` itself where every process holds its block and GhostCells
    * layers, else this process's block with its layers, the point arrays
    * gathered from every process's piece (collective; TracerPieceGather.cxx).
-   * Null with `error` set on every process where the pieces do not cover a
-   * block or hold different arrays.
+   * A process whose piece has no points gathers on the first non-empty
+   * piece's grid and arrays. Null with `error` set on every process where the
+   * pieces do not cover a block, hold different arrays or lie on different
+   * grids.
    */
   vtkSmartPointer<vtkImageData> gatherPiece(vtkImageData* held, std::string& error);
 

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -74,16 +76,115 @@ std::vector<vtkDataArray*> travelling(vtkImageData* image)
   return arrays;
 }
 
-/// What every process's arrays must share: names, components and types.
-std::string signature(const std::vector<vtkDataArray*>& arrays)
+/// One point array's layout: what every process's piece must hold alike.
+struct ArraySpec
 {
-  std::ostringstream text;
-  for (vtkDataArray* array : arrays)
+  std::string name;
+  int components = 1;
+  int type = VTK_DOUBLE;
+  bool operator==(const ArraySpec& o) const
   {
-    text << array->GetName() << ":" << array->GetNumberOfComponents() << ":" << array->GetDataType()
-         << ";";
+    return name == o.name && components == o.components && type == o.type;
+  }
+};
+
+/// What every process's piece must share: the grid it lies on and its point
+/// arrays. A piece with no points sends nothing and takes the others'.
+struct PieceGrid
+{
+  double origin[3] = { 0.0, 0.0, 0.0 };
+  double spacing[3] = { 1.0, 1.0, 1.0 };
+  std::vector<ArraySpec> arrays;
+};
+
+/// `image`'s grid and arrays as text (names length-prefixed, numbers to full
+/// precision), to be compared and shared between processes; empty for a
+/// piece with no points.
+std::string describeGrid(vtkImageData* image)
+{
+  if (image->GetNumberOfPoints() == 0)
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << std::setprecision(17);
+  for (int a = 0; a < 3; ++a)
+  {
+    text << image->GetOrigin()[a] << " " << image->GetSpacing()[a] << " ";
+  }
+  for (vtkDataArray* array : travelling(image))
+  {
+    const std::string name = array->GetName();
+    text << name.size() << " " << name << " " << array->GetNumberOfComponents() << " "
+         << array->GetDataType() << " ";
   }
   return text.str();
+}
+
+PieceGrid readGrid(const std::string& described)
+{
+  PieceGrid grid;
+  std::istringstream text(described);
+  for (int a = 0; a < 3; ++a)
+  {
+    text >> grid.origin[a] >> grid.spacing[a];
+  }
+  std::size_t length = 0;
+  while (text >> length)
+  {
+    ArraySpec spec;
+    text.get(); // the space before the name
+    spec.name.resize(length);
+    text.read(&spec.name[0], std::streamsize(length));
+    text >> spec.components >> spec.type;
+    grid.arrays.push_back(spec);
+  }
+  return grid;
+}
+
+/// Why `mine` (a piece's described grid) cannot be gathered with `first`
+/// (the first piece's), or empty.
+std::string mismatch(const std::string& mine, const std::string& first)
+{
+  if (mine.empty() || mine == first)
+  {
+    return std::string();
+  }
+  const PieceGrid a = readGrid(mine), b = readGrid(first);
+  if (!(a.arrays == b.arrays))
+  {
+    return "The processes' pieces of the input hold different point arrays; every piece must "
+           "hold the same ones.";
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double tolerance = 1e-6 * std::abs(b.spacing[axis]);
+    if (std::abs(a.origin[axis] - b.origin[axis]) > tolerance ||
+      std::abs(a.spacing[axis] - b.spacing[axis]) > tolerance)
+    {
+      return "The processes' pieces of the input lie on different grids (origin or spacing); "
+             "every piece must be a part of one grid.";
+    }
+  }
+  return std::string();
+}
+
+/// An image with no points on `described`'s grid, with its arrays: what a
+/// process whose piece is empty gathers into.
+vtkSmartPointer<vtkImageData> emptyPieceOn(const std::string& described)
+{
+  const PieceGrid grid = readGrid(described);
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(grid.origin);
+  image->SetSpacing(grid.spacing);
+  for (const ArraySpec& spec : grid.arrays)
+  {
+    auto array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(spec.type));
+    array->SetName(spec.name.c_str());
+    array->SetNumberOfComponents(spec.components);
+    image->GetPointData()->AddArray(array);
+  }
+  return image;
 }
 
 int totalComponents(const std::vector<vtkDataArray*>& arrays)
@@ -210,15 +311,21 @@ vtkSmartPointer<vtkImageData> PieceLayout::gatherPiece(vtkImageData* held, std::
   {
     return held; // nothing needs to travel (every piece has its block and ghosts)
   }
-  // Every process must send what it holds in one layout.
-  const std::string mineSigned = signature(travelling(held));
-  const std::string first = firstNonEmpty(this->Controller, mineSigned);
-  error = this->agree(mineSigned == first ? std::string()
-                                          : "The processes' pieces of the input hold different "
-                                            "point arrays; every piece must hold the same ones.");
+  // Every process must send what it holds in one layout. A process whose
+  // piece is empty has no grid or arrays of its own (a bare image's origin
+  // and spacing are VTK's defaults): it gathers on the first piece's.
+  const std::string mineDescribed = describeGrid(held);
+  const std::string first = firstNonEmpty(this->Controller, mineDescribed);
+  error = this->agree(mismatch(mineDescribed, first));
   if (!error.empty())
   {
     return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> onFirstGrid;
+  if (mineDescribed.empty())
+  {
+    onFirstGrid = emptyPieceOn(first);
+    held = onFirstGrid;
   }
   const Extent& want = needs[std::size_t(me)];
   vtkSmartPointer<vtkImageData> piece = emptyLike(held, want);

@@ -18,7 +18,7 @@
 
 #include <algorithm>
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::replay(
+bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   const Config& config, vtkInformationVector** inputVector)
 {
   const std::vector<int> ids = this->Plan.needed(this->Plan.startTime(), this->target());
@@ -73,7 +73,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::replay(
   return configured;
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::gatherSeeds(const Config& config,
+std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, bpvtk::TracerSeeds& seeds)
 {
   const std::string seedError = this->readSeeds(config, inputVector, seeds.xyz);
@@ -110,7 +110,7 @@ std::string vtkBoundParticleTracer::vtkInternals::gatherSeeds(const Config& conf
   return std::string();
 }
 
-bool vtkBoundParticleTracer::vtkInternals::needMoreGhostLayers(
+bool vtkBoundParticleTracerInternals::needMoreGhostLayers(
   const bp::Resolution& resolved, const bp::FieldFacts& facts)
 {
   if (!this->Layout.distributed())
@@ -131,7 +131,7 @@ bool vtkBoundParticleTracer::vtkInternals::needMoreGhostLayers(
   return true;
 }
 
-bp::FieldFacts vtkBoundParticleTracer::vtkInternals::fieldFacts(const bp::VectorField& field)
+bp::FieldFacts vtkBoundParticleTracerInternals::fieldFacts(const bp::VectorField& field)
 {
   bp::FieldFacts facts;
   // The whole field's, also in parallel where this process holds a piece.
@@ -149,7 +149,7 @@ bp::FieldFacts vtkBoundParticleTracer::vtkInternals::fieldFacts(const bp::Vector
   return facts;
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::elementTemplate(
+std::string vtkBoundParticleTracerInternals::elementTemplate(
   const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape)
 {
   shape = bp::builtinTemplate(config.shape);
@@ -162,7 +162,7 @@ std::string vtkBoundParticleTracer::vtkInternals::elementTemplate(
   return error.empty() ? bpvtk::templateFromPolyData(mesh, config.templateSprings, shape) : error;
 }
 
-void vtkBoundParticleTracer::vtkInternals::warnOfReleaseWindow(const bp::Parameters& p)
+void vtkBoundParticleTracerInternals::warnOfReleaseWindow(const bp::Parameters& p)
 {
   const std::vector<double>& times = this->Plan.outputTimes();
   if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
@@ -182,7 +182,7 @@ void vtkBoundParticleTracer::vtkInternals::warnOfReleaseWindow(const bp::Paramet
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::warnOfDeformation(
+void vtkBoundParticleTracerInternals::warnOfDeformation(
   const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p)
 {
   const bool map = p.releasePattern == bp::ReleasePattern::Lattice;
@@ -198,7 +198,7 @@ void vtkBoundParticleTracer::vtkInternals::warnOfDeformation(
   }
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Config& config,
+std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
 {
@@ -250,7 +250,7 @@ std::string vtkBoundParticleTracer::vtkInternals::checkConfiguration(const Confi
   return error.empty() ? error : error + ".";
 }
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const Config& config,
+bpvtk::TracerPass vtkBoundParticleTracerInternals::configureStepper(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bp::Resolution& resolved,
   const bpvtk::TracerSeeds& seeds)
 {
@@ -302,7 +302,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::configureStepper(const C
   return Pass();
 }
 
-void vtkBoundParticleTracer::vtkInternals::warnOfUnreachableWeights(
+void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
   const Config& config, const bp::VectorField& field, const bp::Parameters& p)
 {
   const bool weighted = !config.releaseWeights.empty() && p.seedPoints.empty() &&
@@ -330,7 +330,7 @@ void vtkBoundParticleTracer::vtkInternals::warnOfUnreachableWeights(
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::startTrace()
+void vtkBoundParticleTracerInternals::startTrace()
 {
   this->Storage.reset(); // the element count or shape may have changed
   this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,

@@ -39,9 +39,9 @@
 
 #include "Parallel.h"
 #include "ResampleGrid.h"
+#include "TracerGeometryKey.h"
 
 #include "vtkType.h"
-#include "vtkWeakPointer.h"
 
 #include <array>
 #include <atomic>
@@ -117,15 +117,6 @@ public:
 
   /// About what resampling takes per grid point, while a grid is located.
   static const double BytesPerGridPoint;
-
-  /// An array whose content was hashed: while it lives unmodified (a reader
-  /// that keeps a static mesh hands the same arrays again), its hash stands.
-  struct HashedArray
-  {
-    vtkWeakPointer<vtkDataArray> array;
-    vtkMTimeType time = 0;
-    std::uint64_t hash = 0;
-  };
 
 private:
   /// Where one grid point takes its vector from: a cell of a block, and for

@@ -142,7 +142,7 @@ void warnOfSeeds(vtkObject* owner, const bpvtk::TracerSeeds& seeds, std::size_t 
 }
 } // namespace
 
-std::string vtkBoundParticleTracer::vtkInternals::readSeeds(
+std::string vtkBoundParticleTracerInternals::readSeeds(
   const Config& config, vtkInformationVector** inputVector, std::vector<double>& xyz) const
 {
   xyz.clear();
@@ -171,7 +171,7 @@ std::string vtkBoundParticleTracer::vtkInternals::readSeeds(
   return std::string();
 }
 
-void vtkBoundParticleTracer::vtkInternals::seedTypePoints(
+void vtkBoundParticleTracerInternals::seedTypePoints(
   const Config& config, const bp::VectorField& field, bpvtk::TracerSeeds& seeds) const
 {
   vtkBoundParticleSeedType* type = config.seedType;
@@ -205,7 +205,7 @@ void vtkBoundParticleTracer::vtkInternals::seedTypePoints(
   }
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::seedPoints(
+std::string vtkBoundParticleTracerInternals::seedPoints(
   const bpvtk::TracerSeeds& seeds, const bp::VectorField& field, bp::Parameters& p)
 {
   const std::size_t count = seeds.total;

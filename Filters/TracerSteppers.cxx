@@ -3,11 +3,8 @@
 
 #include "BoundParticleWorkQueues.h"
 #include "TracerParallel.h"
-#include "vtkBoundParticleTracer.h"
 
 #include "ParticleLayout.h"
-#include "vtkInformation.h"
-#include "vtkInformationIntegerRequestKey.h"
 #include "vtkSMPTools.h"
 #include "vtkVersionMacros.h"
 
@@ -126,18 +123,16 @@ TracerSteppers::TracerSteppers()
 {
 }
 
-void TracerSteppers::select(
-  bp::EngineChoice engine, vtkInformation* outInfo, const PieceLayout& pieces)
+void TracerSteppers::select(bp::EngineChoice engine, int gpuQueue, const PieceLayout& pieces)
 {
   this->Pool.refresh(); // once an update: the user may have changed the thread count
   this->Queue = nullptr;
   this->AutomaticCpuOn.clear();
   // The GPU engine's state lives in the GL context that draws it: only a
   // display in this process, in a run of one process, can take it.
-  if (engine != bp::EngineChoice::Cpu && !pieces.distributed() &&
-    outInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()))
+  if (engine != bp::EngineChoice::Cpu && !pieces.distributed() && gpuQueue != 0)
   {
-    this->Queue = FindWorkQueue(outInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()));
+    this->Queue = FindWorkQueue(gpuQueue);
   }
   if (this->Queue && !bp::usesGpuEngine(engine, this->Queue->report().renderer))
   {

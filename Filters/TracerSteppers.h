@@ -21,8 +21,6 @@
 #include <memory>
 #include <string>
 
-class vtkInformation;
-
 namespace bpvtk
 {
 class PieceLayout;
@@ -72,10 +70,11 @@ class TracerSteppers
 public:
   TracerSteppers();
 
-  /// Picks this update's stepper for a request (`outInfo`) to a tracer whose
-  /// Engine property is `engine` (bp::usesGpuEngine() with the renderer of
-  /// the display that asked).
-  void select(bp::EngineChoice engine, vtkInformation* outInfo, const PieceLayout& pieces);
+  /// Picks this update's stepper for a request to a tracer whose Engine
+  /// property is `engine` (bp::usesGpuEngine() with the renderer of the
+  /// display that asked): `gpuQueue` is the work queue a Bound Particles
+  /// display asked for (vtkBoundParticleTracer::GPU_WORK_QUEUE; 0: none).
+  void select(bp::EngineChoice engine, int gpuQueue, const PieceLayout& pieces);
   /// The software renderer whose display got the CPU engine because Engine
   /// is Automatic, at the last select(); empty otherwise.
   const std::string& automaticCpuOn() const { return this->AutomaticCpuOn; }

@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
-bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
+bool vtkBoundParticleTracerInternals::wantsTimeStep()
 {
   // A first pass with every time step in hand asked for whatever upstream
   // held: take it only if the work needs it.
@@ -33,7 +33,7 @@ bool vtkBoundParticleTracer::vtkInternals::wantsTimeStep()
   return wanted && !this->Cache.has(this->RequestIndex);
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
+std::string vtkBoundParticleTracerInternals::takeTimeStep(
   const Config& config, const bpvtk::TracerInputStep& step)
 {
   if (!this->wantsTimeStep())
@@ -72,8 +72,10 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
       return gatherError; // every process fails alike
     }
     input = gathered;
-    vectors = vectors && vectors->GetName() ? gathered->GetPointData()->GetArray(vectors->GetName())
-                                            : vectors;
+    // By name: a process whose piece held no points (a bare image) found no
+    // array there, but its gathered block has the others'.
+    const std::string name = vectors && vectors->GetName() ? vectors->GetName() : requested;
+    vectors = name.empty() ? vectors : gathered->GetPointData()->GetArray(name.c_str());
   }
   bp::GridGeometry grid;
   bp::FieldSlice slice;
@@ -113,7 +115,7 @@ std::string vtkBoundParticleTracer::vtkInternals::takeTimeStep(
   return this->Layout.distributed() ? this->Layout.agree(kept) : kept;
 }
 
-void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtkDataObject* input)
+void vtkBoundParticleTracerInternals::noteVectors(const Config& config, vtkDataObject* input)
 {
   // Said once for each choice among an input's arrays, by one process.
   const std::string note =
@@ -128,7 +130,7 @@ void vtkBoundParticleTracer::vtkInternals::noteVectors(const Config& config, vtk
   this->SaidVectors = note;
 }
 
-void vtkBoundParticleTracer::vtkInternals::keepInPlane(
+void vtkBoundParticleTracerInternals::keepInPlane(
   const bp::GridGeometry& grid, bp::FieldSlice& slice)
 {
   // The whole field's flat axes (a process's block of an image may be thin).
@@ -186,7 +188,7 @@ void vtkBoundParticleTracer::vtkInternals::keepInPlane(
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
+void vtkBoundParticleTracerInternals::takeReleaseWeights(
   const Config& config, vtkDataObject* input, bp::FieldSlice& slice)
 {
   // Collective in a distributed run, as every process reads in this pass.
@@ -203,7 +205,7 @@ void vtkBoundParticleTracer::vtkInternals::takeReleaseWeights(
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
+void vtkBoundParticleTracerInternals::warnOfSlice(
   const std::string& maskProblem, std::size_t nonFinite, std::size_t points)
 {
   if (!maskProblem.empty() && !this->WarnedMask)
@@ -223,7 +225,7 @@ void vtkBoundParticleTracer::vtkInternals::warnOfSlice(
   }
 }
 
-double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
+double vtkBoundParticleTracerInternals::sliceTime(vtkDataObject* input)
 {
   // In situ the first step is shown steady but is the start of the time line.
   const double time = this->Plan.unsteady() || this->Plan.streaming()
@@ -243,7 +245,7 @@ double vtkBoundParticleTracer::vtkInternals::sliceTime(vtkDataObject* input)
   return time;
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
+std::string vtkBoundParticleTracerInternals::resampleInput(
   const Config& config, vtkDataObject* input, vtkSmartPointer<vtkImageData>& piece)
 {
   vtkNew<vtkImageData> whole;
@@ -269,7 +271,7 @@ std::string vtkBoundParticleTracer::vtkInternals::resampleInput(
   return error;
 }
 
-vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
+vtkDataArray* vtkBoundParticleTracerInternals::probeGrid(
   const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid)
 {
   vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
@@ -292,7 +294,7 @@ vtkDataArray* vtkBoundParticleTracer::vtkInternals::probeGrid(
   return image->GetPointData()->GetArray(this->Resampler.arrayName().c_str());
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
+std::string vtkBoundParticleTracerInternals::keepTimeStep(
   bp::GridGeometry grid, std::array<double, 3> offset, const bp::FieldSlice& slice)
 {
   // In world coordinates first, so how far from the origin the data lies counts too.
@@ -330,7 +332,7 @@ std::string vtkBoundParticleTracer::vtkInternals::keepTimeStep(
   return std::string();
 }
 
-std::string vtkBoundParticleTracer::vtkInternals::matchHeldGrid(
+std::string vtkBoundParticleTracerInternals::matchHeldGrid(
   bp::GridGeometry& grid, std::array<double, 3>& offset, const bp::FieldSlice& slice)
 {
   const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());

@@ -85,7 +85,7 @@ BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
 #undef BP_CLAMPED_SETTER
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
-  : Internals(new vtkInternals(this))
+  : Internals(new vtkBoundParticleTracerInternals(this))
 {
   this->SetNumberOfInputPorts(3);
   // The elements, and the FTLE map of a lattice release (TracerFtleMap.h).
@@ -121,23 +121,23 @@ double vtkBoundParticleTracer::GetSimulationTime() const
 }
 vtkIdType vtkBoundParticleTracer::GetStepsInLastUpdate() const
 {
-  return this->Internals->StepsInLastUpdate;
+  return this->Internals->stepsInLastUpdate();
 }
 bool vtkBoundParticleTracer::GetLastUpdateReplayed() const
 {
-  return this->Internals->LastUpdateReplayed;
+  return this->Internals->lastUpdateReplayed();
 }
 int vtkBoundParticleTracer::GetNumberOfCachedTimeSteps() const
 {
-  return int(this->Internals->Cache.size());
+  return this->Internals->timeStepsHeld();
 }
 double vtkBoundParticleTracer::GetResolvedTimeStep() const
 {
-  return this->Internals->ResolvedDt;
+  return this->Internals->resolvedDt();
 }
 double vtkBoundParticleTracer::GetResolvedElementSize() const
 {
-  return this->Internals->ResolvedElementSize;
+  return this->Internals->resolvedElementSize();
 }
 
 bp::TraceSettings vtkBoundParticleTracer::Settings() const
@@ -302,121 +302,11 @@ vtkMTimeType vtkBoundParticleTracer::GetMTime()
   return this->SeedType ? std::max(own, this->SeedType->GetMTime()) : own;
 }
 
-int vtkBoundParticleTracer::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkInternals& I = *this->Internals;
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  if (bpvtk::offersOnlyPresent(inInfo))
-  {
-    return this->RequestStreamInformation(inInfo, outputVector);
-  }
-  // The pipeline asks for information again only when this filter or
-  // something upstream changed: the trace is stale.
-  I.forgetTrace();
-  std::vector<double> inputTimes;
-  if (inInfo->Has(SDDP::TIME_STEPS()))
-  {
-    const double* steps = inInfo->Get(SDDP::TIME_STEPS());
-    inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
-  }
-  // The field is probed once here where the time line is automatic or the
-  // FTLE map's extent (a lattice release's) depends on it.
-  const bpvtk::TracerConfig config = this->Config();
-  const bool automatic = this->AutomaticTimeLine(inputTimes);
-  const bpvtk::FieldProbe probe =
-    (automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT())
-    ? this->ProbeField(inInfo, inputTimes)
-    : bpvtk::FieldProbe();
-  const bp::TimeLine line =
-    this->ResolveTimeLine(inputTimes, automatic ? probe.scale : bp::TimeScale());
-  vtkInformation* mapInfo = outputVector->GetInformationObject(1);
-  const std::string error =
-    I.Plan.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
-    for (vtkInformation* info : { outInfo, mapInfo })
-    {
-      info->Remove(SDDP::TIME_STEPS());
-      info->Remove(SDDP::TIME_RANGE());
-    }
-    bpvtk::announceFtleMap(mapInfo, config, bpvtk::FieldProbe());
-    return 1;
-  }
-  const std::vector<double>& times = I.Plan.outputTimes();
-  outInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
-  const double range[2] = { times.front(), times.back() };
-  outInfo->Set(SDDP::TIME_RANGE(), range, 2);
-  // The FTLE map shares the time line; its extent is the lattice's, known
-  // from the settings and the field (empty for other releases).
-  mapInfo->Set(SDDP::TIME_STEPS(), times.data(), int(times.size()));
-  mapInfo->Set(SDDP::TIME_RANGE(), range, 2);
-  bpvtk::announceFtleMap(mapInfo, config, probe);
-  return 1;
-}
-
-bool vtkBoundParticleTracer::AutomaticTimeLine(const std::vector<double>& inputTimes) const
-{
-  return inputTimes.size() >= 2
-    ? this->FramesPerInputStep <= 0 || this->FramesPerInputStep > bp::MaxFramesPerInterval
-    : this->Duration <= 0.0;
-}
-
-bpvtk::FieldProbe vtkBoundParticleTracer::ProbeField(
-  vtkInformation* inInfo, const std::vector<double>& inputTimes)
-{
-  return bpvtk::probeField(this->GetInputConnection(0, 0), inInfo, inputTimes,
-    [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
-    {
-      if (bpvtk::FieldResampler::needed(data))
-      {
-        return this->Internals->probeGrid(this->Config(), data, grid);
-      }
-      grid = data;
-      // Only a dataset has arrays to choose from (readSlice says what else came).
-      return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
-                                            : nullptr;
-    });
-}
-
-bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
-  const std::vector<double>& inputTimes, const bp::TimeScale& scale)
-{
-  const bool unsteady = inputTimes.size() >= 2;
-  const bool framesOutOfRange =
-    this->FramesPerInputStep < 0 || this->FramesPerInputStep > bp::MaxFramesPerInterval;
-  if (unsteady && framesOutOfRange)
-  {
-    vtkErrorMacro("FramesPerInputStep must be 0 (automatic) to "
-      << bp::MaxFramesPerInterval << " (it is " << this->FramesPerInputStep
-      << "); using automatic frames.");
-  }
-  const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
-    framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
-    this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
-  // Said once: the pipeline asks for information again after every change
-  // (the Vectors set after the filter is made, say), and the same warning
-  // twice in a row says nothing new.
-  std::vector<std::string>& said = this->Internals->SaidTimeLine;
-  for (const std::string& warning : line.warnings)
-  {
-    if (std::find(said.begin(), said.end(), warning) == said.end())
-    {
-      vtkWarningMacro(<< warning);
-    }
-  }
-  said = line.warnings;
-  return line;
-}
-
 int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkInternals& I = *this->Internals;
+  vtkBoundParticleTracerInternals& I = *this->Internals;
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   // Both outputs come from one execution: the port asked for gives the time
   // and pieces, and the other is asked alike (stamped with what it holds),
@@ -428,20 +318,17 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
   bpvtk::askAlike(outInfo, outputVector->GetInformationObject(1 - port));
 
-  if (I.Layout.takeRequest(outInfo, inInfo))
-  {
-    // A change of pieces is a change of input: replay.
-    I.forgetTrace();
-  }
-  I.Layout.requestInput(
-    inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
-  if (!I.continuing() && I.Plan.hasTimes())
+  I.requestPieces(
+    outInfo, inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
+  if (!I.continuing() && I.hasTimes())
   {
     // A new update: decide it once here, before anything is asked of
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
     // The engine as the elements' display asks (port 0), whichever port asks.
-    I.decide(this->Config(), outInfo, outputVector->GetInformationObject(0));
+    vtkInformation* display = outputVector->GetInformationObject(0);
+    I.decide(
+      this->Config(), outInfo, display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0);
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -470,12 +357,12 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
         // time steps, but a new one would run it again on every update.
         whole->Remove(SDDP::UPDATE_TIME_STEP());
       }
-      else if (I.Plan.hasTimes())
+      else if (I.hasTimes())
       {
         // A time-varying template or seed source gives what it holds at the
         // trace's start: the same trace whatever time was shown before
         // (the time copied from downstream made a replay depend on it).
-        whole->Set(SDDP::UPDATE_TIME_STEP(), I.Plan.startTime());
+        whole->Set(SDDP::UPDATE_TIME_STEP(), I.startTime());
       }
     }
   }
@@ -504,7 +391,7 @@ int vtkBoundParticleTracer::RequestData(
     // Nothing else is thrown on purpose: end the update, keep the session.
     vtkErrorMacro("The trace failed: " << e.what() << "; please report this with the input.");
   }
-  vtkInternals& I = *this->Internals;
+  vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
   vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
@@ -517,7 +404,7 @@ int vtkBoundParticleTracer::EndUpdatePass(
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   using Pass = bpvtk::TracerPass;
-  vtkInternals& I = *this->Internals;
+  vtkBoundParticleTracerInternals& I = *this->Internals;
   if (pass.kind == Pass::NeedStep)
   {
     I.continueWith(pass.index);
@@ -542,7 +429,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   using Pass = bpvtk::TracerPass;
-  vtkInternals& I = *this->Internals;
+  vtkBoundParticleTracerInternals& I = *this->Internals;
   const bpvtk::TracerConfig config = this->Config();
   vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
   output->Initialize();
@@ -551,11 +438,11 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
-  if (!I.Plan.hasTimes())
+  if (!I.hasTimes())
   {
     return end(Pass::fail("The filter has no time range; see the previous error."));
   }
-  if (I.Layout.idle())
+  if (I.idle())
   {
     // Asked for a piece of several with no process per piece: piece 0 holds
     // the whole trace.
@@ -564,7 +451,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   if (!I.continuing())
   {
     I.begin(config);
-    if (I.replayPending() && I.Layout.tooSmallToSplit())
+    if (I.replayPending() && I.tooSmallToSplit())
     {
       vtkWarningMacro("The field has too few cells to give each of the "
         << vtkStreamingDemandDrivenPipeline::GetUpdateNumberOfPieces(

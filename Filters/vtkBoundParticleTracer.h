@@ -46,6 +46,7 @@
 #include <vector> // for std::vector
 
 class vtkBoundParticleSeedType;
+class vtkBoundParticleTracerInternals; // the trace's state between passes
 class vtkDataArraySelection;
 class vtkInformationIntegerKey;
 class vtkInformationIntegerRequestKey;
@@ -570,8 +571,12 @@ protected:
   /// for an input with time steps), so it needs the field's scale.
   bool AutomaticTimeLine(const std::vector<double>& inputTimes) const;
   /// RequestInformation for an input that offers only its present time step
-  /// (in situ, `TracerInSitu.cxx`): the trace advances with each step.
+  /// (in situ, `TracerInSitu.h`): the trace advances with each step.
   int RequestStreamInformation(vtkInformation* inInfo, vtkInformationVector* outputVector);
+  /// Both outputs' time steps and range, the internals' (none without
+  /// `hasTimes`), and the FTLE map's extent from `probe`.
+  void AnnounceTimes(vtkInformationVector* outputVector, bool hasTimes,
+    const bpvtk::TracerConfig& config, const bpvtk::FieldProbe& probe);
   /// The field's facts, read once upstream (TracerFieldProbe.h; collective).
   bpvtk::FieldProbe ProbeField(vtkInformation* inInfo, const std::vector<double>& inputTimes);
   /// The time line to offer: Duration or FramesPerInputStep, automatic ones
@@ -632,8 +637,7 @@ private:
   vtkBoundParticleTracer(const vtkBoundParticleTracer&) = delete;
   void operator=(const vtkBoundParticleTracer&) = delete;
 
-  struct vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
+  std::unique_ptr<vtkBoundParticleTracerInternals> Internals;
 };
 
 #endif

@@ -48,13 +48,46 @@ std::uint64_t nextProducerId()
 
 } // namespace
 
-vtkBoundParticleTracer::vtkInternals::vtkInternals(vtkAlgorithm* owner)
+vtkBoundParticleTracerInternals::vtkBoundParticleTracerInternals(vtkAlgorithm* owner)
   : ProducerId(nextProducerId())
   , Owner(owner)
 {
 }
 
-void vtkBoundParticleTracer::vtkInternals::invalidate()
+std::string vtkBoundParticleTracerInternals::setTimes(const std::vector<double>& inputTimes,
+  double duration, int numberOfTimeSteps, int framesPerInterval)
+{
+  return this->Plan.setTimes(inputTimes, duration, numberOfTimeSteps, framesPerInterval);
+}
+
+std::vector<std::string> vtkBoundParticleTracerInternals::unsaid(
+  const std::vector<std::string>& warnings)
+{
+  std::vector<std::string> fresh;
+  for (const std::string& warning : warnings)
+  {
+    if (std::find(this->SaidTimeLine.begin(), this->SaidTimeLine.end(), warning) ==
+      this->SaidTimeLine.end())
+    {
+      fresh.push_back(warning);
+    }
+  }
+  this->SaidTimeLine = warnings;
+  return fresh;
+}
+
+void vtkBoundParticleTracerInternals::requestPieces(
+  vtkInformation* outInfo, vtkInformation* inInfo, bool mesh)
+{
+  if (this->Layout.takeRequest(outInfo, inInfo))
+  {
+    // A change of pieces is a change of input: replay.
+    this->forgetTrace();
+  }
+  this->Layout.requestInput(inInfo, mesh);
+}
+
+void vtkBoundParticleTracerInternals::invalidate()
 {
   ++this->Configuration;
   this->WarnedNonFinite = false;
@@ -67,21 +100,21 @@ void vtkBoundParticleTracer::vtkInternals::invalidate()
   this->Steppers.invalidate();
 }
 
-void vtkBoundParticleTracer::vtkInternals::clear()
+void vtkBoundParticleTracerInternals::clear()
 {
   this->Steppers.active().cursor.valid = false;
   this->Cache.clear();
   this->Continuing = false;
 }
 
-void vtkBoundParticleTracer::vtkInternals::forgetTrace()
+void vtkBoundParticleTracerInternals::forgetTrace()
 {
   this->invalidate();
   this->clear();
   this->LastRequested = -1;
 }
 
-void vtkBoundParticleTracer::vtkInternals::endFailedUpdate(bool skipped)
+void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
 {
   if (skipped)
   {
@@ -92,11 +125,11 @@ void vtkBoundParticleTracer::vtkInternals::endFailedUpdate(bool skipped)
   this->invalidate();
 }
 
-void vtkBoundParticleTracer::vtkInternals::decide(
-  const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo)
+void vtkBoundParticleTracerInternals::decide(
+  const Config& config, vtkInformation* outInfo, int gpuQueue)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  this->Steppers.select(config.engine, engineInfo, this->Layout);
+  this->Steppers.select(config.engine, gpuQueue, this->Layout);
   const std::string& software = this->Steppers.automaticCpuOn();
   if (!software.empty() && !this->SaidAutomaticCpu)
   {
@@ -124,7 +157,7 @@ void vtkBoundParticleTracer::vtkInternals::decide(
   this->RequestIndex = this->Plan.firstRequest(this->Decision, this->Cache, this->LastRequested);
 }
 
-void vtkBoundParticleTracer::vtkInternals::decideInSitu(double target)
+void vtkBoundParticleTracerInternals::decideInSitu(double target)
 {
   if (!this->Plan.streamCanGoOn(this->Decision, this->Cache))
   {
@@ -141,7 +174,7 @@ void vtkBoundParticleTracer::vtkInternals::decideInSitu(double target)
   this->RequestIndex = int(this->Plan.inputTimes().size()) - 1;
 }
 
-void vtkBoundParticleTracer::vtkInternals::requestTimeStep(vtkInformation* inInfo)
+void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   if (this->Plan.unsteady())
@@ -155,13 +188,13 @@ void vtkBoundParticleTracer::vtkInternals::requestTimeStep(vtkInformation* inInf
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::continueWith(int index)
+void vtkBoundParticleTracerInternals::continueWith(int index)
 {
   this->RequestIndex = index;
   this->Continuing = true;
 }
 
-void vtkBoundParticleTracer::vtkInternals::begin(const Config& config)
+void vtkBoundParticleTracerInternals::begin(const Config& config)
 {
   bp::Stepper& stepper = this->stepper();
   const bool replay = this->Decision.replay;
@@ -209,7 +242,7 @@ void vtkBoundParticleTracer::vtkInternals::begin(const Config& config)
   }
 }
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::stepToTarget()
+bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
 {
   bp::Stepper& stepper = this->stepper();
   double& committed = stepper.cursor.committed;
@@ -286,7 +319,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::stepToTarget()
   }
 }
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::readAhead()
+bpvtk::TracerPass vtkBoundParticleTracerInternals::readAhead()
 {
   bp::Stepper& stepper = this->stepper();
   if (!stepper.readsAhead())
@@ -309,8 +342,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::readAhead()
   return Pass();
 }
 
-bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::show(
-  const Config& config, vtkPolyData* output)
+bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vtkPolyData* output)
 {
   // The output at the target: the committed state, finished with a shorter
   // step that the next update takes back, so the trace stays on the step
@@ -359,7 +391,7 @@ bpvtk::TracerPass vtkBoundParticleTracer::vtkInternals::show(
   return Pass();
 }
 
-void vtkBoundParticleTracer::vtkInternals::gatherExchange()
+void vtkBoundParticleTracerInternals::gatherExchange()
 {
   if (!this->Layout.distributed())
   {
@@ -381,7 +413,7 @@ void vtkBoundParticleTracer::vtkInternals::gatherExchange()
   }
 }
 
-void vtkBoundParticleTracer::vtkInternals::handToDisplay(const Config& config, vtkPolyData* output)
+void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPolyData* output)
 {
   bp::WorkQueue& queue = *this->Steppers.queue();
   bp::DrawSettings& d = queue.draw;
@@ -404,7 +436,7 @@ void vtkBoundParticleTracer::vtkInternals::handToDisplay(const Config& config, v
   output->GetFieldData()->AddArray(id);
 }
 
-void vtkBoundParticleTracer::vtkInternals::addSettingsFieldData(vtkPolyData* output)
+void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
 {
   // What the automatic settings came to, for the Information panel and scripts.
   bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);

@@ -26,8 +26,6 @@
 #ifndef vtkBoundParticleTracerInternals_h
 #define vtkBoundParticleTracerInternals_h
 
-#include "vtkBoundParticleTracer.h"
-
 #include "Engine.h"
 #include "FieldCache.h"
 #include "OutputArrays.h"
@@ -40,6 +38,7 @@
 #include "TracerResample.h"
 #include "TracerSteppers.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -52,7 +51,6 @@
 #include <string>
 #include <vector>
 
-class vtkAlgorithm;
 class vtkDataArray;
 class vtkDataObject;
 class vtkImageData;
@@ -102,44 +100,51 @@ struct TracerInputStep
 };
 } // namespace bpvtk
 
-struct vtkBoundParticleTracer::vtkInternals
+class vtkBoundParticleTracerInternals
 {
+public:
   using Pass = bpvtk::TracerPass;
   using Config = bpvtk::TracerConfig;
 
-  bp::TracePlan Plan;
-  /// In situ: the times given since the trace started (TracerInSitu.cxx),
-  /// and the filter's MTime they were given under.
-  bp::StreamTimeLine Stream;
-  vtkMTimeType StreamSettingsTime = 0;
-  bp::FieldCache Cache;
-  bpvtk::TracerSteppers Steppers;
-  bpvtk::PieceLayout Layout;
-  bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
-  std::unique_ptr<bp::StepSchedule> Schedule;
-  /// Bumped whenever the filter or its input changes: a trace made for an
-  /// older configuration replays.
-  std::uint64_t Configuration = 1;
-  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
-  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
-  std::string
-    WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
-  bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
-  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
-  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
-  bool WarnedGridChange = false; ///< in situ, a change of grid was reported
-  bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
-  /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
-  /// says each once, not again at the next request for information).
-  std::vector<std::string> SaidTimeLine;
-  /// Any input but an image or a rectilinear grid, on a uniform grid; its
-  /// located cells and weights are kept while the mesh stays the same.
-  bpvtk::FieldResampler Resampler;
-  bool Resampled = false; ///< the field came through the Resampler
-  const std::uint64_t ProducerId;
+  /// `owner` is the filter: the internals use it only to report (messages,
+  /// progress) and to hear an abort, never to read its properties (they come
+  /// in a bpvtk::TracerConfig).
+  explicit vtkBoundParticleTracerInternals(vtkAlgorithm* owner);
 
-  // The update in progress (the pass state is private, below).
-  bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
+  // What the filter asks of its trace.
+  bool hasTimes() const { return this->Plan.hasTimes(); }
+  double startTime() const { return this->Plan.startTime(); }
+  /// The output's time steps (both ports share them).
+  const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
+  vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
+  bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
+  int timeStepsHeld() const { return int(this->Cache.size()); }
+  double resolvedDt() const { return this->ResolvedDt; }
+  double resolvedElementSize() const { return this->ResolvedElementSize; }
+  /// Asked for pieces: this process's piece and the whole extent.
+  bool idle() const { return this->Layout.idle(); }
+  bool tooSmallToSplit() const { return this->Layout.tooSmallToSplit(); }
+
+  /// Post hoc RequestInformation: the time line follows the input's
+  /// `inputTimes` (TracePlan::setTimes). Returns the error, if any.
+  std::string setTimes(const std::vector<double>& inputTimes, double duration,
+    int numberOfTimeSteps, int framesPerInterval);
+  /// In situ RequestInformation (TracerInSitu.cxx): the present step's `time`
+  /// offered to the time line; a change of the filter's settings (its MTime
+  /// `settingsTime`) starts the trace again. Returns the error when the
+  /// step cannot start a trace (there are then no times); `warning` says a
+  /// refused step.
+  /// Under MPI a change of the announced `grid` (bpvtk::announcedGrid) starts
+  /// it again too, with the warning.
+  std::string offerStreamTime(
+    vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning);
+  /// The time line's `warnings` not said at the last request for
+  /// information (the pipeline asks again after every change).
+  std::vector<std::string> unsaid(const std::vector<std::string>& warnings);
+  /// RequestUpdateExtent: the pieces this output asks for (a change of them
+  /// is a change of input: every trace is stale), then what the input is
+  /// asked for (`mesh`: an input the resampler takes whole).
+  void requestPieces(vtkInformation* outInfo, vtkInformation* inInfo, bool mesh);
 
   /// The share of the update's stepping done, over all its passes.
   double progress() const
@@ -148,29 +153,6 @@ struct vtkBoundParticleTracer::vtkInternals
     return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
                       : 0.0;
   }
-
-  // The field, in grid-local coordinates (floats keep their precision far
-  // from the world origin), and where its local origin lies in the world.
-  bp::GridGeometry Grid;
-  std::array<double, 3> Offset = { 0, 0, 0 };
-
-  // What the last replay resolved.
-  bp::Parameters Parameters;
-  double ResolvedDt = 0.0;
-  double ResolvedElementSize = 0.0;
-  std::size_t ParticlesPerElement = 1;
-  bp::RangeFacts RangeFacts; ///< for the GPU display's output
-
-  // What the last update did.
-  vtkIdType StepsInLastUpdate = 0;
-  bool LastUpdateReplayed = false;
-  long long Migrated = 0;                    ///< elements this process sent away
-  std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
-
-  /// `owner` is the filter: the internals use it only to report (messages,
-  /// progress) and to hear an abort, never to read its properties (they come
-  /// in a bpvtk::TracerConfig).
-  explicit vtkInternals(vtkAlgorithm* owner);
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
   double target() const { return this->Decision.target; }
@@ -201,7 +183,8 @@ struct vtkBoundParticleTracer::vtkInternals
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
-  void decide(const Config& config, vtkInformation* outInfo, vtkInformation* engineInfo);
+  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none).
+  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue);
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
   void decideInSitu(double target);
@@ -230,7 +213,6 @@ struct vtkBoundParticleTracer::vtkInternals
   /// The second output after show(): the FTLE map of a lattice release
   /// (TracerFtleMap.cxx; collective in a distributed run).
   void showFtleMap(vtkImageData* image);
-  vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
@@ -238,6 +220,60 @@ struct vtkBoundParticleTracer::vtkInternals
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
 private:
+  bp::TracePlan Plan;
+  /// In situ: the times given since the trace started (TracerInSitu.cxx),
+  /// and the filter's MTime they were given under.
+  bp::StreamTimeLine Stream;
+  vtkMTimeType StreamSettingsTime = 0;
+  std::vector<double> StreamGrid; ///< the grid the last step announced (announcedGrid)
+  bp::FieldCache Cache;
+  bpvtk::TracerSteppers Steppers;
+  bpvtk::PieceLayout Layout;
+  bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
+  std::unique_ptr<bp::StepSchedule> Schedule;
+  /// Bumped whenever the filter or its input changes: a trace made for an
+  /// older configuration replays.
+  std::uint64_t Configuration = 1;
+  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
+  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
+  std::string
+    WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
+  bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
+  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
+  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
+  bool WarnedGridChange = false; ///< in situ, a change of grid was reported
+  bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
+  /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
+  /// says each once, not again at the next request for information).
+  std::vector<std::string> SaidTimeLine;
+  /// Any input but an image or a rectilinear grid, on a uniform grid; its
+  /// located cells and weights are kept while the mesh stays the same.
+  bpvtk::FieldResampler Resampler;
+  bool Resampled = false; ///< the field came through the Resampler
+  const std::uint64_t ProducerId;
+
+  bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
+
+  // The field, in grid-local coordinates (floats keep their precision far
+  // from the world origin), and where its local origin lies in the world.
+  bp::GridGeometry Grid;
+  std::array<double, 3> Offset = { 0, 0, 0 };
+
+  // What the last replay resolved.
+  bp::Parameters Parameters;
+  double ResolvedDt = 0.0;
+  double ResolvedElementSize = 0.0;
+  std::size_t ParticlesPerElement = 1;
+  bp::RangeFacts RangeFacts; ///< for the GPU display's output
+
+  // What the last update did.
+  vtkIdType StepsInLastUpdate = 0;
+  bool LastUpdateReplayed = false;
+  long long Migrated = 0;                    ///< elements this process sent away
+  std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
+
+  vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
+
   vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
   bool Continuing = false;     ///< a later pass of the same update
   bool ReplayPending = false;  ///< this update replays from the start

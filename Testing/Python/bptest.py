@@ -1,12 +1,55 @@
 """Helpers shared by the pvpython tests."""
 import argparse
+import os
+import signal
+import subprocess
 import sys
+import time
 
 from vtkmodules.util import vtkConstants
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import vtkOutputWindow
 
 failures = []
+
+
+def outside_mpi_job():
+    """This process's environment without its MPI job's variables: pvpython
+    initialises MPI as a singleton, and they would make a child mpiexec (or a
+    simulation's MPI_Init) believe it runs inside that job."""
+    return {k: v for k, v in os.environ.items()
+            if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
+
+
+def run_group(command, timeout, stderr_apart=False, **popen):
+    """Runs `command` outside this process's MPI job (unless `env` is given),
+    in a process group of its own, killed whole if it runs past `timeout` s
+    (killing mpiexec alone could leave its ranks running). A CompletedProcess:
+    stdout with stderr in it unless `stderr_apart`, ending "(killed after N
+    s)" when killed; and `seconds`, how long it ran."""
+    started = time.time()
+    popen.setdefault("env", outside_mpi_job())
+    process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE if stderr_apart else subprocess.STDOUT,
+                               text=True, start_new_session=True, **popen)
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, err = process.communicate()
+        out += "\n(killed after %d s)" % timeout
+    done = subprocess.CompletedProcess(command, process.returncode, out, err or "")
+    done.seconds = time.time() - started
+    return done
+
+
+def resident_mib():
+    """This process's resident memory, MiB."""
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+    return float("nan")
 
 
 def check(condition, message):

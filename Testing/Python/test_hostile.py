@@ -18,7 +18,6 @@ import math
 import os
 import resource
 import signal
-import subprocess
 import sys
 import tempfile
 import time
@@ -521,16 +520,11 @@ def run_cases_process(names, scratch):
     with a result file ran to their end (status 0); the first without one
     ended the process (its status, and the process's output)."""
     started = time.time()
-    process = subprocess.Popen(
+    process = bptest.run_group(
         [args.pvpython, os.path.abspath(__file__), "--plugin", args.plugin, "--scratch", scratch,
-         "--case"] + names,
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-        preexec_fn=limit_address_space, start_new_session=True)
-    try:
-        out, _ = process.communicate(timeout=TIME_LIMIT * len(names) + 60)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        out, _ = process.communicate()
+         "--case"] + names, TIME_LIMIT * len(names) + 60, preexec_fn=limit_address_space,
+        env=os.environ)
+    out = process.stdout
     ran = []
     for name in names:
         path = result_file(scratch, name)

@@ -7,11 +7,12 @@ or the C++ one (`--simulation`: Catalyst's vtkCPProcessor, under mpiexec for
 several ranks). The elements at the last step equal a post hoc trace of the
 same steps, written to disk by the simulation and read back, matched by
 ElementId and ParticleIndex within 1e-4 of the domain; no message is said on
-the way.
+the way. With `--engine GPU` (one process) the Bound Particles display traces
+in the Catalyst render view: its last picture equals the picture of a post
+hoc trace of the same steps drawn by the GPU engine in a view set up alike.
 """
+import ast
 import os
-import signal
-import subprocess
 import sys
 import tempfile
 
@@ -19,12 +20,14 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
 
 args = bptest.arguments("--pvpython", "--pvbatch", "--example", "--simulation", "--script",
-                        "--steps", "--ranks", "--mpiexec")
+                        "--steps", "--ranks", "--mpiexec", "--engine")
+engine = args.engine or "CPU"
 steps = int(args.steps or 50)
 ranks = int(args.ranks or 1)
 work = tempfile.mkdtemp(prefix="bp-insitu-")
 options = ["--plugin", args.plugin, "--steps", str(steps), "--every", "10",
-           "--out", os.path.join(work, "out"), "--write-steps", os.path.join(work, "steps")]
+           "--out", os.path.join(work, "out"), "--write-steps", os.path.join(work, "steps"),
+           "--engine", engine]
 mpiexec = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks)] if ranks > 1 else []
 if args.simulation:
     command = mpiexec + [args.simulation, "--script", args.script] + options
@@ -32,20 +35,9 @@ elif ranks > 1:
     command = mpiexec + [args.pvbatch, "--symmetric", args.example] + options
 else:
     command = [args.pvpython, args.example] + options
-# pvpython initialises MPI as a singleton; its variables would make a child
-# mpiexec (or a C++ simulation's MPI_Init) believe it runs inside that job.
-environment = {k: v for k, v in os.environ.items()
-               if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
 print("running", " ".join(command), flush=True)
-# In a process group of its own, killed whole past the limit (killing
-# mpiexec alone could leave its ranks running).
-process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                           env=environment, start_new_session=True)
-try:
-    stdout, stderr = process.communicate(timeout=400)
-except subprocess.TimeoutExpired:
-    os.killpg(process.pid, signal.SIGKILL)
-    stdout, stderr = process.communicate()
+process = bptest.run_group(command, 400, stderr_apart=True)
+stdout, stderr = process.stdout, process.stderr
 print(stdout[-3000:], stderr[-3000:])
 bptest.check(process.returncode == 0, "the simulation ran (%d)" % process.returncode)
 said = [line for line in (stdout + stderr).splitlines() if "WARN" in line or "ERR" in line]
@@ -55,6 +47,19 @@ said = [line for line in (stdout + stderr).splitlines() if "WARN" in line or "ER
 THEIRS = ("initialized before", "New time step is not", "bad X server connection")
 said = [line for line in said if not any(note in line for note in THEIRS)]
 bptest.check(not said, "nothing said while tracing in situ: %s" % said)
+
+
+
+def analysis_script():
+    """SETTINGS, CAMERA and SPEEDS as the example's analysis script sets them."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "insitu",
+                        "trace_elements.py")
+    with open(path) as text:
+        tree = ast.parse(text.read())
+    return {node.targets[0].id: ast.literal_eval(node.value) for node in tree.body
+            if isinstance(node, ast.Assign) and isinstance(node.targets[0], ast.Name)
+            and node.targets[0].id in ("SETTINGS", "CAMERA", "SPEEDS")}
+
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
@@ -71,17 +76,46 @@ def by_particle(data):
 
 
 last = steps - 1
+picture = os.path.join(work, "out", "elements_%04d.png" % last)
+bptest.check(os.path.exists(picture), "a picture written")
+flow = PVDReader(FileName=os.path.join(work, "steps", "flow.pvd"))
+flow.UpdatePipeline()
+times = list(flow.TimestepValues)
+bptest.check(len(times) == steps, "the simulation wrote %d steps (%d)" % (steps, len(times)))
+script = analysis_script()
+posthoc = BoundParticleTracer(Input=flow, Engine=engine, **script["SETTINGS"])
+view = CreateRenderView(ViewSize=[640, 360], OrientationAxesVisibility=0)
+shown = Show(posthoc, view)
+if engine == "GPU":
+    shown.SetRepresentationType("Bound Particles")
+ColorBy(shown, ("POINTS", "Speed"))
+GetColorTransferFunction("Speed").RescaleTransferFunction(*script["SPEEDS"])
+for t in times if engine == "GPU" else times[-1:]:
+    view.ViewTime = t
+    for key, value in script["CAMERA"].items():
+        setattr(view, key, value)
+    Render(view)
+drawn = os.path.join(work, "posthoc.png")
+SaveScreenshot(drawn, view)
+Delete(view)  # before the process ends: GLX would fail to make it current then
+del view
+covered = bptest.covered_fraction(drawn)
+print("the post hoc picture: %g covered" % covered)
+bptest.check(covered > 0.02, "the post hoc picture shows elements (%g covered)" % covered)
+shows = bptest.covered_fraction(picture)
+bptest.check(shows > 0.02, "the in situ picture shows elements (%g covered)" % shows)
+if engine == "GPU":
+    # The elements live on the GPU: the pictures are what can be compared.
+    mean, differing = bptest.image_difference(picture, drawn)
+    print("GPU: in situ and post hoc pictures: %g of the pixels differ (mean %g)" % (differing, mean))
+    bptest.check(differing <= 0.001, "the GPU engine's picture in situ is the post hoc one "
+                 "(%g of the pixels differ)" % differing)
+    bptest.finish()
 # One process writes a .vtp, several a .pvtp over their pieces.
 written = os.path.join(work, "out", "elements_%04d.%s" % (last, "pvtp" if ranks > 1 else "vtp"))
 insitu = OpenDataFile(written)
 insitu.UpdatePipeline()
 got = by_particle(servermanager.Fetch(insitu))
-flow = PVDReader(FileName=os.path.join(work, "steps", "flow.pvd"))
-flow.UpdatePipeline()
-times = list(flow.TimestepValues)
-bptest.check(len(times) == steps, "the simulation wrote %d steps (%d)" % (steps, len(times)))
-posthoc = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"], ElementShape="Paddlewheel",
-                              NumberOfElements=200, Seed=3, Engine="CPU", LifetimeRange=[2.0, 4.0])
 posthoc.UpdatePipeline(times[-1])
 want = by_particle(servermanager.Fetch(posthoc))
 bptest.check(len(got) > 0 and set(got) == set(want),
@@ -90,5 +124,4 @@ if set(got) == set(want) and got:
     gap = max(abs(got[key] - want[key]).max() for key in got)
     print("in situ and post hoc %g apart" % gap)
     bptest.check(gap <= 1e-4 * 2.0, "in situ equals post hoc at the last step (%g apart)" % gap)
-bptest.check(os.path.exists(os.path.join(work, "out", "elements_%04d.png" % last)), "a picture written")
 bptest.finish()

@@ -42,24 +42,8 @@ os.makedirs(args.output, exist_ok=True)
 mpiexec = [args.mpiexec, "--allow-run-as-root", "--oversubscribe"]
 
 
-# pvpython initialises MPI as a singleton; its variables would make a child
-# mpiexec believe it runs inside that job.
-environment = {k: v for k, v in os.environ.items()
-               if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
-
-
-def run_group(command, timeout, env=None):
-    """Runs a command in a process group of its own, killed whole if it runs past `timeout`
-    (killing mpiexec alone could leave its ranks running)."""
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               text=True, env=env or environment, start_new_session=True)
-    try:
-        out, _ = process.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        out, _ = process.communicate()
-        out += "\n(killed after %d s)" % timeout
-    return subprocess.CompletedProcess(command, process.returncode, out)
+environment = bptest.outside_mpi_job()
+run_group = bptest.run_group
 
 
 # The job's own limit: a trace job takes seconds. A job killed at the limit
@@ -288,8 +272,7 @@ else:
                 os.remove(out)
             client = run_group(
                 [args.pvpython, script, "--plugin", args.plugin, "--output", out,
-                 "--connect", "localhost:%d" % port, "--render", pictures] + inputs, 300,
-                environment)
+                 "--connect", "localhost:%d" % port, "--render", pictures] + inputs, 300)
             print(client.stdout[-3000:])
             try:
                 server.wait(timeout=60)  # the server ends when its client disconnects

@@ -13,11 +13,8 @@ import argparse
 import builtins
 import os
 import shutil
-import signal
-import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -200,10 +197,6 @@ if args.case:
 
 def drive():
     """Runs every case under 2 and 4 ranks and checks how each ended."""
-    # pvpython initialises MPI as a singleton; its variables would make a child
-    # mpiexec believe it runs inside that job.
-    environment = {k: v for k, v in os.environ.items()
-                   if not k.startswith(("OMPI_", "PMIX_", "ORTE_", "OPAL_"))}
     meshes = tempfile.mkdtemp(prefix="bp-parallel-hostile-")
     write_meshes(meshes)
     for name, (_, _, traces, says) in CASES.items():
@@ -211,15 +204,8 @@ def drive():
             command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
                        args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
                        "--case", name, "--meshes", meshes]
-            started = time.time()
-            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                       text=True, env=environment, start_new_session=True)
-            try:
-                out, _ = process.communicate(timeout=TIME_LIMIT)
-            except subprocess.TimeoutExpired:
-                os.killpg(process.pid, signal.SIGKILL)
-                out, _ = process.communicate()
-            seconds = time.time() - started
+            process = bptest.run_group(command, TIME_LIMIT)
+            out, seconds = process.stdout, process.seconds
             points = [int(line.split()[1]) for line in out.splitlines() if line.startswith("RESULT ")]
             messages = [line[line.find("vtkBoundParticleTracer"):][:400] for line in out.splitlines()
                         if "ERR|" in line or "WARN|" in line]

@@ -18,7 +18,7 @@
  *
  *     double_gyre_sim --plugin BoundParticles.so --script trace_elements.py
  *                     [--steps 50] [--dt 0.2] [--every 10] [--out DIR]
- *                     [--write-steps DIR]
+ *                     [--write-steps DIR] [--engine CPU|GPU|Automatic]
  *
  * With `--write-steps DIR` it also writes every step it hands over to DIR
  * (`flow.pvd` over `flow_NNNN.pvti`, over a `flow_NNNN_R.vti` piece per
@@ -59,7 +59,7 @@ constexpr int GhostLayers = 1;
 
 struct Options
 {
-  std::string plugin, script, out = "insitu-out", writeSteps;
+  std::string plugin, script, out = "insitu-out", writeSteps, engine = "CPU";
   int steps = 50, every = 10;
   double dt = 0.2;
 };
@@ -77,6 +77,8 @@ bool parse(int argc, char* argv[], Options& o)
       o.out = value;
     else if (key == "--write-steps")
       o.writeSteps = value;
+    else if (key == "--engine")
+      o.engine = value;
     else if (key == "--steps")
       o.steps = std::atoi(value.c_str());
     else if (key == "--every")
@@ -243,7 +245,8 @@ int main(int argc, char* argv[])
     {
       std::cerr << "usage: " << argv[0]
                 << " --plugin BoundParticles.so --script trace_elements.py [--steps 50]"
-                   " [--dt 0.2] [--every 10] [--out DIR] [--write-steps DIR]\n";
+                   " [--dt 0.2] [--every 10] [--out DIR] [--write-steps DIR]"
+                   " [--engine CPU|GPU|Automatic]\n";
     }
 #if BOUNDPARTICLES_EXAMPLE_MPI
     MPI_Finalize();
@@ -263,6 +266,7 @@ int main(int argc, char* argv[])
   ::setenv("BOUNDPARTICLES_INSITU_OUT", out.c_str(), 1);
   ::setenv("BOUNDPARTICLES_INSITU_EVERY", std::to_string(options.every).c_str(), 1);
   ::setenv("BOUNDPARTICLES_INSITU_LAST", std::to_string(options.steps - 1).c_str(), 1);
+  ::setenv("BOUNDPARTICLES_INSITU_ENGINE", options.engine.c_str(), 1);
 
   int failed = 0;
   {

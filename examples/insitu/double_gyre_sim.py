@@ -35,6 +35,8 @@ parser.add_argument("--dt", type=float, default=0.2)
 parser.add_argument("--every", type=int, default=10, help="write elements every N steps")
 parser.add_argument("--out", default="insitu-out")
 parser.add_argument("--write-steps", default="")
+parser.add_argument("--engine", default="CPU", choices=["CPU", "GPU", "Automatic"],
+                    help="the tracer's engine; GPU draws the elements with the GPU engine")
 args = parser.parse_args()
 
 DIMS = (64, 32, 2)
@@ -113,6 +115,7 @@ os.environ["BOUNDPARTICLES_PLUGIN"] = args.plugin
 os.environ["BOUNDPARTICLES_INSITU_OUT"] = os.path.abspath(args.out)
 os.environ["BOUNDPARTICLES_INSITU_EVERY"] = str(args.every)
 os.environ["BOUNDPARTICLES_INSITU_LAST"] = str(args.steps - 1)
+os.environ["BOUNDPARTICLES_INSITU_ENGINE"] = args.engine
 bridge.initialize()
 bridge.add_pipeline(os.path.join(os.path.dirname(os.path.abspath(__file__)), "trace_elements.py"), 2)
 controller = vtkMultiProcessController.GetGlobalController()
