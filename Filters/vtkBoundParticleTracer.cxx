@@ -5,6 +5,7 @@
 #include "Memory.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
+#include "TracerClampedSetter.h"
 #include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
@@ -45,44 +46,11 @@ vtkInformationKeySubclassMacro(
 
 vtkStandardNewMacro(vtkBoundParticleTracer);
 
-// vtkSetClampMacro, but a value out of range (from a script or a saved state
-// file) is said, not silently changed. NaN takes the minimum.
-#define BP_CLAMPED_SETTER(name, type, low, high)                                                   \
-  void vtkBoundParticleTracer::Set##name(type value)                                               \
-  {                                                                                                \
-    const type lowest = static_cast<type>(low), highest = static_cast<type>(high);                 \
-    const type clamped = !(value >= lowest) ? lowest : (value > highest ? highest : value);        \
-    if (!(clamped == value))                                                                       \
-    {                                                                                              \
-      vtkWarningMacro(<< #name " " << value << " is outside [" << lowest << ", " << highest        \
-                      << "]; using " << clamped << ".");                                           \
-    }                                                                                              \
-    if (this->name != clamped)                                                                     \
-    {                                                                                              \
-      this->name = clamped;                                                                        \
-      this->Modified();                                                                            \
-    }                                                                                              \
-  }
-BP_CLAMPED_SETTER(ElementShape, int, POINT, FISH)
-BP_CLAMPED_SETTER(TemplateSprings, int, EDGES, ALL_PAIRS)
-BP_CLAMPED_SETTER(StepSizeUnit, int, CELL_LENGTH, TIME)
-BP_CLAMPED_SETTER(ReleaseOrientation, int, FIXED_ORIENTATION, ALONG_FLOW)
-BP_CLAMPED_SETTER(ReleasePattern, int, RANDOM_RELEASES, LATTICE_RELEASES)
 BP_CLAMPED_SETTER(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX)
-BP_CLAMPED_SETTER(Integrator, int, EULER, RUNGE_KUTTA_4)
-BP_CLAMPED_SETTER(Restoration, int, AVERAGED_JACOBI, SHAPE_MATCHING)
 BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
-BP_CLAMPED_SETTER(ShapeMatchingMode, int, RIGID, LINEAR)
 BP_CLAMPED_SETTER(LinearShapeMatchingBeta, double, 0.0, 1.0)
-BP_CLAMPED_SETTER(Linking, int, NO_LINKING, TORUS)
 BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
-BP_CLAMPED_SETTER(ResetWhen, int, CENTER_LEAVES, ANY_PARTICLE_LEAVES)
-BP_CLAMPED_SETTER(Anchor, int, NO_ANCHOR, ANCHOR_CENTRE)
-BP_CLAMPED_SETTER(Inertia, int, NO_INERTIA, MAXEY_RILEY)
-BP_CLAMPED_SETTER(ColoringAxis, int, 0, 2)
-BP_CLAMPED_SETTER(Engine, int, CPU, AUTOMATIC)
-#undef BP_CLAMPED_SETTER
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkBoundParticleTracerInternals(this))
@@ -156,21 +124,13 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.trailSpacing = this->TrailSpacing;
   s.latticeSpacing = this->LatticeSpacing;
   bp::Parameters& p = s.engine;
-  p.releasePattern = bp::ReleasePattern(this->ReleasePattern);
-  p.orientation = bp::Orientation(this->ReleaseOrientation);
-  p.integrator = bp::Integrator(this->Integrator);
-  p.restoration = bp::Restoration(this->Restoration);
   p.iterations = this->RestorationIterations;
   p.relaxation = float(this->RelaxationFactor);
   p.shapeStiffness = float(this->ShapeMatchingStiffness);
   p.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
   p.linearBlend = float(this->LinearShapeMatchingBeta);
-  p.linking = bp::Linking(this->Linking);
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = float(this->LinkStiffness);
-  p.resetWhen = bp::ResetWhen(this->ResetWhen);
-  p.anchor = bp::Anchor(this->Anchor);
-  p.inertia = bp::Inertia(this->Inertia);
   p.responseTime = float(this->ResponseTime);
   p.densityRatio = float(this->DensityRatio);
   std::transform(
@@ -194,9 +154,7 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
 {
   bpvtk::TracerConfig c;
   c.trace = this->Settings();
-  c.engine = bp::EngineChoice(this->Engine);
-  c.shape = bp::BuiltinShape(this->ElementShape);
-  c.templateSprings = bp::MeshSprings(this->TemplateSprings);
+  this->ConfigureEnumerations(c);
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
   c.coloringAxis = this->ColoringAxis;
   for (const bp::OutputArray& row : bp::outputArrays())
@@ -542,29 +500,21 @@ void vtkBoundParticleTracer::DisableAllOutputArrays()
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ElementShape: " << bp::builtinShapeName(bp::BuiltinShape(this->ElementShape))
-     << "\n";
+  this->PrintEnumerations(os, indent);
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "ElementSize: " << this->ElementSize << "\n";
   os << indent << "EmitterCenter: " << this->EmitterCenter[0] << " " << this->EmitterCenter[1]
      << " " << this->EmitterCenter[2] << "\n";
   os << indent << "EmitterSize: " << this->EmitterSize[0] << " " << this->EmitterSize[1] << " "
      << this->EmitterSize[2] << "\n";
-  os << indent << "ReleaseOrientation: " << this->ReleaseOrientation << "\n";
   os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
      << "\n";
-  os << indent << "StepSize: " << this->StepSize << " ("
-     << (this->StepSizeUnit == CELL_LENGTH ? "cell lengths" : "time") << ")\n";
-  os << indent << "Integrator: " << this->Integrator << "\n";
-  os << indent << "Restoration: " << this->Restoration << " x " << this->RestorationIterations
-     << "\n";
-  os << indent << "ReleasePattern: " << this->ReleasePattern << "\n";
+  os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
-  os << indent << "ResetWhen: " << this->ResetWhen << "\n";
-  os << indent << "Anchor: " << this->Anchor << "\n";
-  os << indent << "Inertia: " << this->Inertia << " (tau " << this->ResponseTime
-     << ", density ratio " << this->DensityRatio << ", gravity " << this->Gravity[0] << " "
-     << this->Gravity[1] << " " << this->Gravity[2] << ")\n";
+  os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio
+     << ", Gravity: " << this->Gravity[0] << " " << this->Gravity[1] << " " << this->Gravity[2]
+     << "\n";
   os << indent << "MinimumReleaseSpeed: " << this->MinimumReleaseSpeed << "\n";
   os << indent << "Trails: " << this->Trails << " (" << this->TrailLength << " poses, every "
      << this->TrailSpacing << " steps)\n";
@@ -577,9 +527,4 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << ", NumberOfTimeSteps: " << this->NumberOfTimeSteps
      << ", FramesPerInputStep: " << this->FramesPerInputStep << "\n";
   os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
-  os << indent << "Engine: "
-     << (this->Engine == GPU      ? "GPU"
-            : this->Engine == CPU ? "CPU"
-                                  : "Automatic")
-     << "\n";
 }

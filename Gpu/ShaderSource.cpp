@@ -3,7 +3,8 @@
 // that name the file (ShaderSource.h).
 #include "ShaderSource.h"
 
-#include "BoundParticlesShaders.h" // generated from Shaders/
+#include "BoundParticlesShaderEnums.h" // generated from the proxy XML
+#include "BoundParticlesShaders.h"     // generated from Shaders/
 #include "CounterHash.h"
 #include "Engine.h"
 #include "GpuState.h"
@@ -110,16 +111,16 @@ std::string drawConstantDefinitions()
     define("BP_SEED_ROW", std::to_string(SeedPointsPerRow) + "u");
 }
 
-/// The enums the kernels compare with: one #define per value, from Core's.
+/// The enums the kernels compare with: one #define per value, from Core's
+/// (the enumerated properties marked shaders="1" in the proxy XML).
 std::string enumDefinitions()
 {
-  const auto value = [](auto e) { return std::to_string(static_cast<int>(e)); };
-  return define("BP_INTEGRATOR_EULER", value(Integrator::Euler)) +
-    define("BP_INTEGRATOR_RK2", value(Integrator::RK2)) +
-    define("BP_INTEGRATOR_RK4", value(Integrator::RK4)) +
-    define("BP_ORIENTATION_FIXED", value(Orientation::Fixed)) +
-    define("BP_ORIENTATION_RANDOM", value(Orientation::Random)) +
-    define("BP_ORIENTATION_ALONG_FLOW", value(Orientation::AlongFlow));
+  std::string definitions;
+  for (const ShaderEnumerator& e : ShaderEnumerators)
+  {
+    definitions += define(e.name, std::to_string(e.value));
+  }
+  return definitions;
 }
 
 } // namespace
