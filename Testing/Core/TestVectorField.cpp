@@ -27,6 +27,22 @@ bp::FieldSlice linearSlice(const bp::GridGeometry& g, double time, float offset)
   s.velocity = v;
   return s;
 }
+/// v = s (2y - z, 3x + z/2, x - 4y) at the grid's points (rectilinear axes
+/// too): linear, so the trilinear interpolant and its derivatives are exact.
+bp::FieldSlice scaledLinearSlice(const bp::GridGeometry& g, double time, float s)
+{
+  auto v = std::make_shared<std::vector<float>>();
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+      {
+        const double x = g.coordinate(0, i), y = g.coordinate(1, j), z = g.coordinate(2, k);
+        v->push_back(s * float(2 * y - z));
+        v->push_back(s * float(3 * x + 0.5 * z));
+        v->push_back(s * float(x - 4 * y));
+      }
+  return bp::FieldSlice{ time, v };
+}
 } // namespace
 
 TEST(VectorField, TrilinearIsExactOnLinearFields)
@@ -141,21 +157,7 @@ TEST(VectorField, VorticityIsTheCurlOfTheCellsInterpolant)
   bp::GridGeometry g = bptest::grid(7, -1.0, 1.0);
   g.setCoordinates(2, { -1.0, -0.9, -0.6, 0.0, 0.1, 0.7, 1.0 });
   ASSERT_EQ(g.validate(), "");
-  auto slice = [&](double time, float s)
-  {
-    auto v = std::make_shared<std::vector<float>>();
-    for (int k = 0; k < g.dims[2]; ++k)
-      for (int j = 0; j < g.dims[1]; ++j)
-        for (int i = 0; i < g.dims[0]; ++i)
-        {
-          const double x = g.coordinate(0, i), y = g.coordinate(1, j), z = g.coordinate(2, k);
-          v->push_back(s * float(2 * y - z));
-          v->push_back(s * float(3 * x + 0.5 * z));
-          v->push_back(s * float(x - 4 * y));
-        }
-    return bp::FieldSlice{ time, v };
-  };
-  const bp::VectorField f(g, slice(0.0, 1.0f), slice(1.0, 2.0f));
+  const bp::VectorField f(g, scaledLinearSlice(g, 0.0, 1.0f), scaledLinearSlice(g, 1.0, 2.0f));
   ASSERT_EQ(f.validate(), "");
   const double curl = std::sqrt(4.5 * 4.5 + 2.0 * 2.0 + 1.0);
   std::mt19937 random(7);
@@ -218,21 +220,7 @@ TEST(VectorField, TheDerivativeAlongADirectionIsTheCellGradients)
     g.setCoordinates(2, { -1.0, -0.9, -0.6, 0.0, 0.1, 0.7, 1.0 });
     g.dims[0] = flatX ? 1 : 7;
     ASSERT_EQ(g.validate(), "");
-    auto slice = [&](double time, float s)
-    {
-      auto v = std::make_shared<std::vector<float>>();
-      for (int k = 0; k < g.dims[2]; ++k)
-        for (int j = 0; j < g.dims[1]; ++j)
-          for (int i = 0; i < g.dims[0]; ++i)
-          {
-            const double x = g.coordinate(0, i), y = g.coordinate(1, j), z = g.coordinate(2, k);
-            v->push_back(s * float(2 * y - z));
-            v->push_back(s * float(3 * x + 0.5 * z));
-            v->push_back(s * float(x - 4 * y));
-          }
-      return bp::FieldSlice{ time, v };
-    };
-    const bp::VectorField f(g, slice(0.0, 1.0f), slice(1.0, 2.0f));
+    const bp::VectorField f(g, scaledLinearSlice(g, 0.0, 1.0f), scaledLinearSlice(g, 1.0, 2.0f));
     std::mt19937 random(11);
     std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
     for (int n = 0; n < 100; ++n)
