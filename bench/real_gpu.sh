@@ -7,7 +7,11 @@
 #     engine on all the host's cores; steps/s, particle-steps/s and the share
 #     of the GPU's memory bandwidth; then each pass's GPU time per step;
 #  2. step plus draw of 1 M particles in ParaView (pvpython, offscreen), in
-#     frames per second, on each path (bench/step_draw.py).
+#     frames per second, on each path (bench/step_draw.py);
+#  3. the CPU engine on 1, 2, 4, 8 and 16 threads, those the host has, with
+#     the parallel efficiency and the bandwidth against a triad (issue 40);
+#  4. heavy particles against massless on both engines, the CPU engine on
+#     every core stepped alternately with the massless one (issue 44).
 # Writes everything into ${1:-real-gpu}/ and prints it.
 #
 #   bash bench/real_gpu.sh [OUTDIR] [--bandwidth GB/s]
@@ -46,4 +50,12 @@ if [ -f "$plugin" ] && command -v pvpython >/dev/null; then
 else
   echo "step+draw: no ParaView plugin or pvpython here; skipped" | tee "$out/step_draw.txt"
 fi
-echo "real_gpu: wrote $out/host.txt, $out/engines.txt, $out/engines.csv, $out/step_draw.txt"
+
+# 3. The CPU engine on more threads.
+"$build/bin/BoundParticlesThreadsBench" | tee "$out/threads.txt"
+
+# 4. Heavy particles on both engines.
+"$build/bin/BoundParticlesInertiaBench" --interleaved 60 | tee "$out/inertia.txt"
+
+echo "real_gpu: wrote $out/host.txt, $out/engines.txt, $out/engines.csv, $out/step_draw.txt," \
+  "$out/threads.txt, $out/inertia.txt"
