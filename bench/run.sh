@@ -33,6 +33,9 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
 "$build/bin/BoundParticlesResampleBench" | tee "$out/resample.txt"
 # Heavy particles (Inertia = Maxey-Riley) against massless tracers, the same jobs.
 "$build/bin/BoundParticlesInertiaBench" | tee "$out/inertia.txt"
+# ... and as Play meets them: the tracer's one-step update with the default arrays.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/inertia_update.py" \
+  --plugin "$plugin" | tee "$out/inertia_update.txt"
 # An unstructured mesh of ~1 M tetrahedra: first frame (resample included) and Play,
 # beside an image of the same size and ParaView's Particle Tracer on the mesh; then
 # hexahedra cut in five, and a mesh whose points move at every step.
