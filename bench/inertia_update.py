@@ -8,10 +8,15 @@ BoundParticlesInertiaBench (tau 0.05, density ratio 1000, gravity -z).
     with-display.sh pvpython bench/inertia_update.py --plugin BoundParticles.so
 """
 import argparse
+import os
 import statistics
+import sys
 import time
 
 from paraview.simple import *  # noqa: F401,F403
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tracer_costs import shear_layer, strip16_tracer  # noqa: E402
 
 
 parser = argparse.ArgumentParser()
@@ -23,19 +28,14 @@ args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
 res = args.resolution
-flow = AnalyticFlow(Flow="Shear Layer", Resolution=[res, res, res])
-flow.UpdatePipeline()
-dt = 0.5 * (2.0 / (res - 1)) / 1.25
+flow, dt = shear_layer(AnalyticFlow, res)
 UPDATES, LONG, REPEATS, WARMUP = 20, 20, 3, 3
 steps = WARMUP + UPDATES + LONG * REPEATS + 2
 
 
 def tracer(heavy):
     """A fresh tracer, with or without inertia."""
-    t = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
-                            ElementShape="Strip16", NumberOfElements=args.elements,
-                            StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
-                            Duration=dt * (steps - 1), NumberOfTimeSteps=steps, Engine="CPU")
+    t = strip16_tracer(BoundParticleTracer, flow, dt, args.elements, steps, Engine="CPU")
     if heavy:
         t.Inertia = "Maxey-Riley"
         t.ResponseTime = 0.05

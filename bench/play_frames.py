@@ -27,7 +27,7 @@ import paraview.simple
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tracer_costs import update_and_step_ms  # noqa: E402
+from tracer_costs import shear_layer, strip16_tracer, update_and_step_ms  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -40,10 +40,7 @@ LoadPlugin(args.plugin, ns=globals())
 paraview.simple._DisableFirstRenderCameraReset()
 
 res = args.resolution
-flow = AnalyticFlow(Flow="Shear Layer", Resolution=[res, res, res])
-flow.UpdatePipeline()
-cell = 2.0 / (res - 1)
-dt = 0.5 * cell / 1.25  # half a cell at the shear layer's top speed
+flow, dt = shear_layer(AnalyticFlow, res)
 frames = args.frames
 warmup = 3
 UPDATES = max(frames, 30)  # one-step updates timed (cheap, and the noisiest figure)
@@ -61,11 +58,7 @@ DRAWN = ["Normals", "Force"]
 
 
 def new_tracer(count, engine, arrays=ALL):
-    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
-                                 ElementShape="Strip16", NumberOfElements=count,
-                                 StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
-                                 Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
-                                 Engine=engine)
+    tracer = strip16_tracer(BoundParticleTracer, flow, dt, count, steps, Engine=engine)
     if arrays is not None:
         tracer.OutputArrays = arrays
     return tracer

@@ -21,7 +21,7 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tracer_costs import update_and_step_ms  # noqa: E402
+from tracer_costs import shear_layer, strip16_tracer, update_and_step_ms  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -32,19 +32,14 @@ args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
 
 res = args.resolution
-flow = AnalyticFlow(Flow="Shear Layer", Resolution=[res, res, res])
-flow.UpdatePipeline()
-dt = 0.5 * (2.0 / (res - 1)) / 1.25
+flow, dt = shear_layer(AnalyticFlow, res)
 UPDATES, LONG, REPEATS, WARMUP = 30, 20, 5, 3
 steps = WARMUP + UPDATES + LONG * REPEATS + 2
 
 
 def costs(count):
-    tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "velocity"],
-                                 ElementShape="Strip16", NumberOfElements=count,
-                                 StepSizeUnit="Time", StepSize=dt, ElementSize=0.04,
-                                 Duration=dt * (steps - 1), NumberOfTimeSteps=steps,
-                                 Engine="CPU", OutputArrays=["Normals", "Force"])
+    tracer = strip16_tracer(BoundParticleTracer, flow, dt, count, steps, Engine="CPU",
+                            OutputArrays=["Normals", "Force"])
     result = update_and_step_ms(tracer, WARMUP, UPDATES, LONG, REPEATS)
     Delete(tracer)
     return result

@@ -22,3 +22,23 @@ def update_and_step_ms(tracer, warmup, updates, long_steps, repeats):
         tracer.UpdatePipeline(times[warmup + updates + r * long_steps])
         per_step.append((time.perf_counter() - start) / long_steps)
     return 1e3 * statistics.median(one_step[warmup:]), 1e3 * statistics.median(per_step)
+
+
+def shear_layer(analytic_flow, res):
+    """The pvpython benches' field: the shear layer at res^3 points, and the
+    step that moves its fastest point (speed 1.25) half a cell.
+    `analytic_flow` is the plugin's AnalyticFlow constructor."""
+    flow = analytic_flow(Flow="Shear Layer", Resolution=[res, res, res])
+    flow.UpdatePipeline()
+    return flow, 0.5 * (2.0 / (res - 1)) / 1.25
+
+
+def strip16_tracer(tracer_class, flow, dt, elements, steps, **properties):
+    """A Bound Particle Tracer (`tracer_class`) of `elements` Strip16 on
+    `flow`'s velocity, `steps` time steps dt apart, element size 0.04, with
+    `properties` on top."""
+    settings = dict(Input=flow, Vectors=["POINTS", "velocity"], ElementShape="Strip16",
+                    NumberOfElements=elements, StepSizeUnit="Time", StepSize=dt,
+                    ElementSize=0.04, Duration=dt * (steps - 1), NumberOfTimeSteps=steps)
+    settings.update(properties)
+    return tracer_class(**settings)
