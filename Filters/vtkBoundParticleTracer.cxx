@@ -125,16 +125,15 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.latticeSpacing = this->LatticeSpacing;
   bp::Parameters& p = s.engine;
   p.iterations = this->RestorationIterations;
-  p.relaxation = float(this->RelaxationFactor);
-  p.shapeStiffness = float(this->ShapeMatchingStiffness);
+  p.relaxation = bp::settingAsFloat(this->RelaxationFactor);
+  p.shapeStiffness = bp::settingAsFloat(this->ShapeMatchingStiffness);
   p.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
-  p.linearBlend = float(this->LinearShapeMatchingBeta);
+  p.linearBlend = bp::settingAsFloat(this->LinearShapeMatchingBeta);
   p.latticeWidth = this->LatticeWidth;
-  p.linkStiffness = float(this->LinkStiffness);
-  p.responseTime = float(this->ResponseTime);
-  p.densityRatio = float(this->DensityRatio);
-  std::transform(
-    this->Gravity, this->Gravity + 3, p.gravity.begin(), [](double g) { return float(g); });
+  p.linkStiffness = bp::settingAsFloat(this->LinkStiffness);
+  p.responseTime = bp::settingAsFloat(this->ResponseTime);
+  p.densityRatio = bp::settingAsFloat(this->DensityRatio);
+  std::transform(this->Gravity, this->Gravity + 3, p.gravity.begin(), bp::settingAsFloat);
   if (this->ReleaseWindow)
   {
     p.releaseStart = this->ReleaseStart;

@@ -12,7 +12,7 @@ void GpuSystem::resetInputs(GpuPass& pass, bool initialize, bool releasing, doub
   this->bindCurrent(pass, { E::State, E::Centers, E::Orientations, E::Poses });
   pass.setInt("bpInitialize", initialize ? 1 : 0);
   pass.setInt("bpReleasing", releasing ? 1 : 0);
-    pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
+  pass.setVec4("bpFrameQuaternion", this->FrameQuaternion.data());
   pass.setVec3("bpLongAxis", this->LongAxis.data());
   pass.setInt("bpPlaneAxis", this->parameters.planeAxis);
   // Along Flow samples the flow at the release centre at t (Engine::alignToFlow).
@@ -57,21 +57,21 @@ void GpuSystem::slipInputs(GpuPass& pass, double t, double h) const
   pass.texture("bpSlipsNext", this->state.slipsNext.get());
   const InertiaStep k = inertiaStepOf(p, h);
   pass.setFloat("bpStep", k.h);
-  pass.setFloat("bpSlipTau", k.tau);
   pass.setFloat("bpSlipDecay", k.decay);
   pass.setFloat("bpSlipMemory", k.memory);
+  pass.setFloat("bpSlipSettle", k.settle);
   pass.setFloat("bpSlipBuoyancy", k.buoyancy);
   pass.setVec3("bpSlipGravity", k.gravity);
-  pass.setInt("bpShareSlip", !this->shape.springs.empty() ||
-      p.restoration == Restoration::ShapeMatching || this->state.linked);
+  pass.setInt("bpShareSlip",
+    !this->shape.springs.empty() || p.restoration == Restoration::ShapeMatching ||
+      this->state.linked);
   const VectorField* field = this->fieldCache.field();
   const float weights[3] = { field ? field->timeWeight(t) : 0.0f, 0.0f, 0.0f };
   pass.setVec3("bpSlipWeights", weights);
   // As VectorField::sampleAlong: in double, then float.
   const bool unsteady = field && !field->isSteady();
-  pass.setFloat("bpTimeRate", unsteady ? float(1.0 / (field->secondSlice().time -
-                                                       field->firstSlice().time))
-                                       : 0.0f);
+  pass.setFloat("bpTimeRate",
+    unsteady ? float(1.0 / (field->secondSlice().time - field->firstSlice().time)) : 0.0f);
 }
 
 void GpuSystem::stepSlips(double t, double h)
@@ -208,8 +208,8 @@ GLuint GpuSystem::matchShapes(GLuint positions, int& restorationPass)
   TexturePair& orientations = s.element(ElementTexture::Orientations);
   GpuPass fit = this->begin(this->passes.programs.match);
   this->matchInputs(fit, positions);
-  fit.runPerElement({ s.matchCenters.get(), orientations.next(), s.matchLinear[0].get(),
-    s.matchLinear[1].get() });
+  fit.runPerElement(
+    { s.matchCenters.get(), orientations.next(), s.matchLinear[0].get(), s.matchLinear[1].get() });
   orientations.flip();
   GpuPass move = this->begin(this->passes.programs.matchApply);
   this->matchInputs(move, positions);

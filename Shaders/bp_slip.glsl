@@ -7,9 +7,9 @@
 uniform sampler2D bpSlips;     // per particle: the slip (xyz)
 uniform sampler2D bpSlipsNext; // the share pass: the slip pass's
 uniform vec3 bpSlipWeights;    // the second slice's weight at the step's start (x)
-uniform float bpSlipTau;       // InertiaStep: tau, E, tau (1 - E), 1 - beta, g
-uniform float bpSlipDecay;
+uniform float bpSlipDecay;     // InertiaStep: E, tau (1 - E), tau (h - tau (1 - E)), 1 - beta, g
 uniform float bpSlipMemory;
+uniform float bpSlipSettle;
 uniform float bpSlipBuoyancy;
 uniform vec3 bpSlipGravity;
 uniform float bpTimeRate;      // 1 / (t1 - t0) of the field's slices; 0 when steady
@@ -59,10 +59,9 @@ void bpSampleAlong(vec3 p, float weight, vec3 s, out vec3 u, out vec3 dudt, out 
 // slipStep: the new slip and the displacement it adds, from the slip `s`.
 void bpSlipStep(vec3 dudt, vec3 along, inout vec3 s, out vec3 move)
 {
-  vec3 terminal = bpSlipTau * (bpSlipBuoyancy * (bpSlipGravity - dudt) - along);
-  vec3 off = s - terminal;
-  move = bpStep * terminal + bpSlipMemory * off;
-  s = terminal + bpSlipDecay * off;
+  vec3 a = bpSlipBuoyancy * (bpSlipGravity - dudt) - along;
+  move = bpSlipMemory * s + bpSlipSettle * a;
+  s = bpSlipDecay * s + bpSlipMemory * a;
 }
 
 // Particle i of an element whose state is `element` (z: placed in this step),

@@ -155,8 +155,8 @@ struct Parameters
   /// response time tau > 0 each particle keeps its slip velocity (its
   /// velocity less the flow's) and drifts from the flow by it.
   Inertia inertia = Inertia::None;
-  float responseTime = 0.0f; ///< tau, the Stokes response time, in time units
-  float densityRatio = 1.0f; ///< the particle's density over the fluid's, > 0
+  float responseTime = 0.0f;                  ///< tau, the Stokes response time, in time units
+  float densityRatio = 1.0f;                  ///< the particle's density over the fluid's, > 0
   std::array<float, 3> gravity = { 0, 0, 0 }; ///< in world units per time unit squared
   /// Release centres, 3 floats per point (at most MaxSeedPoints): release r
   /// = generation * numberOfElements + id of an element is at point r modulo
@@ -200,6 +200,20 @@ constexpr int MaxTrailSpacing = 1000;
 /// Trail generation of a slot that holds no pose of the element
 /// (Engine::trailGenerations()).
 constexpr std::uint32_t NoTrailPose = 0xffffffffu;
+
+/// A setting given in double as the engine's float: beyond float's range it
+/// is +-infinity, which validate() refuses by name, where a plain float(v)
+/// would be undefined behaviour (NaN stays NaN).
+inline float settingAsFloat(double v)
+{
+  constexpr double Largest = std::numeric_limits<float>::max();
+  constexpr float Infinity = std::numeric_limits<float>::infinity();
+  if (std::abs(v) > Largest)
+  {
+    return v > 0 ? Infinity : -Infinity;
+  }
+  return float(v);
+}
 
 /// Whether a step starting at `t` records a trail pose first: t is within
 /// 1e-6 of an interval of trailStart + k * trailInterval, k >= 0.

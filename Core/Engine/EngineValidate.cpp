@@ -233,19 +233,20 @@ std::string checkInertia(const ElementTemplate& /*shape*/, const Parameters& p)
   }
   if (!(p.responseTime >= 0.0f) || !std::isfinite(p.responseTime))
   {
-    return "ResponseTime (the particles' response time tau) must be a finite number of at "
-           "least 0 (0 traces massless particles)";
+    return "ResponseTime (the particles' response time tau) must be a number from 0 (massless "
+           "particles) to 3.4e38, the largest float";
   }
   if (!(p.densityRatio > 0.0f) || !std::isfinite(p.densityRatio))
   {
-    return "DensityRatio (the particles' density over the fluid's) must be a finite number "
-           "above 0";
+    return "DensityRatio (the particles' density over the fluid's) must be a number above 0 "
+           "and at most 3.4e38, the largest float";
   }
   for (const float g : p.gravity)
   {
     if (!std::isfinite(g))
     {
-      return "Gravity must be a finite vector (0 0 0 for none)";
+      return "Gravity must be a vector of numbers of at most 3.4e38 in size, the largest float "
+             "(0 0 0 for none)";
     }
   }
   if (p.anchor != Anchor::None)

@@ -23,15 +23,20 @@
  * from the cell's corners (VectorField::sampleAlong), not the whole gradient
  * (the same maths; the float rounding is that of this form). That is what
  * one step solves exactly for a held constant over the step (an
- * exponential integrator): with the terminal slip T = tau a and E =
- * exp(-h / tau),
+ * exponential integrator): with E = exp(-h / tau), M = tau (1 - E) and
+ * S = tau (h - M),
  *
- *     s(t + h) = T + (s - T) E,   displacement = h T + tau (1 - E) (s - T).
+ *     s(t + h) = E s + M a,   displacement = M s + S a.
  *
- * It is stable for any tau > 0, however far below the step (E -> 0: the
- * slip is T, the drift h T), and exact for a constant a (settling in still
- * fluid, drag relaxation in a uniform flow). tau -> 0 gives the tracer;
- * tau = 0 is the tracer itself (carriesInertia() is false, nothing runs).
+ * (The same as T + (s - T) E and h T + M (s - T) with the terminal slip
+ * T = tau a, written without T: with tau far above the step T is huge and
+ * s - T cancels every digit of float; so M and S are computed in double,
+ * S by its series where h / tau is small.) It is stable for any tau > 0,
+ * however far below the step (E -> 0: the slip is tau a, the drift h tau a)
+ * or above it (E -> 1: M -> h and S -> h^2 / 2, free fall under a), and
+ * exact for a constant a (settling in still fluid, drag relaxation in a
+ * uniform flow). tau -> 0 gives the tracer; tau = 0 is the tracer itself
+ * (carriesInertia() is false, nothing runs).
  *
  * The GPU engine runs the same maths in Shaders/bp_slip.glsl (a slip pass
  * before advection and a share pass after the test, or both inside the
@@ -64,9 +69,9 @@ inline bool carriesInertia(const Parameters& p)
 struct InertiaStep
 {
   float h = 0.0f;        ///< the step
-  float tau = 0.0f;      ///< the response time
-  float decay = 1.0f;    ///< E = exp(-h / tau)
-  float memory = 0.0f;   ///< tau (1 - E): the displacement per unit of slip off its terminal
+  float decay = 1.0f;    ///< E = exp(-h / tau): what the drag leaves of the slip
+  float memory = 0.0f;   ///< M = tau (1 - E): the slip's and the drift's share of a, s
+  float settle = 0.0f;   ///< S = tau (h - M): the displacement per unit of a
   float buoyancy = 0.0f; ///< 1 - beta
   float gravity[3] = { 0, 0, 0 };
 };
@@ -76,15 +81,17 @@ inline InertiaStep inertiaStepOf(const Parameters& p, double h)
 {
   InertiaStep k;
   k.h = float(h);
-  k.tau = p.responseTime;
   if (!carriesInertia(p))
   {
     return k;
   }
   const double tau = p.responseTime;
-  const double decay = std::exp(-h / tau);
-  k.decay = float(decay);
-  k.memory = float(tau * (1.0 - decay));
+  const double x = h / tau;
+  const double memory = -tau * std::expm1(-x); // tau (1 - E), exact however small x is
+  k.decay = float(std::exp(-x));
+  k.memory = float(memory);
+  // tau (h - M) = h^2 (1/2 - x/6 + x^2/24 - ...): h - M cancels as x -> 0.
+  k.settle = float(x < 1e-3 ? h * h * (0.5 - x / 6.0 + x * x / 24.0) : tau * (h - memory));
   k.buoyancy = 1.0f - addedMassFactor(p.densityRatio);
   for (int a = 0; a < 3; ++a)
   {
@@ -98,10 +105,9 @@ inline InertiaStep inertiaStepOf(const Parameters& p, double h)
 template <class T>
 inline void slipStepOf(const InertiaStep& k, T gravity, T dudt, T along, T& slip, T& move)
 {
-  const T terminal = T(k.tau) * (T(k.buoyancy) * (gravity - dudt) - along);
-  const T off = slip - terminal;
-  move = T(k.h) * terminal + T(k.memory) * off;
-  slip = terminal + T(k.decay) * off;
+  const T a = T(k.buoyancy) * (gravity - dudt) - along;
+  move = T(k.memory) * slip + T(k.settle) * a;
+  slip = T(k.decay) * slip + T(k.memory) * a;
 }
 
 /**

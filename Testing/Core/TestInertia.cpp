@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 namespace
@@ -182,8 +183,8 @@ TEST(Inertia, HeavyParticlesLeaveAVortexAndBubblesGoIn)
       const double expected = 0.01 * (1.0 - bp::addedMassFactor(ratio));
       std::printf("%s, density ratio %g: dr/dt / r = %.6f over a turn (less %.6f without "
                   "inertia), tau (1 - beta) omega^2 = %.6f (%.2f%% off)\n",
-        shape == bp::BuiltinShape::Point ? "point" : "square", double(ratio), rate, own,
-        expected, 100.0 * (rate / expected - 1.0));
+        shape == bp::BuiltinShape::Point ? "point" : "square", double(ratio), rate, own, expected,
+        100.0 * (rate / expected - 1.0));
       EXPECT_NEAR(rate, expected, 0.05 * std::abs(expected));
     }
   }
@@ -249,7 +250,8 @@ TEST(Inertia, HeavyParticlesLeaveTheDoubleGyresCores)
   for (int s = 0; s < 400; ++s)
   {
     const double t = s * h, t0 = 0.5 * std::floor(t / 0.5);
-    const bp::VectorField field = bptest::unsteadyFlow(bp::AnalyticFlow::DoubleGyre, g, t0, t0 + 0.5);
+    const bp::VectorField field =
+      bptest::unsteadyFlow(bp::AnalyticFlow::DoubleGyre, g, t0, t0 + 0.5);
     tracers.step(field, t, h, bp::serialRunner());
     particles.step(field, t, h, bp::serialRunner());
   }
@@ -315,6 +317,22 @@ TEST(Inertia, BadSettingsAreRefusedByName)
   q = p;
   q.anchor = bp::Anchor::Centre;
   EXPECT_NE(refusal(q).find("inertia has no meaning"), std::string::npos);
+  // Finite in double, beyond float: infinity (never undefined behaviour),
+  // refused with the range rather than as "not finite".
+  EXPECT_EQ(bp::settingAsFloat(1e300), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(bp::settingAsFloat(-1e39), -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(bp::settingAsFloat(3e38), 3e38f);
+  EXPECT_TRUE(std::isnan(bp::settingAsFloat(std::nan(""))));
+  q = p;
+  q.responseTime = bp::settingAsFloat(1e39);
+  EXPECT_NE(refusal(q).find("ResponseTime"), std::string::npos);
+  EXPECT_NE(refusal(q).find("3.4e38"), std::string::npos);
+  q = p;
+  q.densityRatio = bp::settingAsFloat(1e300);
+  EXPECT_NE(refusal(q).find("3.4e38"), std::string::npos);
+  q = p;
+  q.gravity[2] = bp::settingAsFloat(-1e39);
+  EXPECT_NE(refusal(q).find("3.4e38"), std::string::npos);
   // Without inertia the inertial settings are not read.
   q.inertia = bp::Inertia::None;
   q.anchor = bp::Anchor::None;

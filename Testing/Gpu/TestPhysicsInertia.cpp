@@ -106,6 +106,37 @@ TEST_P(InertiaPhysics, SettlesAtItsTerminalVelocity)
   EXPECT_LT(worst, 0.01 * std::abs(terminal));
 }
 
+TEST_P(InertiaPhysics, AResponseTimeFarAboveTheStepFallsFreely)
+{
+  // tau >> t: the drag has no time to act, so in still fluid the slip is
+  // (1 - beta) g t and the fall (1 - beta) g t^2 / 2 (to within t / tau).
+  // The step's terminal-slip form lost every digit here (slip 0 from
+  // tau / h = 1e8 on, 56% off at 1e7).
+  const bp::VectorField still = stillFlow();
+  const double h = 0.004;
+  for (float tau : { 0.04f, 4e4f, 4e6f, 4e30f })
+  {
+    bp::Parameters p = heavy({ 0, 0, 0.5f }, { 0, 0, 0.5f }, tau, 1000.0f);
+    p.gravity = { 0, 0, -9.81f };
+    System s(GetParam(), bp::builtinTemplate(bp::BuiltinShape::Point), p, still);
+    const double a = (1.0 - bp::addedMassFactor(1000.0f)) * -9.81;
+    for (int k = 1; k <= 100; ++k)
+      s.step((k - 1) * h, h);
+    const double t = 100 * h;
+    // The exact solution, tau a (1 - E(t)) and tau a (t - tau (1 - E(t))),
+    // by its series where t / tau is small.
+    const double x = t / tau;
+    const double slip = x < 1e-3 ? a * t * (1.0 - x / 2.0) : -tau * a * std::expm1(-x);
+    const double fall =
+      x < 1e-3 ? a * t * t * (0.5 - x / 6.0) : tau * a * (t + tau * std::expm1(-x));
+    const std::vector<float> slips = s.slips(), positions = s.positions();
+    std::printf("%s, tau %g: slip %.6f (exact %.6f), fall %.6f (exact %.6f)\n", engine(),
+      double(tau), double(slips[2]), slip, double(positions[2]) - 0.5, fall);
+    EXPECT_NEAR(slips[2], slip, 1e-4 * std::abs(slip)) << "tau " << tau;
+    EXPECT_NEAR(positions[2] - 0.5, fall, 1e-4 * std::abs(fall)) << "tau " << tau;
+  }
+}
+
 TEST_P(InertiaPhysics, HeavyParticlesLeaveAVortexAndBubblesGoIn)
 {
   // Solid-body rotation at omega = 1 over [-1, 1]^3: dr/dt = tau (1 - beta) r.
