@@ -207,6 +207,34 @@ inline void shareSlip(float* slips, std::size_t n)
   }
 }
 
+/// The speed at which gravity (less buoyancy) settles a particle in still
+/// fluid: its terminal slip tau (1 - beta) |g|. 0 without inertia.
+inline double terminalSettlingSpeed(const Parameters& p)
+{
+  if (!carriesInertia(p))
+  {
+    return 0.0;
+  }
+  const double g = std::sqrt(double(p.gravity[0]) * p.gravity[0] +
+    double(p.gravity[1]) * p.gravity[1] + double(p.gravity[2]) * p.gravity[2]);
+  return double(p.responseTime) * std::abs(1.0 - double(addedMassFactor(p.densityRatio))) * g;
+}
+
+/// How far gravity alone carries a particle in still fluid over `t` from
+/// rest: its slip approaches the terminal speed as 1 - exp(-t / tau), so the
+/// distance is free fall's for t far below tau and the terminal's for t far
+/// above it.
+inline double settlingDistance(const Parameters& p, double t)
+{
+  if (!(t > 0.0) || !carriesInertia(p))
+  {
+    return 0.0;
+  }
+  const double tau = p.responseTime;
+  // t - tau (1 - exp(-t / tau)), expm1 keeping its precision for t << tau.
+  return terminalSettlingSpeed(p) * (t + tau * std::expm1(-t / tau));
+}
+
 /// A step far above tau makes the trace nearly massless: the slip relaxes to
 /// its terminal in under a thousandth of a step. The tracer notes it.
 inline bool nearlyMassless(const Parameters& p, double h)

@@ -210,7 +210,8 @@ void resolvePlane(const FieldFacts& f, Parameters& p)
 }
 
 /// The warning of an unsteady field whose typical speed crosses more than
-/// UnitsWarningShare of it between two input time steps; empty otherwise.
+/// UnitsWarningShare of it and more than UnitsWarningCells cells between two
+/// input time steps; empty otherwise.
 std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeScale& scale)
 {
   double longest = 0.0;
@@ -218,8 +219,10 @@ std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeSc
   {
     longest = std::max(longest, inputTimes[k] - inputTimes[k - 1]);
   }
-  const double share = scale.extent > 0.0 ? scale.typicalSpeed * longest / scale.extent : 0.0;
-  if (!(share > UnitsWarningShare) || !std::isfinite(share))
+  const double travel = scale.typicalSpeed * longest;
+  const double share = scale.extent > 0.0 ? travel / scale.extent : 0.0;
+  const double cells = scale.cellLength > 0.0 ? travel / scale.cellLength : 0.0;
+  if (!(share > UnitsWarningShare && cells > UnitsWarningCells) || !std::isfinite(share))
   {
     return std::string();
   }
@@ -227,12 +230,36 @@ std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeSc
   w << "At the field's typical speed (" << scale.typicalSpeed
     << ": 90% of its moving points are slower) an element crosses "
     << int(std::round(100.0 * std::min(share, 1e6))) << "% of the field (" << scale.extent
-    << " long) between two input time steps (" << longest
+    << " long), " << std::round(std::min(cells, 1e12)) << " cells of " << scale.cellLength
+    << ", between two input time steps (" << longest
     << " apart), so the trace crumples: the velocity's units may not match the grid's or the "
        "time's (e.g. m/s on a grid in degrees, with time in hours). Pick Vectors in the grid's "
        "units per time unit, or convert them with a Calculator; Step Size in Time units then "
        "steps in the data's own time.";
   return w.str();
+}
+
+/// Gravity's settling over the longest lifetime, when it carries a particle
+/// more than GravityWarningFields times the field's longest side.
+void checkGravityUnits(const FieldFacts& f, Resolution& r)
+{
+  const Parameters& p = r.parameters;
+  const double longest =
+    std::max({ f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
+  const double settling = settlingDistance(p, p.lifetimeMax);
+  if (!(longest > 0.0) || !(settling > GravityWarningFields * longest))
+  {
+    return;
+  }
+  std::ostringstream w;
+  w << "Gravity (" << p.gravity[0] << ", " << p.gravity[1] << ", " << p.gravity[2]
+    << ") alone carries a particle " << settling << " over its longest lifetime (" << p.lifetimeMax
+    << "), " << std::round(std::min(settling / longest, 1e12))
+    << " times the field's longest side (" << longest << "; Response Time " << p.responseTime
+    << " and Density Ratio " << p.densityRatio << " settle it at " << terminalSettlingSpeed(p)
+    << "): Gravity may not be in the data's units, length per time unit squared (9.81 m/s^2 "
+       "is 1.27e5 km/h^2, and 9810 in mm/s^2). Convert it, or check Response Time.";
+  r.warnings.push_back(w.str());
 }
 
 Resolution failure(const std::string& message)
@@ -331,6 +358,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   {
     return failure(lifetimeError);
   }
+  checkGravityUnits(f, r);
   if (nearlyMassless(r.parameters, r.dt))
   {
     std::ostringstream w;

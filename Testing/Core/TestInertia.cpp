@@ -339,3 +339,23 @@ TEST(Inertia, BadSettingsAreRefusedByName)
   q.responseTime = -1.0f;
   EXPECT_EQ(refusal(q), "");
 }
+
+TEST(Inertia, SettlingDistanceIsFreeFallEarlyAndTerminalLate)
+{
+  bp::Parameters p;
+  p.inertia = bp::Inertia::MaxeyRiley;
+  p.responseTime = 0.5f;
+  p.densityRatio = 2.0f;     // beta = 0.6
+  p.gravity = { 0, -3, -4 }; // |g| = 5
+  const double terminal = 0.5 * 0.4 * 5.0;
+  // beta is a float (addedMassFactor): within 1e-6 relative.
+  EXPECT_NEAR(bp::terminalSettlingSpeed(p), terminal, 1e-6 * terminal);
+  // Far below tau it is free fall, (1 - beta) |g| t^2 / 2 (less t / (3 tau) of
+  // it, 7e-5); far above, the terminal speed's over t - tau.
+  EXPECT_NEAR(bp::settlingDistance(p, 1e-4), 0.5 * 0.4 * 5.0 * 1e-8, 1e-4 * 1e-8);
+  EXPECT_NEAR(bp::settlingDistance(p, 1000.0), terminal * (1000.0 - 0.5), 1e-6 * 1000.0);
+  // Its exact form in between (the still-fluid solution the engines step).
+  EXPECT_NEAR(bp::settlingDistance(p, 1.0), terminal * (1.0 - 0.5 * (1.0 - std::exp(-2.0))), 1e-6);
+  p.inertia = bp::Inertia::None;
+  EXPECT_EQ(bp::settlingDistance(p, 1.0), 0.0);
+}

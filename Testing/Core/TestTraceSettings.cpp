@@ -56,6 +56,53 @@ TEST(TraceSettings, AResponseTimeFarBelowTheStepIsNotedAsNearlyMassless)
   EXPECT_FALSE(noted(bp::resolveSettings(s, box())));
 }
 
+TEST(TraceSettings, GravityFarOutOfTheDatasUnitsIsSaid)
+{
+  // carotid.vti: 75 x 48 x 44 cells of 1, a top speed of 22.7; heavy
+  // particles of Response Time 0.1 (Density Ratio 1000) live up to ~2.2.
+  bp::FieldFacts carotid;
+  carotid.bounds = { 0, 75, 0, 48, 0, 44 };
+  carotid.dims = { 76, 49, 45 };
+  carotid.cellLength = 1.0;
+  carotid.maxSpeed = 22.7;
+  bp::TraceSettings s;
+  s.engine.inertia = bp::Inertia::MaxeyRiley;
+  s.engine.responseTime = 0.1f;
+  s.engine.densityRatio = 1000.0f;
+  auto said = [&]()
+  {
+    const bp::Resolution r = bp::resolveSettings(s, carotid);
+    EXPECT_EQ(r.error, "");
+    for (const std::string& w : r.warnings)
+      if (w.find("Gravity may not be in the data's units") != std::string::npos)
+        return w;
+    return std::string();
+  };
+  // 9.81 m/s^2 as 1.27e5 km/h^2 settles particles ~370 fields over a lifetime.
+  s.engine.gravity = { 0, 0, -127137.6f };
+  const std::string wrong = said();
+  EXPECT_NE(wrong.find("Gravity (0, 0, -127138)"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("times the field's longest side (75"), std::string::npos) << wrong;
+  s.engine.gravity = { 0, 0, -1e10f };
+  EXPECT_NE(said(), "");
+  // Sensible gravity, none, no inertia, or a neutrally buoyant particle: nothing said.
+  s.engine.gravity = { 0, 0, -9.81f };
+  EXPECT_EQ(said(), "");
+  s.engine.gravity = { 0, 0, 0 };
+  EXPECT_EQ(said(), "");
+  s.engine.gravity = { 0, 0, -1e10f };
+  s.engine.densityRatio = 1.0f;
+  EXPECT_EQ(said(), "");
+  s.engine.densityRatio = 1000.0f;
+  s.engine.inertia = bp::Inertia::None;
+  EXPECT_EQ(said(), "");
+  // Bubbles rise: (1 - beta) is negative, its size counts.
+  s.engine.inertia = bp::Inertia::MaxeyRiley;
+  s.engine.densityRatio = 0.001f;
+  s.engine.gravity = { 0, 0, -127137.6f };
+  EXPECT_NE(said(), "");
+}
+
 TEST(TraceSettings, ZeroFieldWarnsAndStepsAsAtUnitSpeed)
 {
   bp::FieldFacts f = box();
@@ -336,7 +383,8 @@ TEST(TimeLine, ATypicalSpeedCrossingMuchOfTheFieldBetweenTimeStepsIsSaid)
   const std::vector<double> times = { 0, 6, 12, 18, 24 };
   const bp::TimeLine wrong = bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, s);
   ASSERT_EQ(wrong.warnings.size(), 1u);
-  EXPECT_NE(wrong.warnings[0].find("crosses 19% of the field"), std::string::npos)
+  EXPECT_NE(
+    wrong.warnings[0].find("crosses 19% of the field (359 long), 68 cells"), std::string::npos)
     << wrong.warnings[0];
   EXPECT_NE(wrong.warnings[0].find("Calculator"), std::string::npos);
   // Its velocity_deg_per_hour (typical 0.75): 1.3%, nothing said; nor for a
@@ -346,4 +394,28 @@ TEST(TimeLine, ATypicalSpeedCrossingMuchOfTheFieldBetweenTimeStepsIsSaid)
   EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, s).warnings.empty());
   s.typicalSpeed = 1e6;
   EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, s).warnings.empty());
+}
+
+TEST(TimeLine, AFlowThatCrossesMuchOfACoarseFieldInFewCellsIsNotSaidToBeOutOfUnits)
+{
+  // Analytic Flow's Double Gyre with its defaults: 32 points over [-1, 1],
+  // 21 time steps 0.5 apart. Its typical speed 0.54 crosses 13% of the field
+  // between two steps, but only 4 cells: the data is written often enough
+  // for its own flow (a period of 10), so nothing is said.
+  bp::TimeScale gyre;
+  gyre.maxSpeed = 0.94;
+  gyre.typicalSpeed = 0.54;
+  gyre.extent = 2.0;
+  gyre.cellLength = 2.0 / 31.0;
+  std::vector<double> times;
+  for (int k = 0; k < 21; ++k)
+    times.push_back(0.5 * k);
+  EXPECT_TRUE(bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, gyre).warnings.empty());
+  // The same velocity in the wrong units (ten times too fast) is said, naming the cells.
+  gyre.maxSpeed *= 10.0;
+  gyre.typicalSpeed *= 10.0;
+  const bp::TimeLine wrong = bp::resolveTimeLine(0.0, 0, 0, 0.5, true, times, gyre);
+  ASSERT_EQ(wrong.warnings.size(), 1u);
+  EXPECT_NE(wrong.warnings[0].find("135% of the field (2 long), 42 cells"), std::string::npos)
+    << wrong.warnings[0];
 }

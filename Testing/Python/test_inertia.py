@@ -10,7 +10,9 @@
   tau (1 - beta) omega^2 r (within 5%).
 - Bad settings are refused with a message naming the property and an empty
   output; Anchor with inertia is refused; a response time far below the step
-  is noted as nearly massless.
+  is noted as nearly massless; gravity far out of the data's units is warned
+  of. The plugin's double gyre with the tracer's defaults, and the user
+  guide's heavy particles on it, say nothing.
 - The Bound Particles display with the GPU engine draws what the CPU engine's
   Surface display shows.
 - A state file brings the settings back; the Python trace records them.
@@ -136,6 +138,40 @@ with bptest.CapturedMessages() as said:
 bptest.check(said.mentions("close to massless") and out.GetNumberOfPoints() == 40,
              "a response time far below the step is noted: %s" % said.messages)
 settling.ResponseTime = tau
+
+# Gravity far out of the data's units (9.81 m/s^2 given as 1.27e5 km/h^2: the
+# particles settle 10^5 times the field over their lifetime) is said once, by
+# name; the settling above (8 times the field) is not.
+UNITS = "Gravity may not be in the data's units"
+with bptest.CapturedMessages() as said:
+    bptest.fetch(settling, 0.5)
+bptest.check(not said.mentions(UNITS), "sensible gravity is not warned of: %s" % said.messages)
+settling.Gravity = [0, 0, -127137.6]
+with bptest.CapturedMessages() as said:
+    bptest.fetch(settling, 0.5)
+gravity = [m for m in said.messages if UNITS in m]
+bptest.check(len(gravity) == 1 and "-127138" in gravity[0],
+             "gravity out of the data's units is said once: %s" % said.messages)
+settling.Gravity = [0, 0, g]
+
+# The plugin's own double gyre with every tracer default, and the user guide's
+# heavy particles over it, say nothing (its flow crossing 13% of the coarse
+# default grid, 4 cells, between two time steps is no units mismatch).
+with bptest.CapturedMessages() as said:
+    default_gyre = AnalyticFlow(Flow="Double Gyre")
+    SetActiveSource(default_gyre)  # a tracer takes the active source's arrays
+    plain = BoundParticleTracer(Input=default_gyre)
+    plain.UpdatePipeline()
+    SetActiveSource(default_gyre)
+    dust = BoundParticleTracer(Input=default_gyre, ElementShape="Point", NumberOfElements=4000,
+                               Inertia="Maxey-Riley", ResponseTime=0.5, DensityRatio=1000,
+                               OutputArrays=["SlipVelocity", "Speed"])
+    dust.UpdatePipeline(5.0)
+bptest.check(not said.messages and servermanager.Fetch(dust).GetNumberOfPoints() == 4000,
+             "the default double gyre and the guide's heavy particles say nothing: %s" %
+             said.messages)
+for proxy in (dust, plain, default_gyre):
+    Delete(proxy)
 
 # Every input kind: the vortex as an unstructured mesh (resampled inside the
 # tracer) traces the heavy particles the image does.
