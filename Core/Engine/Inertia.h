@@ -231,8 +231,14 @@ inline double settlingDistance(const Parameters& p, double t)
     return 0.0;
   }
   const double tau = p.responseTime;
-  // t - tau (1 - exp(-t / tau)), expm1 keeping its precision for t << tau.
-  return terminalSettlingSpeed(p) * (t + tau * std::expm1(-t / tau));
+  const double x = t / tau;
+  if (x < 1e-3)
+  {
+    // tau (t - tau (1 - exp(-x))) = t^2 (1/2 - x/6 + ...): the difference
+    // cancels as x -> 0, and tau times it would be noise (inertiaStepOf's S).
+    return terminalSettlingSpeed(p) / tau * t * t * (0.5 - x / 6.0 + x * x / 24.0);
+  }
+  return terminalSettlingSpeed(p) * (t + tau * std::expm1(-x));
 }
 
 /// A step far above tau makes the trace nearly massless: the slip relaxes to

@@ -356,6 +356,10 @@ TEST(Inertia, SettlingDistanceIsFreeFallEarlyAndTerminalLate)
   EXPECT_NEAR(bp::settlingDistance(p, 1000.0), terminal * (1000.0 - 0.5), 1e-6 * 1000.0);
   // Its exact form in between (the still-fluid solution the engines step).
   EXPECT_NEAR(bp::settlingDistance(p, 1.0), terminal * (1.0 - 0.5 * (1.0 - std::exp(-2.0))), 1e-6);
+  // A response time far above t: free fall still, not tau times rounding
+  // noise (which would be 1e14 times too far at tau = 1e30).
+  p.responseTime = 1e30f;
+  EXPECT_NEAR(bp::settlingDistance(p, 2.0), 0.4 * 5.0 * 2.0, 1e-6 * 4.0);
   p.inertia = bp::Inertia::None;
   EXPECT_EQ(bp::settlingDistance(p, 1.0), 0.0);
 }
