@@ -247,7 +247,8 @@ void checkGravityUnits(const FieldFacts& f, Resolution& r)
   const double longest =
     std::max({ f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
   const double settling = settlingDistance(p, p.lifetimeMax);
-  if (!(longest > 0.0) || !(settling > GravityWarningFields * longest))
+  // A gravity that is not finite is refused by validate(), with its own message.
+  if (!(longest > 0.0) || !(settling > GravityWarningFields * longest) || !std::isfinite(settling))
   {
     return;
   }

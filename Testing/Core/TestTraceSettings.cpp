@@ -101,6 +101,9 @@ TEST(TraceSettings, GravityFarOutOfTheDatasUnitsIsSaid)
   s.engine.densityRatio = 0.001f;
   s.engine.gravity = { 0, 0, -127137.6f };
   EXPECT_NE(said(), "");
+  // Not finite (beyond float): the engine's validation refuses it, alone.
+  s.engine.gravity = { 0, std::numeric_limits<float>::infinity(), 0 };
+  EXPECT_EQ(said(), "");
 }
 
 TEST(TraceSettings, ZeroFieldWarnsAndStepsAsAtUnitSpeed)
