@@ -479,4 +479,14 @@ double PieceLayout::cellLength(const bp::GridGeometry& local) const
   return this->distributed() ? this->DomainCellLength : local.cellLength();
 }
 
+std::array<int, 3> PieceLayout::wholeDims(const bp::GridGeometry& local) const
+{
+  std::array<int, 3> dims = local.dims;
+  for (int a = 0; a < 3 && this->distributed(); ++a)
+  {
+    dims[a] = this->WholeExtent[2 * a + 1] - this->WholeExtent[2 * a] + 1;
+  }
+  return dims;
+}
+
 } // namespace bpvtk

@@ -158,6 +158,9 @@ public:
   std::array<double, 6> domainBounds(const bp::GridGeometry& local) const;
   /// The whole field's mean cell length (`local` is this process's grid).
   double cellLength(const bp::GridGeometry& local) const;
+  /// The whole field's points per axis (`local` is this process's grid):
+  /// 1 along a flat axis, where a process's block may be thin but the field is not.
+  std::array<int, 3> wholeDims(const bp::GridGeometry& local) const;
 
   vtkMultiProcessController* Controller = nullptr;
   int Piece = 0;

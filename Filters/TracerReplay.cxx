@@ -137,7 +137,7 @@ bp::FieldFacts vtkBoundParticleTracerInternals::fieldFacts(const bp::VectorField
   // The whole field's, also in parallel where this process holds a piece.
   facts.bounds = this->Layout.domainBounds(this->Grid);
   facts.offset = this->Offset;
-  facts.dims = this->Grid.dims;
+  facts.dims = this->Layout.wholeDims(this->Grid); // its flat axes, as keepInPlane's
   facts.cellLength = this->Layout.cellLength(this->Grid);
   facts.maxSpeed = field.maxSpeed();
   if (this->Layout.distributed())

@@ -133,15 +133,14 @@ void vtkBoundParticleTracerInternals::noteVectors(const Config& config, vtkDataO
 void vtkBoundParticleTracerInternals::keepInPlane(
   const bp::GridGeometry& grid, bp::FieldSlice& slice)
 {
-  // The whole field's flat axes (a process's block of an image may be thin).
+  // The whole field's flat axes (a process's block of an image may be thin);
+  // resolveSettings drops Gravity's component along them (fieldFacts).
+  const std::array<int, 3> dims = this->Layout.wholeDims(grid);
   std::array<bool, 3> flat;
   bool any = false;
   for (int a = 0; a < 3; ++a)
   {
-    const int points = this->Layout.distributed()
-      ? this->Layout.WholeExtent[2 * a + 1] - this->Layout.WholeExtent[2 * a] + 1
-      : grid.dims[a];
-    flat[a] = points == 1;
+    flat[a] = dims[a] == 1;
     any = any || flat[a];
   }
   if (!any || !slice.velocity)

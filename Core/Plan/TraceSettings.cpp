@@ -209,6 +209,42 @@ void resolvePlane(const FieldFacts& f, Parameters& p)
                       : rotationFromDegrees(0, 90, 0);
 }
 
+/// A flat field (one point along an axis) keeps its elements in its plane:
+/// the velocity's crossing component is dropped as it is read
+/// (dropFlatComponents), and so is Gravity's here, or heavy particles would
+/// fall out of the plane and never come back. A non-finite component is
+/// kept for Engine::validate to name. Said only where gravity acts (a heavy
+/// particle's trace).
+void resolveGravity(const FieldFacts& f, Parameters& p, std::vector<std::string>& warnings)
+{
+  std::string axes;
+  std::ostringstream dropped;
+  for (int a = 0; a < 3; ++a)
+  {
+    const float g = p.gravity[a];
+    if (f.dims[a] <= 1 && g != 0.0f && std::isfinite(g))
+    {
+      const std::string joint = axes.empty() ? "" : " and ";
+      axes += joint + "XYZ"[a];
+      dropped << joint << g << " along "
+              << "XYZ"[a];
+      p.gravity[a] = 0.0f;
+    }
+  }
+  if (axes.empty() || !carriesInertia(p))
+  {
+    return;
+  }
+  const bool none = p.gravity[0] == 0.0f && p.gravity[1] == 0.0f && p.gravity[2] == 0.0f;
+  std::ostringstream w;
+  w << "The field is flat along " << axes << " (one point) but Gravity crosses its plane ("
+    << dropped.str()
+    << "): elements stay in the plane, so that component is dropped and Gravity in the plane is ("
+    << p.gravity[0] << ", " << p.gravity[1] << ", " << p.gravity[2] << ")"
+    << (none ? ": heavy particles lag the flow but do not fall." : ".");
+  warnings.push_back(w.str());
+}
+
 /// The warning of an unsteady field whose typical speed crosses more than
 /// UnitsWarningShare of it and more than UnitsWarningCells cells between two
 /// input time steps; empty otherwise.
@@ -317,6 +353,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   r.parameters.frame =
     rotationFromDegrees(s.rotationDegrees[0], s.rotationDegrees[1], s.rotationDegrees[2]);
   resolvePlane(f, r.parameters);
+  resolveGravity(f, r.parameters, r.warnings);
   r.parameters.elementSize = float(r.elementSize);
   if (!s.seeded && !(s.minimumReleaseSpeed >= 0.0 && s.minimumReleaseSpeed <= 1.0))
   {

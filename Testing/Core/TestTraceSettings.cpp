@@ -374,6 +374,77 @@ TEST(TraceSettings, AFlatFieldTurnsElementsInItsPlaneOnly)
   EXPECT_EQ(bp::resolveSettings(fixed, f).parameters.planeAxis, -1);
 }
 
+TEST(TraceSettings, AFlatFieldDropsGravityAcrossItsPlaneAndSaysSo)
+{
+  auto said = [](const bp::Resolution& r)
+  {
+    return std::count_if(r.warnings.begin(), r.warnings.end(),
+      [](const std::string& w)
+      { return w.find("Gravity crosses its plane") != std::string::npos; });
+  };
+  bp::TraceSettings heavy;
+  heavy.engine.inertia = bp::Inertia::MaxeyRiley;
+  heavy.engine.responseTime = 0.05f;
+  heavy.engine.densityRatio = 1000.0f;
+  heavy.engine.gravity = { 1.5f, -2.0f, -9.81f };
+  for (int flat = 0; flat < 3; ++flat)
+  {
+    bp::FieldFacts f = box();
+    f.dims[flat] = 1;
+    f.bounds[2 * flat + 1] = f.bounds[2 * flat];
+    const bp::Resolution r = bp::resolveSettings(heavy, f);
+    ASSERT_EQ(r.error, "");
+    for (int a = 0; a < 3; ++a)
+      EXPECT_EQ(r.parameters.gravity[a], a == flat ? 0.0f : heavy.engine.gravity[a]);
+    ASSERT_EQ(said(r), 1);
+    const std::string w = *std::find_if(r.warnings.begin(), r.warnings.end(),
+      [](const std::string& m) { return m.find("Gravity") != std::string::npos; });
+    EXPECT_NE(w.find(std::string("along ") + "XYZ"[flat]), std::string::npos) << w;
+    EXPECT_EQ(w.find("do not fall"), std::string::npos) << w;
+  }
+  // Gravity wholly across the plane leaves none: a massless-like trace, said, not an error.
+  bp::FieldFacts plane = box();
+  plane.dims[2] = 1;
+  plane.bounds[5] = plane.bounds[4];
+  bp::TraceSettings down = heavy;
+  down.engine.gravity = { 0.0f, 0.0f, -9.81f };
+  const bp::Resolution r = bp::resolveSettings(down, plane);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.parameters.gravity, (std::array<float, 3>{ 0.0f, 0.0f, 0.0f }));
+  ASSERT_EQ(said(r), 1);
+  EXPECT_NE(std::find_if(r.warnings.begin(), r.warnings.end(),
+              [](const std::string& m)
+              {
+                return m.find("-9.81 along Z") != std::string::npos &&
+                  m.find("do not fall") != std::string::npos;
+              }),
+    r.warnings.end());
+  // Two flat axes (a line of points) drop both.
+  bp::FieldFacts line = plane;
+  line.dims[1] = 1;
+  line.bounds[3] = line.bounds[2];
+  EXPECT_EQ(bp::resolveSettings(heavy, line).parameters.gravity,
+    (std::array<float, 3>{ 1.5f, 0.0f, 0.0f }));
+  // A 3D field keeps it all; in the plane only, nothing is said.
+  EXPECT_EQ(bp::resolveSettings(heavy, box()).parameters.gravity, heavy.engine.gravity);
+  EXPECT_EQ(said(bp::resolveSettings(heavy, box())), 0);
+  bp::TraceSettings inPlane = heavy;
+  inPlane.engine.gravity = { 0.0f, -9.81f, 0.0f };
+  EXPECT_EQ(said(bp::resolveSettings(inPlane, plane)), 0);
+  // Where gravity does not act (massless: no inertia, or tau 0) it is
+  // dropped as well but not said; a NaN is left for Engine::validate to name.
+  bp::TraceSettings massless = down;
+  massless.engine.inertia = bp::Inertia::None;
+  EXPECT_EQ(bp::resolveSettings(massless, plane).parameters.gravity[2], 0.0f);
+  EXPECT_EQ(said(bp::resolveSettings(massless, plane)), 0);
+  massless = down;
+  massless.engine.responseTime = 0.0f;
+  EXPECT_EQ(said(bp::resolveSettings(massless, plane)), 0);
+  bp::TraceSettings nan = down;
+  nan.engine.gravity[2] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(bp::resolveSettings(nan, plane).parameters.gravity[2]));
+}
+
 TEST(TimeLine, ATypicalSpeedCrossingMuchOfTheFieldBetweenTimeStepsIsSaid)
 {
   // gfs_wind10m's m/s on a 359-degree grid, time steps 6 hours apart: 11.3

@@ -34,6 +34,9 @@ else:
     LoadPlugin(args.plugin, ns=globals())
 
 
+PLANE_Z = 0.25  # the flat field's plane (test_parallel.py checks the points stay in it)
+
+
 def updated(source):
     """The source, run: a tracer made on it takes the field's bounds as its
     emitter box (ParaView 6 gives a box of size 0 at the origin before)."""
@@ -101,6 +104,15 @@ def placement_traces():
                                 DensityRatio=500, Gravity=[0, 0, -2])
     heavy.OutputArrays = list(heavy.OutputArrays) + ["SlipVelocity"]
     cases["inertial"] = (heavy, [0.5, 1.0])
+    # Heavy particles on a flat field (2D data): Gravity's component across
+    # the plane is dropped alike on every process, so all stay in it.
+    flat = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[48, 24, 1],
+                                Bounds=[0, 2, 0, 1, PLANE_Z, PLANE_Z]))
+    flat_heavy = BoundParticleTracer(Input=flat, ElementShape="Square", NumberOfElements=400,
+                                     Seed=9, Inertia="Maxey-Riley", ResponseTime=0.05,
+                                     DensityRatio=500, Gravity=[0, -0.5, -9.81])
+    flat_heavy.OutputArrays = list(flat_heavy.OutputArrays) + ["SlipVelocity"]
+    cases["inertial_plane"] = (flat_heavy, [0.5, 1.0])
     # A release window: hidden elements cross pieces and are released together.
     cases["window"] = (BoundParticleTracer(Input=hurricane, ElementShape="Square",
                                            NumberOfElements=600, Seed=5, ReleaseWindow=1,

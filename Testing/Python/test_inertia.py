@@ -15,6 +15,8 @@
   guide's heavy particles on it, say nothing.
 - The Bound Particles display with the GPU engine draws what the CPU engine's
   Surface display shows.
+- On a flat field (2D data) heavy particles stay in the plane: Gravity's
+  component across it is dropped with a warning, on both engines.
 - A state file brings the settings back; the Python trace records them.
 """
 import math
@@ -255,6 +257,78 @@ for color, scalar_range in ((None, None), ("SlipVelocity", (0.0, 0.2)),
     bptest.check(mean <= 0.5 and pixels <= 0.002,
                  "the GPU display draws the CPU engine's heavy particles, %s: mean %.3f, pixels "
                  "%.4f" % (color or "solid", mean, pixels))
+
+# A flat field (one point thick along Z, as 2D data) keeps heavy particles in
+# its plane: Gravity's component across it is dropped, with a warning, for
+# both engines; its component in the plane acts as given.
+PLANE_Z = 0.25
+flat = AnalyticFlow(Flow="Solid Body Rotation", Resolution=[17, 17, 1],
+                    Bounds=[-1, 1, -1, 1, PLANE_Z, PLANE_Z])
+flat.UpdatePipeline()
+
+
+def flat_tracer(gravity, **settings):
+    base = dict(EmitterCenter=[0, 0, PLANE_Z], EmitterSize=[1.2, 1.2, 0], Inertia="Maxey-Riley",
+                ResponseTime=0.05, DensityRatio=50, Gravity=gravity)
+    base.update(settings)
+    return tracer(flat, VELOCITY, **base)
+
+
+def flat_trace(gravity):
+    t = flat_tracer(gravity)
+    with bptest.CapturedMessages() as said:
+        data = bptest.fetch(t, 1.0)
+    p, slip = points(data), bptest.point_array(data, "SlipVelocity")
+    order = np.argsort(bptest.point_array(data, "ElementId"))
+    Delete(t)
+    return p[order], slip[order], said
+
+
+sideways, _, _ = flat_trace([0, -2, 0])
+for gravity in ([0, -2, -9.81], [0, 0, -9.81]):
+    p, slip, said = flat_trace(gravity)
+    print("flat field, Gravity %s: z in [%g, %g], slip across %g; %s" %
+          (gravity, p[:, 2].min(), p[:, 2].max(), np.abs(slip[:, 2]).max(), said.messages))
+    bptest.check(len(p) == 40 and np.all(p[:, 2] == PLANE_Z) and not np.any(slip[:, 2]),
+                 "Gravity %s on a flat field: every point stays in the plane z = %g (z in [%g, "
+                 "%g])" % (gravity, PLANE_Z, p[:, 2].min(), p[:, 2].max()))
+    bptest.check(len(said.messages) == 1 and said.mentions("Gravity crosses its plane") and
+                 said.mentions("-9.81 along Z"),
+                 "Gravity %s on a flat field: its dropped component is said once: %s" %
+                 (gravity, said.messages))
+    if gravity[1]:
+        bptest.check(p.shape == sideways.shape and np.array_equal(p, sideways),
+                     "only the crossing component is dropped: the trace is Gravity 0 -2 0's")
+    else:
+        bptest.check(said.mentions("do not fall") and np.any(slip[:, :2]),
+                     "Gravity wholly across the plane leaves heavy particles lagging the flow "
+                     "in it, with a warning and no error: %s" % said.messages)
+
+
+def flat_picture(engine, representation, name):
+    t = flat_tracer([0, 0, -9.81], ElementShape="Strip8", NumberOfElements=60,
+                    ElementSize=0.15, Engine=engine, OutputArrays=["Normals"])
+    view = bptest.element_view((240, 180))
+    shown = Show(t, view)
+    shown.SetRepresentationType(representation)
+    bptest.colour_display(shown, None, None)
+    view.ViewTime = 1.0
+    with bptest.CapturedMessages() as said:
+        Render(view)
+    image = bptest.save_picture(view, output, name)
+    Delete(t)
+    return image, said
+
+
+cpu_image, _ = flat_picture("CPU", "Surface", "inertia_flat_cpu")
+gpu_image, said = flat_picture("GPU", "Bound Particles", "inertia_flat_gpu")
+mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+print("flat field, GPU display against CPU Surface: mean %.3f, pixels %.4f; %s" %
+      (mean, pixels, said.messages))
+bptest.check(said.mentions("Gravity crosses its plane") and mean <= 0.5 and pixels <= 0.002 and
+             bptest.covered_fraction(gpu_image) > 0.01,
+             "on a flat field the GPU display keeps heavy particles in the plane as the CPU "
+             "engine does: mean %.3f, pixels %.4f; %s" % (mean, pixels, said.messages))
 
 # The Python trace records the settings of a tracer made while tracing.
 smtrace.start_trace()

@@ -181,6 +181,11 @@ def compare(reference, result, name, ranks):
         if not same_ids:
             continue
         points = reference[key]
+        if base.startswith("inertial_plane"):
+            # The flat field's plane (parallel_trace.PLANE_Z), whatever the process count.
+            z = result[key][:, 2]
+            bptest.check(len(z) > 0 and (z == 0.25).all(), "%s %s: points leave the plane z = "
+                         "0.25 (z in [%g, %g])" % (name, base, z.min(initial=0), z.max(initial=0)))
         diagonal = numpy.linalg.norm(points.max(axis=0) - points.min(axis=0))
         # Pieces locate cells from their own first point, so positions may
         # differ by float rounding; the velocity sampled there by that times
