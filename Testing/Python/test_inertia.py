@@ -224,21 +224,27 @@ bptest.check(len(inertial_map) == len(tracer_map) > 0 and np.isfinite(inertial_m
 
 # The GPU display steps heavy particles itself and draws what the CPU
 # engine's Surface shows.
-def picture(engine, representation, name, color=None, scalar_range=None):
-    t = tracer(vortex, VELOCITY, ElementShape="Strip8", NumberOfElements=60, ElementSize=0.15,
-               EmitterSize=[1.2, 1.2, 1.2], Inertia="Maxey-Riley", ResponseTime=0.05,
-               DensityRatio=50, Gravity=[0, 0, -3], Engine=engine,
-               OutputArrays=["Normals", "SlipVelocity", "ParticleVelocity"])
+def rendered(t, representation, name, view_time, color=None, scalar_range=None):
+    """Tracer t drawn by `representation` at view_time, saved as `name`, then
+    deleted: the picture's file and the messages the render gave."""
     view = bptest.element_view((240, 180))
     shown = Show(t, view)
     shown.SetRepresentationType(representation)
     bptest.colour_display(shown, color, scalar_range)
-    view.ViewTime = 0.5
+    view.ViewTime = view_time
     with bptest.CapturedMessages() as said:
         Render(view)
     image = bptest.save_picture(view, output, name)
     Delete(t)
     return image, said
+
+
+def picture(engine, representation, name, color=None, scalar_range=None):
+    t = tracer(vortex, VELOCITY, ElementShape="Strip8", NumberOfElements=60, ElementSize=0.15,
+               EmitterSize=[1.2, 1.2, 1.2], Inertia="Maxey-Riley", ResponseTime=0.05,
+               DensityRatio=50, Gravity=[0, 0, -3], Engine=engine,
+               OutputArrays=["Normals", "SlipVelocity", "ParticleVelocity"])
+    return rendered(t, representation, name, 0.5, color, scalar_range)
 
 
 output = tempfile.mkdtemp()
@@ -308,16 +314,7 @@ for gravity in ([0, -2, -9.81], [0, 0, -9.81]):
 def flat_picture(engine, representation, name):
     t = flat_tracer([0, 0, -9.81], ElementShape="Strip8", NumberOfElements=60,
                     ElementSize=0.15, Engine=engine, OutputArrays=["Normals"])
-    view = bptest.element_view((240, 180))
-    shown = Show(t, view)
-    shown.SetRepresentationType(representation)
-    bptest.colour_display(shown, None, None)
-    view.ViewTime = 1.0
-    with bptest.CapturedMessages() as said:
-        Render(view)
-    image = bptest.save_picture(view, output, name)
-    Delete(t)
-    return image, said
+    return rendered(t, representation, name, 1.0)
 
 
 cpu_image, _ = flat_picture("CPU", "Surface", "inertia_flat_cpu")
