@@ -48,6 +48,10 @@ unmount_all() {
 trap unmount_all EXIT
 
 bind() { # bind SOURCE TARGET [ro]: a recursive bind (/dev brings /dev/pts and /dev/shm)
+  # A run killed before its trap (SIGKILL) leaves its binds; one whose source
+  # was deleted since cannot be bound over. This run holds the suite's lock,
+  # so whatever is mounted there is such a leftover.
+  umount -l "$2" 2>/dev/null || true
   mkdir -p "$2"
   mount --rbind "$1" "$2"
   mount --make-rslave "$2"
