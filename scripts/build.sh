@@ -5,7 +5,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BOUNDPARTICLES_BUILD_DIR:-$root/build}"
 
+t0=$SECONDS
 bash "$root/scripts/setup.sh"
+echo "build: packages ready in $((SECONDS - t0)) s" >&2
 mkdir -p "$build"
 # ccache (setup.sh installs it): a clone elsewhere, or the same sources built
 # again, compiles only what changed (paths taken relative to the clone).
@@ -20,4 +22,5 @@ cmake --build "$build" --parallel "$(nproc)" -- --no-print-directory >"$build/bu
   tail -n 60 "$build/build.log" >&2
   exit 1
 }
+echo "build: configured and built in $((SECONDS - t0)) s in all" >&2
 echo "$build"

@@ -6,4 +6,6 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(bash "$root/scripts/build.sh" | tail -n 1)"
 cd "$build"
+t0=$SECONDS
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600
+echo "test: the suite ran in $((SECONDS - t0)) s"
