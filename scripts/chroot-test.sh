@@ -8,6 +8,8 @@
 #                                                  # inside (in the repository)
 #   bash scripts/chroot-test.sh forky --package    # the Debian package: build it,
 #                                  # install, check and purge it (scripts/package-test.sh)
+#   bash scripts/chroot-test.sh forky --prepare    # only make the chroot and install
+#                                  # its packages (.ci/run does this beside the host's suite)
 #
 # The chroot is kept between runs in $BOUNDPARTICLES_CHROOT_DIR (default
 # /var/cache/boundparticles/chroots/SUITE); a kept one is updated only when
@@ -112,6 +114,11 @@ inside() {
 }
 # An install interrupted in an earlier run leaves packages half-configured.
 inside dpkg --configure -a >/dev/null 2>&1 || true
+if [ "${1:-}" = --prepare ]; then
+  inside bash /work/main/scripts/setup.sh lintian || fail "installing the suite's packages"
+  say "ready in $((SECONDS - start)) s"
+  exit
+fi
 if [ "${1:-}" = --package ]; then
   say "the Debian package (chroot ready after $((SECONDS - start)) s)"
   inside bash /work/main/scripts/package-test.sh || fail "the Debian package (see above)"
