@@ -206,6 +206,7 @@ void vtkBoundParticleTracerInternals::relocate(
   const bp::GridGeometry& grid, const bp::FieldSlice& slice)
 {
   const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
+  this->releaseIntoGrid(grid);
   if (this->WarnedGridChange)
   {
     return;
@@ -225,7 +226,32 @@ void vtkBoundParticleTracerInternals::relocate(
     text << " (" << beyond << " of " << grid.pointCount()
          << " new points lie beyond the old grid; there the present step's velocity holds)";
   }
-  text << "; elements outside the new grid are released again. Later changes of grid are "
-          "followed alike, unannounced.";
+  text << "; elements outside the new grid are released again, into the new grid (the emitter "
+          "box cut to it). Later changes of grid are followed alike, unannounced.";
   vtkWarningWithObjectMacro(this->Owner, << text.str());
+}
+
+void vtkBoundParticleTracerInternals::releaseIntoGrid(const bp::GridGeometry& grid)
+{
+  // Only a trace under way has an emitter box to move (a replay resolves
+  // its own from the present grid); seed points are taken where they fit
+  // in the new grid, and a lattice's points outside it stay hidden.
+  if (!this->stepper().cursor.valid || this->Settings.seeded)
+  {
+    return;
+  }
+  bp::FieldFacts facts;
+  facts.bounds = grid.bounds(); // in the engine's frame, which stays the trace's
+  facts.offset = this->Offset;
+  facts.dims = grid.dims;
+  const bp::EmitterBox box =
+    bp::emitterInChangedField(this->Settings, facts, this->ResolvedElementSize);
+  this->Parameters.emitterMin = box.min;
+  this->Parameters.emitterMax = box.max;
+  this->stepper().setEmitter(box.min, box.max);
+  if (!box.warning.empty() && box.warning != this->WarnedEmitter)
+  {
+    vtkWarningWithObjectMacro(this->Owner, << box.warning);
+  }
+  this->WarnedEmitter = box.warning;
 }

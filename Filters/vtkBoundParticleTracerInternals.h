@@ -179,6 +179,10 @@ public:
   /// the held steps': they are resampled onto it, and the elements keep
   /// their places. Warns of the first change.
   void relocate(const bp::GridGeometry& grid, const bp::FieldSlice& slice);
+  /// In situ, after relocate(): releases from now on land in the new `grid`
+  /// (bp::emitterInChangedField), on the stepper and in the kept Parameters;
+  /// warns once where the emitter box misses it.
+  void releaseIntoGrid(const bp::GridGeometry& grid);
 
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
@@ -261,6 +265,8 @@ private:
 
   // What the last replay resolved.
   bp::Parameters Parameters;
+  bp::TraceSettings Settings; ///< what it resolved them from (releaseIntoGrid)
+  std::string WarnedEmitter;  ///< releaseIntoGrid's last warning
   double ResolvedDt = 0.0;
   double ResolvedElementSize = 0.0;
   std::size_t ParticlesPerElement = 1;
