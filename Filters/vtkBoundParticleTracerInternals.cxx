@@ -97,6 +97,7 @@ void vtkBoundParticleTracerInternals::invalidate()
   this->WarnedSeeds = false;
   this->WarnedOutOfPlane = false;
   this->WarnedGridChange = false;
+  this->WarnedCellVectors = false;
   this->WarnedEmitter.clear();
   this->Steppers.invalidate();
 }

@@ -97,6 +97,8 @@ struct TracerInputStep
   vtkDataObject* data = nullptr;
   vtkDataArray* vectors = nullptr;
   int association = 0; ///< of `vectors`: vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS
+  /// ParaView made the point Vectors of a cell array (bpvtk::cellVectorsMadePoints): what to say.
+  std::string vectorsFromCells;
 };
 } // namespace bpvtk
 
@@ -246,6 +248,7 @@ private:
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool WarnedGridChange = false; ///< in situ, a change of grid was reported
+  bool WarnedCellVectors = false; ///< point Vectors made of a cell array were reported
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
   /// says each once, not again at the next request for information).

@@ -159,6 +159,39 @@ bptest.check(len(skipped) > 0 and gap == 0.0,
              "after a skipped step the trace goes on as if it never came (%g apart)" % gap)
 
 
+# A step whose Vectors are only a cell array (issue 53, item 7): ParaView
+# interpolates it to the points for the tracer, as it does post hoc; the
+# tracer says so (the point array asked for is missing, only a cell array
+# is there) and traces it, in situ as post hoc.
+def cells_only(t, name="velocity"):
+    data = step_of(t)
+    data.GetPointData().RemoveArray("velocity")
+    zeros = numpy_to_vtk(numpy.zeros((data.GetNumberOfCells(), 3), dtype=numpy.float32), deep=1)
+    zeros.SetName(name)
+    data.GetCellData().AddArray(zeros)
+    return data
+
+
+CELLS_SAID = "only a cell array 'velocity'"
+from_cells, said = trace_in_situ(lambda k, t: cells_only(t) if k == BAD else step_of(t), SETTINGS)
+print("a step with cell Vectors only: %s" % said.messages)
+bptest.check(said.mentions(CELLS_SAID) and said.mentions("no point array 'velocity'") and len(said.messages) == 1,
+             "a step with cell Vectors only: one warning that the point array is missing and the cell "
+             "array is traced (%s)" % said.messages)
+bptest.check(len(from_cells) > 0 and farthest(from_cells, never) > 0.0,
+             "a step with cell Vectors only is traced, not skipped (%g from a trace never given it)"
+             % farthest(from_cells, never))
+_, said = trace_in_situ(lambda k, t: cells_only(t, "pressure_gradient") if k == BAD else step_of(t), SETTINGS)
+bptest.check(said.mentions("no array 'velocity'") and said.mentions("is skipped") and not said.mentions(CELLS_SAID),
+             "a step whose cell array has another name: skipped as without the vectors (%s)" % said.messages)
+# Post hoc the same: a grid with cell Vectors only.
+cell_flow = PointDatatoCellData(Input=flow)
+cell_flow.PassPointData = 0
+with bptest.CapturedMessages() as said:
+    got = elements(BoundParticleTracer(Input=cell_flow, **SETTINGS), times[2])
+bptest.check(len(got) > 0 and said.mentions(CELLS_SAID),
+             "post hoc, cell Vectors only: traced with the same warning (%s)" % said.messages)
+
 
 # A step whose grid changes: solid-body rotation about the z axis, linear in
 # x and y, so every grid samples it exactly and a trace that changes grids
