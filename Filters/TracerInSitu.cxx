@@ -6,6 +6,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkBoundParticleTracerInternals.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
@@ -15,6 +16,7 @@
 #include "vtkTrivialProducer.h"
 #include "vtkVersionMacros.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace
@@ -87,6 +89,14 @@ std::vector<double> announcedGrid(vtkInformation* inInfo)
   }
   const int* extent = inInfo->Get(SDDP::WHOLE_EXTENT());
   grid.assign(extent, extent + 6);
+  // Under MPI a process may hold a piece with no points: its origin and
+  // spacing are VTK's defaults, not the grid's (offerStreamTime takes
+  // another process's).
+  vtkDataSet* data = vtkDataSet::SafeDownCast(inInfo->Get(vtkDataObject::DATA_OBJECT()));
+  if (data && data->GetNumberOfPoints() == 0)
+  {
+    return grid;
+  }
   for (vtkInformationDoubleVectorKey* key : { vtkDataObject::ORIGIN(), vtkDataObject::SPACING() })
   {
     if (inInfo->Has(key) && inInfo->Length(key) == 3)
@@ -97,6 +107,17 @@ std::vector<double> announcedGrid(vtkInformation* inInfo)
   return grid;
 }
 
+bool gridChanged(const std::vector<double>& before, const std::vector<double>& now)
+{
+  // The whole extent always; the origin and spacing where both announce them.
+  if (before.size() < 6 || now.size() < 6)
+  {
+    return before != now;
+  }
+  const std::size_t compared = before.size() == now.size() ? now.size() : 6;
+  return !std::equal(now.begin(), now.begin() + std::ptrdiff_t(compared), before.begin());
+}
+
 } // namespace bpvtk
 
 std::string vtkBoundParticleTracerInternals::offerStreamTime(
@@ -105,10 +126,28 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
   using Arrival = bp::StreamTimeLine::Arrival;
   // Under MPI each process holds its block of the last step only, and the
   // blocks follow the whole grid: a trace cannot follow the grid's change
-  // (one process alone re-locates, matchHeldGrid). Every process sees the
-  // same announcement, so all start again alike.
-  const bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
-    !this->StreamGrid.empty() && grid != this->StreamGrid;
+  // (one process alone re-locates, matchHeldGrid), so every process starts
+  // again, alike. They decide alike from one grid: the whole extent (every
+  // process's input announces the same) with the origin and spacing of the
+  // first process whose piece has points (an empty piece announces VTK's
+  // defaults). A change of how the processes split the same grid is no
+  // change: each gathers its block from the new pieces (gatherPiece) and
+  // the elements stay with the blocks that own them.
+  std::vector<double> agreed = grid;
+  if (this->Plan.streaming() && this->Layout.distributed())
+  {
+    std::vector<double> full = grid.size() > 6 ? grid : std::vector<double>();
+    this->Layout.shareFirst(full); // collective
+    agreed = full.empty() ? grid : full;
+  }
+  bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
+    !this->StreamGrid.empty() && bpvtk::gridChanged(this->StreamGrid, agreed);
+  if (this->Plan.streaming() && this->Layout.distributed())
+  {
+    // A grid kept before the processes agreed (the first step's) may lack
+    // the origin and spacing on one of them: one decision for all.
+    regridded = this->Layout.globalMax(regridded ? 1.0 : 0.0) > 0.0; // collective
+  }
   if (regridded)
   {
     std::ostringstream text;
@@ -117,7 +156,7 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
             "its block of the last step only), so it starts again at the present step.";
     warning = text.str();
   }
-  this->StreamGrid = grid;
+  this->StreamGrid = agreed;
   // Upstream changes with every step that arrives; only a change of the
   // filter's settings (or a first step, or a post hoc line before, or a
   // change of grid under MPI) starts the trace again, at the present step.
@@ -167,6 +206,7 @@ void vtkBoundParticleTracerInternals::relocate(
   const bp::GridGeometry& grid, const bp::FieldSlice& slice)
 {
   const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
+  this->releaseIntoGrid(grid);
   if (this->WarnedGridChange)
   {
     return;
@@ -186,7 +226,32 @@ void vtkBoundParticleTracerInternals::relocate(
     text << " (" << beyond << " of " << grid.pointCount()
          << " new points lie beyond the old grid; there the present step's velocity holds)";
   }
-  text << "; elements outside the new grid are released again. Later changes of grid are "
-          "followed alike, unannounced.";
+  text << "; elements outside the new grid are released again, into the new grid (the emitter "
+          "box cut to it). Later changes of grid are followed alike, unannounced.";
   vtkWarningWithObjectMacro(this->Owner, << text.str());
+}
+
+void vtkBoundParticleTracerInternals::releaseIntoGrid(const bp::GridGeometry& grid)
+{
+  // Only a trace under way has an emitter box to move (a replay resolves
+  // its own from the present grid); seed points are taken where they fit
+  // in the new grid, and a lattice's points outside it stay hidden.
+  if (!this->stepper().cursor.valid || this->Settings.seeded)
+  {
+    return;
+  }
+  bp::FieldFacts facts;
+  facts.bounds = grid.bounds(); // in the engine's frame, which stays the trace's
+  facts.offset = this->Offset;
+  facts.dims = grid.dims;
+  const bp::EmitterBox box =
+    bp::emitterInChangedField(this->Settings, facts, this->ResolvedElementSize);
+  this->Parameters.emitterMin = box.min;
+  this->Parameters.emitterMax = box.max;
+  this->stepper().setEmitter(box.min, box.max);
+  if (!box.warning.empty() && box.warning != this->WarnedEmitter)
+  {
+    vtkWarningWithObjectMacro(this->Owner, << box.warning);
+  }
+  this->WarnedEmitter = box.warning;
 }

@@ -28,8 +28,15 @@ bool offersOnlyPresent(vtkInformation* inInfo);
 double presentTime(vtkInformation* inInfo);
 
 /// The image grid the input announces (whole extent, origin, spacing), as
-/// numbers to compare step with step; empty where it announces none.
+/// numbers to compare step with step; empty where it announces none. The
+/// origin and spacing are left out where the input's piece has no points
+/// (under MPI a process may hold none: they are VTK's defaults there).
 std::vector<double> announcedGrid(vtkInformation* inInfo);
+
+/// Whether the grid announced `now` differs from the one `before`
+/// (announcedGrid): the whole extent, and the origin and spacing where both
+/// hold them.
+bool gridChanged(const std::vector<double>& before, const std::vector<double>& now);
 
 } // namespace bpvtk
 

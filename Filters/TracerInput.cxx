@@ -5,6 +5,7 @@
 #include "VelocityNames.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkAlgorithm.h"
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -12,7 +13,10 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArrayRange.h"
+#include "vtkExecutive.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationExecutivePortKey.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -236,8 +240,13 @@ std::string missingArray(vtkDataSet* data, const std::string& requested)
     }
   }
   err << (names.empty() ? "; it has no 3-component point array."
-                        : "; its 3-component point arrays are " + names + ".")
-      << " Choose one in Vectors (pvpython: Vectors = ['POINTS', 'name']; a tracer made while "
+                        : "; its 3-component point arrays are " + names + ".");
+  if (data->GetCellData()->GetAbstractArray(requested.c_str()))
+  {
+    err << " It has a cell array '" << requested
+        << "': the tracer reads point vectors (apply Cell Data to Point Data first).";
+  }
+  err << " Choose one in Vectors (pvpython: Vectors = ['POINTS', 'name']; a tracer made while "
          "another source is active takes that source's arrays as its default).";
   return err.str();
 }
@@ -650,6 +659,35 @@ std::string describeVectorsChoice(vtkDataObject* input, const std::string& name,
   }
   note << ". Set Vectors to trace another.\n";
   return note.str();
+}
+
+std::string cellVectorsMadePoints(vtkInformation* inInfo, const std::string& name)
+{
+  if (!inInfo || name.empty())
+  {
+    return std::string();
+  }
+  // ParaView puts its post filter between a source and the filters that
+  // read it: it makes an array a filter asks for out of the other
+  // association's array of that name, silently (vtkPVPostFilter).
+  vtkExecutive* executive = vtkExecutive::PRODUCER()->GetExecutive(inInfo);
+  vtkAlgorithm* producer = executive ? executive->GetAlgorithm() : nullptr;
+  if (!producer || !producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputPorts() < 1 ||
+    producer->GetNumberOfInputConnections(0) < 1)
+  {
+    return std::string();
+  }
+  vtkDataSet* given = firstDataSet(executive->GetInputData(0, 0));
+  if (!given || given->GetPointData()->GetAbstractArray(name.c_str()) ||
+    !given->GetCellData()->GetAbstractArray(name.c_str()))
+  {
+    return std::string();
+  }
+  return "The input has no point array '" + name + "' (Vectors asks for one), only a cell array '" +
+    name +
+    "': ParaView interpolates it to the points for the tracer (as Cell Data to Point Data "
+    "would), and that is traced, here and at every step that holds only the cell array. "
+    "Choose a point array in Vectors to trace another.";
 }
 
 } // namespace bpvtk

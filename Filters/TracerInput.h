@@ -20,6 +20,7 @@
 
 class vtkDataArray;
 class vtkDataObject;
+class vtkInformation;
 class vtkPolyData;
 
 namespace bpvtk
@@ -49,6 +50,16 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
  * others. Empty where there was no choice to make.
  */
 std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association);
+
+/**
+ * Where the tracer's input (`inInfo`, its input port's information) comes
+ * through ParaView's post filter and the data given to that filter has no
+ * point array `name` but a cell array of that name: the post filter then
+ * made the point array the tracer reads by interpolating the cell array
+ * (vtkPVPostFilter, as Cell Data to Point Data), silently. What to tell the
+ * user; empty otherwise.
+ */
+std::string cellVectorsMadePoints(vtkInformation* inInfo, const std::string& name);
 
 /// Every value of `array` (all components, tuple by tuple) as floats, each
 /// times `scale` in double first where it is not 1.

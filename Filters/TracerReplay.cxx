@@ -50,6 +50,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
     seeds.xyz.clear();
   }
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
+  this->Settings = settings;
   for (const std::string& warning : resolved.warnings)
   {
     vtkWarningWithObjectMacro(this->Owner, << warning);

@@ -41,7 +41,18 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
     return std::string();
   }
   vtkDataObject* input = step.data;
-  this->noteVectors(config, input);
+  if (step.vectorsFromCells.empty())
+  {
+    this->noteVectors(config, input);
+  }
+  else if (!this->WarnedCellVectors)
+  {
+    // Instead of the choice's note, which would list the cell array as another.
+    // Once per configuration, as the mask's; in situ at the first step that
+    // holds only the cell array.
+    this->WarnedCellVectors = true;
+    vtkWarningWithObjectMacro(this->Owner, << step.vectorsFromCells);
+  }
   vtkDataArray* vectors = step.vectors;
   int association = step.association;
   std::string requested = config.vectors.name;

@@ -9,6 +9,7 @@
 #include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
+#include "TracerInput.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
@@ -199,6 +200,13 @@ bpvtk::TracerInputStep vtkBoundParticleTracer::InputStep(vtkInformationVector** 
   if (vtkDataSet::SafeDownCast(step.data) && !bpvtk::FieldResampler::needed(step.data))
   {
     step.vectors = this->GetInputArrayToProcess(0, inputVector, step.association);
+    vtkInformation* chosen = this->GetInputArrayInformation(0);
+    if (step.vectors && chosen && chosen->Has(vtkDataObject::FIELD_NAME()) &&
+      step.association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
+    {
+      step.vectorsFromCells = bpvtk::cellVectorsMadePoints(
+        inputVector[0]->GetInformationObject(0), chosen->Get(vtkDataObject::FIELD_NAME()));
+    }
   }
   return step;
 }

@@ -97,6 +97,8 @@ void vtkBoundParticleTracerInternals::invalidate()
   this->WarnedSeeds = false;
   this->WarnedOutOfPlane = false;
   this->WarnedGridChange = false;
+  this->WarnedCellVectors = false;
+  this->WarnedEmitter.clear();
   this->Steppers.invalidate();
 }
 

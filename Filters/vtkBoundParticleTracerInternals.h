@@ -97,6 +97,8 @@ struct TracerInputStep
   vtkDataObject* data = nullptr;
   vtkDataArray* vectors = nullptr;
   int association = 0; ///< of `vectors`: vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS
+  /// ParaView made the point Vectors of a cell array (bpvtk::cellVectorsMadePoints): what to say.
+  std::string vectorsFromCells;
 };
 } // namespace bpvtk
 
@@ -179,6 +181,10 @@ public:
   /// the held steps': they are resampled onto it, and the elements keep
   /// their places. Warns of the first change.
   void relocate(const bp::GridGeometry& grid, const bp::FieldSlice& slice);
+  /// In situ, after relocate(): releases from now on land in the new `grid`
+  /// (bp::emitterInChangedField), on the stepper and in the kept Parameters;
+  /// warns once where the emitter box misses it.
+  void releaseIntoGrid(const bp::GridGeometry& grid);
 
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
@@ -242,6 +248,7 @@ private:
   bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool WarnedGridChange = false; ///< in situ, a change of grid was reported
+  bool WarnedCellVectors = false; ///< point Vectors made of a cell array were reported
   bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
   /// says each once, not again at the next request for information).
@@ -261,6 +268,8 @@ private:
 
   // What the last replay resolved.
   bp::Parameters Parameters;
+  bp::TraceSettings Settings; ///< what it resolved them from (releaseIntoGrid)
+  std::string WarnedEmitter;  ///< releaseIntoGrid's last warning
   double ResolvedDt = 0.0;
   double ResolvedElementSize = 0.0;
   std::size_t ParticlesPerElement = 1;

@@ -112,6 +112,13 @@ std::string GpuEngine::setField(const VectorField& field)
   return this->I->system.fieldCache.setField(field);
 }
 
+void GpuEngine::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
+{
+  // Every pass sets its uniforms from the parameters (GpuPasses::begin).
+  this->I->system.parameters.emitterMin = min;
+  this->I->system.parameters.emitterMax = max;
+}
+
 int GpuEngine::stageSlice(const FieldSlice& slice, std::size_t maxBytes)
 {
   return this->I->system.fieldCache.stageSlice(slice, maxBytes);

@@ -47,6 +47,7 @@
 #include "PassTime.h"
 #include "VectorField.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -85,6 +86,10 @@ public:
 
   /// How many field time steps are resident (at most three).
   int residentTimeSteps() const;
+
+  /// The emitter box releases draw from from now on (Engine::setEmitter); the
+  /// state copies (saveState) hold no parameters, so restoreState keeps it.
+  void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max);
 
   /// Places every element (generation 0).
   void initialize(double startTime = 0.0);

@@ -38,4 +38,9 @@ void GpuStepper::restore()
   this->Gpu.restoreState();
 }
 
+void GpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
+{
+  this->Gpu.setEmitter(min, max);
+}
+
 } // namespace bp

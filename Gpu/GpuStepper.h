@@ -32,6 +32,8 @@ public:
   void save() override;
   /// GpuEngine::restoreState().
   void restore() override;
+  /// GpuEngine::setEmitter().
+  void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
   /// Null: the state lives in GPU textures (engine().read() fetches it).
   const Engine* particles() override { return nullptr; }
 

@@ -120,6 +120,14 @@ public:
     std::shared_ptr<const std::vector<std::uint8_t>> unfit,
     std::shared_ptr<const ReleaseWeights> weights = nullptr);
 
+  /// The emitter box releases draw from from now on (in situ, after a change
+  /// of grid: bp::emitterInChangedField), in engine coordinates.
+  void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
+  {
+    this->Params.emitterMin = min;
+    this->Params.emitterMax = max;
+  }
+
   /// One step of size h from time t (h > 0).
   void step(const VectorField& field, double t, double h, const RangeRunner& run);
 

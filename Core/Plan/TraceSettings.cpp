@@ -307,6 +307,46 @@ Resolution failure(const std::string& message)
 }
 } // namespace
 
+EmitterBox emitterInChangedField(
+  const TraceSettings& settings, const FieldFacts& field, double elementSize)
+{
+  Resolution r;
+  r.elementSize = elementSize;
+  resolveEmitter(settings, field, r);
+  EmitterBox box;
+  box.min = r.parameters.emitterMin;
+  box.max = r.parameters.emitterMax;
+  std::string missed;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (field.dims[a] <= 1)
+    {
+      continue;
+    }
+    const float lo = float(field.bounds[2 * a]), hi = float(field.bounds[2 * a + 1]);
+    if (box.max[a] < lo || box.min[a] > hi)
+    {
+      missed += std::string(missed.empty() ? "" : " and ") + "XYZ"[a];
+      box.min[a] = lo;
+      box.max[a] = hi;
+      continue;
+    }
+    box.min[a] = std::max(box.min[a], lo);
+    box.max[a] = std::min(box.max[a], hi);
+  }
+  if (!missed.empty())
+  {
+    std::ostringstream w;
+    w << "The emitter box (EmitterCenter " << settings.emitterCenter[0] << " "
+      << settings.emitterCenter[1] << " " << settings.emitterCenter[2] << ", EmitterSize "
+      << settings.emitterSize[0] << " " << settings.emitterSize[1] << " " << settings.emitterSize[2]
+      << ") lies outside the new grid along " << missed << ": releases span the new grid along "
+      << (missed.size() > 1 ? "them" : "it") << " until the box meets the grid again.";
+    box.warning = w.str();
+  }
+  return box;
+}
+
 Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
 {
   Resolution r;

@@ -90,6 +90,29 @@ struct Resolution
 /// Resolves `settings` against `field`: the engine's parameters, or an error.
 Resolution resolveSettings(const TraceSettings& settings, const FieldFacts& field);
 
+/// Where releases land in a field whose grid changed during a trace (in
+/// situ), in the engine's grid-local coordinates.
+struct EmitterBox
+{
+  std::array<float, 3> min = { 0, 0, 0 };
+  std::array<float, 3> max = { 0, 0, 0 };
+  std::string warning; ///< the box misses the new field along an axis
+};
+
+/**
+ * In situ, after the grid changed to `field` (its bounds in the engine's
+ * frame, which stays the trace's: `field.offset` is the one the trace
+ * started with): the emitter box of `settings` resolved against the new
+ * field as at the start (an axis of negative size spans it, Any Particle
+ * Leaves keeps an element radius of `elementSize` inside), then cut to the
+ * new field's bounds, so no release lands outside the new grid (it would be
+ * released again at every step). Where the box misses the new field along
+ * an axis, releases span the field along it and `warning` says so. A flat
+ * axis (one point) is left as resolved.
+ */
+EmitterBox emitterInChangedField(
+  const TraceSettings& settings, const FieldFacts& field, double elementSize);
+
 /// The field's scale as the time line needs it, probed before the first
 /// update (the filter's RequestInformation); valid only with a top speed > 0.
 struct TimeScale

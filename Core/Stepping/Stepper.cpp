@@ -58,6 +58,13 @@ void CpuStepper::restore()
   std::swap(this->Current, this->Saved);
 }
 
+void CpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
+{
+  // The copy too: a short step shown and taken back must not bring the old box back.
+  this->Current.setEmitter(min, max);
+  this->Saved.setEmitter(min, max);
+}
+
 const Engine* CpuStepper::particles()
 {
   return &this->Current;

@@ -25,6 +25,7 @@
 #include "Partition.h"
 #include "VectorField.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -62,6 +63,10 @@ public:
   virtual void save() = 0;
   /// Goes back to the copy save() kept.
   virtual void restore() = 0;
+  /// From now on releases draw from the box [min, max] (engine coordinates)
+  /// instead of the configured emitter box: in situ, after the grid changed
+  /// (bp::emitterInChangedField). Kept by save() and restore() alike.
+  virtual void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) = 0;
 
   /// The particles as data in this process; null where they live elsewhere
   /// (in a renderer's GPU textures). Their normals are not kept: they do
@@ -92,6 +97,7 @@ public:
   void step(double t, double h) override;
   void save() override;
   void restore() override;
+  void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
   const Engine* particles() override;
 
   Engine& engine() { return this->Current; }

@@ -26,6 +26,9 @@ std::string EngineCall::applyTo(Stepper& target) const
     case Kind::Restore:
       target.restore();
       break;
+    case Kind::SetEmitter:
+      target.setEmitter(this->parameters.emitterMin, this->parameters.emitterMax);
+      break;
   }
   return std::string();
 }
@@ -84,6 +87,15 @@ void WorkQueue::restore()
 {
   EngineCall call;
   call.kind = EngineCall::Kind::Restore;
+  this->Pending.push_back(call);
+}
+
+void WorkQueue::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
+{
+  EngineCall call;
+  call.kind = EngineCall::Kind::SetEmitter;
+  call.parameters.emitterMin = min;
+  call.parameters.emitterMax = max;
   this->Pending.push_back(call);
 }
 

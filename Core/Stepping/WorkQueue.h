@@ -70,7 +70,8 @@ struct EngineCall
     Initialize, ///< place every element
     Step,       ///< t, h
     Save,       ///< keep a copy of the state
-    Restore     ///< go back to the copy
+    Restore,    ///< go back to the copy
+    SetEmitter  ///< parameters.emitterMin, emitterMax
   };
   Kind kind = Kind::Step;
   double t = 0.0, h = 0.0;
@@ -150,6 +151,7 @@ public:
   void step(double t, double h) override;
   void save() override;
   void restore() override;
+  void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
   bool readsAhead() const override { return this->Report.streamTimeSteps; }
   void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
   /// Drops every pending call (a replay makes them moot).

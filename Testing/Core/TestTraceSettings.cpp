@@ -143,6 +143,56 @@ TEST(TraceSettings, EmitterIsTheWholeFieldOrTheUsersBoxInLocalCoordinates)
   EXPECT_FLOAT_EQ(r.parameters.emitterMin[2], 0.75f);
 }
 
+TEST(TraceSettings, AfterAChangeOfGridReleasesLandInTheNewGrid)
+{
+  // In situ the grid shrank and moved to [0.5, 1.5] x [1, 3] x [0, 8] (the
+  // trace's frame stays): a box that spans the field spans the new one.
+  bp::FieldFacts moved = box();
+  moved.bounds = { 0.5, 1.5, 1, 3, 0, 8 };
+  bp::TraceSettings s;
+  bp::EmitterBox e = bp::emitterInChangedField(s, moved, 0.1);
+  EXPECT_FLOAT_EQ(e.min[0], 0.5f);
+  EXPECT_FLOAT_EQ(e.max[0], 1.5f);
+  EXPECT_FLOAT_EQ(e.min[1], 1.0f);
+  EXPECT_FLOAT_EQ(e.max[1], 3.0f);
+  EXPECT_EQ(e.warning, "");
+  // The user's box (world 10.2 to 11.8 along X, 21.5 to 22.5 along Y) is cut
+  // to the new grid; inside it, it stays as resolved at the start.
+  s.emitterCenter = { 11, 22, 34 };
+  s.emitterSize = { 1.6, 1, 2 };
+  e = bp::emitterInChangedField(s, moved, 0.1);
+  EXPECT_FLOAT_EQ(e.min[0], 0.5f);
+  EXPECT_FLOAT_EQ(e.max[0], 1.5f);
+  const bp::Resolution start = bp::resolveSettings(s, box());
+  EXPECT_EQ(e.min[1], start.parameters.emitterMin[1]);
+  EXPECT_EQ(e.max[1], start.parameters.emitterMax[1]);
+  EXPECT_EQ(e.min[2], start.parameters.emitterMin[2]);
+  EXPECT_EQ(e.warning, "");
+  // A box that misses the new grid along Y: releases span it there, said.
+  s.emitterCenter = { 11, 20.2, 34 };
+  s.emitterSize = { 1, 0.2, 2 };
+  e = bp::emitterInChangedField(s, moved, 0.1);
+  EXPECT_FLOAT_EQ(e.min[1], 1.0f);
+  EXPECT_FLOAT_EQ(e.max[1], 3.0f);
+  EXPECT_NE(e.warning.find("outside the new grid along Y"), std::string::npos) << e.warning;
+  // Any Particle Leaves keeps an element radius inside the new grid too.
+  s = bp::TraceSettings();
+  s.engine.resetWhen = bp::ResetWhen::AnyParticleLeaves;
+  e = bp::emitterInChangedField(s, moved, 0.4);
+  EXPECT_FLOAT_EQ(e.min[0], 0.7f);
+  EXPECT_FLOAT_EQ(e.max[1], 2.8f);
+  // A flat axis keeps its plane.
+  moved.dims[2] = 1;
+  moved.bounds[4] = moved.bounds[5] = 0.0;
+  s = bp::TraceSettings();
+  s.emitterCenter = { 11, 22, 30 };
+  s.emitterSize = { -1, -1, 0 };
+  e = bp::emitterInChangedField(s, moved, 0.1);
+  EXPECT_FLOAT_EQ(e.min[2], 0.0f);
+  EXPECT_FLOAT_EQ(e.max[2], 0.0f);
+  EXPECT_EQ(e.warning, "");
+}
+
 TEST(TraceSettings, APointEmitterWarnsWhereEveryElementIsReleased)
 {
   bp::TraceSettings s;

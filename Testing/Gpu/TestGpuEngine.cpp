@@ -1280,6 +1280,60 @@ TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
   replayed.engine().release();
 }
 
+TEST(GpuStepper, ReleasesDrawFromTheEmitterSetDuringATrace)
+{
+  // In situ, after the grid changed, the tracer moves the emitter box into
+  // the new grid (Stepper::setEmitter): through a recorded queue the GPU
+  // engine releases where the CPU engine does, every release in the new box.
+  ASSERT_NE(context(), nullptr);
+  const bp::GridGeometry g = grid(21, 21, 21, { -1, 1, -1, 1, -1, 1 });
+  const bp::VectorField field(g, slice(bp::AnalyticFlow::SolidBodyRotation, g, 0.0));
+  bp::Parameters p;
+  p.numberOfElements = 500;
+  p.elementSize = 0.05f;
+  p.emitterMin = { -1, -1, -1 };
+  p.emitterMax = { 1, 1, 1 };
+  p.lifetimeMin = 0.05f;
+  p.lifetimeMax = 0.1f; // every element released again within 10 steps
+  const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip4);
+  const std::array<float, 3> lo{ 0.2f, -0.5f, 0.0f }, hi{ 0.6f, 0.5f, 0.3f };
+  auto run = [&](bp::Stepper& stepper)
+  {
+    ASSERT_EQ(stepper.configure(shape, p), "");
+    ASSERT_EQ(stepper.setField(field), "");
+    stepper.initialize(0.0);
+    const double dt = 0.01;
+    for (int k = 0; k < 10; ++k)
+      stepper.step(k * dt, dt);
+    stepper.setEmitter(lo, hi);
+    for (int k = 10; k < 40; ++k)
+      stepper.step(k * dt, dt);
+  };
+  bp::CpuStepper cpu;
+  run(cpu);
+  bp::WorkQueue queue(1);
+  run(queue);
+  bp::GpuStepper gpu;
+  for (const bp::EngineCall& call : queue.take())
+    ASSERT_EQ(call.applyTo(gpu), "");
+  std::vector<float> lifetimes, generations, centers;
+  gpu.engine().readElements(&lifetimes, &generations, &centers);
+  const std::vector<float>& expected = cpu.engine().initialCenters();
+  ASSERT_EQ(centers.size(), expected.size());
+  int outside = 0;
+  double worst = 0.0;
+  for (std::size_t e = 0; e < p.numberOfElements; ++e)
+    for (int a = 0; a < 3; ++a)
+    {
+      const float c = expected[3 * e + std::size_t(a)];
+      outside += c < lo[std::size_t(a)] || c > hi[std::size_t(a)];
+      worst = std::max(worst, double(std::abs(centers[3 * e + std::size_t(a)] - c)));
+    }
+  EXPECT_EQ(outside, 0) << "releases outside the emitter box set during the trace";
+  EXPECT_LT(worst, 1e-6 * g.diagonal()) << "release centres differ by up to " << worst;
+  gpu.engine().release();
+}
+
 // The path (and fused step) the suite's environment asks for is the one that
 // runs: a silent fallback would run the same path three times (CMakeLists.txt).
 TEST(GpuPath, IsTheOneTheEnvironmentAsks)

@@ -5,7 +5,8 @@ and gets the elements a post hoc trace of the same steps gets; a repeated or
 earlier step is refused with a message and the trace keeps its state; a
 step without the vector array is an error and is skipped, the next good step
 going on from the last one; a step whose grid changes (dimensions, origin,
-spacing) warns and goes on in the new grid with every element kept.
+spacing) warns and goes on in the new grid with every element kept, and
+elements outside a grid that shrank or moved are released again into it.
 """
 import os
 import sys
@@ -158,11 +159,45 @@ bptest.check(len(skipped) > 0 and gap == 0.0,
              "after a skipped step the trace goes on as if it never came (%g apart)" % gap)
 
 
+# A step whose Vectors are only a cell array (issue 53, item 7): ParaView
+# interpolates it to the points for the tracer, as it does post hoc; the
+# tracer says so (the point array asked for is missing, only a cell array
+# is there) and traces it, in situ as post hoc.
+def cells_only(t, name="velocity"):
+    data = step_of(t)
+    data.GetPointData().RemoveArray("velocity")
+    zeros = numpy_to_vtk(numpy.zeros((data.GetNumberOfCells(), 3), dtype=numpy.float32), deep=1)
+    zeros.SetName(name)
+    data.GetCellData().AddArray(zeros)
+    return data
+
+
+CELLS_SAID = "only a cell array 'velocity'"
+from_cells, said = trace_in_situ(lambda k, t: cells_only(t) if k == BAD else step_of(t), SETTINGS)
+print("a step with cell Vectors only: %s" % said.messages)
+bptest.check(said.mentions(CELLS_SAID) and said.mentions("no point array 'velocity'") and len(said.messages) == 1,
+             "a step with cell Vectors only: one warning that the point array is missing and the cell "
+             "array is traced (%s)" % said.messages)
+bptest.check(len(from_cells) > 0 and farthest(from_cells, never) > 0.0,
+             "a step with cell Vectors only is traced, not skipped (%g from a trace never given it)"
+             % farthest(from_cells, never))
+_, said = trace_in_situ(lambda k, t: cells_only(t, "pressure_gradient") if k == BAD else step_of(t), SETTINGS)
+bptest.check(said.mentions("no array 'velocity'") and said.mentions("is skipped") and not said.mentions(CELLS_SAID),
+             "a step whose cell array has another name: skipped as without the vectors (%s)" % said.messages)
+# Post hoc the same: a grid with cell Vectors only.
+cell_flow = PointDatatoCellData(Input=flow)
+cell_flow.PassPointData = 0
+with bptest.CapturedMessages() as said:
+    got = elements(BoundParticleTracer(Input=cell_flow, **SETTINGS), times[2])
+bptest.check(len(got) > 0 and said.mentions(CELLS_SAID),
+             "post hoc, cell Vectors only: traced with the same warning (%s)" % said.messages)
+
+
 # A step whose grid changes: solid-body rotation about the z axis, linear in
 # x and y, so every grid samples it exactly and a trace that changes grids
 # must follow the one that never does. The second grid has other dimensions,
 # origin and spacing, and covers every element.
-def rotation(grid):
+def rotation(grid, scale=1.0):
     dims, origin, spacing = grid
     image = vtkImageData()
     image.SetDimensions(dims)
@@ -170,7 +205,7 @@ def rotation(grid):
     image.SetSpacing(spacing)
     z, y, x = numpy.meshgrid(*[origin[a] + spacing[a] * numpy.arange(dims[a]) for a in (2, 1, 0)],
                              indexing="ij")
-    velocity = numpy_to_vtk(numpy.stack([-y, x, 0 * x], axis=-1).reshape(-1, 3).astype(numpy.float32),
+    velocity = numpy_to_vtk((scale * numpy.stack([-y, x, 0 * x], axis=-1)).reshape(-1, 3).astype(numpy.float32),
                             deep=1)
     velocity.SetName("velocity")
     image.GetPointData().AddArray(velocity)
@@ -191,6 +226,54 @@ for name, grid_at in (("once", lambda k: OTHER if k >= BAD else FIRST),
     warned = [m for m in said.messages if "grid changed at t = %g" % times[BAD if name == "once" else 2] in m]
     bptest.check(len(warned) == 1 and len(said.messages) == 1,
                  "grid changed %s: one warning, at the first change (%s)" % (name, said.messages))
+
+
+# The grid shrinks and moves (issue 53, item 2): elements outside the new grid
+# are released again into the new grid, not into the first grid's box, with
+# the emitter box spanning the field (EmitterSize -1) or set to the first
+# grid's bounds (as the GUI's default box is). A slow rotation (at most 0.1
+# a step), so an element outside the new grid by more than that at a step
+# was released outside it.
+SHRUNK = ((23, 21, 2), (-0.6, -0.45, 0.0), (0.05, 0.05, 0.05))
+
+
+def outside_new_grid(settings):
+    """The largest share of elements whose centre lies outside SHRUNK by
+    more than 0.1, over the steps after the change, and the messages."""
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **settings)
+    dims, origin, spacing = SHRUNK
+    low = numpy.array(origin[:2])
+    high = low + numpy.array(spacing[:2]) * (numpy.array(dims[:2]) - 1)
+    shares = []
+    with bptest.CapturedMessages() as said:
+        for k, t in enumerate(times):
+            feed.GetClientSideObject().SetOutput(rotation(SHRUNK if k >= BAD else FIRST, 0.1), t)
+            feed.MarkModified(feed)
+            got = elements(tracer, t)
+            if k <= BAD or not got:
+                continue
+            centres = {}
+            for (e, _), xyz in got.items():
+                centres.setdefault(e, []).append(xyz[:2])
+            centre = numpy.array([numpy.mean(c, axis=0) for c in centres.values()])
+            out = numpy.any((centre < low - 0.1) | (centre > high + 0.1), axis=1)
+            shares.append(float(out.mean()))
+    said.messages = [m for m in said.messages if "New time step is not" not in m]
+    Delete(tracer)
+    Delete(feed)
+    return max(shares) if shares else 1.0, len(shares), said
+
+
+for name, box in (("spanning the field", {}),
+                  ("the first grid's bounds", dict(EmitterCenter=[0, 0, 0.025], EmitterSize=[2, 2, 0.05]))):
+    share, steps, said = outside_new_grid(dict(SETTINGS, LifetimeRange=[20, 30], **box))
+    print("the grid shrank and moved, emitter box %s: at most %.1f%% of the elements outside the new grid "
+          "over %d steps" % (name, 100 * share, steps))
+    bptest.check(steps > 0 and share == 0.0, "the grid shrank and moved, emitter box %s: releases land in "
+                 "the new grid (%.1f%% of the elements outside it)" % (name, 100 * share))
+    bptest.check(said.mentions("released again, into the new grid") and len(said.messages) == 1,
+                 "the grid shrank and moved: one warning, that says where releases land (%s)" % said.messages)
 
 
 # The GPU engine behind a Bound Particles display follows the same changes of

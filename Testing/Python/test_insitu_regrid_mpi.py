@@ -2,7 +2,10 @@
 followed when each process holds only its block of the last step, so every
 process starts the trace again at the present step, alike, with a warning
 that says why; it never hangs, never fails, and the trace goes on from there
-(on one process the trace re-locates instead: test_insitu.py).
+(on one process the trace re-locates instead: test_insitu.py). The same
+grid split otherwise between steps (issue 53, item 1: a rank's piece empty,
+then slabs, and back) is no change of grid: no message, and the trace goes
+on as on slabs throughout.
 
 Run as the driver; it runs itself under pvbatch --symmetric on 2 ranks with
 `--worker`, each rank handing a trivial producer its slab of the grid.
@@ -44,12 +47,17 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 
 
-def rotation_piece(grid):
-    """This rank's slab along x of solid-body rotation on `grid`, and the
-    whole extent."""
+def rotation_piece(grid, split="slabs"):
+    """This rank's piece of solid-body rotation on `grid`, and the whole
+    extent: a slab along x ("slabs"), or the whole grid on rank 0 and a bare
+    image (no points) on the others ("rank 0")."""
     dims, origin, spacing = grid
     cells = dims[0] - 1
+    whole = [0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1]
+    if split == "rank 0" and rank != 0:
+        return vtkImageData(), whole
     extent = [cells * rank // ranks, cells * (rank + 1) // ranks, 0, dims[1] - 1, 0, dims[2] - 1]
+    extent = whole if split == "rank 0" else extent
     image = vtkImageData()
     image.SetExtent(extent)
     image.SetOrigin(origin)
@@ -60,7 +68,7 @@ def rotation_piece(grid):
                             deep=1)
     velocity.SetName("velocity")
     image.GetPointData().AddArray(velocity)
-    return image, [0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1]
+    return image, whole
 
 
 FIRST = ((41, 41, 2), (-1.0, -1.0, 0.0), (0.05, 0.05, 0.05))
@@ -77,15 +85,16 @@ def total(value, operation):
     return got.GetValue(0)
 
 
-def trace(first_step):
-    """The tracer fed every step from `first_step` on; per step, all ranks'
-    particle count, and this rank's particles at the last step."""
+def trace(first_step, grid_at=lambda k: OTHER if k >= CHANGE else FIRST, split_at=lambda k: "slabs"):
+    """The tracer fed every step from `first_step` on, on grid_at(k) split
+    among the ranks as split_at(k); per step, all ranks' particle count, and
+    this rank's particles at the last step."""
     producer = PVTrivialProducer()
     tracer = BoundParticleTracer(Input=producer, **SETTINGS)
     counts = []
     for k in range(first_step, STEPS):
         t = k * DT
-        piece, whole = rotation_piece(OTHER if k >= CHANGE else FIRST)
+        piece, whole = rotation_piece(grid_at(k), split_at(k))
         feed = producer.GetClientSideObject()
         feed.SetWholeExtent(whole)
         feed.SetOutput(piece, t)
@@ -101,6 +110,36 @@ def trace(first_step):
         points = {(int(e), int(p)): xyz[n] for n, (e, p) in enumerate(zip(ids, index))}
     return counts, points
 
+
+def all_same(mine, other):
+    """Whether every rank holds the same particles in `mine` as in `other`,
+    and how far apart they lie at most (over all ranks)."""
+    same = total(0.0 if set(mine) == set(other) else 1.0, vtkCommunicator.MAX_OP) == 0.0
+    gaps = [float(abs(mine[key] - other[key]).max()) for key in mine if key in other]
+    return same, total(max(gaps + [0.0]), vtkCommunicator.MAX_OP)
+
+
+# The same grid split otherwise between steps (issue 53, item 1): rank 0
+# holds it whole and the other an empty piece, then both hold slabs, and back.
+# No process may decide alone that the grid changed (MPI aborted): the trace
+# goes on, unannounced, as on slabs throughout, each block's elements staying
+# with it.
+steady_counts, steady = trace(0, lambda k: FIRST)
+for first, split_at in (("slabs", lambda k: "rank 0" if k % 4 in (1, 2) else "slabs"),
+                        ("rank 0", lambda k: "rank 0" if k % 4 in (0, 3) else "slabs")):
+    with bptest.CapturedMessages() as said_split:
+        split_counts, rebalanced = trace(0, lambda k: FIRST, split_at)
+    said_split.messages = [m for m in said_split.messages if "New time step is not" not in m]
+    split_same, split_gap = all_same(rebalanced, steady)
+    if rank == 0:
+        print("split otherwise between steps, from %s: particles per step %s (%s on slabs throughout), "
+              "%s, %g apart" % (first, split_counts, steady_counts,
+                                "the same particles" if split_same else "other particles", split_gap))
+        bptest.check(not said_split.messages,
+                     "split otherwise from %s: no message (%s)" % (first, said_split.messages))
+        bptest.check(split_counts == steady_counts and split_same and split_gap == 0.0,
+                     "split otherwise from %s: the trace goes on as on slabs throughout (%g apart)"
+                     % (first, split_gap))
 
 with bptest.CapturedMessages() as said:
     counts, changed = trace(0)
