@@ -32,6 +32,7 @@
 #include "vtkSMRenderViewProxy.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
+#include "vtkSMTransferFunctionManager.h"
 #include "vtkSMTransferFunctionProxy.h"
 #include "vtkSMViewProxy.h"
 #include "vtkSmartPointer.h"
@@ -134,8 +135,10 @@ std::vector<double> histogramOf(vtkSMSourceProxy* source, unsigned int port, int
 }
 
 /// Gives a scalar-coloured 2D context `display` a colour map of its own in
-/// greys (its own values still shown), so the elements' colours stand out.
-void showAsContext(vtkSMProxy* display)
+/// greys (its own values still shown), so the elements' colours stand out;
+/// where the colour map it used had its legend shown in `view`, the legend
+/// shows the greys instead (the other goes when nothing else uses it).
+void showAsContext(vtkSMProxy* display, vtkSMProxy* view)
 {
   auto* pv = vtkSMPVRepresentationProxy::SafeDownCast(display);
   if (!pv || !pv->GetUsingScalarColoring() || !display->GetProperty("UseSeparateColorMap"))
@@ -145,6 +148,9 @@ void showAsContext(vtkSMProxy* display)
   vtkSMPropertyHelper colour(display, "ColorArrayName");
   const int association = colour.GetInputArrayAssociation();
   const std::string name = colour.GetInputArrayNameToProcess();
+  vtkSMProxy* shared = vtkSMPropertyHelper(display, "LookupTable", true).GetAsProxy();
+  const bool legend =
+    view && shared && vtkSMTransferFunctionProxy::IsScalarBarVisible(shared, view);
   // What the display's "Use Separate Color Map" button does.
   vtkSMPropertyHelper(display, "UseSeparateColorMap").Set(1);
   display->UpdateVTKObjects();
@@ -169,6 +175,12 @@ void showAsContext(vtkSMProxy* display)
   vtkSMPropertyHelper(lut, "ColorSpace").Set("RGB");
   lut->UpdateVTKObjects();
   display->UpdateVTKObjects();
+  if (legend)
+  {
+    vtkNew<vtkSMTransferFunctionManager> manager;
+    manager->UpdateScalarBars(view, vtkSMTransferFunctionManager::HIDE_UNUSED_SCALAR_BARS);
+    pv->SetScalarBarVisibility(view, true);
+  }
 }
 
 /// No array named in Vectors: its default found no input arrays.
@@ -405,7 +417,7 @@ void pqBoundParticleDefaults::keepAsContext(
   // plane: it stays, moved a hundredth of its size away from the camera
   // along its normal, so the elements draw in front of it, and coloured by
   // its array in greys, so the elements' colours stand out on it.
-  showAsContext(display);
+  showAsContext(display, view->getViewProxy());
   auto* renderView = vtkSMRenderViewProxy::SafeDownCast(view->getViewProxy());
   vtkCamera* camera = renderView ? renderView->GetActiveCamera() : nullptr;
   double direction[3] = { 0.0, 0.0, -1.0 };

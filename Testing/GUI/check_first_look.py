@@ -9,7 +9,8 @@
 # velocity magnitude: the elements, coloured by Speed, must stand out on the
 # map kept behind them, shown as a Slice and as a Surface: the map under the
 # elements in greys (its own colour map), the elements' pixels far more
-# saturated than the map under them and clearly apart from it. Sets the
+# saturated than the map under them and clearly apart from it, and no
+# legend left of the colour map the map no longer uses. Sets the
 # second tracer's Number Of Elements to 996.
 # first_look.xml checks each count; what was measured is printed.
 import gui_check
@@ -40,9 +41,11 @@ def check_map():
         "map kept": context.Visibility == 1 and kind == "Slice",
         "elements stand out on the Slice": gui_render.stands_out(on_slice),
         "elements stand out on the Surface": gui_render.stands_out(on_surface),
+        "no legend of an unused colour map": not gui_render.unused_legends(view),
     }
     seen = {"on the slice": on_slice, "on the surface": on_surface,
-            "map": "%s, coloured by %s" % (kind, list(context.ColorArrayName))}
+            "map": "%s, coloured by %s" % (kind, list(context.ColorArrayName)),
+            "unused legends": gui_render.unused_legends(view)}
     if gui_check.passed(SCRIPT, found, seen):
         tracer.NumberOfElements = 996
 

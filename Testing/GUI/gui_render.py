@@ -79,3 +79,22 @@ def lowest_bin_share(values, lut, bins=8):
     if lut.UseLogScale and low > 0:
         return float((values < low * (high / low) ** (1.0 / bins)).mean())
     return float((values < low + (high - low) / bins).mean())
+
+
+def unused_legends(view):
+    """The titles of the legends (scalar bars) shown in `view` whose colour
+    map no visible display there uses."""
+    used = set()
+    legends = []
+    for shown in view.Representations:
+        if not shown.Visibility:
+            continue
+        lut = shown.SMProxy.GetProperty("LookupTable")
+        lut = lut.GetProxy(0) if lut is not None and lut.GetNumberOfProxies() > 0 else None
+        if shown.SMProxy.GetXMLName() == "ScalarBarWidgetRepresentation":
+            legends.append((shown.Title, lut))
+        elif lut is not None and shown.SMProxy.GetProperty("ColorArrayName") is not None and \
+                shown.ColorArrayName[1]:
+            used.add(lut.GetGlobalIDAsString())
+    return [title for title, lut in legends
+            if lut is None or lut.GetGlobalIDAsString() not in used]
