@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqBoundParticleDisplays.h"
 
+#include "pqBoundParticleDefaults.h"
 #include "pqBoundParticleIsTracer.h"
 #include "vtkBoundParticleTracer.h"
 
@@ -147,13 +148,16 @@ void pqBoundParticleDisplays::rescaleIfVectorsChanged(pqPipelineSource* source)
   }
   for (pqDataRepresentation* display : source->getRepresentations(nullptr))
   {
-    // What the GUI's "Rescale to Data Range" does (nothing for a solid colour,
-    // nor where the user locked the range); that reaction's header is not
+    // A colour map whose range the first Apply set to the middle of the
+    // values (and nobody changed since) gets the new trace's; any other, what
+    // the GUI's "Rescale to Data Range" does (nothing for a solid colour, nor
+    // where the user locked the range); that reaction's header is not
     // installed by Debian's ParaView 5.13 and 6.1.
     auto* shown = qobject_cast<pqPipelineRepresentation*>(display);
     auto* proxy = shown ? vtkSMPVRepresentationProxy::SafeDownCast(shown->getProxy()) : nullptr;
     if (proxy && shown->isVisible() &&
-      proxy->RescaleTransferFunctionToDataRange(/*extend=*/false, /*force=*/false))
+      (pqBoundParticleDefaults::readableColours(shown, /*onlyHeld=*/true) ||
+        proxy->RescaleTransferFunctionToDataRange(/*extend=*/false, /*force=*/false)))
     {
       shown->renderViewEventually();
     }

@@ -37,6 +37,10 @@ fi
 if [ "$major" -ge 6 ] || { [ "$major" -eq 5 ] && [ "$minor" -ge 13 ]; }; then
   sed -i -E '/actionDelete_All/{n;/1QMessageBox0\/qt_msgbox_buttonbox/d}' "$played"
 fi
+# $BOUNDPARTICLES_DATA_DIR in the events (the shared data sets) is filled in.
+if [ -n "${BOUNDPARTICLES_DATA_DIR:-}" ]; then
+  sed -i "s#\$BOUNDPARTICLES_DATA_DIR#$(cd "$BOUNDPARTICLES_DATA_DIR" && pwd)#g" "$played"
+fi
 script="$played"
 timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
   paraview --dr --data-directory="$data_dir" --test-directory="$HOME" \
