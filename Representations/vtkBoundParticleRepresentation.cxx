@@ -315,6 +315,7 @@ int vtkBoundParticleRepresentation::RequestData(
   // server's data for local rendering with this empty one.
   I.Cache = vtkSmartPointer<vtkPolyData>::New();
   I.Gpu = false;
+  bool failedGpuAnswer = false;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
     vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -325,12 +326,13 @@ int vtkBoundParticleRepresentation::RequestData(
       auto* id =
         vtkIntArray::SafeDownCast(input->GetFieldData()->GetArray("BoundParticlesWorkQueue"));
       I.Gpu = id && id->GetNumberOfValues() == 1 && id->GetValue(0) == I.Queue->id();
-      // Asked for the GPU and given a finished CPU trace (a failed update,
-      // such as a time jump of too many steps, has no SimulationTime and
-      // may go to the GPU at the next frame).
-      if (!I.Gpu && inInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()) &&
-        inInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()) == I.Queue->id() &&
-        input->GetFieldData()->GetArray("SimulationTime"))
+      const bool asked = inInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()) &&
+        inInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()) == I.Queue->id();
+      // A failed update (a time jump of too many steps, an in situ step
+      // skipped) has no SimulationTime and may go to the GPU at the next frame.
+      failedGpuAnswer = !I.Gpu && asked && !input->GetFieldData()->GetArray("SimulationTime");
+      // Asked for the GPU and given a finished CPU trace.
+      if (!I.Gpu && asked && !failedGpuAnswer)
       {
         I.CpuAnswer = true;
         I.CpuAnswerPipelineTime = I.RequestPipelineTime;
@@ -357,8 +359,11 @@ int vtkBoundParticleRepresentation::RequestData(
     // selection) update between here and the render in the same view pass;
     // they need bounds and ranges, which the GPU output has, and would make
     // the CPU engine step every frame. So when nothing else in the view draws
-    // from this data, the request is held until the view renders.
-    if (I.Gpu && !this->ViewHasOtherConsumers())
+    // from this data, the request is held until the view renders. So it is
+    // after a failed update: the CPU engine would only fail again, and in situ
+    // (a step skipped) it cannot go on from the GPU engine's state, so its
+    // update would start the trace again at the next good step.
+    if ((I.Gpu || failedGpuAnswer) && !this->ViewHasOtherConsumers())
     {
       I.RequestHeld = true;
     }
