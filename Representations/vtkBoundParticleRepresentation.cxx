@@ -20,6 +20,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPVRenderView.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -73,6 +74,10 @@ struct vtkBoundParticleRepresentation::vtkInternals
   bp::RendererKind CpuAnswerRenderer = bp::RendererKind::Unknown;
   int TextureSizeLimit = 0;
   bool StreamTimeSteps = true;
+  /// The last answer was Automatic's CPU engine (WorkQueue::automaticOnCpu).
+  bool AutomaticOnCpu = false;
+  /// Why Automatic traces on the CPU engine was said (once per display).
+  bool SaidAutomaticOnCpu = false;
 };
 
 namespace
@@ -100,6 +105,21 @@ void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
   const std::size_t end = text.find('\n', at);
   report.rendererName = first < end ? text.substr(first, end - first) : std::string();
   report.renderer = bp::rendererKind(report.rendererName);
+}
+
+/// Says once, in Output Messages, why Engine Automatic traces on the CPU
+/// engine, as soon as the display knows it draws with a software renderer:
+/// at the update where it knew before, else at the render that finds out.
+void sayAutomaticOnCpu(bool automaticOnCpu, const bp::WorkQueue& queue, bool& said)
+{
+  const bp::RendererReport& report = queue.report();
+  if (!automaticOnCpu || said || report.renderer != bp::RendererKind::Software)
+  {
+    return;
+  }
+  said = true;
+  const std::string text = bp::automaticOnCpuNote(report.rendererName) + "\n";
+  vtkOutputWindowDisplayText(text.c_str());
 }
 } // namespace
 
@@ -259,6 +279,10 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   {
     pipelineTime = executive->GetPipelineMTime();
   }
+  // Known before the tracer decides wherever the view drew before (the GUI's
+  // view draws its background first): Automatic then picks its engine, and
+  // says so, at the display's first frame.
+  recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
   bp::RendererReport& report = I.Queue->reportFromDisplay();
   if (!report.failure.empty())
   {
@@ -338,6 +362,11 @@ int vtkBoundParticleRepresentation::RequestData(
         I.CpuAnswerPipelineTime = I.RequestPipelineTime;
         I.CpuAnswerRenderer = I.Queue->report().renderer;
       }
+      if (asked && !failedGpuAnswer)
+      {
+        I.AutomaticOnCpu = !I.Gpu && I.Queue->automaticOnCpu;
+        sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
+      }
       if (I.Gpu)
       {
         std::copy(I.Queue->draw.bounds.begin(), I.Queue->draw.bounds.end(), I.Bounds);
@@ -402,6 +431,7 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   {
     this->ReleaseGpuRequest(); // the view's update pass is over
     recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
+    sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {
