@@ -127,20 +127,22 @@ void TracerSteppers::select(bp::EngineChoice engine, int gpuQueue, const PieceLa
 {
   this->Pool.refresh(); // once an update: the user may have changed the thread count
   this->Queue = nullptr;
-  this->AutomaticCpuOn.clear();
   // The GPU engine's state lives in the GL context that draws it: only a
   // display in this process, in a run of one process, can take it.
   if (engine != bp::EngineChoice::Cpu && !pieces.distributed() && gpuQueue != 0)
   {
     this->Queue = FindWorkQueue(gpuQueue);
   }
-  if (this->Queue && !bp::usesGpuEngine(engine, this->Queue->report().renderer))
+  if (this->Queue)
   {
-    if (this->Queue->report().renderer == bp::RendererKind::Software)
+    // The display says why Automatic traces on the CPU engine: it learns its
+    // renderer when it first draws, maybe after this update.
+    const bool gpu = bp::usesGpuEngine(engine, this->Queue->report().renderer);
+    this->Queue->automaticOnCpu = !gpu;
+    if (!gpu)
     {
-      this->AutomaticCpuOn = this->Queue->report().rendererName;
+      this->Queue = nullptr;
     }
-    this->Queue = nullptr;
   }
   if (pieces.distributed() && !this->Distributed)
   {

@@ -75,9 +75,6 @@ public:
   /// display that asked): `gpuQueue` is the work queue a Bound Particles
   /// display asked for (vtkBoundParticleTracer::GPU_WORK_QUEUE; 0: none).
   void select(bp::EngineChoice engine, int gpuQueue, const PieceLayout& pieces);
-  /// The software renderer whose display got the CPU engine because Engine
-  /// is Automatic, at the last select(); empty otherwise.
-  const std::string& automaticCpuOn() const { return this->AutomaticCpuOn; }
 
   bp::Stepper& active() { return *this->Active; }
   /// The display's queue when this update records for it, else null.
@@ -106,7 +103,6 @@ private:
   std::unique_ptr<bp::DistributedStepper> Distributed;
   std::shared_ptr<bp::WorkQueue> Queue;
   bp::Stepper* Active = &Cpu;
-  std::string AutomaticCpuOn;
 };
 
 } // namespace bpvtk

@@ -26,7 +26,6 @@
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
-#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -132,18 +131,6 @@ void vtkBoundParticleTracerInternals::decide(
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   this->Steppers.select(config.engine, gpuQueue, this->Layout);
-  const std::string& software = this->Steppers.automaticCpuOn();
-  if (!software.empty() && !this->SaidAutomaticCpu)
-  {
-    // Once per tracer: the display asks on every frame.
-    this->SaidAutomaticCpu = true;
-    const std::string text = "Bound Particle Tracer: Engine is Automatic and this render "
-                             "window draws with a software renderer (" +
-      software +
-      "), on which the GPU engine is slower: the CPU engine traces. Set Engine to GPU to use the "
-      "GPU engine anyway.\n";
-    vtkOutputWindowDisplayText(text.c_str());
-  }
   // In situ the present step is the time shown, whatever time is asked for.
   const double target = this->Plan.streaming()
     ? this->Plan.outputTimes().back()

@@ -249,7 +249,6 @@ private:
   bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
   bool WarnedGridChange = false; ///< in situ, a change of grid was reported
   bool WarnedCellVectors = false; ///< point Vectors made of a cell array were reported
-  bool SaidAutomaticCpu = false; ///< Automatic's CPU engine on a software renderer was said
   /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
   /// says each once, not again at the next request for information).
   std::vector<std::string> SaidTimeLine;

@@ -5,6 +5,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +32,23 @@ std::string versionText(int version)
 }
 } // namespace
 
+std::string acceptedValue(const char* variable, const char* value,
+  const std::vector<std::string>& accepted, const std::string& otherwise, std::string& warning)
+{
+  const std::string given = value ? value : "";
+  if (given.empty() || std::find(accepted.begin(), accepted.end(), given) != accepted.end())
+  {
+    return given;
+  }
+  std::string names;
+  for (std::size_t k = 0; k < accepted.size(); ++k)
+  {
+    names += (k == 0 ? "" : k + 1 == accepted.size() ? " or " : ", ") + accepted[k];
+  }
+  warning = std::string(variable) + "=" + given + " is not one of " + names + ": " + otherwise;
+  return std::string();
+}
+
 const char* gpuPathName(GpuPath path)
 {
   return path == GpuPath::Compute ? "compute" : "fragment";
@@ -38,9 +56,11 @@ const char* gpuPathName(GpuPath path)
 
 GpuPathChoice chooseGpuPath(int version, const std::string& context, const char* requested)
 {
-  const std::string asked = requested ? requested : "";
-  const bool computeAvailable = version >= ComputePathVersion;
   GpuPathChoice choice;
+  const std::string asked =
+    acceptedValue(GpuPathVariable, requested, { "compute", "fragment", "automatic" },
+      "the GPU engine chooses its path itself.", choice.warning);
+  const bool computeAvailable = version >= ComputePathVersion;
   std::string why = "chosen automatically";
   if (asked == "fragment")
   {
@@ -59,11 +79,6 @@ GpuPathChoice chooseGpuPath(int version, const std::string& context, const char*
         "=compute asks for the GPU engine's compute path, but this OpenGL context is version " +
         versionText(version) + " and compute shaders need 4.3: the engine runs its fragment path.";
     }
-    else if (!asked.empty() && asked != "automatic")
-    {
-      choice.warning = std::string(GpuPathVariable) + "=" + asked +
-        " is not one of compute, fragment or automatic: the GPU engine chooses its path itself.";
-    }
     choice.path = computeAvailable ? GpuPath::Compute : GpuPath::Fragment;
     if (!computeAvailable)
     {
@@ -75,9 +90,19 @@ GpuPathChoice chooseGpuPath(int version, const std::string& context, const char*
   return choice;
 }
 
-bool fusesSteps(FusedSteps choice, const std::string& renderer, const char* requested)
+bool fusesSteps(
+  FusedSteps choice, const std::string& renderer, const char* requested, std::string* warning)
 {
-  const std::string asked = requested ? requested : "";
+  std::string unknown;
+  const std::string asked =
+    acceptedValue(FusedStepVariable, requested, { "on", "off", "automatic" },
+      "the compute path fuses a system's step on a GPU and runs a dispatch per kernel on a "
+      "software renderer.",
+      unknown);
+  if (warning)
+  {
+    *warning = unknown;
+  }
   if (choice == FusedSteps::Automatic && (asked == "on" || asked == "off"))
   {
     return asked == "on";
@@ -105,9 +130,12 @@ void sayGpuPathOnce(const GpuPathChoice& choice)
   {
     return;
   }
-  if (!choice.warning.empty())
+  std::size_t from = 0;
+  while (from < choice.warning.size())
   {
-    Sink(choice.warning, true);
+    const std::size_t end = std::min(choice.warning.find('\n', from), choice.warning.size());
+    Sink(choice.warning.substr(from, end - from), true);
+    from = end + 1;
   }
   Sink(choice.note, false);
 }

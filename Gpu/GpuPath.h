@@ -21,6 +21,7 @@
 #define BoundParticles_GpuPath_h
 
 #include <string>
+#include <vector>
 
 namespace bp
 {
@@ -34,6 +35,16 @@ enum class GpuPath
 /// "fragment" or "compute".
 const char* gpuPathName(GpuPath path);
 
+/**
+ * The value of the environment variable `variable` (`value`: its value, null
+ * when unset) if it is one of `accepted`; empty when it is unset or empty,
+ * and also when it is none of them, in which case `warning` gets a message
+ * that names the variable, the value and the accepted values, and goes on
+ * with `otherwise` (what happens instead).
+ */
+std::string acceptedValue(const char* variable, const char* value,
+  const std::vector<std::string>& accepted, const std::string& otherwise, std::string& warning);
+
 /// The environment variable that forces a path.
 constexpr const char* GpuPathVariable = "BOUNDPARTICLES_GPU_PATH";
 /// The lowest OpenGL version (major * 10 + minor) the compute path runs on.
@@ -44,7 +55,7 @@ struct GpuPathChoice
 {
   GpuPath path = GpuPath::Fragment;
   std::string note;    ///< the path in use and why, for the log
-  std::string warning; ///< empty unless the request could not be followed
+  std::string warning; ///< empty unless a request could not be followed (one a line)
 };
 
 /**
@@ -68,20 +79,22 @@ enum class FusedSteps
   Never
 };
 
-/// The environment variable that overrides FusedSteps::Automatic: `on` or `off`.
+/// The environment variable that overrides FusedSteps::Automatic: `on`, `off` or `automatic`.
 constexpr const char* FusedStepVariable = "BOUNDPARTICLES_GPU_FUSED_STEP";
 
 /**
  * Whether `choice` fuses the steps on the renderer named `renderer`
  * (GL_RENDERER), `requested` the value of BOUNDPARTICLES_GPU_FUSED_STEP (null
- * or empty: none). Automatic follows `requested` (`on`, `off`), else fuses
+ * or empty: none; a value it does not know is ignored, with a message in
+ * `warning` where given). Automatic follows `requested` (`on`, `off`), else fuses
  * them on a GPU, which skips a phase for a SIMD group whose threads all wait
  * (the fused step's per-element phases leave most of a workgroup waiting),
  * and not on a software rasterizer (llvmpipe), which runs every phase for
  * every thread and where the fused step measured about half as fast as a
  * dispatch per kernel.
  */
-bool fusesSteps(FusedSteps choice, const std::string& renderer, const char* requested);
+bool fusesSteps(FusedSteps choice, const std::string& renderer, const char* requested,
+  std::string* warning = nullptr);
 
 /// Where the engine's messages go: `warning` tells a warning from a note.
 /// The default writes them to standard error; a renderer routes them to its
@@ -89,8 +102,8 @@ bool fusesSteps(FusedSteps choice, const std::string& renderer, const char* requ
 using GpuMessageSink = void (*)(const std::string& text, bool warning);
 void setGpuMessageSink(GpuMessageSink sink);
 
-/// Says the choice's note (and warning) through the sink, unless the same
-/// was said before in this process.
+/// Says the choice's note (and its warnings, one a line) through the sink,
+/// unless the same was said before in this process.
 void sayGpuPathOnce(const GpuPathChoice& choice);
 
 } // namespace bp

@@ -33,8 +33,16 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   GpuPathChoice path = currentGpuPath();
   const bool compute = path.path == GpuPath::Compute;
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  // The variable is read on either path, so a value it does not know is said
+  // wherever it is set.
+  std::string unknown;
   const bool fuses =
-    compute && fusesSteps(fusedSteps, renderer ? renderer : "", std::getenv(FusedStepVariable));
+    fusesSteps(fusedSteps, renderer ? renderer : "", std::getenv(FusedStepVariable), &unknown) &&
+    compute;
+  if (!unknown.empty())
+  {
+    path.warning += (path.warning.empty() ? "" : "\n") + unknown;
+  }
   if (compute)
   {
     path.note += fuses

@@ -20,6 +20,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPVRenderView.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -73,6 +74,10 @@ struct vtkBoundParticleRepresentation::vtkInternals
   bp::RendererKind CpuAnswerRenderer = bp::RendererKind::Unknown;
   int TextureSizeLimit = 0;
   bool StreamTimeSteps = true;
+  /// The last answer was Automatic's CPU engine (WorkQueue::automaticOnCpu).
+  bool AutomaticOnCpu = false;
+  /// Why Automatic traces on the CPU engine was said (once per display).
+  bool SaidAutomaticOnCpu = false;
 };
 
 namespace
@@ -100,6 +105,21 @@ void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
   const std::size_t end = text.find('\n', at);
   report.rendererName = first < end ? text.substr(first, end - first) : std::string();
   report.renderer = bp::rendererKind(report.rendererName);
+}
+
+/// Says once, in Output Messages, why Engine Automatic traces on the CPU
+/// engine, as soon as the display knows it draws with a software renderer:
+/// at the update where it knew before, else at the render that finds out.
+void sayAutomaticOnCpu(bool automaticOnCpu, const bp::WorkQueue& queue, bool& said)
+{
+  const bp::RendererReport& report = queue.report();
+  if (!automaticOnCpu || said || report.renderer != bp::RendererKind::Software)
+  {
+    return;
+  }
+  said = true;
+  const std::string text = bp::automaticOnCpuNote(report.rendererName) + "\n";
+  vtkOutputWindowDisplayText(text.c_str());
 }
 } // namespace
 
@@ -259,6 +279,10 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   {
     pipelineTime = executive->GetPipelineMTime();
   }
+  // Known before the tracer decides wherever the view drew before (the GUI's
+  // view draws its background first): Automatic then picks its engine, and
+  // says so, at the display's first frame.
+  recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
   bp::RendererReport& report = I.Queue->reportFromDisplay();
   if (!report.failure.empty())
   {
@@ -315,6 +339,7 @@ int vtkBoundParticleRepresentation::RequestData(
   // server's data for local rendering with this empty one.
   I.Cache = vtkSmartPointer<vtkPolyData>::New();
   I.Gpu = false;
+  bool failedGpuAnswer = false;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
     vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -325,16 +350,22 @@ int vtkBoundParticleRepresentation::RequestData(
       auto* id =
         vtkIntArray::SafeDownCast(input->GetFieldData()->GetArray("BoundParticlesWorkQueue"));
       I.Gpu = id && id->GetNumberOfValues() == 1 && id->GetValue(0) == I.Queue->id();
-      // Asked for the GPU and given a finished CPU trace (a failed update,
-      // such as a time jump of too many steps, has no SimulationTime and
-      // may go to the GPU at the next frame).
-      if (!I.Gpu && inInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()) &&
-        inInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()) == I.Queue->id() &&
-        input->GetFieldData()->GetArray("SimulationTime"))
+      const bool asked = inInfo->Has(vtkBoundParticleTracer::GPU_WORK_QUEUE()) &&
+        inInfo->Get(vtkBoundParticleTracer::GPU_WORK_QUEUE()) == I.Queue->id();
+      // A failed update (a time jump of too many steps, an in situ step
+      // skipped) has no SimulationTime and may go to the GPU at the next frame.
+      failedGpuAnswer = !I.Gpu && asked && !input->GetFieldData()->GetArray("SimulationTime");
+      // Asked for the GPU and given a finished CPU trace.
+      if (!I.Gpu && asked && !failedGpuAnswer)
       {
         I.CpuAnswer = true;
         I.CpuAnswerPipelineTime = I.RequestPipelineTime;
         I.CpuAnswerRenderer = I.Queue->report().renderer;
+      }
+      if (asked && !failedGpuAnswer)
+      {
+        I.AutomaticOnCpu = !I.Gpu && I.Queue->automaticOnCpu;
+        sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
       }
       if (I.Gpu)
       {
@@ -357,8 +388,11 @@ int vtkBoundParticleRepresentation::RequestData(
     // selection) update between here and the render in the same view pass;
     // they need bounds and ranges, which the GPU output has, and would make
     // the CPU engine step every frame. So when nothing else in the view draws
-    // from this data, the request is held until the view renders.
-    if (I.Gpu && !this->ViewHasOtherConsumers())
+    // from this data, the request is held until the view renders. So it is
+    // after a failed update: the CPU engine would only fail again, and in situ
+    // (a step skipped) it cannot go on from the GPU engine's state, so its
+    // update would start the trace again at the next good step.
+    if ((I.Gpu || failedGpuAnswer) && !this->ViewHasOtherConsumers())
     {
       I.RequestHeld = true;
     }
@@ -397,6 +431,7 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   {
     this->ReleaseGpuRequest(); // the view's update pass is over
     recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
+    sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {

@@ -60,6 +60,10 @@ enum class EngineChoice
 /// the display first drew, gets the CPU engine).
 bool usesGpuEngine(EngineChoice choice, RendererKind renderer);
 
+/// What a display says, once, when Engine Automatic traces on the CPU engine
+/// because it draws with the software renderer `rendererName`.
+std::string automaticOnCpuNote(const std::string& rendererName);
+
 /// One recorded engine call.
 struct EngineCall
 {
@@ -177,6 +181,11 @@ public:
   RendererReport& reportFromDisplay() { return this->Report; }
 
   DrawSettings draw;
+
+  /// The tracer's Engine is Automatic and its last update for this display
+  /// traced on the CPU engine: the renderer is a software one, or was not
+  /// known yet. The display says why once it knows its renderer.
+  bool automaticOnCpu = false;
 
   /// The time step the next update forward will need, once the filter has it
   /// (empty otherwise).

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace
 {
 TEST(EngineChoice, SoftwareRenderersAreRecognisedByName)
@@ -31,5 +33,15 @@ TEST(EngineChoice, AutomaticTakesTheGpuOnlyOnHardware)
     EXPECT_TRUE(bp::usesGpuEngine(C::Gpu, kind));
     EXPECT_FALSE(bp::usesGpuEngine(C::Cpu, kind));
   }
+}
+
+TEST(EngineChoice, TheNoteOnASoftwareRendererNamesItAndTheWayOut)
+{
+  const std::string note = bp::automaticOnCpuNote("llvmpipe (LLVM 15.0.6, 256 bits)");
+  EXPECT_NE(note.find("software renderer (llvmpipe (LLVM 15.0.6, 256 bits))"), std::string::npos)
+    << note;
+  EXPECT_NE(note.find("the CPU engine traces"), std::string::npos) << note;
+  EXPECT_NE(note.find("Set Engine to GPU"), std::string::npos) << note;
+  EXPECT_EQ(note.find('\n'), std::string::npos) << "one line; the display ends it";
 }
 } // namespace

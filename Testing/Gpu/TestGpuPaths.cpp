@@ -117,6 +117,35 @@ TEST(GpuPath, StepsFuseOnAGpuUnlessTold)
   EXPECT_FALSE(bp::fusesSteps(F::Automatic, gpu, "off"));
   EXPECT_TRUE(bp::fusesSteps(F::Always, software, "off")); // the caller's word wins
   EXPECT_FALSE(bp::fusesSteps(F::Never, gpu, "on"));
+  // A value it does not know is said as BOUNDPARTICLES_GPU_PATH's is, and the
+  // choice is automatic.
+  std::string warning;
+  EXPECT_FALSE(bp::fusesSteps(F::Automatic, software, "yes", &warning));
+  EXPECT_NE(warning.find("BOUNDPARTICLES_GPU_FUSED_STEP=yes is not one of on, off or automatic:"),
+    std::string::npos)
+    << warning;
+  EXPECT_TRUE(bp::fusesSteps(F::Automatic, gpu, "yes", &warning));
+  EXPECT_TRUE(bp::fusesSteps(F::Automatic, gpu, "automatic", &warning));
+  EXPECT_EQ(warning, "");
+  EXPECT_TRUE(bp::fusesSteps(F::Automatic, software, "on", &warning));
+  EXPECT_EQ(warning, "");
+}
+
+TEST(GpuPath, EnvironmentValuesAreCheckedAlike)
+{
+  std::string warning;
+  EXPECT_EQ(bp::acceptedValue("V", "b", { "a", "b", "c" }, "it decides.", warning), "b");
+  EXPECT_EQ(warning, "");
+  EXPECT_EQ(bp::acceptedValue("V", nullptr, { "a", "b" }, "it decides.", warning), "");
+  EXPECT_EQ(bp::acceptedValue("V", "", { "a", "b" }, "it decides.", warning), "");
+  EXPECT_EQ(warning, "");
+  EXPECT_EQ(bp::acceptedValue("V", "d", { "a", "b", "c" }, "it decides.", warning), "");
+  EXPECT_EQ(warning, "V=d is not one of a, b or c: it decides.");
+  // Both variables' messages come from it.
+  const bp::GpuPathChoice odd = bp::chooseGpuPath(45, "4.5", "vulkan");
+  EXPECT_EQ(odd.warning,
+    "BOUNDPARTICLES_GPU_PATH=vulkan is not one of compute, fragment or automatic: the GPU "
+    "engine chooses its path itself.");
 }
 
 // Run with BOUNDPARTICLES_GPU_PATH=compute on a context Mesa made to offer
