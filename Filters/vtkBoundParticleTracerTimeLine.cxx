@@ -226,7 +226,8 @@ void vtkBoundParticleTracer::CheckVectorsUnits()
   I.UnitsMismatchedVectors.clear();
   I.UnitsFittingVectors.clear();
   I.UnitsReason.clear();
-  if (inInfo && this->AutomaticTimeLine(inputTimes))
+  // In situ the time line advances with each step given: nothing to probe ahead.
+  if (inInfo && !bpvtk::offersOnlyPresent(inInfo) && this->AutomaticTimeLine(inputTimes))
   {
     this->PreferFittingVectors(inInfo, inputTimes);
   }
@@ -235,6 +236,17 @@ void vtkBoundParticleTracer::CheckVectorsUnits()
 void vtkBoundParticleTracer::PreferFittingVectors(
   vtkInformation* inInfo, const std::vector<double>& inputTimes)
 {
+  // A mesh is resampled for one array only: images and rectilinear grids.
+  auto fieldOf = [](vtkDataObject* data)
+  {
+    return vtkImageData::SafeDownCast(data)
+      ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(data))
+      : vtkRectilinearGrid::SafeDownCast(data);
+  };
+  if (!fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    return;
+  }
   // The input whole at its first time step, as the time line's probe reads it.
   using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
@@ -247,13 +259,10 @@ void vtkBoundParticleTracer::PreferFittingVectors(
     inInfo->Set(SDDP::UPDATE_TIME_STEP(), inputTimes.front());
   }
   connection->GetProducer()->Update(connection->GetIndex());
-  vtkDataObject* data = inInfo->Get(vtkDataObject::DATA_OBJECT());
-  vtkDataSet* field = vtkImageData::SafeDownCast(data)
-    ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(data))
-    : vtkRectilinearGrid::SafeDownCast(data);
+  vtkDataSet* field = fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT()));
   if (!field)
   {
-    return; // a mesh is resampled for one array only
+    return;
   }
   std::vector<std::string> names;
   int active = -1;
