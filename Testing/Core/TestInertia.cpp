@@ -323,6 +323,22 @@ TEST(Inertia, BadSettingsAreRefusedByName)
   EXPECT_EQ(bp::settingAsFloat(-1e39), -std::numeric_limits<float>::infinity());
   EXPECT_EQ(bp::settingAsFloat(3e38), 3e38f);
   EXPECT_TRUE(std::isnan(bp::settingAsFloat(std::nan(""))));
+  // Below float's smallest (issue 53): the sign and "not 0" stay, so a tiny
+  // negative response time is refused as -1e-40 is, and a tiny positive one
+  // is a response time (noted as nearly massless), not none.
+  for (const double tiny : { 1e-46, 1e-300, 5e-324 })
+  {
+    EXPECT_EQ(bp::settingAsFloat(tiny), std::numeric_limits<float>::denorm_min()) << tiny;
+    EXPECT_EQ(bp::settingAsFloat(-tiny), -std::numeric_limits<float>::denorm_min()) << tiny;
+    q = p;
+    q.responseTime = bp::settingAsFloat(-tiny);
+    EXPECT_NE(refusal(q).find("ResponseTime"), std::string::npos) << -tiny;
+    q.responseTime = bp::settingAsFloat(tiny);
+    EXPECT_TRUE(bp::carriesInertia(q)) << tiny;
+    EXPECT_TRUE(bp::nearlyMassless(q, 1e-30)) << tiny;
+  }
+  EXPECT_EQ(bp::settingAsFloat(0.0), 0.0f);
+  EXPECT_EQ(bp::settingAsFloat(1e-40), 1e-40f);
   q = p;
   q.responseTime = bp::settingAsFloat(1e39);
   EXPECT_NE(refusal(q).find("ResponseTime"), std::string::npos);

@@ -383,6 +383,19 @@ CASES = {
     "Response Time far below the step": (
         lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=1e-9, Gravity=[0, 0, -1e6]),
         1.0, "close to massless", lambda r: r["points"] > 0),
+    # Issue 53: below float's smallest a response time keeps its sign.
+    "Response Time -1e-46": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1e-46), 1.0, "ResponseTime",
+        lambda r: r["points"] == 0),
+    "Response Time -1e-300": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1e-300), 1.0,
+        "ResponseTime", lambda r: r["points"] == 0),
+    "Response Time 5e-324": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=5e-324), 1.0,
+        "close to massless", lambda r: r["points"] > 0),
+    "Response Time 1e-300": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=1e-300), 1.0,
+        "close to massless", lambda r: r["points"] > 0),
     "seeds with Linking": (
         lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
         "Seed Source is not used", lambda r: r["points"] > 0),
