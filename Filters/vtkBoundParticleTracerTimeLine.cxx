@@ -43,8 +43,13 @@ int vtkBoundParticleTracer::RequestInformation(
     (automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT())
     ? this->ProbeField(inInfo, inputTimes)
     : bpvtk::FieldProbe();
-  const bp::TimeLine line =
-    this->ResolveTimeLine(inputTimes, automatic ? probe.scale : bp::TimeScale());
+  bp::TimeScale scale = automatic ? probe.scale : bp::TimeScale();
+  if (automatic && probe.read)
+  {
+    // Heavy particles settle: the time line follows gravity where it is faster.
+    scale.gravitySpeed = bp::gravityMotion(config.trace.engine, probe.facts).speed;
+  }
+  const bp::TimeLine line = this->ResolveTimeLine(inputTimes, scale);
   const std::string error =
     I.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
   if (!error.empty())

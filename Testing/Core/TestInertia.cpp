@@ -379,3 +379,40 @@ TEST(Inertia, SettlingDistanceIsFreeFallEarlyAndTerminalLate)
   p.inertia = bp::Inertia::None;
   EXPECT_EQ(bp::settlingDistance(p, 1.0), 0.0);
 }
+
+TEST(Inertia, SettlingTimeAndSpeedAcrossALength)
+{
+  bp::Parameters p;
+  p.inertia = bp::Inertia::MaxeyRiley;
+  p.responseTime = 0.5f;
+  p.densityRatio = 2.0f;     // beta = 0.6
+  p.gravity = { 0, -3, -4 }; // |g| = 5: terminal 1, a = 2
+  for (const double length : { 1e-6, 0.3, 1.0, 1e3 })
+  {
+    const double t = bp::settlingTime(p, length);
+    EXPECT_NEAR(bp::settlingDistance(p, t), length, 1e-9 * length) << length;
+    EXPECT_NEAR(
+      bp::settlingSpeedAfter(p, t), bp::terminalSettlingSpeed(p) * (1.0 - std::exp(-t / 0.5)), 1e-9)
+      << length;
+  }
+  // Far: at the terminal speed, behind it by tau; near: free fall.
+  EXPECT_NEAR(bp::settlingTime(p, 1e3), 1e3 + 0.5, 1e-6 * 1e3); // beta is a float
+  EXPECT_NEAR(bp::settlingTime(p, 1e-6), std::sqrt(2.0 * 1e-6 / 2.0), 1e-3 * 1e-3);
+  p.responseTime = 1e30f;
+  EXPECT_NEAR(bp::settlingSpeedAfter(p, bp::settlingTime(p, 1.0)), 2.0, 1e-6);
+  // Nothing settles: no gravity, neutral buoyancy, no inertia, not finite.
+  p.responseTime = 0.5f;
+  bp::Parameters q = p;
+  q.gravity = { 0, 0, 0 };
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  q = p;
+  q.densityRatio = 1.0f;
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  q = p;
+  q.inertia = bp::Inertia::None;
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  EXPECT_EQ(bp::settlingSpeedAfter(q, 1.0), 0.0);
+  q = p;
+  q.gravity[1] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+}

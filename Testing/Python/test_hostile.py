@@ -396,6 +396,19 @@ CASES = {
     "Response Time 1e-300": (
         lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=1e-300), 1.0,
         "close to massless", lambda r: r["points"] > 0),
+    # Heavy elements in still fluid and in noise: they settle in the box,
+    # stepped by their settling; nothing says they will not move or blames
+    # Gravity (the noise's step of 4e10 threw them 3.5e9 out of it).
+    "heavy elements in 1e-12 noise": (
+        lambda: tracer(scaled_flow(1e-12), Vectors=["POINTS", "v"], Inertia="Maxey-Riley",
+                       ResponseTime=0.05, Gravity=[0, 0, -2]), float("inf"), None,
+        lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"]) and
+        not r["messages"]),
+    "heavy elements in still fluid": (
+        lambda: tracer(scaled_flow(0.0), Vectors=["POINTS", "v"], Inertia="Maxey-Riley",
+                       ResponseTime=0.05, Gravity=[0, 0, -2]), float("inf"), None,
+        lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"]) and
+        not r["messages"]),
     "seeds with Linking": (
         lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
         "Seed Source is not used", lambda r: r["points"] > 0),

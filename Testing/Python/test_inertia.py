@@ -17,6 +17,8 @@
   Surface display shows.
 - On a flat field (2D data) heavy particles stay in the plane: Gravity's
   component across it is dropped with a warning, on both engines.
+- Heavy particles in still fluid and in 1e-12 of noise: the automatic step
+  follows their settling, they settle inside the box, and nothing is said.
 - A state file brings the settings back; the Python trace records them.
 """
 import math
@@ -155,6 +157,43 @@ gravity = [m for m in said.messages if UNITS in m]
 bptest.check(len(gravity) == 1 and "-127138" in gravity[0],
              "gravity out of the data's units is said once: %s" % said.messages)
 settling.Gravity = [0, 0, g]
+
+# Heavy particles in still fluid and in noise (issue 53): the automatic step
+# follows their settling (a particle falls half a cell a step), so they
+# settle inside the box. The noise's own step was 4e10, which threw every
+# particle far out of it, with a warning that blamed Gravity's units; the
+# still field said that nothing would move.
+noise = Calculator(Input=vortex, ResultArrayName="noise", Function="velocity*1e-12")
+cell = (bounds[1] - bounds[0]) / 16.0
+for name, fluid in (("still", still), ("noise", noise)):
+    automatic = BoundParticleTracer(Input=fluid, Vectors=["POINTS", name], ElementShape="Point",
+                                    NumberOfElements=40, Seed=4, Inertia="Maxey-Riley",
+                                    ResponseTime=tau, DensityRatio=2.65, Gravity=[0, 0, g],
+                                    OutputArrays=["SlipVelocity"])
+    with bptest.CapturedMessages() as said:
+        automatic.UpdatePipelineInformation()
+        end = automatic.TimestepValues[-1]
+        data = bptest.fetch(automatic, end)
+    automatic.UpdatePropertyInformation()
+    step = automatic.GetPropertyValue("ResolvedTimeStep")
+    settled = points(data)
+    inside = len(settled) == 40 and np.all(np.isfinite(settled)) and all(
+        bounds[2 * a] - cell <= settled[:, a].min() and
+        settled[:, a].max() <= bounds[2 * a + 1] + cell for a in range(3))
+    slip = (np.median(bptest.point_array(data, "SlipVelocity")[:, 2]) if len(settled)
+            else float("nan"))
+    print("%s fluid: step %.4g (falls %.4g cells), end %.4g, median slip %.5f (terminal %.5f); %s"
+          % (name, step, step * abs(terminal) / cell, end, slip, terminal, said.messages))
+    bptest.check(abs(step * abs(terminal) - 0.5 * cell) < 0.01 * cell,
+                 "%s fluid: the automatic step lets a settling particle fall half a cell "
+                 "(%.4g cells)" % (name, step * abs(terminal) / cell))
+    bptest.check(inside and abs(slip - terminal) < 0.01 * abs(terminal),
+                 "%s fluid: the particles settle at the terminal velocity inside the box "
+                 "(median slip %.5f; bounds %s)" % (name, slip, data.GetBounds()))
+    bptest.check(not said.messages, "%s fluid: nothing said of heavy particles settling: %s" %
+                 (name, said.messages))
+    Delete(automatic)
+Delete(noise)
 
 # The plugin's own double gyre with every tracer default, and the user guide's
 # heavy particles over it, say nothing (its flow crossing 13% of the coarse
