@@ -199,6 +199,27 @@ def seeded(kind, **seed_properties):
     return made
 
 
+def reloaded(made, edits=None):
+    """The tracer `made` saved in a state file (its values replaced by the
+    texts in `edits`, by property name), the session reset and the file
+    loaded again, as a user reopens a saved state."""
+    import re
+    path = os.path.join(args.scratch, "state-%d.pvsm" % os.getpid())
+    SaveState(path)  # noqa: F405
+    with open(path) as f:
+        text = f.read()
+    for name, value in (edits or {}).items():
+        text = re.sub(r'(name="%s"[^>]*>\s*<Element index="0" value=")[^"]*(")' % name,
+                      r"\g<1>%s\g<2>" % value, text)
+    with open(path, "w") as f:
+        f.write(text)
+    ResetSession()  # noqa: F405
+    LoadPlugin(args.plugin, ns=globals())  # noqa: F405
+    LoadState(path)  # noqa: F405
+    return [s for s in GetSources().values()  # noqa: F405
+            if s.GetXMLName() == "BoundParticleTracer"][0]
+
+
 def gpu_display(template_points):
     """The Bound Particles display with the GPU engine and a sphere of about
     `template_points` points as the element."""
@@ -409,6 +430,16 @@ CASES = {
                        ResponseTime=0.05, Gravity=[0, 0, -2]), float("inf"), None,
         lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"]) and
         not r["messages"]),
+    # State files whose values ParaView's loading reads as 0 (issue 53).
+    "NaN Response Time (state file)": (
+        lambda: reloaded(tracer(flow(), Inertia="Maxey-Riley", ResponseTime=float("nan"))),
+        1.0, "the value 'NaN'", lambda r: r["points"] == 0 and any(
+            "ResponseTime (the particles' response time" in m for m in r["messages"])),
+    "Inertia as text (state file)": (
+        lambda: reloaded(tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1.0),
+                         {"Inertia": "Maxey-Riley"}), 1.0, "the value 'Maxey-Riley'",
+        lambda r: r["points"] == 0 and any(
+            "ResponseTime (the particles' response time" in m for m in r["messages"])),
     "seeds with Linking": (
         lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
         "Seed Source is not used", lambda r: r["points"] > 0),
