@@ -177,6 +177,10 @@ int vtkSMBoundParticleTracerProxy::LoadXMLState(
       continue;
     }
     vtkSMProperty* property = this->GetProperty(name);
+    if (property && property->GetInformationOnly())
+    {
+      continue; // the tracer's own report (ResolvedTimeStep...), not a setting
+    }
     for (unsigned int e = 0; property && e < propertyElement->GetNumberOfNestedElements(); ++e)
     {
       vtkPVXMLElement* value = propertyElement->GetNestedElement(e);
