@@ -119,11 +119,12 @@ bool vtkBoundParticleTracerInternals::needMoreGhostLayers(
     return false;
   }
   // Enough ghost layers for an element and a step at twice the start's
-  // largest speed (an unsteady flow may speed up); if the pieces in hand
-  // have fewer, ask for them again with more. Every process computes the
-  // same number from the same global values.
-  const int needed = bp::ghostCellsNeeded(
-    resolved.elementSize, 2.0 * facts.maxSpeed, resolved.dt, this->Layout.DomainSmallestCell);
+  // largest speed (an unsteady flow may speed up; heavy particles settle at
+  // up to gravity's speed); if the pieces in hand have fewer, ask for them
+  // again with more. Every process computes the same number from the same
+  // global values.
+  const int needed = bp::ghostCellsNeeded(resolved.elementSize,
+    2.0 * std::max(facts.maxSpeed, resolved.speed), resolved.dt, this->Layout.DomainSmallestCell);
   if (needed <= this->Layout.GhostCells)
   {
     return false;

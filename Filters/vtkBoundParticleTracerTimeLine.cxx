@@ -57,8 +57,13 @@ int vtkBoundParticleTracer::RequestInformation(
   // Before Vectors is chosen (a tracer just made, whose default comes next:
   // vtkSMBoundParticleVectorsDomain) its warnings wait for an update.
   const bool unchosen = config.vectors.name.empty();
-  const bp::TimeLine line =
-    this->ResolveTimeLine(inputTimes, automatic ? probe.scale : bp::TimeScale(), unchosen);
+  bp::TimeScale scale = automatic ? probe.scale : bp::TimeScale();
+  if (automatic && probe.read)
+  {
+    // Heavy particles settle: the time line follows gravity where it is faster.
+    scale.gravitySpeed = bp::gravityMotion(config.trace.engine, probe.facts).speed;
+  }
+  const bp::TimeLine line = this->ResolveTimeLine(inputTimes, scale, unchosen);
   const std::string error =
     I.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
   if (!error.empty())

@@ -203,16 +203,25 @@ constexpr std::uint32_t NoTrailPose = 0xffffffffu;
 
 /// A setting given in double as the engine's float: beyond float's range it
 /// is +-infinity, which validate() refuses by name, where a plain float(v)
-/// would be undefined behaviour (NaN stays NaN).
+/// would be undefined behaviour (NaN stays NaN). Below float's smallest
+/// (1.4e-45) a value that is not 0 keeps its sign and stays non-zero, as the
+/// smallest float of that sign: -1e-300 is refused as negative where a
+/// plain float(v) would give -0, and 1e-300 is a response time, not none.
 inline float settingAsFloat(double v)
 {
   constexpr double Largest = std::numeric_limits<float>::max();
   constexpr float Infinity = std::numeric_limits<float>::infinity();
+  constexpr float Smallest = std::numeric_limits<float>::denorm_min();
   if (std::abs(v) > Largest)
   {
     return v > 0 ? Infinity : -Infinity;
   }
-  return float(v);
+  const float f = float(v);
+  if (f == 0.0f && v != 0.0)
+  {
+    return v > 0 ? Smallest : -Smallest;
+  }
+  return f;
 }
 
 /// Whether a step starting at `t` records a trail pose first: t is within

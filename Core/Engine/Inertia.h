@@ -241,6 +241,47 @@ inline double settlingDistance(const Parameters& p, double t)
   return terminalSettlingSpeed(p) * (t + tau * std::expm1(-x));
 }
 
+/// How long gravity alone takes to carry a particle `length` in still fluid
+/// from rest (settlingDistance(p, t) = length); 0 where it does not carry it
+/// (no inertia, no gravity, a neutrally buoyant particle) or the settings
+/// are not finite (validate() refuses those).
+inline double settlingTime(const Parameters& p, double length)
+{
+  const double terminal = terminalSettlingSpeed(p);
+  if (!(length > 0.0) || !(terminal > 0.0) || !std::isfinite(terminal) || !std::isfinite(length))
+  {
+    return 0.0;
+  }
+  // Free fall is the fastest: t is at least sqrt(2 length / a), and at most
+  // length / terminal + tau (the terminal's distance lags it by under tau).
+  const double a = terminal / double(p.responseTime);
+  double lo = std::sqrt(2.0 * length / a);
+  double hi = lo;
+  for (int k = 0; k < 2100 && settlingDistance(p, hi) < length; ++k)
+  {
+    lo = hi;
+    hi *= 2.0;
+  }
+  for (int k = 0; k < 64 && lo < hi; ++k)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (settlingDistance(p, mid) < length ? lo : hi) = mid;
+  }
+  return std::isfinite(hi) ? hi : 0.0;
+}
+
+/// The speed gravity gives a particle in still fluid after `t` from rest:
+/// the terminal settling speed times 1 - exp(-t / tau) (free fall's a t for
+/// t far below tau).
+inline double settlingSpeedAfter(const Parameters& p, double t)
+{
+  if (!(t > 0.0) || !carriesInertia(p))
+  {
+    return 0.0;
+  }
+  return -terminalSettlingSpeed(p) * std::expm1(-t / double(p.responseTime));
+}
+
 /// A step far above tau makes the trace nearly massless: the slip relaxes to
 /// its terminal in under a thousandth of a step. The tracer notes it.
 inline bool nearlyMassless(const Parameters& p, double h)

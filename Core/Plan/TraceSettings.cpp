@@ -144,12 +144,18 @@ std::string resolveLattice(const TraceSettings& s, const FieldFacts& f, Resoluti
   return std::string();
 }
 
-/// The time the fastest flow takes to cross the field's longest side; 0 for a still field.
-double crossingTime(const FieldFacts& f)
+double longestSide(const FieldFacts& f)
 {
-  const double longest =
-    std::max({ f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
-  return f.maxSpeed > 0.0 && longest > 0.0 ? longest / f.maxSpeed : 0.0;
+  return std::max(
+    { f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
+}
+
+/// The time the top speed (Resolution::speed) takes to cross the field's
+/// longest side; 0 where nothing moves.
+double crossingTime(const FieldFacts& f, double speed)
+{
+  const double longest = longestSide(f);
+  return speed > 0.0 && longest > 0.0 ? longest / speed : 0.0;
 }
 
 /// (0, 0) picks half to all of T: the time the fastest flow takes to cross
@@ -162,7 +168,7 @@ std::string resolveLifetimes(const TraceSettings& s, const FieldFacts& f, Resolu
   const bool automatic = lifetime[0] == 0.0 && lifetime[1] == 0.0;
   if (automatic)
   {
-    const double crossing = crossingTime(f);
+    const double crossing = crossingTime(f, r.speed);
     double scale = f.timeSpan > 0.0 ? f.timeSpan : 100.0 * r.dt;
     scale = crossing > 0.0 ? std::min(scale, crossing) : scale;
     lifetime[0] = 0.5 * scale;
@@ -276,13 +282,24 @@ std::string unitsPerInterval(const std::vector<double>& inputTimes, const TimeSc
 }
 
 /// Gravity's settling over the longest lifetime, when it carries a particle
-/// more than GravityWarningFields times the field's longest side.
-void checkGravityUnits(const FieldFacts& f, Resolution& r)
+/// more than GravityWarningFields times the field's longest side. Automatic
+/// lifetimes follow gravity where it is faster than the flow, so there it is
+/// the settling over the time the flow takes to cross the field (about the
+/// settling speed over the flow's, in fields); in still fluid (a flow
+/// StillFlowRatio times slower than gravity's motion, or none) settling is
+/// what heavy particles do, and nothing is said.
+void checkGravityUnits(
+  const TraceSettings& s, const FieldFacts& f, const GravityMotion& motion, Resolution& r)
 {
   const Parameters& p = r.parameters;
-  const double longest =
-    std::max({ f.bounds[1] - f.bounds[0], f.bounds[3] - f.bounds[2], f.bounds[5] - f.bounds[4] });
-  const double settling = settlingDistance(p, p.lifetimeMax);
+  const double longest = longestSide(f);
+  const bool automatic = s.lifetimeRange[0] == 0.0 && s.lifetimeRange[1] == 0.0;
+  if (automatic && !(f.maxSpeed * StillFlowRatio > motion.speed))
+  {
+    return;
+  }
+  const double over = automatic ? crossingTime(f, f.maxSpeed) : double(p.lifetimeMax);
+  const double settling = settlingDistance(p, over);
   // A gravity that is not finite is refused by validate(), with its own message.
   if (!(longest > 0.0) || !(settling > GravityWarningFields * longest) || !std::isfinite(settling))
   {
@@ -290,8 +307,10 @@ void checkGravityUnits(const FieldFacts& f, Resolution& r)
   }
   std::ostringstream w;
   w << "Gravity (" << p.gravity[0] << ", " << p.gravity[1] << ", " << p.gravity[2]
-    << ") alone carries a particle " << settling << " over its longest lifetime (" << p.lifetimeMax
-    << "), " << std::round(std::min(settling / longest, 1e12))
+    << ") alone carries a particle " << settling
+    << (automatic ? " in the time the flow takes to cross the field ("
+                  : " over its longest lifetime (")
+    << over << "), " << std::round(std::min(settling / longest, 1e12))
     << " times the field's longest side (" << longest << "; Response Time " << p.responseTime
     << " and Density Ratio " << p.densityRatio << " settle it at " << terminalSettlingSpeed(p)
     << "): Gravity may not be in the data's units, length per time unit squared (9.81 m/s^2 "
@@ -347,6 +366,24 @@ EmitterBox emitterInChangedField(
   return box;
 }
 
+GravityMotion gravityMotion(const Parameters& engine, const FieldFacts& field)
+{
+  Parameters p = engine;
+  for (int a = 0; a < 3; ++a)
+  {
+    // As resolveGravity: a flat field's elements do not fall across its plane.
+    p.gravity[a] = field.dims[a] <= 1 ? 0.0f : p.gravity[a];
+  }
+  GravityMotion motion;
+  motion.time = settlingTime(p, longestSide(field));
+  motion.speed = settlingSpeedAfter(p, motion.time);
+  if (!(motion.speed > 0.0) || !std::isfinite(motion.speed))
+  {
+    motion = GravityMotion();
+  }
+  return motion;
+}
+
 Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
 {
   Resolution r;
@@ -354,7 +391,11 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   {
     return failure("StepSize must be positive (it is " + std::to_string(s.stepSize) + ").");
   }
-  double speed = f.maxSpeed;
+  // Heavy particles move by gravity too: the step and automatic lifetimes
+  // follow the faster of the two (settling through still fluid, or noise).
+  const GravityMotion motion = gravityMotion(s.engine, f);
+  double speed = std::max(f.maxSpeed, motion.speed);
+  r.speed = speed;
   if (!(speed > 0.0))
   {
     r.warnings.push_back("The vector field is zero everywhere at the start time; elements will "
@@ -436,7 +477,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
   {
     return failure(lifetimeError);
   }
-  checkGravityUnits(f, r);
+  checkGravityUnits(s, f, motion, r);
   if (nearlyMassless(r.parameters, r.dt))
   {
     std::ostringstream w;
@@ -456,8 +497,10 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
   line.framesPerInterval = std::max(framesPerInterval, 1);
   const bool unsteady = inputTimes.size() >= 2;
   const bool automatic = unsteady ? framesPerInterval <= 0 : duration <= 0.0;
+  // The flow's top speed, or gravity's motion of heavy particles where faster.
+  const double speed = scale.speed();
   const double dt = !scale.valid() ? 0.0
-    : stepInCellLengths            ? stepSize * scale.cellLength / scale.maxSpeed
+    : stepInCellLengths            ? stepSize * scale.cellLength / speed
                                    : stepSize;
   const bool stepKnown = dt > 0.0 && std::isfinite(dt);
   if (automatic && !unsteady)
@@ -466,7 +509,7 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
     if (stepKnown)
     {
       // A step the user gave in time units is theirs: no cap on the steps.
-      const double crossings = AutomaticCrossings * scale.extent / scale.maxSpeed;
+      const double crossings = AutomaticCrossings * scale.extent / speed;
       const double framed = FrameSteps * std::max(count - 1, 1) * dt;
       line.duration = stepInCellLengths ? std::min(crossings, framed) : crossings;
     }
@@ -516,7 +559,7 @@ TimeLine resolveTimeLine(double duration, int framesPerInterval, int count, doub
       << "): the velocity's units may not match the grid's (e.g. m/s on a grid in degrees or "
          "kilometres). Check the units, or set Step Size in Cell Length.";
   }
-  else if (span > 0.0 && scale.maxSpeed * span < scale.cellLength)
+  else if (span > 0.0 && speed * span < scale.cellLength)
   {
     w << "At the field's top speed (" << scale.maxSpeed << ") an element moves less than one cell ("
       << scale.cellLength << ") over the whole time range (" << span

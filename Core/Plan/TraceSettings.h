@@ -78,10 +78,33 @@ struct FieldFacts
   double timeSpan = 0.0;                               ///< the offered time range's length
 };
 
+/// How gravity moves heavy particles across the field in still fluid
+/// (Inertia.h's settling, with Gravity in the plane of a flat field): the
+/// time it takes to carry a particle from rest across the field's longest
+/// side, and the speed it has then (the terminal settling speed where that
+/// takes longer than the response time, free fall's sqrt(2 a length) where
+/// it is far shorter). Both 0 where gravity moves nothing.
+struct GravityMotion
+{
+  double time = 0.0;
+  double speed = 0.0;
+};
+GravityMotion gravityMotion(const Parameters& engine, const FieldFacts& field);
+
+/// A flow this many times slower than gravity's motion is still fluid for
+/// heavy particles (float's resolution: next to the settling the flow is
+/// rounding noise): their settling is what the trace is about, and no
+/// warning calls Gravity out of the data's units.
+constexpr double StillFlowRatio = 1.0 / 1.1920928955078125e-07;
+
 struct Resolution
 {
   Parameters parameters;
   double dt = 0.0;          ///< the largest step, in time units
+  /// The top speed the automatic step and lifetimes follow: the flow's, or
+  /// gravity's motion of heavy particles (GravityMotion) where it is faster;
+  /// 0 where nothing moves (the step is then taken at a speed of 1).
+  double speed = 0.0;
   double elementSize = 0.0; ///< world units
   std::vector<std::string> warnings;
   std::string error; ///< non-empty: what the user should fix (nothing else is set)
@@ -121,7 +144,12 @@ struct TimeScale
   double typicalSpeed = 0.0; ///< VectorField::typicalSpeed of it (0: not known)
   double extent = 0.0;       ///< the field's longest side (over axes with cells)
   double cellLength = 0.0;   ///< the mean cell length, as FieldFacts::cellLength
-  bool valid() const { return maxSpeed > 0.0 && extent > 0.0 && cellLength > 0.0; }
+  /// Heavy particles: gravity's motion across the field (GravityMotion::speed);
+  /// the time line follows it where it is faster than the flow. 0 without.
+  double gravitySpeed = 0.0;
+  /// The top speed the time line follows: the flow's or gravity's.
+  double speed() const { return maxSpeed > gravitySpeed ? maxSpeed : gravitySpeed; }
+  bool valid() const { return speed() > 0.0 && extent > 0.0 && cellLength > 0.0; }
 };
 
 /// The time line the tracer offers the animation.

@@ -323,6 +323,22 @@ TEST(Inertia, BadSettingsAreRefusedByName)
   EXPECT_EQ(bp::settingAsFloat(-1e39), -std::numeric_limits<float>::infinity());
   EXPECT_EQ(bp::settingAsFloat(3e38), 3e38f);
   EXPECT_TRUE(std::isnan(bp::settingAsFloat(std::nan(""))));
+  // Below float's smallest (issue 53): the sign and "not 0" stay, so a tiny
+  // negative response time is refused as -1e-40 is, and a tiny positive one
+  // is a response time (noted as nearly massless), not none.
+  for (const double tiny : { 1e-46, 1e-300, 5e-324 })
+  {
+    EXPECT_EQ(bp::settingAsFloat(tiny), std::numeric_limits<float>::denorm_min()) << tiny;
+    EXPECT_EQ(bp::settingAsFloat(-tiny), -std::numeric_limits<float>::denorm_min()) << tiny;
+    q = p;
+    q.responseTime = bp::settingAsFloat(-tiny);
+    EXPECT_NE(refusal(q).find("ResponseTime"), std::string::npos) << -tiny;
+    q.responseTime = bp::settingAsFloat(tiny);
+    EXPECT_TRUE(bp::carriesInertia(q)) << tiny;
+    EXPECT_TRUE(bp::nearlyMassless(q, 1e-30)) << tiny;
+  }
+  EXPECT_EQ(bp::settingAsFloat(0.0), 0.0f);
+  EXPECT_EQ(bp::settingAsFloat(1e-40), 1e-40f);
   q = p;
   q.responseTime = bp::settingAsFloat(1e39);
   EXPECT_NE(refusal(q).find("ResponseTime"), std::string::npos);
@@ -362,4 +378,41 @@ TEST(Inertia, SettlingDistanceIsFreeFallEarlyAndTerminalLate)
   EXPECT_NEAR(bp::settlingDistance(p, 2.0), 0.4 * 5.0 * 2.0, 1e-6 * 4.0);
   p.inertia = bp::Inertia::None;
   EXPECT_EQ(bp::settlingDistance(p, 1.0), 0.0);
+}
+
+TEST(Inertia, SettlingTimeAndSpeedAcrossALength)
+{
+  bp::Parameters p;
+  p.inertia = bp::Inertia::MaxeyRiley;
+  p.responseTime = 0.5f;
+  p.densityRatio = 2.0f;     // beta = 0.6
+  p.gravity = { 0, -3, -4 }; // |g| = 5: terminal 1, a = 2
+  for (const double length : { 1e-6, 0.3, 1.0, 1e3 })
+  {
+    const double t = bp::settlingTime(p, length);
+    EXPECT_NEAR(bp::settlingDistance(p, t), length, 1e-9 * length) << length;
+    EXPECT_NEAR(
+      bp::settlingSpeedAfter(p, t), bp::terminalSettlingSpeed(p) * (1.0 - std::exp(-t / 0.5)), 1e-9)
+      << length;
+  }
+  // Far: at the terminal speed, behind it by tau; near: free fall.
+  EXPECT_NEAR(bp::settlingTime(p, 1e3), 1e3 + 0.5, 1e-6 * 1e3); // beta is a float
+  EXPECT_NEAR(bp::settlingTime(p, 1e-6), std::sqrt(2.0 * 1e-6 / 2.0), 1e-3 * 1e-3);
+  p.responseTime = 1e30f;
+  EXPECT_NEAR(bp::settlingSpeedAfter(p, bp::settlingTime(p, 1.0)), 2.0, 1e-6);
+  // Nothing settles: no gravity, neutral buoyancy, no inertia, not finite.
+  p.responseTime = 0.5f;
+  bp::Parameters q = p;
+  q.gravity = { 0, 0, 0 };
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  q = p;
+  q.densityRatio = 1.0f;
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  q = p;
+  q.inertia = bp::Inertia::None;
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
+  EXPECT_EQ(bp::settlingSpeedAfter(q, 1.0), 0.0);
+  q = p;
+  q.gravity[1] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(bp::settlingTime(q, 1.0), 0.0);
 }

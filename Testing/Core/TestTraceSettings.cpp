@@ -78,7 +78,8 @@ TEST(TraceSettings, GravityFarOutOfTheDatasUnitsIsSaid)
         return w;
     return std::string();
   };
-  // 9.81 m/s^2 as 1.27e5 km/h^2 settles particles ~370 fields over a lifetime.
+  // 9.81 m/s^2 as 1.27e5 km/h^2 settles particles ~540 fields in the time the
+  // flow takes to cross the field (automatic lifetimes follow the settling).
   s.engine.gravity = { 0, 0, -127137.6f };
   const std::string wrong = said();
   EXPECT_NE(wrong.find("Gravity (0, 0, -127138)"), std::string::npos) << wrong;
@@ -115,6 +116,70 @@ TEST(TraceSettings, ZeroFieldWarnsAndStepsAsAtUnitSpeed)
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("zero everywhere"), std::string::npos);
   EXPECT_DOUBLE_EQ(r.dt, 0.5 * 0.5);
+}
+
+TEST(TraceSettings, HeavyParticlesInStillOrNoisyFluidStepByTheirSettling)
+{
+  // Issue 53: on a field of 1e-12 noise the step followed the noise (3e10)
+  // and threw every particle far out of the unit box, with a warning that
+  // blamed Gravity's units; on a zero field the tracer said nothing would move.
+  bp::FieldFacts f;
+  f.bounds = { 0, 1, 0, 1, 0, 1 };
+  f.dims = { 17, 17, 17 };
+  f.cellLength = 1.0 / 16.0;
+  f.timeSpan = 50.0;
+  bp::TraceSettings s;
+  s.engine.inertia = bp::Inertia::MaxeyRiley;
+  s.engine.responseTime = 0.05f;
+  s.engine.densityRatio = 1000.0f;
+  s.engine.gravity = { 0, 0, -2 };
+  const double terminal = bp::terminalSettlingSpeed(s.engine); // about 0.1
+  for (const double noise : { 0.0, 1e-12, 1e-9 })
+  {
+    f.maxSpeed = noise;
+    const bp::Resolution r = bp::resolveSettings(s, f);
+    ASSERT_EQ(r.error, "") << noise;
+    EXPECT_TRUE(r.warnings.empty()) << noise << ": " << r.warnings.front();
+    // A settling particle moves at most StepSize cells a step (it falls
+    // across the field in 1 / 0.1 = 10, two hundred times its response
+    // time: at the terminal speed within 1e-80).
+    EXPECT_NEAR(r.dt * terminal, s.stepSize * f.cellLength, 1e-9 * f.cellLength) << noise;
+    EXPECT_NEAR(r.speed, terminal, 1e-9 * terminal);
+    // Automatic lifetimes: the time it takes to fall across the field.
+    EXPECT_NEAR(r.parameters.lifetimeMax, 1.0 / terminal, 1e-5 / terminal) << noise;
+  }
+  // A flow faster than the settling sets the step, as without gravity.
+  f.maxSpeed = 2.0;
+  EXPECT_DOUBLE_EQ(bp::resolveSettings(s, f).dt, 0.5 / 16.0 / 2.0);
+  // Far above the trace's times the response time is free fall: the speed
+  // after falling across the field, sqrt(2 (1 - beta) |g| L).
+  f.maxSpeed = 1e-12;
+  s.engine.responseTime = 1e30f;
+  const double fall = std::sqrt(2.0 * (1.0 - bp::addedMassFactor(1000.0f)) * 2.0 * 1.0);
+  EXPECT_NEAR(bp::resolveSettings(s, f).dt, 0.5 / 16.0 / fall, 1e-6 * 0.5 / 16.0 / fall);
+  // Massless, neutrally buoyant, or without gravity: a zero field is still, and said to be.
+  s.engine.responseTime = 0.05f;
+  f.maxSpeed = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    bp::TraceSettings still = s;
+    if (k == 0)
+    {
+      still.engine.inertia = bp::Inertia::None;
+    }
+    else if (k == 1)
+    {
+      still.engine.densityRatio = 1.0f;
+    }
+    else
+    {
+      still.engine.gravity[2] = 0.0f;
+    }
+    const bp::Resolution r = bp::resolveSettings(still, f);
+    ASSERT_EQ(r.warnings.size(), 1u) << k;
+    EXPECT_NE(r.warnings[0].find("zero everywhere"), std::string::npos) << k;
+    EXPECT_DOUBLE_EQ(r.dt, 0.5 / 16.0) << k;
+  }
 }
 
 TEST(TraceSettings, AutomaticElementSizeIsTwoCellsOrADiagonalFortieth)
@@ -345,6 +410,28 @@ TEST(TimeLine, AutomaticDurationCrossesTheFieldFiveTimesWithinTenStepsAFrame)
   EXPECT_DOUBLE_EQ(bp::resolveTimeLine(7.0, 0, 101, 0.5, true, {}, scaleOfBox()).duration, 7.0);
   EXPECT_DOUBLE_EQ(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, bp::TimeScale()).duration,
     bp::FallbackDuration);
+}
+
+TEST(TimeLine, HeavyParticlesInNoisyFluidGetATimeLineOfTheirSettling)
+{
+  // A unit box of 16 cells with 1e-12 of noise: the flow alone would make a
+  // step of 3e10 and a Duration of 3e13. Heavy particles falling across it
+  // at 0.1 make five crossings, 50, within 100 frames of 10 steps (312.5).
+  bp::TimeScale scale;
+  scale.maxSpeed = 1e-12;
+  scale.extent = 1.0;
+  scale.cellLength = 1.0 / 16.0;
+  scale.gravitySpeed = 0.1;
+  bp::TimeLine line = bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, scale);
+  EXPECT_NEAR(line.duration, 50.0, 1e-9);
+  EXPECT_TRUE(line.warnings.empty()) << line.warnings.front();
+  // A still field (nothing probed moving) is timed by the settling alone.
+  scale.maxSpeed = 0.0;
+  EXPECT_NEAR(bp::resolveTimeLine(0.0, 0, 101, 0.5, true, {}, scale).duration, 50.0, 1e-9);
+  // An unsteady input: frames of 10 steps of the settling's step (0.3125).
+  line = bp::resolveTimeLine(0.0, 0, 2, 0.5, true, { 0.0, 1000.0 }, scale);
+  EXPECT_EQ(line.framesPerInterval, 320);
+  EXPECT_TRUE(line.warnings.empty()) << line.warnings.front();
 }
 
 TEST(TimeLine, AutomaticFramesKeepEachWithinTenSteps)

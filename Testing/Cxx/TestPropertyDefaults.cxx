@@ -318,8 +318,13 @@ std::map<int, std::string> entries(
   root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
   for (int g = 0; root && g < root->GetNumberOfNestedElements(); ++g)
   {
-    vtkXMLDataElement* p = root->GetNestedElement(g)->FindNestedElementWithNameAndAttribute(
-      "SourceProxy", "name", proxy.c_str());
+    // The tracer's proxy is a BoundParticleTracerProxy (a SourceProxy).
+    vtkXMLDataElement* group = root->GetNestedElement(g);
+    vtkXMLDataElement* p =
+      group->FindNestedElementWithNameAndAttribute("SourceProxy", "name", proxy.c_str());
+    p = p ? p
+          : group->FindNestedElementWithNameAndAttribute(
+              "BoundParticleTracerProxy", "name", proxy.c_str());
     vtkXMLDataElement* e = p
       ? p->FindNestedElementWithNameAndAttribute("IntVectorProperty", "name", property.c_str())
       : nullptr;

@@ -199,6 +199,27 @@ def seeded(kind, **seed_properties):
     return made
 
 
+def reloaded(made, edits=None):
+    """The tracer `made` saved in a state file (its values replaced by the
+    texts in `edits`, by property name), the session reset and the file
+    loaded again, as a user reopens a saved state."""
+    import re
+    path = os.path.join(args.scratch, "state-%d.pvsm" % os.getpid())
+    SaveState(path)  # noqa: F405
+    with open(path) as f:
+        text = f.read()
+    for name, value in (edits or {}).items():
+        text = re.sub(r'(name="%s"[^>]*>\s*<Element index="0" value=")[^"]*(")' % name,
+                      r"\g<1>%s\g<2>" % value, text)
+    with open(path, "w") as f:
+        f.write(text)
+    ResetSession()  # noqa: F405
+    LoadPlugin(args.plugin, ns=globals())  # noqa: F405
+    LoadState(path)  # noqa: F405
+    return [s for s in GetSources().values()  # noqa: F405
+            if s.GetXMLName() == "BoundParticleTracer"][0]
+
+
 def gpu_display(template_points):
     """The Bound Particles display with the GPU engine and a sphere of about
     `template_points` points as the element."""
@@ -383,6 +404,42 @@ CASES = {
     "Response Time far below the step": (
         lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=1e-9, Gravity=[0, 0, -1e6]),
         1.0, "close to massless", lambda r: r["points"] > 0),
+    # Issue 53: below float's smallest a response time keeps its sign.
+    "Response Time -1e-46": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1e-46), 1.0, "ResponseTime",
+        lambda r: r["points"] == 0),
+    "Response Time -1e-300": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1e-300), 1.0,
+        "ResponseTime", lambda r: r["points"] == 0),
+    "Response Time 5e-324": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=5e-324), 1.0,
+        "close to massless", lambda r: r["points"] > 0),
+    "Response Time 1e-300": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", ResponseTime=1e-300), 1.0,
+        "close to massless", lambda r: r["points"] > 0),
+    # Heavy elements in still fluid and in noise: they settle in the box,
+    # stepped by their settling; nothing says they will not move or blames
+    # Gravity (the noise's step of 4e10 threw them 3.5e9 out of it).
+    "heavy elements in 1e-12 noise": (
+        lambda: tracer(scaled_flow(1e-12), Vectors=["POINTS", "v"], Inertia="Maxey-Riley",
+                       ResponseTime=0.05, Gravity=[0, 0, -2]), float("inf"), None,
+        lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"]) and
+        not r["messages"]),
+    "heavy elements in still fluid": (
+        lambda: tracer(scaled_flow(0.0), Vectors=["POINTS", "v"], Inertia="Maxey-Riley",
+                       ResponseTime=0.05, Gravity=[0, 0, -2]), float("inf"), None,
+        lambda r: r["points"] > 0 and all(abs(b) < 1.3 for b in r["bounds"]) and
+        not r["messages"]),
+    # State files whose values ParaView's loading reads as 0 (issue 53).
+    "NaN Response Time (state file)": (
+        lambda: reloaded(tracer(flow(), Inertia="Maxey-Riley", ResponseTime=float("nan"))),
+        1.0, "the value 'NaN'", lambda r: r["points"] == 0 and any(
+            "ResponseTime (the particles' response time" in m for m in r["messages"])),
+    "Inertia as text (state file)": (
+        lambda: reloaded(tracer(flow(), Inertia="Maxey-Riley", ResponseTime=-1.0),
+                         {"Inertia": "Maxey-Riley"}), 1.0, "the value 'Maxey-Riley'",
+        lambda r: r["points"] == 0 and any(
+            "ResponseTime (the particles' response time" in m for m in r["messages"])),
     "seeds with Linking": (
         lambda: tracer(flow(), ElementShape="Cross", Linking="Ring", SeedSource=Line()), 1.0,
         "Seed Source is not used", lambda r: r["points"] > 0),

@@ -17,7 +17,11 @@
   Surface display shows.
 - On a flat field (2D data) heavy particles stay in the plane: Gravity's
   component across it is dropped with a warning, on both engines.
-- A state file brings the settings back; the Python trace records them.
+- Heavy particles in still fluid and in 1e-12 of noise: the automatic step
+  follows their settling, they settle inside the box, and nothing is said.
+- A state file brings the settings back; the Python trace records them. Its
+  NaN, infinite and text values are said by name: a NaN Response Time is
+  refused after reloading as before, Inertia as its entry's text takes it.
 """
 import math
 import os
@@ -155,6 +159,43 @@ gravity = [m for m in said.messages if UNITS in m]
 bptest.check(len(gravity) == 1 and "-127138" in gravity[0],
              "gravity out of the data's units is said once: %s" % said.messages)
 settling.Gravity = [0, 0, g]
+
+# Heavy particles in still fluid and in noise (issue 53): the automatic step
+# follows their settling (a particle falls half a cell a step), so they
+# settle inside the box. The noise's own step was 4e10, which threw every
+# particle far out of it, with a warning that blamed Gravity's units; the
+# still field said that nothing would move.
+noise = Calculator(Input=vortex, ResultArrayName="noise", Function="velocity*1e-12")
+cell = (bounds[1] - bounds[0]) / 16.0
+for name, fluid in (("still", still), ("noise", noise)):
+    automatic = BoundParticleTracer(Input=fluid, Vectors=["POINTS", name], ElementShape="Point",
+                                    NumberOfElements=40, Seed=4, Inertia="Maxey-Riley",
+                                    ResponseTime=tau, DensityRatio=2.65, Gravity=[0, 0, g],
+                                    OutputArrays=["SlipVelocity"])
+    with bptest.CapturedMessages() as said:
+        automatic.UpdatePipelineInformation()
+        end = automatic.TimestepValues[-1]
+        data = bptest.fetch(automatic, end)
+    automatic.UpdatePropertyInformation()
+    step = automatic.GetPropertyValue("ResolvedTimeStep")
+    settled = points(data)
+    inside = len(settled) == 40 and np.all(np.isfinite(settled)) and all(
+        bounds[2 * a] - cell <= settled[:, a].min() and
+        settled[:, a].max() <= bounds[2 * a + 1] + cell for a in range(3))
+    slip = (np.median(bptest.point_array(data, "SlipVelocity")[:, 2]) if len(settled)
+            else float("nan"))
+    print("%s fluid: step %.4g (falls %.4g cells), end %.4g, median slip %.5f (terminal %.5f); %s"
+          % (name, step, step * abs(terminal) / cell, end, slip, terminal, said.messages))
+    bptest.check(abs(step * abs(terminal) - 0.5 * cell) < 0.01 * cell,
+                 "%s fluid: the automatic step lets a settling particle fall half a cell "
+                 "(%.4g cells)" % (name, step * abs(terminal) / cell))
+    bptest.check(inside and abs(slip - terminal) < 0.01 * abs(terminal),
+                 "%s fluid: the particles settle at the terminal velocity inside the box "
+                 "(median slip %.5f; bounds %s)" % (name, slip, data.GetBounds()))
+    bptest.check(not said.messages, "%s fluid: nothing said of heavy particles settling: %s" %
+                 (name, said.messages))
+    Delete(automatic)
+Delete(noise)
 
 # The plugin's own double gyre with every tracer default, and the user guide's
 # heavy particles over it, say nothing (its flow crossing 13% of the coarse
@@ -349,4 +390,62 @@ loaded = [s for s in GetSources().values() if s.GetXMLName() == "BoundParticleTr
 bptest.check(len(loaded) == 1 and loaded[0].Inertia == "Maxey-Riley" and
              loaded[0].DensityRatio == 3.5 and list(loaded[0].Gravity) == [0, -2, 0],
              "the state file brings the settings back")
+
+# A state file whose values ParaView reads as 0 (issue 53): NaN (as ParaView
+# writes a NaN itself), infinity and text. A tracer refused for its NaN
+# Response Time stays refused after reloading (it came back as a working
+# massless trace), Inertia written as its entry's text takes that entry (it
+# came back as None), other text keeps the default; each is said by name.
+ResetSession()
+LoadPlugin(args.plugin, ns=globals())
+small = AnalyticFlow(Flow="Solid Body Rotation", Resolution=[9, 9, 9])
+BoundParticleTracer(Input=small, Vectors=VELOCITY, ElementShape="Point", NumberOfElements=20,
+                    Inertia="Maxey-Riley", ResponseTime=float("nan"), DensityRatio=3.5)
+SaveState(state)
+with open(state) as f:
+    text = f.read()
+bptest.check(re.search(r'name="ResponseTime"[^>]*>\s*<Element index="0" value="nan"', text,
+                       re.IGNORECASE), "ParaView writes a NaN Response Time as NaN")
+
+
+def set_state_value(text, name, value):
+    return re.sub(r'(name="%s"[^>]*>\s*<Element index="0" value=")[^"]*(")' % name,
+                  r"\g<1>%s\g<2>" % value, text)
+
+
+for edits, expect in (
+        ({"ResponseTime": "NaN"}, "refused"),
+        ({"ResponseTime": "nan", "Inertia": "Maxey-Riley"}, "refused"),
+        ({"ResponseTime": "Infinity"}, "refused"),
+        ({"ResponseTime": "-inf", "NumberOfElements": "many"}, "refused"),
+        ({"ResponseTime": "0.25", "Inertia": "Maxey-Riley", "NumberOfElements": "many"},
+         "traced")):
+    edited = text
+    for name, value in edits.items():
+        edited = set_state_value(edited, name, value)
+    with open(state, "w") as f:
+        f.write(edited)
+    ResetSession()
+    LoadPlugin(args.plugin, ns=globals())
+    with bptest.CapturedMessages() as said:
+        LoadState(state)
+    loaded = [s for s in GetSources().values() if s.GetXMLName() == "BoundParticleTracer"]
+    named = all(any("%s the value '%s'" % (name, value) in m for m in said.messages)
+                for name, value in edits.items() if value != "0.25")
+    with bptest.CapturedMessages() as refused:
+        out = bptest.fetch(loaded[0], 0.5) if loaded else None
+    count = out.GetNumberOfPoints() if out else -1
+    print("state file with %s: %s; %d points; %s" % (edits, said.messages, count,
+                                                     refused.messages))
+    kept = len(loaded) == 1 and loaded[0].Inertia == "Maxey-Riley" and (
+        "NumberOfElements" not in edits or loaded[0].NumberOfElements == 1000)
+    bptest.check(named and kept, "a state file's %s is said by name and read as meant: %s" %
+                 (edits, said.messages))
+    if expect == "refused":
+        bptest.check(count == 0 and refused.mentions("ResponseTime"),
+                     "a state file's Response Time %s is refused as before saving: %d points, %s"
+                     % (edits["ResponseTime"], count, refused.messages))
+    else:
+        bptest.check(count == 1000, "the state file traces the Inertia it names: %d points" %
+                     count)
 bptest.finish()
