@@ -402,14 +402,8 @@ TEST(BoundParticleTracer, TracesAroundPointsOutsideTheDomain)
     producer->SetOutput(imageWithAHole(nan));
     auto tracer = holeTracer(producer);
     ErrorLog errors(tracer);
-    std::vector<std::string> warnings;
-    vtkNew<vtkCallbackCommand> onWarning;
-    onWarning->SetClientData(&warnings);
-    onWarning->SetCallback(
-      [](vtkObject*, unsigned long, void* into, void* text) {
-        static_cast<std::vector<std::string>*>(into)->emplace_back(static_cast<const char*>(text));
-      });
-    tracer->AddObserver(vtkCommand::WarningEvent, onWarning);
+    ErrorLog warningLog(tracer, vtkCommand::WarningEvent);
+    std::vector<std::string>& warnings = warningLog.messages;
     vtkPolyData* out = at(tracer, 2.0);
     EXPECT_TRUE(errors.messages.empty()) << errors.messages[0];
     // The NaN share is reported (16.2% of the points); a mask is the data's own say.
@@ -554,14 +548,8 @@ TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundForTheVectorsDefault)
   source->Speed = 30.0;
   source->OtherSpeed = 0.1;
   auto tracer = tracerOn(source, 20);
-  std::vector<std::string> warnings;
-  vtkNew<vtkCallbackCommand> onWarning;
-  onWarning->SetClientData(&warnings);
-  onWarning->SetCallback(
-    [](vtkObject*, unsigned long, void* into, void* text) {
-      static_cast<std::vector<std::string>*>(into)->emplace_back(static_cast<const char*>(text));
-    });
-  tracer->AddObserver(vtkCommand::WarningEvent, onWarning);
+  ErrorLog warningLog(tracer, vtkCommand::WarningEvent);
+  std::vector<std::string>& warnings = warningLog.messages;
   // Asked before Vectors is set, as the Vectors property's default asks.
   EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
   EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");

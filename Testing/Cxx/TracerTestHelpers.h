@@ -28,12 +28,13 @@ struct ErrorLog
 {
   std::vector<std::string> messages;
   vtkNew<vtkCallbackCommand> callback;
-  explicit ErrorLog(vtkObject* watched)
+  /// Collects the errors (or, with vtkCommand::WarningEvent, the warnings) said.
+  explicit ErrorLog(vtkObject* watched, unsigned long event = vtkCommand::ErrorEvent)
   {
     this->callback->SetClientData(this);
     this->callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text)
       { static_cast<ErrorLog*>(self)->messages.emplace_back(static_cast<const char*>(text)); });
-    watched->AddObserver(vtkCommand::ErrorEvent, this->callback);
+    watched->AddObserver(event, this->callback);
   }
   bool mentions(const std::string& part) const
   {
