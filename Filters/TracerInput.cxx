@@ -611,8 +611,7 @@ vtkDataSet* firstDataSet(vtkDataObject* input)
 }
 } // namespace
 
-std::string describeVectorsChoice(
-  vtkDataObject* input, const std::string& name, int association, const std::string& why)
+std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association)
 {
   vtkDataSet* set = firstDataSet(input);
   if (!set || name.empty())
@@ -650,8 +649,7 @@ std::string describeVectorsChoice(
   }
   std::ostringstream note;
   note << "Bound Particle Tracer: traces '" << name << "' ("
-       << (!why.empty()                         ? why
-              : active                          ? "the input's active vectors"
+       << (active                               ? "the input's active vectors"
               : bp::velocityNameRank(name) >= 0 ? "named like a velocity"
                                                 : "as Vectors asks")
        << "); the input's other 3-component arrays: ";
