@@ -384,6 +384,20 @@ GravityMotion gravityMotion(const Parameters& engine, const FieldFacts& field)
   return motion;
 }
 
+/// A Response Time far below the resolved step: said, since the trace is
+/// then close to massless.
+static void noteNearlyMassless(Resolution& r)
+{
+  if (nearlyMassless(r.parameters, r.dt))
+  {
+    std::ostringstream w;
+    w << "Response Time " << r.parameters.responseTime << " is far below the step (" << r.dt
+      << "): the particles keep up with the flow within the step, so the trace is close to "
+         "massless (Inertia = None traces the same, faster).";
+    r.warnings.push_back(w.str());
+  }
+}
+
 Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
 {
   Resolution r;
@@ -478,14 +492,7 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
     return failure(lifetimeError);
   }
   checkGravityUnits(s, f, motion, r);
-  if (nearlyMassless(r.parameters, r.dt))
-  {
-    std::ostringstream w;
-    w << "Response Time " << r.parameters.responseTime << " is far below the step (" << r.dt
-      << "): the particles keep up with the flow within the step, so the trace is close to "
-         "massless (Inertia = None traces the same, faster).";
-    r.warnings.push_back(w.str());
-  }
+  noteNearlyMassless(r);
   return r;
 }
 
