@@ -225,6 +225,18 @@ public:
   vtkDataArray* probeGrid(
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
+  /// The time line's warnings resolved while Vectors was not chosen (a
+  /// tracer just made, whose Vectors default comes next): said by an update
+  /// that still has none, not before.
+  std::vector<std::string> PendingTimeLine;
+  /// vtkBoundParticleTracer::CheckVectorsUnits: the array whose units
+  /// failed the time line's check, the one preferred, and why.
+  std::string UnitsMismatchedVectors;
+  std::string UnitsFittingVectors;
+  std::string UnitsReason;
+  /// The tracer's and its input's MTime when they were found.
+  std::array<vtkMTimeType, 2> UnitsChecked = { 0, 0 };
+
 private:
   bp::TracePlan Plan;
   /// In situ: the times given since the trace started (TracerInSitu.cxx),

@@ -8,12 +8,23 @@
 #include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
+#include "VelocityNames.h"
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkPointData.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <array>
 
 int vtkBoundParticleTracer::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -43,13 +54,16 @@ int vtkBoundParticleTracer::RequestInformation(
     (automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT())
     ? this->ProbeField(inInfo, inputTimes)
     : bpvtk::FieldProbe();
+  // Before Vectors is chosen (a tracer just made, whose default comes next:
+  // vtkSMBoundParticleVectorsDomain) its warnings wait for an update.
+  const bool unchosen = config.vectors.name.empty();
   bp::TimeScale scale = automatic ? probe.scale : bp::TimeScale();
   if (automatic && probe.read)
   {
     // Heavy particles settle: the time line follows gravity where it is faster.
     scale.gravitySpeed = bp::gravityMotion(config.trace.engine, probe.facts).speed;
   }
-  const bp::TimeLine line = this->ResolveTimeLine(inputTimes, scale);
+  const bp::TimeLine line = this->ResolveTimeLine(inputTimes, scale, unchosen);
   const std::string error =
     I.setTimes(inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
   if (!error.empty())
@@ -133,7 +147,7 @@ bpvtk::FieldProbe vtkBoundParticleTracer::ProbeField(
 }
 
 bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
-  const std::vector<double>& inputTimes, const bp::TimeScale& scale)
+  const std::vector<double>& inputTimes, const bp::TimeScale& scale, bool unchosen)
 {
   const bool unsteady = inputTimes.size() >= 2;
   const bool framesOutOfRange =
@@ -147,12 +161,174 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
   const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
     framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
     this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
+  // Of the array traced while Vectors is not chosen: said by an update that
+  // still has none (ParaView sets the Vectors default just after this
+  // request, and a warning of an array not traced misleads).
+  this->Internals->PendingTimeLine.clear();
+  if (unchosen)
+  {
+    this->Internals->PendingTimeLine = line.warnings;
+    return line;
+  }
+  this->SayTimeLineWarnings(line.warnings);
+  return line;
+}
+
+void vtkBoundParticleTracer::SayTimeLineWarnings(const std::vector<std::string>& warnings)
+{
   // Said once: the pipeline asks for information again after every change
   // (the Vectors set after the filter is made, say), and the same warning
   // twice in a row says nothing new.
-  for (const std::string& warning : this->Internals->unsaid(line.warnings))
+  for (const std::string& warning : this->Internals->unsaid(warnings))
   {
     vtkWarningMacro(<< warning);
   }
-  return line;
+}
+
+void vtkBoundParticleTracer::CheckVectorsUnits()
+{
+  vtkBoundParticleTracerInternals& I = *this->Internals;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  // Asked by the client of one process (an information property): the
+  // probe is collective, and the pieces of an MPI run may offer different
+  // arrays.
+  if (this->GetNumberOfInputConnections(0) == 0 ||
+    (controller && controller->GetNumberOfProcesses() > 1))
+  {
+    I.UnitsMismatchedVectors.clear();
+    I.UnitsFittingVectors.clear();
+    I.UnitsReason.clear();
+    return;
+  }
+  // Found for the Vectors default of a tracer just made (ParaView asks before
+  // it sets one), and kept for its note of why: not at every later request
+  // for the tracer's information.
+  vtkInformation* vectors = this->GetInputArrayInformation(0);
+  const char* name = vectors && vectors->Has(vtkDataObject::FIELD_NAME())
+    ? vectors->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  if (name && *name)
+  {
+    return;
+  }
+  this->UpdateInformation();
+  vtkInformation* inInfo = this->GetExecutive()->GetInputInformation(0, 0);
+  std::vector<double> inputTimes;
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (inInfo && inInfo->Has(SDDP::TIME_STEPS()))
+  {
+    const double* steps = inInfo->Get(SDDP::TIME_STEPS());
+    inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
+  }
+  // Checked again only when the tracer or its input changed.
+  vtkAlgorithm* upstream = this->GetInputAlgorithm(0, 0);
+  const std::array<vtkMTimeType, 2> key = { this->GetMTime(), upstream ? upstream->GetMTime() : 0 };
+  if (key == I.UnitsChecked)
+  {
+    return;
+  }
+  I.UnitsChecked = key;
+  I.UnitsMismatchedVectors.clear();
+  I.UnitsFittingVectors.clear();
+  I.UnitsReason.clear();
+  // In situ the time line advances with each step given: nothing to probe ahead.
+  if (inInfo && !bpvtk::offersOnlyPresent(inInfo) && this->AutomaticTimeLine(inputTimes))
+  {
+    this->PreferFittingVectors(inInfo, inputTimes);
+  }
+}
+
+void vtkBoundParticleTracer::PreferFittingVectors(
+  vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  // A mesh is resampled for one array only: images and rectilinear grids.
+  auto fieldOf = [](vtkDataObject* data)
+  {
+    return vtkImageData::SafeDownCast(data)
+      ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(data))
+      : vtkRectilinearGrid::SafeDownCast(data);
+  };
+  if (!fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    return;
+  }
+  // The input whole at its first time step, as the time line's probe reads it.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+  }
+  if (!inputTimes.empty())
+  {
+    inInfo->Set(SDDP::UPDATE_TIME_STEP(), inputTimes.front());
+  }
+  connection->GetProducer()->Update(connection->GetIndex());
+  vtkDataSet* field = fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT()));
+  if (!field)
+  {
+    return;
+  }
+  std::vector<std::string> names;
+  int active = -1;
+  vtkPointData* points = field->GetPointData();
+  for (int i = 0; i < points->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = points->GetArray(i);
+    if (array && array->GetNumberOfComponents() == 3 && array->GetName() &&
+      std::find(names.begin(), names.end(), array->GetName()) == names.end())
+    {
+      active = array == points->GetVectors() ? int(names.size()) : active;
+      names.emplace_back(array->GetName());
+    }
+  }
+  if (names.size() < 2)
+  {
+    return;
+  }
+  const bool framesOutOfRange =
+    this->FramesPerInputStep < 0 || this->FramesPerInputStep > bp::MaxFramesPerInterval;
+  std::vector<bp::VectorsCandidate> candidates(names.size());
+  std::vector<std::string> warnings(names.size());
+  const auto check = [&](std::size_t k)
+  {
+    const bpvtk::FieldProbe probe =
+      bpvtk::probeField(this->GetInputConnection(0, 0), inInfo, inputTimes,
+        [&](vtkDataObject* d, vtkSmartPointer<vtkDataObject>& grid, int& association)
+        {
+          grid = d;
+          association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+          auto* set = vtkDataSet::SafeDownCast(d);
+          return set ? set->GetPointData()->GetArray(names[k].c_str()) : nullptr;
+        });
+    const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
+      framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
+      this->StepSizeUnit == CELL_LENGTH, inputTimes, probe.scale);
+    // An array that cannot be read, or does not move, is no better choice.
+    candidates[k] = { names[k], probe.read && probe.scale.valid() && line.warnings.empty() };
+    warnings[k] = line.warnings.empty() ? std::string() : line.warnings.front();
+  };
+  const int chosen = bp::pickDefaultVectors(names, active);
+  check(std::size_t(chosen));
+  if (candidates[std::size_t(chosen)].unitsFit || warnings[std::size_t(chosen)].empty())
+  {
+    return; // it fits, or it was not read: nothing to prefer it for
+  }
+  for (std::size_t k = 0; k < names.size(); ++k)
+  {
+    if (int(k) != chosen)
+    {
+      check(k);
+    }
+  }
+  const int preferred = bp::preferFittingUnits(candidates, chosen);
+  if (preferred == chosen)
+  {
+    return;
+  }
+  vtkBoundParticleTracerInternals& I = *this->Internals;
+  I.UnitsMismatchedVectors = names[std::size_t(chosen)];
+  I.UnitsFittingVectors = names[std::size_t(preferred)];
+  I.UnitsReason = bp::fittingUnitsReason(
+    I.UnitsMismatchedVectors, chosen == active, warnings[std::size_t(chosen)]);
 }

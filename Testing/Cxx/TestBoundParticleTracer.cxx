@@ -47,6 +47,8 @@ public:
   vtkTypeMacro(vtkFloatTimesSource, vtkImageAlgorithm);
   int Steps = 11;
   double Origin = 0.0;
+  double Speed = 0.1;       ///< of `v`, the active vectors
+  double OtherSpeed = -1.0; ///< of a second array `v_other`; none where negative
 
 protected:
   vtkFloatTimesSource() { this->SetNumberOfInputPorts(0); }
@@ -80,8 +82,18 @@ protected:
     v->SetNumberOfComponents(3);
     v->SetNumberOfTuples(image->GetNumberOfPoints());
     for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-      v->SetTuple3(i, 0.1, 0.0, 0.0);
+      v->SetTuple3(i, this->Speed, 0.0, 0.0);
     image->GetPointData()->SetVectors(v);
+    if (this->OtherSpeed >= 0.0)
+    {
+      vtkNew<vtkFloatArray> other;
+      other->SetName("v_other");
+      other->SetNumberOfComponents(3);
+      other->SetNumberOfTuples(image->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+        other->SetTuple3(i, this->OtherSpeed, 0.0, 0.0);
+      image->GetPointData()->AddArray(other);
+    }
     if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
       image->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
         info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
@@ -526,6 +538,41 @@ TEST(BoundParticleTracer, Float32TimeStepsDoNotStall)
     EXPECT_EQ(at(tracer, t)->GetNumberOfPoints(), 20 * 8) << t;
     EXPECT_LE(tracer->GetStepsInLastUpdate(), 2) << t;
   }
+}
+
+TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundForTheVectorsDefault)
+{
+  // The active vectors `v` cross 30 cells between two input time steps (0.1
+  // apart), units that do not match; `v_other` crosses 0.1 cell.
+  vtkNew<vtkFloatTimesSource> source;
+  source->Speed = 30.0;
+  source->OtherSpeed = 0.1;
+  auto tracer = tracerOn(source, 20);
+  ErrorLog warningLog(tracer, vtkCommand::WarningEvent);
+  std::vector<std::string>& warnings = warningLog.messages;
+  // Asked before Vectors is set, as the Vectors property's default asks.
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  // The units warning of `v` waits for an update that still has no Vectors
+  // (ParaView sets its default first), and is said then, once.
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  at(tracer, 0.5);
+  at(tracer, 0.6);
+  const auto units = std::count_if(warnings.begin(), warnings.end(),
+    [](const std::string& w) { return w.find("between two input time steps") != w.npos; });
+  EXPECT_EQ(units, 1);
+  // `v_other` chosen: no warning, and what was found stays.
+  warnings.clear();
+  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "v_other");
+  at(tracer, 0.5);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  // Both fit: nothing to prefer.
+  vtkNew<vtkFloatTimesSource> fitting;
+  fitting->OtherSpeed = 0.2;
+  auto other = tracerOn(fitting, 20);
+  EXPECT_STREQ(other->GetUnitsMismatchedVectors(), "");
+  EXPECT_STREQ(other->GetUnitsFittingVectors(), "");
 }
 
 TEST(BoundParticleTracer, FarFromTheOriginKeepsPrecision)
