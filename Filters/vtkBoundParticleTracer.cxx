@@ -111,13 +111,13 @@ double vtkBoundParticleTracer::GetResolvedElementSize() const
 
 const char* vtkBoundParticleTracer::GetUnitsMismatchedVectors()
 {
-  this->CheckVectorsUnits();
+  this->CheckHeldInput();
   return this->Internals->UnitsMismatchedVectors.c_str();
 }
 
 const char* vtkBoundParticleTracer::GetUnitsFittingVectors()
 {
-  this->CheckVectorsUnits();
+  this->CheckHeldInput();
   return this->Internals->UnitsFittingVectors.c_str();
 }
 

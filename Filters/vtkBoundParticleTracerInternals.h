@@ -49,6 +49,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 class vtkDataArray;
@@ -229,13 +230,13 @@ public:
   /// tracer just made, whose Vectors default comes next): said by an update
   /// that still has none, not before.
   std::vector<std::string> PendingTimeLine;
-  /// vtkBoundParticleTracer::CheckVectorsUnits: the array whose units
+  /// vtkBoundParticleTracer::PreferFittingVectors: the array whose units
   /// failed the time line's check, the one preferred, and why.
   std::string UnitsMismatchedVectors;
   std::string UnitsFittingVectors;
   std::string UnitsReason;
-  /// The tracer's and its input's MTime when they were found.
-  std::array<vtkMTimeType, 2> UnitsChecked = { 0, 0 };
+  /// The input they were found of (vtkBoundParticleTracer::InputKey).
+  std::tuple<const void*, int, vtkMTimeType> UnitsChecked{ nullptr, -1, 0 };
 
 private:
   bp::TracePlan Plan;

@@ -14,6 +14,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -50,13 +51,35 @@ int vtkBoundParticleTracer::RequestInformation(
   // FTLE map's extent (a lattice release's) depends on it.
   const bpvtk::TracerConfig config = this->Config();
   const bool automatic = this->AutomaticTimeLine(inputTimes);
-  const bpvtk::FieldProbe probe =
-    (automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT())
-    ? this->ProbeField(inInfo, inputTimes)
-    : bpvtk::FieldProbe();
   // Before Vectors is chosen (a tracer just made, whose default comes next:
   // vtkSMBoundParticleVectorsDomain) its warnings wait for an update.
   const bool unchosen = config.vectors.name.empty();
+  // The Vectors default's units check (GetUnitsFittingVectors): found here
+  // while Vectors is not chosen, on the data the probe delivered (nothing
+  // else updates for it); kept once it is (the note of why) while the input
+  // is the same.
+  const UnitsCheckKey key = this->InputKey();
+  const bool checksUnits = key != I.UnitsChecked || unchosen;
+  if (checksUnits)
+  {
+    I.UnitsChecked = key;
+    I.UnitsMismatchedVectors.clear();
+    I.UnitsFittingVectors.clear();
+    I.UnitsReason.clear();
+  }
+  bpvtk::FieldProbe probe;
+  if ((automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT()))
+  {
+    const bpvtk::DeliveredInput delivered(this->GetInputConnection(0, 0), inInfo, inputTimes);
+    probe = this->ProbeDelivered(delivered.data(), inInfo, inputTimes);
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    // Serial runs only: the pieces of an MPI run may offer different arrays.
+    if (checksUnits && unchosen && automatic &&
+      !(controller && controller->GetNumberOfProcesses() > 1))
+    {
+      this->PreferFittingVectors(delivered.data(), inInfo, inputTimes);
+    }
+  }
   bp::TimeScale scale = automatic ? probe.scale : bp::TimeScale();
   if (automatic && probe.read)
   {
@@ -132,7 +155,14 @@ bool vtkBoundParticleTracer::AutomaticTimeLine(const std::vector<double>& inputT
 bpvtk::FieldProbe vtkBoundParticleTracer::ProbeField(
   vtkInformation* inInfo, const std::vector<double>& inputTimes)
 {
-  return bpvtk::probeField(this->GetInputConnection(0, 0), inInfo, inputTimes,
+  const bpvtk::DeliveredInput delivered(this->GetInputConnection(0, 0), inInfo, inputTimes);
+  return this->ProbeDelivered(delivered.data(), inInfo, inputTimes);
+}
+
+bpvtk::FieldProbe vtkBoundParticleTracer::ProbeDelivered(
+  vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  return bpvtk::probeDelivered(data, inInfo, inputTimes,
     [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
     {
       if (bpvtk::FieldResampler::needed(data))
@@ -185,44 +215,25 @@ void vtkBoundParticleTracer::SayTimeLineWarnings(const std::vector<std::string>&
   }
 }
 
-void vtkBoundParticleTracer::CheckVectorsUnits()
+vtkBoundParticleTracer::UnitsCheckKey vtkBoundParticleTracer::InputKey()
 {
+  vtkAlgorithmOutput* connection =
+    this->GetNumberOfInputConnections(0) > 0 ? this->GetInputConnection(0, 0) : nullptr;
+  vtkAlgorithm* upstream = connection ? connection->GetProducer() : nullptr;
+  auto* executive =
+    upstream ? vtkDemandDrivenPipeline::SafeDownCast(upstream->GetExecutive()) : nullptr;
+  return { upstream, connection ? connection->GetIndex() : -1,
+    executive ? executive->GetPipelineMTime() : 0 };
+}
+
+void vtkBoundParticleTracer::CheckHeldInput()
+{
+  // Found by RequestInformation on the input it saw. Asked before that (pvpython
+  // sets the Vectors default as soon as Input is set, before it updates the
+  // tracer's pipeline information): the data the input holds, as it holds
+  // it, read without updating anything.
   vtkBoundParticleTracerInternals& I = *this->Internals;
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  // Asked by the client of one process (an information property): the
-  // probe is collective, and the pieces of an MPI run may offer different
-  // arrays.
-  if (this->GetNumberOfInputConnections(0) == 0 ||
-    (controller && controller->GetNumberOfProcesses() > 1))
-  {
-    I.UnitsMismatchedVectors.clear();
-    I.UnitsFittingVectors.clear();
-    I.UnitsReason.clear();
-    return;
-  }
-  // Found for the Vectors default of a tracer just made (ParaView asks before
-  // it sets one), and kept for its note of why: not at every later request
-  // for the tracer's information.
-  vtkInformation* vectors = this->GetInputArrayInformation(0);
-  const char* name = vectors && vectors->Has(vtkDataObject::FIELD_NAME())
-    ? vectors->Get(vtkDataObject::FIELD_NAME())
-    : nullptr;
-  if (name && *name)
-  {
-    return;
-  }
-  this->UpdateInformation();
-  vtkInformation* inInfo = this->GetExecutive()->GetInputInformation(0, 0);
-  std::vector<double> inputTimes;
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  if (inInfo && inInfo->Has(SDDP::TIME_STEPS()))
-  {
-    const double* steps = inInfo->Get(SDDP::TIME_STEPS());
-    inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
-  }
-  // Checked again only when the tracer or its input changed.
-  vtkAlgorithm* upstream = this->GetInputAlgorithm(0, 0);
-  const std::array<vtkMTimeType, 2> key = { this->GetMTime(), upstream ? upstream->GetMTime() : 0 };
+  const UnitsCheckKey key = this->InputKey();
   if (key == I.UnitsChecked)
   {
     return;
@@ -231,40 +242,38 @@ void vtkBoundParticleTracer::CheckVectorsUnits()
   I.UnitsMismatchedVectors.clear();
   I.UnitsFittingVectors.clear();
   I.UnitsReason.clear();
-  // In situ the time line advances with each step given: nothing to probe ahead.
-  if (inInfo && !bpvtk::offersOnlyPresent(inInfo) && this->AutomaticTimeLine(inputTimes))
+  vtkInformation* inInfo =
+    std::get<0>(key) ? this->GetExecutive()->GetInputInformation(0, 0) : nullptr;
+  vtkInformation* vectors = this->GetInputArrayInformation(0);
+  const char* name = vectors && vectors->Has(vtkDataObject::FIELD_NAME())
+    ? vectors->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!inInfo || !inInfo->Has(vtkDataObject::DATA_OBJECT()) || (name && *name) ||
+    (controller && controller->GetNumberOfProcesses() > 1) || bpvtk::offersOnlyPresent(inInfo))
   {
-    this->PreferFittingVectors(inInfo, inputTimes);
+    return;
+  }
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  std::vector<double> inputTimes;
+  if (inInfo->Has(SDDP::TIME_STEPS()))
+  {
+    const double* steps = inInfo->Get(SDDP::TIME_STEPS());
+    inputTimes.assign(steps, steps + inInfo->Length(SDDP::TIME_STEPS()));
+  }
+  if (this->AutomaticTimeLine(inputTimes))
+  {
+    this->PreferFittingVectors(inInfo->Get(vtkDataObject::DATA_OBJECT()), inInfo, inputTimes);
   }
 }
 
 void vtkBoundParticleTracer::PreferFittingVectors(
-  vtkInformation* inInfo, const std::vector<double>& inputTimes)
+  vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes)
 {
   // A mesh is resampled for one array only: images and rectilinear grids.
-  auto fieldOf = [](vtkDataObject* data)
-  {
-    return vtkImageData::SafeDownCast(data)
-      ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(data))
-      : vtkRectilinearGrid::SafeDownCast(data);
-  };
-  if (!fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT())))
-  {
-    return;
-  }
-  // The input whole at its first time step, as the time line's probe reads it.
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-  }
-  if (!inputTimes.empty())
-  {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), inputTimes.front());
-  }
-  connection->GetProducer()->Update(connection->GetIndex());
-  vtkDataSet* field = fieldOf(inInfo->Get(vtkDataObject::DATA_OBJECT()));
+  vtkDataSet* field = vtkImageData::SafeDownCast(data)
+    ? static_cast<vtkDataSet*>(vtkImageData::SafeDownCast(data))
+    : vtkRectilinearGrid::SafeDownCast(data);
   if (!field)
   {
     return;
@@ -292,15 +301,14 @@ void vtkBoundParticleTracer::PreferFittingVectors(
   std::vector<std::string> warnings(names.size());
   const auto check = [&](std::size_t k)
   {
-    const bpvtk::FieldProbe probe =
-      bpvtk::probeField(this->GetInputConnection(0, 0), inInfo, inputTimes,
-        [&](vtkDataObject* d, vtkSmartPointer<vtkDataObject>& grid, int& association)
-        {
-          grid = d;
-          association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-          auto* set = vtkDataSet::SafeDownCast(d);
-          return set ? set->GetPointData()->GetArray(names[k].c_str()) : nullptr;
-        });
+    const bpvtk::FieldProbe probe = bpvtk::probeDelivered(field, inInfo, inputTimes,
+      [&](vtkDataObject* d, vtkSmartPointer<vtkDataObject>& grid, int& association)
+      {
+        grid = d;
+        association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+        auto* set = vtkDataSet::SafeDownCast(d);
+        return set ? set->GetPointData()->GetArray(names[k].c_str()) : nullptr;
+      });
     const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
       framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
       this->StepSizeUnit == CELL_LENGTH, inputTimes, probe.scale);

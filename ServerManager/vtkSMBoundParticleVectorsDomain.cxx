@@ -97,8 +97,9 @@ void vtkSMBoundParticleVectorsDomain::FindFittingUnits(
   {
     return;
   }
-  // The tracer checks its input on its server: it needs the input set.
-  tracer->UpdateVTKObjects();
+  // Read only: nothing pushed or updated for a default (the tracer's input
+  // is shared with other consumers, and may be only the active source that
+  // pvpython connects before the Input asked for).
   tracer->UpdatePropertyInformation(from);
   tracer->UpdatePropertyInformation(to);
   const char* a = vtkSMPropertyHelper(from).GetAsString();

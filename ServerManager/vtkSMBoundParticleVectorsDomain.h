@@ -43,10 +43,10 @@ protected:
 private:
   /// Whether `name` of `association` is the input's active vectors there.
   bool IsActiveVectors(const char* name, int association);
-  /// What the tracer (`property`'s proxy) finds of its input: the array by
-  /// name whose units fail its time line's check and the one whose units
-  /// fit (its UnitsMismatchedVectors and UnitsFittingVectors); empty where
-  /// there is none.
+  /// What the tracer (`property`'s proxy) found of its input in its last
+  /// RequestInformation: the array by name whose units fail its time line's
+  /// check and the one whose units fit (its UnitsMismatchedVectors and
+  /// UnitsFittingVectors, read, nothing run); empty where there is none.
   void FindFittingUnits(vtkSMProperty* property, std::string& mismatched, std::string& fitting);
 
   vtkSMBoundParticleVectorsDomain(const vtkSMBoundParticleVectorsDomain&) = delete;

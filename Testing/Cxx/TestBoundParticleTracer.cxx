@@ -49,6 +49,7 @@ public:
   double Origin = 0.0;
   double Speed = 0.1;       ///< of `v`, the active vectors
   double OtherSpeed = -1.0; ///< of a second array `v_other`; none where negative
+  int Executions = 0;       ///< how many times RequestData ran
 
 protected:
   vtkFloatTimesSource() { this->SetNumberOfInputPorts(0); }
@@ -72,6 +73,7 @@ protected:
   }
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
   {
+    ++this->Executions;
     vtkInformation* info = out->GetInformationObject(0);
     vtkImageData* image = vtkImageData::GetData(info);
     image->SetExtent(0, 10, 0, 10, 0, 10);
@@ -550,9 +552,18 @@ TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundForTheVectorsDefault)
   auto tracer = tracerOn(source, 20);
   ErrorLog warningLog(tracer, vtkCommand::WarningEvent);
   std::vector<std::string>& warnings = warningLog.messages;
-  // Asked before Vectors is set, as the Vectors property's default asks.
+  // Asking runs nothing: before the source ever ran there is nothing to read.
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "");
+  EXPECT_EQ(source->Executions, 0);
+  // Found by the request for information before Vectors is set, as ParaView
+  // makes it before it sets the Vectors property's default, on the data the
+  // time line's probe had the source deliver (once, at its first time step).
+  tracer->UpdateInformation();
+  EXPECT_EQ(source->Executions, 1);
   EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
   EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  EXPECT_EQ(source->Executions, 1);
   // The units warning of `v` waits for an update that still has no Vectors
   // (ParaView sets its default first), and is said then, once.
   EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -571,8 +582,53 @@ TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundForTheVectorsDefault)
   vtkNew<vtkFloatTimesSource> fitting;
   fitting->OtherSpeed = 0.2;
   auto other = tracerOn(fitting, 20);
+  other->UpdateInformation();
   EXPECT_STREQ(other->GetUnitsMismatchedVectors(), "");
   EXPECT_STREQ(other->GetUnitsFittingVectors(), "");
+}
+
+TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundOnTheDataHeldBeforeAnyRequest)
+{
+  // pvpython sets the Vectors default as soon as Input is set, before it
+  // asks the tracer for information: the data the input holds is read as it
+  // is, at the time it holds, and nothing runs.
+  vtkNew<vtkFloatTimesSource> source;
+  source->Speed = 30.0;
+  source->OtherSpeed = 0.1;
+  source->UpdateTimeStep(double(0.1f * 3.0f));
+  auto tracer = tracerOn(source, 20);
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  EXPECT_EQ(source->Executions, 1);
+  EXPECT_DOUBLE_EQ(
+    source->GetOutputDataObject(0)->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()),
+    double(0.1f * 3.0f));
+}
+
+TEST(BoundParticleTracer, TheTimeLineProbeLeavesItsInputAtTheTimeItsConsumersAsked)
+{
+  // The automatic time line probes the field at its first time step; the
+  // source's output, shared with its other consumers, is left at the time
+  // they asked for (here 0.5), not the probe's.
+  vtkNew<vtkFloatTimesSource> source;
+  const double held = double(0.1f * 5.0f);
+  source->UpdateTimeStep(held);
+  vtkImageData* output = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
+  auto tracer = tracerOn(source, 20);
+  tracer->UpdateInformation();
+  // The time line resolved from the probe; the source run at the consumers'
+  // time, the probe's, and theirs again.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  EXPECT_GT(tracer->GetOutputInformation(0)->Length(SDDP::TIME_STEPS()), 0);
+  EXPECT_EQ(source->Executions, 3);
+  EXPECT_EQ(source->GetOutputDataObject(0), output);
+  EXPECT_DOUBLE_EQ(output->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), held);
+  EXPECT_DOUBLE_EQ(source->GetOutputInformation(0)->Get(SDDP::UPDATE_TIME_STEP()), held);
+  // Nothing held at another time: the probe's update is all.
+  vtkNew<vtkFloatTimesSource> fresh;
+  auto other = tracerOn(fresh, 20);
+  other->UpdateInformation();
+  EXPECT_EQ(fresh->Executions, 1);
 }
 
 TEST(BoundParticleTracer, FarFromTheOriginKeepsPrecision)
