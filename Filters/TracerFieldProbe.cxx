@@ -10,6 +10,9 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationIntegerVectorKey.h"
 #include "vtkMultiProcessController.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -21,31 +24,6 @@ namespace bpvtk
 
 namespace
 {
-/// Updates the input for this process's piece (no ghosts) at `time`.
-vtkDataObject* updateInput(vtkAlgorithmOutput* connection, vtkInformation* inInfo,
-  const std::vector<double>& inputTimes, int piece, int pieces)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  vtkAlgorithm* upstream = connection ? connection->GetProducer() : nullptr;
-  if (!upstream)
-  {
-    return nullptr;
-  }
-  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
-  {
-    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
-  }
-  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), piece);
-  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), pieces);
-  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  if (!inputTimes.empty())
-  {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), inputTimes.front());
-  }
-  upstream->Update(connection->GetIndex());
-  return inInfo->Get(vtkDataObject::DATA_OBJECT());
-}
-
 /// This process's share, reduced with MAX over processes: top speed; lower
 /// bounds negated and upper bounds per axis; the cell length; points per
 /// axis (this grid's, or the image's whole extent's: each process holds a
@@ -92,13 +70,111 @@ Share localShare(vtkDataObject* data, vtkInformation* inInfo, const GridOf& grid
 }
 } // namespace
 
+namespace
+{
+using SDDP = vtkStreamingDemandDrivenPipeline;
+
+/// The time of the data `info` (an output port's information) holds, if any.
+bool heldTime(vtkInformation* info, double& time)
+{
+  vtkDataObject* data = info->Get(vtkDataObject::DATA_OBJECT());
+  vtkInformation* dataInfo = data ? data->GetInformation() : nullptr;
+  if (!dataInfo || !dataInfo->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    return false;
+  }
+  time = dataInfo->Get(vtkDataObject::DATA_TIME_STEP());
+  return true;
+}
+
+/// The keys of a consumer's request.
+std::array<vtkInformationKey*, 5> requestKeys()
+{
+  return { SDDP::UPDATE_TIME_STEP(), SDDP::UPDATE_EXTENT(), SDDP::UPDATE_PIECE_NUMBER(),
+    SDDP::UPDATE_NUMBER_OF_PIECES(), SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS() };
+}
+} // namespace
+
+DeliveredInput::DeliveredInput(
+  vtkAlgorithmOutput* connection, vtkInformation* inInfo, const std::vector<double>& inputTimes)
+  : Connection(connection)
+  , Info(inInfo)
+{
+  vtkAlgorithm* upstream = connection ? connection->GetProducer() : nullptr;
+  if (!upstream)
+  {
+    return;
+  }
+  // What the input's consumers asked for last (`inInfo` is the producer's
+  // output information, shared by all of them).
+  this->Held = heldTime(inInfo, this->HeldTime);
+  this->Request = vtkSmartPointer<vtkInformation>::New();
+  for (vtkInformationKey* key : requestKeys())
+  {
+    if (inInfo->Has(key))
+    {
+      this->Request->CopyEntry(inInfo, key);
+    }
+  }
+
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int pieces = controller ? std::max(controller->GetNumberOfProcesses(), 1) : 1;
+  const int piece = controller ? controller->GetLocalProcessId() : 0;
+  if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+  {
+    inInfo->Set(SDDP::UPDATE_EXTENT(), inInfo->Get(SDDP::WHOLE_EXTENT()), 6);
+  }
+  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), piece);
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), pieces);
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  if (!inputTimes.empty())
+  {
+    inInfo->Set(SDDP::UPDATE_TIME_STEP(), inputTimes.front());
+  }
+  upstream->Update(connection->GetIndex());
+  this->Data = inInfo->Get(vtkDataObject::DATA_OBJECT());
+}
+
+DeliveredInput::~DeliveredInput()
+{
+  if (!this->Request)
+  {
+    return;
+  }
+  // The consumers' request again; where the input held another time step
+  // for them (a display, a downstream filter, shown at the view's time), the
+  // input updated at that time again: its output is updated in place, and a
+  // consumer that reads it without asking (a downstream filter's output)
+  // would otherwise hold the probe's time step.
+  for (vtkInformationKey* key : requestKeys())
+  {
+    this->Info->Remove(key);
+    if (this->Request->Has(key))
+    {
+      this->Info->CopyEntry(this->Request, key);
+    }
+  }
+  double delivered = 0.0;
+  if (this->Held && this->Request->Has(SDDP::UPDATE_TIME_STEP()) &&
+    (!heldTime(this->Info, delivered) || delivered != this->HeldTime))
+  {
+    this->Connection->GetProducer()->Update(this->Connection->GetIndex());
+  }
+}
+
 FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
+  const std::vector<double>& inputTimes, const GridOf& gridOf)
+{
+  const DeliveredInput delivered(input, inInfo, inputTimes);
+  return probeDelivered(delivered.data(), inInfo, inputTimes, gridOf);
+}
+
+FieldProbe probeDelivered(vtkDataObject* data, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int pieces = controller ? std::max(controller->GetNumberOfProcesses(), 1) : 1;
-  const int piece = controller ? controller->GetLocalProcessId() : 0;
-  Share share = localShare(updateInput(input, inInfo, inputTimes, piece, pieces), inInfo, gridOf);
+  Share share = localShare(data, inInfo, gridOf);
   if (pieces > 1)
   {
     Share global;

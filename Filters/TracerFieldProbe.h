@@ -10,10 +10,13 @@
  * FTLE map's extent is the release lattice's, which needs the field's bounds
  * (an emitter box spanning the field) and its flat axes. So the probe
  * updates the input once there (this process's piece, at the first input
- * time step), reads the selected vectors as an update would (a mesh
- * resampled, masks and NaN included), and, under MPI, takes the largest
- * speed and the whole field's bounds over every process (a collective call,
- * as every pipeline pass of a distributed run is).
+ * time step: DeliveredInput), reads the selected vectors as an update would
+ * (a mesh resampled, masks and NaN included: probeDelivered), and, under
+ * MPI, takes the largest speed and the whole field's bounds over every
+ * process (a collective call, as every pipeline pass of a distributed run
+ * is). The input's output is shared with its other consumers: where it held
+ * another time step for them, it is updated at that time again after the
+ * probe, so that none finds it at a time it did not ask for.
  */
 #ifndef BoundParticles_TracerFieldProbe_h
 #define BoundParticles_TracerFieldProbe_h
@@ -21,6 +24,7 @@
 #include "TraceSettings.h"
 
 #include "vtkDataObject.h"
+#include "vtkInformation.h" // for vtkSmartPointer<vtkInformation>
 #include "vtkSmartPointer.h"
 
 #include <functional>
@@ -28,7 +32,6 @@
 
 class vtkAlgorithmOutput;
 class vtkDataArray;
-class vtkInformation;
 
 namespace bpvtk
 {
@@ -54,8 +57,46 @@ struct FieldProbe
   bp::FieldFacts facts;
 };
 
+/**
+ * The input (`connection`, `inInfo` its information: the producer's output
+ * information, shared by its consumers) updated whole for this process's
+ * piece, no ghosts, at its first time step, while this lives. On
+ * destruction the consumers' last request is put back, and where the input
+ * held data of another time step for them (a downstream filter or a display
+ * at the view's time), the input is updated at that time again: its output
+ * is updated in place, and a consumer that reads it without asking again (a
+ * downstream filter's output, a Fetch) would otherwise get the probe's time
+ * step. Collective under MPI, as every pipeline pass of a distributed run.
+ */
+class DeliveredInput
+{
+public:
+  DeliveredInput(
+    vtkAlgorithmOutput* connection, vtkInformation* inInfo, const std::vector<double>& inputTimes);
+  ~DeliveredInput();
+  DeliveredInput(const DeliveredInput&) = delete;
+  DeliveredInput& operator=(const DeliveredInput&) = delete;
+  /// The data delivered (null without a producer); valid while this lives.
+  vtkDataObject* data() const { return this->Data; }
+
+private:
+  vtkAlgorithmOutput* Connection = nullptr;
+  vtkInformation* Info = nullptr;
+  vtkDataObject* Data = nullptr;
+  /// The consumers' request before the probe's (its UPDATE_ keys).
+  vtkSmartPointer<vtkInformation> Request;
+  bool Held = false;
+  double HeldTime = 0.0;
+};
+
+/// Probes the field the input delivered (`data`, DeliveredInput's; `inInfo`
+/// its information): no update. Collective under MPI.
+FieldProbe probeDelivered(vtkDataObject* data, vtkInformation* inInfo,
+  const std::vector<double>& inputTimes, const GridOf& gridOf);
+
 /// Probes the field `input` (the filter's input connection, `inInfo` its
-/// information) delivers at its first time step.
+/// information) delivers at its first time step (DeliveredInput, then
+/// probeDelivered).
 FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf);
 

@@ -611,7 +611,8 @@ vtkDataSet* firstDataSet(vtkDataObject* input)
 }
 } // namespace
 
-std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association)
+std::string describeVectorsChoice(
+  vtkDataObject* input, const std::string& name, int association, const std::string& why)
 {
   vtkDataSet* set = firstDataSet(input);
   if (!set || name.empty())
@@ -649,7 +650,8 @@ std::string describeVectorsChoice(vtkDataObject* input, const std::string& name,
   }
   std::ostringstream note;
   note << "Bound Particle Tracer: traces '" << name << "' ("
-       << (active                               ? "the input's active vectors"
+       << (!why.empty()                         ? why
+              : active                          ? "the input's active vectors"
               : bp::velocityNameRank(name) >= 0 ? "named like a velocity"
                                                 : "as Vectors asks")
        << "); the input's other 3-component arrays: ";

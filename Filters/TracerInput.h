@@ -47,9 +47,12 @@ std::string readSlice(vtkDataObject* input, vtkDataArray* vectors, int associati
  * more than one 3-component array (point or cell; a composite's first block
  * that has some): the array `name` (of `association`) and why (the input's
  * active vectors, named like a velocity, or chosen in Vectors), with the
- * others. Empty where there was no choice to make.
+ * others. `why`, where given, says why in place of those (the Vectors
+ * default that preferred an array whose units fit, bp::fittingUnitsReason).
+ * Empty where there was no choice to make.
  */
-std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association);
+std::string describeVectorsChoice(vtkDataObject* input, const std::string& name, int association,
+  const std::string& why = std::string());
 
 /**
  * Where the tracer's input (`inInfo`, its input port's information) comes

@@ -109,6 +109,18 @@ double vtkBoundParticleTracer::GetResolvedElementSize() const
   return this->Internals->resolvedElementSize();
 }
 
+const char* vtkBoundParticleTracer::GetUnitsMismatchedVectors()
+{
+  this->CheckHeldInput();
+  return this->Internals->UnitsMismatchedVectors.c_str();
+}
+
+const char* vtkBoundParticleTracer::GetUnitsFittingVectors()
+{
+  this->CheckHeldInput();
+  return this->Internals->UnitsFittingVectors.c_str();
+}
+
 bp::TraceSettings vtkBoundParticleTracer::Settings() const
 {
   bp::TraceSettings s;
@@ -403,6 +415,12 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
+  // The time line's warnings of an update whose Vectors is still not chosen.
+  if (!I.PendingTimeLine.empty())
+  {
+    this->SayTimeLineWarnings(I.PendingTimeLine);
+    I.PendingTimeLine.clear();
+  }
   if (!I.hasTimes())
   {
     return end(Pass::fail("The filter has no time range; see the previous error."));

@@ -49,6 +49,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 class vtkDataArray;
@@ -224,6 +225,18 @@ public:
   /// process (collective over the global controller) into `grid`; its vectors.
   vtkDataArray* probeGrid(
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
+
+  /// The time line's warnings resolved while Vectors was not chosen (a
+  /// tracer just made, whose Vectors default comes next): said by an update
+  /// that still has none, not before.
+  std::vector<std::string> PendingTimeLine;
+  /// vtkBoundParticleTracer::PreferFittingVectors: the array whose units
+  /// failed the time line's check, the one preferred, and why.
+  std::string UnitsMismatchedVectors;
+  std::string UnitsFittingVectors;
+  std::string UnitsReason;
+  /// The input they were found of (vtkBoundParticleTracer::InputKey).
+  std::tuple<const void*, int, vtkMTimeType> UnitsChecked{ nullptr, -1, 0 };
 
 private:
   bp::TracePlan Plan;

@@ -81,6 +81,76 @@ int velocityNameRank(const std::string& name)
   return std::any_of(w.begin(), w.end(), velocityWord) ? 1 : -1;
 }
 
+bool namesOtherQuantity(const std::string& name)
+{
+  const std::vector<std::string> w = words(name);
+  return std::any_of(w.begin(), w.end(), otherQuantity);
+}
+
+int pickDefaultVectors(const std::vector<std::string>& names, int active)
+{
+  if (names.empty())
+  {
+    return -1;
+  }
+  if (active >= 0 && std::size_t(active) < names.size())
+  {
+    return active;
+  }
+  return std::max(pickVelocityName(names), 0);
+}
+
+int preferFittingUnits(const std::vector<VectorsCandidate>& candidates, int chosen)
+{
+  if (chosen < 0 || std::size_t(chosen) >= candidates.size() ||
+    candidates[std::size_t(chosen)].unitsFit)
+  {
+    return chosen;
+  }
+  int best = chosen, bestRank = 3;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const VectorsCandidate& c = candidates[i];
+    if (!c.unitsFit || namesOtherQuantity(c.name))
+    {
+      continue;
+    }
+    const int named = velocityNameRank(c.name);
+    const int rank = named >= 0 ? named : 2; // a name that says nothing after a velocity's
+    if (rank < bestRank)
+    {
+      best = int(i);
+      bestRank = rank;
+    }
+  }
+  return best;
+}
+
+std::string fittingUnitsReason(
+  const std::string& mismatched, bool mismatchedActive, const std::string& warning)
+{
+  // The time line's units warnings state their findings, then turn to what
+  // the velocity's units may be ("...: the velocity's units may not match",
+  // "...; check the velocity's units").
+  std::string findings = warning;
+  for (const char* turn :
+    { ", so the trace crumples", ": the velocity's units", "; check the velocity's units" })
+  {
+    const std::size_t at = findings.find(turn);
+    if (at != std::string::npos)
+    {
+      findings.resize(at);
+    }
+  }
+  if (!findings.empty())
+  {
+    findings[0] = char(std::tolower(static_cast<unsigned char>(findings[0])));
+  }
+  return "its units fit the grid and the time steps, while those of '" + mismatched + "'" +
+    (mismatchedActive ? ", the input's active vectors," : "") + " do not" +
+    (findings.empty() ? std::string() : ": " + findings);
+}
+
 int pickVelocityName(const std::vector<std::string>& names)
 {
   int best = -1, bestRank = -1;

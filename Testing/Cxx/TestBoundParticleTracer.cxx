@@ -47,6 +47,9 @@ public:
   vtkTypeMacro(vtkFloatTimesSource, vtkImageAlgorithm);
   int Steps = 11;
   double Origin = 0.0;
+  double Speed = 0.1;       ///< of `v`, the active vectors
+  double OtherSpeed = -1.0; ///< of a second array `v_other`; none where negative
+  int Executions = 0;       ///< how many times RequestData ran
 
 protected:
   vtkFloatTimesSource() { this->SetNumberOfInputPorts(0); }
@@ -70,6 +73,7 @@ protected:
   }
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
   {
+    ++this->Executions;
     vtkInformation* info = out->GetInformationObject(0);
     vtkImageData* image = vtkImageData::GetData(info);
     image->SetExtent(0, 10, 0, 10, 0, 10);
@@ -80,8 +84,18 @@ protected:
     v->SetNumberOfComponents(3);
     v->SetNumberOfTuples(image->GetNumberOfPoints());
     for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-      v->SetTuple3(i, 0.1, 0.0, 0.0);
+      v->SetTuple3(i, this->Speed, 0.0, 0.0);
     image->GetPointData()->SetVectors(v);
+    if (this->OtherSpeed >= 0.0)
+    {
+      vtkNew<vtkFloatArray> other;
+      other->SetName("v_other");
+      other->SetNumberOfComponents(3);
+      other->SetNumberOfTuples(image->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+        other->SetTuple3(i, this->OtherSpeed, 0.0, 0.0);
+      image->GetPointData()->AddArray(other);
+    }
     if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
       image->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
         info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
@@ -526,6 +540,95 @@ TEST(BoundParticleTracer, Float32TimeStepsDoNotStall)
     EXPECT_EQ(at(tracer, t)->GetNumberOfPoints(), 20 * 8) << t;
     EXPECT_LE(tracer->GetStepsInLastUpdate(), 2) << t;
   }
+}
+
+TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundForTheVectorsDefault)
+{
+  // The active vectors `v` cross 30 cells between two input time steps (0.1
+  // apart), units that do not match; `v_other` crosses 0.1 cell.
+  vtkNew<vtkFloatTimesSource> source;
+  source->Speed = 30.0;
+  source->OtherSpeed = 0.1;
+  auto tracer = tracerOn(source, 20);
+  ErrorLog warningLog(tracer, vtkCommand::WarningEvent);
+  std::vector<std::string>& warnings = warningLog.messages;
+  // Asking runs nothing: before the source ever ran there is nothing to read.
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "");
+  EXPECT_EQ(source->Executions, 0);
+  // Found by the request for information before Vectors is set, as ParaView
+  // makes it before it sets the Vectors property's default, on the data the
+  // time line's probe had the source deliver (once, at its first time step).
+  tracer->UpdateInformation();
+  EXPECT_EQ(source->Executions, 1);
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  EXPECT_EQ(source->Executions, 1);
+  // The units warning of `v` waits for an update that still has no Vectors
+  // (ParaView sets its default first), and is said then, once.
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  at(tracer, 0.5);
+  at(tracer, 0.6);
+  const auto units = std::count_if(warnings.begin(), warnings.end(),
+    [](const std::string& w) { return w.find("between two input time steps") != w.npos; });
+  EXPECT_EQ(units, 1);
+  // `v_other` chosen: no warning, and what was found stays.
+  warnings.clear();
+  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "v_other");
+  at(tracer, 0.5);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  // Both fit: nothing to prefer.
+  vtkNew<vtkFloatTimesSource> fitting;
+  fitting->OtherSpeed = 0.2;
+  auto other = tracerOn(fitting, 20);
+  other->UpdateInformation();
+  EXPECT_STREQ(other->GetUnitsMismatchedVectors(), "");
+  EXPECT_STREQ(other->GetUnitsFittingVectors(), "");
+}
+
+TEST(BoundParticleTracer, AnArrayWhoseUnitsFitIsFoundOnTheDataHeldBeforeAnyRequest)
+{
+  // pvpython sets the Vectors default as soon as Input is set, before it
+  // asks the tracer for information: the data the input holds is read as it
+  // is, at the time it holds, and nothing runs.
+  vtkNew<vtkFloatTimesSource> source;
+  source->Speed = 30.0;
+  source->OtherSpeed = 0.1;
+  source->UpdateTimeStep(double(0.1f * 3.0f));
+  auto tracer = tracerOn(source, 20);
+  EXPECT_STREQ(tracer->GetUnitsMismatchedVectors(), "v");
+  EXPECT_STREQ(tracer->GetUnitsFittingVectors(), "v_other");
+  EXPECT_EQ(source->Executions, 1);
+  EXPECT_DOUBLE_EQ(
+    source->GetOutputDataObject(0)->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()),
+    double(0.1f * 3.0f));
+}
+
+TEST(BoundParticleTracer, TheTimeLineProbeLeavesItsInputAtTheTimeItsConsumersAsked)
+{
+  // The automatic time line probes the field at its first time step; the
+  // source's output, shared with its other consumers, is left at the time
+  // they asked for (here 0.5), not the probe's.
+  vtkNew<vtkFloatTimesSource> source;
+  const double held = double(0.1f * 5.0f);
+  source->UpdateTimeStep(held);
+  vtkImageData* output = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
+  auto tracer = tracerOn(source, 20);
+  tracer->UpdateInformation();
+  // The time line resolved from the probe; the source run at the consumers'
+  // time, the probe's, and theirs again.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  EXPECT_GT(tracer->GetOutputInformation(0)->Length(SDDP::TIME_STEPS()), 0);
+  EXPECT_EQ(source->Executions, 3);
+  EXPECT_EQ(source->GetOutputDataObject(0), output);
+  EXPECT_DOUBLE_EQ(output->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), held);
+  EXPECT_DOUBLE_EQ(source->GetOutputInformation(0)->Get(SDDP::UPDATE_TIME_STEP()), held);
+  // Nothing held at another time: the probe's update is all.
+  vtkNew<vtkFloatTimesSource> fresh;
+  auto other = tracerOn(fresh, 20);
+  other->UpdateInformation();
+  EXPECT_EQ(fresh->Executions, 1);
 }
 
 TEST(BoundParticleTracer, FarFromTheOriginKeepsPrecision)

@@ -202,4 +202,28 @@ bptest.check(0 < counts[1.5][1] <= counts[0.6][1],
 
 Delete(view)
 del view
+
+# A tracer with an automatic time line made on a time-varying filter shown at
+# the view's time: its probe of the field at the first time step leaves the
+# filter's output at the view's time, as its display and a script find it.
+gyre = AnalyticFlow(Flow="Double Gyre", Resolution=[40, 24, 6], NumberOfTimeSteps=9)
+doubled = Calculator(Input=gyre, Function="velocity*2", ResultArrayName="doubled")
+gyre_view = CreateRenderView(ViewSize=[160, 120])
+Show(doubled, gyre_view)
+gyre_times = list(gyre.TimestepValues)
+gyre_view.ViewTime = gyre_times[5]
+Render(gyre_view)
+held = doubled.GetClientSideObject().GetOutputDataObject(0)
+before = vtk_to_numpy(held.GetPointData().GetArray("doubled")).copy()
+automatic = BoundParticleTracer(Input=doubled, Vectors=["POINTS", "doubled"], NumberOfElements=20)
+automatic.UpdatePipelineInformation()
+bptest.check(len(automatic.TimestepValues) > 0, "the automatic time line was resolved")
+held_time = held.GetInformation().Get(held.DATA_TIME_STEP())
+after = vtk_to_numpy(held.GetPointData().GetArray("doubled"))
+bptest.check(held_time == gyre_times[5] and numpy.array_equal(before, after),
+             "the filter's output stays at the view's time %g: it holds %g" %
+             (gyre_times[5], held_time))
+Delete(automatic)
+Delete(gyre_view)
+del gyre_view
 bptest.finish()
