@@ -78,7 +78,6 @@ bool pqBoundParticleTickGuard::eventFilter(QObject* watched, QEvent* event)
       case QEvent::TouchBegin:
       case QEvent::TouchUpdate:
       case QEvent::TouchEnd:
-        ++this->Dropped;
         return true;
       default:
         break;

@@ -37,9 +37,6 @@ public:
   explicit pqBoundParticleTickGuard(QObject* parent);
   ~pqBoundParticleTickGuard() override;
 
-  /// How many user events the guard dropped (for tests and the log).
-  int droppedEvents() const { return this->Dropped; }
-
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -55,7 +52,6 @@ private:
   std::vector<unsigned long> Tags;
   int TickDepth = 0;
   bool Playing = false;
-  int Dropped = 0;
 };
 
 #endif

@@ -193,8 +193,6 @@ public:
   /// The index of the cell that holds p (clamped to the grid), as its lowest
   /// corner's point index: how outsideCells and release masks are indexed.
   inline std::size_t cellIndexAt(const float p[3]) const;
-  /// Whether any slice marks cells outside the domain.
-  bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
   /// The grid's bounds as a Domain.
   const Domain& domain() const { return this->Bounds; }
 
