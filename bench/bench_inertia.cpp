@@ -10,7 +10,7 @@
 // what a real GPU takes. The target is at most 1.3 times the massless step.
 //
 //   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick] [--cpu-only]
-//                              [--interleaved S] [--threads T] [--in-cache]
+//                              [--interleaved S] [--threads T] [--in-cache] [--divide D]
 //
 // --cpu-only skips the GPU engine's rows (what a CPU change is measured by).
 // --interleaved S steps the massless and the heavy engine alternately, step
@@ -20,6 +20,8 @@
 // every core). --in-cache runs the CPU rows with a 32nd of the elements
 // (8,192 particles), whose state and a 64^3 field stay in the caches: what
 // is left of the ratio there is arithmetic, not waiting for memory.
+// --divide D runs every row, CPU and GPU, with a D-th of its elements (the
+// bundle's real_gpu.sh, on a short budget).
 #include "BenchFields.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -142,13 +144,13 @@ std::pair<double, double> interleavedMedians(
   return { median(times[0]), median(times[1]) };
 }
 
-void printGpuRows(
-  const bench::Fields& fields, const Job (&allJobs)[4], int repeats, int steps, bool quick)
+void printGpuRows(const bench::Fields& fields, const Job (&allJobs)[4], int repeats, int steps,
+  bool quick, std::size_t divide)
 {
   // --quick: a sixteenth of the elements (llvmpipe steps 262,144 particles slowly).
   std::vector<Job> jobs(std::begin(allJobs), std::end(allJobs));
   for (Job& job : jobs)
-    job.elements /= quick ? 16 : 1;
+    job.elements = std::max<std::size_t>(1, job.elements / (quick ? 16 : 1) / divide);
   bp::HeadlessContext context;
   const std::string error = context.create();
   if (!error.empty())
@@ -194,6 +196,7 @@ int main(int argc, char** argv)
   int repeats = 5, resolution = 128, steps = 20;
   bool quick = false, cpuOnly = false, inCache = false;
   int interleaved = 0;
+  std::size_t divide = 1;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int a = 1; a < argc; ++a)
   {
@@ -211,6 +214,8 @@ int main(int argc, char** argv)
       threads = unsigned(std::max(1, std::atoi(argv[++a])));
     else if (!std::strcmp(argv[a], "--in-cache"))
       inCache = true;
+    else if (!std::strcmp(argv[a], "--divide") && a + 1 < argc)
+      divide = std::size_t(std::max(1, std::atoi(argv[++a])));
   }
   if (quick)
   {
@@ -226,8 +231,10 @@ int main(int argc, char** argv)
     { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::Euler, "Euler" },
     { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::RK2, "RK2" },
   };
-  const std::size_t cpuShare = inCache ? 32 : 1;
-  const char* where = inCache ? ", a 32nd of the elements (in cache)" : "";
+  const std::size_t cpuShare = (inCache ? 32 : 1) * divide;
+  const std::string share =
+    ", a " + std::to_string(cpuShare) + "th of the elements" + (inCache ? " (in cache)" : "");
+  const char* where = cpuShare > 1 ? share.c_str() : "";
   if (interleaved)
   {
     std::printf("Heavy particles against massless, CPU engine, %u threads, %d^3 grid%s, stepped "
@@ -244,7 +251,7 @@ int main(int argc, char** argv)
     "massless ms", "inertia ms", "ratio", "target <= 1.3");
   for (Job job : jobs)
   {
-    job.elements /= cpuShare;
+    job.elements = std::max<std::size_t>(1, job.elements / cpuShare);
     for (int f = 0; f < 2; ++f)
     {
       const bp::VectorField& field = f == 0 ? fields.steady : fields.unsteady;
@@ -275,7 +282,7 @@ int main(int argc, char** argv)
   std::fflush(stdout);
   if (!cpuOnly)
   {
-    printGpuRows(fields, jobs, repeats, steps, quick);
+    printGpuRows(fields, jobs, repeats, steps, quick, divide);
   }
   return 0;
 }
