@@ -49,10 +49,17 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
       ? " A system's step is one fused dispatch where its elements fit a workgroup."
       : " Each kernel is a dispatch of its own.";
   }
-  sayGpuPathOnce(path);
   this->shapeTables.upload(this->shape, p.elementSize, generatedSprings);
   error = this->passes.compile(
     path.path, this->shapeTables.springSumCode, fuses ? this->fusedStep() : FusedStep());
+  if (!error.empty() && compute)
+  {
+    // A compute program the driver refuses: the fragment path, same kernels.
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    fallBackToFragmentPath(path, error, version ? version : "?");
+    error = this->passes.compile(GpuPath::Fragment, this->shapeTables.springSumCode, FusedStep());
+  }
+  sayGpuPathOnce(path);
   if (!error.empty())
   {
     return error;

@@ -182,6 +182,64 @@ TEST(GpuPath, ForcedComputeFallsBackBelow43)
   EXPECT_EQ(warnings, 1) << "said once for two configurations";
 }
 
+// A compute program the driver refuses (forced here: every compute program
+// fails to compile) leaves the engine on its fragment path, with one warning
+// that names the program and the compiler's message, and loses nothing: the
+// same bits as the fragment path asked for.
+TEST(GpuPath, ComputeCompileFailureFallsBackToTheFragmentPath)
+{
+  if (!bp::haveSharedContext())
+    return;
+  if (epoxy_gl_version() < bp::ComputePathVersion)
+    GTEST_SKIP() << "no compute path on this context";
+  const char* was = std::getenv(bp::GpuPathVariable);
+  const std::string before = was ? was : "";
+  said().clear();
+  bp::setGpuMessageSink(listen);
+  bp::setComputeCompileFailureForTesting(true);
+  for (const char* fused : { "on", "off" })
+  {
+    setenv(bp::GpuPathVariable, "compute", 1);
+    setenv(bp::FusedStepVariable, fused, 1);
+    bp::GpuEngine refused;
+    const std::vector<float> got = trace(refused, strips(40), 6);
+    EXPECT_EQ(refused.path(), bp::GpuPath::Fragment) << "fused " << fused;
+    EXPECT_FALSE(refused.fusedStep());
+    refused.release();
+    setenv(bp::GpuPathVariable, "fragment", 1);
+    bp::GpuEngine fragment;
+    const std::vector<float> want = trace(fragment, strips(40), 6);
+    fragment.release();
+    ASSERT_EQ(got.size(), want.size());
+    EXPECT_EQ(std::memcmp(got.data(), want.data(), got.size() * sizeof(float)), 0)
+      << "the fallback runs the fragment path's kernels, bit for bit";
+  }
+  bp::setComputeCompileFailureForTesting(false);
+  bp::setGpuMessageSink(nullptr);
+  unsetenv(bp::FusedStepVariable);
+  if (was)
+    setenv(bp::GpuPathVariable, before.c_str(), 1);
+  else
+    unsetenv(bp::GpuPathVariable);
+  int warnings = 0;
+  for (const auto& message : said())
+  {
+    std::printf("%s%s\n", message.second ? "warning: " : "", message.first.c_str());
+    if (!message.second)
+      continue;
+    ++warnings;
+    EXPECT_NE(message.first.find("compute path could not be built"), std::string::npos)
+      << message.first;
+    EXPECT_NE(message.first.find("does not compile"), std::string::npos) << message.first;
+    EXPECT_NE(message.first.find("compute programs refused"), std::string::npos) << message.first;
+    EXPECT_EQ(message.first.find('\n'), std::string::npos) << "one line";
+  }
+  // One for the per-kernel programs, one for the fused step's (a message is
+  // said once per process unless its text differs).
+  EXPECT_GE(warnings, 1);
+  EXPECT_LE(warnings, 2);
+}
+
 // The fused step and a dispatch per kernel run the same kernels on the same
 // values: they agree to the parity bar (on Mesa's llvmpipe, bit for bit).
 TEST(GpuPath, FusedAndPerKernelStepsAgree)
