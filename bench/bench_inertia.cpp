@@ -11,6 +11,7 @@
 //
 //   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick] [--cpu-only]
 //                              [--interleaved S] [--threads T] [--in-cache] [--divide D]
+//                              [--gpu-path fragment|compute|fused]
 //
 // --cpu-only skips the GPU engine's rows (what a CPU change is measured by).
 // --interleaved S steps the massless and the heavy engine alternately, step
@@ -20,8 +21,9 @@
 // every core). --in-cache runs the CPU rows with a 32nd of the elements
 // (8,192 particles), whose state and a 64^3 field stay in the caches: what
 // is left of the ratio there is arithmetic, not waiting for memory.
-// --divide D runs every row, CPU and GPU, with a D-th of its elements (the
-// bundle's real_gpu.sh, on a short budget).
+// --divide D runs every row, CPU and GPU, with a D-th of its elements, and
+// --gpu-path the GPU rows of one path alone (the bundle's real_gpu.sh, on a
+// short budget).
 #include "BenchFields.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -145,7 +147,7 @@ std::pair<double, double> interleavedMedians(
 }
 
 void printGpuRows(const bench::Fields& fields, const Job (&allJobs)[4], int repeats, int steps,
-  bool quick, std::size_t divide)
+  bool quick, std::size_t divide, const std::string& only)
 {
   // --quick: a sixteenth of the elements (llvmpipe steps 262,144 particles slowly).
   std::vector<Job> jobs(std::begin(allJobs), std::end(allJobs));
@@ -167,6 +169,8 @@ void printGpuRows(const bench::Fields& fields, const Job (&allJobs)[4], int repe
     { "fused", "compute", "on" } };
   for (const auto& path : paths)
   {
+    if (!only.empty() && only != path[0])
+      continue;
     setenv(bp::GpuPathVariable, path[1], 1);
     setenv(bp::FusedStepVariable, path[2], 1);
     for (const Job& job : jobs)
@@ -197,11 +201,13 @@ int main(int argc, char** argv)
   bool quick = false, cpuOnly = false, inCache = false;
   int interleaved = 0;
   std::size_t divide = 1;
+  int repeatsGiven = 0; // --repeats wins over --quick's
+  std::string gpuPath;  // --gpu-path: that path's rows alone
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int a = 1; a < argc; ++a)
   {
     if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
-      repeats = std::max(1, std::atoi(argv[++a]));
+      repeatsGiven = std::max(1, std::atoi(argv[++a]));
     else if (!std::strcmp(argv[a], "--resolution") && a + 1 < argc)
       resolution = std::max(8, std::atoi(argv[++a]));
     else if (!std::strcmp(argv[a], "--quick"))
@@ -214,6 +220,8 @@ int main(int argc, char** argv)
       threads = unsigned(std::max(1, std::atoi(argv[++a])));
     else if (!std::strcmp(argv[a], "--in-cache"))
       inCache = true;
+    else if (!std::strcmp(argv[a], "--gpu-path") && a + 1 < argc)
+      gpuPath = argv[++a];
     else if (!std::strcmp(argv[a], "--divide") && a + 1 < argc)
       divide = std::size_t(std::max(1, std::atoi(argv[++a])));
   }
@@ -223,6 +231,7 @@ int main(int argc, char** argv)
     resolution = 64;
     steps = 5;
   }
+  repeats = repeatsGiven > 0 ? repeatsGiven : repeats;
   const bench::Fields fields = bench::benchFields(resolution);
   const bp::RangeRunner run = bp::poolRunner(threads);
   const Job jobs[] = {
@@ -282,7 +291,7 @@ int main(int argc, char** argv)
   std::fflush(stdout);
   if (!cpuOnly)
   {
-    printGpuRows(fields, jobs, repeats, steps, quick, divide);
+    printGpuRows(fields, jobs, repeats, steps, quick, divide, gpuPath);
   }
   return 0;
 }

@@ -14,12 +14,14 @@
 #            BOUNDPARTICLES_ALLOW_SOFTWARE_GPU=1 (the rehearsal)
 #   tests    the engine-level GPU tests (parity with the CPU engine, physics,
 #            heavy particles, deformation, the paths) on each path: fused,
-#            compute (a dispatch per kernel), fragment
+#            compute (a dispatch per kernel), fragment; a budget under 420 s
+#            runs one shard of 4 (under 200 s, of 8) of each binary's tests
 #   rows     Strip16 and Point at 1 M, 4 M and 16 M particles, steady Euler and
 #            unsteady RK4, each GPU path and the CPU engine on every core
 #            (BoundParticlesGpuRows: warmed up, >= 0.3 s or 100 steps, median of 3)
 #   threads  the CPU engine on 1, 2, 4, 8 and 16 threads, 1 M particles (issue 40)
-#   inertia  heavy particles against massless on both engines (issue 44)
+#   inertia  heavy particles against massless on both engines (issue 44); a
+#            budget under 200 s runs the GPU's fused path alone
 # BOUNDPARTICLES_BENCH_BUDGET=SECONDS (default 480, 8 minutes) is the whole
 # run's budget: every section's time, its rows and its sizes scale with it.
 # BOUNDPARTICLES_EGL_DEVICE=N takes EGL device N (as the gpu section lists them).
@@ -169,10 +171,18 @@ if [ "$gpu_ok" = 1 ]; then
   secs=$(share 30 70)
   until=$((SECONDS + secs))
   passed=0 failed=() cut=()
+  # The default path on a GPU (fused) on every binary first, then the others.
+  # A shortened budget runs one shard of each binary's tests (GoogleTest's
+  # sharding: every K-th test), so every binary and path still runs some.
+  shards=1
+  [ "$budget" -lt 420 ] && shards=4
+  [ "$budget" -lt 200 ] && shards=8
   jobs=("BoundParticlesGpuPathTests any")
-  for b in BoundParticlesDeformationTests BoundParticlesInertiaTests BoundParticlesPhysicsTests \
-    BoundParticlesGpuTests; do
-    for path in fused compute fragment; do jobs+=("$b $path"); done
+  for path in fused compute fragment; do
+    for b in BoundParticlesDeformationTests BoundParticlesInertiaTests \
+      BoundParticlesPhysicsTests BoundParticlesGpuTests; do
+      jobs+=("$b $path")
+    done
   done
   for job in "${jobs[@]}"; do
     read -r b path <<<"$job"
@@ -190,6 +200,7 @@ if [ "$gpu_ok" = 1 ]; then
     esac
     echo "=== $b, path $path" >>"$log"
     t=$SECONDS
+    [ "$shards" -gt 1 ] && env+=(GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=0)
     why="$(run "$left" "$log" env "${env[@]}" "$bin/$b" --gtest_brief=1 "--gtest_filter=$filter")"
     n="$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)"
     echo "=== $b, path $path: ${why:-passed} in $((SECONDS - t)) s" >>"$log"
@@ -202,6 +213,7 @@ if [ "$gpu_ok" = 1 ]; then
     fi
   done
   detail="$passed of ${#jobs[@]} test runs passed"
+  [ "$shards" -gt 1 ] && detail+=", each one shard of $shards (the budget)"
   [ "${#cut[@]}" -gt 0 ] && detail+="; not run or cut by the budget: ${cut[*]}"
   if [ "${#failed[@]}" -gt 0 ]; then
     result tests "failed (${failed[*]}; $detail; see tests.txt)"
@@ -249,7 +261,8 @@ result threads "$([ -z "$why" ] && echo ok || echo "failed ($why; see threads.tx
 # --- inertia: heavy particles against massless, both engines ---------------
 secs=$(share 23 0)
 if [ "$budget" -ge 400 ]; then args=(--interleaved 60)
-else args=(--quick --repeats 1 --divide $((budget >= 200 ? 4 : 32)))
+elif [ "$budget" -ge 200 ]; then args=(--quick --repeats 1 --divide 4)
+else args=(--quick --repeats 1 --divide 32 --gpu-path fused) # the path a GPU runs by default
 fi
 [ "$gpu_ok" = 1 ] || args+=(--cpu-only)
 why="$(run "$secs" "$out/inertia.txt" "$bin/BoundParticlesInertiaBench" "${args[@]}")"

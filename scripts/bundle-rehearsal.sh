@@ -57,7 +57,12 @@ check_bare() {
 }
 
 make_chroot() {
-  command -v debootstrap >/dev/null || fail "debootstrap is not installed (scripts/setup.sh)"
+  if ! command -v debootstrap >/dev/null; then
+    # As in the other suites' chroots (scripts/chroot-test.sh), where no
+    # debootstrap is installed: the host's suite runs the rehearsal.
+    say "skipped: no chroot yet and no debootstrap to make one (scripts/setup.sh debootstrap)"
+    exit 77
+  fi
   say "debootstrap --variant=minbase $suite into $dir"
   umount -R "$dir.partial/proc" "$dir.partial/sys" 2>/dev/null || true
   rm -rf --one-file-system "$dir.partial"
