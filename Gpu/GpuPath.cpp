@@ -118,6 +118,15 @@ GpuPathChoice currentGpuPath()
   return chooseGpuPath(epoxy_gl_version(), version ? version : "?", std::getenv(GpuPathVariable));
 }
 
+int fusedGroupValue(const char* value)
+{
+  if (!value || !*value)
+    return 0;
+  char* end = nullptr;
+  const long n = std::strtol(value, &end, 10);
+  return *end == '\0' && n >= 1 && n <= 1024 ? int(n) : 0;
+}
+
 namespace
 {
 std::atomic<bool> ComputeFails{ false };

@@ -97,6 +97,16 @@ enum class FusedSteps
 /// The environment variable that overrides FusedSteps::Automatic: `on`, `off` or `automatic`.
 constexpr const char* FusedStepVariable = "BOUNDPARTICLES_GPU_FUSED_STEP";
 
+/// The environment variable that sets the fused step's elements a workgroup
+/// (a whole number from 1 to 1024; fewer where the GPU's limits hold fewer):
+/// for tuning on a GPU (the bundle's real_gpu.sh sweeps it). Unset: a SIMD
+/// group's worth, at least 128 threads.
+constexpr const char* FusedGroupVariable = "BOUNDPARTICLES_FUSED_GROUP";
+
+/// BOUNDPARTICLES_FUSED_GROUP's value: its number, or 0 where it is unset,
+/// empty or not a whole number from 1 to 1024.
+int fusedGroupValue(const char* value);
+
 /**
  * Whether `choice` fuses the steps on the renderer named `renderer`
  * (GL_RENDERER), `requested` the value of BOUNDPARTICLES_GPU_FUSED_STEP (null

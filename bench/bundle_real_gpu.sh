@@ -19,6 +19,8 @@
 #   rows     Strip16 and Point at 1 M, 4 M and 16 M particles, steady Euler and
 #            unsteady RK4, each GPU path and the CPU engine on every core
 #            (BoundParticlesGpuRows: warmed up, >= 0.3 s or 100 steps, median of 3)
+#   fused-group  the fused step at 8, 16 and 32 elements a workgroup
+#            (BOUNDPARTICLES_FUSED_GROUP), Strip16, the first rows' size
 #   threads  the CPU engine on 1, 2, 4, 8 and 16 threads, 1 M particles (issue 40)
 #   inertia  heavy particles against massless on both engines (issue 44); a
 #            budget under 200 s runs the GPU's fused path alone
@@ -240,7 +242,7 @@ minsteps="$(scale 100)"
 minsteps="${minsteps%.*}"
 [ "${minsteps:-0}" -ge 1 ] || minsteps=1
 if [ "$gpu_ok" = 1 ]; then
-  secs=$(share 35 35)
+  secs=$(share 35 45)
   why="$(run $((secs + 20)) "$out/rows.txt" "$bin/BoundParticlesGpuRows" --particles "$particles" \
     --min-time "$(scale 0.3)" --min-steps "$minsteps" --repeats 3 --threads "$cores" \
     --budget "$secs" --csv "$out/rows.csv")"
@@ -248,6 +250,29 @@ if [ "$gpu_ok" = 1 ]; then
   result rows "$([ -z "$why" ] && echo "ok ($rows)" || echo "failed ($why; see rows.txt)")"
 else
   result rows "skipped (no OpenGL context)"
+fi
+
+# --- fused-group: the fused step's elements a workgroup, swept --------------
+# BOUNDPARTICLES_FUSED_GROUP at 8, 16 and 32 Strip16 elements (128 to 512
+# threads) on the first rows' size, steady and unsteady, the fused column
+# alone; appended to rows.txt.
+if [ "$gpu_ok" = 1 ]; then
+  secs=$(share 10 35)
+  until=$((SECONDS + secs))
+  why=""
+  for g in 8 16 32; do
+    left=$((until - SECONDS))
+    [ "$left" -ge 3 ] || { why="the budget ran out before $g"; break; }
+    echo "=== BOUNDPARTICLES_FUSED_GROUP=$g" >>"$out/rows.txt"
+    why="$(run "$left" "$out/rows.txt" env BOUNDPARTICLES_FUSED_GROUP=$g "$bin/BoundParticlesGpuRows" \
+      --particles "${particles%%,*}" --shapes Strip16 --paths fused --no-cpu \
+      --min-time "$(scale 0.3)" --min-steps "$minsteps" --repeats 3 --budget "$left")"
+    [ -z "$why" ] || { why="$g: $why"; break; }
+  done
+  result fused-group "$([ -z "$why" ] && echo "ok (8, 16, 32 elements a workgroup; in rows.txt)" \
+    || echo "failed ($why; see rows.txt)")"
+else
+  result fused-group "skipped (no OpenGL context)"
 fi
 
 # --- threads: the CPU engine on 1 to 16 threads, 1 M particles ---------------

@@ -6,6 +6,7 @@
 // (TestGpuEngine.cpp: GpuPath.IsTheOneTheEnvironmentAsks).
 #include "AnalyticFlows.h"
 #include "GpuEngine.h"
+#include "GpuPasses.h"
 #include "SharedContext.h"
 
 #include <epoxy/gl.h>
@@ -129,6 +130,29 @@ TEST(GpuPath, StepsFuseOnAGpuUnlessTold)
   EXPECT_EQ(warning, "");
   EXPECT_TRUE(bp::fusesSteps(F::Automatic, software, "on", &warning));
   EXPECT_EQ(warning, "");
+}
+
+// BOUNDPARTICLES_FUSED_GROUP: the fused step's elements a workgroup, as
+// asked where the limits hold them, fewer where they do not; a value that is
+// not a whole number from 1 to 1024 is none (automatic).
+TEST(GpuPath, FusedGroupIsSetWithinTheLimits)
+{
+  EXPECT_EQ(bp::fusedGroupValue(nullptr), 0);
+  EXPECT_EQ(bp::fusedGroupValue(""), 0);
+  EXPECT_EQ(bp::fusedGroupValue("16"), 16);
+  EXPECT_EQ(bp::fusedGroupValue("16x"), 0);
+  EXPECT_EQ(bp::fusedGroupValue("0"), 0);
+  EXPECT_EQ(bp::fusedGroupValue("2048"), 0);
+  bp::Parameters p;
+  p.numberOfElements = 1000;
+  const int automatic = bp::FusedStep::of(p, 16, true, 1024, 49152).groupElements;
+  EXPECT_EQ(automatic, 32);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 8).groupElements, 8);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 16).groupElements, 16);
+  // 64 Strip16 elements are 1024 threads: the most a workgroup holds.
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 100).groupElements, 64);
+  // Shared memory: 16 bytes a particle and 96 an element: 32 KiB hold 93.
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 4096, 32768, 200).groupElements, 93);
 }
 
 TEST(GpuPath, EnvironmentValuesAreCheckedAlike)
