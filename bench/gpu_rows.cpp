@@ -12,9 +12,10 @@
 //
 //   BoundParticlesGpuRows [--particles N,N,...] [--shapes Strip16,Point] [--min-time S]
 //     [--min-steps N] [--repeats R] [--threads T] [--no-cpu] [--budget S] [--csv FILE]
-//     [--resolution N] [--paths fragment,compute,fused]
+//     [--resolution N] [--paths fragment,compute,fused] [--fields steady,unsteady]
 //
-// --paths: the GPU columns to run (the others print n/a).
+// --paths: the GPU columns to run (the others print n/a); --fields: the
+// steady (Euler) rows, the unsteady (RK4) ones, or both.
 #include "BenchFields.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -65,6 +66,7 @@ struct Options
   std::vector<std::size_t> particles{ 1048576, 4194304, 16777216 };
   std::vector<std::string> shapes{ "Strip16", "Point" };
   std::vector<std::string> paths{ "fragment", "compute", "fused" };
+  std::vector<std::string> fields{ "steady", "unsteady" };
   double minTime = 0.3, budget = 1e9;
   int minSteps = 100, repeats = 3, resolution = 128;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -106,6 +108,8 @@ bool parse(int argc, char** argv, Options& o)
       o.shapes = split(value);
     else if (a == "--paths")
       o.paths = split(value);
+    else if (a == "--fields")
+      o.fields = split(value);
     else if (a == "--min-time")
       o.minTime = std::max(1e-3, std::atof(value));
     else if (a == "--min-steps")
@@ -262,6 +266,7 @@ int main(int argc, char** argv)
   {
     std::fprintf(stderr,
       "usage: %s [--particles N,N,...] [--shapes Strip16,Point] [--paths fragment,compute,fused]\n"
+      "          [--fields steady,unsteady]\n"
       "          [--min-time S] [--min-steps N]\n"
       "          [--repeats R] [--threads T] [--no-cpu] [--budget S] [--csv FILE] "
       "[--resolution N]\n",
@@ -273,16 +278,18 @@ int main(int argc, char** argv)
   for (std::size_t n : o.particles)
     for (bool unsteady : { false, true })
       for (const std::string& name : o.shapes)
-      {
-        bool known = false;
-        const bp::BuiltinShape shape = shapeNamed(name, known);
-        if (!known)
+        if (std::find(o.fields.begin(), o.fields.end(), unsteady ? "unsteady" : "steady") !=
+          o.fields.end())
         {
-          std::fprintf(
-            stderr, "no element shape named %s (Point, Square, Strip8, Strip16)\n", name.c_str());
-          return 2;
-        }
-        rows.push_back({ unsteady, shape, n });
+          bool known = false;
+          const bp::BuiltinShape shape = shapeNamed(name, known);
+          if (!known)
+          {
+            std::fprintf(
+              stderr, "no element shape named %s (Point, Square, Strip8, Strip16)\n", name.c_str());
+            return 2;
+          }
+          rows.push_back({ unsteady, shape, n });
       }
   const bench::Fields fields = bench::benchFields(o.resolution);
   bp::setGpuMessageSink(keepMessage);
