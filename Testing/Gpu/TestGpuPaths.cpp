@@ -8,6 +8,7 @@
 #include "GpuEngine.h"
 #include "GpuPasses.h"
 #include "SharedContext.h"
+#include "WorkQueue.h"
 
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
@@ -295,6 +296,51 @@ TEST(GpuPath, FusedAndPerKernelStepsAgree)
     fused.release();
     kernels.release();
   }
+}
+
+// On a software renderer (llvmpipe) a compute dispatch runs when the next
+// command needs it, so a GL_TIME_ELAPSED query charged each pass with the
+// one before it (the reset pass, which does next to nothing when no release
+// is due, measured 35 times the fragment path's). There the timer reads the
+// CPU clock around each finished pass: each pass gets its own time, and the
+// reset pass stays below the advect pass.
+TEST(GpuEngine, PassTimesOnASoftwareRendererAreEachPasssOwn)
+{
+  if (!bp::haveSharedContext())
+    return;
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (bp::rendererKind(renderer ? renderer : "") != bp::RendererKind::Software ||
+    epoxy_gl_version() < bp::ComputePathVersion)
+    GTEST_SKIP() << "a software renderer with the compute path only";
+  const char* was = std::getenv(bp::GpuPathVariable);
+  const std::string before = was ? was : "";
+  setenv(bp::GpuPathVariable, "compute", 1);
+  setenv(bp::FusedStepVariable, "off", 1);
+  bp::Parameters p = strips(4096);
+  p.lifetimeMin = p.lifetimeMax = 100.0f; // no release due: the reset pass has nothing to do
+  p.iterations = 1;
+  bp::GpuEngine gpu;
+  trace(gpu, p, 1);
+  gpu.setPassTiming(true);
+  for (int s = 0; s < 4; ++s)
+    gpu.step(0.01 * (s + 1), 0.01);
+  const std::vector<bp::PassTime> times = gpu.passTimes();
+  gpu.release();
+  unsetenv(bp::FusedStepVariable);
+  if (was)
+    setenv(bp::GpuPathVariable, before.c_str(), 1);
+  else
+    unsetenv(bp::GpuPathVariable);
+  double reset = -1.0, advect = -1.0;
+  for (const bp::PassTime& t : times)
+  {
+    std::printf("  %-14s %3ld runs %9.3f ms\n", t.pass.c_str(), t.runs, 1e3 * t.seconds);
+    reset = t.pass == "reset" ? t.seconds : reset;
+    advect = t.pass == "advect" ? t.seconds : advect;
+  }
+  ASSERT_GE(reset, 0.0);
+  ASSERT_GT(advect, 0.0);
+  EXPECT_LT(reset, advect) << "the reset pass charged with another pass's time";
 }
 
 // Per-pass GPU times (GL_TIME_ELAPSED) name every pass a step runs, once a
