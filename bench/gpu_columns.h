@@ -60,7 +60,8 @@ double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& s
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt, bool generated,
   const std::function<double(const std::function<double()>&)>& median);
 
-/// Each pass's GPU time per step (GL_TIME_ELAPSED) over `steps` steps of
+/// Each pass's GPU time per step (GL_TIME_ELAPSED; on a software renderer
+/// the CPU clock around each finished pass: PassTimer.h) over `steps` steps of
 /// `variant`; empty where it cannot run.
 std::vector<bp::PassTime> gpuPassTimes(const GpuVariant& variant, const bp::ElementTemplate& shape,
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt);
