@@ -63,16 +63,23 @@ void attach(GLenum framebuffer, int k, GLuint texture)
 }
 } // namespace
 
-FusedStep FusedStep::of(
-  const Parameters& parameters, int particles, bool springs, int maxThreads, int sharedBytes)
+FusedStep FusedStep::of(const Parameters& parameters, int particles, bool springs, int maxThreads,
+  int sharedBytes, int wantedElements)
 {
   FusedStep fused;
   fused.particles = particles;
-  const int elements = fusedGroupElements(particles, maxThreads);
+  int elements = wantedElements > 0
+    ? std::max(1, std::min(wantedElements, maxThreads / std::max(particles, 1)))
+    : fusedGroupElements(particles, maxThreads);
   // Shared memory: a position per thread (and a slip, for heavy particles),
   // six values per element (bp_step.comp).
   fused.inertial = carriesInertia(parameters);
-  const long bytes = 16L * elements * particles * (fused.inertial ? 2 : 1) + 6L * 16 * elements;
+  const long perElement = 16L * particles * (fused.inertial ? 2 : 1) + 6L * 16;
+  if (wantedElements > 0)
+  {
+    elements = int(std::max(1L, std::min(long(elements), sharedBytes / perElement)));
+  }
+  const long bytes = perElement * elements;
   if (parameters.linking != Linking::None || particles > maxThreads || bytes > sharedBytes)
   {
     return fused; // links join elements; a workgroup cannot hold one

@@ -77,8 +77,11 @@ struct FusedStep
   /// The fused step for a system, or none (groupElements 0) where its
   /// elements do not fit a workgroup of `maxThreads` invocations and
   /// `sharedBytes` of shared memory, or a super set's links join them.
-  static FusedStep of(
-    const Parameters& parameters, int particles, bool springs, int maxThreads, int sharedBytes);
+  /// `wantedElements` above 0 asks for that many elements a workgroup
+  /// (BOUNDPARTICLES_FUSED_GROUP) in place of a SIMD group's worth; fewer
+  /// where the limits hold fewer.
+  static FusedStep of(const Parameters& parameters, int particles, bool springs, int maxThreads,
+    int sharedBytes, int wantedElements = 0);
 };
 
 /// One pass being set up: its program in use, texture units handed out in turn.

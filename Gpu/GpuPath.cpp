@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -115,6 +116,50 @@ GpuPathChoice currentGpuPath()
 {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   return chooseGpuPath(epoxy_gl_version(), version ? version : "?", std::getenv(GpuPathVariable));
+}
+
+int fusedGroupValue(const char* value)
+{
+  if (!value || !*value)
+    return 0;
+  char* end = nullptr;
+  const long n = std::strtol(value, &end, 10);
+  return *end == '\0' && n >= 1 && n <= 1024 ? int(n) : 0;
+}
+
+namespace
+{
+std::atomic<bool> ComputeFails{ false };
+}
+
+void setComputeCompileFailureForTesting(bool on)
+{
+  ComputeFails = on;
+}
+
+bool computeCompileFailureForTesting()
+{
+  return ComputeFails;
+}
+
+void fallBackToFragmentPath(
+  GpuPathChoice& choice, const std::string& error, const std::string& context)
+{
+  // One line: the program and the compiler's first messages.
+  std::string why;
+  for (char c : error)
+    why += c == '\n' ? ' ' : c;
+  while (why.find("  ") != std::string::npos)
+    why.replace(why.find("  "), 2, " ");
+  if (why.size() > 400)
+    why = why.substr(0, 400) + "...";
+  choice.path = GpuPath::Fragment;
+  choice.warning += (choice.warning.empty() ? "" : "\n") +
+    std::string("The GPU engine's compute path could not be built on this driver (") + why +
+    "): the engine runs its fragment path, which runs the same kernels.";
+  choice.note = "BoundParticles GPU engine: the fragment path, since the compute path's "
+                "programs did not build, on OpenGL " +
+    context + ".";
 }
 
 void setGpuMessageSink(GpuMessageSink sink)

@@ -69,6 +69,21 @@ GpuPathChoice chooseGpuPath(int version, const std::string& context, const char*
 /// chooseGpuPath() for the current context and the environment.
 GpuPathChoice currentGpuPath();
 
+/**
+ * `choice`, a compute path whose programs the driver refused (`error`: the
+ * compiler's or linker's message), turned into the fragment path, which runs
+ * the same kernels: its warning (one line) names the program and why, its note
+ * says the fragment path runs (`context`: GL_VERSION).
+ */
+void fallBackToFragmentPath(
+  GpuPathChoice& choice, const std::string& error, const std::string& context);
+
+/// For tests: while on, every compute program the engine builds fails to
+/// compile (an `#error` directive in its source), as a driver's compiler may
+/// refuse one, so the fallback to the fragment path can be checked anywhere.
+void setComputeCompileFailureForTesting(bool on);
+bool computeCompileFailureForTesting();
+
 /// Whether the compute path runs a system's step as one fused dispatch
 /// (bp_step.comp), where its elements fit a workgroup, or as a dispatch per
 /// kernel.
@@ -81,6 +96,16 @@ enum class FusedSteps
 
 /// The environment variable that overrides FusedSteps::Automatic: `on`, `off` or `automatic`.
 constexpr const char* FusedStepVariable = "BOUNDPARTICLES_GPU_FUSED_STEP";
+
+/// The environment variable that sets the fused step's elements a workgroup
+/// (a whole number from 1 to 1024; fewer where the GPU's limits hold fewer):
+/// for tuning on a GPU (the bundle's real_gpu.sh sweeps it). Unset: a SIMD
+/// group's worth, at least 128 threads.
+constexpr const char* FusedGroupVariable = "BOUNDPARTICLES_FUSED_GROUP";
+
+/// BOUNDPARTICLES_FUSED_GROUP's value: its number, or 0 where it is unset,
+/// empty or not a whole number from 1 to 1024.
+int fusedGroupValue(const char* value);
 
 /**
  * Whether `choice` fuses the steps on the renderer named `renderer`

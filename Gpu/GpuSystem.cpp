@@ -43,16 +43,31 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   {
     path.warning += (path.warning.empty() ? "" : "\n") + unknown;
   }
+  const char* group = std::getenv(FusedGroupVariable);
+  if (group && *group && fusedGroupValue(group) == 0)
+  {
+    path.warning += (path.warning.empty() ? "" : "\n") + std::string(FusedGroupVariable) + "=" +
+      group +
+      " is not a whole number of elements from 1 to 1024: the fused step takes a SIMD "
+      "group's worth.";
+  }
   if (compute)
   {
     path.note += fuses
       ? " A system's step is one fused dispatch where its elements fit a workgroup."
       : " Each kernel is a dispatch of its own.";
   }
-  sayGpuPathOnce(path);
   this->shapeTables.upload(this->shape, p.elementSize, generatedSprings);
   error = this->passes.compile(
     path.path, this->shapeTables.springSumCode, fuses ? this->fusedStep() : FusedStep());
+  if (!error.empty() && compute)
+  {
+    // A compute program the driver refuses: the fragment path, same kernels.
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    fallBackToFragmentPath(path, error, version ? version : "?");
+    error = this->passes.compile(GpuPath::Fragment, this->shapeTables.springSumCode, FusedStep());
+  }
+  sayGpuPathOnce(path);
   if (!error.empty())
   {
     return error;
@@ -88,8 +103,10 @@ FusedStep GpuSystem::fusedStep() const
   glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &threads);
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_SIZE, 0, &sizeX);
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared);
+  // BOUNDPARTICLES_FUSED_GROUP: elements a workgroup, for tuning on a GPU.
+  const char* wanted = std::getenv(FusedGroupVariable);
   return FusedStep::of(this->parameters, this->layout.particlesPerElement,
-    !this->shape.springs.empty(), std::min(threads, sizeX), shared);
+    !this->shape.springs.empty(), std::min(threads, sizeX), shared, fusedGroupValue(wanted));
 }
 
 void GpuSystem::initialize(double startTime)

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PassTimer.h"
 
+#include "WorkQueue.h"
+
 #include <algorithm>
+#include <chrono>
 
 namespace bp
 {
@@ -10,6 +13,11 @@ namespace
 /// Pending queries beyond this are read (the oldest, long finished), so a
 /// long timed run holds a bounded number.
 constexpr std::size_t MostPending = 4096;
+
+double now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 } // namespace
 
 void PassTimer::enable(bool on)
@@ -19,6 +27,11 @@ void PassTimer::enable(bool on)
     this->settle(0);
     this->Times.clear();
   }
+  else if (!this->On)
+  {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    this->CpuClock = rendererKind(renderer ? renderer : "") == RendererKind::Software;
+  }
   this->On = on;
 }
 
@@ -26,6 +39,20 @@ void PassTimer::begin(const std::string& pass)
 {
   if (!this->On)
   {
+    return;
+  }
+  const auto known = std::find_if(this->Times.begin(), this->Times.end(),
+    [&](const PassTime& time) { return time.pass == pass; });
+  const std::size_t index = std::size_t(known - this->Times.begin());
+  if (known == this->Times.end())
+  {
+    this->Times.push_back({ pass, 0, 0.0 });
+  }
+  if (this->CpuClock)
+  {
+    glFinish(); // what came before runs outside this pass's time
+    this->Running = index;
+    this->Started = now();
     return;
   }
   if (this->Open.size() >= MostPending)
@@ -39,13 +66,6 @@ void PassTimer::begin(const std::string& pass)
     this->Queries.add(GlQuery(name));
     this->Free.push_back(this->Queries.size() - 1);
   }
-  const auto known = std::find_if(this->Times.begin(), this->Times.end(),
-    [&](const PassTime& time) { return time.pass == pass; });
-  const std::size_t index = std::size_t(known - this->Times.begin());
-  if (known == this->Times.end())
-  {
-    this->Times.push_back({ pass, 0, 0.0 });
-  }
   const std::size_t query = this->Free.back();
   this->Free.pop_back();
   this->Open.push_back({ query, index });
@@ -54,7 +74,14 @@ void PassTimer::begin(const std::string& pass)
 
 void PassTimer::end()
 {
-  if (this->On)
+  if (this->On && this->CpuClock)
+  {
+    glFinish(); // the pass itself, run now on a software renderer
+    PassTime& time = this->Times[this->Running];
+    ++time.runs;
+    time.seconds += now() - this->Started;
+  }
+  else if (this->On)
   {
     glEndQuery(GL_TIME_ELAPSED);
   }

@@ -4,6 +4,12 @@
  * @brief Where the GPU engine's time goes: a GL_TIME_ELAPSED query around
  * every pass (and copy) while timing is on, summed per pass.
  *
+ * On a software renderer (llvmpipe) the queries mislead: a compute dispatch
+ * runs when a later command needs it, inside the next pass's query, so each
+ * pass was charged with the one before it. There the timer reads the CPU
+ * clock instead, around each pass with glFinish on both sides (timing on,
+ * the passes wait for each other; the step's total stays the same).
+ *
  * Nothing waits while the passes run: a query's result is read only by
  * collect(), or when very many are pending (then the oldest, long finished).
  * Off, it costs nothing. Needs the GL context current; the queries are
@@ -26,9 +32,12 @@ namespace bp
 class PassTimer
 {
 public:
-  /// Starts or stops timing; stopping drops what was not collected.
+  /// Starts or stops timing; stopping drops what was not collected. Starting
+  /// reads GL_RENDERER: a software renderer's passes are timed by the CPU clock.
   void enable(bool on);
   bool enabled() const { return this->On; }
+  /// Whether the CPU clock times the passes (a software renderer).
+  bool cpuClock() const { return this->CpuClock; }
 
   /// Opens the query of a run of `pass`; one at a time (GL_TIME_ELAPSED
   /// queries do not nest).
@@ -49,6 +58,9 @@ private:
     std::size_t pass;  ///< in Times
   };
   bool On = false;
+  bool CpuClock = false;
+  double Started = 0.0;          ///< the CPU clock's begin(), in seconds
+  std::size_t Running = 0;       ///< the pass begin() opened, in Times (CPU clock)
   GlQueryList Queries;           ///< every query made; reused
   std::vector<std::size_t> Free; ///< queries not pending
   std::deque<Pending> Open;      ///< begun, results not read yet, oldest first

@@ -234,7 +234,11 @@ std::string buildProgram(GpuPath path, const std::string& name, const std::strin
     { 0, elementStateDeclarations(images) }, { bpShaderInputsNumber, bpShaderInputs },
     { bpShaderCommonNumber, bpShaderCommon } };
   all.insert(all.end(), pieces.begin(), pieces.end());
-  const std::string source = assembleShader(path, engineConstantDefinitions() + defines, all);
+  const std::string refused = path == GpuPath::Compute && computeCompileFailureForTesting()
+    ? "#error compute programs refused (setComputeCompileFailureForTesting)\n"
+    : "";
+  const std::string source =
+    assembleShader(path, engineConstantDefinitions() + defines + refused, all);
   GLuint vs = 0, main = 0;
   std::string error;
   if (path == GpuPath::Fragment)

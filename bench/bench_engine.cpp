@@ -245,7 +245,8 @@ void printPassTimes(
 {
   for (const auto& row : rows)
   {
-    std::printf("\nGPU time per step, by pass (GL_TIME_ELAPSED), %s: ms per step (runs a step)\n",
+    std::printf("\nGPU time per step, by pass (GL_TIME_ELAPSED; on a software renderer the CPU "
+                "clock around each finished pass), %s: ms per step (runs a step)\n",
       row.first.c_str());
     std::vector<std::string> passes;
     for (const auto& times : row.second)

@@ -10,7 +10,8 @@
 // what a real GPU takes. The target is at most 1.3 times the massless step.
 //
 //   BoundParticlesInertiaBench [--repeats R] [--resolution N] [--quick] [--cpu-only]
-//                              [--interleaved S] [--threads T] [--in-cache]
+//                              [--interleaved S] [--threads T] [--in-cache] [--divide D]
+//                              [--gpu-path fragment|compute|fused]
 //
 // --cpu-only skips the GPU engine's rows (what a CPU change is measured by).
 // --interleaved S steps the massless and the heavy engine alternately, step
@@ -20,6 +21,9 @@
 // every core). --in-cache runs the CPU rows with a 32nd of the elements
 // (8,192 particles), whose state and a 64^3 field stay in the caches: what
 // is left of the ratio there is arithmetic, not waiting for memory.
+// --divide D runs every row, CPU and GPU, with a D-th of its elements, and
+// --gpu-path the GPU rows of one path alone (the bundle's real_gpu.sh, on a
+// short budget).
 #include "BenchFields.h"
 #include "Engine.h"
 #include "GpuEngine.h"
@@ -142,13 +146,13 @@ std::pair<double, double> interleavedMedians(
   return { median(times[0]), median(times[1]) };
 }
 
-void printGpuRows(
-  const bench::Fields& fields, const Job (&allJobs)[4], int repeats, int steps, bool quick)
+void printGpuRows(const bench::Fields& fields, const Job (&allJobs)[4], int repeats, int steps,
+  bool quick, std::size_t divide, const std::string& only)
 {
   // --quick: a sixteenth of the elements (llvmpipe steps 262,144 particles slowly).
   std::vector<Job> jobs(std::begin(allJobs), std::end(allJobs));
   for (Job& job : jobs)
-    job.elements /= quick ? 16 : 1;
+    job.elements = std::max<std::size_t>(1, job.elements / (quick ? 16 : 1) / divide);
   bp::HeadlessContext context;
   const std::string error = context.create();
   if (!error.empty())
@@ -165,6 +169,8 @@ void printGpuRows(
     { "fused", "compute", "on" } };
   for (const auto& path : paths)
   {
+    if (!only.empty() && only != path[0])
+      continue;
     setenv(bp::GpuPathVariable, path[1], 1);
     setenv(bp::FusedStepVariable, path[2], 1);
     for (const Job& job : jobs)
@@ -194,11 +200,14 @@ int main(int argc, char** argv)
   int repeats = 5, resolution = 128, steps = 20;
   bool quick = false, cpuOnly = false, inCache = false;
   int interleaved = 0;
+  std::size_t divide = 1;
+  int repeatsGiven = 0; // --repeats wins over --quick's
+  std::string gpuPath;  // --gpu-path: that path's rows alone
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int a = 1; a < argc; ++a)
   {
     if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
-      repeats = std::max(1, std::atoi(argv[++a]));
+      repeatsGiven = std::max(1, std::atoi(argv[++a]));
     else if (!std::strcmp(argv[a], "--resolution") && a + 1 < argc)
       resolution = std::max(8, std::atoi(argv[++a]));
     else if (!std::strcmp(argv[a], "--quick"))
@@ -211,6 +220,10 @@ int main(int argc, char** argv)
       threads = unsigned(std::max(1, std::atoi(argv[++a])));
     else if (!std::strcmp(argv[a], "--in-cache"))
       inCache = true;
+    else if (!std::strcmp(argv[a], "--gpu-path") && a + 1 < argc)
+      gpuPath = argv[++a];
+    else if (!std::strcmp(argv[a], "--divide") && a + 1 < argc)
+      divide = std::size_t(std::max(1, std::atoi(argv[++a])));
   }
   if (quick)
   {
@@ -218,6 +231,7 @@ int main(int argc, char** argv)
     resolution = 64;
     steps = 5;
   }
+  repeats = repeatsGiven > 0 ? repeatsGiven : repeats;
   const bench::Fields fields = bench::benchFields(resolution);
   const bp::RangeRunner run = bp::poolRunner(threads);
   const Job jobs[] = {
@@ -226,8 +240,10 @@ int main(int argc, char** argv)
     { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::Euler, "Euler" },
     { "Strip16", bp::BuiltinShape::Strip16, 16384, bp::Integrator::RK2, "RK2" },
   };
-  const std::size_t cpuShare = inCache ? 32 : 1;
-  const char* where = inCache ? ", a 32nd of the elements (in cache)" : "";
+  const std::size_t cpuShare = (inCache ? 32 : 1) * divide;
+  const std::string share =
+    ", a " + std::to_string(cpuShare) + "th of the elements" + (inCache ? " (in cache)" : "");
+  const char* where = cpuShare > 1 ? share.c_str() : "";
   if (interleaved)
   {
     std::printf("Heavy particles against massless, CPU engine, %u threads, %d^3 grid%s, stepped "
@@ -244,7 +260,7 @@ int main(int argc, char** argv)
     "massless ms", "inertia ms", "ratio", "target <= 1.3");
   for (Job job : jobs)
   {
-    job.elements /= cpuShare;
+    job.elements = std::max<std::size_t>(1, job.elements / cpuShare);
     for (int f = 0; f < 2; ++f)
     {
       const bp::VectorField& field = f == 0 ? fields.steady : fields.unsteady;
@@ -275,7 +291,7 @@ int main(int argc, char** argv)
   std::fflush(stdout);
   if (!cpuOnly)
   {
-    printGpuRows(fields, jobs, repeats, steps, quick);
+    printGpuRows(fields, jobs, repeats, steps, quick, divide, gpuPath);
   }
   return 0;
 }

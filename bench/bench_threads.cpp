@@ -7,7 +7,10 @@
 // that use it). Strip16 and one-particle elements on the 128^3 shear layer
 // (steady) and the double gyre (unsteady); medians of --repeats runs.
 //
-//   BoundParticlesThreadsBench [--threads 1,2,4,8,16] [--repeats R] [--quick]
+//   BoundParticlesThreadsBench [--threads 1,2,4,8,16] [--repeats R] [--quick] [--divide D]
+//
+// --divide D runs every row with a D-th of its elements (the bundle's
+// real_gpu.sh, on a short budget).
 #include "AnalyticFlows.h"
 #include "BenchFields.h"
 #include "Engine.h"
@@ -134,6 +137,7 @@ int main(int argc, char** argv)
   std::vector<unsigned> wanted = { 1, 2, 4, 8, 16 };
   int repeats = 3;
   bool quick = false;
+  std::size_t divide = 1;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
@@ -142,9 +146,12 @@ int main(int argc, char** argv)
       repeats = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--quick"))
       quick = true;
+    else if (!std::strcmp(argv[i], "--divide") && i + 1 < argc)
+      divide = std::size_t(std::max(1, std::atoi(argv[++i])));
     else
     {
-      std::fprintf(stderr, "usage: %s [--threads 1,2,4,8,16] [--repeats R] [--quick]\n", argv[0]);
+      std::fprintf(
+        stderr, "usage: %s [--threads 1,2,4,8,16] [--repeats R] [--quick] [--divide D]\n", argv[0]);
       return 2;
     }
   }
@@ -162,6 +169,8 @@ int main(int argc, char** argv)
     { "Point", bp::BuiltinShape::Point, 1048576, false } };
   if (!quick)
     jobs.insert(jobs.begin() + 1, { "Strip16", bp::BuiltinShape::Strip16, 16384, false });
+  for (Job& job : jobs)
+    job.elements = std::max<std::size_t>(1, job.elements / divide);
 
   std::printf("The CPU engine on 1 to %u threads (this machine has %u cores); %d^3 fields, "
               "Euler, medians of %d\n",

@@ -53,10 +53,11 @@ double hostCopyRate(unsigned threads)
   return best;
 }
 
-/// Makes `variant`'s engine for the system; false (and released) where it
-/// cannot run it as asked.
-bool configure(bp::GpuEngine& engine, const GpuVariant& variant, const bp::ElementTemplate& shape,
-  const bp::Parameters& p, const bp::VectorField& field, bool generated)
+} // namespace
+
+bool configureVariant(bp::GpuEngine& engine, const GpuVariant& variant,
+  const bp::ElementTemplate& shape, const bp::Parameters& p, const bp::VectorField& field,
+  bool generated)
 {
   const char* was = std::getenv(bp::GpuPathVariable);
   const std::string before = was ? was : "";
@@ -74,7 +75,6 @@ bool configure(bp::GpuEngine& engine, const GpuVariant& variant, const bp::Eleme
     engine.release();
   return made;
 }
-} // namespace
 
 const std::vector<GpuVariant>& gpuVariants()
 {
@@ -120,7 +120,7 @@ double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& s
   const std::function<double(const std::function<double()>&)>& median)
 {
   bp::GpuEngine engine;
-  if (!configure(engine, variant, shape, p, field, generated))
+  if (!configureVariant(engine, variant, shape, p, field, generated))
     return 0.0;
   engine.initialize();
   const double took = median(
@@ -142,7 +142,7 @@ std::vector<bp::PassTime> gpuPassTimes(const GpuVariant& variant,
   int steps, double dt)
 {
   bp::GpuEngine engine;
-  if (!configure(engine, variant, shape, p, field, false))
+  if (!configureVariant(engine, variant, shape, p, field, false))
     return {};
   engine.initialize();
   for (int s = 0; s < std::min(steps, 3); ++s) // warm-up: the first runs compile

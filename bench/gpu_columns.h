@@ -44,6 +44,14 @@ double bytesPerParticleStep(std::size_t particlesPerElement, bool poses);
 double deviceBandwidth(double given, const std::string& renderer, unsigned threads,
   std::string& source);
 
+/// Makes `variant`'s engine for the system (the path forced through
+/// BOUNDPARTICLES_GPU_PATH while it configures); false, and released, where it
+/// cannot run it as asked (no compute path on this context, no fused step for
+/// this system).
+bool configureVariant(bp::GpuEngine& engine, const GpuVariant& variant,
+  const bp::ElementTemplate& shape, const bp::Parameters& p, const bp::VectorField& field,
+  bool generated = false);
+
 /// Steps per second of `variant` on the system, the median of `median`'s
 /// runs of `steps` steps (glFinish around each, never inside); 0 where the
 /// variant cannot run (no compute path on this context, or no fused step
@@ -52,7 +60,8 @@ double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& s
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt, bool generated,
   const std::function<double(const std::function<double()>&)>& median);
 
-/// Each pass's GPU time per step (GL_TIME_ELAPSED) over `steps` steps of
+/// Each pass's GPU time per step (GL_TIME_ELAPSED; on a software renderer
+/// the CPU clock around each finished pass: PassTimer.h) over `steps` steps of
 /// `variant`; empty where it cannot run.
 std::vector<bp::PassTime> gpuPassTimes(const GpuVariant& variant, const bp::ElementTemplate& shape,
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt);

@@ -12,7 +12,10 @@
 #     the parallel efficiency and the bandwidth against a triad (issue 40);
 #  4. heavy particles against massless on both engines, the CPU engine on
 #     every core stepped alternately with the massless one (issue 44).
-# Writes everything into ${1:-real-gpu}/ and prints it.
+# Writes everything into ${1:-real-gpu}/ and prints it. Needs this project's
+# build and its packages there: on a lent GPU machine with nothing installed
+# (no network, no ParaView) run the bundle instead (bench/gpu-bundle.sh DIR,
+# then bash DIR/real_gpu.sh OUTDIR; docs/performance.md says how).
 #
 #   bash bench/real_gpu.sh [OUTDIR] [--bandwidth GB/s]
 #

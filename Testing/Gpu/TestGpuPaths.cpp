@@ -6,7 +6,9 @@
 // (TestGpuEngine.cpp: GpuPath.IsTheOneTheEnvironmentAsks).
 #include "AnalyticFlows.h"
 #include "GpuEngine.h"
+#include "GpuPasses.h"
 #include "SharedContext.h"
+#include "WorkQueue.h"
 
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
@@ -131,6 +133,29 @@ TEST(GpuPath, StepsFuseOnAGpuUnlessTold)
   EXPECT_EQ(warning, "");
 }
 
+// BOUNDPARTICLES_FUSED_GROUP: the fused step's elements a workgroup, as
+// asked where the limits hold them, fewer where they do not; a value that is
+// not a whole number from 1 to 1024 is none (automatic).
+TEST(GpuPath, FusedGroupIsSetWithinTheLimits)
+{
+  EXPECT_EQ(bp::fusedGroupValue(nullptr), 0);
+  EXPECT_EQ(bp::fusedGroupValue(""), 0);
+  EXPECT_EQ(bp::fusedGroupValue("16"), 16);
+  EXPECT_EQ(bp::fusedGroupValue("16x"), 0);
+  EXPECT_EQ(bp::fusedGroupValue("0"), 0);
+  EXPECT_EQ(bp::fusedGroupValue("2048"), 0);
+  bp::Parameters p;
+  p.numberOfElements = 1000;
+  const int automatic = bp::FusedStep::of(p, 16, true, 1024, 49152).groupElements;
+  EXPECT_EQ(automatic, 32);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 8).groupElements, 8);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 16).groupElements, 16);
+  // 64 Strip16 elements are 1024 threads: the most a workgroup holds.
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 100).groupElements, 64);
+  // Shared memory: 16 bytes a particle and 96 an element: 32 KiB hold 93.
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 4096, 32768, 200).groupElements, 93);
+}
+
 TEST(GpuPath, EnvironmentValuesAreCheckedAlike)
 {
   std::string warning;
@@ -182,6 +207,64 @@ TEST(GpuPath, ForcedComputeFallsBackBelow43)
   EXPECT_EQ(warnings, 1) << "said once for two configurations";
 }
 
+// A compute program the driver refuses (forced here: every compute program
+// fails to compile) leaves the engine on its fragment path, with one warning
+// that names the program and the compiler's message, and loses nothing: the
+// same bits as the fragment path asked for.
+TEST(GpuPath, ComputeCompileFailureFallsBackToTheFragmentPath)
+{
+  if (!bp::haveSharedContext())
+    return;
+  if (epoxy_gl_version() < bp::ComputePathVersion)
+    GTEST_SKIP() << "no compute path on this context";
+  const char* was = std::getenv(bp::GpuPathVariable);
+  const std::string before = was ? was : "";
+  said().clear();
+  bp::setGpuMessageSink(listen);
+  bp::setComputeCompileFailureForTesting(true);
+  for (const char* fused : { "on", "off" })
+  {
+    setenv(bp::GpuPathVariable, "compute", 1);
+    setenv(bp::FusedStepVariable, fused, 1);
+    bp::GpuEngine refused;
+    const std::vector<float> got = trace(refused, strips(40), 6);
+    EXPECT_EQ(refused.path(), bp::GpuPath::Fragment) << "fused " << fused;
+    EXPECT_FALSE(refused.fusedStep());
+    refused.release();
+    setenv(bp::GpuPathVariable, "fragment", 1);
+    bp::GpuEngine fragment;
+    const std::vector<float> want = trace(fragment, strips(40), 6);
+    fragment.release();
+    ASSERT_EQ(got.size(), want.size());
+    EXPECT_EQ(std::memcmp(got.data(), want.data(), got.size() * sizeof(float)), 0)
+      << "the fallback runs the fragment path's kernels, bit for bit";
+  }
+  bp::setComputeCompileFailureForTesting(false);
+  bp::setGpuMessageSink(nullptr);
+  unsetenv(bp::FusedStepVariable);
+  if (was)
+    setenv(bp::GpuPathVariable, before.c_str(), 1);
+  else
+    unsetenv(bp::GpuPathVariable);
+  int warnings = 0;
+  for (const auto& message : said())
+  {
+    std::printf("%s%s\n", message.second ? "warning: " : "", message.first.c_str());
+    if (!message.second)
+      continue;
+    ++warnings;
+    EXPECT_NE(message.first.find("compute path could not be built"), std::string::npos)
+      << message.first;
+    EXPECT_NE(message.first.find("does not compile"), std::string::npos) << message.first;
+    EXPECT_NE(message.first.find("compute programs refused"), std::string::npos) << message.first;
+    EXPECT_EQ(message.first.find('\n'), std::string::npos) << "one line";
+  }
+  // One for the per-kernel programs, one for the fused step's (a message is
+  // said once per process unless its text differs).
+  EXPECT_GE(warnings, 1);
+  EXPECT_LE(warnings, 2);
+}
+
 // The fused step and a dispatch per kernel run the same kernels on the same
 // values: they agree to the parity bar (on Mesa's llvmpipe, bit for bit).
 TEST(GpuPath, FusedAndPerKernelStepsAgree)
@@ -213,6 +296,51 @@ TEST(GpuPath, FusedAndPerKernelStepsAgree)
     fused.release();
     kernels.release();
   }
+}
+
+// On a software renderer (llvmpipe) a compute dispatch runs when the next
+// command needs it, so a GL_TIME_ELAPSED query charged each pass with the
+// one before it (the reset pass, which does next to nothing when no release
+// is due, measured 35 times the fragment path's). There the timer reads the
+// CPU clock around each finished pass: each pass gets its own time, and the
+// reset pass stays below the advect pass.
+TEST(GpuEngine, PassTimesOnASoftwareRendererAreEachPasssOwn)
+{
+  if (!bp::haveSharedContext())
+    return;
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (bp::rendererKind(renderer ? renderer : "") != bp::RendererKind::Software ||
+    epoxy_gl_version() < bp::ComputePathVersion)
+    GTEST_SKIP() << "a software renderer with the compute path only";
+  const char* was = std::getenv(bp::GpuPathVariable);
+  const std::string before = was ? was : "";
+  setenv(bp::GpuPathVariable, "compute", 1);
+  setenv(bp::FusedStepVariable, "off", 1);
+  bp::Parameters p = strips(4096);
+  p.lifetimeMin = p.lifetimeMax = 100.0f; // no release due: the reset pass has nothing to do
+  p.iterations = 1;
+  bp::GpuEngine gpu;
+  trace(gpu, p, 1);
+  gpu.setPassTiming(true);
+  for (int s = 0; s < 4; ++s)
+    gpu.step(0.01 * (s + 1), 0.01);
+  const std::vector<bp::PassTime> times = gpu.passTimes();
+  gpu.release();
+  unsetenv(bp::FusedStepVariable);
+  if (was)
+    setenv(bp::GpuPathVariable, before.c_str(), 1);
+  else
+    unsetenv(bp::GpuPathVariable);
+  double reset = -1.0, advect = -1.0;
+  for (const bp::PassTime& t : times)
+  {
+    std::printf("  %-14s %3ld runs %9.3f ms\n", t.pass.c_str(), t.runs, 1e3 * t.seconds);
+    reset = t.pass == "reset" ? t.seconds : reset;
+    advect = t.pass == "advect" ? t.seconds : advect;
+  }
+  ASSERT_GE(reset, 0.0);
+  ASSERT_GT(advect, 0.0);
+  EXPECT_LT(reset, advect) << "the reset pass charged with another pass's time";
 }
 
 // Per-pass GPU times (GL_TIME_ELAPSED) name every pass a step runs, once a
