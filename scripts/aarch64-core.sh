@@ -66,10 +66,25 @@ step "$dir/configure.log" cmake -S "$root" -B "$dir/build" \
   -DGTest_DIR="$dir/gtest/lib/cmake/GTest" "${launcher[@]}"
 step "$dir/build.log" cmake --build "$dir/build" --parallel "$jobs" --target BoundParticlesCoreTests
 
-# Brief: each failure and the summary only (the full run: rerun without it).
-if qemu-aarch64 -L /usr/aarch64-linux-gnu "$dir/build/bin/BoundParticlesCoreTests" \
-  --gtest_brief=1 2>&1 | tee "$dir/test.log"; then
-  echo "aarch64-core: passed"
+# GoogleTest's shards, one a core, each its own qemu process: every test runs
+# once, in one of them. Brief: each failure and the summary only (the full
+# run: rerun without it).
+pids=()
+for ((shard = 0; shard < jobs; shard++)); do
+  GTEST_TOTAL_SHARDS="$jobs" GTEST_SHARD_INDEX="$shard" \
+    qemu-aarch64 -L /usr/aarch64-linux-gnu "$dir/build/bin/BoundParticlesCoreTests" \
+    --gtest_brief=1 >"$dir/test-$shard.log" 2>&1 &
+  pids+=($!)
+done
+failed=0
+for ((shard = 0; shard < jobs; shard++)); do
+  wait "${pids[$shard]}" || failed=1
+  cat "$dir/test-$shard.log"
+done
+cat "$dir"/test-*.log >"$dir/test.log"
+if [ "$failed" -eq 0 ]; then
+  echo "aarch64-core: passed ($(awk '/^\[==========\] [0-9]+ tests? from/ { n += $2 } END { print n }' \
+    "$dir/test.log") tests in $jobs shards)"
 else
   echo "aarch64-core: FAILED (log in $dir/test.log)" >&2
   exit 1
