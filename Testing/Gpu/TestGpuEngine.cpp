@@ -536,14 +536,27 @@ void compare(const Case& c, int steps, bool pinSome = false)
 }
 } // namespace
 
+// Every integrator with every restoration on the fragment path. The
+// integrator is a uniform of bp_advect.glsl, the same code on every path;
+// what a path runs its own way is each restoration (its passes, its
+// dispatches, the fused step's BP_RESTORATION), so the compute path, per
+// kernel and fused, runs each restoration once, the integrators taken in
+// turn: every path's own code, at a third of the steps.
 TEST(GpuEngine, MatchesTheCpuEngineForEachIntegratorAndRestoration)
 {
-  for (auto integrator : { bp::Integrator::Euler, bp::Integrator::RK2, bp::Integrator::RK4 })
-    for (auto restoration : { bp::Restoration::AveragedJacobi, bp::Restoration::Jacobi,
-           bp::Restoration::GaussSeidel, bp::Restoration::ShapeMatching })
+  ASSERT_NE(context(), nullptr);
+  const bool everyPair = bp::currentGpuPath().path == bp::GpuPath::Fragment;
+  const bp::Integrator integrators[] = { bp::Integrator::Euler, bp::Integrator::RK2,
+    bp::Integrator::RK4 };
+  const bp::Restoration restorations[] = { bp::Restoration::AveragedJacobi, bp::Restoration::Jacobi,
+    bp::Restoration::GaussSeidel, bp::Restoration::ShapeMatching };
+  for (int i = 0; i < 3; ++i)
+    for (int r = 0; r < 4; ++r)
     {
-      SCOPED_TRACE(int(integrator) * 10 + int(restoration));
-      compare({ bp::BuiltinShape::Strip16, 300, integrator, restoration, false }, 200);
+      if (!everyPair && i != r % 3)
+        continue;
+      SCOPED_TRACE(int(integrators[i]) * 10 + int(restorations[r]));
+      compare({ bp::BuiltinShape::Strip16, 300, integrators[i], restorations[r], false }, 200);
     }
 }
 

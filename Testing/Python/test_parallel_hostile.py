@@ -7,21 +7,29 @@ the message (issue 27, items 2 and 11). Neither may a rank whose piece of a
 mesh is empty (a serial file read by every rank), alone or among the newest
 features in one script (issue 38, item 8).
 
-Run as the driver; it runs itself under pvbatch with `--case NAME`.
+Run as the driver; it runs itself under pvbatch with `--case NAME...`. The
+cases share one MPI job per rank count (an mpiexec and pvbatch start-up costs
+seconds each), in order: before each case every rank logs a marker, so the
+messages each rank logs are the case's that its last marker names. A case
+that kills or hangs the job (each case has its own time limit) fails by name,
+and the cases after it go on in a new job.
 """
 import argparse
 import builtins
 import os
+import re
 import shutil
+import signal
 import sys
 import tempfile
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
-parser.add_argument("--case")
+parser.add_argument("--case", nargs="+")
 parser.add_argument("--pvbatch", default="pvbatch")
 parser.add_argument("--mpiexec", default="mpiexec")
 parser.add_argument("--meshes", help="(set by the driver) the folder of the tetrahedral meshes")
@@ -172,9 +180,24 @@ CASES = {
 }
 
 
-def run_case(name):
+MARKER = "bp-parallel-hostile case "
+
+
+def mark(number):
+    """Logs MARKER and the case's number on every rank (a programmable source
+    runs on each), in the stream and format of the rank's own messages."""
+    marker = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    marker.Script = ("from vtkmodules.vtkCommonCore import vtkLogger\n"
+                     "vtkLogger.Log(vtkLogger.VERBOSITY_WARNING, 'marker', 0, '%s%d')\n" %
+                     (MARKER, number))
+    marker.UpdatePipeline()
+    Delete(marker)
+
+
+def run_case(number, name):
     from paraview import servermanager
     build, t = CASES[name][:2]
+    started = time.time()
     built = build()
     outputs = built if isinstance(built, list) else [(built, 0)]
     counts = []
@@ -185,42 +208,98 @@ def run_case(name):
     # The fewest: a list traces only if every output does. Python's own min:
     # paraview.simple's `*` brings numpy_interface's, a reduction over every
     # rank that rank 0 alone would enter here, and wait in.
-    print("RESULT %d" % builtins.min(counts), flush=True)
+    print("RESULT %d %d %.2f" % (number, builtins.min(counts), time.time() - started), flush=True)
 
 
 if args.case:
     # The builders above name paraview.simple's functions and the plugin's proxies.
     from paraview.simple import *  # noqa: F401,F403
     LoadPlugin(args.plugin, ns=globals())
-    run_case(args.case)  # pvbatch ends with status 1 on sys.exit(), so fall through
+    # Not `number`: paraview.simple refills this module's names (numpy's among them).
+    for case_number, case_name in enumerate(args.case):
+        # Past the time limit the default action of SIGALRM ends rank 0, and
+        # mpiexec the job: the driver reports the case without a result.
+        signal.alarm(TIME_LIMIT)
+        mark(case_number)
+        print("case: " + case_name, flush=True)
+        run_case(case_number, case_name)
+    # The job's end (every rank leaves) within the time limit too.
+    signal.alarm(TIME_LIMIT)
+    # pvbatch ends with status 1 on sys.exit(), so fall through
+
+
+# A rank's log line: "(   1.8s) [pvbatch.1       ] file:line   ERR| ...": the
+# bracket names the rank (its logger thread).
+LOG_LINE = re.compile(r"\(\s*[0-9.]+s\) \[([^\]]*)\]")
+
+
+def run_job(names, ranks, meshes):
+    """Runs the cases in one MPI job of `ranks` ranks, in order, until one ends
+    it. A list of (name, exit status or None, seconds, points or None,
+    messages, output) for the cases it got to: those with a result ran to
+    their end; the first without one ended or hung the job."""
+    command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
+               args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
+               "--meshes", meshes, "--case"] + names
+    # Apart: pvbatch prints a line's text and its newline separately, and a
+    # log line could fall between them.
+    process = bptest.run_group(command, TIME_LIMIT * len(names) + 60, stderr_apart=True)
+    out = process.stdout + "\n" + process.stderr
+    results = {int(m.group(1)): (int(m.group(2)), float(m.group(3)))
+               for m in re.finditer(r"^RESULT (\d+) (\d+) ([0-9.]+)$", process.stdout, re.M)}
+    messages, case_of = {}, {}
+    for line in process.stderr.splitlines():
+        tag = LOG_LINE.search(line)
+        rank = tag.group(1).strip() if tag else None
+        marker = re.search(MARKER + r"(\d+)", line)
+        if marker:
+            case_of[rank] = int(marker.group(1))
+        elif "ERR|" in line or "WARN|" in line:
+            # A rank's message belongs to the case its last marker named.
+            number = case_of.get(rank, builtins.max(case_of.values(), default=0))
+            messages.setdefault(number, []).append(line[line.find("vtkBoundParticleTracer"):][:400])
+    ran = []
+    for number, name in enumerate(names):
+        if number in results:
+            points, seconds = results[number]
+            ran.append((name, 0, seconds, points, messages.get(number, []), ""))
+            continue
+        status = process.returncode if process.returncode != 0 else None
+        ran.append((name, status, process.seconds, None, messages.get(number, []), out))
+        break
+    if len(ran) == len(names) and process.returncode != 0:
+        # Every case ended, then the job failed: its last case is reported.
+        ran[-1] = ran[-1][:1] + (process.returncode,) + ran[-1][2:5] + (out,)
+    return ran
 
 
 def drive():
     """Runs every case under 2 and 4 ranks and checks how each ended."""
     meshes = tempfile.mkdtemp(prefix="bp-parallel-hostile-")
     write_meshes(meshes)
-    for name, (_, _, traces, says) in CASES.items():
-        for ranks in (2, 4):
-            command = [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks),
-                       args.pvbatch, os.path.abspath(__file__), "--plugin", args.plugin,
-                       "--case", name, "--meshes", meshes]
-            process = bptest.run_group(command, TIME_LIMIT)
-            out, seconds = process.stdout, process.seconds
-            points = [int(line.split()[1]) for line in out.splitlines() if line.startswith("RESULT ")]
-            messages = [line[line.find("vtkBoundParticleTracer"):][:400] for line in out.splitlines()
-                        if "ERR|" in line or "WARN|" in line]
+    for ranks in (2, 4):
+        results = {}
+        left = list(CASES)
+        while left:
+            for row in run_job(left, ranks, meshes):
+                results[row[0]] = row[1:]
+            left = [name for name in left if name not in results]
+        for name, (_, _, traces, says) in CASES.items():
+            status, seconds, points, messages, out = results[name]
             print("%-40s %d ranks: exit %s, %.1f s, %s" % (
-                name, ranks, process.returncode, seconds,
-                "points %d" % points[0] if points else "no result"))
+                name, ranks, status, seconds, "no result" if points is None else
+                "points %d" % points))
             for m in sorted(set(messages))[:3]:
                 print("    " + m)
+            if out:
+                print(out[-3000:])
             bptest.check(seconds < TIME_LIMIT, "%s, %d ranks: ran past %d s (a hang)" % (
                 name, ranks, TIME_LIMIT))
-            bptest.check(process.returncode == 0 and points, "%s, %d ranks: exited with %s%s" % (
-                name, ranks, process.returncode, "" if points else ", no result"))
-            if points:
-                bptest.check((points[0] > 0) == traces, "%s, %d ranks: %d points" % (
-                    name, ranks, points[0]))
+            bptest.check(status == 0 and points is not None, "%s, %d ranks: exited with %s%s" % (
+                name, ranks, status, "" if points is not None else ", no result"))
+            if points is not None:
+                bptest.check((points > 0) == traces, "%s, %d ranks: %d points" % (
+                    name, ranks, points))
             said = " | ".join(messages)
             bptest.check(not says or says in said, "%s, %d ranks: no message saying '%s' (%s)" % (
                 name, ranks, says, said[:300] or "none"))
