@@ -107,7 +107,8 @@ DeliveredInput::DeliveredInput(
   }
   // What the input's consumers asked for last (`inInfo` is the producer's
   // output information, shared by all of them).
-  this->Held = heldTime(inInfo, this->HeldTime);
+  this->HeldOffered = heldTime(inInfo, this->HeldTime) && !inputTimes.empty() &&
+    this->HeldTime >= inputTimes.front() && this->HeldTime <= inputTimes.back();
   this->Request = vtkSmartPointer<vtkInformation>::New();
   for (vtkInformationKey* key : requestKeys())
   {
@@ -155,7 +156,7 @@ DeliveredInput::~DeliveredInput()
     }
   }
   double delivered = 0.0;
-  if (this->Held && this->Request->Has(SDDP::UPDATE_TIME_STEP()) &&
+  if (this->HeldOffered && this->Request->Has(SDDP::UPDATE_TIME_STEP()) &&
     (!heldTime(this->Info, delivered) || delivered != this->HeldTime))
   {
     this->Connection->GetProducer()->Update(this->Connection->GetIndex());

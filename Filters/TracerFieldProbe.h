@@ -63,7 +63,8 @@ struct FieldProbe
  * piece, no ghosts, at its first time step, while this lives. On
  * destruction the consumers' last request is put back, and where the input
  * held data of another time step for them (a downstream filter or a display
- * at the view's time), the input is updated at that time again: its output
+ * at the view's time) that it still offers, the input is updated at that
+ * time again: its output
  * is updated in place, and a consumer that reads it without asking again (a
  * downstream filter's output, a Fetch) would otherwise get the probe's time
  * step. Collective under MPI, as every pipeline pass of a distributed run.
@@ -85,7 +86,11 @@ private:
   vtkDataObject* Data = nullptr;
   /// The consumers' request before the probe's (its UPDATE_ keys).
   vtkSmartPointer<vtkInformation> Request;
-  bool Held = false;
+  /// Whether the input held data for its consumers at a time it still
+  /// offers (`HeldTime` within its time steps' range): the only data worth
+  /// updating again. A source that moved on (in situ, a producer holding
+  /// this step alone) cannot give the earlier time back.
+  bool HeldOffered = false;
   double HeldTime = 0.0;
 };
 
