@@ -35,13 +35,8 @@ if [ "$(id -u)" != 0 ]; then
   exit 77
 fi
 
-# The Debian mirror this machine's own apt sources name (as scripts/chroot-test.sh).
-mirror() {
-  local uri
-  uri="$(grep -hsE '^(URIs:|deb )' /etc/apt/sources.list.d/*.sources /etc/apt/sources.list \
-    | grep -m1 -E 'debian/?( |$)' | sed -E 's/^URIs: *//; s/^deb +(\[[^]]*\] +)?//; s/ .*//')"
-  echo "${uri:-http://deb.debian.org/debian}"
-}
+# debian_mirror: the mirror this machine's own apt sources name.
+source "$(dirname "${BASH_SOURCE[0]}")/debian-mirror.sh"
 
 # What the chroot must not hold: a loader or library the bundle has to carry.
 check_bare() {
@@ -66,7 +61,7 @@ make_chroot() {
   say "debootstrap --variant=minbase $suite into $dir"
   umount -R "$dir.partial/proc" "$dir.partial/sys" 2>/dev/null || true
   rm -rf --one-file-system "$dir.partial"
-  debootstrap --variant=minbase "$suite" "$dir.partial" "$(mirror)" \
+  debootstrap --variant=minbase "$suite" "$dir.partial" "$(debian_mirror)" \
     >"$chroots/$name-debootstrap.log" 2>&1 \
     || { tail -n 30 "$chroots/$name-debootstrap.log" >&2; fail "debootstrap"; }
   echo 'Acquire::Check-Valid-Until "false";' >"$dir.partial/etc/apt/apt.conf.d/99boundparticles"

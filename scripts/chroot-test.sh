@@ -32,13 +32,8 @@ fail() {
   exit 1
 }
 
-# The Debian mirror this machine's own apt sources name.
-mirror() {
-  local uri
-  uri="$(grep -hsE '^(URIs:|deb )' /etc/apt/sources.list.d/*.sources /etc/apt/sources.list \
-    | grep -m1 -E 'debian/?( |$)' | sed -E 's/^URIs: *//; s/^deb +(\[[^]]*\] +)?//; s/ .*//')"
-  echo "${uri:-http://deb.debian.org/debian}"
-}
+# debian_mirror: the mirror this machine's own apt sources name.
+source "$(dirname "${BASH_SOURCE[0]}")/debian-mirror.sh"
 
 mounted=()
 unmount_all() {
@@ -76,7 +71,7 @@ make_chroot() {
   umount -R "$dir.partial/proc" "$dir.partial/sys" 2>/dev/null || true
   rm -rf --one-file-system "$dir.partial"
   mkdir -p "$chroots"
-  debootstrap --variant=minbase "$suite" "$dir.partial" "$(mirror)" "${script[@]}" \
+  debootstrap --variant=minbase "$suite" "$dir.partial" "$(debian_mirror)" "${script[@]}" \
     >"$chroots/$suite-debootstrap.log" 2>&1 \
     || { tail -n 30 "$chroots/$suite-debootstrap.log" >&2; fail "debootstrap"; }
   # An archive snapshot may serve a Release past its Valid-Until date.
