@@ -1,9 +1,11 @@
 """Helpers shared by the pvpython tests."""
 import argparse
 import os
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 
 from vtkmodules.util import vtkConstants
@@ -11,6 +13,8 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import vtkOutputWindow
 
 failures = []
+# Folders of scratch(): removed by finish() when every check passed.
+scratch_folders = []
 
 
 def outside_mpi_job():
@@ -64,10 +68,20 @@ def check(condition, message):
         print("FAILED: " + message)
 
 
+def scratch(prefix):
+    """A new folder for a test's files, removed by finish() when every check
+    passed and kept (to look at) when one failed."""
+    folder = tempfile.mkdtemp(prefix=prefix)
+    scratch_folders.append(folder)
+    return folder
+
+
 def finish():
     if failures:
-        print("%d check(s) failed" % len(failures))
+        print("%d check(s) failed; files kept in %s" % (len(failures), " ".join(scratch_folders)))
         sys.exit(1)
+    for folder in scratch_folders:
+        shutil.rmtree(folder, ignore_errors=True)
     print("all checks passed")
     sys.exit(0)
 

@@ -4,7 +4,6 @@ engine's result, and the tracer says why once in Output Messages; Engine = GPU
 still runs the GPU engine there."""
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -44,7 +43,7 @@ software = any(name in renderer for name in ("llvmpipe", "softpipe", "swrast"))
 count = texts.text.count("software renderer")
 print("renderer: %s; told %d time(s)" % ([l for l in renderer.splitlines() if l.startswith("OpenGL renderer")],
                                           count))
-folder = tempfile.mkdtemp()
+folder = bptest.scratch("bp-engine-choice-")
 automatic = os.path.join(folder, "automatic.png")
 SaveScreenshot(automatic, view)
 if software:

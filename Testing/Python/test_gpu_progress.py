@@ -8,7 +8,6 @@ to the very picture of a replay that was never stopped. The GPU engine runs on
 this machine's Mesa llvmpipe."""
 import os
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -41,7 +40,7 @@ relayed = []
 handler = servermanager.ActiveConnection.Session.GetProgressHandler()
 handler.AddObserver("ProgressEvent",
                     lambda o, e: relayed.append((o.GetLastProgressText(), o.GetLastProgress())))
-folder = tempfile.mkdtemp()
+folder = bptest.scratch("bp-gpu-progress-")
 
 
 def update_to(t):

@@ -170,7 +170,7 @@ def two_lines():
 
 def overflowing_bpvol():
     """A .bpvol whose dimensions multiply to 2^64 points, with an empty data file."""
-    folder = args.scratch or tempfile.mkdtemp()
+    folder = args.scratch or bptest.scratch("bp-hostile-")
     with open(os.path.join(folder, "empty.raw"), "wb"):
         pass
     path = os.path.join(folder, "overflow.bpvol")

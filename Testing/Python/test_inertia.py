@@ -27,7 +27,6 @@ import math
 import os
 import re
 import sys
-import tempfile
 
 import numpy as np
 
@@ -288,7 +287,7 @@ def picture(engine, representation, name, color=None, scalar_range=None):
     return rendered(t, representation, name, 0.5, color, scalar_range)
 
 
-output = tempfile.mkdtemp()
+output = bptest.scratch("bp-inertia-")
 for color, scalar_range in ((None, None), ("SlipVelocity", (0.0, 0.2)),
                             ("ParticleVelocity", (0.0, 1.2))):
     name = "inertia_" + (color or "solid")
@@ -380,7 +379,7 @@ for name, value in (("Inertia", "'Maxey-Riley'"), ("ResponseTime", "0.25"),
     bptest.check(recorded, "the trace records %s = %s:\n%s" % (name, value, traced))
 
 # A state file brings them back.
-state = os.path.join(tempfile.mkdtemp(), "inertia.pvsm")
+state = os.path.join(bptest.scratch("bp-inertia-state-"), "inertia.pvsm")
 SaveState(state)
 ResetSession()
 LoadPlugin(args.plugin, ns=globals())

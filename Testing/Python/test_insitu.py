@@ -10,7 +10,6 @@ elements outside a grid that shrank or moved are released again into it.
 """
 import os
 import sys
-import tempfile
 
 import numpy
 
@@ -298,7 +297,7 @@ def gpu_picture(name, grid_at):
     return path
 
 
-folder = tempfile.mkdtemp()
+folder = bptest.scratch("bp-insitu-post-")
 gpu_picture("warm-up", lambda k: FIRST)  # a session's first view draws apart
 one_grid = gpu_picture("one-grid", lambda k: FIRST)
 bptest.check(bptest.covered_fraction(one_grid) > 0.005,

@@ -14,7 +14,6 @@ hoc trace of the same steps drawn by the GPU engine in a view set up alike.
 import ast
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
@@ -24,7 +23,7 @@ args = bptest.arguments("--pvpython", "--pvbatch", "--example", "--simulation", 
 engine = args.engine or "CPU"
 steps = int(args.steps or 50)
 ranks = int(args.ranks or 1)
-work = tempfile.mkdtemp(prefix="bp-insitu-")
+work = bptest.scratch("bp-insitu-")
 options = ["--plugin", args.plugin, "--steps", str(steps), "--every", "10",
            "--out", os.path.join(work, "out"), "--write-steps", os.path.join(work, "steps"),
            "--engine", engine]

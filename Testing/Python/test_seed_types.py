@@ -7,7 +7,6 @@ file brings the choice and its parameters back.
 """
 import os
 import sys
-import tempfile
 import xml.etree.ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -218,7 +217,7 @@ Delete(linked)
 # A state file saves the choice and its parameters, and reloads them.
 tracer.SeedType = "Line"
 before = centres(tracer)
-state = os.path.join(tempfile.mkdtemp(), "seeds.pvsm")
+state = os.path.join(bptest.scratch("bp-seed-types-"), "seeds.pvsm")
 SaveState(state)
 ResetSession()
 LoadPlugin(args.plugin, ns=globals())
