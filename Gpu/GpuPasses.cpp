@@ -3,7 +3,8 @@
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
 #include "GpuFieldCache.h"
-#include "GpuState.h"
+#include "GpuStateLayout.h"
+#include "KernelConstants.h"
 #include "ShaderSource.h"
 
 #include <algorithm>
@@ -86,10 +87,10 @@ FusedStep FusedStep::of(const Parameters& parameters, int particles, bool spring
   }
   fused.groupElements = elements;
   const Restoration r = parameters.restoration;
-  fused.restoration = r == Restoration::ShapeMatching ? 3
-    : !springs                                        ? 0
-    : r == Restoration::GaussSeidel                   ? 2
-                                                      : 1;
+  fused.restoration = r == Restoration::ShapeMatching ? FusedRestore::ShapeMatching
+    : !springs                                        ? FusedRestore::None
+    : r == Restoration::GaussSeidel                   ? FusedRestore::GaussSeidel
+                                                      : FusedRestore::Jacobi;
   return fused;
 }
 
@@ -194,7 +195,8 @@ void GpuPass::dispatch(std::initializer_list<GLuint> targets, int width, int hei
   }
   this->setIVec2("bpDomainSize", width, height);
   this->setInt("bpTargetCount", int(k));
-  glDispatchCompute(GLuint(width + 7) / 8, GLuint(height + 7) / 8, 1);
+  glDispatchCompute(GLuint(width + PassGroupSize - 1) / PassGroupSize,
+    GLuint(height + PassGroupSize - 1) / PassGroupSize, 1);
   glMemoryBarrier(AfterShaderWrites);
 }
 
@@ -320,7 +322,11 @@ std::string GpuPasses::compileFusedStep(const ShaderPiece& restore, const std::s
   const std::string defines = "#define BP_N " + std::to_string(f.particles) +
     "\n#define BP_GROUP_ELEMENTS " + std::to_string(f.groupElements) +
     "\n#define BP_GROUP_THREADS " + std::to_string(f.groupElements * f.particles) +
-    "\n#define BP_RESTORATION " + std::to_string(f.restoration) + "\n" + generated +
+    "\n#define BP_FUSED_NONE " + std::to_string(int(FusedRestore::None)) +
+    "\n#define BP_FUSED_JACOBI " + std::to_string(int(FusedRestore::Jacobi)) +
+    "\n#define BP_FUSED_GAUSS_SEIDEL " + std::to_string(int(FusedRestore::GaussSeidel)) +
+    "\n#define BP_FUSED_SHAPE_MATCHING " + std::to_string(int(FusedRestore::ShapeMatching)) +
+    "\n#define BP_RESTORATION " + std::to_string(int(f.restoration)) + "\n" + generated +
     "layout(rgba32f, binding = 0) uniform writeonly image2D bpParticlesOut;\n" +
     (f.inertial ? "#define BP_INERTIAL\nlayout(rgba32f, binding = " +
           std::to_string(1 + ElementTextureCount) + ") uniform writeonly image2D bpSlipsOut;\n"

@@ -67,12 +67,22 @@ struct SharedPassInputs
   const GpuFieldCache* fieldCache = nullptr; ///< its field is null before one is set
 };
 
+/// How the fused step restores shapes (BP_RESTORATION in bp_step.comp, which
+/// compares it with the BP_FUSED_* #defines written from this enum).
+enum class FusedRestore
+{
+  None = 0,     ///< no springs, no shape matching (BP_FUSED_NONE)
+  Jacobi,       ///< Jacobi or averaged Jacobi (BP_FUSED_JACOBI)
+  GaussSeidel,  ///< BP_FUSED_GAUSS_SEIDEL
+  ShapeMatching ///< BP_FUSED_SHAPE_MATCHING
+};
+
 /// The fused step of the compute path (bp_step.comp), as compiled for a system.
 struct FusedStep
 {
   int particles = 0;     ///< n, the template's particles (BP_N)
   int groupElements = 0; ///< elements a workgroup holds; 0: no fused step
-  int restoration = 0;   ///< 0 none, 1 (averaged) Jacobi, 2 Gauss-Seidel, 3 shape matching
+  FusedRestore restoration = FusedRestore::None; ///< BP_RESTORATION
   bool inertial = false; ///< heavy particles: slips stepped and shared (BP_INERTIAL)
   /// The fused step for a system, or none (groupElements 0) where its
   /// elements do not fit a workgroup of `maxThreads` invocations and

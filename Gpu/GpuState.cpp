@@ -17,22 +17,6 @@ void TexturePair::make(int width, int height)
   this->Current = 0;
 }
 
-std::string elementStateDeclarations(bool images)
-{
-  std::string out;
-  for (int row = 0; row < ElementTextureCount; ++row)
-  {
-    const std::string sampler = ElementTextureSamplers[row];
-    out += "uniform sampler2D " + sampler + ";\n";
-    if (images)
-    {
-      out += "layout(rgba32f, binding = " + std::to_string(1 + row) +
-        ") uniform writeonly image2D " + sampler + "Out;\n";
-    }
-  }
-  return out;
-}
-
 int TrailRing::slot(int k) const
 {
   const int slots = this->length();

@@ -3,6 +3,7 @@
 // own pass are in GpuSystemPasses.cpp.
 #include "GpuSystem.h"
 
+#include "KernelConstants.h"
 #include "Quaternion.h"
 #include "SuperSet.h"
 
@@ -193,7 +194,7 @@ void GpuSystem::runFusedStep(double t, double h, float endWeight)
   pass.setInt("bpTrackPoses", poses ? 1 : 0);
   using E = ElementTexture;
   const int perGroup = this->passes.fused.groupElements;
-  // Images: the particles', then each per-element row's (GpuState.h's order).
+  // Images: the particles', then each per-element row's (GpuStateLayout.h's order).
   const std::size_t groups = std::size_t((this->layout.elementCount + perGroup - 1) / perGroup);
   if (this->passes.fused.inertial)
   {

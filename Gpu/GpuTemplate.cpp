@@ -2,6 +2,7 @@
 #include "GpuTemplate.h"
 
 #include "Engine.h"
+#include "ParticleLayout.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -149,10 +150,12 @@ std::vector<float> colouredSpringTable(const ElementTemplate& shape,
   return texels;
 }
 
-/// Texels a row of a list of `count` texels: at least `least`, at most 4096.
+/// Texels a row of a list of `count` texels: at least `least`, at most
+/// ListTextureWidth (as gpuTextureError counts the rows).
 int listWidth(std::size_t count, std::size_t least)
 {
-  return int(std::min<std::size_t>(std::max<std::size_t>(count, least), 4096));
+  return int(
+    std::min<std::size_t>(std::max<std::size_t>(count, least), std::size_t(ListTextureWidth)));
 }
 } // namespace
 

@@ -3,14 +3,9 @@
 // that name the file (ShaderSource.h).
 #include "ShaderSource.h"
 
-#include "BoundParticlesShaderEnums.h" // generated from the proxy XML
-#include "BoundParticlesShaders.h"     // generated from Shaders/
-#include "CounterHash.h"
-#include "Engine.h"
-#include "GpuState.h"
-#include "Pose.h"
-#include "ReleaseWeights.h"
-#include "ShapeMatching.h"
+#include "BoundParticlesShaders.h" // generated from Shaders/
+#include "GpuStateLayout.h"
+#include "KernelConstants.h"
 
 #include <algorithm>
 #include <initializer_list>
@@ -98,43 +93,35 @@ std::string compileShader(
   return describeShaderLog(log);
 }
 
-/// The hash and the draws of a release (CounterHash.h, EngineParameters.h,
-/// ReleaseWeights.h) and the seed points' row (GpuState.h).
-std::string drawConstantDefinitions()
+/// A row's value as a GLSL literal of its type (KernelConstants.h).
+std::string glslInt(long long value)
 {
-  return define("BP_HASH_MULTIPLIER", std::to_string(HashMultiplier) + "u") +
-    define("BP_HASH_INCREMENT", std::to_string(HashIncrement) + "u") +
-    define("BP_ORIENTATION_DRAW", std::to_string(OrientationDraw) + "u") +
-    define("BP_LIFETIME_DRAW", std::to_string(LifetimeDraw) + "u") +
-    define("BP_FURTHER_CANDIDATE_DRAW", std::to_string(FurtherCandidateDraw) + "u") +
-    define("BP_FIRST_WEIGHT_DRAW", std::to_string(FirstWeightDraw) + "u") +
-    define("BP_SEED_ROW", std::to_string(SeedPointsPerRow) + "u");
+  return std::to_string(value);
 }
 
-/// The enums the kernels compare with: one #define per value, from Core's
-/// (the enumerated properties marked shaders="1" in the proxy XML).
-std::string enumDefinitions()
+std::string glslUint(unsigned long long value)
 {
-  std::string definitions;
-  for (const ShaderEnumerator& e : ShaderEnumerators)
-  {
-    definitions += define(e.name, std::to_string(e.value));
-  }
-  return definitions;
+  return std::to_string(value) + "u";
+}
+
+std::string glslFloat(double value)
+{
+  return floatLiteral(float(value));
 }
 
 } // namespace
 
 std::string engineConstantDefinitions()
 {
-  return define("BP_RELEASE_TRIES", std::to_string(ReleaseTries)) +
-    define("BP_MATCH_ITERATIONS", std::to_string(MatchIterations)) +
-    define("BP_POSE_ITERATIONS", std::to_string(PoseIterations)) +
-    define("BP_ROTATION_DAMPING", floatLiteral(RotationDamping)) +
-    define("BP_MAX_NEWTON_STEP", floatLiteral(MaxNewtonStep)) +
-    define("BP_MIN_VORTICITY_STEP", floatLiteral(MinVorticityStep)) +
-    define("BP_MAX_SPIN_VORTICITY_RATIO", floatLiteral(MaxSpinVorticityRatio)) +
-    drawConstantDefinitions() + enumDefinitions();
+  std::string out;
+#define BP_DEFINE(name, type, value, use)                                                          \
+  if (KernelConstantUse::use != KernelConstantUse::HostOnly)                                       \
+  {                                                                                                \
+    out += define("BP_" #name, glsl##type(value));                                                 \
+  }
+  BP_KERNEL_CONSTANTS(BP_DEFINE)
+#undef BP_DEFINE
+  return out;
 }
 
 std::string shaderFileName(int number)

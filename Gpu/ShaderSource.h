@@ -7,7 +7,7 @@
  * A program's shader is several files one after the other: a preamble
  * written here (the version, the Core/ constants as #defines, the pass's
  * own #defines), then bp_shared.glsl, the per-element state's declarations
- * (GpuState.h's one list), bp_inputs.glsl, bp_common.glsl, and the
+ * (GpuStateLayout.h's one list), bp_inputs.glsl, bp_common.glsl, and the
  * program's own pieces: a kernel and a main (bp_pass.frag on the fragment
  * path, bp_pass.comp on the compute path, after bp_pass.glsl), or the fused
  * step's kernels and bp_step.comp. Each file begins with a `#line` directive
@@ -44,12 +44,11 @@ struct ShaderPiece
   std::string text;
 };
 
-/// "#define BP_RELEASE_TRIES 64" and so on, one line per constant the
-/// shaders share with Core/ (Engine.h, ShapeMatching.h, Pose.h, the hash and
-/// the draws of a release, the enums the kernels compare with) and with the
-/// GPU engine's texture layout (the seed points' row), written from
-/// the C++ values so the two cannot drift; floats in the fewest digits that
-/// read back as the same float.
+/// "#define BP_RELEASE_TRIES 64" and so on, one line per row of
+/// BP_KERNEL_CONSTANTS (Core/Engine/KernelConstants.h: the numbers the
+/// kernels share with C++, HostOnly rows left out), written from the C++
+/// values so the two cannot drift; Uint with its `u`, floats in the fewest
+/// digits that read back as the same float.
 std::string engineConstantDefinitions();
 
 /// The name of source-string `number`.

@@ -29,7 +29,7 @@ bool bpParticleOf(ivec2 texel, out int e, out int i)
 uniform vec3 bpEmitterMin;
 uniform vec3 bpEmitterMax;
 uniform float bpElementSize;
-uniform int bpOrientation; // Parameters::orientation: 0 Fixed, 1 Random, 2 Along Flow
+uniform int bpOrientation; // Parameters::orientation: BP_ORIENTATION_FIXED, _RANDOM or _ALONG_FLOW
 uniform vec3 bpFrameRow0;
 uniform vec3 bpFrameRow1;
 uniform vec3 bpFrameRow2;

@@ -1,8 +1,9 @@
 // The compute main of a pass (bp_pass.glsl): an invocation per texel of the
-// pass's domain, in tiles of 8 x 8, its values stored into the target
+// pass's domain, in tiles of BP_PASS_GROUP_SIZE x BP_PASS_GROUP_SIZE (as
+// GpuPass::dispatch counts them), its values stored into the target
 // images (GpuPass::run binds them to image units 0, 1, ...). The compute
 // path: OpenGL 4.3 and later.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = BP_PASS_GROUP_SIZE, local_size_y = BP_PASS_GROUP_SIZE) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D bpTarget0;
 #if BP_TARGETS > 1
 layout(rgba32f, binding = 1) uniform writeonly image2D bpTarget1;

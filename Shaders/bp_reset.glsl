@@ -37,7 +37,7 @@ vec4 bpAlongFlowQuaternion(vec3 v)
   a.z = bpFrameRow2.x * bpLongAxis.x + bpFrameRow2.y * bpLongAxis.y + bpFrameRow2.z * bpLongAxis.z;
   float c = a.x * d.x + a.y * d.y + a.z * d.z;
   vec4 r;
-  if (1.0 + c < 1e-6)
+  if (1.0 + c < BP_ANTIPARALLEL_TOLERANCE)
   {
     r = vec4(bpFrameRow0.z, bpFrameRow1.z, bpFrameRow2.z, 0.0);
   }
@@ -56,7 +56,7 @@ vec4 bpPlacedOrientation(int e, float generation, vec3 center)
   if (bpOrientation == BP_ORIENTATION_RANDOM && bpPlaneAxis >= 0)
   {
     // A turn about the flat field's axis after the frame (inPlaneQuaternion).
-    float turn = 3.14159265358979323846 * bpDraw(bpDrawElement(e), generation, BP_ORIENTATION_DRAW);
+    float turn = BP_PI * bpDraw(bpDrawElement(e), generation, BP_ORIENTATION_DRAW);
     vec4 r = vec4(0.0, 0.0, 0.0, cos(turn)); // half the angle
     r[bpPlaneAxis] = sin(turn);
     return bpQuaternionProduct(r, bpFrameQuaternion);
@@ -69,7 +69,7 @@ vec4 bpPlacedOrientation(int e, float generation, vec3 center)
     float u2 = bpDraw(d, generation, BP_ORIENTATION_DRAW + 1u);
     float u3 = bpDraw(d, generation, BP_ORIENTATION_DRAW + 2u);
     float s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
-    float a = 6.28318530717958647692 * u2, b = 6.28318530717958647692 * u3;
+    float a = (2.0 * BP_PI) * u2, b = (2.0 * BP_PI) * u3;
     return vec4(s1 * sin(a), s1 * cos(a), s2 * sin(b), s2 * cos(b));
   }
   if (bpAlongFlow && !bpLinked)

@@ -68,7 +68,7 @@ uniform uint bpSeed;
 float bpDraw(int e, float generation, uint draw)
 {
   uint h = bpHash(bpSeed, uint(e), uint(generation), draw);
-  return float(h >> 8u) * (1.0 / 16777216.0);
+  return float(h >> 8u) * BP_HASH_UNIT;
 }
 
 // ---- Lifetime (lifetimeDraw in Core/Engine/Engine.h) ------------------------------

@@ -14,7 +14,8 @@
 // so those phases run on whole SIMD groups while the other threads wait at
 // the barrier (a GPU runs other workgroups meanwhile). Gpu/GpuPasses.cpp
 // defines BP_N, BP_GROUP_ELEMENTS, BP_GROUP_THREADS (their product) and
-// BP_RESTORATION (0 none, 1 Jacobi, 2 Gauss-Seidel, 3 shape matching), and
+// BP_RESTORATION (one of BP_FUSED_NONE, _JACOBI, _GAUSS_SEIDEL and
+// _SHAPE_MATCHING, which it defines from GpuPasses.h's FusedRestore), and
 // declares the images it writes: the particle state's next texture
 // (bpParticlesOut) and each per-element texture's (bpElementStateOut,
 // bpCentersOut, bpOrientationsOut, bpPosesOut, bpSpinsOut: GpuState's one
@@ -114,7 +115,7 @@ void main()
   // thread has read the last ones.
   for (int k = 0; k < bpIterations; ++k)
   {
-#if BP_RESTORATION == 1
+#if BP_RESTORATION == BP_FUSED_JACOBI
     if (live)
     {
       p = bpJacobiParticle(e, i, p);
@@ -122,7 +123,7 @@ void main()
     bpSync();
     bpLocalPositions[thread] = p;
     bpSync();
-#elif BP_RESTORATION == 2
+#elif BP_RESTORATION == BP_FUSED_GAUSS_SEIDEL
     for (int colour = 0; colour < bpColourCount; ++colour)
     {
       if (live)
@@ -133,7 +134,7 @@ void main()
       bpLocalPositions[thread] = p;
       bpSync();
     }
-#elif BP_RESTORATION == 3
+#elif BP_RESTORATION == BP_FUSED_SHAPE_MATCHING
     if (lead)
     {
       vec4 orientation = bpLocalOrientation[thread], fit, linear0, linear1;

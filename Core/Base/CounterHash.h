@@ -22,6 +22,9 @@ namespace bp
 /// (bpHash in bp_shared.glsl gets both as generated #defines).
 constexpr std::uint32_t HashMultiplier = 1664525u;
 constexpr std::uint32_t HashIncrement = 1013904223u;
+/// The step of uniformFromHash: 2^-24, so the top 24 bits of a hash give a
+/// float in [0, 1) exactly (bpDraw in bp_shared.glsl gets it as BP_HASH_UNIT).
+constexpr float HashUnit = 1.0f / 16777216.0f;
 
 /// pcg4d over the four counters; returns the first lane.
 inline std::uint32_t counterHash(
@@ -49,7 +52,7 @@ inline std::uint32_t counterHash(
 /// Uniform float in [0, 1): the top 24 bits, exactly representable in a float.
 inline float uniformFromHash(std::uint32_t h)
 {
-  return static_cast<float>(h >> 8u) * (1.0f / 16777216.0f);
+  return static_cast<float>(h >> 8u) * HashUnit;
 }
 
 /// Draw number `draw` of the reset of `element` in its `generation`.

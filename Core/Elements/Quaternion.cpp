@@ -12,11 +12,6 @@
 
 namespace bp
 {
-namespace
-{
-constexpr double Pi = 3.14159265358979323846;
-} // namespace
-
 std::array<float, 9> rotationFromDegrees(double x, double y, double z)
 {
   const double d = Pi / 180.0;
@@ -76,11 +71,10 @@ std::array<float, 4> alongFlowQuaternion(const float v[3], int planeAxis,
   }
   const float c = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
   float r[4];
-  if (1.0f + c < 1e-6f)
+  if (1.0f + c < AntiparallelTolerance)
   {
-    // Against the flow, within 0.08 degrees (where a x d carries no
-    // direction): a half turn about the frame's z axis (the plane's normal
-    // on a flat field), which keeps a flat element in its plane.
+    // Against the flow (AntiparallelTolerance): a half turn about the frame's z axis (the plane's
+    // normal on a flat field), which keeps a flat element in its plane.
     r[0] = frame[2];
     r[1] = frame[5];
     r[2] = frame[8];

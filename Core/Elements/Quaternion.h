@@ -19,6 +19,14 @@
 namespace bp
 {
 
+/// pi, for the rotations here and, as a float, the kernels' (BP_PI).
+constexpr double Pi = 3.14159265358979323846;
+
+/// alongFlowQuaternion's "against the flow": 1 + cos(angle) below this (within
+/// 0.08 degrees of opposite), where a x d carries no direction. The kernels
+/// get it as BP_ANTIPARALLEL_TOLERANCE (bp_reset.glsl).
+constexpr float AntiparallelTolerance = 1e-6f;
+
 /// out = r * q, the Hamilton product of (x, y, z, w) quaternions: q, then r.
 /// `out` may not alias r or q.
 inline void quaternionProduct(const float r[4], const float q[4], float out[4])

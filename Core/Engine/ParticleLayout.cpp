@@ -21,8 +21,10 @@ std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, 
     return err.str();
   }
   const long long tableWidth = 2 * (long long)n;
-  const long long listRows = (4 * (long long)shape.springs.size() + 4095) / 4096;
-  const long long triangleRows = (3 * (long long)shape.triangles.size() + 4095) / 4096;
+  const long long listRows =
+    (4 * (long long)shape.springs.size() + ListTextureWidth - 1) / ListTextureWidth;
+  const long long triangleRows =
+    (3 * (long long)shape.triangles.size() + ListTextureWidth - 1) / ListTextureWidth;
   if (tableWidth > maxSize || listRows > maxSize || triangleRows > maxSize)
   {
     err << "the element template's " << n << " particles, " << shape.springs.size()

@@ -16,6 +16,10 @@
 namespace bp
 {
 
+/// The most texels a row of the GPU engine's template lists (springs,
+/// triangles; GpuTemplate) holds: a longer list takes further rows.
+constexpr long long ListTextureWidth = 4096;
+
 /**
  * The GPU engine's texture layout (thesis §3.5.1, generalised): elements in a
  * near-square W x H grid, one such block per template particle index, blocks
@@ -36,7 +40,7 @@ struct ParticleLayout
  * `shape` fits a GPU whose textures are at most `maxSize` texels wide and
  * high: the particle state (ParticleLayout), and the template's tables (rest
  * positions and particle info n wide, the Gauss-Seidel spring table 2n wide,
- * the spring and triangle lists 4096 wide). Otherwise which one does not.
+ * the spring and triangle lists ListTextureWidth wide). Otherwise which one does not.
  */
 std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
 

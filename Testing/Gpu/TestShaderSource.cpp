@@ -1,15 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The GPU engine's shader assembly (Gpu/ShaderSource.h): compile errors name
 // the file and line through the path every pass takes, and the constants the
-// shaders get from Core/ read back as the C++ values.
+// shaders get from Core/ (KernelConstants.h) read back as the C++ values.
+// That no kernel copies one by hand is TestKernelConstants (Core).
 #include "BoundParticlesShaders.h"
-#include "CounterHash.h"
-#include "Engine.h"
-#include "GpuState.h"
-#include "Pose.h"
-#include "ReleaseWeights.h"
+#include "KernelConstants.h"
 #include "ShaderSource.h"
-#include "ShapeMatching.h"
 #include "SharedContext.h"
 
 #include <epoxy/gl.h>
@@ -53,6 +49,34 @@ float readFloat(const std::string& text)
   float value = 0.0f;
   in >> value;
   return value;
+}
+
+/// Row `name` of KernelConstants.h as written: an Int as its digits, a Uint
+/// with its `u` (unsigned in GLSL, as in counterHash), a Float with its point
+/// or exponent (GLSL reads "2" as an int) that reads back as the same float;
+/// a HostOnly row not at all.
+void checkDefinition(const std::map<std::string, std::string>& d, const std::string& name,
+  const std::string& type, double value, bp::KernelConstantUse use, std::size_t& written)
+{
+  const auto found = d.find(name);
+  if (use == bp::KernelConstantUse::HostOnly)
+  {
+    EXPECT_EQ(found, d.end()) << name << " is C++ only";
+    return;
+  }
+  ASSERT_NE(found, d.end()) << name;
+  ++written;
+  const std::string& text = found->second;
+  if (type == "Float")
+  {
+    EXPECT_EQ(readFloat(text), float(value)) << name << " " << text;
+    EXPECT_NE(text.find_first_of(".e"), std::string::npos) << name << " " << text;
+  }
+  else
+  {
+    const std::string digits = std::to_string((long long)value);
+    EXPECT_EQ(text, type == "Uint" ? digits + "u" : digits) << name;
+  }
 }
 } // namespace
 
@@ -112,41 +136,11 @@ TEST(ShaderSource, LogsOfOtherDriversNameTheFile)
 TEST(ShaderSource, ConstantsReadBackAsTheCoreValues)
 {
   std::map<std::string, std::string> d = definitions();
-  EXPECT_EQ(d["BP_RELEASE_TRIES"], std::to_string(bp::ReleaseTries));
-  EXPECT_EQ(d["BP_MATCH_ITERATIONS"], std::to_string(bp::MatchIterations));
-  EXPECT_EQ(d["BP_POSE_ITERATIONS"], std::to_string(bp::PoseIterations));
-  EXPECT_EQ(readFloat(d["BP_ROTATION_DAMPING"]), bp::RotationDamping);
-  EXPECT_EQ(readFloat(d["BP_MAX_NEWTON_STEP"]), bp::MaxNewtonStep);
-  EXPECT_EQ(readFloat(d["BP_MIN_VORTICITY_STEP"]), bp::MinVorticityStep);
-  EXPECT_EQ(readFloat(d["BP_MAX_SPIN_VORTICITY_RATIO"]), bp::MaxSpinVorticityRatio);
-  for (const char* name : { "BP_ROTATION_DAMPING", "BP_MAX_NEWTON_STEP", "BP_MIN_VORTICITY_STEP",
-         "BP_MAX_SPIN_VORTICITY_RATIO" })
-  {
-    // GLSL reads "2" as an int: a float constant needs its point.
-    EXPECT_NE(d[name].find_first_of(".e"), std::string::npos) << name;
-  }
-  // The hash and the draws are unsigned in GLSL, as in counterHash.
-  EXPECT_EQ(d["BP_HASH_MULTIPLIER"], std::to_string(bp::HashMultiplier) + "u");
-  EXPECT_EQ(d["BP_HASH_INCREMENT"], std::to_string(bp::HashIncrement) + "u");
-  EXPECT_EQ(d["BP_ORIENTATION_DRAW"], std::to_string(bp::OrientationDraw) + "u");
-  EXPECT_EQ(d["BP_LIFETIME_DRAW"], std::to_string(bp::LifetimeDraw) + "u");
-  EXPECT_EQ(d["BP_FURTHER_CANDIDATE_DRAW"], std::to_string(bp::FurtherCandidateDraw) + "u");
-  EXPECT_EQ(d["BP_FIRST_WEIGHT_DRAW"], std::to_string(bp::FirstWeightDraw) + "u");
-  EXPECT_EQ(d["BP_SEED_ROW"], std::to_string(bp::SeedPointsPerRow) + "u");
-  EXPECT_EQ(d["BP_INTEGRATOR_RK4"], std::to_string(int(bp::Integrator::RK4)));
-  EXPECT_EQ(d["BP_ORIENTATION_ALONG_FLOW"], std::to_string(int(bp::Orientation::AlongFlow)));
-}
-
-TEST(ShaderSource, KernelsNameTheSharedConstantsNotTheirValues)
-{
-  // A number the shaders share with C++ reaches them as a #define; a literal
-  // copy in a kernel would drift from Core's unseen.
-  for (const char* text : { bpShaderShared, bpShaderCommon, bpShaderReset, bpShaderAdvect })
-  {
-    const std::string source = text;
-    EXPECT_EQ(source.find("1664525"), std::string::npos);
-    EXPECT_EQ(source.find("bpIntegrator == 0"), std::string::npos);
-    EXPECT_EQ(source.find("bpOrientation == 1"), std::string::npos);
-    EXPECT_EQ(source.find("% 256u"), std::string::npos);
-  }
+  std::size_t written = 0;
+#define BP_CHECK(name, type, value, use)                                                           \
+  checkDefinition(d, "BP_" #name, #type, double(value), bp::KernelConstantUse::use, written);
+  BP_KERNEL_CONSTANTS(BP_CHECK)
+#undef BP_CHECK
+  // Nothing else: every #define the kernels get from C++ is a row.
+  EXPECT_EQ(d.size(), written);
 }
