@@ -129,7 +129,7 @@ int main(int argc, char** argv)
   }
   const std::string folder = argv[argc - 1];
   int failures = 0;
-  for (int s = 0; s < bp::BuiltinShapeCount; ++s)
+  for (int s = 0; s < bp::enumCount<bp::BuiltinShape>(); ++s)
   {
     const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape(s));
     const vtkSmartPointer<vtkPolyData> mesh = elementMesh(shape);
@@ -162,7 +162,7 @@ int main(int argc, char** argv)
   }
   if (check && failures == 0)
   {
-    std::printf("all %d built-in elements are current\n", int(bp::BuiltinShapeCount));
+    std::printf("all %d built-in elements are current\n", bp::enumCount<bp::BuiltinShape>());
   }
   return failures == 0 ? 0 : 1;
 }

@@ -21,7 +21,7 @@ constexpr bool same(int vtkValue, Core coreValue)
   return vtkValue == static_cast<int>(coreValue);
 }
 
-static_assert(vtkBoundParticleTracer::FISH + 1 == bp::BuiltinShapeCount,
+static_assert(vtkBoundParticleTracer::FISH + 1 == bp::enumCount<bp::BuiltinShape>(),
   "the tracer's Element Shape offers every built-in shape");
 
 using F = vtkAnalyticFlowSource;

@@ -170,7 +170,7 @@ int vtkAnalyticFlowSource::RequestData(
 void vtkAnalyticFlowSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Flow: " << bp::analyticFlowName(bp::AnalyticFlow(this->Flow)) << "\n";
+  os << indent << "Flow: " << bp::enumName(bp::AnalyticFlow(this->Flow)) << "\n";
   os << indent << "Resolution: " << this->Resolution[0] << " " << this->Resolution[1] << " "
      << this->Resolution[2] << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

@@ -335,32 +335,6 @@ void ElementTemplate::normalize()
   }
 }
 
-const char* builtinShapeName(BuiltinShape shape)
-{
-  switch (shape)
-  {
-    case BuiltinShape::Point:
-      return "Point";
-    case BuiltinShape::Square:
-      return "Square";
-    case BuiltinShape::Strip4:
-      return "Strip4";
-    case BuiltinShape::Strip8:
-      return "Strip8";
-    case BuiltinShape::Strip16:
-      return "Strip16";
-    case BuiltinShape::Cross:
-      return "Cross";
-    case BuiltinShape::Paddlewheel:
-      return "Paddlewheel";
-    case BuiltinShape::Tetrahedron:
-      return "Tetrahedron";
-    case BuiltinShape::Fish:
-      return "Fish";
-  }
-  return "Unknown";
-}
-
 std::array<float, 3> longAxis(const ElementTemplate& shape)
 {
   const std::size_t n = shape.particleCount();

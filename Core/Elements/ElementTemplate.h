@@ -12,6 +12,8 @@
 #ifndef BoundParticles_ElementTemplate_h
 #define BoundParticles_ElementTemplate_h
 
+#include "BoundParticlesChoices.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -60,25 +62,7 @@ struct ElementTemplate
  */
 std::array<float, 3> longAxis(const ElementTemplate& shape);
 
-/// The built-in shapes of thesis Fig. 3.4, with no power-of-two padding.
-enum class BuiltinShape
-{
-  Point = 0,
-  Square,
-  Strip4,
-  Strip8,
-  Strip16,
-  Cross,
-  Paddlewheel,
-  Tetrahedron,
-  Fish,
-};
-constexpr int BuiltinShapeCount = 9;
-
-/// The shape's user-facing name ("Strip16", "Fish", ...).
-const char* builtinShapeName(BuiltinShape shape);
-
-/// A normalised template of the shape.
+/// A normalised template of the shape (BuiltinShape, in BoundParticlesChoices.h).
 ElementTemplate builtinTemplate(BuiltinShape shape);
 
 /**
@@ -89,16 +73,8 @@ ElementTemplate builtinTemplate(BuiltinShape shape);
  */
 std::vector<int> colourSprings(std::size_t particles, const std::vector<Spring>& springs);
 
-/// Which springs a mesh without lines gets (thesis §3.3: springs decide how
-/// an element may fold).
-enum class MeshSprings
-{
-  Edges = 0,         ///< the triangles' edges: a sheet that folds freely
-  EdgesAndDiagonals, ///< plus, across every edge two triangles share, their far corners
-  AllPairs           ///< every pair of particles: rigid
-};
-
-/// Springs for a mesh of `particles` points and these triangles.
+/// Springs for a mesh of `particles` points and these triangles (MeshSprings, in
+/// BoundParticlesChoices.h: which springs).
 std::vector<std::array<std::uint32_t, 2>> meshSprings(std::size_t particles,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, MeshSprings mode);
 

@@ -19,26 +19,6 @@ double along(std::size_t k, std::size_t count)
 }
 } // namespace
 
-const char* linkingName(Linking linking)
-{
-  switch (linking)
-  {
-    case Linking::None:
-      return "None";
-    case Linking::Chain:
-      return "Chain";
-    case Linking::Ring:
-      return "Ring";
-    case Linking::Sheet:
-      return "Sheet";
-    case Linking::Tube:
-      return "Tube";
-    case Linking::Torus:
-      return "Torus";
-  }
-  return "?";
-}
-
 std::size_t LinkTable::linkCount() const
 {
   std::size_t count = 0;

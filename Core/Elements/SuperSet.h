@@ -20,6 +20,8 @@
 #ifndef BoundParticles_SuperSet_h
 #define BoundParticles_SuperSet_h
 
+#include "BoundParticlesChoices.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -27,19 +29,6 @@
 
 namespace bp
 {
-
-enum class Linking
-{
-  None = 0,
-  Chain,
-  Ring,
-  Sheet,
-  Tube,
-  Torus
-};
-
-/// The user-facing name ("Chain", ...).
-const char* linkingName(Linking linking);
 
 /// The links of a super set, in the engines' element order.
 struct LinkTable

@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file EngineParameters.h
- * @brief What a system of bound particles is configured with (Parameters),
- * the choices it offers, its limits and the reset-flag bits, and the two
- * per-step decisions both engines take from the parameters alone
- * (recordsTrailAt, releasesAt). The engine itself is in Engine.h.
+ * @brief What a system of bound particles is configured with (Parameters;
+ * the choices it takes are in BoundParticlesChoices.h), its limits and the
+ * reset-flag bits, and the two per-step decisions both engines take from the
+ * parameters alone (recordsTrailAt, releasesAt). The engine itself is in
+ * Engine.h.
  */
 #ifndef BoundParticles_EngineParameters_h
 #define BoundParticles_EngineParameters_h
 
+#include "BoundParticlesChoices.h"
 #include "ReleaseLattice.h"
 #include "SuperSet.h"
 
@@ -21,58 +23,6 @@
 
 namespace bp
 {
-
-enum class Integrator
-{
-  Euler = 0,
-  RK2,
-  RK4
-};
-
-enum class Restoration
-{
-  AveragedJacobi = 0,
-  Jacobi,
-  GaussSeidel,
-  ShapeMatching ///< best rigid fit (Core/Elements/ShapeMatching.h), goals blended by shapeStiffness
-};
-
-/// How an element is turned when it is placed (Engine::place).
-enum class Orientation
-{
-  Fixed = 0, ///< by Parameters::frame (Element Rotation)
-  Random,    ///< a uniform random rotation (about the plane's axis on a flat field)
-  AlongFlow  ///< the frame's x axis turned onto the flow at the release centre
-};
-
-/// Where releases land in the emitter box (Engine::releaseCenter).
-enum class ReleasePattern
-{
-  Random = 0, ///< uniform draws (with Release Weights: in proportion to the weights)
-  Lattice     ///< element e at point e of Parameters::lattice, release after release
-};
-
-/// What holds an element in place (Engine::anchor).
-enum class Anchor
-{
-  None = 0, ///< free: advected with the flow
-  Centre    ///< its centre kept where it was released; it still turns and deforms
-};
-
-/// Whether particles carry inertia (Core/Engine/Inertia.h): None, the massless
-/// tracer; MaxeyRiley, the reduced Maxey-Riley equation with drag, the
-/// fluid's acceleration with added mass, and gravity with buoyancy.
-enum class Inertia
-{
-  None = 0,
-  MaxeyRiley
-};
-
-enum class ResetWhen
-{
-  CenterLeaves = 0,
-  AnyParticleLeaves
-};
 
 /// The most particles a system may hold (about 2 GiB of state and output).
 constexpr std::size_t MaxParticles = std::size_t(1) << 26;

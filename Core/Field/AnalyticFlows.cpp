@@ -21,26 +21,6 @@ void normalizedPosition(const double p[3], const std::array<double, 6>& b, doubl
 }
 } // namespace
 
-const char* analyticFlowName(AnalyticFlow flow)
-{
-  switch (flow)
-  {
-    case AnalyticFlow::SolidBodyRotation:
-      return "Solid Body Rotation";
-    case AnalyticFlow::ShearLayer:
-      return "Shear Layer";
-    case AnalyticFlow::VerticalShear:
-      return "Vertical Shear";
-    case AnalyticFlow::ABC:
-      return "ABC";
-    case AnalyticFlow::Hurricane:
-      return "Hurricane";
-    case AnalyticFlow::DoubleGyre:
-      return "Double Gyre";
-  }
-  return "Unknown";
-}
-
 bool analyticFlowIsUnsteady(AnalyticFlow flow)
 {
   return flow == AnalyticFlow::DoubleGyre;

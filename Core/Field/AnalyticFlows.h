@@ -8,6 +8,7 @@
 #ifndef BoundParticles_AnalyticFlows_h
 #define BoundParticles_AnalyticFlows_h
 
+#include "BoundParticlesChoices.h"
 #include "VectorField.h"
 
 #include <array>
@@ -15,19 +16,6 @@
 
 namespace bp
 {
-
-enum class AnalyticFlow
-{
-  SolidBodyRotation = 0, ///< unit angular velocity about the box's vertical axis
-  ShearLayer,            ///< thesis Fig. 4.2: flow along x whose speed peaks mid-depth in z
-  VerticalShear,         ///< thesis Fig. 4.4: horizontal wind veering 90 degrees with height
-  ABC,                   ///< Arnold-Beltrami-Childress flow, one period over the box
-  Hurricane,             ///< tangential winds, inflow, eyewall updraft, decaying with height
-  DoubleGyre,            ///< unsteady double gyre (Shadden et al. 2005), period 10
-};
-constexpr int AnalyticFlowCount = 6;
-
-const char* analyticFlowName(AnalyticFlow flow);
 
 /// Whether the flow changes with time (and so has time steps).
 bool analyticFlowIsUnsteady(AnalyticFlow flow);

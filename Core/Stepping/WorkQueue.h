@@ -21,6 +21,7 @@
 #ifndef BoundParticles_WorkQueue_h
 #define BoundParticles_WorkQueue_h
 
+#include "BoundParticlesChoices.h"
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "Stepper.h"
@@ -46,14 +47,6 @@ enum class RendererKind
 /// The kind of renderer a GL_RENDERER string names: Software for Mesa's
 /// llvmpipe, softpipe and swrast, and other CPU rasterizers.
 RendererKind rendererKind(const std::string& glRenderer);
-
-/// The tracer's Engine property.
-enum class EngineChoice
-{
-  Cpu = 0,
-  Gpu = 1,
-  Automatic = 2
-};
 
 /// Whether a trace a display asked for runs on the GPU engine: always with
 /// Gpu; with Automatic only on a hardware renderer (an unknown one, before

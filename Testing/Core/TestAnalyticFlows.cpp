@@ -6,7 +6,7 @@
 TEST(AnalyticFlows, EveryFlowIsFiniteAndNonZero)
 {
   const bp::GridGeometry g = bptest::grid(12);
-  for (int f = 0; f < bp::AnalyticFlowCount; ++f)
+  for (int f = 0; f < bp::enumCount<bp::AnalyticFlow>(); ++f)
   {
     const auto flow = bp::AnalyticFlow(f);
     const std::vector<float> v = bp::sampleAnalyticFlow(flow, g, 1.0);
@@ -14,10 +14,10 @@ TEST(AnalyticFlows, EveryFlowIsFiniteAndNonZero)
     for (std::size_t i = 0; i < v.size(); i += 3)
     {
       ASSERT_TRUE(std::isfinite(v[i]) && std::isfinite(v[i + 1]) && std::isfinite(v[i + 2]))
-        << bp::analyticFlowName(flow);
+        << bp::enumName(flow);
       maxSpeed = std::max(maxSpeed, double(std::hypot(v[i], v[i + 1], v[i + 2])));
     }
-    EXPECT_GT(maxSpeed, 0.1) << bp::analyticFlowName(flow);
+    EXPECT_GT(maxSpeed, 0.1) << bp::enumName(flow);
   }
 }
 
@@ -36,7 +36,7 @@ TEST(AnalyticFlows, ShearLayerVorticityChangesSignAtMidDepth)
 
 TEST(AnalyticFlows, OnlyTheDoubleGyreIsUnsteady)
 {
-  for (int f = 0; f < bp::AnalyticFlowCount; ++f)
+  for (int f = 0; f < bp::enumCount<bp::AnalyticFlow>(); ++f)
   {
     const auto flow = bp::AnalyticFlow(f);
     const auto steps = bp::analyticFlowTimeSteps(flow, 21);

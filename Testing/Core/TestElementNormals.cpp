@@ -18,7 +18,7 @@ TEST(ElementNormals, FourAtATimeAreTheSameBitsAsOneByOne)
   for (bp::BuiltinShape kind : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Cross,
          bp::BuiltinShape::Paddlewheel, bp::BuiltinShape::Fish })
   {
-    SCOPED_TRACE(bp::builtinShapeName(kind));
+    SCOPED_TRACE(bp::enumName(kind));
     const bp::ElementTemplate shape = bp::builtinTemplate(kind);
     const std::size_t n = shape.particleCount(), E = 7;
     std::mt19937 random(17);

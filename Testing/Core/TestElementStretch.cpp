@@ -63,7 +63,7 @@ TEST(ElementStretch, RecoversAKnownMapOnEveryBuiltinTemplate)
 {
   const Eigen::Matrix3d G = rotation(0.3f, 0.7f, 0.2f) *
     Eigen::Vector3d(2.0, 0.5, 1.3).asDiagonal() * rotation(0.9f, 0.1f, 0.6f);
-  for (int s = 0; s < bp::BuiltinShapeCount; ++s)
+  for (int s = 0; s < bp::enumCount<bp::BuiltinShape>(); ++s)
   {
     const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape(s));
     SCOPED_TRACE(shape.name);

@@ -39,7 +39,7 @@ TEST(ElementTemplate, BuiltinsHaveTheirCounts)
   {
     const bp::ElementTemplate t = bp::builtinTemplate(c.shape);
     SCOPED_TRACE(t.name);
-    EXPECT_EQ(t.name, bp::builtinShapeName(c.shape));
+    EXPECT_EQ(t.name, bp::enumName(c.shape));
     EXPECT_EQ(t.validate(), "");
     EXPECT_EQ(t.particleCount(), c.particles);
     EXPECT_EQ(t.triangles.size(), c.triangles);
@@ -154,7 +154,7 @@ TEST(ElementTemplate, MeshSpringsFromTriangles)
 
 TEST(ElementTemplate, SpringColoursShareNoParticle)
 {
-  for (int shape = 0; shape < bp::BuiltinShapeCount; ++shape)
+  for (int shape = 0; shape < bp::enumCount<bp::BuiltinShape>(); ++shape)
   {
     const bp::ElementTemplate t = bp::builtinTemplate(bp::BuiltinShape(shape));
     const std::vector<int> colour = bp::colourSprings(t.particleCount(), t.springs);
@@ -242,8 +242,7 @@ TEST(ElementTemplate, StripsAreOneTriangleStripWithTheSameTriangles)
   for (auto shape :
     { bp::BuiltinShape::Cross, bp::BuiltinShape::Paddlewheel, bp::BuiltinShape::Fish })
   {
-    EXPECT_TRUE(bp::triangleStrip(bp::builtinTemplate(shape)).empty())
-      << bp::builtinShapeName(shape);
+    EXPECT_TRUE(bp::triangleStrip(bp::builtinTemplate(shape)).empty()) << bp::enumName(shape);
   }
   // A fan of three triangles is a strip (1 2 0 3 4); of four it is not: a
   // strip's vertex is in at most three triangles.

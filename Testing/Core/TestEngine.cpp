@@ -53,10 +53,10 @@ TEST(Engine, ShapesKeepEdgeLengthsInSolidRotation)
 {
   const bp::VectorField field =
     bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(33));
-  for (int s = 0; s < bp::BuiltinShapeCount; ++s)
+  for (int s = 0; s < bp::enumCount<bp::BuiltinShape>(); ++s)
   {
     const auto shape = bp::BuiltinShape(s);
-    SCOPED_TRACE(bp::builtinShapeName(shape));
+    SCOPED_TRACE(bp::enumName(shape));
     bp::Parameters p = centralParameters(50, 0.2f);
     p.integrator = bp::Integrator::RK4;
     bp::Engine engine = configured(shape, p);
@@ -280,7 +280,7 @@ TEST(Engine, EveryRestorationMethodRestoresADeformedShape)
     for (auto shape :
       { bp::BuiltinShape::Strip16, bp::BuiltinShape::Fish, bp::BuiltinShape::Paddlewheel })
     {
-      SCOPED_TRACE(std::string(bp::builtinShapeName(shape)) + " method " + std::to_string(m));
+      SCOPED_TRACE(std::string(bp::enumName(shape)) + " method " + std::to_string(m));
       bp::Parameters p = centralParameters(10, 0.3f);
       p.restoration = bp::Restoration(m);
       p.iterations = 300;
@@ -314,7 +314,7 @@ TEST(Engine, ShapeMatchingRestoresARigidCopyInOneIteration)
   for (auto shape : { bp::BuiltinShape::Strip16, bp::BuiltinShape::Cross, bp::BuiltinShape::Fish,
          bp::BuiltinShape::Tetrahedron })
   {
-    SCOPED_TRACE(bp::builtinShapeName(shape));
+    SCOPED_TRACE(bp::enumName(shape));
     bp::Parameters p = centralParameters(20, 0.3f);
     p.restoration = bp::Restoration::ShapeMatching;
     bp::Engine engine = configured(shape, p);

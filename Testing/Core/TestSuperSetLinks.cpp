@@ -71,7 +71,7 @@ TEST(SuperSetLinks, EachLinkOnceInElementOrderUBeforeV)
     {
       const bp::LinkTable table = bp::makeLinkTable(linking, elements, 0, lo, hi);
       const Pairs pairs = listed(table);
-      SCOPED_TRACE(std::string(bp::linkingName(linking)) + " of " + std::to_string(elements));
+      SCOPED_TRACE(std::string(bp::enumName(linking)) + " of " + std::to_string(elements));
       EXPECT_EQ(pairs, expectedOrder(table));
       EXPECT_EQ(pairs.size(), table.linkCount());
       std::set<std::pair<std::size_t, std::size_t>> once;

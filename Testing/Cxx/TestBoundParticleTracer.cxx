@@ -838,9 +838,9 @@ TEST(BoundParticleTracer, BuiltinElementFilesTraceLikeTheBuiltins)
 {
   // Elements/<Shape>.vtp, loaded as the Element Template, is the built-in shape.
   auto source = flow(vtkAnalyticFlowSource::HURRICANE, 16);
-  for (int shape = 0; shape < bp::BuiltinShapeCount; ++shape)
+  for (int shape = 0; shape < bp::enumCount<bp::BuiltinShape>(); ++shape)
   {
-    const char* name = bp::builtinShapeName(bp::BuiltinShape(shape));
+    const char* name = bp::enumName(bp::BuiltinShape(shape));
     SCOPED_TRACE(name);
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName((std::string(BOUNDPARTICLES_ELEMENTS_DIR) + "/" + name + ".vtp").c_str());

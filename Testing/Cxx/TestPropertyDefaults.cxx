@@ -6,8 +6,10 @@
 // valid, distinct and its default among them. A property whose setter has no
 // getter must be listed below with the reason. An enumeration's setter
 // keeps each value the XML offers and none past them; a numeric setter keeps
-// both ends of the range the XML's panel offers. The test reads the XML where
-// it is written (Plugin/), so that an edit is checked without a new build.
+// both ends of the range the XML's panel offers. An enumeration whose values
+// are a Core enumeration's (Core/Choices/BoundParticlesChoices.h) offers
+// exactly its values with its texts. The test reads the XML where it is
+// written (Plugin/), so that an edit is checked without a new build.
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerStream.h"
 #include "vtkNew.h"
@@ -16,8 +18,7 @@
 #include "vtkXMLDataElement.h"
 #include "vtkXMLUtilities.h"
 
-#include "AnalyticFlows.h"
-#include "ElementTemplate.h"
+#include "BoundParticlesChoices.h"
 
 #include <gtest/gtest.h>
 
@@ -309,51 +310,104 @@ void checkFile(const std::string& path)
   std::printf("%s: %d defaults compared\n", path.c_str(), compared);
 }
 
-/// The entries of source proxy `proxy`'s enumeration `property` in the XML, value: text.
-std::map<int, std::string> entries(
-  const std::string& path, const std::string& proxy, const std::string& property)
+/// Each enumerated property of the XML, "Proxy.Property": the entries it
+/// offers, value: text.
+std::map<std::string, std::map<int, std::string>> enumerations(const std::string& path)
 {
-  std::map<int, std::string> found;
+  std::map<std::string, std::map<int, std::string>> found;
   vtkSmartPointer<vtkXMLDataElement> root;
   root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
   for (int g = 0; root && g < root->GetNumberOfNestedElements(); ++g)
   {
-    // The tracer's proxy is a BoundParticleTracerProxy (a SourceProxy).
     vtkXMLDataElement* group = root->GetNestedElement(g);
-    vtkXMLDataElement* p =
-      group->FindNestedElementWithNameAndAttribute("SourceProxy", "name", proxy.c_str());
-    p = p ? p
-          : group->FindNestedElementWithNameAndAttribute(
-              "BoundParticleTracerProxy", "name", proxy.c_str());
-    vtkXMLDataElement* e = p
-      ? p->FindNestedElementWithNameAndAttribute("IntVectorProperty", "name", property.c_str())
-      : nullptr;
-    vtkXMLDataElement* domain = e ? enumeration(e) : nullptr;
-    for (int k = 0; domain && k < domain->GetNumberOfNestedElements(); ++k)
+    for (int p = 0; p < group->GetNumberOfNestedElements(); ++p)
     {
-      int value = -1;
-      domain->GetNestedElement(k)->GetScalarAttribute("value", value);
-      found[value] = domain->GetNestedElement(k)->GetAttribute("text");
+      vtkXMLDataElement* proxy = group->GetNestedElement(p);
+      for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+      {
+        vtkXMLDataElement* property = proxy->GetNestedElement(i);
+        vtkXMLDataElement* domain = enumeration(property);
+        if (!domain || !proxy->GetAttribute("name") || !property->GetAttribute("name"))
+        {
+          continue;
+        }
+        auto& entries =
+          found[std::string(proxy->GetAttribute("name")) + "." + property->GetAttribute("name")];
+        for (int k = 0; k < domain->GetNumberOfNestedElements(); ++k)
+        {
+          int value = -1;
+          domain->GetNestedElement(k)->GetScalarAttribute("value", value);
+          const char* text = domain->GetNestedElement(k)->GetAttribute("text");
+          entries[value] = text ? text : "";
+        }
+      }
     }
   }
   return found;
 }
+
+/// The Core enumeration's texts, value: text.
+template <typename E>
+std::map<int, std::string> coreTexts()
+{
+  std::map<int, std::string> texts;
+  for (int v = 0; v < bp::enumCount<E>(); ++v)
+  {
+    texts[v] = bp::enumName(E(v));
+  }
+  return texts;
+}
+
+/// The enumerated properties whose values are a Core enumeration's
+/// (Core/Choices/BoundParticlesChoices.h).
+const std::map<std::string, std::map<int, std::string>> CoreChoices = {
+  { "AnalyticFlow.Flow", coreTexts<bp::AnalyticFlow>() },
+  { "BoundParticleTracer.ElementShape", coreTexts<bp::BuiltinShape>() },
+  { "BoundParticleTracer.TemplateSprings", coreTexts<bp::MeshSprings>() },
+  { "BoundParticleTracer.ReleaseOrientation", coreTexts<bp::Orientation>() },
+  { "BoundParticleTracer.ReleasePattern", coreTexts<bp::ReleasePattern>() },
+  { "BoundParticleTracer.Engine", coreTexts<bp::EngineChoice>() },
+  { "BoundParticleTracer.Integrator", coreTexts<bp::Integrator>() },
+  { "BoundParticleTracer.Restoration", coreTexts<bp::Restoration>() },
+  { "BoundParticleTracer.Anchor", coreTexts<bp::Anchor>() },
+  { "BoundParticleTracer.Inertia", coreTexts<bp::Inertia>() },
+  { "BoundParticleTracer.Linking", coreTexts<bp::Linking>() },
+  { "BoundParticleTracer.ResetWhen", coreTexts<bp::ResetWhen>() },
+};
+
+/// The enumerated properties with no Core enumeration, and why.
+const std::map<std::string, std::string> NoCoreChoice = {
+  { "BoundParticleTracer.StepSizeUnit", "the bool TraceSettings::stepInCellLengths" },
+  { "BoundParticleTracer.ShapeMatchingMode", "the bool Parameters::linearShapeMatching" },
+  { "BoundParticleTracer.ColoringAxis", "an axis, 0 to 2" },
+  { "BoundParticlesRepresentation.Interpolation", "vtkProperty's, handed to the actor" },
+};
 } // namespace
 
-TEST(PropertyDefaults, TheXmlNamesCoreShapesAndFlowsAsCoreDoes)
+TEST(PropertyDefaults, TheXmlNamesEveryChoiceAsCoreDoes)
 {
-  const std::string path = BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml";
-  const auto shapes = entries(path, "BoundParticleTracer", "ElementShape");
-  ASSERT_EQ(int(shapes.size()), bp::BuiltinShapeCount);
-  for (const auto& [value, text] : shapes)
+  const auto inXml = enumerations(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml");
+  for (const auto& [property, entries] : inXml)
   {
-    EXPECT_EQ(text, bp::builtinShapeName(bp::BuiltinShape(value)));
+    SCOPED_TRACE(property);
+    const auto core = CoreChoices.find(property);
+    if (core == CoreChoices.end())
+    {
+      EXPECT_TRUE(NoCoreChoice.count(property))
+        << "an enumeration with no Core enumeration: add its enum to BoundParticlesChoices.h "
+           "and it to CoreChoices, or it to NoCoreChoice with why";
+      continue;
+    }
+    EXPECT_EQ(entries, core->second)
+      << "the XML's entries (value: text) are not the Core enumeration's texts";
   }
-  const auto flows = entries(path, "AnalyticFlow", "Flow");
-  ASSERT_EQ(int(flows.size()), bp::AnalyticFlowCount);
-  for (const auto& [value, text] : flows)
+  for (const auto& [property, texts] : CoreChoices)
   {
-    EXPECT_EQ(text, bp::analyticFlowName(bp::AnalyticFlow(value)));
+    EXPECT_TRUE(inXml.count(property)) << property << " is no enumeration of the XML";
+  }
+  for (const auto& [property, why] : NoCoreChoice)
+  {
+    EXPECT_TRUE(inXml.count(property)) << property << " is no enumeration of the XML";
   }
 }
 

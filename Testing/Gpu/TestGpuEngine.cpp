@@ -525,8 +525,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
   if (c.window || c.lattice)
     std::printf("  %d hidden at the end\n", hiddenCount);
   if (c.linking != bp::Linking::None)
-    std::printf(
-      "  linked as a %s (%zu links)\n", bp::linkingName(c.linking), cpu.links().linkCount());
+    std::printf("  linked as a %s (%zu links)\n", bp::enumName(c.linking), cpu.links().linkCount());
   if (c.anchored)
     compareAnchors(cpu, read, n, diagonal);
   // Untracked, the poses stay as placed and the spins 0 on both engines.
@@ -836,7 +835,7 @@ TEST(GpuEngine, SuperSetsMatchTheCpuEngine)
   };
   for (const auto& linked : cases)
   {
-    SCOPED_TRACE(bp::linkingName(linked.first));
+    SCOPED_TRACE(bp::enumName(linked.first));
     // Chains and rings of 64 (elements overlap less), lattices of 300 (not a square).
     const bool row = linked.first == bp::Linking::Chain || linked.first == bp::Linking::Ring;
     Case c{ bp::BuiltinShape::Strip4, row ? 64u : 300u, bp::Integrator::RK2, linked.second, true };

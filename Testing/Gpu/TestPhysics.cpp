@@ -513,7 +513,7 @@ TEST_P(Physics, SuperSetTurnsAsOneInSolidBodyRotation)
     steady(bp::AnalyticFlow::SolidBodyRotation, { 33, 33, 9 }, { -1, 1, -1, 1, -1, 1 });
   for (auto linking : { bp::Linking::Sheet, bp::Linking::Ring })
   {
-    SCOPED_TRACE(bp::linkingName(linking));
+    SCOPED_TRACE(bp::enumName(linking));
     const bool sheet = linking == bp::Linking::Sheet;
     bp::Parameters p = placed(sheet ? 64 : 24, 0.1f, { -0.6f, -0.4f, 0 }, { 0.6f, 0.4f, 0 });
     p.orientation = bp::Orientation::Fixed;
@@ -557,7 +557,7 @@ TEST_P(Physics, SuperSetTurnsAsOneInSolidBodyRotation)
         }
     }
     std::printf("%s %s: turned %.4f rad (2 pi = %.4f), worst link strain %.2e\n",
-      GetParam() ? "GPU" : "CPU", bp::linkingName(linking), turned, 2 * Pi, worstStrain);
+      GetParam() ? "GPU" : "CPU", bp::enumName(linking), turned, 2 * Pi, worstStrain);
     EXPECT_LT(worstStrain, 0.01);
     EXPECT_NEAR(turned, 2 * Pi, 0.02 * 2 * Pi);
   }
