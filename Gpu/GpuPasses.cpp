@@ -2,7 +2,6 @@
 #include "GpuPasses.h"
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
-#include "GpuFieldCache.h"
 #include "GpuStateLayout.h"
 #include "KernelConstants.h"
 #include "ShaderSource.h"
@@ -384,9 +383,9 @@ GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& share
   // Bound even when unused: an unbound sampler would share unit 0 with
   // samplers of other types, and GL refuses to draw.
   pass.texture("bpLatticeSites", shared.latticeSites);
-  if (shared.fieldCache && shared.fieldCache->field())
+  if (shared.bindField)
   {
-    shared.fieldCache->applyTo(pass);
+    shared.bindField(pass);
   }
   return pass;
 }

@@ -28,6 +28,7 @@
 #include "ShaderSource.h"
 
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -36,7 +37,7 @@
 namespace bp
 {
 
-class GpuFieldCache;
+class GpuPass;
 class GpuPasses;
 
 /// Where each element and particle sits in the engine's textures (bp_shared.glsl).
@@ -64,7 +65,9 @@ struct SharedPassInputs
   const Parameters* parameters = nullptr;
   bool linked = false;     ///< a super set, released as one from its lattice
   GLuint latticeSites = 0; ///< per element: its lattice site (bound even when unused)
-  const GpuFieldCache* fieldCache = nullptr; ///< its field is null before one is set
+  /// Binds the field's textures and uniforms to a pass (GpuSystem sets it to
+  /// its field cache's applyTo); empty, or doing nothing, before a field is set.
+  std::function<void(GpuPass&)> bindField;
 };
 
 /// How the fused step restores shapes (BP_RESTORATION in bp_step.comp, which
