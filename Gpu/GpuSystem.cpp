@@ -254,7 +254,8 @@ GpuPass GpuSystem::begin(const GlProgram& program) const
   shared.parameters = &this->parameters;
   shared.linked = this->state.linked;
   shared.latticeSites = this->state.latticeSites.get();
-  shared.bindField = [this](GpuPass& pass) {
+  shared.bindField = [this](GpuPass& pass)
+  {
     if (this->fieldCache.field())
     {
       this->fieldCache.applyTo(pass);
