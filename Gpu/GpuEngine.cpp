@@ -19,7 +19,7 @@ struct GpuEngine::Internals
   int textureSizeLimit = 1 << 30;
   bool generatedSprings = false;
   FusedSteps fusedSteps = FusedSteps::Automatic;
-  bool timing = false;
+  PassObserver* observer = nullptr; ///< set again on every new system
   GpuSystem system;
 };
 
@@ -72,15 +72,10 @@ bool GpuEngine::fusedStep() const
   return bool(this->I->system.passes.programs.step);
 }
 
-void GpuEngine::setPassTiming(bool on)
+void GpuEngine::setPassObserver(PassObserver* observer)
 {
-  this->I->timing = on;
-  this->I->system.passes.setTiming(on);
-}
-
-std::vector<PassTime> GpuEngine::passTimes()
-{
-  return this->I->system.passes.passTimes();
+  this->I->observer = observer;
+  this->I->system.passes.setObserver(observer);
 }
 
 void GpuEngine::setTextureSizeLimit(int texels)
@@ -103,7 +98,7 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     this->release();
   }
-  I.system.passes.setTiming(I.timing);
+  I.system.passes.setObserver(I.observer);
   return error;
 }
 

@@ -34,7 +34,7 @@
  * GpuPasses.h (running and reading back passes), ShaderSource.h (a program's
  * GLSL put together, compiled, its errors named by file and line),
  * GpuTemplate.h (the template's tables), GpuState.h (the state textures),
- * GpuFieldCache.h (resident time steps), PassTimer.h (per-pass GPU times),
+ * GpuFieldCache.h (resident time steps), PassObserver.h (told about every pass),
  * all GL objects held by the owners of GlObjects.h. GpuStepper.h puts the
  * engine behind the Stepper verbs (Core/Stepping/Stepper.h).
  */
@@ -44,7 +44,7 @@
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "GpuPath.h"
-#include "PassTime.h"
+#include "PassObserver.h"
 #include "VectorField.h"
 
 #include <array>
@@ -188,11 +188,11 @@ public:
   GpuPath path() const;
   bool fusedStep() const;
 
-  /// Times every pass on the GPU (GL_TIME_ELAPSED) from now on, or stops.
-  void setPassTiming(bool on);
-  /// Each pass's GPU time since the last call, in the order they first ran;
-  /// waits for the GPU to finish (never call it inside a timed loop).
-  std::vector<PassTime> passTimes();
+  /// Tells `observer` about every pass and copy from now on, across
+  /// configure() and release(), or stops (null). Not owned: it must outlive
+  /// the steps it observes. Tests and benchmarks time the passes with it
+  /// (PassTimer, Gpu/Support/PassTimer.h); null costs a check per pass.
+  void setPassObserver(PassObserver* observer);
 
   /// Caps the texture size below GL_MAX_TEXTURE_SIZE (for tests of the limit).
   void setTextureSizeLimit(int texels);

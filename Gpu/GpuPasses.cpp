@@ -2,7 +2,6 @@
 #include "GpuPasses.h"
 
 #include "BoundParticlesShaders.h" // generated from Shaders/
-#include "GpuFieldCache.h"
 #include "GpuStateLayout.h"
 #include "KernelConstants.h"
 #include "ShaderSource.h"
@@ -174,7 +173,11 @@ void GpuPass::setIVec3(const char* name, int x, int y, int z) const
 
 void GpuPass::run(std::initializer_list<GLuint> targets, int width, int height) const
 {
-  this->Passes.Timer.begin(this->Passes.nameOf(this->Program));
+  PassObserver* const observer = this->Passes.Observer;
+  if (observer)
+  {
+    observer->begin(this->Passes.nameOf(this->Program));
+  }
   if (this->Passes.Path == GpuPath::Compute)
   {
     this->dispatch(targets, width, height);
@@ -183,7 +186,10 @@ void GpuPass::run(std::initializer_list<GLuint> targets, int width, int height) 
   {
     this->draw(targets, width, height);
   }
-  this->Passes.Timer.end();
+  if (observer)
+  {
+    observer->end();
+  }
 }
 
 void GpuPass::dispatch(std::initializer_list<GLuint> targets, int width, int height) const
@@ -202,7 +208,11 @@ void GpuPass::dispatch(std::initializer_list<GLuint> targets, int width, int hei
 
 void GpuPass::runGroups(std::size_t groups, std::initializer_list<GLuint> images) const
 {
-  this->Passes.Timer.begin(this->Passes.nameOf(this->Program));
+  PassObserver* const observer = this->Passes.Observer;
+  if (observer)
+  {
+    observer->begin(this->Passes.nameOf(this->Program));
+  }
   GLuint k = 0;
   for (GLuint image : images)
   {
@@ -212,7 +222,10 @@ void GpuPass::runGroups(std::size_t groups, std::initializer_list<GLuint> images
   const std::size_t x = std::max<std::size_t>(1, std::min(groups, MostGroupsAlongX));
   glDispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
   glMemoryBarrier(AfterShaderWrites);
-  this->Passes.Timer.end();
+  if (observer)
+  {
+    observer->end();
+  }
 }
 
 void GpuPass::draw(std::initializer_list<GLuint> targets, int width, int height) const
@@ -384,9 +397,9 @@ GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& share
   // Bound even when unused: an unbound sampler would share unit 0 with
   // samplers of other types, and GL refuses to draw.
   pass.texture("bpLatticeSites", shared.latticeSites);
-  if (shared.fieldCache && shared.fieldCache->field())
+  if (shared.bindField)
   {
-    shared.fieldCache->applyTo(pass);
+    shared.bindField(pass);
   }
   return pass;
 }
@@ -448,7 +461,10 @@ void GpuPasses::clearTexture(GLuint texture, const float* value) const
 void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
 {
   static const std::string copy = "copy";
-  this->Timer.begin(copy);
+  if (this->Observer)
+  {
+    this->Observer->begin(copy);
+  }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, this->Framebuffer.get());
   attach(GL_READ_FRAMEBUFFER, 0, from);
   // A framebuffer is as large as its smallest attachment: a per-element
@@ -463,7 +479,10 @@ void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
   glDisable(GL_SCISSOR_TEST);
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  this->Timer.end();
+  if (this->Observer)
+  {
+    this->Observer->end();
+  }
 }
 
 } // namespace bp

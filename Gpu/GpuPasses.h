@@ -11,8 +11,8 @@
  * elements fit a workgroup (FusedStep). A pass begins with the uniforms
  * every pass shares (the layout, the placement parameters, the super set's
  * lattice, the field), then takes its own textures and uniforms by name, so
- * a pass ignores what it does not use. While timing is on, every pass and
- * copy is timed on the GPU (PassTimer.h).
+ * a pass ignores what it does not use. An observer, when one is set, is
+ * told about every pass and copy (PassObserver.h).
  *
  * Every call needs the GL context current; the programs and framebuffers are
  * deleted as GlObjects.h says.
@@ -24,10 +24,11 @@
 #include "GlObjects.h"
 #include "GpuPath.h"
 #include "ParticleLayout.h"
-#include "PassTimer.h"
+#include "PassObserver.h"
 #include "ShaderSource.h"
 
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -36,7 +37,7 @@
 namespace bp
 {
 
-class GpuFieldCache;
+class GpuPass;
 class GpuPasses;
 
 /// Where each element and particle sits in the engine's textures (bp_shared.glsl).
@@ -64,7 +65,9 @@ struct SharedPassInputs
   const Parameters* parameters = nullptr;
   bool linked = false;     ///< a super set, released as one from its lattice
   GLuint latticeSites = 0; ///< per element: its lattice site (bound even when unused)
-  const GpuFieldCache* fieldCache = nullptr; ///< its field is null before one is set
+  /// Binds the field's textures and uniforms to a pass (GpuSystem sets it to
+  /// its field cache's applyTo); empty, or doing nothing, before a field is set.
+  std::function<void(GpuPass&)> bindField;
 };
 
 /// How the fused step restores shapes (BP_RESTORATION in bp_step.comp, which
@@ -170,10 +173,8 @@ public:
   /// Sets every texel of a texture to `value` (4 floats), without an upload.
   void clearTexture(GLuint texture, const float* value) const;
 
-  /// Times every pass and copy on the GPU from now on, or stops (PassTimer.h).
-  void setTiming(bool on) { this->Timer.enable(on); }
-  /// Each pass's time since the last call (waits for the GPU).
-  std::vector<PassTime> passTimes() { return this->Timer.collect(); }
+  /// Tells `observer` about every pass and copy from now on (null: none).
+  void setObserver(PassObserver* observer) { this->Observer = observer; }
 
   /// The passes (a kernel of Shaders/ each), in the order a step runs them.
   struct Programs
@@ -200,7 +201,7 @@ public:
 
 private:
   friend class GpuPass;
-  /// The name a program is timed by.
+  /// The name a program is told to the observer by.
   const std::string& nameOf(GLuint program) const;
   /// Compiles the fused step with the Jacobi kernel `restore`.
   std::string compileFusedStep(const ShaderPiece& restore, const std::string& generated);
@@ -210,7 +211,7 @@ private:
   GlVertexArray Triangle; ///< empty: bp_fullscreen.vert makes the triangle from gl_VertexID
   GlFramebuffer Framebuffer;
   GlFramebuffer CopyTarget; ///< the draw side of copyTexture's blit
-  mutable PassTimer Timer;
+  PassObserver* Observer = nullptr; ///< not owned
 };
 
 } // namespace bp

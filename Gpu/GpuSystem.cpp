@@ -254,7 +254,13 @@ GpuPass GpuSystem::begin(const GlProgram& program) const
   shared.parameters = &this->parameters;
   shared.linked = this->state.linked;
   shared.latticeSites = this->state.latticeSites.get();
-  shared.fieldCache = &this->fieldCache;
+  shared.bindField = [this](GpuPass& pass)
+  {
+    if (this->fieldCache.field())
+    {
+      this->fieldCache.applyTo(pass);
+    }
+  };
   return this->passes.begin(program, shared);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "gpu_columns.h"
 
+#include "PassTimer.h"
 #include "WorkQueue.h"
 
 #include <epoxy/gl.h>
@@ -147,10 +148,14 @@ std::vector<bp::PassTime> gpuPassTimes(const GpuVariant& variant,
   engine.initialize();
   for (int s = 0; s < std::min(steps, 3); ++s) // warm-up: the first runs compile
     engine.step(s * dt, dt);
-  engine.setPassTiming(true);
+  bp::PassTimer timer;
+  timer.enable(true);
+  engine.setPassObserver(&timer);
   for (int s = 0; s < steps; ++s)
     engine.step(s * dt, dt);
-  std::vector<bp::PassTime> times = engine.passTimes();
+  std::vector<bp::PassTime> times = timer.collect();
+  engine.setPassObserver(nullptr);
+  timer.enable(false);
   engine.release();
   for (bp::PassTime& t : times)
   {

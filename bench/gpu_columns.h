@@ -9,6 +9,7 @@
 
 #include "Engine.h"
 #include "GpuEngine.h"
+#include "PassTime.h"
 
 #include <functional>
 #include <string>

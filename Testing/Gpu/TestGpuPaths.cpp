@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The GPU engine's paths (Gpu/GpuPath.h): which one a context gets, the
 // message that says so, the fused step against a dispatch per kernel, and the
-// per-pass timer. The parity and physics suites run on every path
-// (CMakeLists.txt), each checking that it runs the path asked for
-// (TestGpuEngine.cpp: GpuPath.IsTheOneTheEnvironmentAsks).
+// pass observer with the per-pass timer (Gpu/Support/PassTimer.h). The parity
+// and physics suites run on every path (CMakeLists.txt), each checking that it
+// runs the path asked for (TestGpuEngine.cpp: GpuPath.IsTheOneTheEnvironmentAsks).
 #include "AnalyticFlows.h"
 #include "GpuEngine.h"
 #include "GpuPasses.h"
+#include "PassTimer.h"
 #include "SharedContext.h"
 #include "WorkQueue.h"
 
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -321,10 +323,14 @@ TEST(GpuEngine, PassTimesOnASoftwareRendererAreEachPasssOwn)
   p.iterations = 1;
   bp::GpuEngine gpu;
   trace(gpu, p, 1);
-  gpu.setPassTiming(true);
+  bp::PassTimer timer;
+  timer.enable(true);
+  gpu.setPassObserver(&timer);
   for (int s = 0; s < 4; ++s)
     gpu.step(0.01 * (s + 1), 0.01);
-  const std::vector<bp::PassTime> times = gpu.passTimes();
+  const std::vector<bp::PassTime> times = timer.collect();
+  gpu.setPassObserver(nullptr);
+  timer.enable(false);
   gpu.release();
   unsetenv(bp::FusedStepVariable);
   if (was)
@@ -350,9 +356,11 @@ TEST(GpuEngine, PassTimesSayWhereTheTimeGoes)
   if (!bp::haveSharedContext())
     return;
   bp::GpuEngine gpu;
-  gpu.setPassTiming(true);
+  bp::PassTimer timer;
+  timer.enable(true);
+  gpu.setPassObserver(&timer); // before configure(): the observer stays across it
   trace(gpu, strips(64), 6);
-  const std::vector<bp::PassTime> times = gpu.passTimes();
+  const std::vector<bp::PassTime> times = timer.collect();
   ASSERT_FALSE(times.empty());
   long runs = 0;
   for (const bp::PassTime& t : times)
@@ -363,8 +371,75 @@ TEST(GpuEngine, PassTimesSayWhereTheTimeGoes)
       runs = t.runs;
   }
   EXPECT_EQ(runs, gpu.fusedStep() ? 6 : 7) << "a run a step (finalize also at initialisation)";
-  gpu.setPassTiming(false);
+  timer.enable(false);
   gpu.step(0.1, 0.01);
-  EXPECT_TRUE(gpu.passTimes().empty());
+  EXPECT_TRUE(timer.collect().empty()) << "timed while off";
+  gpu.setPassObserver(nullptr);
+  gpu.release();
+}
+
+namespace
+{
+/// Counts what the engine tells it, and checks that calls never nest.
+struct CountingObserver : bp::PassObserver
+{
+  std::map<std::string, int> begun;
+  int ended = 0;
+  bool open = false;
+  bool nested = false;
+  void begin(const std::string& name) override
+  {
+    nested = nested || open;
+    open = true;
+    ++begun[name];
+  }
+  void end() override
+  {
+    nested = nested || !open;
+    open = false;
+    ++ended;
+  }
+  int total() const
+  {
+    int n = 0;
+    for (const auto& b : begun)
+      n += b.second;
+    return n;
+  }
+};
+} // namespace
+
+// The engine's hook (PassObserver.h): told of every pass, begin and end in
+// pairs, by the names the timer reports, across configure() and release(),
+// and of nothing once detached.
+TEST(GpuEngine, PassObserverIsToldOfEveryPassUntilDetached)
+{
+  if (!bp::haveSharedContext())
+    return;
+  bp::GpuEngine gpu;
+  CountingObserver seen;
+  gpu.setPassObserver(&seen);
+  trace(gpu, strips(64), 3);
+  EXPECT_FALSE(seen.nested);
+  EXPECT_FALSE(seen.open);
+  EXPECT_GT(seen.total(), 0);
+  EXPECT_EQ(seen.ended, seen.total());
+  // a run a step (finalize also at initialisation, as PassTimesSayWhereTheTimeGoes)
+  const std::string stepped = gpu.fusedStep() ? "step (fused)" : "finalize";
+  const int initial = gpu.fusedStep() ? 0 : 1;
+  EXPECT_EQ(seen.begun[stepped], 3 + initial) << stepped;
+  EXPECT_EQ(seen.begun.count("pass"), 0u) << "a pass with no name";
+
+  gpu.release();
+  const int before = seen.total();
+  trace(gpu, strips(64), 2); // a new system keeps the observer
+  EXPECT_EQ(seen.begun[stepped], 5 + 2 * initial) << stepped;
+  EXPECT_GT(seen.total(), before);
+
+  gpu.setPassObserver(nullptr);
+  const int detached = seen.total();
+  gpu.step(0.1, 0.01);
+  EXPECT_EQ(seen.total(), detached) << "told after it was detached";
+  EXPECT_EQ(seen.ended, seen.total());
   gpu.release();
 }

@@ -26,6 +26,8 @@ void PassTimer::enable(bool on)
   {
     this->settle(0);
     this->Times.clear();
+    this->Free.clear();
+    this->Queries.clear();
   }
   else if (!this->On)
   {

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file PassTime.h
- * @brief One pass's GPU time (PassTimer.h), with no GL header: a renderer's
- * code includes GpuEngine.h beside its own GL loader.
+ * @brief One pass's GPU time (PassTimer.h), with no GL header.
  */
 #ifndef BoundParticles_PassTime_h
 #define BoundParticles_PassTime_h

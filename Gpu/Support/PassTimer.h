@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file PassTimer.h
- * @brief Where the GPU engine's time goes: a GL_TIME_ELAPSED query around
- * every pass (and copy) while timing is on, summed per pass.
+ * @brief Where the GPU engine's time goes, for tests and benchmarks: a
+ * GL_TIME_ELAPSED query around every pass (and copy) while timing is on,
+ * summed per pass. The engine calls it as its PassObserver
+ * (GpuEngine::setPassObserver).
  *
  * On a software renderer (llvmpipe) the queries mislead: a compute dispatch
  * runs when a later command needs it, inside the next pass's query, so each
@@ -12,13 +14,14 @@
  *
  * Nothing waits while the passes run: a query's result is read only by
  * collect(), or when very many are pending (then the oldest, long finished).
- * Off, it costs nothing. Needs the GL context current; the queries are
- * deleted as GlObjects.h says.
+ * Off, it records nothing. Needs the GL context current; enable(false)
+ * deletes the queries (GlObjects.h: a destructor calls no GL).
  */
 #ifndef BoundParticles_PassTimer_h
 #define BoundParticles_PassTimer_h
 
 #include "GlObjects.h"
+#include "PassObserver.h"
 #include "PassTime.h"
 
 #include <cstddef>
@@ -29,11 +32,14 @@
 namespace bp
 {
 
-class PassTimer
+/// Usage: timer.enable(true); engine.setPassObserver(&timer); steps;
+/// timer.collect(); engine.setPassObserver(nullptr); timer.enable(false).
+class PassTimer : public PassObserver
 {
 public:
-  /// Starts or stops timing; stopping drops what was not collected. Starting
-  /// reads GL_RENDERER: a software renderer's passes are timed by the CPU clock.
+  /// Starts or stops timing; stopping drops what was not collected and
+  /// deletes the queries. Starting reads GL_RENDERER: a software renderer's
+  /// passes are timed by the CPU clock.
   void enable(bool on);
   bool enabled() const { return this->On; }
   /// Whether the CPU clock times the passes (a software renderer).
@@ -41,8 +47,8 @@ public:
 
   /// Opens the query of a run of `pass`; one at a time (GL_TIME_ELAPSED
   /// queries do not nest).
-  void begin(const std::string& pass);
-  void end();
+  void begin(const std::string& pass) override;
+  void end() override;
 
   /// Every pass's time since the last collect(), in the order each first
   /// ran; waits for the GPU to finish what was timed.
