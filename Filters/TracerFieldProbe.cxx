@@ -163,13 +163,6 @@ DeliveredInput::~DeliveredInput()
   }
 }
 
-FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
-  const std::vector<double>& inputTimes, const GridOf& gridOf)
-{
-  const DeliveredInput delivered(input, inInfo, inputTimes);
-  return probeDelivered(delivered.data(), inInfo, inputTimes, gridOf);
-}
-
 FieldProbe probeDelivered(vtkDataObject* data, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf)
 {

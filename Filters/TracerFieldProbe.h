@@ -99,12 +99,6 @@ private:
 FieldProbe probeDelivered(vtkDataObject* data, vtkInformation* inInfo,
   const std::vector<double>& inputTimes, const GridOf& gridOf);
 
-/// Probes the field `input` (the filter's input connection, `inInfo` its
-/// information) delivers at its first time step (DeliveredInput, then
-/// probeDelivered).
-FieldProbe probeField(vtkAlgorithmOutput* input, vtkInformation* inInfo,
-  const std::vector<double>& inputTimes, const GridOf& gridOf);
-
 } // namespace bpvtk
 
 #endif

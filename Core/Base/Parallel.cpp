@@ -64,53 +64,6 @@ RangeRunner serialRunner()
   };
 }
 
-RangeRunner threadRunner(unsigned threads)
-{
-  threads = std::max(1u, threads);
-  return [threads](std::size_t count, const RangeFunction& f)
-  {
-    const std::size_t chunks = std::min<std::size_t>(threads, count);
-    if (chunks <= 1)
-    {
-      if (count > 0)
-      {
-        f(0, count);
-      }
-      return;
-    }
-    FirstError error;
-    std::vector<std::thread> workers;
-    workers.reserve(chunks);
-    std::size_t c = 0;
-    try
-    {
-      for (; c < chunks; ++c)
-      {
-        const std::size_t begin = count * c / chunks;
-        const std::size_t end = count * (c + 1) / chunks;
-        workers.emplace_back([&f, &error, begin, end] { error.guard([&] { f(begin, end); }); });
-      }
-    }
-    catch (...)
-    {
-      // Out of threads (or memory for one): the caller runs the chunks left,
-      // as a loop's result does not depend on its thread count.
-    }
-    for (; c < chunks; ++c)
-    {
-      error.guard([&] { f(count * c / chunks, count * (c + 1) / chunks); });
-    }
-    for (auto& w : workers)
-    {
-      w.join();
-    }
-    if (std::exception_ptr first = error.take())
-    {
-      std::rethrow_exception(first);
-    }
-  };
-}
-
 namespace
 {
 class Pool

@@ -7,7 +7,7 @@
  * memory. A RangeRunner decides how ranges are scheduled: the filter passes
  * poolRunner() below, or a runner on vtkSMPTools::For only where VTK's TBB
  * backend was measured as fast (Filters/TracerSteppers.cxx); the unit tests
- * pass serial, thread or pool runners.
+ * pass serial or pool runners.
  */
 #ifndef BoundParticles_Parallel_h
 #define BoundParticles_Parallel_h
@@ -36,14 +36,9 @@ using RangeRunner = std::function<void(std::size_t count, const RangeFunction&)>
 /// Runs the whole range on the calling thread; an exception simply propagates.
 RangeRunner serialRunner();
 
-/// Splits the range into contiguous chunks over `threads` std::threads,
-/// started anew for every call (simple; costly for small ranges). Chunks that
-/// get no thread (the system is out of them) run on the caller.
-RangeRunner threadRunner(unsigned threads);
-
-/// The same chunks on a pool of `threads - 1` persistent workers and the
-/// calling thread. The pool lives as long as the returned runner (and its
-/// copies). A call made while the workers serve another (from inside a job,
+/// Splits the range into contiguous chunks on a pool of `threads - 1`
+/// persistent workers and the calling thread. The pool lives as long as the
+/// returned runner (and its copies). A call made while the workers serve another (from inside a job,
 /// or from another thread) runs on its caller alone. If fewer threads can be
 /// started, the pool has as many chunks as it got threads.
 RangeRunner poolRunner(unsigned threads);

@@ -219,8 +219,7 @@ TEST(Engine, ThreadCountDoesNotChangeResults)
     p.emitterMax = { 1, 1, 1 };
     p.restoration = bp::Restoration::GaussSeidel;
     bp::Engine engine = configured(bp::BuiltinShape::Fish, p);
-    const bp::RangeRunner runner =
-      threads % 2 ? bp::threadRunner(threads) : bp::poolRunner(threads);
+    const bp::RangeRunner runner = bp::poolRunner(threads);
     run(engine, field, 40, 0.02, runner);
     engine.updateNormals(runner);
     std::vector<float> state = engine.positions();

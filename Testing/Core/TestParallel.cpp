@@ -122,9 +122,8 @@ TEST(Parallel, APoolRethrowsAWorkersExceptionOnItsCaller)
 
 TEST(Parallel, BadAllocInAnyChunkEndsTheCallNotTheProcess)
 {
-  const bp::RangeRunner runners[] = { bp::serialRunner(), bp::threadRunner(Threads),
-    bp::poolRunner(Threads) };
-  for (int r = 0; r < 3; ++r)
+  const bp::RangeRunner runners[] = { bp::serialRunner(), bp::poolRunner(Threads) };
+  for (int r = 0; r < 2; ++r)
   {
     // The first chunk is the pool's caller's, the last a worker's.
     for (bool first : { true, false })
@@ -141,60 +140,39 @@ TEST(Parallel, BadAllocInAnyChunkEndsTheCallNotTheProcess)
                      }),
         std::bad_alloc);
       EXPECT_TRUE(tally.everyItemOnce());
-      expectAFullCall(runners[r], r == 2 ? Threads : r == 0 ? 1 : 0);
+      expectAFullCall(runners[r], r == 1 ? Threads : 1);
     }
   }
 }
 
 TEST(Parallel, OfExceptionsFromEveryChunkOneComesOut)
 {
-  const bp::RangeRunner runners[] = { bp::threadRunner(Threads), bp::poolRunner(Threads) };
-  for (int r = 0; r < 2; ++r)
+  const bp::RangeRunner run = bp::poolRunner(Threads);
+  // Many rounds: the chunks throw at once, in whatever order.
+  for (int round = 0; round < 50; ++round)
   {
-    // Many rounds: the chunks throw at once, in whatever order.
-    for (int round = 0; round < 50; ++round)
+    Tally tally;
+    std::string message;
+    try
     {
-      Tally tally;
-      std::string message;
-      try
-      {
-        runners[r](Count,
-          [&](std::size_t begin, std::size_t end)
-          {
-            tally.visit(begin, end);
-            throw std::runtime_error(std::to_string(begin));
-          });
-      }
-      catch (const std::runtime_error& e)
-      {
-        message = e.what();
-      }
-      bool fromAChunk = false;
-      for (std::size_t c = 0; c < Threads; ++c)
-        fromAChunk = fromAChunk || message == std::to_string(Count * c / Threads);
-      EXPECT_TRUE(fromAChunk) << "runner " << r << ": '" << message << "'";
-      EXPECT_TRUE(tally.everyItemOnce()) << "runner " << r;
+      run(Count,
+        [&](std::size_t begin, std::size_t end)
+        {
+          tally.visit(begin, end);
+          throw std::runtime_error(std::to_string(begin));
+        });
     }
-    expectAFullCall(runners[r], r == 1 ? Threads : 0);
+    catch (const std::runtime_error& e)
+    {
+      message = e.what();
+    }
+    bool fromAChunk = false;
+    for (std::size_t c = 0; c < Threads; ++c)
+      fromAChunk = fromAChunk || message == std::to_string(Count * c / Threads);
+    EXPECT_TRUE(fromAChunk) << "'" << message << "'";
+    EXPECT_TRUE(tally.everyItemOnce());
   }
-}
-
-TEST(Parallel, AThreadRunnerJoinsEveryThreadBeforeRethrowing)
-{
-  const bp::RangeRunner run = bp::threadRunner(Threads);
-  Tally tally;
-  EXPECT_THROW(run(Count,
-                 [&](std::size_t begin, std::size_t end)
-                 {
-                   if (begin > 0)
-                     late();
-                   tally.visit(begin, end);
-                   if (begin == 0)
-                     throw std::logic_error("first");
-                 }),
-    std::logic_error);
-  EXPECT_TRUE(tally.everyItemOnce());
-  expectAFullCall(run, 0);
+  expectAFullCall(run, Threads);
 }
 
 TEST(Parallel, AThrowInANestedPoolCallReachesTheOuterCaller)

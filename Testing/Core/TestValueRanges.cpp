@@ -68,7 +68,7 @@ TEST(ValueRanges, MatchVtksRulesOnAnyRunner)
   values[301] = -std::numeric_limits<float>::infinity();
   values[9000] = 1e30f; // its square is infinite in float: out of the finite magnitude
   const Naive expected = naive(values, 3);
-  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::threadRunner(3) })
+  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::poolRunner(3) })
   {
     const bp::ValueRanges r = bp::valueRanges(values.data(), values.size() / 3, 3, run);
     ASSERT_EQ(r.component.size(), 3u);
@@ -140,7 +140,7 @@ TEST(ValueRanges, WrittenBlockByBlockAsIfWrittenFirst)
   source[40] = std::numeric_limits<float>::quiet_NaN();
   source[41] = std::numeric_limits<float>::infinity();
   const Naive expected = naive(source, 3);
-  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::threadRunner(3), bp::poolRunner(2) })
+  for (const bp::RangeRunner& run : { bp::serialRunner(), bp::poolRunner(3), bp::poolRunner(2) })
   {
     std::vector<float> out(source.size(), -1.0f);
     std::vector<int> writes(tuples, 0);

@@ -535,7 +535,7 @@ TEST(FieldResampler, EachGridPointTakesTheLowestNumberedCellThatHoldsIt)
     for (const bool doubles : { false, true })
     {
       auto mesh = jitteredMesh(7, tetrahedra, doubles);
-      for (const bp::RangeRunner& run : { bp::serialRunner(), bp::threadRunner(3) })
+      for (const bp::RangeRunner& run : { bp::serialRunner(), bp::poolRunner(3) })
       {
         bpvtk::FieldResampler r;
         Resampled out;
@@ -615,7 +615,7 @@ TEST(FieldResampler, AMeshThatChangesEveryStepIsSearchedAgainAsANewOne)
     bpvtk::VectorsChoice choice;
     choice.name = "v";
     out.error = kept.resample(
-      steps[s], choice, { 0, 0, 0 }, nullptr, bp::threadRunner(3), out.image, out.warning);
+      steps[s], choice, { 0, 0, 0 }, nullptr, bp::poolRunner(3), out.image, out.warning);
     ASSERT_TRUE(out.error.empty()) << "step " << s << ": " << out.error;
     EXPECT_FALSE(kept.keptWeights()) << "step " << s;
     bpvtk::FieldResampler fresh;

@@ -67,7 +67,7 @@ void play(bool trails)
   p.trailInterval = 0.04;
   bp::Engine engine;
   ASSERT_TRUE(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip16), p).empty());
-  const bp::RangeRunner run = bp::threadRunner(3);
+  const bp::RangeRunner run = bp::poolRunner(3);
   engine.initialize(run);
   bpvtk::OutputFrame frame;
   frame.offset = { -1.0, 0.5, 2.0 };

@@ -177,11 +177,6 @@ std::string rawScalarTypeNames()
   return names;
 }
 
-const char* rawByteOrderName(RawByteOrder order)
-{
-  return order == RawByteOrder::Big ? "big" : "little";
-}
-
 bool parseRawByteOrder(const std::string& name, RawByteOrder& order)
 {
   if (name == "little")

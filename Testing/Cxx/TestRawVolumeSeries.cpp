@@ -260,7 +260,8 @@ TEST_F(RawVolumeSeriesTest, BothLayoutsBothByteOrdersEveryType)
     for (bp::RawByteOrder order : { bp::RawByteOrder::Little, bp::RawByteOrder::Big })
       for (bool threeFiles : { false, true })
       {
-        SCOPED_TRACE(std::string(bp::rawScalarTypeName(type)) + " " + bp::rawByteOrderName(order) +
+        SCOPED_TRACE(std::string(bp::rawScalarTypeName(type)) + " " +
+          (order == bp::RawByteOrder::Big ? "big" : "little") +
           (threeFiles ? " three files" : " interleaved"));
         const auto s = this->write(2, threeFiles, type, order);
         const float shift = isUnsigned(type) ? 10.0f : 0.0f;

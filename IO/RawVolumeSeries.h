@@ -57,8 +57,6 @@ bool parseRawScalarType(const std::string& name, RawScalarType& type);
 /// The accepted type names, for messages: "uint8, int8, ..., float64".
 std::string rawScalarTypeNames();
 
-/// "little" or "big".
-const char* rawByteOrderName(RawByteOrder order);
 /// Parses "little" or "big"; false otherwise.
 bool parseRawByteOrder(const std::string& name, RawByteOrder& order);
 
