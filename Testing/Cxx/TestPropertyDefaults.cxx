@@ -5,11 +5,14 @@
 // wrapping, as ParaView calls the class; every enumeration's values are
 // valid, distinct and its default among them. A property whose setter has no
 // getter must be listed below with the reason. An enumeration's setter
-// keeps each value the XML offers and none past them; a numeric setter keeps
-// both ends of the range the XML's panel offers. An enumeration whose values
-// are a Core enumeration's (Core/Choices/BoundParticlesChoices.h) offers
-// exactly its values with its texts. The test reads the XML where it is
-// written (Plugin/), so that an edit is checked without a new build.
+// keeps each value the XML offers and none past them; where the class says
+// its value as text (GetXAsString, vtkBPEnumMacro), each value set through
+// SetX(int) reads back as the XML entry's text, and a fresh object's as the
+// default entry's. A numeric setter keeps both ends of the range the XML's
+// panel offers. An enumeration whose values are a Core enumeration's
+// (Core/Choices/BoundParticlesChoices.h) offers exactly its values with its
+// texts. The test reads the XML where it is written (Plugin/), so that an
+// edit is checked without a new build.
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerStream.h"
 #include "vtkNew.h"
@@ -22,6 +25,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -61,6 +65,42 @@ bool hasNoGetter(const std::string& className, const std::string& setter)
     (className == "vtkBoundParticleRepresentation" && ForwardedByTheDisplay.count(setter));
 }
 
+/// The Core enumeration's texts, value: text.
+template <typename E>
+std::map<int, std::string> coreTexts()
+{
+  std::map<int, std::string> texts;
+  for (int v = 0; v < bp::enumCount<E>(); ++v)
+  {
+    texts[v] = bp::enumName(E(v));
+  }
+  return texts;
+}
+
+/// The enumerated properties whose values are a Core enumeration's
+/// (Core/Choices/BoundParticlesChoices.h).
+const std::map<std::string, std::map<int, std::string>> CoreChoices = {
+  { "AnalyticFlow.Flow", coreTexts<bp::AnalyticFlow>() },
+  { "BoundParticleTracer.ElementShape", coreTexts<bp::BuiltinShape>() },
+  { "BoundParticleTracer.TemplateSprings", coreTexts<bp::MeshSprings>() },
+  { "BoundParticleTracer.ReleaseOrientation", coreTexts<bp::Orientation>() },
+  { "BoundParticleTracer.ReleasePattern", coreTexts<bp::ReleasePattern>() },
+  { "BoundParticleTracer.Engine", coreTexts<bp::EngineChoice>() },
+  { "BoundParticleTracer.StepSizeUnit", coreTexts<bp::StepUnit>() },
+  { "BoundParticleTracer.ShapeMatchingMode", coreTexts<bp::ShapeFit>() },
+  { "BoundParticleTracer.Integrator", coreTexts<bp::Integrator>() },
+  { "BoundParticleTracer.Restoration", coreTexts<bp::Restoration>() },
+  { "BoundParticleTracer.Anchor", coreTexts<bp::Anchor>() },
+  { "BoundParticleTracer.Inertia", coreTexts<bp::Inertia>() },
+  { "BoundParticleTracer.Linking", coreTexts<bp::Linking>() },
+  { "BoundParticleTracer.ResetWhen", coreTexts<bp::ResetWhen>() },
+};
+
+/// The enumerated properties with no Core enumeration, and why.
+const std::map<std::string, std::string> NoCoreChoice = {
+  { "BoundParticleTracer.ColoringAxis", "an axis, 0 to 2 (a clamped int)" },
+  { "BoundParticlesRepresentation.Interpolation", "vtkProperty's, handed to the actor" },
+};
 std::vector<double> numbers(const std::string& text)
 {
   std::vector<double> values;
@@ -101,6 +141,19 @@ bool replyValues(const vtkClientServerStream& reply, std::vector<double>& values
   return false;
 }
 
+/// The text a getter's reply holds.
+bool replyString(const vtkClientServerStream& reply, std::string& text)
+{
+  const char* value = nullptr;
+  if (reply.GetNumberOfMessages() != 1 || reply.GetCommand(0) != vtkClientServerStream::Reply ||
+    reply.GetNumberOfArguments(0) != 1 || !reply.GetArgument(0, 0, &value) || !value)
+  {
+    return false;
+  }
+  text = value;
+  return true;
+}
+
 class Classes
 {
 public:
@@ -128,6 +181,16 @@ public:
       << vtkClientServerStream::End;
     return this->Interpreter->ProcessStream(s) &&
       replyValues(this->Interpreter->GetLastResult(), values);
+  }
+
+  /// What the object's text getter returns, or false where it has none.
+  bool getString(vtkTypeUInt32 object, const std::string& getter, std::string& text)
+  {
+    vtkClientServerStream s;
+    s << vtkClientServerStream::Invoke << vtkClientServerID(object) << getter.c_str()
+      << vtkClientServerStream::End;
+    return this->Interpreter->ProcessStream(s) &&
+      replyString(this->Interpreter->GetLastResult(), text);
   }
 
   /// Calls the object's setter with one integer.
@@ -190,21 +253,61 @@ vtkXMLDataElement* enumeration(vtkXMLDataElement* property)
   return property->FindNestedElementWithName("EnumerationDomain");
 }
 
+/// The entries of an enumeration, value: text.
+std::map<int, std::string> entriesOf(vtkXMLDataElement* domain)
+{
+  std::map<int, std::string> entries;
+  for (int k = 0; k < domain->GetNumberOfNestedElements(); ++k)
+  {
+    int value = -1;
+    domain->GetNestedElement(k)->GetScalarAttribute("value", value);
+    const char* text = domain->GetNestedElement(k)->GetAttribute("text");
+    entries[value] = text ? text : "";
+  }
+  return entries;
+}
+
+/// Whether the class says the property's value as text (vtkBPEnumMacro's
+/// GetXAsString).
+bool saysAsText(Classes& classes, const std::string& className, const std::string& setter)
+{
+  std::string text;
+  return classes.getString(classes.create(className), "Get" + setter.substr(3) + "AsString", text);
+}
+
 /// The class keeps every value the XML offers, and no value past them (its
-/// setter clamps or refuses, with a warning).
+/// setter clamps or refuses, with a warning). Where it says its value as
+/// text, each value set reads back as the entry's text, and one past the
+/// last as the last's (clamped).
 void checkEnumeration(Classes& classes, const std::string& className, const std::string& setter,
-  const std::set<double>& offered)
+  const std::map<int, std::string>& offered)
 {
   const vtkTypeUInt32 object = classes.create(className);
-  const std::string getter = "Get" + setter.substr(3);
+  const bool asText = saysAsText(classes, className, setter);
+  const std::string getter = "Get" + setter.substr(3) + (asText ? "AsString" : "");
   const int warnings = vtkObject::GetGlobalWarningDisplay();
   vtkObject::GlobalWarningDisplayOff();
-  std::vector<int> tried(offered.begin(), offered.end());
-  tried.push_back(int(*offered.rbegin()) + 1);
+  const int last = offered.rbegin()->first;
+  std::vector<int> tried;
+  for (const auto& entry : offered)
+  {
+    tried.push_back(entry.first);
+  }
+  tried.push_back(last + 1);
   for (int value : tried)
   {
+    ASSERT_TRUE(classes.set(object, setter, value)) << setter << "(" << value << ")";
+    if (asText)
+    {
+      std::string text;
+      ASSERT_TRUE(classes.getString(object, getter, text)) << getter;
+      const std::string expected = offered.at(std::min(value, last));
+      EXPECT_EQ(text, expected) << setter << "(" << value << ") then " << getter
+                                << ": the XML's entry is \"" << expected << "\"";
+      continue;
+    }
     std::vector<double> kept;
-    ASSERT_TRUE(classes.set(object, setter, value) && classes.get(object, getter, kept));
+    ASSERT_TRUE(classes.get(object, getter, kept));
     ASSERT_EQ(kept.size(), 1u);
     EXPECT_EQ(kept[0] == value, offered.count(value) == 1)
       << setter << "(" << value << ") keeps " << kept[0] << ": the XML offers "
@@ -283,7 +386,24 @@ void checkFile(const std::string& path)
         EXPECT_TRUE(values.count(declared.at(0))) << "default not an entry";
         if (!hasNoGetter(className, setter))
         {
-          checkEnumeration(classes, className, setter, values);
+          const std::map<int, std::string> offered = entriesOf(entries);
+          const std::string key = std::string(proxy->GetAttribute("name")) + "." + name;
+          const bool asText = saysAsText(classes, className, setter);
+          EXPECT_TRUE(asText || NoCoreChoice.count(key))
+            << className << " has no Get" << setter.substr(3)
+            << "AsString: a property of a Core enumeration is declared with vtkBPEnumMacro";
+          checkEnumeration(classes, className, setter, offered);
+          if (asText)
+          {
+            // The typed getter is C++ only: the default is compared as text.
+            std::string text;
+            ASSERT_TRUE(classes.getString(object, "Get" + setter.substr(3) + "AsString", text));
+            EXPECT_EQ(text, offered.at(int(declared.at(0))))
+              << "the XML's default is \"" << offered.at(int(declared.at(0)))
+              << "\", the class starts at \"" << text << "\"";
+            ++compared;
+            continue;
+          }
         }
       }
       if (hasNoGetter(className, setter))
@@ -331,57 +451,14 @@ std::map<std::string, std::map<int, std::string>> enumerations(const std::string
         {
           continue;
         }
-        auto& entries =
-          found[std::string(proxy->GetAttribute("name")) + "." + property->GetAttribute("name")];
-        for (int k = 0; k < domain->GetNumberOfNestedElements(); ++k)
-        {
-          int value = -1;
-          domain->GetNestedElement(k)->GetScalarAttribute("value", value);
-          const char* text = domain->GetNestedElement(k)->GetAttribute("text");
-          entries[value] = text ? text : "";
-        }
+        found[std::string(proxy->GetAttribute("name")) + "." + property->GetAttribute("name")] =
+          entriesOf(domain);
       }
     }
   }
   return found;
 }
 
-/// The Core enumeration's texts, value: text.
-template <typename E>
-std::map<int, std::string> coreTexts()
-{
-  std::map<int, std::string> texts;
-  for (int v = 0; v < bp::enumCount<E>(); ++v)
-  {
-    texts[v] = bp::enumName(E(v));
-  }
-  return texts;
-}
-
-/// The enumerated properties whose values are a Core enumeration's
-/// (Core/Choices/BoundParticlesChoices.h).
-const std::map<std::string, std::map<int, std::string>> CoreChoices = {
-  { "AnalyticFlow.Flow", coreTexts<bp::AnalyticFlow>() },
-  { "BoundParticleTracer.ElementShape", coreTexts<bp::BuiltinShape>() },
-  { "BoundParticleTracer.TemplateSprings", coreTexts<bp::MeshSprings>() },
-  { "BoundParticleTracer.ReleaseOrientation", coreTexts<bp::Orientation>() },
-  { "BoundParticleTracer.ReleasePattern", coreTexts<bp::ReleasePattern>() },
-  { "BoundParticleTracer.Engine", coreTexts<bp::EngineChoice>() },
-  { "BoundParticleTracer.Integrator", coreTexts<bp::Integrator>() },
-  { "BoundParticleTracer.Restoration", coreTexts<bp::Restoration>() },
-  { "BoundParticleTracer.Anchor", coreTexts<bp::Anchor>() },
-  { "BoundParticleTracer.Inertia", coreTexts<bp::Inertia>() },
-  { "BoundParticleTracer.Linking", coreTexts<bp::Linking>() },
-  { "BoundParticleTracer.ResetWhen", coreTexts<bp::ResetWhen>() },
-};
-
-/// The enumerated properties with no Core enumeration, and why.
-const std::map<std::string, std::string> NoCoreChoice = {
-  { "BoundParticleTracer.StepSizeUnit", "the bool TraceSettings::stepInCellLengths" },
-  { "BoundParticleTracer.ShapeMatchingMode", "the bool Parameters::linearShapeMatching" },
-  { "BoundParticleTracer.ColoringAxis", "an axis, 0 to 2" },
-  { "BoundParticlesRepresentation.Interpolation", "vtkProperty's, handed to the actor" },
-};
 } // namespace
 
 TEST(PropertyDefaults, TheXmlNamesEveryChoiceAsCoreDoes)
