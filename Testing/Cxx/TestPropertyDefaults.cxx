@@ -11,8 +11,11 @@
 // default entry's. A numeric setter keeps both ends of the range the XML's
 // panel offers. An enumeration whose values are a Core enumeration's
 // (Core/Choices/BoundParticlesChoices.h) offers exactly its values with its
-// texts. The test reads the XML where it is written (Plugin/), so that an
-// edit is checked without a new build.
+// texts. Every property of the tracer is either held to Core's default (a
+// new bpvtk::TracerConfig, whose bp::TraceSettings starts at
+// bp::propertyDefaults()) or listed with why Core does not hold it. The test
+// reads the XML where it is written (Plugin/), so that an edit is checked
+// without a new build.
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerStream.h"
 #include "vtkNew.h"
@@ -22,12 +25,15 @@
 #include "vtkXMLUtilities.h"
 
 #include "BoundParticlesChoices.h"
+#include "TracerConfig.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -486,6 +492,158 @@ TEST(PropertyDefaults, TheXmlNamesEveryChoiceAsCoreDoes)
   {
     EXPECT_TRUE(inXml.count(property)) << property << " is no enumeration of the XML";
   }
+}
+
+namespace
+{
+template <typename T>
+std::vector<double> one(T value)
+{
+  return { double(value) };
+}
+template <typename T, std::size_t N>
+std::vector<double> all(const std::array<T, N>& values)
+{
+  return std::vector<double>(values.begin(), values.end());
+}
+
+/// Each tracer property that Core holds, and its field in a new
+/// bpvtk::TracerConfig (the bp::TraceSettings and bp::Parameters the engine
+/// starts from when nothing sets them): Core's default must be the panel's.
+using CoreField = std::function<std::vector<double>(const bpvtk::TracerConfig&)>;
+const std::map<std::string, CoreField> CoreDefaults = {
+  { "ResampleDimensions", [](const auto& c) { return all(c.resampleDimensions); } },
+  { "ElementShape", [](const auto& c) { return one(c.shape); } },
+  { "TemplateSprings", [](const auto& c) { return one(c.templateSprings); } },
+  { "NumberOfElements", [](const auto& c) { return one(c.trace.numberOfElements); } },
+  { "ElementSize", [](const auto& c) { return one(c.trace.elementSize); } },
+  { "ReleaseOrientation", [](const auto& c) { return one(c.trace.engine.orientation); } },
+  { "ElementRotation", [](const auto& c) { return all(c.trace.rotationDegrees); } },
+  { "ReleasePattern", [](const auto& c) { return one(c.trace.engine.releasePattern); } },
+  { "LatticeSpacing", [](const auto& c) { return one(c.trace.latticeSpacing); } },
+  { "EmitterCenter", [](const auto& c) { return all(c.trace.emitterCenter); } },
+  { "EmitterSize", [](const auto& c) { return all(c.trace.emitterSize); } },
+  { "Engine", [](const auto& c) { return one(c.engine); } },
+  { "StepSize", [](const auto& c) { return one(c.trace.stepSize); } },
+  { "StepSizeUnit",
+    [](const auto& c)
+    { return one(c.trace.stepInCellLengths ? bp::StepUnit::CellLength : bp::StepUnit::Time); } },
+  { "Integrator", [](const auto& c) { return one(c.trace.engine.integrator); } },
+  { "Restoration", [](const auto& c) { return one(c.trace.engine.restoration); } },
+  { "RestorationIterations", [](const auto& c) { return one(c.trace.engine.iterations); } },
+  { "RelaxationFactor", [](const auto& c) { return one(c.trace.engine.relaxation); } },
+  { "ShapeMatchingStiffness", [](const auto& c) { return one(c.trace.engine.shapeStiffness); } },
+  { "ShapeMatchingMode",
+    [](const auto& c) {
+      return one(c.trace.engine.linearShapeMatching ? bp::ShapeFit::Linear : bp::ShapeFit::Rigid);
+    } },
+  { "LinearShapeMatchingBeta", [](const auto& c) { return one(c.trace.engine.linearBlend); } },
+  { "Anchor", [](const auto& c) { return one(c.trace.engine.anchor); } },
+  { "Inertia", [](const auto& c) { return one(c.trace.engine.inertia); } },
+  { "ResponseTime", [](const auto& c) { return one(c.trace.engine.responseTime); } },
+  { "DensityRatio", [](const auto& c) { return one(c.trace.engine.densityRatio); } },
+  { "Gravity", [](const auto& c) { return all(c.trace.engine.gravity); } },
+  { "Linking", [](const auto& c) { return one(c.trace.engine.linking); } },
+  { "LatticeWidth", [](const auto& c) { return one(c.trace.engine.latticeWidth); } },
+  { "LinkStiffness", [](const auto& c) { return one(c.trace.engine.linkStiffness); } },
+  { "ResetWhen", [](const auto& c) { return one(c.trace.engine.resetWhen); } },
+  { "MinimumReleaseSpeed", [](const auto& c) { return one(c.trace.minimumReleaseSpeed); } },
+  { "Trails", [](const auto& c) { return one(c.trace.trailLength > 0 ? 1 : 0); } },
+  { "TrailSpacing", [](const auto& c) { return one(c.trace.trailSpacing); } },
+  { "LifetimeRange", [](const auto& c) { return all(c.trace.lifetimeRange); } },
+  { "Seed", [](const auto& c) { return one(c.trace.engine.seed); } },
+  { "ColoringAxis", [](const auto& c) { return one(c.coloringAxis); } },
+};
+
+/// The tracer's properties Core does not hold as the panel does, and why.
+const std::map<std::string, std::string> NotInCore = {
+  { "Input", "an input" },
+  { "ElementTemplate", "an input (TracerConfig::templateInput says whether it is connected)" },
+  { "SeedSource", "an input (TracerConfig::seedSource says whether it is connected)" },
+  { "Vectors", "an array of the input, chosen by its domain" },
+  { "ReleaseWeights", "an array of the input, chosen by its domain" },
+  { "UnitsMismatchedVectors", "information, from the input" },
+  { "UnitsFittingVectors", "information, from the input" },
+  { "SeedType", "a proxy (TracerConfig::seedType, none by default)" },
+  { "EmitterBoxUseReferenceBounds", "the box widget's, no command" },
+  { "EmitterBoxReferenceBounds", "the box widget's, no command" },
+  { "Duration", "the time line's, read in RequestInformation" },
+  { "NumberOfTimeSteps", "the time line's, read in RequestInformation" },
+  { "FramesPerInputStep", "the time line's, read in RequestInformation" },
+  { "ReleaseWindow", "Core holds the window's ends, infinite while it is off" },
+  { "ReleaseStart", "Core holds -infinity while Release Window is off" },
+  { "ReleaseStop", "Core holds +infinity while Release Window is off" },
+  { "TrailLength", "Core holds 0 while Trails is off" },
+  { "OutputArrayInfo", "information, the table of bp::outputArrays()" },
+  { "OutputArrays", "a selection, defaulted from the output table (TestTracerOutput)" },
+  { "ComputeVorticity", "folded into TracerConfig::wanted (Vorticity)" },
+  { "ResolvedTimeStep", "information, what the last update resolved" },
+  { "ResolvedElementSize", "information, what the last update resolved" },
+  { "TimestepValues", "information, the time line" },
+  { "TimeRange", "information, the time line" },
+};
+} // namespace
+
+TEST(PropertyDefaults, TheTracersDefaultsAreCores)
+{
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(
+    vtkXMLUtilities::ReadElementFromFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml"));
+  ASSERT_TRUE(root);
+  vtkXMLDataElement* tracer = nullptr;
+  for (int g = 0; !tracer && g < root->GetNumberOfNestedElements(); ++g)
+  {
+    tracer = root->GetNestedElement(g)->FindNestedElementWithNameAndAttribute(
+      "BoundParticleTracerProxy", "name", "BoundParticleTracer");
+  }
+  ASSERT_TRUE(tracer) << "no BoundParticleTracer proxy";
+  const bpvtk::TracerConfig fresh;
+  int compared = 0, exempt = 0;
+  std::set<std::string> seen;
+  for (int i = 0; i < tracer->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* property = tracer->GetNestedElement(i);
+    const std::string tag = property->GetName();
+    if (tag.size() < 8 || tag.compare(tag.size() - 8, 8, "Property") != 0)
+    {
+      continue;
+    }
+    const std::string name = property->GetAttribute("name");
+    SCOPED_TRACE(name);
+    seen.insert(name);
+    const auto field = CoreDefaults.find(name);
+    if (field == CoreDefaults.end())
+    {
+      EXPECT_TRUE(NotInCore.count(name))
+        << "a property with no verdict: add its Core field to CoreDefaults, or it to NotInCore "
+           "with why";
+      ++exempt;
+      continue;
+    }
+    EXPECT_FALSE(NotInCore.count(name)) << "both in CoreDefaults and NotInCore";
+    const char* text = property->GetAttribute("default_values");
+    ASSERT_TRUE(text) << "no default";
+    const std::vector<double> declared = numbers(text);
+    const std::vector<double> core = field->second(fresh);
+    ASSERT_EQ(core.size(), declared.size());
+    for (std::size_t k = 0; k < core.size(); ++k)
+    {
+      // Core holds many of them as float.
+      EXPECT_NEAR(core[k], declared[k], 1e-6 * std::max(1.0, std::abs(declared[k])))
+        << "component " << k << ": the panel starts at " << declared[k] << ", Core at " << core[k];
+    }
+    ++compared;
+  }
+  for (const auto& [name, core] : CoreDefaults)
+  {
+    EXPECT_TRUE(seen.count(name)) << name << " is no property of the tracer";
+  }
+  for (const auto& [name, why] : NotInCore)
+  {
+    EXPECT_TRUE(seen.count(name)) << name << " is no property of the tracer";
+  }
+  std::printf("%zu properties of the tracer: %d against Core, %d not in Core\n", seen.size(),
+    compared, exempt);
 }
 
 TEST(PropertyDefaults, TheXmlAndTheFiltersAgree)
