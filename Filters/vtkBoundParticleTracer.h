@@ -376,7 +376,7 @@ public:
   /**
    * Which point arrays the CPU output carries, by name (the rows of the table
    * in Core/Output/OutputArrays.cpp; which are on by default is in the table
-   * of output arrays in docs/user-guide.md, "Output arrays"), as a
+   * of docs/user-guide.md, section "Output"), as a
    * vtkDataArraySelection, the way VTK's readers select theirs. A name the
    * table lacks is refused with a warning. An array left out is not computed,
    * which is what makes a frame of Play cheaper: the field samples behind
