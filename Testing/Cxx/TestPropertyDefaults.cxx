@@ -20,6 +20,7 @@
 #include "vtkClientServerStream.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLUtilities.h"
@@ -654,4 +655,93 @@ TEST(PropertyDefaults, TheXmlAndTheFiltersAgree)
 TEST(PropertyDefaults, TheXmlAndTheReadersAgree)
 {
   checkFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticlesReaders.xml");
+}
+
+namespace
+{
+/// Each GenericDecorator under `element`, however deep (a CompositeDecorator
+/// nests them).
+void genericDecorators(vtkXMLDataElement* element, std::vector<vtkXMLDataElement*>& found)
+{
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* nested = element->GetNestedElement(i);
+    const char* type = nested->GetAttribute("type");
+    if (std::string(nested->GetName()) == "PropertyWidgetDecorator" && type &&
+      std::string(type) == "GenericDecorator")
+    {
+      found.push_back(nested);
+    }
+    genericDecorators(nested, found);
+  }
+}
+} // namespace
+
+TEST(PropertyDefaults, EveryDecoratorNamesAValueItsPropertyTakes)
+{
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(
+    vtkXMLUtilities::ReadElementFromFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml"));
+  ASSERT_TRUE(root);
+  int checked = 0;
+  for (int g = 0; g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement* group = root->GetNestedElement(g);
+    for (int p = 0; p < group->GetNumberOfNestedElements(); ++p)
+    {
+      vtkXMLDataElement* proxy = group->GetNestedElement(p);
+      std::vector<vtkXMLDataElement*> decorators;
+      genericDecorators(proxy, decorators);
+      for (vtkXMLDataElement* decorator : decorators)
+      {
+        const char* name = decorator->GetAttribute("property");
+        ASSERT_TRUE(name) << "a GenericDecorator without its property";
+        SCOPED_TRACE(std::string(proxy->GetAttribute("name")) + ": decorator on " + name);
+        vtkXMLDataElement* property =
+          proxy->FindNestedElementWithNameAndAttribute("IntVectorProperty", "name", name);
+        ASSERT_TRUE(property) << "no IntVectorProperty " << name << " in the proxy";
+        std::set<int> taken;
+        if (vtkXMLDataElement* domain = enumeration(property))
+        {
+          for (const auto& entry : entriesOf(domain))
+          {
+            taken.insert(entry.first);
+          }
+        }
+        else
+        {
+          ASSERT_TRUE(property->FindNestedElementWithName("BooleanDomain"))
+            << name << " is neither an enumeration nor a boolean";
+          taken = { 0, 1 };
+        }
+        const char* values = decorator->GetAttribute("values");
+        const char* value = decorator->GetAttribute("value");
+        const std::vector<double> named = numbers(values ? values : value ? value : "");
+        EXPECT_FALSE(named.empty()) << "names no value";
+        for (double v : named)
+        {
+          EXPECT_TRUE(taken.count(int(v)) && v == int(v)) << name << " takes no value " << v;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 0);
+  std::printf("%d decorators checked\n", checked);
+}
+
+TEST(PropertyDefaults, TheDisplaysInterpolationIsVtkPropertys)
+{
+  // The display hands Interpolation to its actor's vtkProperty: the XML's
+  // entries are vtkProperty's values and texts.
+  const auto inXml = enumerations(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml");
+  const auto entries = inXml.find("BoundParticlesRepresentation.Interpolation");
+  ASSERT_NE(entries, inXml.end());
+  vtkNew<vtkProperty> property;
+  for (const auto& [value, text] : entries->second)
+  {
+    property->SetInterpolation(value);
+    EXPECT_EQ(property->GetInterpolation(), value);
+    EXPECT_STREQ(property->GetInterpolationAsString(), text.c_str()) << "value " << value;
+  }
 }
