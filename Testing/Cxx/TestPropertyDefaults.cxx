@@ -26,6 +26,9 @@
 #include "vtkXMLUtilities.h"
 
 #include "BoundParticlesChoices.h"
+#include "EngineParameters.h"
+#include "ReleaseLattice.h"
+#include "TraceSettings.h"
 #include "TracerConfig.h"
 
 #include <gtest/gtest.h>
@@ -744,4 +747,48 @@ TEST(PropertyDefaults, TheDisplaysInterpolationIsVtkPropertys)
     EXPECT_EQ(property->GetInterpolation(), value);
     EXPECT_STREQ(property->GetInterpolationAsString(), text.c_str()) << "value " << value;
   }
+}
+
+TEST(PropertyDefaults, TheXmlsMaximaAreCoresLimits)
+{
+  // A range's maximum that mirrors a limit Core enforces is that limit: the
+  // panel offers exactly what the engine takes. (Line.Resolution has no
+  // maximum: its releases take the first bp::MaxSeedPoints points, said.)
+  const std::map<std::string, double> limits = {
+    { "BoundParticleTracer.TrailLength", bp::MaxTrailLength },
+    { "BoundParticleTracer.TrailSpacing", bp::MaxTrailSpacing },
+    { "BoundParticleTracer.FramesPerInputStep", bp::MaxFramesPerInterval },
+    { "BoundParticleTracer.NumberOfElements", bp::MaxLatticeCount },
+    { "PointCloud.NumberOfPoints", double(bp::MaxSeedPoints) },
+  };
+  vtkSmartPointer<vtkXMLDataElement> root;
+  root.TakeReference(
+    vtkXMLUtilities::ReadElementFromFile(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml"));
+  ASSERT_TRUE(root);
+  std::set<std::string> found;
+  for (int g = 0; g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement* group = root->GetNestedElement(g);
+    for (int p = 0; p < group->GetNumberOfNestedElements(); ++p)
+    {
+      vtkXMLDataElement* proxy = group->GetNestedElement(p);
+      for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+      {
+        vtkXMLDataElement* property = proxy->GetNestedElement(i);
+        const char* proxyName = proxy->GetAttribute("name");
+        const char* name = property->GetAttribute("name");
+        if (!proxyName || !name || !limits.count(std::string(proxyName) + "." + name))
+        {
+          continue;
+        }
+        const std::string key = std::string(proxyName) + "." + name;
+        vtkXMLDataElement* range = property->FindNestedElementWithName("IntRangeDomain");
+        ASSERT_TRUE(range && range->GetAttribute("max")) << key << " has no maximum";
+        EXPECT_EQ(numbers(range->GetAttribute("max")).at(0), limits.at(key))
+          << key << "'s maximum is not Core's limit";
+        found.insert(key);
+      }
+    }
+  }
+  EXPECT_EQ(found.size(), limits.size()) << "a property of the table is not in the XML";
 }
