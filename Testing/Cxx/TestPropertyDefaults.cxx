@@ -16,8 +16,10 @@
 // bp::propertyDefaults()) or listed with why Core does not hold it. The test
 // reads the XML where it is written (Plugin/), so that an edit is checked
 // without a new build.
+#include "vtkCallbackCommand.h"
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerStream.h"
+#include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkProperty.h"
@@ -224,6 +226,12 @@ public:
     return object != nullptr;
   }
 
+  /// The object the interpreter holds under `id`.
+  vtkObject* object(vtkTypeUInt32 id)
+  {
+    return vtkObject::SafeDownCast(this->Interpreter->GetObjectFromID(vtkClientServerID(id), 1));
+  }
+
 private:
   vtkNew<vtkClientServerInterpreter> Interpreter;
   vtkTypeUInt32 LastId = 100;
@@ -295,23 +303,36 @@ void checkEnumeration(Classes& classes, const std::string& className, const std:
   const vtkTypeUInt32 object = classes.create(className);
   const bool asText = saysAsText(classes, className, setter);
   const std::string getter = "Get" + setter.substr(3) + (asText ? "AsString" : "");
-  const int warnings = vtkObject::GetGlobalWarningDisplay();
-  vtkObject::GlobalWarningDisplayOff();
-  const int last = offered.rbegin()->first;
+  // The object's warnings are counted (and not shown).
+  int warned = 0;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetClientData(&warned);
+  counter->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  ASSERT_TRUE(classes.object(object));
+  classes.object(object)->AddObserver(vtkCommand::WarningEvent, counter);
+  const int first = offered.begin()->first, last = offered.rbegin()->first;
   std::vector<int> tried;
   for (const auto& entry : offered)
   {
     tried.push_back(entry.first);
   }
   tried.push_back(last + 1);
+  if (asText)
+  {
+    tried.push_back(first - 1);
+  }
   for (int value : tried)
   {
+    warned = 0;
     ASSERT_TRUE(classes.set(object, setter, value)) << setter << "(" << value << ")";
     if (asText)
     {
+      EXPECT_EQ(warned, offered.count(value) ? 0 : 1)
+        << setter << "(" << value << "): a number that names no value is said, once";
       std::string text;
       ASSERT_TRUE(classes.getString(object, getter, text)) << getter;
-      const std::string expected = offered.at(std::min(value, last));
+      const std::string expected = offered.at(std::max(first, std::min(value, last)));
       EXPECT_EQ(text, expected) << setter << "(" << value << ") then " << getter
                                 << ": the XML's entry is \"" << expected << "\"";
       continue;
@@ -323,7 +344,6 @@ void checkEnumeration(Classes& classes, const std::string& className, const std:
       << setter << "(" << value << ") keeps " << kept[0] << ": the XML offers "
       << (offered.count(value) ? "it" : "no such value");
   }
-  vtkObject::SetGlobalWarningDisplay(warnings);
 }
 
 /// The class keeps the ends of the range the XML's panel offers (a setter
