@@ -33,7 +33,10 @@
 #include "vtkSetGet.h"
 
 #ifdef __VTK_WRAP__
-// What the wrappers see: the int setter and the text getter.
+// What the wrappers see: the int setter and the text getter. ParaView 5.11's
+// vtkWrapClientServer writes the same code from the full macro (it skips the
+// typed pair, whose bp:: types it does not know); this branch spares other
+// wrapper versions from having to decide that.
 #define vtkBPEnumMacro(name, enumType)                                                             \
   virtual void Set##name(int value);                                                               \
   virtual const char* Get##name##AsString() const;
