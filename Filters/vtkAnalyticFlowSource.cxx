@@ -47,7 +47,7 @@ std::string vtkAnalyticFlowSource::CheckSettings() const
   {
     return "Resolution must give at least two points.";
   }
-  if (bp::analyticFlowIsUnsteady(bp::AnalyticFlow(this->Flow)) && this->NumberOfTimeSteps < 2)
+  if (bp::analyticFlowIsUnsteady(this->Flow) && this->NumberOfTimeSteps < 2)
   {
     return "NumberOfTimeSteps must be at least 2 for an unsteady flow.";
   }
@@ -81,8 +81,7 @@ int vtkAnalyticFlowSource::RequestInformation(
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 3);
   outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
 
-  const auto steps =
-    bp::analyticFlowTimeSteps(bp::AnalyticFlow(this->Flow), this->NumberOfTimeSteps);
+  const auto steps = bp::analyticFlowTimeSteps(this->Flow, this->NumberOfTimeSteps);
   if (steps.empty())
   {
     outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
@@ -102,7 +101,7 @@ int vtkAnalyticFlowSource::RequestData(
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
-  const auto flow = bp::AnalyticFlow(this->Flow);
+  const auto flow = this->Flow;
 
   double time = 0.0;
   if (bp::analyticFlowIsUnsteady(flow) &&
@@ -170,7 +169,7 @@ int vtkAnalyticFlowSource::RequestData(
 void vtkAnalyticFlowSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Flow: " << bp::enumName(bp::AnalyticFlow(this->Flow)) << "\n";
+  os << indent << "Flow: " << this->GetFlowAsString() << "\n";
   os << indent << "Resolution: " << this->Resolution[0] << " " << this->Resolution[1] << " "
      << this->Resolution[2] << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

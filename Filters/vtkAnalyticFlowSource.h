@@ -14,6 +14,7 @@
 #define vtkAnalyticFlowSource_h
 
 #include "BoundParticlesFiltersModule.h" // for export macro
+#include "vtkBoundParticleSetGet.h"      // for vtkBPEnumMacro
 #include "vtkImageAlgorithm.h"
 
 #include <string> // for std::string
@@ -25,20 +26,11 @@ public:
   vtkTypeMacro(vtkAnalyticFlowSource, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum Flows
-  {
-    SOLID_BODY_ROTATION = 0,
-    SHEAR_LAYER,
-    VERTICAL_SHEAR,
-    ABC,
-    HURRICANE,
-    DOUBLE_GYRE
-  };
-
   ///@{
-  /// Which flow. Default SHEAR_LAYER.
-  vtkSetClampMacro(Flow, int, SOLID_BODY_ROTATION, DOUBLE_GYRE);
-  vtkGetMacro(Flow, int);
+  /// Which flow (bp::AnalyticFlow): Solid Body Rotation, Shear Layer
+  /// (default), Vertical Shear, ABC, Hurricane or Double Gyre. A number that
+  /// names none is clamped with a warning.
+  vtkBPEnumMacro(Flow, bp::AnalyticFlow);
   ///@}
 
   ///@{
@@ -66,7 +58,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Flow = SHEAR_LAYER;
+  bp::AnalyticFlow Flow = bp::AnalyticFlow::ShearLayer;
   int Resolution[3] = { 32, 32, 32 };
   double Bounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
   int NumberOfTimeSteps = 21;

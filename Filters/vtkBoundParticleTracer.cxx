@@ -5,7 +5,7 @@
 #include "Memory.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
-#include "TracerClampedSetter.h"
+#include "TracerConfig.h"
 #include "TracerFieldProbe.h"
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
@@ -46,12 +46,6 @@ vtkInformationKeySubclassMacro(
   vtkBoundParticleTracer, GPU_WORK_QUEUE, GpuWorkQueueRequest, IntegerRequest);
 
 vtkStandardNewMacro(vtkBoundParticleTracer);
-
-BP_CLAMPED_SETTER(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX)
-BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
-BP_CLAMPED_SETTER(LinearShapeMatchingBeta, double, 0.0, 1.0)
-BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
-BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkBoundParticleTracerInternals(this))
@@ -131,7 +125,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   std::copy(this->ElementRotation, this->ElementRotation + 3, s.rotationDegrees.begin());
   s.lifetimeRange = { this->LifetimeRange[0], this->LifetimeRange[1] };
   s.stepSize = this->StepSize;
-  s.stepInCellLengths = this->StepSizeUnit == CELL_LENGTH;
+  s.stepInCellLengths = this->StepSizeUnit == bp::StepUnit::CellLength;
   s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
   s.trailLength = this->Trails ? this->TrailLength : 0;
   s.trailSpacing = this->TrailSpacing;
@@ -140,8 +134,16 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.iterations = this->RestorationIterations;
   p.relaxation = bp::settingAsFloat(this->RelaxationFactor);
   p.shapeStiffness = bp::settingAsFloat(this->ShapeMatchingStiffness);
-  p.linearShapeMatching = this->ShapeMatchingMode == LINEAR;
+  p.integrator = this->Integrator;
+  p.restoration = this->Restoration;
+  p.linearShapeMatching = this->ShapeMatchingMode == bp::ShapeFit::Linear;
   p.linearBlend = bp::settingAsFloat(this->LinearShapeMatchingBeta);
+  p.orientation = this->ReleaseOrientation;
+  p.releasePattern = this->ReleasePattern;
+  p.anchor = this->Anchor;
+  p.inertia = this->Inertia;
+  p.linking = this->Linking;
+  p.resetWhen = this->ResetWhen;
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = bp::settingAsFloat(this->LinkStiffness);
   p.responseTime = bp::settingAsFloat(this->ResponseTime);
@@ -166,7 +168,9 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
 {
   bpvtk::TracerConfig c;
   c.trace = this->Settings();
-  this->ConfigureEnumerations(c);
+  c.engine = this->Engine;
+  c.shape = this->ElementShape;
+  c.templateSprings = this->TemplateSprings;
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
   c.coloringAxis = this->ColoringAxis;
   for (const bp::OutputArray& row : bp::outputArrays())
@@ -525,7 +529,20 @@ void vtkBoundParticleTracer::DisableAllOutputArrays()
 void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  this->PrintEnumerations(os, indent);
+  os << indent << "ElementShape: " << this->GetElementShapeAsString() << "\n";
+  os << indent << "TemplateSprings: " << this->GetTemplateSpringsAsString() << "\n";
+  os << indent << "ReleaseOrientation: " << this->GetReleaseOrientationAsString() << "\n";
+  os << indent << "ReleasePattern: " << this->GetReleasePatternAsString() << "\n";
+  os << indent << "Engine: " << this->GetEngineAsString() << "\n";
+  os << indent << "StepSizeUnit: " << this->GetStepSizeUnitAsString() << "\n";
+  os << indent << "Integrator: " << this->GetIntegratorAsString() << "\n";
+  os << indent << "Restoration: " << this->GetRestorationAsString() << "\n";
+  os << indent << "ShapeMatchingMode: " << this->GetShapeMatchingModeAsString() << "\n";
+  os << indent << "Anchor: " << this->GetAnchorAsString() << "\n";
+  os << indent << "Inertia: " << this->GetInertiaAsString() << "\n";
+  os << indent << "Linking: " << this->GetLinkingAsString() << "\n";
+  os << indent << "ResetWhen: " << this->GetResetWhenAsString() << "\n";
+  os << indent << "ColoringAxis: " << char('X' + this->ColoringAxis) << "\n";
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "ElementSize: " << this->ElementSize << "\n";
   os << indent << "EmitterCenter: " << this->EmitterCenter[0] << " " << this->EmitterCenter[1]

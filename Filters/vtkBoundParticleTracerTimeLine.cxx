@@ -190,7 +190,7 @@ bp::TimeLine vtkBoundParticleTracer::ResolveTimeLine(
   }
   const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
     framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
-    this->StepSizeUnit == CELL_LENGTH, inputTimes, scale);
+    this->StepSizeUnit == bp::StepUnit::CellLength, inputTimes, scale);
   // Of the array traced while Vectors is not chosen: said by an update that
   // still has none (ParaView sets the Vectors default just after this
   // request, and a warning of an array not traced misleads).
@@ -311,7 +311,7 @@ void vtkBoundParticleTracer::PreferFittingVectors(
       });
     const bp::TimeLine line = bp::resolveTimeLine(this->Duration,
       framesOutOfRange ? 0 : this->FramesPerInputStep, this->NumberOfTimeSteps, this->StepSize,
-      this->StepSizeUnit == CELL_LENGTH, inputTimes, probe.scale);
+      this->StepSizeUnit == bp::StepUnit::CellLength, inputTimes, probe.scale);
     // An array that cannot be read, or does not move, is no better choice.
     candidates[k] = { names[k], probe.read && probe.scale.valid() && line.warnings.empty() };
     warnings[k] = line.warnings.empty() ? std::string() : line.warnings.front();

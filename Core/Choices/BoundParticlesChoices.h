@@ -135,6 +135,34 @@ struct EnumTraits<ResetWhen>
   static constexpr const char* names[] = { "Center Leaves", "Any Particle Leaves" };
 };
 
+/// The unit of the tracer's Step Size (Step Size Unit): cells, the fastest
+/// particle of the field moving that many cell lengths per step
+/// (TraceSettings::stepInCellLengths), or the data's time units.
+enum class StepUnit
+{
+  CellLength = 0,
+  Time
+};
+template <>
+struct EnumTraits<StepUnit>
+{
+  static constexpr const char* names[] = { "Cell Length", "Time" };
+};
+
+/// Shape matching's fit (Shape Matching Mode): the best rotation, or that
+/// blended with the best affine fit (Müller et al. 2005, section 4.3;
+/// Parameters::linearShapeMatching).
+enum class ShapeFit
+{
+  Rigid = 0,
+  Linear
+};
+template <>
+struct EnumTraits<ShapeFit>
+{
+  static constexpr const char* names[] = { "Rigid", "Linear" };
+};
+
 /// The built-in shapes of thesis Fig. 3.4, with no power-of-two padding
 /// (Core/Elements/ElementTemplate.h builds their templates).
 enum class BuiltinShape

@@ -37,6 +37,19 @@ constexpr std::size_t LatticeOverrunWarning = 100;
 /// a room's air (5 m/s against 0.65 m/s) keeps near 10.
 constexpr double GravityWarningFields = 100.0;
 
+/// The engine settings a new tracer starts with: the panel's defaults
+/// (Plugin/BoundParticles.xml; PropertyDefaults.TheTracersDefaultsAreCores
+/// holds them together). Parameters keeps engine-neutral ones: a random
+/// orientation, which needs no field, and massless particles.
+inline Parameters propertyDefaults()
+{
+  Parameters p;
+  p.orientation = Orientation::AlongFlow;
+  p.responseTime = 0.1f;
+  p.densityRatio = 1000.0f;
+  return p;
+}
+
 struct TraceSettings
 {
   long long numberOfElements = 1000;
@@ -63,8 +76,9 @@ struct TraceSettings
   bool weighted = false;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
-  /// resolveSettings() fills in the rest of it.
-  Parameters engine;
+  /// resolveSettings() fills in the rest of it. It starts at the panel's
+  /// defaults (propertyDefaults()).
+  Parameters engine = propertyDefaults();
 };
 
 /// What the automatic settings depend on, in grid-local coordinates.

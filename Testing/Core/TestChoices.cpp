@@ -39,6 +39,8 @@ TEST(Choices, EveryValueHasOneTextOfItsOwn)
   expectNamed(bp::Anchor::Centre, "Anchor");
   expectNamed(bp::Inertia::MaxeyRiley, "Inertia");
   expectNamed(bp::ResetWhen::AnyParticleLeaves, "ResetWhen");
+  expectNamed(bp::StepUnit::Time, "StepUnit");
+  expectNamed(bp::ShapeFit::Linear, "ShapeFit");
   expectNamed(bp::BuiltinShape::Fish, "BuiltinShape");
   expectNamed(bp::MeshSprings::AllPairs, "MeshSprings");
   expectNamed(bp::Linking::Torus, "Linking");

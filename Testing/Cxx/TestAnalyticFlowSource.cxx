@@ -13,7 +13,7 @@
 TEST(AnalyticFlowSource, MakesTheGridAndVectors)
 {
   vtkNew<vtkAnalyticFlowSource> source;
-  source->SetFlow(vtkAnalyticFlowSource::SOLID_BODY_ROTATION);
+  source->SetFlow(bp::AnalyticFlow::SolidBodyRotation);
   source->SetResolution(9, 5, 3);
   source->SetBounds(-2, 2, -1, 1, 0, 1);
   source->Update();
@@ -40,7 +40,7 @@ TEST(AnalyticFlowSource, MakesTheGridAndVectors)
 TEST(AnalyticFlowSource, DoubleGyreHasTimeSteps)
 {
   vtkNew<vtkAnalyticFlowSource> source;
-  source->SetFlow(vtkAnalyticFlowSource::DOUBLE_GYRE);
+  source->SetFlow(bp::AnalyticFlow::DoubleGyre);
   source->SetResolution(16, 8, 1);
   source->SetBounds(0, 2, 0, 1, 0, 0);
   source->SetNumberOfTimeSteps(5);

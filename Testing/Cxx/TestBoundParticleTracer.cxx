@@ -109,15 +109,15 @@ vtkStandardNewMacro(vtkFloatTimesSource);
 
 TEST(BoundParticleTracer, OutputSizesAndArrays)
 {
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   const struct
   {
-    int shape, particles, triangles;
+    bp::BuiltinShape shape;
+    int particles, triangles;
     bool strip; ///< one triangle strip per element
-  } shapes[] = { { vtkBoundParticleTracer::POINT, 1, 0, false },
-    { vtkBoundParticleTracer::STRIP16, 16, 14, true },
-    { vtkBoundParticleTracer::CROSS, 12, 10, false },
-    { vtkBoundParticleTracer::FISH, 23, 40, false } };
+  } shapes[] = { { bp::BuiltinShape::Point, 1, 0, false },
+    { bp::BuiltinShape::Strip16, 16, 14, true }, { bp::BuiltinShape::Cross, 12, 10, false },
+    { bp::BuiltinShape::Fish, 23, 40, false } };
   for (const auto& s : shapes)
   {
     auto tracer = tracerOn(source, 37);
@@ -168,7 +168,7 @@ TEST(BoundParticleTracer, OutputSizesAndArrays)
 TEST(BoundParticleTracer, VorticityArrayCanBeLeftOut)
 {
   // Compute Vorticity changes the output's arrays, never the trace.
-  auto source = flow(vtkAnalyticFlowSource::ABC);
+  auto source = flow(bp::AnalyticFlow::ABC);
   auto tracer = tracerOn(source, 50);
   vtkPolyData* out = at(tracer, 0.5);
   ASSERT_NE(out->GetPointData()->GetArray("Vorticity"), nullptr);
@@ -189,7 +189,7 @@ TEST(BoundParticleTracer, OutputArraysAreAVtkDataArraySelection)
   // The Output Arrays property (SetOutputArrayStatus) and a script's
   // GetOutputArraySelection() are one selection: the table's rows, in order,
   // the pose arrays off; a change through either reaches the output.
-  auto source = flow(vtkAnalyticFlowSource::ABC);
+  auto source = flow(bp::AnalyticFlow::ABC);
   auto tracer = tracerOn(source, 50);
   vtkDataArraySelection* selection = tracer->GetOutputArraySelection();
   const auto& rows = bp::outputArrays();
@@ -214,7 +214,7 @@ TEST(BoundParticleTracer, OutputArraysAreAVtkDataArraySelection)
 
 TEST(BoundParticleTracer, SteadyInputGetsTimeSteps)
 {
-  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER);
+  auto source = flow(bp::AnalyticFlow::ShearLayer);
   auto tracer = tracerOn(source);
   tracer->SetDuration(4.0);
   tracer->SetNumberOfTimeSteps(9);
@@ -230,7 +230,7 @@ TEST(BoundParticleTracer, SteadyInputGetsTimeSteps)
 
 TEST(BoundParticleTracer, ForwardContinuesAndEqualsAFreshRun)
 {
-  auto source = flow(vtkAnalyticFlowSource::HURRICANE);
+  auto source = flow(bp::AnalyticFlow::Hurricane);
   auto incremental = tracerOn(source);
   incremental->SetLifetimeRange(0.3, 0.9); // resets happen along the way
   at(incremental, 1.0);
@@ -250,7 +250,7 @@ TEST(BoundParticleTracer, ForwardContinuesAndEqualsAFreshRun)
 
 TEST(BoundParticleTracer, BackwardAndChangesReplay)
 {
-  auto source = flow(vtkAnalyticFlowSource::VERTICAL_SHEAR);
+  auto source = flow(bp::AnalyticFlow::VerticalShear);
   auto tracer = tracerOn(source);
   at(tracer, 2.0);
   const std::vector<float> back = pointsOf(at(tracer, 0.7));
@@ -272,11 +272,11 @@ TEST(BoundParticleTracer, BackwardAndChangesReplay)
 
 TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
 {
-  auto source = flow(vtkAnalyticFlowSource::DOUBLE_GYRE);
+  auto source = flow(bp::AnalyticFlow::DoubleGyre);
   source->SetResolution(40, 20, 2);
   source->SetBounds(0, 2, 0, 1, 0, 0.1);
   auto tracer = tracerOn(source);
-  tracer->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  tracer->SetElementShape(bp::BuiltinShape::Square);
   tracer->UpdateInformation();
   // 11 input steps: the automatic time line's 101 frames, 10 per step.
   EXPECT_EQ(
@@ -286,7 +286,7 @@ TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
   EXPECT_FALSE(tracer->GetLastUpdateReplayed());
   const std::vector<float> pieces = pointsOf(at(tracer, 3.75));
   auto fresh = tracerOn(source);
-  fresh->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  fresh->SetElementShape(bp::BuiltinShape::Square);
   EXPECT_EQ(pieces, pointsOf(at(fresh, 3.75)));
   EXPECT_NEAR(fresh->GetSimulationTime(), 3.75, 1e-12);
 
@@ -296,14 +296,14 @@ TEST(BoundParticleTracer, UnsteadyInputSteppedInPiecesEqualsAFreshRun)
     vtkPolyData* out = at(tracer, t);
     EXPECT_EQ(out->GetNumberOfPoints(), 200 * 4) << "t = " << t;
     auto other = tracerOn(source);
-    other->SetElementShape(vtkBoundParticleTracer::SQUARE);
+    other->SetElementShape(bp::BuiltinShape::Square);
     EXPECT_EQ(pointsOf(out), pointsOf(at(other, t))) << "t = " << t;
   }
 }
 
 TEST(BoundParticleTracer, SameSeedSameTraceOtherSeedOtherTrace)
 {
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   auto a = tracerOn(source), b = tracerOn(source), c = tracerOn(source);
   c->SetSeed(99);
   EXPECT_EQ(pointsOf(at(a, 1.3)), pointsOf(at(b, 1.3)));
@@ -312,7 +312,7 @@ TEST(BoundParticleTracer, SameSeedSameTraceOtherSeedOtherTrace)
 
 TEST(BoundParticleTracer, DefaultsFollowTheField)
 {
-  auto source = flow(vtkAnalyticFlowSource::SOLID_BODY_ROTATION, 21);
+  auto source = flow(bp::AnalyticFlow::SolidBodyRotation, 21);
   auto tracer = tracerOn(source);
   vtkPolyData* out = at(tracer, 0.0);
   // The emitter covers the field; the element size and step follow its cells and speed.
@@ -323,7 +323,7 @@ TEST(BoundParticleTracer, DefaultsFollowTheField)
   const double cell = 0.1, maxSpeed = std::sqrt(2.0);
   EXPECT_NEAR(tracer->GetResolvedTimeStep(), 0.5 * cell / maxSpeed, 1e-6);
   EXPECT_NEAR(tracer->GetResolvedElementSize(), 2 * cell, 1e-9);
-  tracer->SetStepSizeUnit(vtkBoundParticleTracer::TIME);
+  tracer->SetStepSizeUnit(bp::StepUnit::Time);
   tracer->SetStepSize(0.01);
   tracer->SetElementSize(0.3);
   at(tracer, 0.0);
@@ -480,7 +480,7 @@ TEST(BoundParticleTracer, BadInputGivesAClearErrorAndEmptyOutput)
 
 TEST(BoundParticleTracer, RecoversAfterBadInput)
 {
-  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER, 12);
+  auto source = flow(bp::AnalyticFlow::ShearLayer, 12);
   auto tracer = tracerOn(source, 10);
   ErrorLog log(tracer);
   tracer->SetStepSize(-1.0);
@@ -492,7 +492,7 @@ TEST(BoundParticleTracer, RecoversAfterBadInput)
 
 TEST(BoundParticleTracer, LongReplaysReportProgressAndHonourAbort)
 {
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   auto tracer = tracerOn(source, 50);
   struct Progress
   {
@@ -530,7 +530,7 @@ TEST(BoundParticleTracer, Float32TimeStepsDoNotStall)
   // only approximately; stepping must land on each time step and go on.
   vtkNew<vtkFloatTimesSource> source;
   auto tracer = tracerOn(source, 20);
-  tracer->SetStepSizeUnit(vtkBoundParticleTracer::TIME);
+  tracer->SetStepSizeUnit(bp::StepUnit::Time);
   tracer->SetStepSize(0.1);
   tracer->SetElementSize(0.1);
   tracer->SetLifetimeRange(100, 100);
@@ -641,7 +641,7 @@ TEST(BoundParticleTracer, FarFromTheOriginKeepsPrecision)
     vtkNew<vtkFloatTimesSource> source;
     source->Origin = origin;
     auto tracer = tracerOn(source, 10);
-    tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+    tracer->SetElementShape(bp::BuiltinShape::Point);
     tracer->SetEmitterCenter(origin + 0.3, origin + 0.5, origin + 0.5);
     tracer->SetEmitterSize(0.2, 0.2, 0.2);
     tracer->SetLifetimeRange(100, 100);
@@ -668,7 +668,7 @@ TEST(BoundParticleTracer, ImagesWithAnOffsetExtentAreWhereTheySay)
   vtkNew<vtkTrivialProducer> producer;
   producer->SetOutput(img);
   auto tracer = tracerOn(producer, 100);
-  tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+  tracer->SetElementShape(bp::BuiltinShape::Point);
   double b[6];
   at(tracer, 0.0)->GetBounds(b);
   EXPECT_GE(b[0], 1.0 - 1e-6);
@@ -705,7 +705,7 @@ TEST(BoundParticleTracer, NonFiniteSettingsAreRejected)
   expectRejected(good, "ElementRotation",
     [](vtkBoundParticleTracer* t)
     {
-      t->SetReleaseOrientation(vtkBoundParticleTracer::FIXED_ORIENTATION);
+      t->SetReleaseOrientation(bp::Orientation::Fixed);
       t->SetElementRotation(std::nan(""), 0, 0);
     });
   expectRejected(good, "Duration", [](vtkBoundParticleTracer* t) { t->SetDuration(INFINITY); });
@@ -719,7 +719,7 @@ TEST(BoundParticleTracer, NonFiniteSettingsAreRejected)
 
 TEST(BoundParticleTracer, AnUpdateExtentWithoutDataDoesNotReplay)
 {
-  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER, 12);
+  auto source = flow(bp::AnalyticFlow::ShearLayer, 12);
   auto tracer = tracerOn(source, 20);
   at(tracer, 1.0);
   tracer->GetOutputInformation(0)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), 0.2);
@@ -730,10 +730,10 @@ TEST(BoundParticleTracer, AnUpdateExtentWithoutDataDoesNotReplay)
 
 TEST(BoundParticleTracer, AnyParticleLeavingPlacesElementsWhollyInside)
 {
-  auto source = flow(vtkAnalyticFlowSource::VERTICAL_SHEAR, 16);
+  auto source = flow(bp::AnalyticFlow::VerticalShear, 16);
   auto tracer = tracerOn(source, 300);
-  tracer->SetResetWhen(vtkBoundParticleTracer::ANY_PARTICLE_LEAVES);
-  tracer->SetElementShape(vtkBoundParticleTracer::STRIP16);
+  tracer->SetResetWhen(bp::ResetWhen::AnyParticleLeaves);
+  tracer->SetElementShape(bp::BuiltinShape::Strip16);
   tracer->SetElementSize(0.4);
   // Placement: every particle inside. (Later, an element may step past the
   // bounds in the step that flags it; it is reset before it is advected again.)
@@ -744,8 +744,7 @@ TEST(BoundParticleTracer, AnyParticleLeavingPlacesElementsWhollyInside)
     EXPECT_GE(b[2 * a], -1.0 - 1e-6);
     EXPECT_LE(b[2 * a + 1], 1.0 + 1e-6);
   }
-  tracer->SetResetWhen(
-    vtkBoundParticleTracer::CENTER_LEAVES); // the thesis' rule: elements may stick out
+  tracer->SetResetWhen(bp::ResetWhen::CenterLeaves); // the thesis' rule: elements may stick out
   at(tracer, 0.0)->GetBounds(b);
   EXPECT_GT(b[1], 1.05);
 }
@@ -753,11 +752,11 @@ TEST(BoundParticleTracer, AnyParticleLeavingPlacesElementsWhollyInside)
 TEST(BoundParticleTracer, AnyMeshIsAnElement)
 {
   // A Plane source of 3 x 3 quads is a cloth patch: 16 particles, 18 triangles.
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   vtkNew<vtkPlaneSource> plane;
   plane->SetResolution(3, 3);
-  for (int mode : { vtkBoundParticleTracer::EDGES, vtkBoundParticleTracer::EDGES_AND_DIAGONALS,
-         vtkBoundParticleTracer::ALL_PAIRS })
+  for (bp::MeshSprings mode :
+    { bp::MeshSprings::Edges, bp::MeshSprings::EdgesAndDiagonals, bp::MeshSprings::AllPairs })
   {
     auto tracer = tracerOn(source, 25);
     tracer->SetTemplateConnection(plane->GetOutputPort());
@@ -800,7 +799,7 @@ TEST(BoundParticleTracer, TemplateLinesSpringsStiffnessAndPins)
   pinned->InsertNextValue(0);
   line->GetPointData()->AddArray(pinned);
 
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   auto tracer = tracerOn(source, 10);
   tracer->SetTemplateData(line);
   tracer->SetLifetimeRange(100, 100);
@@ -826,7 +825,7 @@ TEST(BoundParticleTracer, TemplateLinesSpringsStiffnessAndPins)
 
 TEST(BoundParticleTracer, AnEmptyTemplateIsRejected)
 {
-  auto source = flow(vtkAnalyticFlowSource::ABC, 8);
+  auto source = flow(bp::AnalyticFlow::ABC, 8);
   auto tracer = tracerOn(source, 10);
   tracer->SetTemplateData(vtkSmartPointer<vtkPolyData>::New());
   ErrorLog log(tracer);
@@ -837,7 +836,7 @@ TEST(BoundParticleTracer, AnEmptyTemplateIsRejected)
 TEST(BoundParticleTracer, BuiltinElementFilesTraceLikeTheBuiltins)
 {
   // Elements/<Shape>.vtp, loaded as the Element Template, is the built-in shape.
-  auto source = flow(vtkAnalyticFlowSource::HURRICANE, 16);
+  auto source = flow(bp::AnalyticFlow::Hurricane, 16);
   for (int shape = 0; shape < bp::enumCount<bp::BuiltinShape>(); ++shape)
   {
     const char* name = bp::enumName(bp::BuiltinShape(shape));
@@ -908,7 +907,7 @@ TEST(BoundParticleTracer, StretchedAltitudeLayersAreSampledExactly)
   vtkNew<vtkTrivialProducer> producer;
   producer->SetOutput(grid);
   auto tracer = tracerOn(producer, 300);
-  tracer->SetElementShape(vtkBoundParticleTracer::POINT);
+  tracer->SetElementShape(bp::BuiltinShape::Point);
   tracer->SetElementSize(0.01);
   ErrorLog errors(tracer);
   vtkPolyData* out = at(tracer, 0.05);
@@ -954,7 +953,7 @@ TEST(BoundParticleTracer, StretchedAltitudeLayersAreSampledExactly)
 
 TEST(BoundParticleTracer, TimeStepsAreReadOnceAndAtMostThreeAreHeld)
 {
-  auto source = flow(vtkAnalyticFlowSource::DOUBLE_GYRE);
+  auto source = flow(bp::AnalyticFlow::DoubleGyre);
   source->SetResolution(20, 10, 2);
   source->SetBounds(0, 2, 0, 1, 0, 0.1);
   std::vector<double> requested;
@@ -1007,7 +1006,7 @@ TEST(BoundParticleTracer, AutomaticTimeLineKeepsAFrameWithinTenSteps)
 {
   // Steady: the field probed before any update gives the range; each of the
   // 101 offered times is at most 10 of the steps the update then takes.
-  for (const int which : { vtkAnalyticFlowSource::ABC, vtkAnalyticFlowSource::SHEAR_LAYER })
+  for (const bp::AnalyticFlow which : { bp::AnalyticFlow::ABC, bp::AnalyticFlow::ShearLayer })
   {
     auto source = flow(which, 20);
     auto tracer = tracerOn(source, 50);
@@ -1015,12 +1014,12 @@ TEST(BoundParticleTracer, AutomaticTimeLineKeepsAFrameWithinTenSteps)
     ASSERT_EQ(times.size(), 101u);
     at(tracer, times[50]);
     const double dt = tracer->GetResolvedTimeStep();
-    EXPECT_LE((times[1] - times[0]) / dt, 10.0 + 1e-9) << "flow " << which;
-    EXPECT_GT((times[1] - times[0]) / dt, 1.0) << "flow " << which;
+    EXPECT_LE((times[1] - times[0]) / dt, 10.0 + 1e-9) << "flow " << bp::enumName(which);
+    EXPECT_GT((times[1] - times[0]) / dt, 1.0) << "flow " << bp::enumName(which);
     EXPECT_EQ(tracer->GetNumberOfCachedTimeSteps(), 1);
   }
   // Unsteady: frames between the input's time steps, the input's own included.
-  auto gyre = flow(vtkAnalyticFlowSource::DOUBLE_GYRE, 60); // a step is ~1/12 of 0.5
+  auto gyre = flow(bp::AnalyticFlow::DoubleGyre, 60);       // a step is ~1/12 of 0.5
   gyre->SetNumberOfTimeSteps(3);                            // 0, 0.5, 1
   auto tracer = tracerOn(gyre, 50);
   const std::vector<double> times = offeredTimes(tracer);
@@ -1040,7 +1039,7 @@ TEST(BoundParticleTracer, AutomaticTimeLineKeepsAFrameWithinTenSteps)
   // The user's choices stay.
   tracer->SetFramesPerInputStep(1);
   EXPECT_EQ(offeredTimes(tracer), (std::vector<double>{ 0.0, 0.5, 1.0 }));
-  auto steady = tracerOn(flow(vtkAnalyticFlowSource::ABC, 12), 10);
+  auto steady = tracerOn(flow(bp::AnalyticFlow::ABC, 12), 10);
   steady->SetDuration(3.0);
   EXPECT_EQ(offeredTimes(steady).back(), 3.0);
 }

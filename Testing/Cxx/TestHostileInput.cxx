@@ -146,7 +146,7 @@ TEST(HostileInput, UnboundedWorkIsRefusedQuicklyWithTheReason)
   expectRefused(tracerOn(fast, 20), 1.0, "steps");
   auto slow = hostile({ 0, 1 });
   auto tiny = tracerOn(slow, 20);
-  tiny->SetStepSizeUnit(vtkBoundParticleTracer::TIME);
+  tiny->SetStepSizeUnit(bp::StepUnit::Time);
   tiny->SetStepSize(1e-12);
   expectRefused(tiny, 1.0, "steps");
   auto steady = hostile({});
@@ -236,29 +236,29 @@ TEST(HostileInput, TemplatesThatCannotBeReadAreRefused)
   auto big = polygon(4000);
   auto pairs = tracerOn(source, 2);
   pairs->SetTemplateData(big);
-  pairs->SetTemplateSprings(vtkBoundParticleTracer::ALL_PAIRS);
+  pairs->SetTemplateSprings(bp::MeshSprings::AllPairs);
   expectRefused(pairs, 0.5, "All Pairs");
 }
 
 TEST(HostileInput, JacobiStaysBoundedAtAnyFactorThePanelAllows)
 {
-  auto source = flow(vtkAnalyticFlowSource::ABC, 16);
+  auto source = flow(bp::AnalyticFlow::ABC, 16);
   struct Case
   {
-    int shape;
+    bp::BuiltinShape shape;
     double factor;
     vtkSmartPointer<vtkPolyData> mesh;
   };
-  const std::vector<Case> cases = { { vtkBoundParticleTracer::PADDLEWHEEL, 1.0, nullptr },
-    { vtkBoundParticleTracer::FISH, 1.0, nullptr }, { vtkBoundParticleTracer::CROSS, 1.0, nullptr },
-    { vtkBoundParticleTracer::STRIP8, 0.2, polygon(100) } };
+  const std::vector<Case> cases = { { bp::BuiltinShape::Paddlewheel, 1.0, nullptr },
+    { bp::BuiltinShape::Fish, 1.0, nullptr }, { bp::BuiltinShape::Cross, 1.0, nullptr },
+    { bp::BuiltinShape::Strip8, 0.2, polygon(100) } };
   for (const Case& c : cases)
   {
     auto tracer = tracerOn(source, 50);
     tracer->SetElementShape(c.shape);
     if (c.mesh)
       tracer->SetTemplateData(c.mesh);
-    tracer->SetRestoration(vtkBoundParticleTracer::JACOBI);
+    tracer->SetRestoration(bp::Restoration::Jacobi);
     tracer->SetRestorationIterations(4);
     tracer->SetRelaxationFactor(c.factor);
     tracer->SetDuration(2.0);

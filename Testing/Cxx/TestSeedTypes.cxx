@@ -124,9 +124,9 @@ TEST(SeedTypes, PointCloudOnAFlatAxisFillsTheDisc)
 
 TEST(SeedTypes, TracerReleasesFromTheLineAndReplaysWhenItChanges)
 {
-  auto source = flow(vtkAnalyticFlowSource::SHEAR_LAYER);
+  auto source = flow(bp::AnalyticFlow::ShearLayer);
   auto tracer = tracerOn(source, 11);
-  tracer->SetElementShape(vtkBoundParticleTracer::SQUARE);
+  tracer->SetElementShape(bp::BuiltinShape::Square);
   vtkNew<vtkBoundParticleLineSeeds> line;
   line->SetPoint1(-0.5, 0.0, 0.0);
   line->SetPoint2(0.5, 0.0, 0.0);

@@ -51,7 +51,7 @@ std::vector<float> pointsOf(vtkPolyData* pd)
   return std::vector<float>(a->GetPointer(0), a->GetPointer(0) + 3 * pd->GetNumberOfPoints());
 }
 
-vtkSmartPointer<vtkAnalyticFlowSource> flow(int which, int resolution = 24)
+vtkSmartPointer<vtkAnalyticFlowSource> flow(bp::AnalyticFlow which, int resolution = 24)
 {
   auto source = vtkSmartPointer<vtkAnalyticFlowSource>::New();
   source->SetFlow(which);

@@ -37,6 +37,7 @@
 #define vtkBoundParticleTracer_h
 
 #include "BoundParticlesFiltersModule.h" // for export macro
+#include "vtkBoundParticleSetGet.h"      // for vtkBPEnumMacro, vtkBPClampedSetMacro
 #include "vtkNew.h"                      // for vtkNew
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
@@ -75,14 +76,13 @@ public:
   vtkTypeMacro(vtkBoundParticleTracer, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  // The enumerated properties, each with its enum of values, a setter that
-  // clamps to them (a value outside warns) and a getter. They are declared
-  // once, in the proxy XML (Plugin/BoundParticles.xml: the values, the
-  // panel's texts, the default, the Core enum each value is), and what
-  // follows is generated from it at configure time
-  // (cmake/BoundParticlesEnumerations.cmake); the sections below say more of
-  // what some of them do.
-@BOUNDPARTICLES_ENUMERATED_PROPERTIES@
+  // An enumerated property takes one of Core's enumerations
+  // (Core/Choices/BoundParticlesChoices.h, where the panel's text of each
+  // value is too): vtkBPEnumMacro (vtkBoundParticleSetGet.h) declares
+  // SetX(int), which clamps a number that names no value with a warning,
+  // GetXAsString(), the value's text, and the typed SetX(E) and GetX() for
+  // C++. Python and the panel set them by the proxy XML's texts.
+
   ///@{
   /**
    * Points per axis of the uniform grid that any input other than an image or
@@ -98,8 +98,14 @@ public:
   vtkGetVector3Macro(ResampleDimensions, int);
   ///@}
 
-  // ElementShape (an enumerated property, above):
-  // The built-in element shape (thesis Fig. 3.4). Default STRIP8.
+  ///@{
+  /// The shape of every element (thesis Fig. 3.4), unless an element template
+  /// is connected: Point, Square, Strip4, Strip8 (default), Strip16, Cross,
+  /// Paddlewheel, Tetrahedron or Fish (the 23-particle Tu-Terzopoulos
+  /// skeleton). Strips act like short stream ribbons; paddlewheels and crosses
+  /// turn with the local vorticity.
+  vtkBPEnumMacro(ElementShape, bp::BuiltinShape);
+  ///@}
 
   ///@{
   /// The optional second input: any vtkPolyData as the element template,
@@ -137,10 +143,12 @@ public:
   /// when that changed later.
   vtkMTimeType GetMTime() override;
 
-  // TemplateSprings (an enumerated property, above):
-  // Springs of a template mesh that has no lines: its EDGES, plus across
-  // every shared edge the far corners (EDGES_AND_DIAGONALS, default), or
-  // ALL_PAIRS (rigid).
+  ///@{
+  /// Springs of a template mesh that has no lines: its Edges (the element
+  /// folds freely), plus across every shared edge the far corners (Edges +
+  /// Diagonals, default), or All Pairs of particles (rigid).
+  vtkBPEnumMacro(TemplateSprings, bp::MeshSprings);
+  ///@}
 
   ///@{
   /// Number of elements. At least 1; elements times particles at most 2^26.
@@ -165,28 +173,29 @@ public:
   ///@}
 
   ///@{
-  /// Where releases land in the emitter box: RANDOM_RELEASES (default),
-  /// uniform draws (weighted by the Release Weights array, when one is
-  /// chosen: SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
-  /// name)); LATTICE_RELEASES, element e at point e of a regular lattice
-  /// filling the box (flat on a 2D field), release after release, with one
-  /// lifetime per generation. LatticeSpacing (world units) sets the lattice;
-  /// 0 (default) takes it from NumberOfElements, which is then the target
-  /// (the lattice's size is the element count). Clamped to [RANDOM_RELEASES,
-  /// LATTICE_RELEASES]; a value outside warns.
-  virtual void SetLatticeSpacing(double value);
+  /// Where releases land in the emitter box: Random (default), uniform draws
+  /// (weighted by the Release Weights array, when one is chosen:
+  /// SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+  /// name)); Lattice, element e at point e of a regular lattice filling the
+  /// box (flat on a 2D field), release after release, with one lifetime per
+  /// generation. Not with Linking, whose super sets have their own lattice.
+  /// LatticeSpacing (world units) sets the lattice; 0 (default) takes it from
+  /// NumberOfElements, which is then the target (the lattice's size is the
+  /// element count). LatticeSpacing is clamped to [0, VTK_DOUBLE_MAX]; a
+  /// value outside warns.
+  vtkBPEnumMacro(ReleasePattern, bp::ReleasePattern);
+  vtkBPClampedSetMacro(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(LatticeSpacing, double);
   ///@}
 
   ///@{
-  /// How each element is turned when it is placed: ALONG_FLOW (default), its
+  /// How each element is turned when it is placed: Along Flow (default), its
   /// long (x) axis turned onto the flow at its release centre by the
   /// shortest turn from ElementRotation, so that strips read as short stream
-  /// ribbons from the first frame; RANDOM_ORIENTATION, a uniform random
-  /// rotation; FIXED_ORIENTATION, every element turned by ElementRotation
-  /// (degrees about X, then Y, then Z). On a flat field the turns are about
-  /// its flat axis only. Clamped to [FIXED_ORIENTATION, ALONG_FLOW]; a value
-  /// outside warns.
+  /// ribbons from the first frame; Random, a uniform random rotation; Fixed,
+  /// every element turned by ElementRotation (degrees about X, then Y, then
+  /// Z). On a flat field the turns are about its flat axis only.
+  vtkBPEnumMacro(ReleaseOrientation, bp::Orientation);
   vtkSetVector3Macro(ElementRotation, double);
   vtkGetVector3Macro(ElementRotation, double);
   ///@}
@@ -200,71 +209,84 @@ public:
   ///@}
 
   ///@{
-  /// Largest simulation step. In CELL_LENGTH units (default; StepSize 0.5) a
-  /// step moves the fastest particle of the field that many cells; in TIME
-  /// units it is the step in the data's time units. Must be positive.
+  /// Largest simulation step. In Cell Length units (StepSizeUnit's default;
+  /// StepSize 0.5) a step moves the fastest particle of the field that many
+  /// cells; in Time units it is the step in the data's time units. Must be
+  /// positive.
   vtkSetMacro(StepSize, double);
   vtkGetMacro(StepSize, double);
+  vtkBPEnumMacro(StepSizeUnit, bp::StepUnit);
   ///@}
 
-  // Integrator (an enumerated property, above):
-  // Advection integrator: EULER (thesis eq. 2.2, default), RUNGE_KUTTA_2, RUNGE_KUTTA_4.
+  ///@{
+  /// Advection integrator: Euler (thesis eq. 2.2, default), Runge-Kutta 2
+  /// (midpoint) or Runge-Kutta 4 (classic).
+  vtkBPEnumMacro(Integrator, bp::Integrator);
+  ///@}
 
   ///@{
-  /// Shape restoration: AVERAGED_JACOBI (thesis §3.5, default), JACOBI (sum of
-  /// corrections times RelaxationFactor), GAUSS_SEIDEL, or SHAPE_MATCHING (best
-  /// rigid fit, Müller et al. 2005, goals blended by ShapeMatchingStiffness);
-  /// RestorationIterations iterations per step (default 1).
+  /// Shape restoration: Averaged Jacobi (thesis §3.5, default), Jacobi (sum
+  /// of corrections times RelaxationFactor), Gauss-Seidel, or Shape Matching
+  /// (best rigid fit, Müller et al. 2005, goals blended by
+  /// ShapeMatchingStiffness); RestorationIterations iterations per step
+  /// (default 1).
+  vtkBPEnumMacro(Restoration, bp::Restoration);
   vtkSetMacro(RestorationIterations, int);
   vtkGetMacro(RestorationIterations, int);
   vtkSetMacro(RelaxationFactor, double);
   vtkGetMacro(RelaxationFactor, double);
   /// Clamped to [0.0, 1.0]; a value outside warns.
-  virtual void SetShapeMatchingStiffness(double value);
+  vtkBPClampedSetMacro(ShapeMatchingStiffness, double, 0.0, 1.0);
   vtkGetMacro(ShapeMatchingStiffness, double);
   ///@}
 
   ///@{
-  /// Shape matching's fit: RIGID (default) or LINEAR (Müller et al. 2005,
+  /// Shape matching's fit: Rigid (default) or Linear (Müller et al. 2005,
   /// §4.3: goals from beta * A + (1 - beta) * R, A the best affine fit, so
-  /// elements may also shear and stretch). LinearShapeMatchingBeta is beta.
-  /// Clamped to [0.0, 1.0]; a value outside warns.
-  virtual void SetLinearShapeMatchingBeta(double value);
+  /// elements may also shear and stretch). LinearShapeMatchingBeta is beta,
+  /// clamped to [0.0, 1.0]; a value outside warns.
+  vtkBPEnumMacro(ShapeMatchingMode, bp::ShapeFit);
+  vtkBPClampedSetMacro(LinearShapeMatchingBeta, double, 0.0, 1.0);
   vtkGetMacro(LinearShapeMatchingBeta, double);
   ///@}
 
   ///@{
-  /// Super sets (thesis §5.1): Linking NO_LINKING (default), CHAIN, RING,
-  /// SHEET, TUBE or TORUS joins particle i of each element to particle i of
-  /// its neighbours on a lattice (element order; W x H for the last three,
+  /// Super sets (thesis §5.1): Linking None (default), Chain, Ring, Sheet,
+  /// Tube or Torus joins particle i of each element to particle i of its
+  /// neighbours on a lattice (element order; W x H for the last three,
   /// W = LatticeWidth, 0 for near square) with springs of LinkStiffness, so
   /// all elements form one deformable structure. The structure is released
   /// from lattice sites filling the emitter box, with one orientation and one
   /// lifetime, and lives out its lifetime even where it leaves the field. The
   /// links are output as lines.
+  vtkBPEnumMacro(Linking, bp::Linking);
   /// Clamped to [0, VTK_INT_MAX]; a value outside warns.
-  virtual void SetLatticeWidth(int value);
+  vtkBPClampedSetMacro(LatticeWidth, int, 0, VTK_INT_MAX);
   vtkGetMacro(LatticeWidth, int);
   /// Clamped to [0.0, 1.0]; a value outside warns.
-  virtual void SetLinkStiffness(double value);
+  vtkBPClampedSetMacro(LinkStiffness, double, 0.0, 1.0);
   vtkGetMacro(LinkStiffness, double);
   ///@}
 
-  // Anchor (an enumerated property, above):
-  // NO_ANCHOR: elements move with the flow. ANCHOR_CENTRE: each element is
-  // moved back, after every step, so that its centre stays where it was
-  // released; it still turns and deforms with the local flow (a vorticity
-  // meter in place). Not with Linking (refused with a message).
+  ///@{
+  /// None (default): elements move with the flow. Centre: each element is
+  /// moved back, after every step, so that its centre stays where it was
+  /// released; it still turns and deforms with the local flow (a vorticity
+  /// meter in place). Not with Linking (refused with a message).
+  vtkBPEnumMacro(Anchor, bp::Anchor);
+  ///@}
 
   ///@{
-  /// Heavy particles (Core/Engine/Inertia.h). NO_INERTIA: massless tracers.
-  /// MAXEY_RILEY: each particle follows the reduced Maxey-Riley equation,
-  /// dv/dt = (u - v) / ResponseTime + beta Du/Dt + (1 - beta) Gravity with
-  /// beta = 3 / (1 + 2 DensityRatio), starting at the flow's velocity. The
-  /// response time is in the data's time units (0 is massless), Gravity in
-  /// its units of length per time squared. Not with Anchor; CPU engine only
-  /// (the GPU display falls back to the CPU result). A negative or NaN
-  /// ResponseTime, a DensityRatio not above 0 or a NaN Gravity is refused.
+  /// Heavy particles (Core/Engine/Inertia.h). None (default): massless
+  /// tracers. Maxey-Riley: each particle follows the reduced Maxey-Riley
+  /// equation, dv/dt = (u - v) / ResponseTime + beta Du/Dt + (1 - beta)
+  /// Gravity with beta = 3 / (1 + 2 DensityRatio), starting at the flow's
+  /// velocity. The response time is in the data's time units (0 is
+  /// massless), Gravity in its units of length per time squared. Not with
+  /// Anchor; both engines, CPU and GPU, step heavy particles. A negative or
+  /// NaN ResponseTime, a DensityRatio not above 0 or a NaN Gravity is
+  /// refused.
+  vtkBPEnumMacro(Inertia, bp::Inertia);
   vtkSetMacro(ResponseTime, double);
   vtkGetMacro(ResponseTime, double);
   vtkSetMacro(DensityRatio, double);
@@ -273,9 +295,12 @@ public:
   vtkGetVector3Macro(Gravity, double);
   ///@}
 
-  // ResetWhen (an enumerated property, above):
-  // When an element is put back into the emitter besides running out of
-  // lifetime: its centre leaves the field (thesis) or any particle does.
+  ///@{
+  /// When an element is put back into the emitter besides running out of
+  /// lifetime: Center Leaves (default, the thesis) the field, or Any Particle
+  /// Leaves it, which keeps particles from sampling outside the data.
+  vtkBPEnumMacro(ResetWhen, bp::ResetWhen);
+  ///@}
 
   ///@{
   /// Releases avoid stagnant flow: an element whose centre moves slower than
@@ -338,16 +363,20 @@ public:
   vtkGetMacro(FramesPerInputStep, int);
   ///@}
 
-  // ColoringAxis (an enumerated property, above):
-  // The axis (0, 1, 2) for the Layer colouring (an element's initial centre
-  // along it) and the Radius colouring (distance of that centre from the axis
-  // line through the field's centre). Default 2 (Z).
+  ///@{
+  /// The axis (0 X, 1 Y, 2 Z; default 2) for the Layer array (an element's
+  /// initial centre along it) and the Radius array (distance of that centre
+  /// from the axis line through the field's centre). Clamped to [0, 2]; a
+  /// value outside warns.
+  vtkBPClampedSetMacro(ColoringAxis, int, 0, 2);
+  vtkGetMacro(ColoringAxis, int);
+  ///@}
 
   ///@{
   /**
    * Which point arrays the CPU output carries, by name (the rows of the table
-   * in Core/Output/OutputArrays.cpp, whose flags say which are on by default: all
-   * but the pose arrays and the deformation arrays), as a
+   * in Core/Output/OutputArrays.cpp; which are on by default is in the table
+   * of docs/user-guide.md, section "Output"), as a
    * vtkDataArraySelection, the way VTK's readers select theirs. A name the
    * table lacks is refused with a warning. An array left out is not computed,
    * which is what makes a frame of Play cheaper: the field samples behind
@@ -374,15 +403,17 @@ public:
   vtkBooleanMacro(ComputeVorticity, vtkTypeBool);
   ///@}
 
-  // Engine (an enumerated property, above):
-  // Which engine steps the trace shown by a **Bound Particles** display:
-  // CPU, GPU, or AUTOMATIC (default): the GPU on a hardware renderer, the
-  // CPU on a software one (llvmpipe, softpipe, swrast: there the GPU engine
-  // is slower), said once in Output Messages; the CPU until the display
-  // first drew. With the GPU, that display runs the GPU engine in its render
-  // window and this filter only records the work (see GPU_WORK_QUEUE());
-  // every other consumer (Surface, writers, other filters) still gets the
-  // CPU result, so nothing downstream ever sees a stale trace.
+  ///@{
+  /// Which engine steps the trace shown by a **Bound Particles** display:
+  /// CPU, GPU, or Automatic (default): the GPU on a hardware renderer, the
+  /// CPU on a software one (llvmpipe, softpipe, swrast: there the GPU engine
+  /// is slower), said once in Output Messages; the CPU until the display
+  /// first drew. With the GPU, that display runs the GPU engine in its render
+  /// window and this filter only records the work (see GPU_WORK_QUEUE());
+  /// every other consumer (Surface, writers, other filters) still gets the
+  /// CPU result, so nothing downstream ever sees a stale trace.
+  vtkBPEnumMacro(Engine, bp::EngineChoice);
+  ///@}
 
   /**
    * Request key. A renderer that runs the GPU engine sets it on its input
@@ -456,14 +487,8 @@ protected:
   /// Ends the update (quietly when aborted, with the error when failed), or
   /// this pass asking upstream for another time step.
   int EndUpdatePass(const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output);
-  /// The properties as the VTK-free core takes them, but for the
-  /// enumerated ones, which Config() adds (ConfigureEnumerations).
+  /// The properties as the VTK-free core takes them.
   bp::TraceSettings Settings() const;
-  /// The enumerated properties' part of Config(): each with a Core enum is
-  /// cast to it (generated, with a check that the values agree).
-  void ConfigureEnumerations(bpvtk::TracerConfig& c) const;
-  /// What PrintSelf says of the enumerated properties: each value's text.
-  void PrintEnumerations(ostream& os, vtkIndent indent) const;
   /// The properties as the internals read them (they read nothing else).
   bpvtk::TracerConfig Config();
   /// What this pass brought on input 0: the data, and the Vectors array
@@ -507,7 +532,21 @@ protected:
     vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes);
 #endif
 
-@BOUNDPARTICLES_ENUMERATED_MEMBERS@  int ResampleDimensions[3] = { 0, 0, 0 };
+  bp::BuiltinShape ElementShape = bp::BuiltinShape::Strip8;
+  bp::MeshSprings TemplateSprings = bp::MeshSprings::EdgesAndDiagonals;
+  bp::Orientation ReleaseOrientation = bp::Orientation::AlongFlow;
+  bp::ReleasePattern ReleasePattern = bp::ReleasePattern::Random;
+  bp::EngineChoice Engine = bp::EngineChoice::Automatic;
+  bp::StepUnit StepSizeUnit = bp::StepUnit::CellLength;
+  bp::Integrator Integrator = bp::Integrator::Euler;
+  bp::Restoration Restoration = bp::Restoration::AveragedJacobi;
+  bp::ShapeFit ShapeMatchingMode = bp::ShapeFit::Rigid;
+  bp::Anchor Anchor = bp::Anchor::None;
+  bp::Inertia Inertia = bp::Inertia::None;
+  bp::Linking Linking = bp::Linking::None;
+  bp::ResetWhen ResetWhen = bp::ResetWhen::CenterLeaves;
+  int ColoringAxis = 2;
+  int ResampleDimensions[3] = { 0, 0, 0 };
   vtkIdType NumberOfElements = 1000;
   double ElementSize = 0.0;
   double EmitterCenter[3] = { 0.0, 0.0, 0.0 };
