@@ -52,6 +52,7 @@ BP_CLAMPED_SETTER(ShapeMatchingStiffness, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(LinearShapeMatchingBeta, double, 0.0, 1.0)
 BP_CLAMPED_SETTER(LatticeWidth, int, 0, VTK_INT_MAX)
 BP_CLAMPED_SETTER(LinkStiffness, double, 0.0, 1.0)
+BP_CLAMPED_SETTER(CheckpointMemory, double, 0.0, 1.0e7)
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkBoundParticleTracerInternals(this))
@@ -169,6 +170,7 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   this->ConfigureEnumerations(c);
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
   c.coloringAxis = this->ColoringAxis;
+  c.checkpointMemory = this->CheckpointMemory;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
@@ -535,6 +537,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
      << "\n";
   os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "CheckpointMemory: " << this->CheckpointMemory << " MiB\n";
   os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio
