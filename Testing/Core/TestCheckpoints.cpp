@@ -37,6 +37,7 @@ TEST(Checkpoints, AsManyAsTheBudgetHoldsSpreadEvenlyOverTheTrace)
   const bp::CheckpointSpacing ten = bp::checkpointSpacing(10.5e6, 1e6, 1000);
   ASSERT_TRUE(ten.on());
   EXPECT_EQ(ten.most, 10);
+  EXPECT_LE(ten.most * 1e6, 10.5e6); // within the budget
   EXPECT_LE((1000 - 1) / ten.every, 10);
   EXPECT_GE(ten.every * (ten.most + 1), 1000); // spread over the whole trace
   EXPECT_FALSE(ten.due(0));                   // the start is a replay's anyway
