@@ -69,7 +69,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   const Pass configured = this->configureStepper(config, inputVector, field, resolved, seeds);
   if (configured.kind == Pass::Done)
   {
-    this->startTrace();
+    this->startTrace(config);
   }
   return configured;
 }
@@ -332,16 +332,38 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
   }
 }
 
-void vtkBoundParticleTracerInternals::startTrace()
+void vtkBoundParticleTracerInternals::startTrace(const Config& config)
 {
   this->Storage.reset(); // the element count or shape may have changed
   this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,
     this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
-  bp::TraceCursor& cursor = this->stepper().cursor;
+  bp::Stepper& stepper = this->stepper();
+  stepper.dropCheckpoints();
+  this->Spacing = this->checkpointSpacing(config);
+  bp::TraceCursor& cursor = stepper.cursor;
   cursor.committed = this->Plan.startTime();
+  cursor.steps = 0;
   cursor.valid = true;
   cursor.configuration = this->Configuration;
   cursor.producer = this->ProducerId;
   cursor.showsPartialStep = false;
   this->ReplayPending = false;
+}
+
+bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const Config& config)
+{
+  bp::Stepper& stepper = this->stepper();
+  const bp::Engine* particles = stepper.particles();
+  if (!stepper.keepsCheckpoints() || !particles || this->Plan.streaming())
+  {
+    return bp::CheckpointSpacing();
+  }
+  // The whole system's state, from the words an element is made of
+  // (Engine::recordWords, the same on every process), so that every process
+  // keeps its checkpoints at the same steps.
+  const double stateBytes = 4.0 * double(particles->recordWords()) *
+    double(std::max<long long>(this->Parameters.numberOfElements, 1));
+  const double budget =
+    std::min(config.checkpointMemory * 1048576.0, 0.5 * bp::allocatableBytes());
+  return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->ResolvedDt));
 }

@@ -173,6 +173,7 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   c.templateSprings = this->TemplateSprings;
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
   c.coloringAxis = this->ColoringAxis;
+  c.checkpointMemory = this->CheckpointMemory;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
@@ -552,6 +553,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
      << "\n";
   os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "CheckpointMemory: " << this->CheckpointMemory << " MiB\n";
   os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio

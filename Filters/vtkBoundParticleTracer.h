@@ -219,6 +219,18 @@ public:
   ///@}
 
   ///@{
+  /// Memory (MiB) the trace's checkpoints may take: copies of the engine's
+  /// whole state kept on step boundaries, as many as fit, spread evenly over
+  /// the trace, so that going back in time resumes from the latest one at or
+  /// before the time asked for instead of replaying from the start (with the
+  /// same result, bit for bit). 0 keeps none. At most half of what the
+  /// process can allocate is used. CPU engine; the GPU engine replays from
+  /// the start. Default 256; clamped to [0, 1e7], a value outside said.
+  vtkBPClampedSetMacro(CheckpointMemory, double, 0.0, 1.0e7);
+  vtkGetMacro(CheckpointMemory, double);
+  ///@}
+
+  ///@{
   /// Advection integrator: Euler (thesis eq. 2.2, default), Runge-Kutta 2
   /// (midpoint) or Runge-Kutta 4 (classic).
   vtkBPEnumMacro(Integrator, bp::Integrator);
@@ -555,6 +567,7 @@ protected:
   double ElementRotation[3] = { 0.0, 0.0, 0.0 };
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;
+  double CheckpointMemory = 256.0;
   int RestorationIterations = 1;
   double RelaxationFactor = 0.2;
   double ShapeMatchingStiffness = 1.0;

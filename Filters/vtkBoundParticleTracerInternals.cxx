@@ -136,8 +136,9 @@ void vtkBoundParticleTracerInternals::decide(
     ? this->Plan.outputTimes().back()
     : this->Plan.targetOf(
         outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
-  this->Decision =
-    this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
+  const bp::Stepper& stepper = this->stepper();
+  this->Decision = this->Plan.decide(target, stepper.cursor, this->ProducerId,
+    this->Configuration, stepper.keepsCheckpoints() ? &stepper.checkpoints() : nullptr);
   if (this->Plan.streaming())
   {
     this->decideInSitu(target);
@@ -192,16 +193,22 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   this->Migrated = 0;
   this->LastUpdateReplayed = replay;
   this->ReadThisUpdate = false;
-  this->IntervalAtStart = replay || !this->Plan.unsteady()
-    ? -1
-    : this->Plan.intervalAt(stepper.cursor.committed, false).front();
-  if (!replay && stepper.cursor.showsPartialStep)
+  if (this->Decision.resume >= 0)
+  {
+    // Back to the latest checkpoint at or before the target: the same state
+    // a replay from the start reaches there, bit for bit.
+    stepper.resumeCheckpoint(this->Decision.resume);
+  }
+  else if (!replay && stepper.cursor.showsPartialStep)
   {
     // Take back the short step the last update showed: the trace stays on
     // the step boundaries, so a replay and a continued run agree bit for bit.
     stepper.restore();
   }
   stepper.cursor.showsPartialStep = false;
+  this->IntervalAtStart = replay || !this->Plan.unsteady()
+    ? -1
+    : this->Plan.intervalAt(stepper.cursor.committed, false).front();
   // An abort ends the update it was asked in, not every later one: VTK 9.2
   // to 9.5 leave the request set (ParaView 6.1 clears it itself). Cleared
   // without Modified(), which would make this update's output look stale.
@@ -283,7 +290,13 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
       return Pass::fail(fieldError + ".");
     }
     committed = bp::advance(
-      *this->Schedule, committed, limit, [&](double t, double h) { stepper.step(t, h); },
+      *this->Schedule, committed, limit,
+      [&](double t, double h)
+      {
+        this->keepCheckpointIfDue(stepper, t);
+        stepper.step(t, h);
+        ++stepper.cursor.steps;
+      },
       keepGoing);
     if (aborted)
     {
@@ -305,6 +318,15 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
       return Pass::fail("Time stepping made no progress at t = " + std::to_string(before) +
         "; please report this with the input's time steps.");
     }
+  }
+}
+
+void vtkBoundParticleTracerInternals::keepCheckpointIfDue(bp::Stepper& stepper, double t)
+{
+  const long long steps = stepper.cursor.steps;
+  if (this->Spacing.due(steps) && !stepper.checkpoints().has(steps))
+  {
+    stepper.keepCheckpoint(steps, t);
   }
 }
 

@@ -213,6 +213,8 @@ public:
   /// Resolves the settings from the start's field, then configures the stepper.
   Pass replay(const Config& config, vtkInformationVector** inputVector);
   Pass stepToTarget();
+  /// Keeps a checkpoint of the state on the boundary t when one is due there.
+  void keepCheckpointIfDue(bp::Stepper& stepper, double t);
   Pass readAhead();
   /// Steps the short last step to the target (taken back at the next
   /// update; collective in parallel, as every step), then builds the output.
@@ -250,6 +252,7 @@ private:
   bpvtk::PieceLayout Layout;
   bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
   std::unique_ptr<bp::StepSchedule> Schedule;
+  bp::CheckpointSpacing Spacing; ///< every how many steps the trace keeps a checkpoint
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
@@ -371,8 +374,13 @@ private:
   /// The element template: the built-in shape or the template input.
   std::string elementTemplate(
     const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
-  /// Points the stepper at the start of a new trace.
-  void startTrace();
+  /// Points the stepper at the start of a new trace, its checkpoints
+  /// spaced within the config's budget.
+  void startTrace(const Config& config);
+  /// Every how many steps a new trace keeps a checkpoint (Checkpoints.h):
+  /// Checkpoint Memory, at most half of what this process can allocate, over
+  /// the whole system's state; the same on every process.
+  bp::CheckpointSpacing checkpointSpacing(const Config& config);
 
   // The seeds (TracerSeeds.cxx).
   /// The Seed Source's points (input 2), world coordinates, 3 doubles each:

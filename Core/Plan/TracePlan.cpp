@@ -134,14 +134,40 @@ std::vector<int> TracePlan::needed(double from, double target) const
 }
 
 TracePlan::Update TracePlan::decide(double target, const TraceCursor& cursor,
-  std::uint64_t producer, std::uint64_t configuration) const
+  std::uint64_t producer, std::uint64_t configuration, const CheckpointIndex* checkpoints) const
 {
   Update u;
   u.target = target;
-  u.replay = cursor.producer != producer || cursor.configuration != configuration ||
-    !cursor.valid || target < cursor.committed - this->epsilon();
+  const double eps = this->epsilon();
+  const bool sameTrace =
+    cursor.valid && cursor.producer == producer && cursor.configuration == configuration;
+  u.replay = !sameTrace || target < cursor.committed - eps;
   u.from = u.replay ? this->startTime() : cursor.committed;
+  if (sameTrace && checkpoints)
+  {
+    const CheckpointIndex::Entry c = checkpoints->latestAtOrBefore(target, eps);
+    if (c.steps >= 0 && c.time > u.from + eps)
+    {
+      u.replay = false;
+      u.resume = c.steps;
+      u.from = c.time;
+    }
+  }
   return u;
+}
+
+long long TracePlan::stepsToEnd(double dt) const
+{
+  if (this->Streaming || this->OutputTimes.empty() || !(dt > 0.0))
+  {
+    return 0;
+  }
+  const double steps = (this->OutputTimes.back() - this->startTime()) / dt;
+  if (!(steps < double(MaxStepsPerUpdate)))
+  {
+    return MaxStepsPerUpdate;
+  }
+  return (long long)(std::ceil(steps)) + (long long)(this->InputTimes.size());
 }
 
 int TracePlan::firstRequest(const Update& update, const FieldCache& cache, int upstream) const

@@ -4,8 +4,9 @@
  * @brief Decides, once per request, how a trace reaches the requested time.
  *
  * Pipeline time drives the simulation. A request for a time at or after where
- * the stepper stands continues from there; an earlier time, or a stepper made
- * for another configuration, replays from the start. An unsteady input is
+ * the stepper stands continues from there; an earlier time resumes from the
+ * latest checkpoint at or before it (Checkpoints.h), or else replays from the
+ * start, as a stepper made for another configuration does. An unsteady input is
  * read one time step per pipeline pass and sampled linearly between the two
  * steps that bracket each moment; the plan says which time steps the work
  * needs, which to keep (FieldCache holds at most three) and which to read
@@ -17,6 +18,7 @@
 #ifndef BoundParticles_TracePlan_h
 #define BoundParticles_TracePlan_h
 
+#include "Checkpoints.h"
 #include "FieldCache.h"
 #include "Stepper.h"
 
@@ -87,14 +89,28 @@ public:
   {
     double target = 0.0; ///< the time to show
     bool replay = true;  ///< start again from startTime()
-    /// Where stepping starts: startTime() for a replay, else the cursor's.
+    /// The checkpoint to resume from (its step count), -1 for none.
+    long long resume = -1;
+    /// Where stepping starts: startTime() for a replay, the checkpoint's time
+    /// when resuming, else the cursor's.
     double from = 0.0;
   };
 
-  /// Replay or continue: a stepper that holds no trace, one made by another
-  /// producer or configuration, or one past the target replays.
+  /**
+   * Replay, resume or continue: a stepper that holds no trace, or one made by
+   * another producer or configuration, replays. Otherwise work starts from
+   * the latest point at or before the target among the cursor and the
+   * stepper's `checkpoints` (made for the cursor's trace): resuming from a
+   * checkpoint when it is later than the cursor, or the cursor is past the
+   * target; replaying when neither will do.
+   */
   Update decide(double target, const TraceCursor& cursor, std::uint64_t producer,
-    std::uint64_t configuration) const;
+    std::uint64_t configuration, const CheckpointIndex* checkpoints = nullptr) const;
+
+  /// About how many steps of `dt` a trace takes from the start to the last
+  /// time offered (each data time step is a step boundary too); 0 in situ,
+  /// where the end is not known.
+  long long stepsToEnd(double dt) const;
 
   /**
    * The time step to ask upstream for in an update's first pass: the first

@@ -65,6 +65,33 @@ void CpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<fl
   this->Saved.setEmitter(min, max);
 }
 
+void CpuStepper::keepCheckpoint(long long steps, double time)
+{
+  // A copy as save() makes: the state, not the step's scratch; the emitter
+  // box is part of it (in situ, where it changes, keeps no checkpoints).
+  this->Copies[steps] = this->Current;
+  this->Checkpoints.add(steps, time);
+}
+
+void CpuStepper::resumeCheckpoint(long long steps)
+{
+  const auto copy = this->Copies.find(steps);
+  if (copy == this->Copies.end())
+  {
+    return; // the plan resumes only from a copy it was told of
+  }
+  this->Current = copy->second;
+  this->cursor.steps = steps;
+  this->cursor.committed = this->Checkpoints.timeOf(steps);
+  this->cursor.showsPartialStep = false;
+}
+
+void CpuStepper::dropCheckpoints()
+{
+  this->Copies.clear();
+  Stepper::dropCheckpoints();
+}
+
 const Engine* CpuStepper::particles()
 {
   return &this->Current;

@@ -4,8 +4,9 @@
  * @brief One interface for everything that steps a system of bound particles.
  *
  * The tracer drives a trace through these verbs only: configure the system,
- * set the field, place every element, step, and save / restore the state
- * around a short step shown between two step boundaries. Three kinds of
+ * set the field, place every element, step, save / restore the state
+ * around a short step shown between two step boundaries, and keep or resume
+ * checkpoints (Checkpoints.h) of the whole state on step boundaries. Three kinds of
  * stepper implement them:
  *  - CpuStepper: the CPU engine in this process;
  *  - DistributedStepper: a CpuStepper on a piece of a distributed run
@@ -18,6 +19,7 @@
 #ifndef BoundParticles_Stepper_h
 #define BoundParticles_Stepper_h
 
+#include "Checkpoints.h"
 #include "DomainMask.h"
 #include "ElementTemplate.h"
 #include "Engine.h"
@@ -27,6 +29,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -41,6 +44,7 @@ struct TraceCursor
 {
   bool valid = false;              ///< holds a trace at all
   double committed = 0.0;          ///< the last step boundary reached
+  long long steps = 0;             ///< steps from the start to `committed`
   std::uint64_t configuration = 0; ///< the tracer configuration it was made for
   std::uint64_t producer = 0;      ///< which tracer made it
   bool showsPartialStep = false;   ///< a short step past `committed` is shown (restore() first)
@@ -68,6 +72,23 @@ public:
   /// (bp::emitterInChangedField). Kept by save() and restore() alike.
   virtual void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) = 0;
 
+  /// @name Checkpoints (Checkpoints.h): copies of the whole state on step
+  /// boundaries, which going back resumes from instead of replaying.
+  ///@{
+  /// Whether this stepper keeps checkpoints at all.
+  virtual bool keepsCheckpoints() const { return false; }
+  /// Keeps a copy of the state as it stands: on the boundary `time`, `steps`
+  /// steps from the start.
+  virtual void keepCheckpoint(long long /*steps*/, double /*time*/) {}
+  /// Goes back to the copy kept after `steps` steps (checkpoints().has(steps));
+  /// the cursor stands there, with no short step shown.
+  virtual void resumeCheckpoint(long long /*steps*/) {}
+  /// Drops every copy (a replay from the start, or the trace's end).
+  virtual void dropCheckpoints() { this->Checkpoints.clear(); }
+  /// The copies held: their step counts and times.
+  const CheckpointIndex& checkpoints() const { return this->Checkpoints; }
+  ///@}
+
   /// The particles as data in this process; null where they live elsewhere
   /// (in a renderer's GPU textures). Their normals are not kept: they do
   /// not feed back into the simulation, and the output computes them from
@@ -83,6 +104,9 @@ public:
   virtual void offerUpcoming(const FieldSlice& /*slice*/) {}
 
   TraceCursor cursor;
+
+protected:
+  CheckpointIndex Checkpoints;
 };
 
 /// The CPU engine behind the stepper verbs.
@@ -98,6 +122,10 @@ public:
   void save() override;
   void restore() override;
   void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
+  bool keepsCheckpoints() const override { return true; }
+  void keepCheckpoint(long long steps, double time) override;
+  void resumeCheckpoint(long long steps) override;
+  void dropCheckpoints() override;
   const Engine* particles() override;
 
   Engine& engine() { return this->Current; }
@@ -113,6 +141,7 @@ private:
   RangeRunner Run;
   Engine Current;
   Engine Saved; ///< save()'s copy: the state, without the step's scratch (Engine.h)
+  std::map<long long, Engine> Copies; ///< the checkpoints, by step count
   std::shared_ptr<const VectorField> Field;
   ReleaseMask Release;
   ReleaseMaskSource ReleaseFrom;

@@ -248,15 +248,35 @@ TEST(BoundParticleTracer, ForwardContinuesAndEqualsAFreshRun)
   EXPECT_EQ(pieces, direct);
 }
 
-TEST(BoundParticleTracer, BackwardAndChangesReplay)
+TEST(BoundParticleTracer, BackwardResumesFromACheckpointAndChangesReplay)
 {
   auto source = flow(bp::AnalyticFlow::VerticalShear);
   auto tracer = tracerOn(source);
+  tracer->SetLifetimeRange(0.3, 0.9); // resets happen along the way
   at(tracer, 2.0);
+  // Back to 0.7: from the latest checkpoint at or before it, not the start;
+  // the same bits as a fresh run to 0.7, in fewer steps.
   const std::vector<float> back = pointsOf(at(tracer, 0.7));
-  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  EXPECT_FALSE(tracer->GetLastUpdateReplayed());
+  const vtkIdType resumedSteps = tracer->GetStepsInLastUpdate();
   auto fresh = tracerOn(source);
+  fresh->SetLifetimeRange(0.3, 0.9);
   EXPECT_EQ(back, pointsOf(at(fresh, 0.7)));
+  EXPECT_LT(resumedSteps, fresh->GetStepsInLastUpdate());
+  // Back and forth across the checkpoints: every time the fresh run's bits.
+  for (double t : { 1.9, 0.05, 1.33, 1.32, 0.71 })
+  {
+    const std::vector<float> resumed = pointsOf(at(tracer, t));
+    auto other = tracerOn(source);
+    other->SetLifetimeRange(0.3, 0.9);
+    EXPECT_EQ(resumed, pointsOf(at(other, t))) << "t = " << t;
+  }
+  // With no checkpoint memory, back is a replay from the start, as before.
+  tracer->SetCheckpointMemory(0.0);
+  at(tracer, 2.0);
+  EXPECT_EQ(back, pointsOf(at(tracer, 0.7)));
+  EXPECT_TRUE(tracer->GetLastUpdateReplayed());
+  EXPECT_EQ(tracer->GetStepsInLastUpdate(), fresh->GetStepsInLastUpdate());
 
   at(tracer, 0.9);
   EXPECT_FALSE(tracer->GetLastUpdateReplayed());
@@ -979,8 +999,13 @@ TEST(BoundParticleTracer, TimeStepsAreReadOnceAndAtMostThreeAreHeld)
   ASSERT_EQ(requested.size(), 11u);
   for (std::size_t k = 0; k < requested.size(); ++k)
     EXPECT_NEAR(requested[k], 0.5 * double(k), 1e-12);
-  // Back to the start and forward again: a replay reads what it needs,
-  // within the same bound.
+  // Back to the start and forward again: a replay (no checkpoints kept)
+  // reads what it needs, within the same bound.
+  tracer->SetCheckpointMemory(0.0);
+  for (int frame = 0; frame <= 40; ++frame)
+  {
+    at(tracer, 0.125 * frame);
+  }
   requested.clear();
   at(tracer, 0.3);
   EXPECT_TRUE(tracer->GetLastUpdateReplayed());

@@ -71,6 +71,13 @@ def placement_traces():
     line = Line(Point1=[-0.9, -0.8, -0.7], Point2=[0.9, 0.8, 0.7], Resolution=40)
     cases["seeded"] = (BoundParticleTracer(Input=hurricane, SeedSource=line, ElementShape="Cross",
                                            NumberOfElements=400, Seed=4), [0.5, 1.0])
+    # Back in time: every process resumes from the same checkpoint (spaced by
+    # the whole system's state), back to 0.45 after 1.0, then on to 0.8; the
+    # same trace run straight to 0.45 is what the step back must give.
+    for name, times in (("back", [1.0, 0.45, 0.8]), ("back_fresh", [0.45, 1.0])):
+        cases[name] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                           NumberOfElements=400, Seed=4,
+                                           LifetimeRange=[0.3, 0.6]), times)
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,

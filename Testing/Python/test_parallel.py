@@ -226,6 +226,17 @@ def compare(reference, result, name, ranks):
             bptest.check(moved > 0, "%s %s: no element changed ranks" % (name, trace_name))
 
 
+def check_step_back(result, name):
+    """Back to 0.45 after 1.0 (resumed from a checkpoint) is the trace run
+    straight to 0.45, bit for bit, on any number of processes."""
+    if result is None or "back_1_points" not in result.files:
+        bptest.check(False, "%s: no step back traced" % name)
+        return
+    same = all(numpy.array_equal(result["back_1" + s], result["back_fresh_0" + s])
+               for s in ("_points", "_element", "_particle", "_velocity"))
+    bptest.check(same, "%s: back to 0.45 after 1.0 differs from a trace straight to 0.45" % name)
+
+
 def compare_pictures(reference_dir, result_dir, name):
     expected = coverage(os.path.join(reference_dir, "remote.png"))
     bptest.check(expected > 0.01, "the built-in picture shows elements (%.3f)" % expected)
@@ -243,6 +254,7 @@ def compare_pictures(reference_dir, result_dir, name):
 
 reference_pictures = os.path.join(args.output, "builtin-pictures")
 reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
+check_step_back(reference, "builtin")
 
 if args.mode == "batch":
     for ranks in (1, 2, 4):
@@ -251,6 +263,7 @@ if args.mode == "batch":
         result = trace(name, mpiexec + ["-n", str(ranks), args.pvbatch],
                        ["--render", pictures] if ranks == 2 else [])
         compare(reference, result, name, ranks)
+        check_step_back(result, name)
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
