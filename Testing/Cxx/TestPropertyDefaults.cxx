@@ -577,6 +577,7 @@ const std::map<std::string, CoreField> CoreDefaults = {
   { "LifetimeRange", [](const auto& c) { return all(c.trace.lifetimeRange); } },
   { "Seed", [](const auto& c) { return one(c.trace.engine.seed); } },
   { "ColoringAxis", [](const auto& c) { return one(c.coloringAxis); } },
+  { "CheckpointMemory", [](const auto& c) { return one(c.checkpointMemory); } },
 };
 
 /// The tracer's properties Core does not hold as the panel does, and why.
