@@ -103,9 +103,8 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
   bpvtk::QueueReplay Replay; ///< replays the recorded calls on the GPU engine
   bp::GpuEngine& Engine = Replay.engine();
   std::shared_ptr<const bp::WorkQueue> Queue;
-  /// The display's writer of the queue's report, lent with the queue: the
-  /// mapper's only way to change the queue (take its calls, say where a run
-  /// stopped, that the state is lost) or the report.
+  /// The display's report writer, lent with the queue: the mapper's only way
+  /// to change the queue (take, stoppedAt, stateLost) or the report.
   bp::RendererReportWriter* Writer = nullptr;
   std::string LastError;
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
@@ -172,11 +171,10 @@ vtkOpenGLBoundParticleMapper::~vtkOpenGLBoundParticleMapper() = default;
 void vtkOpenGLBoundParticleMapper::SetWorkQueue(
   const std::shared_ptr<const bp::WorkQueue>& queue, bp::RendererReportWriter* writer)
 {
-  vtkInternals& I = *this->Internals;
-  if (I.Queue != queue || I.Writer != writer)
+  if (this->Internals->Queue != queue || this->Internals->Writer != writer)
   {
-    I.Queue = queue;
-    I.Writer = queue ? writer : nullptr;
+    this->Internals->Queue = queue;
+    this->Internals->Writer = queue ? writer : nullptr;
     this->Modified();
   }
 }

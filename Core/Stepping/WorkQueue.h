@@ -35,7 +35,6 @@
 #include "ElementTemplate.h"
 #include "Engine.h"
 #include "EngineCall.h"
-#include "RendererKind.h"
 #include "RendererReport.h"
 #include "Stepper.h"
 #include "VectorField.h"
