@@ -23,16 +23,17 @@ std::map<int, std::weak_ptr<bp::WorkQueue>>& registry()
 namespace bpvtk
 {
 
-std::shared_ptr<bp::WorkQueue> NewWorkQueue()
+bp::DisplayWorkQueue NewWorkQueue()
 {
   std::lock_guard<std::mutex> lock(registryMutex());
   static int nextId = 0;
   auto& queues = registry();
   for (auto it = queues.begin(); it != queues.end();)
     it = it->second.expired() ? queues.erase(it) : std::next(it);
-  auto queue = std::make_shared<bp::WorkQueue>(++nextId);
-  queues[queue->id()] = queue;
-  return queue;
+  std::shared_ptr<bp::WorkQueue> recorder;
+  bp::DisplayWorkQueue made = bp::newDisplayWorkQueue(++nextId, recorder);
+  queues[recorder->id()] = recorder;
+  return made;
 }
 
 std::shared_ptr<bp::WorkQueue> FindWorkQueue(int id)

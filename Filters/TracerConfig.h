@@ -11,11 +11,11 @@
 #ifndef BoundParticles_TracerConfig_h
 #define BoundParticles_TracerConfig_h
 
+#include "BoundParticlesChoices.h"
 #include "ElementTemplate.h"
 #include "OutputArrays.h"
 #include "TraceSettings.h"
 #include "TracerResample.h"
-#include "WorkQueue.h"
 
 #include <array>
 #include <cstddef>

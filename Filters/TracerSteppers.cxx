@@ -135,10 +135,13 @@ void TracerSteppers::select(bp::EngineChoice engine, int gpuQueue, const PieceLa
   }
   if (this->Queue)
   {
+    // Where the display's renderer stopped (an abort) or lost the state:
+    // this decision starts from there.
+    this->Queue->settleCursor();
     // The display says why Automatic traces on the CPU engine: it learns its
     // renderer when it first draws, maybe after this update.
     const bool gpu = bp::usesGpuEngine(engine, this->Queue->report().renderer);
-    this->Queue->automaticOnCpu = !gpu;
+    this->Queue->setAutomaticOnCpu(!gpu);
     if (!gpu)
     {
       this->Queue = nullptr;

@@ -14,6 +14,7 @@
 
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "EngineChoice.h"
 #include "Stepper.h"
 #include "WorkQueue.h"
 
@@ -74,6 +75,8 @@ public:
   /// property is `engine` (bp::usesGpuEngine() with the renderer of the
   /// display that asked): `gpuQueue` is the work queue a Bound Particles
   /// display asked for (vtkBoundParticleTracer::GPU_WORK_QUEUE; 0: none).
+  /// The queue's cursor first takes in what its display recorded since
+  /// (bp::WorkQueue::settleCursor: a run stopped short, a state lost).
   void select(bp::EngineChoice engine, int gpuQueue, const PieceLayout& pieces);
 
   bp::Stepper& active() { return *this->Active; }

@@ -427,7 +427,7 @@ void vtkBoundParticleTracerInternals::gatherExchange()
 void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPolyData* output)
 {
   bp::WorkQueue& queue = *this->Steppers.queue();
-  bp::DrawSettings& d = queue.draw;
+  bp::DrawSettings d = queue.draw();
   d.time = this->target();
   d.offset = this->Offset;
   const auto bounds = this->Grid.bounds();
@@ -439,6 +439,7 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
   d.coloringAxis = config.coloringAxis;
   d.radialCenter = bp::radialCenter(bounds, config.coloringAxis);
   ++d.serial;
+  queue.setDraw(d);
   // Two points spanning the field (for the camera and the axes grid).
   bpvtk::fillRangeOutput(output, this->RangeFacts, d.bounds);
   vtkNew<vtkIntArray> id;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuPath.h"
 
-#include "WorkQueue.h"
+#include "RendererKind.h"
 
 #include <epoxy/gl.h>
 

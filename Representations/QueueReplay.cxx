@@ -2,8 +2,8 @@
 // Runs a work queue's engine calls on the display's GPU engine (QueueReplay.h).
 #include "QueueReplay.h"
 
+#include "EngineCall.h"
 #include "ReplayProgress.h"
-#include "WorkQueue.h"
 
 namespace bpvtk
 {

@@ -2,6 +2,7 @@
 #include "vtkBoundParticleRepresentation.h"
 
 #include "BoundParticleWorkQueues.h"
+#include "EngineChoice.h"
 #include "OutputArrays.h"
 #include "TrailFade.h"
 #include "WorkQueue.h"
@@ -43,7 +44,11 @@
 
 struct vtkBoundParticleRepresentation::vtkInternals
 {
-  std::shared_ptr<bp::WorkQueue> Queue = bpvtk::NewWorkQueue();
+  /// The queue this display asks the tracer to record into, and its report's
+  /// one writer, which the GPU mapper borrows.
+  bp::DisplayWorkQueue Display = bpvtk::NewWorkQueue();
+  /// The queue, read-only: the tracer records into it, the writer drains it.
+  std::shared_ptr<const bp::WorkQueue> Queue = Display.queue;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkProperty> Property;
   vtkNew<vtkOpenGLBoundParticleMapper> GpuMapper;
@@ -74,7 +79,7 @@ struct vtkBoundParticleRepresentation::vtkInternals
   bp::RendererKind CpuAnswerRenderer = bp::RendererKind::Unknown;
   int TextureSizeLimit = 0;
   bool StreamTimeSteps = true;
-  /// The last answer was Automatic's CPU engine (WorkQueue::automaticOnCpu).
+  /// The last answer was Automatic's CPU engine (WorkQueue::automaticOnCpu()).
   bool AutomaticOnCpu = false;
   /// Why Automatic traces on the CPU engine was said (once per display).
   bool SaidAutomaticOnCpu = false;
@@ -82,13 +87,13 @@ struct vtkBoundParticleRepresentation::vtkInternals
 
 namespace
 {
-/// Tells the tracer (through the queue) what renderer the view draws with,
-/// for Engine = Automatic: read once from the window's capabilities after it
-/// first drew (before that the window may have no context).
-void recordRenderer(vtkPVRenderView* view, bp::WorkQueue& queue)
+/// Tells the tracer (through the queue's report) what renderer the view draws
+/// with, for Engine = Automatic: read once from the window's capabilities
+/// after it first drew (before that the window may have no context).
+void recordRenderer(vtkPVRenderView* view, bp::RendererReportWriter& writer)
 {
   vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
-  bp::RendererReport& report = queue.reportFromDisplay();
+  bp::RendererReport& report = writer.report();
   if (report.renderer != bp::RendererKind::Unknown || !window || window->GetNeverRendered())
   {
     return;
@@ -131,7 +136,7 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   vtkInternals& I = *this->Internals;
   I.Actor->SetProperty(I.Property);
   I.Actor->SetMapper(I.CpuMapper);
-  I.GpuMapper->SetWorkQueue(I.Queue);
+  I.GpuMapper->SetWorkQueue(I.Queue, &I.Display.writer);
   // ParaView listens to this display's progress and sets its abort flag: the
   // mapper reports a long GPU replay here and stops it on request.
   I.GpuMapper->SetContainerAlgorithm(this);
@@ -150,7 +155,10 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
 vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation()
 {
   this->ReleaseGpuRequest();
-  this->Internals->GpuMapper->SetContainerAlgorithm(nullptr); // a renderer may hold it still
+  // A renderer may hold the mapper still: it keeps neither this display nor
+  // the writer this display lent it.
+  this->Internals->GpuMapper->SetContainerAlgorithm(nullptr);
+  this->Internals->GpuMapper->SetWorkQueue(nullptr, nullptr);
 }
 
 namespace
@@ -282,8 +290,8 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   // Known before the tracer decides wherever the view drew before (the GUI's
   // view draws its background first): Automatic then picks its engine, and
   // says so, at the display's first frame.
-  recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
-  bp::RendererReport& report = I.Queue->reportFromDisplay();
+  recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
+  bp::RendererReport& report = I.Display.writer.report();
   if (!report.failure.empty())
   {
     if (!I.GpuFailed)
@@ -364,12 +372,12 @@ int vtkBoundParticleRepresentation::RequestData(
       }
       if (asked && !failedGpuAnswer)
       {
-        I.AutomaticOnCpu = !I.Gpu && I.Queue->automaticOnCpu;
+        I.AutomaticOnCpu = !I.Gpu && I.Queue->automaticOnCpu();
         sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
       }
       if (I.Gpu)
       {
-        std::copy(I.Queue->draw.bounds.begin(), I.Queue->draw.bounds.end(), I.Bounds);
+        std::copy(I.Queue->draw().bounds.begin(), I.Queue->draw().bounds.end(), I.Bounds);
       }
       else if (input->GetNumberOfPoints() > 0)
       {
@@ -430,7 +438,7 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
     this->ReleaseGpuRequest(); // the view's update pass is over
-    recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), *I.Queue);
+    recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
     sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)

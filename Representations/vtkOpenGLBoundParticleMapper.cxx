@@ -94,7 +94,7 @@ void sayInOutputWindow(const std::string& text, bool warning)
 constexpr double StagingSecondsPerFrame = 0.004;
 
 /// A run of at least this many steps measures the engine's rate
-/// (WorkQueue::particleStepsPerSecond).
+/// (RendererReport::particleStepsPerSecond).
 constexpr long MeasuredRunSteps = 32;
 } // namespace
 
@@ -102,7 +102,10 @@ struct vtkOpenGLBoundParticleMapper::vtkInternals
 {
   bpvtk::QueueReplay Replay; ///< replays the recorded calls on the GPU engine
   bp::GpuEngine& Engine = Replay.engine();
-  std::shared_ptr<bp::WorkQueue> Queue;
+  std::shared_ptr<const bp::WorkQueue> Queue;
+  /// The display's report writer, lent with the queue: the mapper's only way
+  /// to change the queue (take, stoppedAt, stateLost) or the report.
+  bp::RendererReportWriter* Writer = nullptr;
   std::string LastError;
   std::uint64_t SamplesSerial = 0; // the draw serial the samples texture is for
   bp::GpuEngine::DrawInputs Inputs;
@@ -165,11 +168,13 @@ vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
 
 vtkOpenGLBoundParticleMapper::~vtkOpenGLBoundParticleMapper() = default;
 
-void vtkOpenGLBoundParticleMapper::SetWorkQueue(const std::shared_ptr<bp::WorkQueue>& queue)
+void vtkOpenGLBoundParticleMapper::SetWorkQueue(
+  const std::shared_ptr<const bp::WorkQueue>& queue, bp::RendererReportWriter* writer)
 {
-  if (this->Internals->Queue != queue)
+  if (this->Internals->Queue != queue || this->Internals->Writer != writer)
   {
     this->Internals->Queue = queue;
+    this->Internals->Writer = queue ? writer : nullptr;
     this->Modified();
   }
 }
@@ -209,13 +214,13 @@ void vtkOpenGLBoundParticleMapper::SetTextureSizeLimit(int texels)
 double* vtkOpenGLBoundParticleMapper::GetBounds()
 {
   const auto& queue = this->Internals->Queue;
-  if (!queue || queue->draw.serial == 0)
+  if (!queue || queue->draw().serial == 0)
   {
     vtkMath::UninitializeBounds(this->Bounds);
   }
   else
   {
-    std::copy(queue->draw.bounds.begin(), queue->draw.bounds.end(), this->Bounds);
+    std::copy(queue->draw().bounds.begin(), queue->draw().bounds.end(), this->Bounds);
   }
   return this->Bounds;
 }
@@ -335,10 +340,10 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   if (progress.stopped())
   {
     // What has been stepped stays and is drawn; the tracer's next decision
-    // starts from where the engine stands.
-    I.Queue->stoppedAt(progress.stoppedAt());
+    // starts from where the engine stands (WorkQueue::settleCursor).
+    I.Writer->stoppedAt(progress.stoppedAt());
     vtkWarningMacro("Aborted: the GPU engine stopped at t = "
-      << progress.stoppedAt() << " on its way to t = " << I.Queue->draw.time
+      << progress.stoppedAt() << " on its way to t = " << I.Queue->draw().time
       << ", and the display shows the elements there. The next update (another time, or "
          "Play) goes on from there.");
   }
@@ -372,7 +377,7 @@ void vtkOpenGLBoundParticleMapper::MeasureRate(
   const double seconds = std::chrono::duration<double>(took).count();
   if (seconds > 0.0)
   {
-    I.Queue->reportFromDisplay().particleStepsPerSecond = double(steps) * I.Particles / seconds;
+    I.Writer->report().particleStepsPerSecond = double(steps) * I.Particles / seconds;
   }
 }
 
@@ -401,13 +406,13 @@ void vtkOpenGLBoundParticleMapper::Fail(const std::string& message)
   I.Replay.fail();
   I.LastError = message;
   vtkErrorMacro(<< message);
-  I.Queue->reportFromDisplay().failure = message;
+  I.Writer->report().failure = message;
 }
 
 void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& I = *this->Internals;
-  if (!I.Queue || I.Replay.replaying())
+  if (!I.Queue || !I.Writer || I.Replay.replaying())
   {
     return;
   }
@@ -419,10 +424,10 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
   window->MakeCurrent();
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  I.Queue->reportFromDisplay().maxTextureSize =
+  I.Writer->report().maxTextureSize =
     I.SizeLimit > 0 ? std::min<int>(maxSize, I.SizeLimit) : maxSize;
 
-  std::vector<bp::EngineCall> calls = I.Queue->take();
+  std::vector<bp::EngineCall> calls = I.Writer->take();
   vtkAlgorithm* owner = this->GetContainerAlgorithm();
   const bool owed = this->ProgressOwed && owner;
   this->ProgressOwed = false;
@@ -453,23 +458,23 @@ void vtkOpenGLBoundParticleMapper::Render(vtkRenderer* ren, vtkActor* act)
 void vtkOpenGLBoundParticleMapper::PrepareEngineTextures()
 {
   vtkInternals& I = *this->Internals;
-  if (I.Queue->report().streamTimeSteps && I.Queue->upcoming.velocity)
+  if (I.Queue->report().streamTimeSteps && I.Queue->upcoming().velocity)
   {
     // Upload the next time step a slab at a time, within a small time
     // budget per frame, so the frame that crosses into it does not stall.
     bpvtk::GLStateGuard guard;
-    I.Engine.stageSliceWithin(I.Queue->upcoming, StagingSecondsPerFrame);
+    I.Engine.stageSliceWithin(I.Queue->upcoming(), StagingSecondsPerFrame);
   }
   // Orientation and spin need nothing here: the display's engine fits the
   // poses every step (GpuStepper turns Parameters::trackPoses on).
   if (I.ScalarMode == bp::ColorSource::Velocity || I.ScalarMode == bp::ColorSource::Vorticity ||
     I.ScalarMode == bp::ColorSource::ParticleVelocity)
   {
-    if (I.SamplesSerial != I.Queue->draw.serial)
+    if (I.SamplesSerial != I.Queue->draw().serial)
     {
       bpvtk::GLStateGuard guard;
-      I.Engine.updateFieldSamples(I.Queue->draw.time);
-      I.SamplesSerial = I.Queue->draw.serial;
+      I.Engine.updateFieldSamples(I.Queue->draw().time);
+      I.SamplesSerial = I.Queue->draw().serial;
     }
   }
 }
@@ -502,7 +507,7 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   program->SetUniformf("bpFade", 1.0f);
   program->SetUniform2i("bpElementGrid", I.Inputs.elementGrid);
   program->SetUniformi("bpBlocksPerRow", I.Inputs.blocksPerRow);
-  const auto& d = I.Queue->draw;
+  const auto& d = I.Queue->draw();
   const bp::ColorSource mode = this->ScalarVisibility ? I.ScalarMode : bp::ColorSource::Solid;
   program->SetUniformi("bpScalarMode", int(mode));
   program->SetUniformi("bpComponent", I.Component);
@@ -533,7 +538,7 @@ void vtkOpenGLBoundParticleMapper::SetCameraShaderParameters(
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
   vtkInternals& I = *this->Internals;
   bpvtk::setGridLocalCamera(
-    cellBO.Program, ren, act, I.Queue->draw.offset, I.ModelToWorld, I.ModelToView);
+    cellBO.Program, ren, act, I.Queue->draw().offset, I.ModelToWorld, I.ModelToView);
 }
 
 void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
@@ -545,7 +550,7 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   this->UploadTables(window);
   // Where the colour map maps opacity (colouring by Age, say) it fades the
   // trails; otherwise the display's own fade does.
-  bpvtk::chooseTrailPoses(I.Inputs.trail, I.Queue->draw.time, I.TrailSpan + I.TrailInterval,
+  bpvtk::chooseTrailPoses(I.Inputs.trail, I.Queue->draw().time, I.TrailSpan + I.TrailInterval,
     this->ColorMapIsTranslucent(), I.TrailPoses);
   I.Samplers.bindAll(window,
     { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
@@ -671,12 +676,11 @@ void vtkOpenGLBoundParticleMapper::ReleaseGraphicsResources(vtkWindow* window)
       I.Engine.release();
     }
     I.Replay.forget();
-    if (I.Queue)
+    if (I.Writer)
     {
       // The state is gone: what is queued continues from it, so the filter
       // must replay into this queue.
-      I.Queue->clear();
-      I.Queue->cursor.valid = false;
+      I.Writer->stateLost();
     }
   }
   I.ColorTable.release(window);

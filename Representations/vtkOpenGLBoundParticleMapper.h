@@ -53,9 +53,10 @@
  * algorithm, the display, whose progress ParaView shows (before ParaView 6.1,
  * whose GUI processes its events on every report and hung inside the
  * render), and stops between two steps when the container (or the mapper) is
- * asked to abort. The engine then stands on a step boundary, which the work
- * queue's cursor takes, so the next update goes on from there
- * (bp::ReplayProgress, bp::WorkQueue::stoppedAt).
+ * asked to abort. The engine then stands on a step boundary, which the
+ * mapper records in the queue's report and the tracer's cursor takes at its
+ * next decision, so the next update goes on from there (bp::ReplayProgress,
+ * bp::RendererReportWriter::stoppedAt, bp::WorkQueue::settleCursor).
  *
  * The mapper's parts, one role a file, are listed at the top of its .cxx.
  *
@@ -76,6 +77,7 @@
 namespace bp
 {
 class WorkQueue;
+class RendererReportWriter;
 struct EngineCall;
 }
 #endif
@@ -90,8 +92,11 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
 #ifndef __VTK_WRAP__
-  /// The queue whose calls this mapper runs and whose state it draws.
-  void SetWorkQueue(const std::shared_ptr<bp::WorkQueue>& queue);
+  /// The queue whose calls this mapper runs and whose state it draws, and
+  /// its report's writer, lent by the display that owns both (null with a
+  /// null queue); the display takes them back before it goes.
+  void SetWorkQueue(
+    const std::shared_ptr<const bp::WorkQueue>& queue, bp::RendererReportWriter* writer);
 #endif
 
   /**
@@ -185,7 +190,7 @@ private:
   /// and the draw's tables for the new system (DrawTables.h).
   void ConfigureDraw(const bp::EngineCall& configure);
   /// After a run of `calls` that took `took`: a long one that was not
-  /// stopped gives the queue the engine's rate (WorkQueue::particleStepsPerSecond).
+  /// stopped gives the queue the engine's rate (RendererReport::particleStepsPerSecond).
   void MeasureRate(const std::vector<bp::EngineCall>& calls,
     std::chrono::steady_clock::duration took, bool stopped);
 #endif

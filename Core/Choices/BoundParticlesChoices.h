@@ -216,7 +216,7 @@ struct EnumTraits<Linking>
   static constexpr const char* names[] = { "None", "Chain", "Ring", "Sheet", "Tube", "Torus" };
 };
 
-/// The tracer's Engine property (Core/Stepping/WorkQueue.h: usesGpuEngine).
+/// The tracer's Engine property (Core/Stepping/EngineChoice.h: usesGpuEngine).
 /// The panel lists Automatic first; the values keep this order.
 enum class EngineChoice
 {

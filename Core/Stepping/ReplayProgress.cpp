@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReplayProgress.h"
 
+#include "WorkQueue.h"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>

@@ -20,13 +20,13 @@
  *  - whether to stop is asked after each report, and a run stops only
  *    before a Step call. The engine then stands on the step boundary that
  *    call starts from, a time the tracer's schedule lands on, so that the
- *    next update continues from there (WorkQueue::stoppedAt) to the bits of a
- *    run that never stopped.
+ *    next update continues from there (RendererReportWriter::stoppedAt,
+ *    WorkQueue::settleCursor) to the bits of a run that never stopped.
  */
 #ifndef BoundParticles_ReplayProgress_h
 #define BoundParticles_ReplayProgress_h
 
-#include "WorkQueue.h"
+#include "EngineCall.h"
 
 #include <cstddef>
 #include <functional>
@@ -35,6 +35,7 @@
 
 namespace bp
 {
+class WorkQueue;
 
 class ReplayProgress
 {

@@ -1,37 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WorkQueue.h"
 
-#include <algorithm>
-#include <cctype>
-
 namespace bp
 {
-std::string EngineCall::applyTo(Stepper& target) const
-{
-  switch (this->kind)
-  {
-    case Kind::Configure:
-      return target.configure(*this->shape, this->parameters);
-    case Kind::SetField:
-      return target.setField(*this->field);
-    case Kind::Initialize:
-      target.initialize(this->t);
-      break;
-    case Kind::Step:
-      target.step(this->t, this->h);
-      break;
-    case Kind::Save:
-      target.save();
-      break;
-    case Kind::Restore:
-      target.restore();
-      break;
-    case Kind::SetEmitter:
-      target.setEmitter(this->parameters.emitterMin, this->parameters.emitterMax);
-      break;
-  }
-  return std::string();
-}
 
 std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters& parameters)
 {
@@ -106,51 +77,48 @@ std::vector<EngineCall> WorkQueue::take()
   return calls;
 }
 
-void WorkQueue::stoppedAt(double committed)
+void WorkQueue::settleCursor()
 {
-  if (!this->Pending.empty())
+  // Counts, not flags: the display writes them, the tracer only reads. A stop
+  // moves the cursor to where the engine stands; a loss leaves it holding no
+  // trace, whichever came first.
+  const EngineStateNews& news = this->Report.engineState;
+  if (news.stops() != this->SettledStops)
   {
-    this->Pending.clear();
+    this->SettledStops = news.stops();
+    this->cursor.committed = news.stoppedAt();
+    this->cursor.showsPartialStep = false;
+  }
+  if (news.losses() != this->SettledLosses)
+  {
+    this->SettledLosses = news.losses();
     this->cursor.valid = false;
+  }
+}
+
+void RendererReportWriter::stoppedAt(double committed)
+{
+  EngineStateNews& news = this->Queue->Report.engineState;
+  if (this->Queue->hasPending())
+  {
+    this->Queue->clear();
+    ++news.Losses;
     return;
   }
-  this->cursor.committed = committed;
-  this->cursor.showsPartialStep = false;
+  news.StoppedAt = committed;
+  ++news.Stops;
 }
 
-RendererKind rendererKind(const std::string& glRenderer)
+void RendererReportWriter::stateLost()
 {
-  std::string name(glRenderer.size(), ' ');
-  std::transform(glRenderer.begin(), glRenderer.end(), name.begin(),
-    [](unsigned char c) { return char(std::tolower(c)); });
-  if (name.empty())
-  {
-    return RendererKind::Unknown;
-  }
-  for (const char* software :
-    { "llvmpipe", "softpipe", "swrast", "software rasterizer", "swiftshader", "lavapipe" })
-  {
-    if (name.find(software) != std::string::npos)
-    {
-      return RendererKind::Software;
-    }
-  }
-  return RendererKind::Hardware;
+  this->Queue->clear();
+  ++this->Queue->Report.engineState.Losses;
 }
 
-bool usesGpuEngine(EngineChoice choice, RendererKind renderer)
+DisplayWorkQueue newDisplayWorkQueue(int id, std::shared_ptr<WorkQueue>& recorder)
 {
-  return choice == EngineChoice::Gpu ||
-    (choice == EngineChoice::Automatic && renderer == RendererKind::Hardware);
-}
-
-std::string automaticOnCpuNote(const std::string& rendererName)
-{
-  return "Bound Particle Tracer: Engine is Automatic and this render window draws with a "
-         "software renderer (" +
-    rendererName +
-    "), on which the GPU engine is slower: the CPU engine traces. Set Engine to GPU to use the "
-    "GPU engine anyway.";
+  recorder = std::make_shared<WorkQueue>(id);
+  return DisplayWorkQueue{ recorder, RendererReportWriter(recorder) };
 }
 
 } // namespace bp

@@ -6,13 +6,23 @@
  * The third kind of Stepper (Stepper.h): with the GPU engine the tracer
  * makes every decision it makes for the CPU engine (when to replay, which
  * field time steps, which steps along the schedule, the short last step
- * shown and taken back) but its stepper records the calls here instead of
- * making them. The renderer that owns the GL context drains the queue before
- * it draws and applies each call to its own stepper (Gpu/GpuStepper.h). The
- * queue holds the field time steps its pending calls need (shared, not
- * copied) and nothing else; `cursor` is where the engine stands once every
- * recorded call has run, which is what the tracer's next decision starts
- * from.
+ * shown and taken back) but its stepper records the calls (EngineCall.h)
+ * here instead of making them. The renderer that owns the GL context drains
+ * the queue before it draws and applies each call to its own stepper
+ * (Gpu/GpuStepper.h). The queue holds the field time steps its pending calls
+ * need (shared, not copied) and nothing else; `cursor` is where the engine
+ * stands once every recorded call has run, which is what the tracer's next
+ * decision starts from.
+ *
+ * Two sides, each with its own handle:
+ *  - the tracer holds the queue (bpvtk::FindWorkQueue): it records, sets
+ *    what to draw, and reads the renderer's report `const`;
+ *  - the display that made the queue holds it `const` plus its
+ *    RendererReportWriter, made with the queue and never copied: the one
+ *    path that writes the report, takes the calls, and records where a run
+ *    stopped or that the state was lost. The tracer settles its own cursor
+ *    from that record at the start of its next decision (settleCursor()); the
+ *    renderer never writes the cursor.
  *
  * A queue has an id, a plain integer a renderer can put into a pipeline
  * request; the filter's module keeps the one registry of ids (a static here
@@ -21,9 +31,11 @@
 #ifndef BoundParticles_WorkQueue_h
 #define BoundParticles_WorkQueue_h
 
-#include "BoundParticlesChoices.h"
+#include "DrawSettings.h"
 #include "ElementTemplate.h"
 #include "Engine.h"
+#include "EngineCall.h"
+#include "RendererReport.h"
 #include "Stepper.h"
 #include "VectorField.h"
 
@@ -31,102 +43,16 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bp
 {
 
-/// The kind of OpenGL renderer a display draws with.
-enum class RendererKind
-{
-  Unknown,
-  Hardware,
-  Software
-};
-
-/// The kind of renderer a GL_RENDERER string names: Software for Mesa's
-/// llvmpipe, softpipe and swrast, and other CPU rasterizers.
-RendererKind rendererKind(const std::string& glRenderer);
-
-/// Whether a trace a display asked for runs on the GPU engine: always with
-/// Gpu; with Automatic only on a hardware renderer (an unknown one, before
-/// the display first drew, gets the CPU engine).
-bool usesGpuEngine(EngineChoice choice, RendererKind renderer);
-
-/// What a display says, once, when Engine Automatic traces on the CPU engine
-/// because it draws with the software renderer `rendererName`.
-std::string automaticOnCpuNote(const std::string& rendererName);
-
-/// One recorded engine call.
-struct EngineCall
-{
-  enum class Kind
-  {
-    Configure,  ///< shape, parameters
-    SetField,   ///< field
-    Initialize, ///< place every element
-    Step,       ///< t, h
-    Save,       ///< keep a copy of the state
-    Restore,    ///< go back to the copy
-    SetEmitter  ///< parameters.emitterMin, emitterMax
-  };
-  Kind kind = Kind::Step;
-  double t = 0.0, h = 0.0;
-  std::shared_ptr<const ElementTemplate> shape;
-  Parameters parameters;
-  std::shared_ptr<const VectorField> field;
-
-  /// Makes this call on `target`; empty on success, otherwise its error.
-  std::string applyTo(Stepper& target) const;
-};
-
-/// What a renderer needs to draw the state the queue leads to.
-struct DrawSettings
-{
-  double time = 0.0;                          ///< the simulation time shown
-  std::array<double, 3> offset = { 0, 0, 0 }; ///< world position of the grid-local origin
-  std::array<double, 6> bounds = { 0, -1, 0, -1, 0, -1 }; ///< the field's world bounds
-  int coloringAxis = 2;                                   ///< for Layer and Radius
-  std::array<double, 2> radialCenter = { 0, 0 };          ///< grid-local, the other two axes
-  std::uint64_t serial = 0; ///< changes with every update of the filter
-};
-
-/**
- * What a display tells the tracer about its renderer and its runs: written
- * by the display alone (its representation and its mapper), read by the
- * tracer (WorkQueue::report()).
- */
-struct RendererReport
-{
-  /// The largest texture the renderer's GPU takes (0: not known yet), so the
-  /// filter can refuse a system before recording it.
-  int maxTextureSize = 0;
-
-  /// What draws: Unknown until the renderer first ran; Software for a CPU
-  /// rasterizer (llvmpipe, softpipe, swrast), on which the GPU engine is
-  /// slower than the CPU engine.
-  RendererKind renderer = RendererKind::Unknown;
-  /// The renderer's GL_RENDERER string, for messages.
-  std::string rendererName;
-
-  /// The engine's rate on this renderer as the last long run measured it
-  /// (particle-steps per second; 0 until one was measured), so the filter can
-  /// say before recording a long replay how long the view will wait.
-  double particleStepsPerSecond = 0.0;
-
-  /// The renderer's last failure, if any (empty when the engine ran).
-  std::string failure;
-
-  /// Whether the filter reads the next field time step ahead of need and the
-  /// renderer uploads it a slab of z layers per frame (the display's choice);
-  /// otherwise a time step is uploaded whole when a step first needs it.
-  bool streamTimeSteps = true;
-};
-
 /**
  * The requests: the engine calls the tracer records, what to draw and the
  * next time step, written by the tracer; the renderer drains the calls
- * (take(), stoppedAt()). The renderer's side comes back in report().
+ * (RendererReportWriter::take). The renderer's side comes back in report().
  */
 class WorkQueue : public Stepper
 {
@@ -150,44 +76,113 @@ public:
   void restore() override;
   void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
   bool readsAhead() const override { return this->Report.streamTimeSteps; }
-  void offerUpcoming(const FieldSlice& slice) override { this->upcoming = slice; }
+  void offerUpcoming(const FieldSlice& slice) override { this->Upcoming = slice; }
   /// Drops every pending call (a replay makes them moot).
   void clear() { this->Pending.clear(); }
   /// Whether calls wait for the renderer.
   bool hasPending() const { return !this->Pending.empty(); }
 
-  // Running (the renderer).
-  std::vector<EngineCall> take();
   /**
-   * The renderer ran the calls take() gave only up to a Step call from
-   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
-   * that step boundary, showing no short step, and the next update continues
-   * from there. Calls recorded meanwhile (an update inside the run) continue
-   * from where every taken call would have led: they are dropped and the
-   * next update replays.
+   * The tracer, at the start of its decision: takes into `cursor` what the
+   * display recorded since the last time (RendererReportWriter::stoppedAt,
+   * stateLost). After a stop the engine stands on that step boundary,
+   * showing no short step, and the next update continues from there; after
+   * a loss (or a stop that dropped calls recorded meanwhile) the cursor
+   * holds no trace, and the next update replays.
    */
-  void stoppedAt(double committed);
+  void settleCursor();
+
+  /// All the calls recorded since the last take, in order, leaving none.
+  /// The display drains through its writer (RendererReportWriter::take);
+  /// tests that play the renderer drain here.
+  std::vector<EngineCall> take();
 
   /// What the renderer reported, as the tracer reads it.
   const RendererReport& report() const { return this->Report; }
-  /// The report, for the display that owns this queue: the one writer.
-  RendererReport& reportFromDisplay() { return this->Report; }
 
-  DrawSettings draw;
+  /// What to draw, set by the tracer at every update it records for the display.
+  const DrawSettings& draw() const { return this->Draw; }
+  void setDraw(const DrawSettings& draw) { this->Draw = draw; }
 
   /// The tracer's Engine is Automatic and its last update for this display
   /// traced on the CPU engine: the renderer is a software one, or was not
   /// known yet. The display says why once it knows its renderer.
-  bool automaticOnCpu = false;
+  bool automaticOnCpu() const { return this->AutomaticOnCpu; }
+  void setAutomaticOnCpu(bool onCpu) { this->AutomaticOnCpu = onCpu; }
 
   /// The time step the next update forward will need, once the filter has it
-  /// (empty otherwise).
-  FieldSlice upcoming;
+  /// (empty otherwise; set through offerUpcoming()).
+  const FieldSlice& upcoming() const { return this->Upcoming; }
 
 private:
+  friend class RendererReportWriter;
   int Id = 0;
   std::vector<EngineCall> Pending;
   RendererReport Report;
+  DrawSettings Draw;
+  bool AutomaticOnCpu = false;
+  FieldSlice Upcoming;
+  /// The engineState counts this queue's cursor has taken in (settleCursor).
+  std::uint64_t SettledStops = 0;
+  std::uint64_t SettledLosses = 0;
+};
+
+struct DisplayWorkQueue;
+/// A new queue with this id, as the display that makes it holds it (the
+/// queue read-only, and its report's one writer); `recorder` is the same
+/// queue, writable, for the registry that hands it to the tracer.
+DisplayWorkQueue newDisplayWorkQueue(int id, std::shared_ptr<WorkQueue>& recorder);
+
+/**
+ * The display's hold on the queue it made: the one writer of its report, and
+ * the renderer's side of the queue. Made only with a new queue
+ * (newDisplayWorkQueue) and never copied, so each queue has one.
+ */
+class RendererReportWriter
+{
+public:
+  RendererReportWriter(const RendererReportWriter&) = delete;
+  RendererReportWriter& operator=(const RendererReportWriter&) = delete;
+  RendererReportWriter(RendererReportWriter&&) = default;
+  RendererReportWriter& operator=(RendererReportWriter&&) = default;
+
+  /// The report, to write (and to read back).
+  RendererReport& report() { return this->Queue->Report; }
+  const RendererReport& report() const { return this->Queue->Report; }
+
+  /// The calls to run, taken from the queue (WorkQueue::take).
+  std::vector<EngineCall> take() { return this->Queue->take(); }
+
+  /**
+   * The renderer ran the calls take() gave only up to a Step call from
+   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
+   * that step boundary, and the tracer's next decision continues from there
+   * (WorkQueue::settleCursor). Calls recorded meanwhile (an update inside the
+   * run) continue from where every taken call would have led: they are
+   * dropped here, so no render runs them, and the next update replays.
+   */
+  void stoppedAt(double committed);
+
+  /// The engine state the recorded calls lead to is gone (the renderer
+  /// released its GL resources): what is queued continues from it, so it is
+  /// dropped, and the tracer's next update replays into this queue.
+  void stateLost();
+
+private:
+  friend DisplayWorkQueue newDisplayWorkQueue(int id, std::shared_ptr<WorkQueue>& recorder);
+  explicit RendererReportWriter(std::shared_ptr<WorkQueue> queue)
+    : Queue(std::move(queue))
+  {
+  }
+  std::shared_ptr<WorkQueue> Queue;
+};
+
+/// A queue as the display that made it holds it: read-only, and its
+/// report's one writer (newDisplayWorkQueue).
+struct DisplayWorkQueue
+{
+  std::shared_ptr<const WorkQueue> queue;
+  RendererReportWriter writer;
 };
 
 } // namespace bp

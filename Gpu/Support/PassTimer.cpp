@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PassTimer.h"
 
-#include "WorkQueue.h"
+#include "RendererKind.h"
 
 #include <algorithm>
 #include <chrono>

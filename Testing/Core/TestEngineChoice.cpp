@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Engine = Automatic: the GPU engine on a hardware renderer only.
-#include "WorkQueue.h"
+#include "EngineChoice.h"
+#include "RendererKind.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Progress and abort while a renderer runs a work queue's calls
-// (Core/Stepping/ReplayProgress.h), and where the queue stands after a stop
-// (WorkQueue::stoppedAt).
+// (Core/Stepping/ReplayProgress.h); where the tracer goes on after a stop is
+// TestWorkQueue.cpp's.
 #include "ReplayProgress.h"
 #include "WorkQueue.h"
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -161,45 +162,26 @@ TEST(ReplayProgress, ReportsAndStopsOnlyBeforeAStep)
   EXPECT_EQ(progress.stoppedAt(), 0.0);
 }
 
-TEST(ReplayProgress, TheQueueContinuesFromWhereTheRunStopped)
-{
-  bp::WorkQueue queue(1);
-  queue.cursor.valid = true;
-  queue.cursor.committed = 10.0;
-  queue.cursor.showsPartialStep = true;
-  const std::vector<bp::EngineCall> taken = queue.take();
-  queue.stoppedAt(2.5);
-  EXPECT_TRUE(queue.cursor.valid);
-  EXPECT_EQ(queue.cursor.committed, 2.5);
-  EXPECT_FALSE(queue.cursor.showsPartialStep);
-
-  // An update recorded inside the run continued from the end of every taken
-  // call: it is dropped, and the next update replays.
-  queue.cursor.committed = 10.0;
-  queue.step(10.0, 0.1);
-  queue.stoppedAt(2.5);
-  EXPECT_FALSE(queue.cursor.valid);
-  EXPECT_TRUE(queue.take().empty());
-}
-
 TEST(ReplayProgress, ALongRunIsSaidBeforeItIsRecorded)
 {
-  bp::WorkQueue queue(1);
-  queue.reportFromDisplay().renderer = bp::RendererKind::Software;
-  queue.reportFromDisplay().rendererName = "llvmpipe";
+  std::shared_ptr<bp::WorkQueue> queue;
+  bp::DisplayWorkQueue display = bp::newDisplayWorkQueue(1, queue);
+  bp::RendererReport& report = display.writer.report();
+  report.renderer = bp::RendererKind::Software;
+  report.rendererName = "llvmpipe";
   // A frame's few steps: nothing to say.
-  EXPECT_TRUE(bp::longReplayNote(4, 16000, 0.0, 0.1, queue).empty());
+  EXPECT_TRUE(bp::longReplayNote(4, 16000, 0.0, 0.1, *queue).empty());
   // 2,000 steps of 160,000 particles at llvmpipe's assumed rate: 16 s.
-  const std::string slow = bp::longReplayNote(2000, 160000, 0.0, 50.0, queue);
+  const std::string slow = bp::longReplayNote(2000, 160000, 0.0, 50.0, *queue);
   EXPECT_NE(slow.find("2000 steps of 160000 particles"), std::string::npos) << slow;
   EXPECT_NE(slow.find("about 16 s on a software renderer (llvmpipe)"), std::string::npos) << slow;
   EXPECT_NE(slow.find("Number Of Elements"), std::string::npos) << slow;
   // The same on a GPU whose measured rate is 1e10: 0.03 s, nothing said.
-  queue.reportFromDisplay().renderer = bp::RendererKind::Hardware;
-  queue.reportFromDisplay().particleStepsPerSecond = 1.0e10;
-  EXPECT_TRUE(bp::longReplayNote(2000, 160000, 0.0, 50.0, queue).empty());
+  report.renderer = bp::RendererKind::Hardware;
+  report.particleStepsPerSecond = 1.0e10;
+  EXPECT_TRUE(bp::longReplayNote(2000, 160000, 0.0, 50.0, *queue).empty());
   // A measured rate is what the note quotes.
-  queue.reportFromDisplay().particleStepsPerSecond = 1.0e7;
-  const std::string measured = bp::longReplayNote(2000, 160000, 0.0, 50.0, queue);
+  report.particleStepsPerSecond = 1.0e7;
+  const std::string measured = bp::longReplayNote(2000, 160000, 0.0, 50.0, *queue);
   EXPECT_NE(measured.find("about 32 s at the rate it last ran at"), std::string::npos) << measured;
 }

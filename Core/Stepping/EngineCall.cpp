@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "EngineCall.h"
+
+namespace bp
+{
+
+std::string EngineCall::applyTo(Stepper& target) const
+{
+  switch (this->kind)
+  {
+    case Kind::Configure:
+      return target.configure(*this->shape, this->parameters);
+    case Kind::SetField:
+      return target.setField(*this->field);
+    case Kind::Initialize:
+      target.initialize(this->t);
+      break;
+    case Kind::Step:
+      target.step(this->t, this->h);
+      break;
+    case Kind::Save:
+      target.save();
+      break;
+    case Kind::Restore:
+      target.restore();
+      break;
+    case Kind::SetEmitter:
+      target.setEmitter(this->parameters.emitterMin, this->parameters.emitterMax);
+      break;
+  }
+  return std::string();
+}
+
+} // namespace bp
