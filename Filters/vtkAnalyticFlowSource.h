@@ -30,6 +30,7 @@ public:
   /// Which flow (bp::AnalyticFlow): Solid Body Rotation, Shear Layer
   /// (default), Vertical Shear, ABC, Hurricane or Double Gyre. A number that
   /// names none is clamped with a warning.
+  // Declares SetFlow, GetFlow and GetFlowAsString.
   vtkBPEnumMacro(Flow, bp::AnalyticFlow);
   ///@}
 

@@ -104,6 +104,7 @@ public:
   /// Paddlewheel, Tetrahedron or Fish (the 23-particle Tu-Terzopoulos
   /// skeleton). Strips act like short stream ribbons; paddlewheels and crosses
   /// turn with the local vorticity.
+  // Declares SetElementShape, GetElementShape and GetElementShapeAsString.
   vtkBPEnumMacro(ElementShape, bp::BuiltinShape);
   ///@}
 
@@ -147,6 +148,7 @@ public:
   /// Springs of a template mesh that has no lines: its Edges (the element
   /// folds freely), plus across every shared edge the far corners (Edges +
   /// Diagonals, default), or All Pairs of particles (rigid).
+  // Declares SetTemplateSprings, GetTemplateSprings and GetTemplateSpringsAsString.
   vtkBPEnumMacro(TemplateSprings, bp::MeshSprings);
   ///@}
 
@@ -183,6 +185,7 @@ public:
   /// NumberOfElements, which is then the target (the lattice's size is the
   /// element count). LatticeSpacing is clamped to [0, VTK_DOUBLE_MAX]; a
   /// value outside warns.
+  // Declares SetReleasePattern, GetReleasePattern and GetReleasePatternAsString.
   vtkBPEnumMacro(ReleasePattern, bp::ReleasePattern);
   vtkBPClampedSetMacro(LatticeSpacing, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(LatticeSpacing, double);
@@ -195,6 +198,7 @@ public:
   /// ribbons from the first frame; Random, a uniform random rotation; Fixed,
   /// every element turned by ElementRotation (degrees about X, then Y, then
   /// Z). On a flat field the turns are about its flat axis only.
+  // Declares SetReleaseOrientation, GetReleaseOrientation and GetReleaseOrientationAsString.
   vtkBPEnumMacro(ReleaseOrientation, bp::Orientation);
   vtkSetVector3Macro(ElementRotation, double);
   vtkGetVector3Macro(ElementRotation, double);
@@ -215,6 +219,7 @@ public:
   /// positive.
   vtkSetMacro(StepSize, double);
   vtkGetMacro(StepSize, double);
+  // Declares SetStepSizeUnit, GetStepSizeUnit and GetStepSizeUnitAsString.
   vtkBPEnumMacro(StepSizeUnit, bp::StepUnit);
   ///@}
 
@@ -233,6 +238,7 @@ public:
   ///@{
   /// Advection integrator: Euler (thesis eq. 2.2, default), Runge-Kutta 2
   /// (midpoint) or Runge-Kutta 4 (classic).
+  // Declares SetIntegrator, GetIntegrator and GetIntegratorAsString.
   vtkBPEnumMacro(Integrator, bp::Integrator);
   ///@}
 
@@ -242,6 +248,7 @@ public:
   /// (best rigid fit, Müller et al. 2005, goals blended by
   /// ShapeMatchingStiffness); RestorationIterations iterations per step
   /// (default 1).
+  // Declares SetRestoration, GetRestoration and GetRestorationAsString.
   vtkBPEnumMacro(Restoration, bp::Restoration);
   vtkSetMacro(RestorationIterations, int);
   vtkGetMacro(RestorationIterations, int);
@@ -257,6 +264,7 @@ public:
   /// §4.3: goals from beta * A + (1 - beta) * R, A the best affine fit, so
   /// elements may also shear and stretch). LinearShapeMatchingBeta is beta,
   /// clamped to [0.0, 1.0]; a value outside warns.
+  // Declares SetShapeMatchingMode, GetShapeMatchingMode and GetShapeMatchingModeAsString.
   vtkBPEnumMacro(ShapeMatchingMode, bp::ShapeFit);
   vtkBPClampedSetMacro(LinearShapeMatchingBeta, double, 0.0, 1.0);
   vtkGetMacro(LinearShapeMatchingBeta, double);
@@ -271,6 +279,7 @@ public:
   /// from lattice sites filling the emitter box, with one orientation and one
   /// lifetime, and lives out its lifetime even where it leaves the field. The
   /// links are output as lines.
+  // Declares SetLinking, GetLinking and GetLinkingAsString.
   vtkBPEnumMacro(Linking, bp::Linking);
   /// Clamped to [0, VTK_INT_MAX]; a value outside warns.
   vtkBPClampedSetMacro(LatticeWidth, int, 0, VTK_INT_MAX);
@@ -285,6 +294,7 @@ public:
   /// moved back, after every step, so that its centre stays where it was
   /// released; it still turns and deforms with the local flow (a vorticity
   /// meter in place). Not with Linking (refused with a message).
+  // Declares SetAnchor, GetAnchor and GetAnchorAsString.
   vtkBPEnumMacro(Anchor, bp::Anchor);
   ///@}
 
@@ -298,6 +308,7 @@ public:
   /// Anchor; both engines, CPU and GPU, step heavy particles. A negative or
   /// NaN ResponseTime, a DensityRatio not above 0 or a NaN Gravity is
   /// refused.
+  // Declares SetInertia, GetInertia and GetInertiaAsString.
   vtkBPEnumMacro(Inertia, bp::Inertia);
   vtkSetMacro(ResponseTime, double);
   vtkGetMacro(ResponseTime, double);
@@ -311,6 +322,7 @@ public:
   /// When an element is put back into the emitter besides running out of
   /// lifetime: Center Leaves (default, the thesis) the field, or Any Particle
   /// Leaves it, which keeps particles from sampling outside the data.
+  // Declares SetResetWhen, GetResetWhen and GetResetWhenAsString.
   vtkBPEnumMacro(ResetWhen, bp::ResetWhen);
   ///@}
 
@@ -424,6 +436,7 @@ public:
   /// window and this filter only records the work (see GPU_WORK_QUEUE());
   /// every other consumer (Surface, writers, other filters) still gets the
   /// CPU result, so nothing downstream ever sees a stale trace.
+  // Declares SetEngine, GetEngine and GetEngineAsString.
   vtkBPEnumMacro(Engine, bp::EngineChoice);
   ///@}
 
