@@ -604,6 +604,9 @@ const std::map<std::string, std::string> NotInCore = {
   { "ComputeVorticity", "folded into TracerConfig::wanted (Vorticity)" },
   { "ResolvedTimeStep", "information, what the last update resolved" },
   { "ResolvedElementSize", "information, what the last update resolved" },
+  { "SimulationTime", "information, what the last update did" },
+  { "StepsInLastUpdate", "information, what the last update did" },
+  { "LastUpdateReplayed", "information, what the last update did" },
   { "TimestepValues", "information, the time line" },
   { "TimeRange", "information, the time line" },
 };
