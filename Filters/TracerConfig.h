@@ -45,8 +45,9 @@ struct TracerConfig
   std::string releaseWeights;
   /// Its association (vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS).
   int releaseWeightsAssociation = 0;
-  /// Checkpoint Memory: MiB the trace's checkpoints may take (0: none kept).
-  double checkpointMemory = 256.0;
+  /// Checkpoint Memory: MiB the trace's checkpoints may take (0: none kept;
+  /// -1: half the trace's own size, bp::traceBytes).
+  double checkpointMemory = -1.0;
 
   bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
   bool wants(bp::OutputArrayId id) const { return this->wanted[std::size_t(id)]; }

@@ -363,7 +363,11 @@ bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const C
   // keeps its checkpoints at the same steps.
   const double stateBytes = 4.0 * double(particles->recordWords()) *
     double(std::max<long long>(this->Parameters.numberOfElements, 1));
-  const double budget =
-    std::min(config.checkpointMemory * 1048576.0, 0.5 * bp::allocatableBytes());
+  // Automatic: half the whole trace's size (engine and output), the same
+  // estimate that refuses a trace too large for the process.
+  const double asked = config.checkpointMemory < 0.0
+    ? 0.5 * bp::traceBytes(particles->shape(), this->Parameters)
+    : config.checkpointMemory * 1048576.0;
+  const double budget = std::min(asked, 0.5 * bp::allocatableBytes());
   return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->ResolvedDt));
 }

@@ -90,6 +90,10 @@ bool vtkBoundParticleTracer::GetLastUpdateReplayed() const
 {
   return this->Internals->lastUpdateReplayed();
 }
+vtkIdType vtkBoundParticleTracer::GetCheckpointSpacing() const
+{
+  return this->Internals->checkpointSpacing().every;
+}
 int vtkBoundParticleTracer::GetNumberOfCachedTimeSteps() const
 {
   return this->Internals->timeStepsHeld();
@@ -553,7 +557,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LifetimeRange: " << this->LifetimeRange[0] << " " << this->LifetimeRange[1]
      << "\n";
   os << indent << "StepSize: " << this->StepSize << "\n";
-  os << indent << "CheckpointMemory: " << this->CheckpointMemory << " MiB\n";
+  os << indent << "CheckpointMemory: " << this->CheckpointMemory
+     << (this->CheckpointMemory < 0.0 ? " (half the trace's size)\n" : " MiB\n");
   os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio

@@ -228,10 +228,12 @@ public:
   /// whole state kept on step boundaries, as many as fit, spread evenly over
   /// the trace, so that going back in time resumes from the latest one at or
   /// before the time asked for instead of replaying from the start (with the
-  /// same result, bit for bit). 0 keeps none. At most half of what the
-  /// process can allocate is used. CPU engine; the GPU engine replays from
-  /// the start. Default 256; clamped to [0, 1e7], a value outside said.
-  vtkBPClampedSetMacro(CheckpointMemory, double, 0.0, 1.0e7);
+  /// same result, bit for bit). -1 (default): half the trace's own size (its
+  /// engine state and output, as the memory estimate gives it); 0 keeps none.
+  /// At most half of what the process can allocate is used. CPU engine; the
+  /// GPU engine replays from the start. Clamped to [-1, 1e7], a value
+  /// outside said.
+  vtkBPClampedSetMacro(CheckpointMemory, double, -1.0, 1.0e7);
   vtkGetMacro(CheckpointMemory, double);
   ///@}
 
@@ -465,11 +467,13 @@ public:
 
   ///@{
   /// What the last update did: the simulation time of the output, the number
-  /// of steps it took, whether it replayed from the start, and the resolved
-  /// step (time units) and element size (world units).
+  /// of steps it took, whether it replayed from the start, the steps between
+  /// two checkpoints of its trace (0: none kept; CheckpointMemory), and the
+  /// resolved step (time units) and element size (world units).
   double GetSimulationTime() const;
   vtkIdType GetStepsInLastUpdate() const;
   bool GetLastUpdateReplayed() const;
+  vtkIdType GetCheckpointSpacing() const;
   double GetResolvedTimeStep() const;
   double GetResolvedElementSize() const;
   ///@}
@@ -580,7 +584,7 @@ protected:
   double ElementRotation[3] = { 0.0, 0.0, 0.0 };
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;
-  double CheckpointMemory = 256.0;
+  double CheckpointMemory = -1.0;
   int RestorationIterations = 1;
   double RelaxationFactor = 0.2;
   double ShapeMatchingStiffness = 1.0;

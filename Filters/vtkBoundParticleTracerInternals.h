@@ -121,6 +121,7 @@ public:
   const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
   vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
   bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
+  const bp::CheckpointSpacing& checkpointSpacing() const { return this->Spacing; }
   int timeStepsHeld() const { return int(this->Cache.size()); }
   double resolvedDt() const { return this->ResolvedDt; }
   double resolvedElementSize() const { return this->ResolvedElementSize; }
@@ -378,8 +379,9 @@ private:
   /// spaced within the config's budget.
   void startTrace(const Config& config);
   /// Every how many steps a new trace keeps a checkpoint (Checkpoints.h):
-  /// Checkpoint Memory, at most half of what this process can allocate, over
-  /// the whole system's state; the same on every process.
+  /// Checkpoint Memory (automatic: half the trace's own size), at most half
+  /// of what this process can allocate, over the whole system's state; the
+  /// same on every process.
   bp::CheckpointSpacing checkpointSpacing(const Config& config);
 
   // The seeds (TracerSeeds.cxx).

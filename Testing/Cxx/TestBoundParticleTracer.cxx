@@ -253,12 +253,19 @@ TEST(BoundParticleTracer, BackwardResumesFromACheckpointAndChangesReplay)
   auto source = flow(bp::AnalyticFlow::VerticalShear);
   auto tracer = tracerOn(source);
   tracer->SetLifetimeRange(0.3, 0.9); // resets happen along the way
+  // The automatic budget (half the trace's size) keeps some checkpoints.
   at(tracer, 2.0);
+  const vtkIdType automatic = tracer->GetCheckpointSpacing();
+  EXPECT_GT(automatic, 0);
+  tracer->SetCheckpointMemory(64.0); // a checkpoint every step here
+  at(tracer, 2.0);
+  EXPECT_EQ(tracer->GetCheckpointSpacing(), 1);
   // Back to 0.7: from the latest checkpoint at or before it, not the start;
   // the same bits as a fresh run to 0.7, in fewer steps.
   const std::vector<float> back = pointsOf(at(tracer, 0.7));
   EXPECT_FALSE(tracer->GetLastUpdateReplayed());
   const vtkIdType resumedSteps = tracer->GetStepsInLastUpdate();
+  EXPECT_LE(resumedSteps, 2); // the boundary before 0.7, then the short step to it
   auto fresh = tracerOn(source);
   fresh->SetLifetimeRange(0.3, 0.9);
   EXPECT_EQ(back, pointsOf(at(fresh, 0.7)));

@@ -607,6 +607,7 @@ const std::map<std::string, std::string> NotInCore = {
   { "SimulationTime", "information, what the last update did" },
   { "StepsInLastUpdate", "information, what the last update did" },
   { "LastUpdateReplayed", "information, what the last update did" },
+  { "CheckpointSpacing", "information, what the last update did" },
   { "TimestepValues", "information, the time line" },
   { "TimeRange", "information, the time line" },
 };

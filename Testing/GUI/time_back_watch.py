@@ -14,7 +14,8 @@ def ended(*unused):
     proxy.UpdatePropertyInformation()
     updates.append({"time": proxy.GetPropertyValue("SimulationTime"),
                     "steps": proxy.GetPropertyValue("StepsInLastUpdate"),
-                    "replayed": bool(proxy.GetPropertyValue("LastUpdateReplayed"))})
+                    "replayed": bool(proxy.GetPropertyValue("LastUpdateReplayed")),
+                    "spacing": proxy.GetPropertyValue("CheckpointSpacing")})
 
 
 # The client-side algorithm is not wrapped in Python; its end is still seen.

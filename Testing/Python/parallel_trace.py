@@ -76,7 +76,7 @@ def placement_traces():
     # same trace run straight to 0.45 is what the step back must give.
     for name, times in (("back", [1.0, 0.45, 0.8]), ("back_fresh", [0.45, 1.0])):
         cases[name] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                           NumberOfElements=400, Seed=4,
+                                           NumberOfElements=400, Seed=4, CheckpointMemory=64,
                                            LifetimeRange=[0.3, 0.6]), times)
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
