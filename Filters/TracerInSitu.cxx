@@ -207,13 +207,12 @@ void vtkBoundParticleTracerInternals::relocate(
 {
   const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
   this->releaseIntoGrid(grid);
-  if (this->WarnedGridChange)
+  // Once per configuration, as the mask's: a simulation that adapts its
+  // grid would say it every step.
+  if (!this->Said.first(bpvtk::Topic::GridChange))
   {
     return;
   }
-  // Once per configuration, as the mask's: a simulation that adapts its
-  // grid would say it every step.
-  this->WarnedGridChange = true;
   std::ostringstream text;
   text << "The input's grid changed at t = " << this->Stream.present() << " (" << this->Grid.dims[0]
        << " x " << this->Grid.dims[1] << " x " << this->Grid.dims[2] << " points to "
@@ -249,9 +248,9 @@ void vtkBoundParticleTracerInternals::releaseIntoGrid(const bp::GridGeometry& gr
   this->Parameters.emitterMin = box.min;
   this->Parameters.emitterMax = box.max;
   this->stepper().setEmitter(box.min, box.max);
-  if (!box.warning.empty() && box.warning != this->WarnedEmitter)
+  // Said again only when it says something new (recorded even when empty).
+  if (this->Said.first(bpvtk::Topic::Emitter, box.warning) && !box.warning.empty())
   {
     vtkWarningWithObjectMacro(this->Owner, << box.warning);
   }
-  this->WarnedEmitter = box.warning;
 }

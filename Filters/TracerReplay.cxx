@@ -103,7 +103,7 @@ std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
     this->seedTypePoints(config, field, seeds);
     const std::string unusable =
       config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
-    if (!unusable.empty() && !this->WarnedSeeds)
+    if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
     {
       vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
     }
@@ -309,7 +309,7 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
 {
   const bool weighted = !config.releaseWeights.empty() && p.seedPoints.empty() &&
     p.releasePattern == bp::ReleasePattern::Random && p.linking == bp::Linking::None;
-  if (!weighted || this->WarnedWeights)
+  if (!weighted || this->Said.said(bpvtk::Topic::Weights))
   {
     return; // not used, or already said to be unusable
   }
@@ -321,9 +321,8 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
   const bp::ReleaseMask mask = this->Layout.distributed()
     ? this->Layout.releaseMask()(field, p.releaseMinSpeed)
     : bp::releaseMaskOf(field, p.releaseMinSpeed);
-  if (any && !mask.weights)
+  if (any && !mask.weights && this->Said.first(bpvtk::Topic::Weights))
   {
-    this->WarnedWeights = true;
     vtkWarningWithObjectMacro(this->Owner,
       "Release Weights: the array '"
         << config.releaseWeights

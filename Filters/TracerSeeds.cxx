@@ -252,11 +252,10 @@ std::string vtkBoundParticleTracerInternals::seedPoints(
   {
     return noSeedInFlow(seeds.name, used, n);
   }
-  if (!this->WarnedSeeds)
+  if (this->Said.first(bpvtk::Topic::Seeds))
   {
     // Once per configuration: a replay (going back in time, another
     // display's update) would say it again.
-    this->WarnedSeeds = true;
     warnOfSeeds(this->Owner, seeds, used, n, p);
   }
   return std::string();

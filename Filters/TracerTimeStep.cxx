@@ -45,12 +45,11 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
   {
     this->noteVectors(config, input);
   }
-  else if (!this->WarnedCellVectors)
+  else if (this->Said.first(bpvtk::Topic::CellVectors))
   {
     // Instead of the choice's note, which would list the cell array as another.
     // Once per configuration, as the mask's; in situ at the first step that
     // holds only the cell array.
-    this->WarnedCellVectors = true;
     vtkWarningWithObjectMacro(this->Owner, << step.vectorsFromCells);
   }
   vtkDataArray* vectors = step.vectors;
@@ -186,9 +185,8 @@ void vtkBoundParticleTracerInternals::keepInPlane(
     dropped = this->Layout.globalMax(dropped);
     inPlane = float(this->Layout.globalMax(inPlane));
   }
-  if (dropped > 0.0 && !this->WarnedOutOfPlane)
+  if (dropped > 0.0 && this->Said.first(bpvtk::Topic::OutOfPlane)) // once, as the mask's
   {
-    this->WarnedOutOfPlane = true; // once per configuration, as the mask's
     std::string axes;
     for (int a = 0; a < 3; ++a)
     {
@@ -212,9 +210,8 @@ void vtkBoundParticleTracerInternals::takeReleaseWeights(
                                           : config.releaseWeightsAssociation;
   const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights, association,
     this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
-  if (!warning.empty() && !this->WarnedWeights)
+  if (!warning.empty() && this->Said.first(bpvtk::Topic::Weights)) // once, as the mask's
   {
-    this->WarnedWeights = true; // once per configuration, as the mask's
     vtkWarningWithObjectMacro(this->Owner, << warning);
   }
 }
@@ -222,15 +219,13 @@ void vtkBoundParticleTracerInternals::takeReleaseWeights(
 void vtkBoundParticleTracerInternals::warnOfSlice(
   const std::string& maskProblem, std::size_t nonFinite, std::size_t points)
 {
-  if (!maskProblem.empty() && !this->WarnedMask)
+  if (!maskProblem.empty() && this->Said.first(bpvtk::Topic::Mask)) // once, as below
   {
-    this->WarnedMask = true; // once per configuration, as below
     vtkWarningWithObjectMacro(this->Owner, << maskProblem);
   }
-  if (nonFinite > 0 && !this->WarnedNonFinite)
+  if (nonFinite > 0 && this->Said.first(bpvtk::Topic::NonFinite))
   {
     // Once per configuration: an unsteady input would say it every frame.
-    this->WarnedNonFinite = true;
     vtkWarningWithObjectMacro(this->Owner,
       << nonFinite << " of " << points << " grid points ("
       << 100.0 * double(nonFinite) / double(points)
@@ -271,11 +266,10 @@ std::string vtkBoundParticleTracerInternals::resampleInput(
   }
   const std::string error = this->Resampler.resample(input, config.vectors,
     config.resampleDimensions, this->Layout.Controller, this->Steppers.runner(), whole, warning);
-  if (!warning.empty() && warning != this->WarnedResample)
+  if (!warning.empty() && this->Said.first(bpvtk::Topic::Resample, warning))
   {
     // Once per configuration, as the mask's, and again only when it says
     // something new (a later time step's mesh beyond the grid).
-    this->WarnedResample = warning;
     vtkWarningWithObjectMacro(this->Owner, << warning);
   }
   if (error.empty())

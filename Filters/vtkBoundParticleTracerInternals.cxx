@@ -89,15 +89,7 @@ void vtkBoundParticleTracerInternals::requestPieces(
 void vtkBoundParticleTracerInternals::invalidate()
 {
   ++this->Configuration;
-  this->WarnedNonFinite = false;
-  this->WarnedMask = false;
-  this->WarnedResample.clear();
-  this->WarnedWeights = false;
-  this->WarnedSeeds = false;
-  this->WarnedOutOfPlane = false;
-  this->WarnedGridChange = false;
-  this->WarnedCellVectors = false;
-  this->WarnedEmitter.clear();
+  this->Said.forget();
   this->Steppers.invalidate();
 }
 

@@ -36,6 +36,7 @@
 #include "TracerOutput.h"
 #include "TracerParallel.h"
 #include "TracerResample.h"
+#include "TracerSaidOnce.h"
 #include "TracerSteppers.h"
 
 #include "vtkAlgorithm.h"
@@ -256,15 +257,7 @@ private:
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
-  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
-  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
-  std::string
-    WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
-  bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
-  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
-  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
-  bool WarnedGridChange = false; ///< in situ, a change of grid was reported
-  bool WarnedCellVectors = false; ///< point Vectors made of a cell array were reported
+  bpvtk::SaidOnce Said; ///< the warnings said for this configuration (forgotten by invalidate())
   /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
   /// says each once, not again at the next request for information).
   std::vector<std::string> SaidTimeLine;
@@ -284,7 +277,6 @@ private:
   // What the last replay resolved.
   bp::Parameters Parameters;
   bp::TraceSettings Settings; ///< what it resolved them from (releaseIntoGrid)
-  std::string WarnedEmitter;  ///< releaseIntoGrid's last warning
   double ResolvedDt = 0.0;
   double ResolvedElementSize = 0.0;
   std::size_t ParticlesPerElement = 1;
