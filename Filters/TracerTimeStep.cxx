@@ -129,11 +129,8 @@ void vtkBoundParticleTracerInternals::noteVectors(const Config& config, vtkDataO
 {
   // Said once for each choice among an input's arrays, by one process.
   // The Vectors default that preferred an array whose units fit says so.
-  const bool preferred = !this->UnitsFittingVectors.empty() &&
-    config.vectors.name == this->UnitsFittingVectors &&
-    config.vectors.association == vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  const std::string note = bpvtk::describeVectorsChoice(input, config.vectors.name,
-    config.vectors.association, preferred ? this->UnitsReason : std::string());
+  const std::string note = bpvtk::describeVectorsChoice(
+    input, config.vectors.name, config.vectors.association, config.vectorsUnitsReason);
   if (note != this->SaidVectors && (!this->Layout.distributed() || this->Layout.Piece == 0))
   {
     if (!note.empty())

@@ -59,22 +59,6 @@ std::string vtkBoundParticleTracerInternals::setTimes(const std::vector<double>&
   return this->Plan.setTimes(inputTimes, duration, numberOfTimeSteps, framesPerInterval);
 }
 
-std::vector<std::string> vtkBoundParticleTracerInternals::unsaid(
-  const std::vector<std::string>& warnings)
-{
-  std::vector<std::string> fresh;
-  for (const std::string& warning : warnings)
-  {
-    if (std::find(this->SaidTimeLine.begin(), this->SaidTimeLine.end(), warning) ==
-      this->SaidTimeLine.end())
-    {
-      fresh.push_back(warning);
-    }
-  }
-  this->SaidTimeLine = warnings;
-  return fresh;
-}
-
 void vtkBoundParticleTracerInternals::requestPieces(
   vtkInformation* outInfo, vtkInformation* inInfo, bool mesh)
 {

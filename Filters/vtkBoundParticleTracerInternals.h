@@ -142,9 +142,6 @@ public:
   /// it again too, with the warning.
   std::string offerStreamTime(
     vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning);
-  /// The time line's `warnings` not said at the last request for
-  /// information (the pipeline asks again after every change).
-  std::vector<std::string> unsaid(const std::vector<std::string>& warnings);
   /// RequestUpdateExtent: the pieces this output asks for (a change of them
   /// is a change of input: every trace is stale), then what the input is
   /// asked for (`mesh`: an input the resampler takes whole).
@@ -229,18 +226,6 @@ public:
   vtkDataArray* probeGrid(
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
-  /// The time line's warnings resolved while Vectors was not chosen (a
-  /// tracer just made, whose Vectors default comes next): said by an update
-  /// that still has none, not before.
-  std::vector<std::string> PendingTimeLine;
-  /// vtkBoundParticleTracer::PreferFittingVectors: the array whose units
-  /// failed the time line's check, the one preferred, and why.
-  std::string UnitsMismatchedVectors;
-  std::string UnitsFittingVectors;
-  std::string UnitsReason;
-  /// The input they were found of (vtkBoundParticleTracer::InputKey).
-  std::tuple<const void*, int, vtkMTimeType> UnitsChecked{ nullptr, -1, 0 };
-
 private:
   bp::TracePlan Plan;
   /// In situ: the times given since the trace started (TracerInSitu.cxx),
@@ -258,9 +243,6 @@ private:
   /// older configuration replays.
   std::uint64_t Configuration = 1;
   bpvtk::SaidOnce Said; ///< the warnings said for this configuration (forgotten by invalidate())
-  /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
-  /// says each once, not again at the next request for information).
-  std::vector<std::string> SaidTimeLine;
   /// Any input but an image or a rectilinear grid, on a uniform grid; its
   /// located cells and weights are kept while the mesh stays the same.
   bpvtk::FieldResampler Resampler;
