@@ -205,7 +205,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::skipPresentStep(const std::st
 void vtkBoundParticleTracerInternals::relocate(
   const bp::GridGeometry& grid, const bp::FieldSlice& slice)
 {
-  const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
+  const std::size_t beyond = this->Held.cache.regrid(this->Held.grid, grid, slice);
   this->releaseIntoGrid(grid);
   // Once per configuration, as the mask's: a simulation that adapts its
   // grid would say it every step.
@@ -214,9 +214,10 @@ void vtkBoundParticleTracerInternals::relocate(
     return;
   }
   std::ostringstream text;
-  text << "The input's grid changed at t = " << this->Stream.present() << " (" << this->Grid.dims[0]
-       << " x " << this->Grid.dims[1] << " x " << this->Grid.dims[2] << " points to "
-       << grid.dims[0] << " x " << grid.dims[1] << " x " << grid.dims[2]
+  text << "The input's grid changed at t = " << this->Stream.present() << " ("
+       << this->Held.grid.dims[0] << " x " << this->Held.grid.dims[1] << " x "
+       << this->Held.grid.dims[2] << " points to " << grid.dims[0] << " x " << grid.dims[1] << " x "
+       << grid.dims[2]
        << ", or their coordinates): the elements keep their places and go on in the new grid. "
           "Until then the field blends the last step, resampled onto the new grid, with the "
           "present one";
@@ -235,18 +236,18 @@ void vtkBoundParticleTracerInternals::releaseIntoGrid(const bp::GridGeometry& gr
   // Only a trace under way has an emitter box to move (a replay resolves
   // its own from the present grid); seed points are taken where they fit
   // in the new grid, and a lattice's points outside it stay hidden.
-  if (!this->stepper().cursor.valid || this->Settings.seeded)
+  if (!this->stepper().cursor.valid || this->Resolved.settings.seeded)
   {
     return;
   }
   bp::FieldFacts facts;
   facts.bounds = grid.bounds(); // in the engine's frame, which stays the trace's
-  facts.offset = this->Offset;
+  facts.offset = this->Held.offset;
   facts.dims = grid.dims;
   const bp::EmitterBox box =
-    bp::emitterInChangedField(this->Settings, facts, this->ResolvedElementSize);
-  this->Parameters.emitterMin = box.min;
-  this->Parameters.emitterMax = box.max;
+    bp::emitterInChangedField(this->Resolved.settings, facts, this->Resolved.elementSize);
+  this->Resolved.parameters.emitterMin = box.min;
+  this->Resolved.parameters.emitterMax = box.max;
   this->stepper().setEmitter(box.min, box.max);
   // Said again only when it says something new (recorded even when empty).
   if (this->Said.first(bpvtk::Topic::Emitter, box.warning) && !box.warning.empty())

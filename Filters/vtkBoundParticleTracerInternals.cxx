@@ -80,7 +80,7 @@ void vtkBoundParticleTracerInternals::invalidate()
 void vtkBoundParticleTracerInternals::clear()
 {
   this->Steppers.active().cursor.valid = false;
-  this->Cache.clear();
+  this->Held.cache.clear();
   this->Continuing = false;
 }
 
@@ -88,7 +88,7 @@ void vtkBoundParticleTracerInternals::forgetTrace()
 {
   this->invalidate();
   this->clear();
-  this->LastRequested = -1;
+  this->Held.lastRequested = -1;
 }
 
 void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
@@ -120,24 +120,25 @@ void vtkBoundParticleTracerInternals::decide(
     this->decideInSitu(target);
     return;
   }
-  this->RequestIndex = this->Plan.firstRequest(this->Decision, this->Cache, this->LastRequested);
+  this->Held.requestIndex =
+    this->Plan.firstRequest(this->Decision, this->Held.cache, this->Held.lastRequested);
 }
 
 void vtkBoundParticleTracerInternals::decideInSitu(double target)
 {
-  if (!this->Plan.streamCanGoOn(this->Decision, this->Cache))
+  if (!this->Plan.streamCanGoOn(this->Decision, this->Held.cache))
   {
     // The past steps are gone: a trace that must start again, or that lost
     // a step it needs, starts again at the present one.
     this->Stream.restartAtPresent();
     this->Plan.setStreamTimes(this->Stream.times());
-    this->Cache.clear();
+    this->Held.cache.clear();
     this->stepper().cursor.valid = false;
     this->Decision =
       this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
   }
   // Upstream is only ever asked for the present.
-  this->RequestIndex = int(this->Plan.inputTimes().size()) - 1;
+  this->Held.requestIndex = int(this->Plan.inputTimes().size()) - 1;
 }
 
 void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
@@ -145,8 +146,8 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
   using SDDP = vtkStreamingDemandDrivenPipeline;
   if (this->Plan.unsteady())
   {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.inputTimes()[this->RequestIndex]);
-    this->LastRequested = this->RequestIndex;
+    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.inputTimes()[this->Held.requestIndex]);
+    this->Held.lastRequested = this->Held.requestIndex;
   }
   else
   {
@@ -156,7 +157,7 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
 
 void vtkBoundParticleTracerInternals::continueWith(int index)
 {
-  this->RequestIndex = index;
+  this->Held.requestIndex = index;
   this->Continuing = true;
 }
 
@@ -168,7 +169,7 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   this->StepsInLastUpdate = 0;
   this->Migrated = 0;
   this->LastUpdateReplayed = replay;
-  this->ReadThisUpdate = false;
+  this->Held.readThisUpdate = false;
   if (this->Decision.resume >= 0)
   {
     // Back to the latest checkpoint at or before the target: the same state
@@ -209,7 +210,7 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
     // input changes).
     if (!this->Plan.unsteady())
     {
-      this->Cache.clear();
+      this->Held.cache.clear();
     }
   }
 }
@@ -228,8 +229,9 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   {
     // The GPU engine runs in the render, where ParaView 5.11 offers no Abort.
     const std::string note = bp::longReplayNote((target - committed) / this->Schedule->dt(),
-      double(this->Parameters.numberOfElements) * double(this->ParticlesPerElement), committed,
-      target, *queue);
+      double(this->Resolved.parameters.numberOfElements) *
+        double(this->Resolved.particlesPerElement),
+      committed, target, *queue);
     if (!note.empty())
     {
       vtkWarningWithObjectMacro(this->Owner, << note);
@@ -250,17 +252,17 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   while (true)
   {
     const std::vector<int> ids = this->Plan.needed(committed, target);
-    const int missing = this->Cache.firstMissing(ids);
+    const int missing = this->Held.cache.firstMissing(ids);
     if (missing >= 0)
     {
       // Drop what no later step needs before asking for the next time step.
-      this->Cache.dropBefore(ids.front());
+      this->Held.cache.dropBefore(ids.front());
       return Pass::need(missing);
     }
     const double intervalEnd = ids.size() == 2 ? this->Plan.inputTimes()[ids[1]] : target;
     const double limit = std::min(target, intervalEnd);
     const double before = committed;
-    const std::string fieldError = stepper.setField(this->Cache.field(this->Grid, ids));
+    const std::string fieldError = stepper.setField(this->Held.cache.field(this->Held.grid, ids));
     if (!fieldError.empty())
     {
       return Pass::fail(fieldError + ".");
@@ -318,14 +320,15 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::readAhead()
   // update that stays in its interval and read nothing: a frame that crosses
   // a time step has had its share.
   const int upcoming = this->Plan.readAheadIndex(this->target());
-  const bool quietFrame = !this->ReadThisUpdate &&
+  const bool quietFrame = !this->Held.readThisUpdate &&
     this->IntervalAtStart == this->Plan.intervalAt(this->target(), false).front();
-  if (upcoming >= 0 && !this->Cache.has(upcoming) && quietFrame)
+  if (upcoming >= 0 && !this->Held.cache.has(upcoming) && quietFrame)
   {
     return Pass::need(upcoming);
   }
-  stepper.offerUpcoming(
-    upcoming >= 0 && this->Cache.has(upcoming) ? this->Cache.at(upcoming) : bp::FieldSlice());
+  stepper.offerUpcoming(upcoming >= 0 && this->Held.cache.has(upcoming)
+      ? this->Held.cache.at(upcoming)
+      : bp::FieldSlice());
   return Pass();
 }
 
@@ -336,7 +339,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   // boundaries.
   bp::Stepper& stepper = this->stepper();
   const double target = this->target();
-  const bp::VectorField field = this->Cache.field(this->Grid, this->Plan.intervalAt(target, false));
+  const bp::VectorField field =
+    this->Held.cache.field(this->Held.grid, this->Plan.intervalAt(target, false));
   const std::string fieldError = stepper.setField(field);
   if (!fieldError.empty())
   {
@@ -357,14 +361,15 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   {
     bpvtk::OutputFrame frame;
     frame.time = target;
-    frame.offset = this->Offset;
-    frame.domain = this->Layout.domainBounds(this->Grid);
-    const auto local = this->Grid.bounds();
+    frame.offset = this->Held.offset;
+    frame.domain = this->Layout.domainBounds(this->Held.grid);
+    const auto local = this->Held.grid.bounds();
     for (int a = 0; a < 3; ++a)
     {
-      frame.reach = std::max(frame.reach, std::abs(this->Offset[a]) + std::abs(local[2 * a + 1]));
+      frame.reach =
+        std::max(frame.reach, std::abs(this->Held.offset[a]) + std::abs(local[2 * a + 1]));
     }
-    frame.cellLength = this->Grid.cellLength();
+    frame.cellLength = this->Held.grid.cellLength();
     frame.coloringAxis = config.coloringAxis;
     frame.wanted = config.wanted;
     bpvtk::fillParticleOutput(
@@ -405,19 +410,19 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
   bp::WorkQueue& queue = *this->Steppers.queue();
   bp::DrawSettings d = queue.draw();
   d.time = this->target();
-  d.offset = this->Offset;
-  const auto bounds = this->Grid.bounds();
+  d.offset = this->Held.offset;
+  const auto bounds = this->Held.grid.bounds();
   for (int a = 0; a < 3; ++a)
   {
-    d.bounds[2 * a] = bounds[2 * a] + this->Offset[a];
-    d.bounds[2 * a + 1] = bounds[2 * a + 1] + this->Offset[a];
+    d.bounds[2 * a] = bounds[2 * a] + this->Held.offset[a];
+    d.bounds[2 * a + 1] = bounds[2 * a + 1] + this->Held.offset[a];
   }
   d.coloringAxis = config.coloringAxis;
   d.radialCenter = bp::radialCenter(bounds, config.coloringAxis);
   ++d.serial;
   queue.setDraw(d);
   // Two points spanning the field (for the camera and the axes grid).
-  bpvtk::fillRangeOutput(output, this->RangeFacts, d.bounds);
+  bpvtk::fillRangeOutput(output, this->Resolved.rangeFacts, d.bounds);
   vtkNew<vtkIntArray> id;
   id->SetName("BoundParticlesWorkQueue");
   id->InsertNextValue(queue.id());
@@ -427,20 +432,20 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
 void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
 {
   // What the automatic settings came to, for the Information panel and scripts.
-  bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);
-  bpvtk::addFieldValue(output, "ElementSize", this->ResolvedElementSize);
+  bpvtk::addFieldValue(output, "TimeStep", this->Resolved.dt);
+  bpvtk::addFieldValue(output, "ElementSize", this->Resolved.elementSize);
   bpvtk::addFieldValue(output, "SimulationTime", this->target());
-  if (this->Parameters.trailLength > 0)
+  if (this->Resolved.parameters.trailLength > 0)
   {
     // The age at which a trail pose has faded out on the Bound Particles
     // display: one interval past the oldest pose (as its GPU mapper fades).
-    bpvtk::addFieldValue(
-      output, "TrailFadeSpan", (this->Parameters.trailLength + 1) * this->Parameters.trailInterval);
+    bpvtk::addFieldValue(output, "TrailFadeSpan",
+      (this->Resolved.parameters.trailLength + 1) * this->Resolved.parameters.trailInterval);
   }
-  if (this->Resampled)
+  if (this->Held.resampled)
   {
     // The grid a mesh was resampled onto (TracerResample.h).
-    const bp::ResampleGrid& g = this->Resampler.grid();
+    const bp::ResampleGrid& g = this->Held.resampler.grid();
     vtkNew<vtkIntArray> dims;
     dims->SetName("ResampledDimensions");
     vtkNew<vtkDoubleArray> spacing;

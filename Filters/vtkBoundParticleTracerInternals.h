@@ -102,6 +102,35 @@ struct TracerInputStep
   /// ParaView made the point Vectors of a cell array (bpvtk::cellVectorsMadePoints): what to say.
   std::string vectorsFromCells;
 };
+/// The field's time steps the tracer holds (TracerTimeStep.cxx), the grid
+/// they share, and which input time step upstream was asked for and holds.
+struct HeldSteps
+{
+  bp::FieldCache cache;
+  /// Any input but an image or a rectilinear grid, on a uniform grid; its
+  /// located cells and weights are kept while the mesh stays the same.
+  bpvtk::FieldResampler resampler;
+  bool resampled = false; ///< the field came through the resampler
+  // The field, in grid-local coordinates (floats keep their precision far
+  // from the world origin), and where its local origin lies in the world.
+  bp::GridGeometry grid;
+  std::array<double, 3> offset = { 0, 0, 0 };
+  int requestIndex = 0;        ///< the input time step this pass asked for
+  int lastRequested = -1;      ///< the input time step upstream holds
+  bool readThisUpdate = false; ///< a time step came from upstream in this update
+};
+
+/// What the last replay resolved (TracerReplay.cxx).
+struct ResolvedTrace
+{
+  bp::Parameters parameters;
+  bp::TraceSettings settings; ///< what it resolved them from (releaseIntoGrid)
+  double dt = 0.0;
+  double elementSize = 0.0;
+  std::size_t particlesPerElement = 1;
+  bp::RangeFacts rangeFacts; ///< for the GPU display's output
+};
+
 } // namespace bpvtk
 
 class vtkBoundParticleTracerInternals
@@ -122,9 +151,9 @@ public:
   const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
   vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
   bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
-  int timeStepsHeld() const { return int(this->Cache.size()); }
-  double resolvedDt() const { return this->ResolvedDt; }
-  double resolvedElementSize() const { return this->ResolvedElementSize; }
+  int timeStepsHeld() const { return int(this->Held.cache.size()); }
+  double resolvedDt() const { return this->Resolved.dt; }
+  double resolvedElementSize() const { return this->Resolved.elementSize; }
   /// Asked for pieces: this process's piece and the whole extent.
   bool idle() const { return this->Layout.idle(); }
   bool tooSmallToSplit() const { return this->Layout.tooSmallToSplit(); }
@@ -233,7 +262,7 @@ private:
   bp::StreamTimeLine Stream;
   vtkMTimeType StreamSettingsTime = 0;
   std::vector<double> StreamGrid; ///< the grid the last step announced (announcedGrid)
-  bp::FieldCache Cache;
+  bpvtk::HeldSteps Held;          ///< the field's time steps held, and which one upstream has
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;
   bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
@@ -243,26 +272,11 @@ private:
   /// older configuration replays.
   std::uint64_t Configuration = 1;
   bpvtk::SaidOnce Said; ///< the warnings said for this configuration (forgotten by invalidate())
-  /// Any input but an image or a rectilinear grid, on a uniform grid; its
-  /// located cells and weights are kept while the mesh stays the same.
-  bpvtk::FieldResampler Resampler;
-  bool Resampled = false; ///< the field came through the Resampler
   const std::uint64_t ProducerId;
 
   bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
 
-  // The field, in grid-local coordinates (floats keep their precision far
-  // from the world origin), and where its local origin lies in the world.
-  bp::GridGeometry Grid;
-  std::array<double, 3> Offset = { 0, 0, 0 };
-
-  // What the last replay resolved.
-  bp::Parameters Parameters;
-  bp::TraceSettings Settings; ///< what it resolved them from (releaseIntoGrid)
-  double ResolvedDt = 0.0;
-  double ResolvedElementSize = 0.0;
-  std::size_t ParticlesPerElement = 1;
-  bp::RangeFacts RangeFacts; ///< for the GPU display's output
+  bpvtk::ResolvedTrace Resolved; ///< what the last replay resolved
 
   // What the last update did.
   vtkIdType StepsInLastUpdate = 0;
@@ -275,9 +289,6 @@ private:
   vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
   bool Continuing = false;     ///< a later pass of the same update
   bool ReplayPending = false;  ///< this update replays from the start
-  int RequestIndex = 0;        ///< the input time step this pass asked for
-  int LastRequested = -1;      ///< the input time step upstream holds
-  bool ReadThisUpdate = false; ///< a time step came from upstream in this update
   int IntervalAtStart = -1;    ///< the data interval shown before it (-1: a replay)
   double ProgressFrom = 0.0;   ///< where the update's stepping starts
   double ProgressAt = 0.0;     ///< where it stands
