@@ -195,7 +195,7 @@ void vtkBoundParticleTracerInternals::showFtleMap(vtkImageData* image)
   }
   // Collective, so only in an update every process runs in step (as
   // gatherExchange); otherwise nothing moved since the map last gathered.
-  if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+  if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
   {
     bpvtk::fillFtleMap(this->FtleMap, *particles, this->Held.offset, this->Layout.Controller);
   }

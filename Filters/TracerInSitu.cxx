@@ -141,7 +141,7 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
     agreed = full.empty() ? grid : full;
   }
   bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
-    !this->StreamGrid.empty() && bpvtk::gridChanged(this->StreamGrid, agreed);
+    !this->InSitu.grid.empty() && bpvtk::gridChanged(this->InSitu.grid, agreed);
   if (this->Plan.streaming() && this->Layout.distributed())
   {
     // A grid kept before the processes agreed (the first step's) may lack
@@ -156,18 +156,18 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
             "its block of the last step only), so it starts again at the present step.";
     warning = text.str();
   }
-  this->StreamGrid = agreed;
+  this->InSitu.grid = agreed;
   // Upstream changes with every step that arrives; only a change of the
   // filter's settings (or a first step, or a post hoc line before, or a
   // change of grid under MPI) starts the trace again, at the present step.
-  if (!this->Plan.streaming() || settingsTime != this->StreamSettingsTime || regridded)
+  if (!this->Plan.streaming() || settingsTime != this->InSitu.settingsTime || regridded)
   {
     this->forgetTrace();
-    this->Stream.clear();
-    this->StreamSettingsTime = settingsTime;
+    this->InSitu.stream.clear();
+    this->InSitu.settingsTime = settingsTime;
   }
-  const Arrival arrival = this->Stream.offer(time);
-  if (this->Stream.empty())
+  const Arrival arrival = this->InSitu.stream.offer(time);
+  if (this->InSitu.stream.empty())
   {
     // A first step with no usable time: nothing to start from.
     this->Plan = bp::TracePlan();
@@ -178,26 +178,26 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
   }
   // The first step announced again is no step lost (5.11's Catalyst hands
   // its producer the first step twice, and says so itself): refused quietly.
-  const bool firstAgain = arrival == Arrival::Repeat && this->Stream.times().size() == 1;
-  warning += firstAgain ? std::string() : this->Stream.refusal(arrival, time);
-  this->Plan.setStreamTimes(this->Stream.times());
+  const bool firstAgain = arrival == Arrival::Repeat && this->InSitu.stream.times().size() == 1;
+  warning += firstAgain ? std::string() : this->InSitu.stream.refusal(arrival, time);
+  this->Plan.setStreamTimes(this->InSitu.stream.times());
   return std::string();
 }
 
 bpvtk::TracerPass vtkBoundParticleTracerInternals::skipPresentStep(const std::string& error)
 {
-  const bool kept = this->Plan.streaming() && !this->Decision.replay &&
-    this->stepper().cursor.valid && this->Stream.times().size() > 1;
+  const bool kept = this->Plan.streaming() && !this->Update.decision.replay &&
+    this->stepper().cursor.valid && this->InSitu.stream.times().size() > 1;
   if (!kept)
   {
     return Pass::fail(error);
   }
-  const double skipped = this->Stream.present();
-  this->Stream.dropPresent();
-  this->Plan.setStreamTimes(this->Stream.times());
+  const double skipped = this->InSitu.stream.present();
+  this->InSitu.stream.dropPresent();
+  this->Plan.setStreamTimes(this->InSitu.stream.times());
   std::ostringstream text;
   text << error << " The step at t = " << skipped
-       << " is skipped: the trace stays at t = " << this->Stream.present()
+       << " is skipped: the trace stays at t = " << this->InSitu.stream.present()
        << " and the next good step goes on from there.";
   return { Pass::Skipped, -1, text.str() };
 }
@@ -214,7 +214,7 @@ void vtkBoundParticleTracerInternals::relocate(
     return;
   }
   std::ostringstream text;
-  text << "The input's grid changed at t = " << this->Stream.present() << " ("
+  text << "The input's grid changed at t = " << this->InSitu.stream.present() << " ("
        << this->Held.grid.dims[0] << " x " << this->Held.grid.dims[1] << " x "
        << this->Held.grid.dims[2] << " points to " << grid.dims[0] << " x " << grid.dims[1] << " x "
        << grid.dims[2]

@@ -28,7 +28,7 @@ bool vtkBoundParticleTracerInternals::wantsTimeStep()
   // In situ the present step is taken whenever it comes: it will not come again.
   const bool present =
     this->Plan.streaming() && this->Held.requestIndex == int(this->Plan.inputTimes().size()) - 1;
-  const bool wanted = this->Continuing || present ||
+  const bool wanted = this->Update.continuing || present ||
     std::find(planned.begin(), planned.end(), this->Held.requestIndex) != planned.end();
   return wanted && !this->Held.cache.has(this->Held.requestIndex);
 }
@@ -328,7 +328,7 @@ std::string vtkBoundParticleTracerInternals::keepTimeStep(
   this->Held.cache.insert(
     this->Held.requestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
   this->Held.readThisUpdate = true;
-  if (this->Plan.streaming() && this->Schedule && !this->Decision.replay)
+  if (this->Plan.streaming() && this->Schedule && !this->Update.decision.replay)
   {
     // Steps end on every data time step, as post hoc: the present one is
     // new (a step skipped before it got here adds none).

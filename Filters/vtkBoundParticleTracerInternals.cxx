@@ -81,7 +81,7 @@ void vtkBoundParticleTracerInternals::clear()
 {
   this->Steppers.active().cursor.valid = false;
   this->Held.cache.clear();
-  this->Continuing = false;
+  this->Update.continuing = false;
 }
 
 void vtkBoundParticleTracerInternals::forgetTrace()
@@ -95,7 +95,7 @@ void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
 {
   if (skipped)
   {
-    this->Continuing = false;
+    this->Update.continuing = false;
     return;
   }
   this->clear();
@@ -113,7 +113,7 @@ void vtkBoundParticleTracerInternals::decide(
     : this->Plan.targetOf(
         outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   const bp::Stepper& stepper = this->stepper();
-  this->Decision = this->Plan.decide(target, stepper.cursor, this->ProducerId,
+  this->Update.decision = this->Plan.decide(target, stepper.cursor, this->ProducerId,
     this->Configuration, stepper.keepsCheckpoints() ? &stepper.checkpoints() : nullptr);
   if (this->Plan.streaming())
   {
@@ -121,20 +121,20 @@ void vtkBoundParticleTracerInternals::decide(
     return;
   }
   this->Held.requestIndex =
-    this->Plan.firstRequest(this->Decision, this->Held.cache, this->Held.lastRequested);
+    this->Plan.firstRequest(this->Update.decision, this->Held.cache, this->Held.lastRequested);
 }
 
 void vtkBoundParticleTracerInternals::decideInSitu(double target)
 {
-  if (!this->Plan.streamCanGoOn(this->Decision, this->Held.cache))
+  if (!this->Plan.streamCanGoOn(this->Update.decision, this->Held.cache))
   {
     // The past steps are gone: a trace that must start again, or that lost
     // a step it needs, starts again at the present one.
-    this->Stream.restartAtPresent();
-    this->Plan.setStreamTimes(this->Stream.times());
+    this->InSitu.stream.restartAtPresent();
+    this->Plan.setStreamTimes(this->InSitu.stream.times());
     this->Held.cache.clear();
     this->stepper().cursor.valid = false;
-    this->Decision =
+    this->Update.decision =
       this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
   }
   // Upstream is only ever asked for the present.
@@ -158,23 +158,23 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
 void vtkBoundParticleTracerInternals::continueWith(int index)
 {
   this->Held.requestIndex = index;
-  this->Continuing = true;
+  this->Update.continuing = true;
 }
 
 void vtkBoundParticleTracerInternals::begin(const Config& config)
 {
   bp::Stepper& stepper = this->stepper();
-  const bool replay = this->Decision.replay;
+  const bool replay = this->Update.decision.replay;
   this->ReplayPending = replay;
-  this->StepsInLastUpdate = 0;
-  this->Migrated = 0;
-  this->LastUpdateReplayed = replay;
+  this->Update.stepsInLastUpdate = 0;
+  this->Exchange.migrated = 0;
+  this->Update.lastUpdateReplayed = replay;
   this->Held.readThisUpdate = false;
-  if (this->Decision.resume >= 0)
+  if (this->Update.decision.resume >= 0)
   {
     // Back to the latest checkpoint at or before the target: the same state
     // a replay from the start reaches there, bit for bit.
-    stepper.resumeCheckpoint(this->Decision.resume);
+    stepper.resumeCheckpoint(this->Update.decision.resume);
   }
   else if (!replay && stepper.cursor.showsPartialStep)
   {
@@ -183,7 +183,7 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
     stepper.restore();
   }
   stepper.cursor.showsPartialStep = false;
-  this->IntervalAtStart = replay || !this->Plan.unsteady()
+  this->Update.intervalAtStart = replay || !this->Plan.unsteady()
     ? -1
     : this->Plan.intervalAt(stepper.cursor.committed, false).front();
   // An abort ends the update it was asked in, not every later one: VTK 9.2
@@ -191,8 +191,8 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   // without Modified(), which would make this update's output look stale.
   this->Owner->AbortExecute = 0;
   // Progress runs over the whole update, across its passes.
-  this->ProgressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
-  this->ProgressAt = this->ProgressFrom;
+  this->Update.progressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
+  this->Update.progressAt = this->Update.progressFrom;
   if (replay && this->Layout.distributed() && this->Layout.Piece == 0 &&
     config.engine == bp::EngineChoice::Gpu)
   {
@@ -240,8 +240,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   bool aborted = false;
   auto keepGoing = [&](double t)
   {
-    ++this->StepsInLastUpdate;
-    this->ProgressAt = t;
+    ++this->Update.stepsInLastUpdate;
+    this->Update.progressAt = t;
     this->Owner->UpdateProgress(this->progress());
     // In parallel every process must take every step (each exchanges
     // elements with the others), so one process alone cannot stop.
@@ -321,7 +321,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::readAhead()
   // a time step has had its share.
   const int upcoming = this->Plan.readAheadIndex(this->target());
   const bool quietFrame = !this->Held.readThisUpdate &&
-    this->IntervalAtStart == this->Plan.intervalAt(this->target(), false).front();
+    this->Update.intervalAtStart == this->Plan.intervalAt(this->target(), false).front();
   if (upcoming >= 0 && !this->Held.cache.has(upcoming) && quietFrame)
   {
     return Pass::need(upcoming);
@@ -352,7 +352,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     stepper.save();
     stepper.step(committed, target - committed);
     stepper.cursor.showsPartialStep = true;
-    ++this->StepsInLastUpdate;
+    ++this->Update.stepsInLastUpdate;
   }
   this->gatherExchange();
   const bp::Engine* particles = stepper.particles();
@@ -389,15 +389,16 @@ void vtkBoundParticleTracerInternals::gatherExchange()
   {
     return;
   }
-  if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+  if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
   {
     // Collective, so only in an update that every process runs in step
     // with the others: one that took steps (each exchanges elements) or
     // replayed (each shares the field's largest speed).
     const bp::Engine* held = this->stepper().particles();
-    this->ElementsPerProcess = this->Layout.gather(held ? (long long)held->elementCount() : 0);
+    this->Exchange.elementsPerProcess =
+      this->Layout.gather(held ? (long long)held->elementCount() : 0);
   }
-  this->Migrated += this->Steppers.distributed().takeMigrated();
+  this->Exchange.migrated += this->Steppers.distributed().takeMigrated();
   const std::string error = this->Steppers.distributed().takeExchangeError();
   if (!error.empty())
   {
@@ -463,10 +464,10 @@ void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
     // This process's share: ghost layers read, elements sent to other pieces;
     // and the balance: every process's element count (the same on each).
     bpvtk::addFieldValue(output, "GhostLayers", this->Layout.GhostCells);
-    bpvtk::addFieldValue(output, "MigratedElements", double(this->Migrated));
+    bpvtk::addFieldValue(output, "MigratedElements", double(this->Exchange.migrated));
     vtkNew<vtkIdTypeArray> perProcess;
     perProcess->SetName("ElementsPerProcess");
-    for (long long c : this->ElementsPerProcess)
+    for (long long c : this->Exchange.elementsPerProcess)
     {
       perProcess->InsertNextValue(vtkIdType(c));
     }

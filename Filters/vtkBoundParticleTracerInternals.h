@@ -120,6 +120,35 @@ struct HeldSteps
   bool readThisUpdate = false; ///< a time step came from upstream in this update
 };
 
+/// The update in progress over its passes, and what the last update did.
+struct UpdatePass
+{
+  bp::TracePlan::Update decision; ///< made in RequestUpdateExtent
+  bool continuing = false;        ///< a later pass of the same update
+  int intervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
+  double progressFrom = 0.0;      ///< where the update's stepping starts
+  double progressAt = 0.0;        ///< where it stands
+  vtkIdType stepsInLastUpdate = 0;
+  bool lastUpdateReplayed = false;
+};
+
+/// In situ: the times given since the trace started (TracerInSitu.cxx),
+/// the filter's MTime they were given under, and the grid the last step
+/// announced (announcedGrid).
+struct InSituTimeLine
+{
+  bp::StreamTimeLine stream;
+  vtkMTimeType settingsTime = 0;
+  std::vector<double> grid;
+};
+
+/// In parallel, the element exchange of the last steps.
+struct ExchangeReport
+{
+  long long migrated = 0;                    ///< elements this process sent away
+  std::vector<long long> elementsPerProcess; ///< every process's, after the last steps
+};
+
 /// What the last replay resolved (TracerReplay.cxx).
 struct ResolvedTrace
 {
@@ -149,8 +178,8 @@ public:
   double startTime() const { return this->Plan.startTime(); }
   /// The output's time steps (both ports share them).
   const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
-  vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
-  bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
+  vtkIdType stepsInLastUpdate() const { return this->Update.stepsInLastUpdate; }
+  bool lastUpdateReplayed() const { return this->Update.lastUpdateReplayed; }
   int timeStepsHeld() const { return int(this->Held.cache.size()); }
   double resolvedDt() const { return this->Resolved.dt; }
   double resolvedElementSize() const { return this->Resolved.elementSize; }
@@ -179,13 +208,14 @@ public:
   /// The share of the update's stepping done, over all its passes.
   double progress() const
   {
-    const double span = this->target() - this->ProgressFrom;
-    return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
-                      : 0.0;
+    const double span = this->target() - this->Update.progressFrom;
+    return span > 0.0
+      ? std::min(1.0, std::max(0.0, (this->Update.progressAt - this->Update.progressFrom) / span))
+      : 0.0;
   }
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
-  double target() const { return this->Decision.target; }
+  double target() const { return this->Update.decision.target; }
   /// Where the work still to do starts: the start time for a replay not yet
   /// configured, else where the stepper stands (it moves as passes step).
   double steppingFrom()
@@ -229,9 +259,9 @@ public:
   /// the same update.
   void continueWith(int index);
   /// The update's last pass ends here.
-  void finishPasses() { this->Continuing = false; }
+  void finishPasses() { this->Update.continuing = false; }
   /// A later pass of the same update.
-  bool continuing() const { return this->Continuing; }
+  bool continuing() const { return this->Update.continuing; }
   /// This update replays from the start, and has not yet configured.
   bool replayPending() const { return this->ReplayPending; }
 
@@ -257,12 +287,8 @@ public:
 
 private:
   bp::TracePlan Plan;
-  /// In situ: the times given since the trace started (TracerInSitu.cxx),
-  /// and the filter's MTime they were given under.
-  bp::StreamTimeLine Stream;
-  vtkMTimeType StreamSettingsTime = 0;
-  std::vector<double> StreamGrid; ///< the grid the last step announced (announcedGrid)
-  bpvtk::HeldSteps Held;          ///< the field's time steps held, and which one upstream has
+  bpvtk::InSituTimeLine InSitu; ///< in situ, the times given since the trace started
+  bpvtk::HeldSteps Held;        ///< the field's time steps held, and which one upstream has
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;
   bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
@@ -274,24 +300,14 @@ private:
   bpvtk::SaidOnce Said; ///< the warnings said for this configuration (forgotten by invalidate())
   const std::uint64_t ProducerId;
 
-  bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
-
-  bpvtk::ResolvedTrace Resolved; ///< what the last replay resolved
-
-  // What the last update did.
-  vtkIdType StepsInLastUpdate = 0;
-  bool LastUpdateReplayed = false;
-  long long Migrated = 0;                    ///< elements this process sent away
-  std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
+  bpvtk::UpdatePass Update;       ///< the update in progress, and what the last one did
+  bpvtk::ResolvedTrace Resolved;  ///< what the last replay resolved
+  bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
 
-  vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
-  bool Continuing = false;     ///< a later pass of the same update
-  bool ReplayPending = false;  ///< this update replays from the start
-  int IntervalAtStart = -1;    ///< the data interval shown before it (-1: a replay)
-  double ProgressFrom = 0.0;   ///< where the update's stepping starts
-  double ProgressAt = 0.0;     ///< where it stands
+  vtkAlgorithm* const Owner;  ///< for messages, progress and abort only
+  bool ReplayPending = false; ///< this update replays from the start (startTrace clears it)
 
   /// Forgets every trace: each stepper's cursor, and pending GPU work.
   void invalidate();
