@@ -41,6 +41,9 @@ struct TracerConfig
   bool templateInput = false; ///< a template is connected (input 1)
   bool seedSource = false;    ///< a Seed Source is connected (input 2)
   VectorsChoice vectors;      ///< the Vectors property
+  /// Why the Vectors default took this array for its units (the time line's
+  /// check, bpvtk::TracerTimeLine::reasonFor); empty when it did not.
+  std::string vectorsUnitsReason;
   /// Release Weights: the input's array to weigh releases by; empty for none.
   std::string releaseWeights;
   /// Its association (vtkDataObject::FIELD_ASSOCIATION_POINTS or _CELLS).

@@ -190,14 +190,14 @@ void vtkBoundParticleTracerInternals::showFtleMap(vtkImageData* image)
   }
   if (!this->Layout.distributed())
   {
-    bpvtk::fillFtleMap(image, *particles, this->Offset, nullptr);
+    bpvtk::fillFtleMap(image, *particles, this->Held.offset, nullptr);
     return;
   }
   // Collective, so only in an update every process runs in step (as
   // gatherExchange); otherwise nothing moved since the map last gathered.
-  if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+  if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
   {
-    bpvtk::fillFtleMap(this->FtleMap, *particles, this->Offset, this->Layout.Controller);
+    bpvtk::fillFtleMap(this->FtleMap, *particles, this->Held.offset, this->Layout.Controller);
   }
   image->ShallowCopy(this->FtleMap);
 }

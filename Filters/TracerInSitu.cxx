@@ -141,7 +141,7 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
     agreed = full.empty() ? grid : full;
   }
   bool regridded = this->Plan.streaming() && this->Layout.distributed() &&
-    !this->StreamGrid.empty() && bpvtk::gridChanged(this->StreamGrid, agreed);
+    !this->InSitu.grid.empty() && bpvtk::gridChanged(this->InSitu.grid, agreed);
   if (this->Plan.streaming() && this->Layout.distributed())
   {
     // A grid kept before the processes agreed (the first step's) may lack
@@ -156,18 +156,18 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
             "its block of the last step only), so it starts again at the present step.";
     warning = text.str();
   }
-  this->StreamGrid = agreed;
+  this->InSitu.grid = agreed;
   // Upstream changes with every step that arrives; only a change of the
   // filter's settings (or a first step, or a post hoc line before, or a
   // change of grid under MPI) starts the trace again, at the present step.
-  if (!this->Plan.streaming() || settingsTime != this->StreamSettingsTime || regridded)
+  if (!this->Plan.streaming() || settingsTime != this->InSitu.settingsTime || regridded)
   {
     this->forgetTrace();
-    this->Stream.clear();
-    this->StreamSettingsTime = settingsTime;
+    this->InSitu.stream.clear();
+    this->InSitu.settingsTime = settingsTime;
   }
-  const Arrival arrival = this->Stream.offer(time);
-  if (this->Stream.empty())
+  const Arrival arrival = this->InSitu.stream.offer(time);
+  if (this->InSitu.stream.empty())
   {
     // A first step with no usable time: nothing to start from.
     this->Plan = bp::TracePlan();
@@ -178,26 +178,26 @@ std::string vtkBoundParticleTracerInternals::offerStreamTime(
   }
   // The first step announced again is no step lost (5.11's Catalyst hands
   // its producer the first step twice, and says so itself): refused quietly.
-  const bool firstAgain = arrival == Arrival::Repeat && this->Stream.times().size() == 1;
-  warning += firstAgain ? std::string() : this->Stream.refusal(arrival, time);
-  this->Plan.setStreamTimes(this->Stream.times());
+  const bool firstAgain = arrival == Arrival::Repeat && this->InSitu.stream.times().size() == 1;
+  warning += firstAgain ? std::string() : this->InSitu.stream.refusal(arrival, time);
+  this->Plan.setStreamTimes(this->InSitu.stream.times());
   return std::string();
 }
 
 bpvtk::TracerPass vtkBoundParticleTracerInternals::skipPresentStep(const std::string& error)
 {
-  const bool kept = this->Plan.streaming() && !this->Decision.replay &&
-    this->stepper().cursor.valid && this->Stream.times().size() > 1;
+  const bool kept = this->Plan.streaming() && !this->Update.decision.replay &&
+    this->stepper().cursor.valid && this->InSitu.stream.times().size() > 1;
   if (!kept)
   {
     return Pass::fail(error);
   }
-  const double skipped = this->Stream.present();
-  this->Stream.dropPresent();
-  this->Plan.setStreamTimes(this->Stream.times());
+  const double skipped = this->InSitu.stream.present();
+  this->InSitu.stream.dropPresent();
+  this->Plan.setStreamTimes(this->InSitu.stream.times());
   std::ostringstream text;
   text << error << " The step at t = " << skipped
-       << " is skipped: the trace stays at t = " << this->Stream.present()
+       << " is skipped: the trace stays at t = " << this->InSitu.stream.present()
        << " and the next good step goes on from there.";
   return { Pass::Skipped, -1, text.str() };
 }
@@ -205,19 +205,19 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::skipPresentStep(const std::st
 void vtkBoundParticleTracerInternals::relocate(
   const bp::GridGeometry& grid, const bp::FieldSlice& slice)
 {
-  const std::size_t beyond = this->Cache.regrid(this->Grid, grid, slice);
+  const std::size_t beyond = this->Held.cache.regrid(this->Held.grid, grid, slice);
   this->releaseIntoGrid(grid);
-  if (this->WarnedGridChange)
+  // Once per configuration, as the mask's: a simulation that adapts its
+  // grid would say it every step.
+  if (!this->Said.first(bpvtk::Topic::GridChange))
   {
     return;
   }
-  // Once per configuration, as the mask's: a simulation that adapts its
-  // grid would say it every step.
-  this->WarnedGridChange = true;
   std::ostringstream text;
-  text << "The input's grid changed at t = " << this->Stream.present() << " (" << this->Grid.dims[0]
-       << " x " << this->Grid.dims[1] << " x " << this->Grid.dims[2] << " points to "
-       << grid.dims[0] << " x " << grid.dims[1] << " x " << grid.dims[2]
+  text << "The input's grid changed at t = " << this->InSitu.stream.present() << " ("
+       << this->Held.grid.dims[0] << " x " << this->Held.grid.dims[1] << " x "
+       << this->Held.grid.dims[2] << " points to " << grid.dims[0] << " x " << grid.dims[1] << " x "
+       << grid.dims[2]
        << ", or their coordinates): the elements keep their places and go on in the new grid. "
           "Until then the field blends the last step, resampled onto the new grid, with the "
           "present one";
@@ -236,22 +236,22 @@ void vtkBoundParticleTracerInternals::releaseIntoGrid(const bp::GridGeometry& gr
   // Only a trace under way has an emitter box to move (a replay resolves
   // its own from the present grid); seed points are taken where they fit
   // in the new grid, and a lattice's points outside it stay hidden.
-  if (!this->stepper().cursor.valid || this->Settings.seeded)
+  if (!this->stepper().cursor.valid || this->Resolved.settings.seeded)
   {
     return;
   }
   bp::FieldFacts facts;
   facts.bounds = grid.bounds(); // in the engine's frame, which stays the trace's
-  facts.offset = this->Offset;
+  facts.offset = this->Held.offset;
   facts.dims = grid.dims;
   const bp::EmitterBox box =
-    bp::emitterInChangedField(this->Settings, facts, this->ResolvedElementSize);
-  this->Parameters.emitterMin = box.min;
-  this->Parameters.emitterMax = box.max;
+    bp::emitterInChangedField(this->Resolved.settings, facts, this->Resolved.elementSize);
+  this->Resolved.parameters.emitterMin = box.min;
+  this->Resolved.parameters.emitterMax = box.max;
   this->stepper().setEmitter(box.min, box.max);
-  if (!box.warning.empty() && box.warning != this->WarnedEmitter)
+  // Said again only when it says something new (recorded even when empty).
+  if (this->Said.first(bpvtk::Topic::Emitter, box.warning) && !box.warning.empty())
   {
     vtkWarningWithObjectMacro(this->Owner, << box.warning);
   }
-  this->WarnedEmitter = box.warning;
 }

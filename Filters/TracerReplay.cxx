@@ -22,7 +22,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   const Config& config, vtkInformationVector** inputVector)
 {
   const std::vector<int> ids = this->Plan.needed(this->Plan.startTime(), this->target());
-  const int missing = this->Cache.firstMissing(ids);
+  const int missing = this->Held.cache.firstMissing(ids);
   if (missing >= 0)
   {
     return Pass::need(missing);
@@ -32,7 +32,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
     return Pass::fail("Super sets (Linking) run in one process; in parallel (" +
       std::to_string(this->Layout.Pieces) + " processes) set Linking to None.");
   }
-  const bp::VectorField field = this->Cache.field(this->Grid, ids);
+  const bp::VectorField field = this->Held.cache.field(this->Held.grid, ids);
   bpvtk::TracerSeeds seeds;
   const std::string seedError = this->gatherSeeds(config, inputVector, field, seeds);
   if (!seedError.empty())
@@ -50,7 +50,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
     seeds.xyz.clear();
   }
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
-  this->Settings = settings;
+  this->Resolved.settings = settings;
   for (const std::string& warning : resolved.warnings)
   {
     vtkWarningWithObjectMacro(this->Owner, << warning);
@@ -59,11 +59,11 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   {
     return Pass::fail(resolved.error);
   }
-  this->ResolvedDt = resolved.dt;
-  this->ResolvedElementSize = resolved.elementSize;
+  this->Resolved.dt = resolved.dt;
+  this->Resolved.elementSize = resolved.elementSize;
   if (this->needMoreGhostLayers(resolved, facts))
   {
-    this->Cache.clear();
+    this->Held.cache.clear();
     return Pass::need(ids.front());
   }
   const Pass configured = this->configureStepper(config, inputVector, field, resolved, seeds);
@@ -103,7 +103,7 @@ std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
     this->seedTypePoints(config, field, seeds);
     const std::string unusable =
       config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
-    if (!unusable.empty() && !this->WarnedSeeds)
+    if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
     {
       vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
     }
@@ -137,10 +137,10 @@ bp::FieldFacts vtkBoundParticleTracerInternals::fieldFacts(const bp::VectorField
 {
   bp::FieldFacts facts;
   // The whole field's, also in parallel where this process holds a piece.
-  facts.bounds = this->Layout.domainBounds(this->Grid);
-  facts.offset = this->Offset;
-  facts.dims = this->Layout.wholeDims(this->Grid); // its flat axes, as keepInPlane's
-  facts.cellLength = this->Layout.cellLength(this->Grid);
+  facts.bounds = this->Layout.domainBounds(this->Held.grid);
+  facts.offset = this->Held.offset;
+  facts.dims = this->Layout.wholeDims(this->Held.grid); // its flat axes, as keepInPlane's
+  facts.cellLength = this->Layout.cellLength(this->Held.grid);
   facts.maxSpeed = field.maxSpeed();
   if (this->Layout.distributed())
   {
@@ -293,13 +293,13 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::configureStepper(const Config
       *this->Layout.Partition, this->Layout.Domain, this->Layout.Piece);
   }
   stepper.initialize(this->Plan.startTime());
-  this->Parameters = p;
-  this->ParticlesPerElement = shape.particleCount();
+  this->Resolved.parameters = p;
+  this->Resolved.particlesPerElement = shape.particleCount();
   if (this->Steppers.queue())
   {
     // The display's output has no particles: it carries the ranges they span.
-    this->RangeFacts = bp::rangeFactsOf(field, p, resolved.dt, config.coloringAxis, this->Offset,
-      this->Grid.bounds(), shape.particleCount());
+    this->Resolved.rangeFacts = bp::rangeFactsOf(field, p, resolved.dt, config.coloringAxis,
+      this->Held.offset, this->Held.grid.bounds(), shape.particleCount());
   }
   return Pass();
 }
@@ -309,7 +309,7 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
 {
   const bool weighted = !config.releaseWeights.empty() && p.seedPoints.empty() &&
     p.releasePattern == bp::ReleasePattern::Random && p.linking == bp::Linking::None;
-  if (!weighted || this->WarnedWeights)
+  if (!weighted || this->Said.said(bpvtk::Topic::Weights))
   {
     return; // not used, or already said to be unusable
   }
@@ -321,9 +321,8 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
   const bp::ReleaseMask mask = this->Layout.distributed()
     ? this->Layout.releaseMask()(field, p.releaseMinSpeed)
     : bp::releaseMaskOf(field, p.releaseMinSpeed);
-  if (any && !mask.weights)
+  if (any && !mask.weights && this->Said.first(bpvtk::Topic::Weights))
   {
-    this->WarnedWeights = true;
     vtkWarningWithObjectMacro(this->Owner,
       "Release Weights: the array '"
         << config.releaseWeights
@@ -335,7 +334,7 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
 void vtkBoundParticleTracerInternals::startTrace(const Config& config)
 {
   this->Storage.reset(); // the element count or shape may have changed
-  this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->ResolvedDt,
+  this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->Resolved.dt,
     this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
   bp::Stepper& stepper = this->stepper();
   stepper.dropCheckpoints();
@@ -362,12 +361,12 @@ bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const C
   // (Engine::recordWords, the same on every process), so that every process
   // keeps its checkpoints at the same steps.
   const double stateBytes = 4.0 * double(particles->recordWords()) *
-    double(std::max<long long>(this->Parameters.numberOfElements, 1));
+    double(std::max<long long>(this->Resolved.parameters.numberOfElements, 1));
   // Automatic: half the whole trace's size (engine and output), the same
   // estimate that refuses a trace too large for the process.
   const double asked = config.checkpointMemory < 0.0
-    ? 0.5 * bp::traceBytes(particles->shape(), this->Parameters)
+    ? 0.5 * bp::traceBytes(particles->shape(), this->Resolved.parameters)
     : config.checkpointMemory * 1048576.0;
   const double budget = std::min(asked, 0.5 * bp::allocatableBytes());
-  return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->ResolvedDt));
+  return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->Resolved.dt));
 }

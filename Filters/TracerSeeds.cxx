@@ -200,7 +200,7 @@ void vtkBoundParticleTracerInternals::seedTypePoints(
     const std::size_t a = i % 3;
     if (flat[a])
     {
-      seeds.xyz[i] = double(domain.lower[a]) + this->Offset[a];
+      seeds.xyz[i] = double(domain.lower[a]) + this->Held.offset[a];
     }
   }
 }
@@ -229,7 +229,7 @@ std::string vtkBoundParticleTracerInternals::seedPoints(
   for (std::size_t i = 0; i < std::min(seeds.xyz.size() / 3, bp::MaxSeedPoints); ++i)
   {
     float x[3];
-    if (!localPoint(seeds.xyz, i, this->Offset, x))
+    if (!localPoint(seeds.xyz, i, this->Held.offset, x))
     {
       ++n.nonFinite;
       continue;
@@ -252,11 +252,10 @@ std::string vtkBoundParticleTracerInternals::seedPoints(
   {
     return noSeedInFlow(seeds.name, used, n);
   }
-  if (!this->WarnedSeeds)
+  if (this->Said.first(bpvtk::Topic::Seeds))
   {
     // Once per configuration: a replay (going back in time, another
     // display's update) would say it again.
-    this->WarnedSeeds = true;
     warnOfSeeds(this->Owner, seeds, used, n, p);
   }
   return std::string();

@@ -27,10 +27,10 @@ bool vtkBoundParticleTracerInternals::wantsTimeStep()
   const std::vector<int> planned = this->Plan.needed(this->steppingFrom(), this->target());
   // In situ the present step is taken whenever it comes: it will not come again.
   const bool present =
-    this->Plan.streaming() && this->RequestIndex == int(this->Plan.inputTimes().size()) - 1;
-  const bool wanted = this->Continuing || present ||
-    std::find(planned.begin(), planned.end(), this->RequestIndex) != planned.end();
-  return wanted && !this->Cache.has(this->RequestIndex);
+    this->Plan.streaming() && this->Held.requestIndex == int(this->Plan.inputTimes().size()) - 1;
+  const bool wanted = this->Update.continuing || present ||
+    std::find(planned.begin(), planned.end(), this->Held.requestIndex) != planned.end();
+  return wanted && !this->Held.cache.has(this->Held.requestIndex);
 }
 
 std::string vtkBoundParticleTracerInternals::takeTimeStep(
@@ -45,12 +45,11 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
   {
     this->noteVectors(config, input);
   }
-  else if (!this->WarnedCellVectors)
+  else if (this->Said.first(bpvtk::Topic::CellVectors))
   {
     // Instead of the choice's note, which would list the cell array as another.
     // Once per configuration, as the mask's; in situ at the first step that
     // holds only the cell array.
-    this->WarnedCellVectors = true;
     vtkWarningWithObjectMacro(this->Owner, << step.vectorsFromCells);
   }
   vtkDataArray* vectors = step.vectors;
@@ -65,7 +64,7 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
       return resampleError; // every process fails alike
     }
     input = resampled;
-    requested = this->Resampler.arrayName();
+    requested = this->Held.resampler.arrayName();
     vectors = resampled->GetPointData()->GetArray(requested.c_str());
     association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   }
@@ -95,7 +94,7 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
   std::string maskProblem;
   std::string error = bpvtk::readSlice(
     input, vectors, association, grid, slice, extent, nonFinite, requested, &maskProblem);
-  this->Resampled = resampled != nullptr;
+  this->Held.resampled = resampled != nullptr;
   if (error.empty())
   {
     this->warnOfSlice(maskProblem, nonFinite, grid.pointCount());
@@ -130,11 +129,8 @@ void vtkBoundParticleTracerInternals::noteVectors(const Config& config, vtkDataO
 {
   // Said once for each choice among an input's arrays, by one process.
   // The Vectors default that preferred an array whose units fit says so.
-  const bool preferred = !this->UnitsFittingVectors.empty() &&
-    config.vectors.name == this->UnitsFittingVectors &&
-    config.vectors.association == vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  const std::string note = bpvtk::describeVectorsChoice(input, config.vectors.name,
-    config.vectors.association, preferred ? this->UnitsReason : std::string());
+  const std::string note = bpvtk::describeVectorsChoice(
+    input, config.vectors.name, config.vectors.association, config.vectorsUnitsReason);
   if (note != this->SaidVectors && (!this->Layout.distributed() || this->Layout.Piece == 0))
   {
     if (!note.empty())
@@ -186,9 +182,8 @@ void vtkBoundParticleTracerInternals::keepInPlane(
     dropped = this->Layout.globalMax(dropped);
     inPlane = float(this->Layout.globalMax(inPlane));
   }
-  if (dropped > 0.0 && !this->WarnedOutOfPlane)
+  if (dropped > 0.0 && this->Said.first(bpvtk::Topic::OutOfPlane)) // once, as the mask's
   {
-    this->WarnedOutOfPlane = true; // once per configuration, as the mask's
     std::string axes;
     for (int a = 0; a < 3; ++a)
     {
@@ -208,13 +203,12 @@ void vtkBoundParticleTracerInternals::takeReleaseWeights(
   // Collective in a distributed run, as every process reads in this pass.
   // A resampled mesh's weights are the grid's point array, whichever
   // association the mesh's had (FieldResampler::setReleaseWeights).
-  const int association = this->Resampled ? int(vtkDataObject::FIELD_ASSOCIATION_POINTS)
-                                          : config.releaseWeightsAssociation;
+  const int association = this->Held.resampled ? int(vtkDataObject::FIELD_ASSOCIATION_POINTS)
+                                               : config.releaseWeightsAssociation;
   const std::string warning = bpvtk::readReleaseWeights(input, config.releaseWeights, association,
     this->Layout.distributed() ? this->Layout.Controller : nullptr, slice);
-  if (!warning.empty() && !this->WarnedWeights)
+  if (!warning.empty() && this->Said.first(bpvtk::Topic::Weights)) // once, as the mask's
   {
-    this->WarnedWeights = true; // once per configuration, as the mask's
     vtkWarningWithObjectMacro(this->Owner, << warning);
   }
 }
@@ -222,15 +216,13 @@ void vtkBoundParticleTracerInternals::takeReleaseWeights(
 void vtkBoundParticleTracerInternals::warnOfSlice(
   const std::string& maskProblem, std::size_t nonFinite, std::size_t points)
 {
-  if (!maskProblem.empty() && !this->WarnedMask)
+  if (!maskProblem.empty() && this->Said.first(bpvtk::Topic::Mask)) // once, as below
   {
-    this->WarnedMask = true; // once per configuration, as below
     vtkWarningWithObjectMacro(this->Owner, << maskProblem);
   }
-  if (nonFinite > 0 && !this->WarnedNonFinite)
+  if (nonFinite > 0 && this->Said.first(bpvtk::Topic::NonFinite))
   {
     // Once per configuration: an unsteady input would say it every frame.
-    this->WarnedNonFinite = true;
     vtkWarningWithObjectMacro(this->Owner,
       << nonFinite << " of " << points << " grid points ("
       << 100.0 * double(nonFinite) / double(points)
@@ -243,7 +235,7 @@ double vtkBoundParticleTracerInternals::sliceTime(vtkDataObject* input)
 {
   // In situ the first step is shown steady but is the start of the time line.
   const double time = this->Plan.unsteady() || this->Plan.streaming()
-    ? this->Plan.inputTimes()[this->RequestIndex]
+    ? this->Plan.inputTimes()[this->Held.requestIndex]
     : 0.0;
   vtkInformation* data = input->GetInformation();
   if (this->Plan.unsteady() && data->Has(vtkDataObject::DATA_TIME_STEP()))
@@ -264,18 +256,17 @@ std::string vtkBoundParticleTracerInternals::resampleInput(
 {
   vtkNew<vtkImageData> whole;
   std::string warning;
-  this->Resampler.setReleaseWeights(config.releaseWeights, config.releaseWeightsAssociation);
-  if (this->Cache.size() == 0)
+  this->Held.resampler.setReleaseWeights(config.releaseWeights, config.releaseWeightsAssociation);
+  if (this->Held.cache.size() == 0)
   {
-    this->Resampler.forgetGrid(); // no time step holds the last one
+    this->Held.resampler.forgetGrid(); // no time step holds the last one
   }
-  const std::string error = this->Resampler.resample(input, config.vectors,
+  const std::string error = this->Held.resampler.resample(input, config.vectors,
     config.resampleDimensions, this->Layout.Controller, this->Steppers.runner(), whole, warning);
-  if (!warning.empty() && warning != this->WarnedResample)
+  if (!warning.empty() && this->Said.first(bpvtk::Topic::Resample, warning))
   {
     // Once per configuration, as the mask's, and again only when it says
     // something new (a later time step's mesh beyond the grid).
-    this->WarnedResample = warning;
     vtkWarningWithObjectMacro(this->Owner, << warning);
   }
   if (error.empty())
@@ -293,11 +284,11 @@ vtkDataArray* vtkBoundParticleTracerInternals::probeGrid(
     global && global->GetNumberOfProcesses() > 1 ? global : nullptr;
   vtkNew<vtkImageData> image;
   std::string warning;
-  if (this->Cache.size() == 0)
+  if (this->Held.cache.size() == 0)
   {
-    this->Resampler.forgetGrid(); // no time step holds the last one
+    this->Held.resampler.forgetGrid(); // no time step holds the last one
   }
-  if (!this->Resampler
+  if (!this->Held.resampler
          .resample(data, config.vectors, config.resampleDimensions, controller,
            this->Steppers.runner(), image, warning)
          .empty())
@@ -305,7 +296,7 @@ vtkDataArray* vtkBoundParticleTracerInternals::probeGrid(
     return nullptr; // the update says why
   }
   grid = image;
-  return image->GetPointData()->GetArray(this->Resampler.arrayName().c_str());
+  return image->GetPointData()->GetArray(this->Held.resampler.arrayName().c_str());
 }
 
 std::string vtkBoundParticleTracerInternals::keepTimeStep(
@@ -322,26 +313,26 @@ std::string vtkBoundParticleTracerInternals::keepTimeStep(
   // from the world origin.
   grid.translate(offset);
   const std::string gridError =
-    this->Cache.size() > 0 ? this->matchHeldGrid(grid, offset, slice) : std::string();
+    this->Held.cache.size() > 0 ? this->matchHeldGrid(grid, offset, slice) : std::string();
   if (!gridError.empty())
   {
     return gridError;
   }
-  this->Offset = offset;
-  this->Grid = grid;
+  this->Held.offset = offset;
+  this->Held.grid = grid;
   const std::string fieldError = bp::VectorField(grid, slice).validate();
   if (!fieldError.empty())
   {
     return "Unusable input: " + fieldError + ".";
   }
-  this->Cache.insert(
-    this->RequestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
-  this->ReadThisUpdate = true;
-  if (this->Plan.streaming() && this->Schedule && !this->Decision.replay)
+  this->Held.cache.insert(
+    this->Held.requestIndex, slice, this->Plan.needed(this->steppingFrom(), this->target()));
+  this->Held.readThisUpdate = true;
+  if (this->Plan.streaming() && this->Schedule && !this->Update.decision.replay)
   {
     // Steps end on every data time step, as post hoc: the present one is
     // new (a step skipped before it got here adds none).
-    this->Schedule->addBreak(this->Plan.inputTimes()[this->RequestIndex]);
+    this->Schedule->addBreak(this->Plan.inputTimes()[this->Held.requestIndex]);
   }
   return std::string();
 }
@@ -349,11 +340,11 @@ std::string vtkBoundParticleTracerInternals::keepTimeStep(
 std::string vtkBoundParticleTracerInternals::matchHeldGrid(
   bp::GridGeometry& grid, std::array<double, 3>& offset, const bp::FieldSlice& slice)
 {
-  const double tolerance = 1e-9 * std::max(1.0, this->Grid.diagonal());
-  bool same = grid.sameAs(this->Grid, tolerance);
+  const double tolerance = 1e-9 * std::max(1.0, this->Held.grid.diagonal());
+  bool same = grid.sameAs(this->Held.grid, tolerance);
   for (int a = 0; a < 3; ++a)
   {
-    same = same && std::abs(offset[a] - this->Offset[a]) <= tolerance;
+    same = same && std::abs(offset[a] - this->Held.offset[a]) <= tolerance;
   }
   if (same)
   {
@@ -370,11 +361,11 @@ std::string vtkBoundParticleTracerInternals::matchHeldGrid(
   std::array<double, 3> shift;
   for (int a = 0; a < 3; ++a)
   {
-    shift[a] = this->Offset[a] - offset[a];
+    shift[a] = this->Held.offset[a] - offset[a];
   }
   grid.translate(shift);
-  offset = this->Offset;
-  if (!grid.sameAs(this->Grid, tolerance))
+  offset = this->Held.offset;
+  if (!grid.sameAs(this->Held.grid, tolerance))
   {
     this->relocate(grid, slice);
   }

@@ -10,6 +10,7 @@
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
 #include "TracerInput.h"
+#include "TracerTimeLine.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
 
@@ -49,6 +50,7 @@ vtkStandardNewMacro(vtkBoundParticleTracer);
 
 vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkBoundParticleTracerInternals(this))
+  , TimeLine(new bpvtk::TracerTimeLine(this))
 {
   this->SetNumberOfInputPorts(3);
   // The elements, and the FTLE map of a lattice release (TracerFtleMap.h).
@@ -92,7 +94,7 @@ bool vtkBoundParticleTracer::GetLastUpdateReplayed() const
 }
 vtkIdType vtkBoundParticleTracer::GetCheckpointSpacing() const
 {
-  return this->Internals->checkpointSpacing().every;
+  return this->Internals->checkpointEvery();
 }
 int vtkBoundParticleTracer::GetNumberOfCachedTimeSteps() const
 {
@@ -109,14 +111,14 @@ double vtkBoundParticleTracer::GetResolvedElementSize() const
 
 const char* vtkBoundParticleTracer::GetUnitsMismatchedVectors()
 {
-  this->CheckHeldInput();
-  return this->Internals->UnitsMismatchedVectors.c_str();
+  this->TimeLine->checkHeldInput(this->TimeLineProperties());
+  return this->TimeLine->mismatchedVectors().c_str();
 }
 
 const char* vtkBoundParticleTracer::GetUnitsFittingVectors()
 {
-  this->CheckHeldInput();
-  return this->Internals->UnitsFittingVectors.c_str();
+  this->TimeLine->checkHeldInput(this->TimeLineProperties());
+  return this->TimeLine->fittingVectors().c_str();
 }
 
 bp::TraceSettings vtkBoundParticleTracer::Settings() const
@@ -198,6 +200,7 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   c.vectors.association = vectors && vectors->Has(vtkDataObject::FIELD_ASSOCIATION())
     ? vectors->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  c.vectorsUnitsReason = this->TimeLine->reasonFor(c.vectors.name, c.vectors.association);
   // Release Weights: input array 1, "None" (the panel's) or unset for none.
   vtkInformation* weights = this->GetInputArrayInformation(1);
   const char* weightsName = weights && weights->Has(vtkDataObject::FIELD_NAME())
@@ -209,6 +212,17 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   c.trace.weighted = !c.releaseWeights.empty();
   return c;
+}
+
+bpvtk::TimeLineSettings vtkBoundParticleTracer::TimeLineProperties() const
+{
+  bpvtk::TimeLineSettings s;
+  s.duration = this->Duration;
+  s.framesPerInputStep = this->FramesPerInputStep;
+  s.numberOfTimeSteps = this->NumberOfTimeSteps;
+  s.stepSize = this->StepSize;
+  s.stepInCellLengths = this->StepSizeUnit == bp::StepUnit::CellLength;
+  return s;
 }
 
 bpvtk::TracerInputStep vtkBoundParticleTracer::InputStep(vtkInformationVector** inputVector)
@@ -286,6 +300,108 @@ vtkMTimeType vtkBoundParticleTracer::GetMTime()
   const vtkMTimeType own =
     std::max(this->Superclass::GetMTime(), this->OutputArraySelection->GetMTime());
   return this->SeedType ? std::max(own, this->SeedType->GetMTime()) : own;
+}
+
+int vtkBoundParticleTracer::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The time line it offers: post hoc from the input's time steps
+  // (bpvtk::TracerTimeLine), in situ one present step at a time.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (bpvtk::offersOnlyPresent(inInfo))
+  {
+    return this->RequestStreamInformation(inInfo, outputVector);
+  }
+  // The pipeline asks for information again only when this filter or
+  // something upstream changed: the trace is stale (first: the probe's
+  // resampler then forgets its grid).
+  this->Internals->forgetTrace();
+  const std::vector<double> inputTimes = bpvtk::TracerTimeLine::inputTimeSteps(inInfo);
+  const bpvtk::TracerConfig config = this->Config();
+  const bpvtk::TimeLineSettings settings = this->TimeLineProperties();
+  const bool automatic = settings.automatic(inputTimes);
+  // Before Vectors is chosen (a tracer just made, whose default comes next:
+  // vtkSMBoundParticleVectorsDomain) its warnings wait for an update.
+  const bool unchosen = config.vectors.name.empty();
+  const bool checksUnits = this->TimeLine->beginUnitsCheck(unchosen);
+  // The field is probed once here where the time line is automatic or the
+  // FTLE map's extent (a lattice release's) depends on it.
+  bpvtk::FieldProbe probe;
+  if ((automatic || bpvtk::mapsLattice(config)) && inInfo->Has(vtkDataObject::DATA_OBJECT()))
+  {
+    const bpvtk::DeliveredInput delivered(this->GetInputConnection(0, 0), inInfo, inputTimes);
+    probe = this->ProbeDelivered(delivered.data(), inInfo, inputTimes);
+    if (checksUnits && unchosen && automatic && bpvtk::TracerTimeLine::isSerialRun())
+    {
+      this->TimeLine->preferFittingVectors(settings, delivered.data(), inInfo, inputTimes);
+    }
+  }
+  bp::TimeScale scale = automatic ? probe.scale : bp::TimeScale();
+  if (automatic && probe.read)
+  {
+    // Heavy particles settle: the time line follows gravity where it is faster.
+    scale.gravitySpeed = bp::gravityMotion(config.trace.engine, probe.facts).speed;
+  }
+  const bp::TimeLine line = this->TimeLine->resolve(settings, inputTimes, scale, unchosen);
+  const std::string error = this->Internals->setTimes(
+    inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+  }
+  bpvtk::TracerTimeLine::announce(
+    outputVector, error.empty() ? &this->Internals->outputTimes() : nullptr, config, probe);
+  return 1;
+}
+
+int vtkBoundParticleTracer::RequestStreamInformation(
+  vtkInformation* inInfo, vtkInformationVector* outputVector)
+{
+  const double time = bpvtk::presentTime(inInfo);
+  std::string warning;
+  // Upstream changes with every step that arrives; only a change of this
+  // filter's settings starts the trace again.
+  const std::string error =
+    this->Internals->offerStreamTime(this->GetMTime(), time, bpvtk::announcedGrid(inInfo), warning);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+  }
+  const bpvtk::TracerConfig config = this->Config();
+  bpvtk::TracerTimeLine::announce(outputVector,
+    error.empty() ? &this->Internals->outputTimes() : nullptr, config,
+    error.empty() && bpvtk::mapsLattice(config) && inInfo->Has(vtkDataObject::DATA_OBJECT())
+      ? this->ProbeField(inInfo, { time })
+      : bpvtk::FieldProbe());
+  return 1;
+}
+
+bpvtk::FieldProbe vtkBoundParticleTracer::ProbeField(
+  vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  const bpvtk::DeliveredInput delivered(this->GetInputConnection(0, 0), inInfo, inputTimes);
+  return this->ProbeDelivered(delivered.data(), inInfo, inputTimes);
+}
+
+bpvtk::FieldProbe vtkBoundParticleTracer::ProbeDelivered(
+  vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes)
+{
+  return bpvtk::probeDelivered(data, inInfo, inputTimes,
+    [this](vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid, int& association)
+    {
+      if (bpvtk::FieldResampler::needed(data))
+      {
+        return this->Internals->probeGrid(this->Config(), data, grid);
+      }
+      grid = data;
+      // Only a dataset has arrays to choose from (readSlice says what else came).
+      return vtkDataSet::SafeDownCast(data) ? this->GetInputArrayToProcess(0, data, association)
+                                            : nullptr;
+    });
 }
 
 int vtkBoundParticleTracer::RequestUpdateExtent(
@@ -425,11 +541,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
   // The time line's warnings of an update whose Vectors is still not chosen.
-  if (!I.PendingTimeLine.empty())
-  {
-    this->SayTimeLineWarnings(I.PendingTimeLine);
-    I.PendingTimeLine.clear();
-  }
+  this->TimeLine->sayPending();
   if (!I.hasTimes())
   {
     return end(Pass::fail("The filter has no time range; see the previous error."));

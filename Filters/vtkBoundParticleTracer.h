@@ -44,7 +44,6 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
-#include <tuple>  // for std::tuple
 #include <vector> // for std::vector
 
 class vtkBoundParticleSeedType;
@@ -57,8 +56,6 @@ class vtkPolyData;
 namespace bp
 {
 struct TraceSettings;
-struct TimeLine;
-struct TimeScale;
 }
 namespace bpvtk
 {
@@ -66,6 +63,8 @@ struct FieldProbe;
 struct TracerConfig;
 struct TracerInputStep;
 struct TracerPass;
+struct TimeLineSettings;
+class TracerTimeLine;
 }
 #endif
 
@@ -523,41 +522,15 @@ protected:
   /// What this pass brought on input 0: the data, and the Vectors array
   /// when it is a dataset traced as it is.
   bpvtk::TracerInputStep InputStep(vtkInformationVector** inputVector);
-  /// Whether the time line is automatic (Duration, or FramesPerInputStep
-  /// for an input with time steps), so it needs the field's scale.
-  bool AutomaticTimeLine(const std::vector<double>& inputTimes) const;
+  /// The properties that make the time line (bpvtk::TracerTimeLine).
+  bpvtk::TimeLineSettings TimeLineProperties() const;
   /// RequestInformation for an input that offers only its present time step
   /// (in situ, `TracerInSitu.h`): the trace advances with each step.
   int RequestStreamInformation(vtkInformation* inInfo, vtkInformationVector* outputVector);
-  /// Both outputs' time steps and range, the internals' (none without
-  /// `hasTimes`), and the FTLE map's extent from `probe`.
-  void AnnounceTimes(vtkInformationVector* outputVector, bool hasTimes,
-    const bpvtk::TracerConfig& config, const bpvtk::FieldProbe& probe);
   /// The field's facts, read once upstream (TracerFieldProbe.h; collective).
   bpvtk::FieldProbe ProbeField(vtkInformation* inInfo, const std::vector<double>& inputTimes);
   /// The probe of the data the input delivered (bpvtk::DeliveredInput).
   bpvtk::FieldProbe ProbeDelivered(
-    vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes);
-  /// The time line to offer: Duration or FramesPerInputStep, automatic ones
-  /// from the field's `scale` (probed upstream); warns of mismatched units.
-  /// `unchosen`: Vectors is not chosen yet, and its warnings wait for an
-  /// update that still has none (Internals' PendingTimeLine).
-  bp::TimeLine ResolveTimeLine(
-    const std::vector<double>& inputTimes, const bp::TimeScale& scale, bool unchosen = false);
-  /// The time line's warnings, each said once (not again at the next request).
-  void SayTimeLineWarnings(const std::vector<std::string>& warnings);
-  /// The input the units check was of: its producer, port and pipeline
-  /// MTime.
-  using UnitsCheckKey = std::tuple<const void*, int, vtkMTimeType>;
-  UnitsCheckKey InputKey();
-  /// GetUnitsFittingVectors() and GetUnitsMismatchedVectors() of an input
-  /// RequestInformation has not seen yet: of the data it holds, nothing
-  /// updated (pvpython sets the Vectors default as soon as Input is set).
-  void CheckHeldInput();
-  /// The time line's units check of the 3-component point arrays of `data`
-  /// (what the input delivered to the probe): fills
-  /// GetUnitsFittingVectors() and GetUnitsMismatchedVectors().
-  void PreferFittingVectors(
     vtkDataObject* data, vtkInformation* inInfo, const std::vector<double>& inputTimes);
 #endif
 
@@ -616,6 +589,10 @@ private:
   void operator=(const vtkBoundParticleTracer&) = delete;
 
   std::unique_ptr<vtkBoundParticleTracerInternals> Internals;
+#ifndef __VTK_WRAP__
+  /// The time line offered, its warnings, and the Vectors default's units check.
+  std::unique_ptr<bpvtk::TracerTimeLine> TimeLine;
+#endif
 };
 
 #endif

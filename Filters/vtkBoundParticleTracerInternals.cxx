@@ -59,22 +59,6 @@ std::string vtkBoundParticleTracerInternals::setTimes(const std::vector<double>&
   return this->Plan.setTimes(inputTimes, duration, numberOfTimeSteps, framesPerInterval);
 }
 
-std::vector<std::string> vtkBoundParticleTracerInternals::unsaid(
-  const std::vector<std::string>& warnings)
-{
-  std::vector<std::string> fresh;
-  for (const std::string& warning : warnings)
-  {
-    if (std::find(this->SaidTimeLine.begin(), this->SaidTimeLine.end(), warning) ==
-      this->SaidTimeLine.end())
-    {
-      fresh.push_back(warning);
-    }
-  }
-  this->SaidTimeLine = warnings;
-  return fresh;
-}
-
 void vtkBoundParticleTracerInternals::requestPieces(
   vtkInformation* outInfo, vtkInformation* inInfo, bool mesh)
 {
@@ -89,37 +73,29 @@ void vtkBoundParticleTracerInternals::requestPieces(
 void vtkBoundParticleTracerInternals::invalidate()
 {
   ++this->Configuration;
-  this->WarnedNonFinite = false;
-  this->WarnedMask = false;
-  this->WarnedResample.clear();
-  this->WarnedWeights = false;
-  this->WarnedSeeds = false;
-  this->WarnedOutOfPlane = false;
-  this->WarnedGridChange = false;
-  this->WarnedCellVectors = false;
-  this->WarnedEmitter.clear();
+  this->Said.forget();
   this->Steppers.invalidate();
 }
 
 void vtkBoundParticleTracerInternals::clear()
 {
   this->Steppers.active().cursor.valid = false;
-  this->Cache.clear();
-  this->Continuing = false;
+  this->Held.cache.clear();
+  this->Update.continuing = false;
 }
 
 void vtkBoundParticleTracerInternals::forgetTrace()
 {
   this->invalidate();
   this->clear();
-  this->LastRequested = -1;
+  this->Held.lastRequested = -1;
 }
 
 void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
 {
   if (skipped)
   {
-    this->Continuing = false;
+    this->Update.continuing = false;
     return;
   }
   this->clear();
@@ -137,31 +113,32 @@ void vtkBoundParticleTracerInternals::decide(
     : this->Plan.targetOf(
         outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   const bp::Stepper& stepper = this->stepper();
-  this->Decision = this->Plan.decide(target, stepper.cursor, this->ProducerId,
+  this->Update.decision = this->Plan.decide(target, stepper.cursor, this->ProducerId,
     this->Configuration, stepper.keepsCheckpoints() ? &stepper.checkpoints() : nullptr);
   if (this->Plan.streaming())
   {
     this->decideInSitu(target);
     return;
   }
-  this->RequestIndex = this->Plan.firstRequest(this->Decision, this->Cache, this->LastRequested);
+  this->Held.requestIndex =
+    this->Plan.firstRequest(this->Update.decision, this->Held.cache, this->Held.lastRequested);
 }
 
 void vtkBoundParticleTracerInternals::decideInSitu(double target)
 {
-  if (!this->Plan.streamCanGoOn(this->Decision, this->Cache))
+  if (!this->Plan.streamCanGoOn(this->Update.decision, this->Held.cache))
   {
     // The past steps are gone: a trace that must start again, or that lost
     // a step it needs, starts again at the present one.
-    this->Stream.restartAtPresent();
-    this->Plan.setStreamTimes(this->Stream.times());
-    this->Cache.clear();
+    this->InSitu.stream.restartAtPresent();
+    this->Plan.setStreamTimes(this->InSitu.stream.times());
+    this->Held.cache.clear();
     this->stepper().cursor.valid = false;
-    this->Decision =
+    this->Update.decision =
       this->Plan.decide(target, this->stepper().cursor, this->ProducerId, this->Configuration);
   }
   // Upstream is only ever asked for the present.
-  this->RequestIndex = int(this->Plan.inputTimes().size()) - 1;
+  this->Held.requestIndex = int(this->Plan.inputTimes().size()) - 1;
 }
 
 void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
@@ -169,8 +146,8 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
   using SDDP = vtkStreamingDemandDrivenPipeline;
   if (this->Plan.unsteady())
   {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.inputTimes()[this->RequestIndex]);
-    this->LastRequested = this->RequestIndex;
+    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.inputTimes()[this->Held.requestIndex]);
+    this->Held.lastRequested = this->Held.requestIndex;
   }
   else
   {
@@ -180,24 +157,24 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
 
 void vtkBoundParticleTracerInternals::continueWith(int index)
 {
-  this->RequestIndex = index;
-  this->Continuing = true;
+  this->Held.requestIndex = index;
+  this->Update.continuing = true;
 }
 
 void vtkBoundParticleTracerInternals::begin(const Config& config)
 {
   bp::Stepper& stepper = this->stepper();
-  const bool replay = this->Decision.replay;
+  const bool replay = this->Update.decision.replay;
   this->ReplayPending = replay;
-  this->StepsInLastUpdate = 0;
-  this->Migrated = 0;
-  this->LastUpdateReplayed = replay;
-  this->ReadThisUpdate = false;
-  if (this->Decision.resume >= 0)
+  this->Update.stepsInLastUpdate = 0;
+  this->Exchange.migrated = 0;
+  this->Update.lastUpdateReplayed = replay;
+  this->Held.readThisUpdate = false;
+  if (this->Update.decision.resume >= 0)
   {
     // Back to the latest checkpoint at or before the target: the same state
     // a replay from the start reaches there, bit for bit.
-    stepper.resumeCheckpoint(this->Decision.resume);
+    stepper.resumeCheckpoint(this->Update.decision.resume);
   }
   else if (!replay && stepper.cursor.showsPartialStep)
   {
@@ -206,7 +183,7 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
     stepper.restore();
   }
   stepper.cursor.showsPartialStep = false;
-  this->IntervalAtStart = replay || !this->Plan.unsteady()
+  this->Update.intervalAtStart = replay || !this->Plan.unsteady()
     ? -1
     : this->Plan.intervalAt(stepper.cursor.committed, false).front();
   // An abort ends the update it was asked in, not every later one: VTK 9.2
@@ -214,8 +191,8 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   // without Modified(), which would make this update's output look stale.
   this->Owner->AbortExecute = 0;
   // Progress runs over the whole update, across its passes.
-  this->ProgressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
-  this->ProgressAt = this->ProgressFrom;
+  this->Update.progressFrom = replay ? this->Plan.startTime() : stepper.cursor.committed;
+  this->Update.progressAt = this->Update.progressFrom;
   if (replay && this->Layout.distributed() && this->Layout.Piece == 0 &&
     config.engine == bp::EngineChoice::Gpu)
   {
@@ -233,7 +210,7 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
     // input changes).
     if (!this->Plan.unsteady())
     {
-      this->Cache.clear();
+      this->Held.cache.clear();
     }
   }
 }
@@ -252,8 +229,9 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   {
     // The GPU engine runs in the render, where ParaView 5.11 offers no Abort.
     const std::string note = bp::longReplayNote((target - committed) / this->Schedule->dt(),
-      double(this->Parameters.numberOfElements) * double(this->ParticlesPerElement), committed,
-      target, *queue);
+      double(this->Resolved.parameters.numberOfElements) *
+        double(this->Resolved.particlesPerElement),
+      committed, target, *queue);
     if (!note.empty())
     {
       vtkWarningWithObjectMacro(this->Owner, << note);
@@ -262,8 +240,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   bool aborted = false;
   auto keepGoing = [&](double t)
   {
-    ++this->StepsInLastUpdate;
-    this->ProgressAt = t;
+    ++this->Update.stepsInLastUpdate;
+    this->Update.progressAt = t;
     this->Owner->UpdateProgress(this->progress());
     // In parallel every process must take every step (each exchanges
     // elements with the others), so one process alone cannot stop.
@@ -274,17 +252,17 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   while (true)
   {
     const std::vector<int> ids = this->Plan.needed(committed, target);
-    const int missing = this->Cache.firstMissing(ids);
+    const int missing = this->Held.cache.firstMissing(ids);
     if (missing >= 0)
     {
       // Drop what no later step needs before asking for the next time step.
-      this->Cache.dropBefore(ids.front());
+      this->Held.cache.dropBefore(ids.front());
       return Pass::need(missing);
     }
     const double intervalEnd = ids.size() == 2 ? this->Plan.inputTimes()[ids[1]] : target;
     const double limit = std::min(target, intervalEnd);
     const double before = committed;
-    const std::string fieldError = stepper.setField(this->Cache.field(this->Grid, ids));
+    const std::string fieldError = stepper.setField(this->Held.cache.field(this->Held.grid, ids));
     if (!fieldError.empty())
     {
       return Pass::fail(fieldError + ".");
@@ -342,14 +320,15 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::readAhead()
   // update that stays in its interval and read nothing: a frame that crosses
   // a time step has had its share.
   const int upcoming = this->Plan.readAheadIndex(this->target());
-  const bool quietFrame = !this->ReadThisUpdate &&
-    this->IntervalAtStart == this->Plan.intervalAt(this->target(), false).front();
-  if (upcoming >= 0 && !this->Cache.has(upcoming) && quietFrame)
+  const bool quietFrame = !this->Held.readThisUpdate &&
+    this->Update.intervalAtStart == this->Plan.intervalAt(this->target(), false).front();
+  if (upcoming >= 0 && !this->Held.cache.has(upcoming) && quietFrame)
   {
     return Pass::need(upcoming);
   }
-  stepper.offerUpcoming(
-    upcoming >= 0 && this->Cache.has(upcoming) ? this->Cache.at(upcoming) : bp::FieldSlice());
+  stepper.offerUpcoming(upcoming >= 0 && this->Held.cache.has(upcoming)
+      ? this->Held.cache.at(upcoming)
+      : bp::FieldSlice());
   return Pass();
 }
 
@@ -360,7 +339,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   // boundaries.
   bp::Stepper& stepper = this->stepper();
   const double target = this->target();
-  const bp::VectorField field = this->Cache.field(this->Grid, this->Plan.intervalAt(target, false));
+  const bp::VectorField field =
+    this->Held.cache.field(this->Held.grid, this->Plan.intervalAt(target, false));
   const std::string fieldError = stepper.setField(field);
   if (!fieldError.empty())
   {
@@ -372,7 +352,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     stepper.save();
     stepper.step(committed, target - committed);
     stepper.cursor.showsPartialStep = true;
-    ++this->StepsInLastUpdate;
+    ++this->Update.stepsInLastUpdate;
   }
   this->gatherExchange();
   const bp::Engine* particles = stepper.particles();
@@ -381,14 +361,15 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   {
     bpvtk::OutputFrame frame;
     frame.time = target;
-    frame.offset = this->Offset;
-    frame.domain = this->Layout.domainBounds(this->Grid);
-    const auto local = this->Grid.bounds();
+    frame.offset = this->Held.offset;
+    frame.domain = this->Layout.domainBounds(this->Held.grid);
+    const auto local = this->Held.grid.bounds();
     for (int a = 0; a < 3; ++a)
     {
-      frame.reach = std::max(frame.reach, std::abs(this->Offset[a]) + std::abs(local[2 * a + 1]));
+      frame.reach =
+        std::max(frame.reach, std::abs(this->Held.offset[a]) + std::abs(local[2 * a + 1]));
     }
-    frame.cellLength = this->Grid.cellLength();
+    frame.cellLength = this->Held.grid.cellLength();
     frame.coloringAxis = config.coloringAxis;
     frame.wanted = config.wanted;
     bpvtk::fillParticleOutput(
@@ -408,15 +389,16 @@ void vtkBoundParticleTracerInternals::gatherExchange()
   {
     return;
   }
-  if (this->StepsInLastUpdate > 0 || this->LastUpdateReplayed)
+  if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
   {
     // Collective, so only in an update that every process runs in step
     // with the others: one that took steps (each exchanges elements) or
     // replayed (each shares the field's largest speed).
     const bp::Engine* held = this->stepper().particles();
-    this->ElementsPerProcess = this->Layout.gather(held ? (long long)held->elementCount() : 0);
+    this->Exchange.elementsPerProcess =
+      this->Layout.gather(held ? (long long)held->elementCount() : 0);
   }
-  this->Migrated += this->Steppers.distributed().takeMigrated();
+  this->Exchange.migrated += this->Steppers.distributed().takeMigrated();
   const std::string error = this->Steppers.distributed().takeExchangeError();
   if (!error.empty())
   {
@@ -429,19 +411,19 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
   bp::WorkQueue& queue = *this->Steppers.queue();
   bp::DrawSettings d = queue.draw();
   d.time = this->target();
-  d.offset = this->Offset;
-  const auto bounds = this->Grid.bounds();
+  d.offset = this->Held.offset;
+  const auto bounds = this->Held.grid.bounds();
   for (int a = 0; a < 3; ++a)
   {
-    d.bounds[2 * a] = bounds[2 * a] + this->Offset[a];
-    d.bounds[2 * a + 1] = bounds[2 * a + 1] + this->Offset[a];
+    d.bounds[2 * a] = bounds[2 * a] + this->Held.offset[a];
+    d.bounds[2 * a + 1] = bounds[2 * a + 1] + this->Held.offset[a];
   }
   d.coloringAxis = config.coloringAxis;
   d.radialCenter = bp::radialCenter(bounds, config.coloringAxis);
   ++d.serial;
   queue.setDraw(d);
   // Two points spanning the field (for the camera and the axes grid).
-  bpvtk::fillRangeOutput(output, this->RangeFacts, d.bounds);
+  bpvtk::fillRangeOutput(output, this->Resolved.rangeFacts, d.bounds);
   vtkNew<vtkIntArray> id;
   id->SetName("BoundParticlesWorkQueue");
   id->InsertNextValue(queue.id());
@@ -451,20 +433,20 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
 void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
 {
   // What the automatic settings came to, for the Information panel and scripts.
-  bpvtk::addFieldValue(output, "TimeStep", this->ResolvedDt);
-  bpvtk::addFieldValue(output, "ElementSize", this->ResolvedElementSize);
+  bpvtk::addFieldValue(output, "TimeStep", this->Resolved.dt);
+  bpvtk::addFieldValue(output, "ElementSize", this->Resolved.elementSize);
   bpvtk::addFieldValue(output, "SimulationTime", this->target());
-  if (this->Parameters.trailLength > 0)
+  if (this->Resolved.parameters.trailLength > 0)
   {
     // The age at which a trail pose has faded out on the Bound Particles
     // display: one interval past the oldest pose (as its GPU mapper fades).
-    bpvtk::addFieldValue(
-      output, "TrailFadeSpan", (this->Parameters.trailLength + 1) * this->Parameters.trailInterval);
+    bpvtk::addFieldValue(output, "TrailFadeSpan",
+      (this->Resolved.parameters.trailLength + 1) * this->Resolved.parameters.trailInterval);
   }
-  if (this->Resampled)
+  if (this->Held.resampled)
   {
     // The grid a mesh was resampled onto (TracerResample.h).
-    const bp::ResampleGrid& g = this->Resampler.grid();
+    const bp::ResampleGrid& g = this->Held.resampler.grid();
     vtkNew<vtkIntArray> dims;
     dims->SetName("ResampledDimensions");
     vtkNew<vtkDoubleArray> spacing;
@@ -482,10 +464,10 @@ void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
     // This process's share: ghost layers read, elements sent to other pieces;
     // and the balance: every process's element count (the same on each).
     bpvtk::addFieldValue(output, "GhostLayers", this->Layout.GhostCells);
-    bpvtk::addFieldValue(output, "MigratedElements", double(this->Migrated));
+    bpvtk::addFieldValue(output, "MigratedElements", double(this->Exchange.migrated));
     vtkNew<vtkIdTypeArray> perProcess;
     perProcess->SetName("ElementsPerProcess");
-    for (long long c : this->ElementsPerProcess)
+    for (long long c : this->Exchange.elementsPerProcess)
     {
       perProcess->InsertNextValue(vtkIdType(c));
     }

@@ -36,6 +36,7 @@
 #include "TracerOutput.h"
 #include "TracerParallel.h"
 #include "TracerResample.h"
+#include "TracerSaidOnce.h"
 #include "TracerSteppers.h"
 
 #include "vtkAlgorithm.h"
@@ -101,6 +102,64 @@ struct TracerInputStep
   /// ParaView made the point Vectors of a cell array (bpvtk::cellVectorsMadePoints): what to say.
   std::string vectorsFromCells;
 };
+/// The field's time steps the tracer holds (TracerTimeStep.cxx), the grid
+/// they share, and which input time step upstream was asked for and holds.
+struct HeldSteps
+{
+  bp::FieldCache cache;
+  /// Any input but an image or a rectilinear grid, on a uniform grid; its
+  /// located cells and weights are kept while the mesh stays the same.
+  bpvtk::FieldResampler resampler;
+  bool resampled = false; ///< the field came through the resampler
+  // The field, in grid-local coordinates (floats keep their precision far
+  // from the world origin), and where its local origin lies in the world.
+  bp::GridGeometry grid;
+  std::array<double, 3> offset = { 0, 0, 0 };
+  int requestIndex = 0;        ///< the input time step this pass asked for
+  int lastRequested = -1;      ///< the input time step upstream holds
+  bool readThisUpdate = false; ///< a time step came from upstream in this update
+};
+
+/// The update in progress over its passes, and what the last update did.
+struct UpdatePass
+{
+  bp::TracePlan::Update decision; ///< made in RequestUpdateExtent
+  bool continuing = false;        ///< a later pass of the same update
+  int intervalAtStart = -1;       ///< the data interval shown before it (-1: a replay)
+  double progressFrom = 0.0;      ///< where the update's stepping starts
+  double progressAt = 0.0;        ///< where it stands
+  vtkIdType stepsInLastUpdate = 0;
+  bool lastUpdateReplayed = false;
+};
+
+/// In situ: the times given since the trace started (TracerInSitu.cxx),
+/// the filter's MTime they were given under, and the grid the last step
+/// announced (announcedGrid).
+struct InSituTimeLine
+{
+  bp::StreamTimeLine stream;
+  vtkMTimeType settingsTime = 0;
+  std::vector<double> grid;
+};
+
+/// In parallel, the element exchange of the last steps.
+struct ExchangeReport
+{
+  long long migrated = 0;                    ///< elements this process sent away
+  std::vector<long long> elementsPerProcess; ///< every process's, after the last steps
+};
+
+/// What the last replay resolved (TracerReplay.cxx).
+struct ResolvedTrace
+{
+  bp::Parameters parameters;
+  bp::TraceSettings settings; ///< what it resolved them from (releaseIntoGrid)
+  double dt = 0.0;
+  double elementSize = 0.0;
+  std::size_t particlesPerElement = 1;
+  bp::RangeFacts rangeFacts; ///< for the GPU display's output
+};
+
 } // namespace bpvtk
 
 class vtkBoundParticleTracerInternals
@@ -119,12 +178,13 @@ public:
   double startTime() const { return this->Plan.startTime(); }
   /// The output's time steps (both ports share them).
   const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
-  vtkIdType stepsInLastUpdate() const { return this->StepsInLastUpdate; }
-  bool lastUpdateReplayed() const { return this->LastUpdateReplayed; }
-  const bp::CheckpointSpacing& checkpointSpacing() const { return this->Spacing; }
-  int timeStepsHeld() const { return int(this->Cache.size()); }
-  double resolvedDt() const { return this->ResolvedDt; }
-  double resolvedElementSize() const { return this->ResolvedElementSize; }
+  vtkIdType stepsInLastUpdate() const { return this->Update.stepsInLastUpdate; }
+  bool lastUpdateReplayed() const { return this->Update.lastUpdateReplayed; }
+  /// Steps between two checkpoints of the trace; 0: none kept.
+  long long checkpointEvery() const { return this->Spacing.every; }
+  int timeStepsHeld() const { return int(this->Held.cache.size()); }
+  double resolvedDt() const { return this->Resolved.dt; }
+  double resolvedElementSize() const { return this->Resolved.elementSize; }
   /// Asked for pieces: this process's piece and the whole extent.
   bool idle() const { return this->Layout.idle(); }
   bool tooSmallToSplit() const { return this->Layout.tooSmallToSplit(); }
@@ -142,9 +202,6 @@ public:
   /// it again too, with the warning.
   std::string offerStreamTime(
     vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning);
-  /// The time line's `warnings` not said at the last request for
-  /// information (the pipeline asks again after every change).
-  std::vector<std::string> unsaid(const std::vector<std::string>& warnings);
   /// RequestUpdateExtent: the pieces this output asks for (a change of them
   /// is a change of input: every trace is stale), then what the input is
   /// asked for (`mesh`: an input the resampler takes whole).
@@ -153,13 +210,14 @@ public:
   /// The share of the update's stepping done, over all its passes.
   double progress() const
   {
-    const double span = this->target() - this->ProgressFrom;
-    return span > 0.0 ? std::min(1.0, std::max(0.0, (this->ProgressAt - this->ProgressFrom) / span))
-                      : 0.0;
+    const double span = this->target() - this->Update.progressFrom;
+    return span > 0.0
+      ? std::min(1.0, std::max(0.0, (this->Update.progressAt - this->Update.progressFrom) / span))
+      : 0.0;
   }
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
-  double target() const { return this->Decision.target; }
+  double target() const { return this->Update.decision.target; }
   /// Where the work still to do starts: the start time for a replay not yet
   /// configured, else where the stepper stands (it moves as passes step).
   double steppingFrom()
@@ -203,9 +261,9 @@ public:
   /// the same update.
   void continueWith(int index);
   /// The update's last pass ends here.
-  void finishPasses() { this->Continuing = false; }
+  void finishPasses() { this->Update.continuing = false; }
   /// A later pass of the same update.
-  bool continuing() const { return this->Continuing; }
+  bool continuing() const { return this->Update.continuing; }
   /// This update replays from the start, and has not yet configured.
   bool replayPending() const { return this->ReplayPending; }
 
@@ -229,26 +287,10 @@ public:
   vtkDataArray* probeGrid(
     const Config& config, vtkDataObject* data, vtkSmartPointer<vtkDataObject>& grid);
 
-  /// The time line's warnings resolved while Vectors was not chosen (a
-  /// tracer just made, whose Vectors default comes next): said by an update
-  /// that still has none, not before.
-  std::vector<std::string> PendingTimeLine;
-  /// vtkBoundParticleTracer::PreferFittingVectors: the array whose units
-  /// failed the time line's check, the one preferred, and why.
-  std::string UnitsMismatchedVectors;
-  std::string UnitsFittingVectors;
-  std::string UnitsReason;
-  /// The input they were found of (vtkBoundParticleTracer::InputKey).
-  std::tuple<const void*, int, vtkMTimeType> UnitsChecked{ nullptr, -1, 0 };
-
 private:
   bp::TracePlan Plan;
-  /// In situ: the times given since the trace started (TracerInSitu.cxx),
-  /// and the filter's MTime they were given under.
-  bp::StreamTimeLine Stream;
-  vtkMTimeType StreamSettingsTime = 0;
-  std::vector<double> StreamGrid; ///< the grid the last step announced (announcedGrid)
-  bp::FieldCache Cache;
+  bpvtk::InSituTimeLine InSitu; ///< in situ, the times given since the trace started
+  bpvtk::HeldSteps Held;        ///< the field's time steps held, and which one upstream has
   bpvtk::TracerSteppers Steppers;
   bpvtk::PieceLayout Layout;
   bpvtk::OutputStorage Storage; ///< the output's cells and array memory, kept between frames
@@ -257,57 +299,17 @@ private:
   /// Bumped whenever the filter or its input changes: a trace made for an
   /// older configuration replays.
   std::uint64_t Configuration = 1;
-  bool WarnedNonFinite = false; ///< the input's NaN share was reported for this configuration
-  bool WarnedMask = false;      ///< an unusable vtkValidPointMask was reported for it
-  std::string
-    WarnedResample; ///< the resampler's last warning (blocks without the Vectors, the grid)
-  bool WarnedWeights = false;    ///< Release Weights unusable was reported for it
-  bool WarnedSeeds = false;      ///< the seed points' warnings were given for it
-  bool WarnedOutOfPlane = false; ///< a flat field's crossing vectors were reported for it
-  bool WarnedGridChange = false; ///< in situ, a change of grid was reported
-  bool WarnedCellVectors = false; ///< point Vectors made of a cell array were reported
-  /// The time line's last warnings (vtkBoundParticleTracer::ResolveTimeLine
-  /// says each once, not again at the next request for information).
-  std::vector<std::string> SaidTimeLine;
-  /// Any input but an image or a rectilinear grid, on a uniform grid; its
-  /// located cells and weights are kept while the mesh stays the same.
-  bpvtk::FieldResampler Resampler;
-  bool Resampled = false; ///< the field came through the Resampler
+  bpvtk::SaidOnce Said; ///< the warnings said for this configuration (forgotten by invalidate())
   const std::uint64_t ProducerId;
 
-  bp::TracePlan::Update Decision; ///< made in RequestUpdateExtent
-
-  // The field, in grid-local coordinates (floats keep their precision far
-  // from the world origin), and where its local origin lies in the world.
-  bp::GridGeometry Grid;
-  std::array<double, 3> Offset = { 0, 0, 0 };
-
-  // What the last replay resolved.
-  bp::Parameters Parameters;
-  bp::TraceSettings Settings; ///< what it resolved them from (releaseIntoGrid)
-  std::string WarnedEmitter;  ///< releaseIntoGrid's last warning
-  double ResolvedDt = 0.0;
-  double ResolvedElementSize = 0.0;
-  std::size_t ParticlesPerElement = 1;
-  bp::RangeFacts RangeFacts; ///< for the GPU display's output
-
-  // What the last update did.
-  vtkIdType StepsInLastUpdate = 0;
-  bool LastUpdateReplayed = false;
-  long long Migrated = 0;                    ///< elements this process sent away
-  std::vector<long long> ElementsPerProcess; ///< every process's, after the last steps
+  bpvtk::UpdatePass Update;       ///< the update in progress, and what the last one did
+  bpvtk::ResolvedTrace Resolved;  ///< what the last replay resolved
+  bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
 
-  vtkAlgorithm* const Owner;   ///< for messages, progress and abort only
-  bool Continuing = false;     ///< a later pass of the same update
-  bool ReplayPending = false;  ///< this update replays from the start
-  int RequestIndex = 0;        ///< the input time step this pass asked for
-  int LastRequested = -1;      ///< the input time step upstream holds
-  bool ReadThisUpdate = false; ///< a time step came from upstream in this update
-  int IntervalAtStart = -1;    ///< the data interval shown before it (-1: a replay)
-  double ProgressFrom = 0.0;   ///< where the update's stepping starts
-  double ProgressAt = 0.0;     ///< where it stands
+  vtkAlgorithm* const Owner;  ///< for messages, progress and abort only
+  bool ReplayPending = false; ///< this update replays from the start (startTrace clears it)
 
   /// Forgets every trace: each stepper's cursor, and pending GPU work.
   void invalidate();
