@@ -1,35 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Checkpoints (Core/Stepping/Checkpoints.h): how they are spaced within a
-// budget, which one a request resumes from (TracePlan::decide), and that a
-// trace resumed from one steps to the same bits as a run that never stopped.
+// budget, and that a trace resumed from one steps to the same bits as a run
+// that never stopped. Which one a request resumes from: TestTracePlan.cpp.
 #include "Checkpoints.h"
 #include "Stepper.h"
 #include "TestHelpers.h"
-#include "TracePlan.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
-
-namespace
-{
-bp::TraceCursor cursorAt(double committed, std::uint64_t producer = 7, std::uint64_t config = 3)
-{
-  bp::TraceCursor c;
-  c.valid = true;
-  c.committed = committed;
-  c.producer = producer;
-  c.configuration = config;
-  return c;
-}
-
-bp::TracePlan steadyPlan()
-{
-  bp::TracePlan plan;
-  EXPECT_EQ(plan.setTimes({}, 10.0, 101), "");
-  return plan;
-}
-} // namespace
 
 TEST(Checkpoints, AsManyAsTheBudgetHoldsSpreadEvenlyOverTheTrace)
 {
@@ -72,57 +51,6 @@ TEST(Checkpoints, TheLatestAtOrBeforeATime)
   EXPECT_DOUBLE_EQ(index.timeOf(20), 2.0);
   index.clear();
   EXPECT_EQ(index.size(), 0u);
-}
-
-TEST(Checkpoints, GoingBackResumesFromTheLatestCheckpointAtOrBeforeTheTarget)
-{
-  const bp::TracePlan plan = steadyPlan();
-  bp::CheckpointIndex index;
-  index.add(200, 2.0);
-  index.add(400, 4.0);
-  // Back from 8.0 to 5.0: from the checkpoint at 4.0, not the start.
-  bp::TracePlan::Update u = plan.decide(5.0, cursorAt(8.0), 7, 3, &index);
-  EXPECT_FALSE(u.replay);
-  EXPECT_EQ(u.resume, 400);
-  EXPECT_DOUBLE_EQ(u.from, 4.0);
-  // Exactly on a checkpoint.
-  u = plan.decide(2.0, cursorAt(8.0), 7, 3, &index);
-  EXPECT_EQ(u.resume, 200);
-  // Before every checkpoint: a replay from the start, as without any.
-  u = plan.decide(1.0, cursorAt(8.0), 7, 3, &index);
-  EXPECT_TRUE(u.replay);
-  EXPECT_EQ(u.resume, -1);
-  EXPECT_DOUBLE_EQ(u.from, 0.0);
-  // Forward from a cursor later than every checkpoint: go on from the cursor.
-  u = plan.decide(9.0, cursorAt(8.0), 7, 3, &index);
-  EXPECT_FALSE(u.replay);
-  EXPECT_EQ(u.resume, -1);
-  EXPECT_DOUBLE_EQ(u.from, 8.0);
-  // Forward past a checkpoint later than the cursor (back at 1.0 after a
-  // trace to 8.0, then on to 4.5): from that checkpoint.
-  u = plan.decide(4.5, cursorAt(1.0), 7, 3, &index);
-  EXPECT_FALSE(u.replay);
-  EXPECT_EQ(u.resume, 400);
-  // Another configuration or producer, or no trace: the checkpoints are not
-  // its own; a replay.
-  for (const bp::TraceCursor& other : { cursorAt(8.0, 7, 4), cursorAt(8.0, 8, 3), bp::TraceCursor() })
-  {
-    u = plan.decide(5.0, other, 7, 3, &index);
-    EXPECT_TRUE(u.replay);
-    EXPECT_EQ(u.resume, -1);
-  }
-}
-
-TEST(Checkpoints, StepsToTheEndCountTheDataTimeSteps)
-{
-  EXPECT_EQ(steadyPlan().stepsToEnd(0.1), 100 + 0); // a steady input has no time steps
-  bp::TracePlan unsteady;
-  ASSERT_EQ(unsteady.setTimes({ 0.0, 1.0, 2.0 }, 10.0, 101), "");
-  EXPECT_EQ(unsteady.stepsToEnd(0.25), 8 + 3);
-  EXPECT_EQ(unsteady.stepsToEnd(0.0), 0);
-  bp::TracePlan stream;
-  stream.setStreamTimes({ 0.0, 1.0 });
-  EXPECT_EQ(stream.stepsToEnd(0.25), 0); // in situ the end is not known
 }
 
 TEST(Checkpoints, AResumedTraceStepsToTheBitsOfOneThatNeverStopped)

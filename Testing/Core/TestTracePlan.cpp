@@ -188,3 +188,64 @@ TEST(TracePlan, FramesBetweenTheInputsTimeSteps)
   EXPECT_EQ(plan.intervalAt(4.0, true), (std::vector<int>{ 0, 1 }));
   EXPECT_EQ(plan.intervalAt(7.0, true), (std::vector<int>{ 1, 2 }));
 }
+
+namespace
+{
+bp::TracePlan steadyTimeLine()
+{
+  bp::TracePlan plan;
+  EXPECT_EQ(plan.setTimes({}, 10.0, 101), "");
+  return plan;
+}
+} // namespace
+
+TEST(TracePlan, GoingBackResumesFromTheLatestCheckpointAtOrBeforeTheTarget)
+{
+  const bp::TracePlan plan = steadyTimeLine();
+  bp::CheckpointIndex index;
+  index.add(200, 2.0);
+  index.add(400, 4.0);
+  // Back from 8.0 to 5.0: from the checkpoint at 4.0, not the start.
+  bp::TracePlan::Update u = plan.decide(5.0, cursorAt(8.0), 7, 3, &index);
+  EXPECT_FALSE(u.replay);
+  EXPECT_EQ(u.resume, 400);
+  EXPECT_DOUBLE_EQ(u.from, 4.0);
+  // Exactly on a checkpoint.
+  u = plan.decide(2.0, cursorAt(8.0), 7, 3, &index);
+  EXPECT_EQ(u.resume, 200);
+  // Before every checkpoint: a replay from the start, as without any.
+  u = plan.decide(1.0, cursorAt(8.0), 7, 3, &index);
+  EXPECT_TRUE(u.replay);
+  EXPECT_EQ(u.resume, -1);
+  EXPECT_DOUBLE_EQ(u.from, 0.0);
+  // Forward from a cursor later than every checkpoint: go on from the cursor.
+  u = plan.decide(9.0, cursorAt(8.0), 7, 3, &index);
+  EXPECT_FALSE(u.replay);
+  EXPECT_EQ(u.resume, -1);
+  EXPECT_DOUBLE_EQ(u.from, 8.0);
+  // Forward past a checkpoint later than the cursor (back at 1.0 after a
+  // trace to 8.0, then on to 4.5): from that checkpoint.
+  u = plan.decide(4.5, cursorAt(1.0), 7, 3, &index);
+  EXPECT_FALSE(u.replay);
+  EXPECT_EQ(u.resume, 400);
+  // Another configuration or producer, or no trace: the checkpoints are not
+  // its own; a replay.
+  for (const bp::TraceCursor& other : { cursorAt(8.0, 7, 4), cursorAt(8.0, 8, 3), bp::TraceCursor() })
+  {
+    u = plan.decide(5.0, other, 7, 3, &index);
+    EXPECT_TRUE(u.replay);
+    EXPECT_EQ(u.resume, -1);
+  }
+}
+
+TEST(TracePlan, StepsToTheEndCountTheDataTimeSteps)
+{
+  EXPECT_EQ(steadyTimeLine().stepsToEnd(0.1), 100 + 0); // a steady input has no time steps
+  bp::TracePlan unsteady;
+  ASSERT_EQ(unsteady.setTimes({ 0.0, 1.0, 2.0 }, 10.0, 101), "");
+  EXPECT_EQ(unsteady.stepsToEnd(0.25), 8 + 3);
+  EXPECT_EQ(unsteady.stepsToEnd(0.0), 0);
+  bp::TracePlan stream;
+  stream.setStreamTimes({ 0.0, 1.0 });
+  EXPECT_EQ(stream.stepsToEnd(0.25), 0); // in situ the end is not known
+}
