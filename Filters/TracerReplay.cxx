@@ -353,16 +353,15 @@ void vtkBoundParticleTracerInternals::startTrace(const Config& config)
 bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const Config& config)
 {
   bp::Stepper& stepper = this->stepper();
-  const bp::Engine* particles = stepper.particles();
-  if (!stepper.keepsCheckpoints() || !particles || this->Plan.streaming())
+  if (!stepper.keepsCheckpoints() || this->Plan.streaming())
   {
     return bp::CheckpointSpacing();
   }
-  // The whole system's state, from the words an element is made of
-  // (Engine::recordWords, the same on every process), so that every process
-  // keeps its checkpoints at the same steps.
-  const double stateBytes = 4.0 * double(particles->recordWords()) *
-    double(std::max<long long>(this->Parameters.numberOfElements, 1));
+  // The whole system's state as the stepper keeps it (Engine::recordWords,
+  // the same on every process, so that every process keeps its checkpoints
+  // at the same steps; the GPU engine's textures, padding included, where
+  // they are larger: bp::gpuCheckpointBytes).
+  const double stateBytes = stepper.checkpointBytes();
   const double budget =
     std::min(config.checkpointMemory * 1048576.0, 0.5 * bp::allocatableBytes());
   return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->ResolvedDt));
