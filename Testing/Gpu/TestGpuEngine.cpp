@@ -1294,12 +1294,12 @@ TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
 
 namespace
 {
-/// The calls the tracer records for a trace of 40 steps that keeps a
+/// The calls the tracer records for a trace of `end` steps that keeps a
 /// checkpoint before steps 10 and 20, with `resume`: runs to step 30, shows a
 /// short step, goes back to the checkpoint at step 10 (as going back in time
-/// does) and steps on to 40; without: straight to 40. Short steps shown and
-/// taken back as schedule() takes them.
-void checkpointedTrace(bp::Stepper& stepper, const UnsteadySystem& s, bool resume)
+/// does) and steps on to `end`; without: straight to `end`. Short steps shown
+/// and taken back as schedule() takes them.
+void checkpointedTrace(bp::Stepper& stepper, const UnsteadySystem& s, bool resume, int end)
 {
   ASSERT_EQ(stepper.configure(s.shape, s.p), "");
   ASSERT_EQ(stepper.setField(s.field), "");
@@ -1329,11 +1329,11 @@ void checkpointedTrace(bp::Stepper& stepper, const UnsteadySystem& s, bool resum
     stepper.step(0.3, 0.5 * dt);
     stepper.resumeCheckpoint(10);
     EXPECT_EQ(stepper.cursor.steps, 10);
-    run(10, 40);
+    run(10, end);
   }
   else
   {
-    run(0, 40);
+    run(0, end);
   }
 }
 
@@ -1356,48 +1356,52 @@ TEST(GpuStepper, ResumesFromACheckpointToTheBitsOfARunThatNeverStopped)
   // Going back in time on the GPU engine: the tracer records checkpoint
   // calls into the queue, the renderer's engine keeps copies of its
   // textures on the GPU and resumes from one; stepping on from there gives
-  // the bits of a run that went straight on, trail and slips included.
+  // the bits of a run that went straight on, trail and slips included: two
+  // steps on (the trail ring as the checkpoint kept it, no pose recorded
+  // since) and 30 steps on (the ring recorded over).
   ASSERT_NE(context(), nullptr);
   for (const bool heavy : { false, true })
-  {
-    SCOPED_TRACE(heavy ? "heavy particles" : "trail, poses");
-    const UnsteadySystem s = checkpointed(heavy);
-    bp::GpuStepper straight;
-    checkpointedTrace(straight, s, false);
-    const Readback expected(straight.engine());
-    std::vector<float> expectedSlips;
-    straight.engine().readSlips(expectedSlips);
-    EXPECT_EQ(straight.engine().checkpointCount(), 2);
-    straight.engine().release();
+    for (const int end : { 12, 40 })
+    {
+      SCOPED_TRACE(std::string(heavy ? "heavy particles" : "trail, poses") + ", to step " +
+        std::to_string(end));
+      const UnsteadySystem s = checkpointed(heavy);
+      bp::GpuStepper straight;
+      checkpointedTrace(straight, s, false, end);
+      const Readback expected(straight.engine());
+      std::vector<float> expectedSlips;
+      straight.engine().readSlips(expectedSlips);
+      EXPECT_EQ(straight.engine().checkpointCount(), end > 20 ? 2 : 1);
+      straight.engine().release();
 
-    bp::WorkQueue queue(1);
-    EXPECT_TRUE(queue.keepsCheckpoints());
-    checkpointedTrace(queue, s, true);
-    EXPECT_EQ(queue.checkpoints().size(), 2u);
-    bp::GpuStepper replayed;
-    for (const bp::EngineCall& call : queue.take())
-      ASSERT_EQ(call.applyTo(replayed), "");
-    // The queue said what the engine holds once its calls ran.
-    EXPECT_EQ(replayed.engine().checkpointCount(), 2);
-    EXPECT_TRUE(replayed.checkpoints().has(10));
-    EXPECT_TRUE(replayed.checkpoints().has(20));
-    expectSameBits(Readback(replayed.engine()), expected);
-    std::vector<float> slips;
-    replayed.engine().readSlips(slips);
-    EXPECT_EQ(slips.size(), heavy ? expected.positions.size() : 0u);
-    EXPECT_TRUE(sameBits(slips, expectedSlips)) << "slips differ";
-    // Within the budget the tracer spaces them by: the engine's textures
-    // take what Core says a checkpoint takes, no more than the queue reports.
-    EXPECT_EQ(replayed.engine().checkpointBytes(), queue.checkpointBytes());
+      bp::WorkQueue queue(1);
+      EXPECT_TRUE(queue.keepsCheckpoints());
+      checkpointedTrace(queue, s, true, end);
+      EXPECT_EQ(queue.checkpoints().size(), 2u);
+      bp::GpuStepper replayed;
+      for (const bp::EngineCall& call : queue.take())
+        ASSERT_EQ(call.applyTo(replayed), "");
+      // The queue said what the engine holds once its calls ran.
+      EXPECT_EQ(replayed.engine().checkpointCount(), 2);
+      EXPECT_TRUE(replayed.checkpoints().has(10));
+      EXPECT_TRUE(replayed.checkpoints().has(20));
+      expectSameBits(Readback(replayed.engine()), expected);
+      std::vector<float> slips;
+      replayed.engine().readSlips(slips);
+      EXPECT_EQ(slips.size(), heavy ? expected.positions.size() : 0u);
+      EXPECT_TRUE(sameBits(slips, expectedSlips)) << "slips differ";
+      // Within the budget the tracer spaces them by: the engine's textures
+      // take what Core says a checkpoint takes, no more than the queue reports.
+      EXPECT_EQ(replayed.engine().checkpointBytes(), queue.checkpointBytes());
 
-    // Dropped: none left, and a resume changes nothing.
-    const Readback before(replayed.engine());
-    replayed.dropCheckpoints();
-    EXPECT_EQ(replayed.engine().checkpointCount(), 0);
-    replayed.resumeCheckpoint(10);
-    expectSameBits(Readback(replayed.engine()), before);
-    replayed.engine().release();
-  }
+      // Dropped: none left, and a resume changes nothing.
+      const Readback before(replayed.engine());
+      replayed.dropCheckpoints();
+      EXPECT_EQ(replayed.engine().checkpointCount(), 0);
+      replayed.resumeCheckpoint(10);
+      expectSameBits(Readback(replayed.engine()), before);
+      replayed.engine().release();
+    }
 }
 
 TEST(GpuStepper, ReleasesDrawFromTheEmitterSetDuringATrace)
