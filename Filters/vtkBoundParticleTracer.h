@@ -224,8 +224,9 @@ public:
   /// the trace, so that going back in time resumes from the latest one at or
   /// before the time asked for instead of replaying from the start (with the
   /// same result, bit for bit). 0 keeps none. At most half of what the
-  /// process can allocate is used. CPU engine; the GPU engine replays from
-  /// the start. Default 256; clamped to [0, 1e7], a value outside said.
+  /// process can allocate is used. The GPU engine keeps its checkpoints in
+  /// GPU memory (copies of its state textures, made on the GPU) within the
+  /// same budget. Default 256; clamped to [0, 1e7], a value outside said.
   vtkBPClampedSetMacro(CheckpointMemory, double, 0.0, 1.0e7);
   vtkGetMacro(CheckpointMemory, double);
   ///@}
