@@ -295,6 +295,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::configureStepper(const Config
   stepper.initialize(this->Plan.startTime());
   this->Resolved.parameters = p;
   this->Resolved.particlesPerElement = shape.particleCount();
+  this->Resolved.traceBytes = bp::traceBytes(shape, p);
   if (this->Steppers.queue())
   {
     // The display's output has no particles: it carries the ranges they span.
@@ -352,21 +353,19 @@ void vtkBoundParticleTracerInternals::startTrace(const Config& config)
 bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const Config& config)
 {
   bp::Stepper& stepper = this->stepper();
-  const bp::Engine* particles = stepper.particles();
-  if (!stepper.keepsCheckpoints() || !particles || this->Plan.streaming())
+  if (!stepper.keepsCheckpoints() || this->Plan.streaming())
   {
     return bp::CheckpointSpacing();
   }
-  // The whole system's state, from the words an element is made of
-  // (Engine::recordWords, the same on every process), so that every process
-  // keeps its checkpoints at the same steps.
-  const double stateBytes = 4.0 * double(particles->recordWords()) *
-    double(std::max<long long>(this->Resolved.parameters.numberOfElements, 1));
+  // The whole system's state as the stepper keeps it (Engine::recordWords,
+  // the same on every process, so that every process keeps its checkpoints
+  // at the same steps; the GPU engine's textures, padding included, where
+  // they are larger: bp::gpuCheckpointBytes).
+  const double stateBytes = stepper.checkpointBytes();
   // Automatic: half the whole trace's size (engine and output), the same
   // estimate that refuses a trace too large for the process.
-  const double asked = config.checkpointMemory < 0.0
-    ? 0.5 * bp::traceBytes(particles->shape(), this->Resolved.parameters)
-    : config.checkpointMemory * 1048576.0;
+  const double asked = config.checkpointMemory < 0.0 ? 0.5 * this->Resolved.traceBytes
+                                                     : config.checkpointMemory * 1048576.0;
   const double budget = std::min(asked, 0.5 * bp::allocatableBytes());
   return bp::checkpointSpacing(budget, stateBytes, this->Plan.stepsToEnd(this->Resolved.dt));
 }

@@ -157,6 +157,7 @@ struct ResolvedTrace
   double dt = 0.0;
   double elementSize = 0.0;
   std::size_t particlesPerElement = 1;
+  double traceBytes = 0.0;    ///< the whole trace's size (bp::traceBytes)
   bp::RangeFacts rangeFacts; ///< for the GPU display's output
 };
 

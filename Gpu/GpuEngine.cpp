@@ -161,6 +161,32 @@ void GpuEngine::restoreState()
   this->I->system.state.restore(this->I->system.passes, this->I->system.layout);
 }
 
+void GpuEngine::keepCheckpoint(long long steps)
+{
+  this->I->system.state.keepCheckpoint(this->I->system.passes, this->I->system.layout, steps);
+}
+
+bool GpuEngine::resumeCheckpoint(long long steps)
+{
+  return this->I->system.state.resumeCheckpoint(
+    this->I->system.passes, this->I->system.layout, steps);
+}
+
+void GpuEngine::dropCheckpoints()
+{
+  this->I->system.state.dropCheckpoints();
+}
+
+int GpuEngine::checkpointCount() const
+{
+  return int(this->I->system.state.checkpointCount());
+}
+
+double GpuEngine::checkpointBytes() const
+{
+  return this->I->system.state.checkpointBytes(this->I->system.layout);
+}
+
 void GpuEngine::updateFieldSamples(double t)
 {
   this->I->system.updateFieldSamples(t);

@@ -135,6 +135,22 @@ public:
   void saveState();
   void restoreState();
 
+  /// @name Checkpoints: copies of the state saveState() copies and of the
+  /// whole trail ring, kept on the GPU by texture copies (no read-back),
+  /// keyed by the steps from the start (Stepper::keepCheckpoint). A
+  /// configure() or release() drops them.
+  ///@{
+  void keepCheckpoint(long long steps);
+  /// Goes back to the copy kept after `steps` steps: a run that steps on
+  /// from there gives the bits of one that never stopped. False (nothing
+  /// changed) if no copy was kept there.
+  bool resumeCheckpoint(long long steps);
+  void dropCheckpoints();
+  int checkpointCount() const;
+  /// The GPU memory one checkpoint takes (bp::gpuCheckpointBytes).
+  double checkpointBytes() const;
+  ///@}
+
   /// Samples the field at every particle at time t (velocity and |curl v|,
   /// as bp::sampleAtPositions) into the samples texture, for colouring.
   void updateFieldSamples(double t);

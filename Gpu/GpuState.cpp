@@ -181,6 +181,13 @@ void GpuState::restore(const GpuPasses& passes, const GpuLayout& layout)
 
 void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool intoCopy) const
 {
+  this->copyState(passes, layout, this->Copy.particles.get(), this->Copy.slips.get(),
+    this->Copy.perElement, intoCopy);
+}
+
+void GpuState::copyState(const GpuPasses& passes, const GpuLayout& layout, GLuint particles,
+  GLuint slips, const std::array<GlTexture, ElementTextureCount>& perElement, bool intoCopy) const
+{
   // The current textures of the pairs, which stay current either way.
   const auto copy = [&](GLuint live, GLuint kept, int width, int height)
   {
@@ -189,14 +196,78 @@ void GpuState::copySaved(const GpuPasses& passes, const GpuLayout& layout, bool 
     else
       passes.copyTexture(kept, live, width, height);
   };
-  copy(this->particles.current(), this->Copy.particles.get(), layout.particleTextureWidth,
+  copy(this->particles.current(), particles, layout.particleTextureWidth,
     layout.particleTextureHeight);
-  copy(this->slips.get(), this->Copy.slips.get(), this->SlipWidth, this->SlipHeight);
+  copy(this->slips.get(), slips, this->SlipWidth, this->SlipHeight);
   for (int row = 0; row < ElementTextureCount; ++row)
   {
-    copy(this->perElement[std::size_t(row)].current(), this->Copy.perElement[std::size_t(row)].get(),
+    copy(this->perElement[std::size_t(row)].current(), perElement[std::size_t(row)].get(),
       layout.elementGrid[0], layout.elementGrid[1]);
   }
+}
+
+void GpuState::keepCheckpoint(const GpuPasses& passes, const GpuLayout& layout, long long steps)
+{
+  const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
+  const int w = layout.elementGrid[0], h = layout.elementGrid[1];
+  Checkpoint& c = this->Checkpoints[steps];
+  if (!c.particles)
+  {
+    c.particles = makeTexture2D(pw, ph);
+    c.slips = makeTexture2D(this->SlipWidth, this->SlipHeight);
+    for (GlTexture& copy : c.perElement)
+    {
+      copy = makeTexture2D(w, h);
+    }
+    for (int k = 0; k < this->trail.length(); ++k)
+    {
+      c.trailParticles.add(makeTexture2D(pw, ph));
+      c.trailElements.add(makeTexture2D(w, h));
+    }
+  }
+  this->copyState(passes, layout, c.particles.get(), c.slips.get(), c.perElement, true);
+  for (int k = 0; k < this->trail.length(); ++k)
+  {
+    const std::size_t slot = std::size_t(k);
+    passes.copyTexture(this->trail.particles[slot], c.trailParticles[slot], pw, ph);
+    passes.copyTexture(this->trail.elements[slot], c.trailElements[slot], w, h);
+  }
+  c.trailTimes = this->trail.times;
+  c.trailNewest = this->trail.newest;
+}
+
+bool GpuState::resumeCheckpoint(const GpuPasses& passes, const GpuLayout& layout, long long steps)
+{
+  const auto found = this->Checkpoints.find(steps);
+  if (found == this->Checkpoints.end())
+  {
+    return false;
+  }
+  const Checkpoint& c = found->second;
+  const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
+  const int w = layout.elementGrid[0], h = layout.elementGrid[1];
+  this->copyState(passes, layout, c.particles.get(), c.slips.get(), c.perElement, false);
+  for (int k = 0; k < this->trail.length(); ++k)
+  {
+    const std::size_t slot = std::size_t(k);
+    passes.copyTexture(c.trailParticles[slot], this->trail.particles[slot], pw, ph);
+    passes.copyTexture(c.trailElements[slot], this->trail.elements[slot], w, h);
+  }
+  this->trail.times = c.trailTimes;
+  this->trail.newest = c.trailNewest;
+  // As after restore(): no short step is shown, the steps from here on are kept.
+  this->Copy.watchesTrail = false;
+  return true;
+}
+
+double GpuState::checkpointBytes(const GpuLayout& layout) const
+{
+  const double particleTexels =
+    double(layout.particleTextureWidth) * double(layout.particleTextureHeight);
+  const double elementTexels = double(layout.elementGrid[0]) * double(layout.elementGrid[1]);
+  const double texels = particleTexels + double(this->SlipWidth) * double(this->SlipHeight) +
+    ElementTextureCount * elementTexels + this->trail.length() * (particleTexels + elementTexels);
+  return 16.0 * texels;
 }
 
 } // namespace bp

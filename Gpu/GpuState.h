@@ -25,6 +25,7 @@
 #include "SuperSet.h"
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,21 @@ public:
   /// trail comes back whole when the steps since save() recorded at most one
   /// new slot, as the one short step the tracer takes back does.
   void restore(const GpuPasses& passes, const GpuLayout& layout);
+
+  /// @name Checkpoints (Stepper::keepCheckpoint): copies, on the GPU, of
+  /// what save() copies and of the whole trail ring (its textures, times
+  /// and newest slot: many steps lie between a checkpoint and a resume),
+  /// keyed by step count. Dropped with the state.
+  ///@{
+  void keepCheckpoint(const GpuPasses& passes, const GpuLayout& layout, long long steps);
+  /// Goes back to the copy kept after `steps` steps, as restore() goes back
+  /// to save()'s; false (nothing changed) if none was kept there.
+  bool resumeCheckpoint(const GpuPasses& passes, const GpuLayout& layout, long long steps);
+  void dropCheckpoints() { this->Checkpoints.clear(); }
+  std::size_t checkpointCount() const { return this->Checkpoints.size(); }
+  /// The bytes of one checkpoint's textures (bp::gpuCheckpointBytes).
+  double checkpointBytes(const GpuLayout& layout) const;
+  ///@}
 
   /// Empties the trail ring (Engine::initialize): no time recorded, every
   /// slot's generations -1 and positions 0.
@@ -140,6 +156,21 @@ private:
     bool watchesTrail = false; ///< from save() to restore(): keep the first slot overwritten
   };
   Saved Copy;
+  /// A checkpoint: the textures save() copies, and the whole trail ring.
+  struct Checkpoint
+  {
+    GlTexture particles;
+    GlTexture slips;
+    std::array<GlTexture, ElementTextureCount> perElement;
+    GlTextureList trailParticles, trailElements;
+    std::vector<double> trailTimes;
+    int trailNewest = -1;
+  };
+  std::map<long long, Checkpoint> Checkpoints;
+  /// Copies the pairs' current textures and the slips into `particles`,
+  /// `slips` and `perElement`, or back (save()'s copy and a checkpoint's alike).
+  void copyState(const GpuPasses& passes, const GpuLayout& layout, GLuint particles, GLuint slips,
+    const std::array<GlTexture, ElementTextureCount>& perElement, bool intoCopy) const;
   int SlipWidth = 1, SlipHeight = 1; ///< the slips' textures' size
 };
 

@@ -9,6 +9,8 @@
 #ifndef BoundParticles_GpuStateLayout_h
 #define BoundParticles_GpuStateLayout_h
 
+#include "ParticleLayout.h"
+
 #include <string>
 
 namespace bp
@@ -34,6 +36,8 @@ enum class ElementTexture
   Count
 };
 constexpr int ElementTextureCount = int(ElementTexture::Count);
+static_assert(ElementTextureCount == GpuElementTextureRows,
+  "Core's gpuCheckpointBytes counts the per-element rows (ParticleLayout.h)");
 
 /// Each row's sampler in the kernels' GLSL (Shaders/), in ElementTexture's order.
 constexpr const char* ElementTextureSamplers[ElementTextureCount] = { "bpElementState", "bpCenters",

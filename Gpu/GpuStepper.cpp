@@ -10,6 +10,8 @@ std::string GpuStepper::configure(const ElementTemplate& shape, const Parameters
   // Arrays hold: the GPU engine fits poses always (one pass per element).
   Parameters p = parameters;
   p.trackPoses = true;
+  // The engine's configure drops its checkpoints.
+  this->Checkpoints.clear();
   return this->Gpu.configure(shape, p);
 }
 
@@ -41,6 +43,29 @@ void GpuStepper::restore()
 void GpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
 {
   this->Gpu.setEmitter(min, max);
+}
+
+void GpuStepper::keepCheckpoint(long long steps, double time)
+{
+  this->Gpu.keepCheckpoint(steps);
+  this->Checkpoints.add(steps, time);
+}
+
+void GpuStepper::resumeCheckpoint(long long steps)
+{
+  if (!this->Checkpoints.has(steps) || !this->Gpu.resumeCheckpoint(steps))
+  {
+    return; // the plan resumes only from a copy it was told of
+  }
+  this->cursor.steps = steps;
+  this->cursor.committed = this->Checkpoints.timeOf(steps);
+  this->cursor.showsPartialStep = false;
+}
+
+void GpuStepper::dropCheckpoints()
+{
+  this->Gpu.dropCheckpoints();
+  Stepper::dropCheckpoints();
 }
 
 } // namespace bp

@@ -34,6 +34,12 @@ public:
   void restore() override;
   /// GpuEngine::setEmitter().
   void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
+  /// GpuEngine::keepCheckpoint(): copies on the GPU.
+  bool keepsCheckpoints() const override { return true; }
+  void keepCheckpoint(long long steps, double time) override;
+  void resumeCheckpoint(long long steps) override;
+  void dropCheckpoints() override;
+  double checkpointBytes() const override { return this->Gpu.checkpointBytes(); }
   /// Null: the state lives in GPU textures (engine().read() fetches it).
   const Engine* particles() override { return nullptr; }
 

@@ -43,6 +43,8 @@ public:
   };
 
   bp::GpuEngine& engine() { return this->Stepper.engine(); }
+  /// The checkpoints the engine holds (GpuStepper::checkpoints()).
+  const bp::CheckpointIndex& checkpoints() const { return this->Stepper.checkpoints(); }
 
   /**
    * Applies `calls` in order, asking `progress` before each whether to go on

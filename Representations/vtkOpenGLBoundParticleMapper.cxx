@@ -341,7 +341,7 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   {
     // What has been stepped stays and is drawn; the tracer's next decision
     // starts from where the engine stands (WorkQueue::settleCursor).
-    I.Writer->stoppedAt(progress.stoppedAt());
+    I.Writer->stoppedAt(progress.stoppedAt(), progress.stoppedSteps(), I.Replay.checkpoints());
     vtkWarningMacro("Aborted: the GPU engine stopped at t = "
       << progress.stoppedAt() << " on its way to t = " << I.Queue->draw().time
       << ", and the display shows the elements there. The next update (another time, or "

@@ -215,6 +215,9 @@ public:
   /// The 32-bit words of one element's state (forEachElementArray; normals
   /// are not sent but recomputed).
   std::size_t recordWords() const;
+  /// The same for a system of `shape` and `parameters`, without configuring
+  /// one: what a checkpoint of an element holds (Stepper::checkpointBytes).
+  static std::size_t recordWords(const ElementTemplate& shape, const Parameters& parameters);
   /// Appends element e's state to `out`.
   void packElement(std::size_t e, std::vector<std::uint32_t>& out) const;
   /**

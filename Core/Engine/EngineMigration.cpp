@@ -119,6 +119,16 @@ std::size_t Engine::recordWords() const
   return words;
 }
 
+std::size_t Engine::recordWords(const ElementTemplate& shape, const Parameters& parameters)
+{
+  // forEachElementArray's widths and blocks, from the shape and parameters alone.
+  const std::size_t n = shape.particleCount();
+  const std::size_t slots = std::size_t(std::max(parameters.trailLength, 0));
+  const std::size_t perElement = 1 + 1 + 1 + 1 + 3 + 4 + 4 + 4; // ids ... spins
+  const std::size_t perParticle = 3 + 1 + (carriesInertia(parameters) ? 3 : 0);
+  return perElement + perParticle * n + slots * (1 + 3 * n);
+}
+
 void Engine::packElement(std::size_t e, std::vector<std::uint32_t>& out) const
 {
   const std::size_t E = this->elementCount();

@@ -50,4 +50,16 @@ ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPer
   return l;
 }
 
+double gpuCheckpointBytes(
+  std::size_t elements, std::size_t particlesPerElement, int trailLength, bool inertial)
+{
+  const ParticleLayout layout = ParticleLayout::of(elements, particlesPerElement);
+  const double particleTexels = double(layout.width) * double(layout.height);
+  const double elementTexels = double(layout.elementGrid[0]) * double(layout.elementGrid[1]);
+  const double slots = double(std::max(trailLength, 0));
+  const double texels = particleTexels + (inertial ? particleTexels : 1.0) +
+    GpuElementTextureRows * elementTexels + slots * (particleTexels + elementTexels);
+  return 16.0 * texels; // RGBA32F
+}
+
 } // namespace bp

@@ -44,6 +44,20 @@ struct ParticleLayout
  */
 std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
 
+/// The GPU engine's per-element state textures (Gpu/GpuStateLayout.h's
+/// ElementTexture rows; a static_assert there keeps the two equal).
+constexpr int GpuElementTextureRows = 5;
+
+/**
+ * The bytes of one checkpoint of the GPU engine (GpuEngine::keepCheckpoint):
+ * RGBA32F copies of the particle texture, the slips (the particle texture's
+ * size with inertia, one texel without), every per-element row, and with a
+ * motion trail every slot's particle and element texture; the textures'
+ * padding included. `inertial`: bp::carriesInertia.
+ */
+double gpuCheckpointBytes(
+  std::size_t elements, std::size_t particlesPerElement, int trailLength, bool inertial);
+
 } // namespace bp
 
 #endif

@@ -27,6 +27,15 @@ std::string EngineCall::applyTo(Stepper& target) const
     case Kind::SetEmitter:
       target.setEmitter(this->parameters.emitterMin, this->parameters.emitterMax);
       break;
+    case Kind::KeepCheckpoint:
+      target.keepCheckpoint(this->steps, this->t);
+      break;
+    case Kind::ResumeCheckpoint:
+      target.resumeCheckpoint(this->steps);
+      break;
+    case Kind::DropCheckpoints:
+      target.dropCheckpoints();
+      break;
   }
   return std::string();
 }

@@ -23,16 +23,23 @@ struct EngineCall
 {
   enum class Kind
   {
-    Configure,  ///< shape, parameters
-    SetField,   ///< field
-    Initialize, ///< place every element
-    Step,       ///< t, h
-    Save,       ///< keep a copy of the state
-    Restore,    ///< go back to the copy
-    SetEmitter  ///< parameters.emitterMin, emitterMax
+    Configure,        ///< shape, parameters
+    SetField,         ///< field
+    Initialize,       ///< place every element
+    Step,             ///< t, h
+    Save,             ///< keep a copy of the state
+    Restore,          ///< go back to the copy
+    SetEmitter,       ///< parameters.emitterMin, emitterMax
+    KeepCheckpoint,   ///< steps, t: keep a checkpoint of the state (Stepper::keepCheckpoint)
+    ResumeCheckpoint, ///< steps: go back to that checkpoint
+    DropCheckpoints   ///< drop every checkpoint
   };
   Kind kind = Kind::Step;
   double t = 0.0, h = 0.0;
+  /// Step: the steps from the start before this one (TraceCursor::steps), so
+  /// a run stopped before it knows where the engine stands; KeepCheckpoint,
+  /// ResumeCheckpoint: the checkpoint's step count.
+  long long steps = 0;
   std::shared_ptr<const ElementTemplate> shape;
   Parameters parameters;
   std::shared_ptr<const VectorField> field;

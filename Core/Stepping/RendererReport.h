@@ -9,6 +9,7 @@
 #ifndef BoundParticles_RendererReport_h
 #define BoundParticles_RendererReport_h
 
+#include "Checkpoints.h"
 #include "RendererKind.h"
 
 #include <cstdint>
@@ -31,6 +32,10 @@ public:
   std::uint64_t stops() const { return this->Stops; }
   /// The step boundary the engine stood on after the last stop.
   double stoppedAt() const { return this->StoppedAt; }
+  /// The steps from the start to stoppedAt() (TraceCursor::steps).
+  long long stoppedSteps() const { return this->StoppedSteps; }
+  /// The checkpoints the renderer's engine held after the last stop.
+  const CheckpointIndex& heldAtStop() const { return this->HeldAtStop; }
   /// How many times the state the recorded calls lead to was lost (released
   /// with the GL context, or calls dropped): the tracer replays.
   std::uint64_t losses() const { return this->Losses; }
@@ -39,6 +44,8 @@ private:
   friend class RendererReportWriter;
   std::uint64_t Stops = 0;
   double StoppedAt = 0.0;
+  long long StoppedSteps = 0;
+  CheckpointIndex HeldAtStop;
   std::uint64_t Losses = 0;
 };
 

@@ -66,6 +66,7 @@ bool ReplayProgress::beforeCall(std::size_t k)
     this->Stopped = true;
     this->StoppedAt = call.t;
     this->StoppedBefore = k;
+    this->StoppedSteps = call.steps;
     return false;
   }
   return true;

@@ -65,6 +65,8 @@ public:
   /// After a stop: the time the engine stands at, the start time of the Step
   /// call the run stopped before.
   double stoppedAt() const { return this->StoppedAt; }
+  /// After a stop: the steps from the start to stoppedAt() (the Step call's EngineCall::steps).
+  long long stoppedSteps() const { return this->StoppedSteps; }
   /// After a stop: the index of the call the run stopped before.
   std::size_t stoppedBefore() const { return this->StoppedBefore; }
   /// How many reports were made.
@@ -83,6 +85,7 @@ private:
   bool Stopped = false;
   double StoppedAt = 0.0;
   std::size_t StoppedBefore = 0;
+  long long StoppedSteps = 0;
 };
 
 /// The engine's rates assumed where the renderer has measured none yet

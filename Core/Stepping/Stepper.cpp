@@ -92,6 +92,12 @@ void CpuStepper::dropCheckpoints()
   Stepper::dropCheckpoints();
 }
 
+double CpuStepper::checkpointBytes() const
+{
+  return 4.0 * double(this->Current.recordWords()) *
+    double(std::max<std::size_t>(this->Current.parameters().numberOfElements, 1));
+}
+
 const Engine* CpuStepper::particles()
 {
   return &this->Current;

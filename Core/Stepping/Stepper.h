@@ -87,6 +87,10 @@ public:
   virtual void dropCheckpoints() { this->Checkpoints.clear(); }
   /// The copies held: their step counts and times.
   const CheckpointIndex& checkpoints() const { return this->Checkpoints; }
+  /// The bytes one copy of the whole system takes, as configured (every
+  /// process of a distributed run alike), for the spacing
+  /// (bp::checkpointSpacing); 0 before a configure.
+  virtual double checkpointBytes() const { return 0.0; }
   ///@}
 
   /// The particles as data in this process; null where they live elsewhere
@@ -126,6 +130,9 @@ public:
   void keepCheckpoint(long long steps, double time) override;
   void resumeCheckpoint(long long steps) override;
   void dropCheckpoints() override;
+  /// The engine's state words an element (Engine::recordWords) times the
+  /// whole system's elements.
+  double checkpointBytes() const override;
   const Engine* particles() override;
 
   Engine& engine() { return this->Current; }

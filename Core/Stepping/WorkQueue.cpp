@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WorkQueue.h"
 
+#include "ParticleLayout.h"
+
+#include <algorithm>
+
 namespace bp
 {
 
@@ -11,8 +15,17 @@ std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters&
   {
     return error;
   }
-  // The engine starts again: nothing recorded before matters.
+  // The engine starts again: nothing recorded before matters, and the GPU
+  // engine's configure drops its checkpoints.
   this->Pending.clear();
+  this->Checkpoints.clear();
+  Parameters gpu = parameters;
+  gpu.trackPoses = true; // as GpuStepper::configure
+  const double cpuBytes = 4.0 * double(Engine::recordWords(shape, gpu));
+  const double elements = double(std::max<std::size_t>(parameters.numberOfElements, 1));
+  this->CheckpointBytes = std::max(cpuBytes * elements,
+    gpuCheckpointBytes(parameters.numberOfElements, shape.particleCount(), parameters.trailLength,
+      carriesInertia(parameters)));
   EngineCall call;
   call.kind = EngineCall::Kind::Configure;
   call.shape = std::make_shared<const ElementTemplate>(shape);
@@ -44,6 +57,7 @@ void WorkQueue::step(double t, double h)
   call.kind = EngineCall::Kind::Step;
   call.t = t;
   call.h = h;
+  call.steps = this->cursor.steps; // the tracer counts the step once it is recorded
   this->Pending.push_back(call);
 }
 
@@ -70,6 +84,39 @@ void WorkQueue::setEmitter(const std::array<float, 3>& min, const std::array<flo
   this->Pending.push_back(call);
 }
 
+void WorkQueue::keepCheckpoint(long long steps, double time)
+{
+  EngineCall call;
+  call.kind = EngineCall::Kind::KeepCheckpoint;
+  call.steps = steps;
+  call.t = time;
+  this->Pending.push_back(call);
+  this->Checkpoints.add(steps, time);
+}
+
+void WorkQueue::resumeCheckpoint(long long steps)
+{
+  if (!this->Checkpoints.has(steps))
+  {
+    return; // the plan resumes only from a copy it was told of
+  }
+  EngineCall call;
+  call.kind = EngineCall::Kind::ResumeCheckpoint;
+  call.steps = steps;
+  this->Pending.push_back(call);
+  this->cursor.steps = steps;
+  this->cursor.committed = this->Checkpoints.timeOf(steps);
+  this->cursor.showsPartialStep = false;
+}
+
+void WorkQueue::dropCheckpoints()
+{
+  EngineCall call;
+  call.kind = EngineCall::Kind::DropCheckpoints;
+  this->Pending.push_back(call);
+  Stepper::dropCheckpoints();
+}
+
 std::vector<EngineCall> WorkQueue::take()
 {
   std::vector<EngineCall> calls;
@@ -87,16 +134,21 @@ void WorkQueue::settleCursor()
   {
     this->SettledStops = news.stops();
     this->cursor.committed = news.stoppedAt();
+    this->cursor.steps = news.stoppedSteps();
     this->cursor.showsPartialStep = false;
+    // Checkpoints recorded after the stop never ran.
+    this->Checkpoints = news.heldAtStop();
   }
   if (news.losses() != this->SettledLosses)
   {
     this->SettledLosses = news.losses();
     this->cursor.valid = false;
+    // The copies went with the GPU state: never resume from one.
+    this->Checkpoints.clear();
   }
 }
 
-void RendererReportWriter::stoppedAt(double committed)
+void RendererReportWriter::stoppedAt(double committed, long long steps, const CheckpointIndex& held)
 {
   EngineStateNews& news = this->Queue->Report.engineState;
   if (this->Queue->hasPending())
@@ -106,6 +158,8 @@ void RendererReportWriter::stoppedAt(double committed)
     return;
   }
   news.StoppedAt = committed;
+  news.StoppedSteps = steps;
+  news.HeldAtStop = held;
   ++news.Stops;
 }
 

@@ -77,6 +77,24 @@ public:
   void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
   bool readsAhead() const override { return this->Report.streamTimeSteps; }
   void offerUpcoming(const FieldSlice& slice) override { this->Upcoming = slice; }
+
+  /// @name Checkpoints, recorded as calls (EngineCall::Kind::KeepCheckpoint,
+  /// ResumeCheckpoint, DropCheckpoints) that the renderer's GPU engine runs
+  /// on copies of its state textures, on the GPU (GpuEngine::keepCheckpoint).
+  /// checkpoints() is what the GPU holds once every recorded call has run.
+  ///@{
+  bool keepsCheckpoints() const override { return true; }
+  void keepCheckpoint(long long steps, double time) override;
+  /// Records the call and moves the cursor to the checkpoint, as the
+  /// renderer's engine will stand once it runs.
+  void resumeCheckpoint(long long steps) override;
+  void dropCheckpoints() override;
+  /// The larger of the GPU engine's checkpoint (its textures, padding
+  /// included: bp::gpuCheckpointBytes) and the CPU engine's state
+  /// (Engine::recordWords), for the system last configured.
+  double checkpointBytes() const override { return this->CheckpointBytes; }
+  ///@}
+
   /// Drops every pending call (a replay makes them moot).
   void clear() { this->Pending.clear(); }
   /// Whether calls wait for the renderer.
@@ -86,9 +104,11 @@ public:
    * The tracer, at the start of its decision: takes into `cursor` what the
    * display recorded since the last time (RendererReportWriter::stoppedAt,
    * stateLost). After a stop the engine stands on that step boundary,
-   * showing no short step, and the next update continues from there; after
-   * a loss (or a stop that dropped calls recorded meanwhile) the cursor
-   * holds no trace, and the next update replays.
+   * showing no short step, the steps from the start that the stop reported,
+   * holding the checkpoints the renderer's engine holds, and the next update
+   * continues from there; after a loss (or a stop that dropped calls
+   * recorded meanwhile) the cursor holds no trace and the queue no
+   * checkpoints (they went with the GPU state), and the next update replays.
    */
   void settleCursor();
 
@@ -122,6 +142,7 @@ private:
   DrawSettings Draw;
   bool AutomaticOnCpu = false;
   FieldSlice Upcoming;
+  double CheckpointBytes = 0.0;
   /// The engineState counts this queue's cursor has taken in (settleCursor).
   std::uint64_t SettledStops = 0;
   std::uint64_t SettledLosses = 0;
@@ -155,13 +176,16 @@ public:
 
   /**
    * The renderer ran the calls take() gave only up to a Step call from
-   * `committed` (the user aborted, ReplayProgress.h): the engine stands on
-   * that step boundary, and the tracer's next decision continues from there
-   * (WorkQueue::settleCursor). Calls recorded meanwhile (an update inside the
-   * run) continue from where every taken call would have led: they are
-   * dropped here, so no render runs them, and the next update replays.
+   * `committed` (the user aborted, ReplayProgress.h), `steps` steps from the
+   * start (the call's EngineCall::steps), its engine holding the checkpoints
+   * `held` (GpuStepper::checkpoints(): those recorded after the stop never
+   * ran): the engine stands on that step boundary, and the tracer's next
+   * decision continues from there (WorkQueue::settleCursor). Calls
+   * recorded meanwhile (an update inside the run) continue from where every
+   * taken call would have led: they are dropped here, so no render runs
+   * them, and the next update replays.
    */
-  void stoppedAt(double committed);
+  void stoppedAt(double committed, long long steps, const CheckpointIndex& held);
 
   /// The engine state the recorded calls lead to is gone (the renderer
   /// released its GL resources): what is queued continues from it, so it is

@@ -31,6 +31,7 @@ std::vector<bp::EngineCall> replayCalls(int steps)
     call.kind = K::Step;
     call.t = 0.1 * k;
     call.h = 0.1;
+    call.steps = k; // the steps before it, as WorkQueue::step records
     calls.push_back(call);
   }
   bp::EngineCall save;
@@ -138,6 +139,8 @@ TEST(ReplayProgress, StopsBeforeAStepOnItsBoundary)
   const bp::EngineCall& next = calls[progress.stoppedBefore()];
   EXPECT_EQ(next.kind, bp::EngineCall::Kind::Step);
   EXPECT_EQ(progress.stoppedAt(), next.t);
+  // The steps from the start to there, for the cursor and the checkpoints.
+  EXPECT_EQ(progress.stoppedSteps(), (long long)(progress.stoppedBefore()) - 3);
   // About 150 ms of a second's work, and no last report of 1.
   EXPECT_GT(ran, 100u);
   EXPECT_LT(ran, 250u);

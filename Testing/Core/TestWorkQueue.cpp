@@ -6,6 +6,9 @@
 // at its next decision.
 #include "WorkQueue.h"
 
+#include "ElementTemplate.h"
+#include "ParticleLayout.h"
+
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -40,6 +43,7 @@ struct Handoff
     for (int k = 0; k < 100; ++k)
     {
       tracer->step(0.1 * k, 0.1);
+      ++tracer->cursor.steps; // as the tracer counts them
     }
     taken = display.writer.take();
   }
@@ -77,7 +81,7 @@ TEST(WorkQueue, TheTracerGoesOnFromWhereTheDisplayStopped)
   Handoff h;
   // The run stopped before the step from t = 2.5 (ReplayProgress): the
   // display records it; the tracer's cursor is the tracer's until it looks.
-  h.display.writer.stoppedAt(2.5);
+  h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
   EXPECT_EQ(h.tracer->cursor.committed, 10.0);
   EXPECT_TRUE(h.tracer->cursor.showsPartialStep);
   EXPECT_EQ(h.tracer->report().engineState.stops(), 1u);
@@ -104,7 +108,7 @@ TEST(WorkQueue, AStopWhileCallsArePendingDropsThemAndTheTracerReplays)
   // taken call would have led, t = 10.
   h.tracer->step(10.0, 0.1);
   ASSERT_TRUE(h.tracer->hasPending());
-  h.display.writer.stoppedAt(2.5);
+  h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
   // Dropped at once, so no render runs them before the tracer decides again.
   EXPECT_FALSE(h.tracer->hasPending());
   EXPECT_TRUE(h.display.writer.take().empty());
@@ -138,7 +142,7 @@ TEST(WorkQueue, StopsAndLossesBetweenTwoDecisionsComeToWhatTheyDidInTurn)
   {
     Handoff h;
     h.display.writer.stateLost();
-    h.display.writer.stoppedAt(2.5);
+    h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
     h.tracer->settleCursor();
     EXPECT_FALSE(h.tracer->cursor.valid);
     EXPECT_EQ(h.tracer->cursor.committed, 2.5);
@@ -147,7 +151,7 @@ TEST(WorkQueue, StopsAndLossesBetweenTwoDecisionsComeToWhatTheyDidInTurn)
   // A stop and then a loss: the same.
   {
     Handoff h;
-    h.display.writer.stoppedAt(2.5);
+    h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
     h.display.writer.stateLost();
     h.tracer->settleCursor();
     EXPECT_FALSE(h.tracer->cursor.valid);
@@ -157,11 +161,174 @@ TEST(WorkQueue, StopsAndLossesBetweenTwoDecisionsComeToWhatTheyDidInTurn)
   // Two stops: the later one.
   {
     Handoff h;
-    h.display.writer.stoppedAt(2.5);
-    h.display.writer.stoppedAt(1.5);
+    h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
+    h.display.writer.stoppedAt(1.5, 15, bp::CheckpointIndex());
     h.tracer->settleCursor();
     EXPECT_TRUE(h.tracer->cursor.valid);
     EXPECT_EQ(h.tracer->cursor.committed, 1.5);
+  }
+}
+
+TEST(WorkQueue, RecordsCheckpointCallsAndHoldsWhatTheGpuWillHold)
+{
+  std::shared_ptr<bp::WorkQueue> tracer;
+  bp::DisplayWorkQueue display = bp::newDisplayWorkQueue(3, tracer);
+  EXPECT_TRUE(tracer->keepsCheckpoints());
+  bp::Parameters p;
+  p.numberOfElements = 10;
+  p.trailLength = 3;
+  p.trailInterval = 0.1;
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  ASSERT_EQ(tracer->configure(cross, p), "");
+  for (int k = 0; k < 6; ++k)
+  {
+    if (k == 2 || k == 4)
+    {
+      tracer->keepCheckpoint(k, 0.1 * k);
+    }
+    tracer->step(0.1 * k, 0.1);
+    ++tracer->cursor.steps;
+  }
+  // What the GPU will hold once the calls run, before they do.
+  EXPECT_EQ(tracer->checkpoints().size(), 2u);
+  EXPECT_TRUE(tracer->checkpoints().has(2));
+  EXPECT_DOUBLE_EQ(tracer->checkpoints().timeOf(4), 0.4);
+  // Back to step 2: the cursor stands where the engine will, showing no short step.
+  tracer->cursor.showsPartialStep = true;
+  tracer->resumeCheckpoint(2);
+  EXPECT_EQ(tracer->cursor.steps, 2);
+  EXPECT_DOUBLE_EQ(tracer->cursor.committed, 0.2);
+  EXPECT_FALSE(tracer->cursor.showsPartialStep);
+  tracer->step(0.2, 0.1);
+  // A copy it was not told of records nothing.
+  tracer->resumeCheckpoint(3);
+  EXPECT_EQ(tracer->cursor.steps, 2);
+
+  using K = bp::EngineCall::Kind;
+  const std::vector<bp::EngineCall> calls = display.writer.take();
+  ASSERT_EQ(calls.size(), 1u + 6u + 2u + 1u + 1u);
+  EXPECT_EQ(calls[0].kind, K::Configure);
+  EXPECT_EQ(calls[3].kind, K::KeepCheckpoint);
+  EXPECT_EQ(calls[3].steps, 2);
+  EXPECT_DOUBLE_EQ(calls[3].t, 0.2);
+  EXPECT_EQ(calls[4].kind, K::Step);
+  EXPECT_EQ(calls[4].steps, 2); // each step knows how many came before it
+  EXPECT_EQ(calls[6].kind, K::KeepCheckpoint);
+  EXPECT_EQ(calls[6].steps, 4);
+  EXPECT_EQ(calls[9].kind, K::ResumeCheckpoint);
+  EXPECT_EQ(calls[9].steps, 2);
+  EXPECT_EQ(calls[10].kind, K::Step);
+  EXPECT_EQ(calls[10].steps, 2);
+
+  // Dropped: recorded, and none held.
+  tracer->dropCheckpoints();
+  EXPECT_EQ(tracer->checkpoints().size(), 0u);
+  const std::vector<bp::EngineCall> drop = display.writer.take();
+  ASSERT_EQ(drop.size(), 1u);
+  EXPECT_EQ(drop[0].kind, K::DropCheckpoints);
+
+  // A configure starts a new engine, which holds none.
+  tracer->keepCheckpoint(8, 0.8);
+  ASSERT_EQ(tracer->configure(cross, p), "");
+  EXPECT_EQ(tracer->checkpoints().size(), 0u);
+}
+
+TEST(WorkQueue, ACheckpointTakesTheLargerOfTheGpuTexturesAndTheCpuState)
+{
+  std::shared_ptr<bp::WorkQueue> tracer;
+  bp::DisplayWorkQueue display = bp::newDisplayWorkQueue(3, tracer);
+  EXPECT_EQ(tracer->checkpointBytes(), 0.0);
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  for (const bool heavy : { false, true })
+  {
+    bp::Parameters p;
+    p.numberOfElements = 1000;
+    p.trailLength = heavy ? 0 : 4;
+    p.trailInterval = 0.1;
+    if (heavy)
+    {
+      p.inertia = bp::Inertia::MaxeyRiley;
+      p.responseTime = 0.01f;
+    }
+    ASSERT_EQ(bp::carriesInertia(p), heavy);
+    ASSERT_EQ(tracer->configure(cross, p), "");
+    p.trackPoses = true; // as the GPU engine runs it
+    bp::Engine cpu;
+    ASSERT_EQ(cpu.configure(cross, p), "");
+    const double cpuBytes = 4.0 * double(cpu.recordWords()) * 1000.0;
+    const double gpuBytes =
+      bp::gpuCheckpointBytes(1000, cross.particleCount(), p.trailLength, heavy);
+    // RGBA32F texels, padded to the texture's rows: larger than the CPU's record.
+    EXPECT_GT(gpuBytes, cpuBytes);
+    EXPECT_EQ(tracer->checkpointBytes(), std::max(cpuBytes, gpuBytes));
+    // The GPU engine's per element: 16 bytes a particle and a texel a row,
+    // as many again for the slips with inertia and per trail slot.
+    const std::size_t n = cross.particleCount();
+    const bp::ParticleLayout layout = bp::ParticleLayout::of(1000, n);
+    EXPECT_GE(gpuBytes,
+      16.0 * 1000.0 * double((heavy ? 2 : 1) * n + 5 + std::size_t(p.trailLength) * (n + 1)));
+    EXPECT_EQ(gpuBytes,
+      16.0 *
+        double(layout.width * layout.height * ((heavy ? 2 : 1) + p.trailLength) + (heavy ? 0 : 1) +
+          layout.elementGrid[0] * layout.elementGrid[1] * (5 + p.trailLength)));
+  }
+}
+
+TEST(WorkQueue, AStopTellsTheStepsAndTheCheckpointsThatRan)
+{
+  Handoff h;
+  // The renderer's engine kept the checkpoint at step 20 and stopped before
+  // the step from t = 2.5, the 26th: the one at step 40 was never kept.
+  h.tracer->keepCheckpoint(20, 2.0);
+  h.tracer->keepCheckpoint(40, 4.0);
+  h.tracer->cursor.steps = 100;
+  bp::CheckpointIndex held;
+  held.add(20, 2.0);
+  h.display.writer.take();
+  h.display.writer.stoppedAt(2.5, 25, held);
+  EXPECT_EQ(h.tracer->report().engineState.stoppedSteps(), 25);
+  EXPECT_EQ(h.tracer->checkpoints().size(), 2u); // the tracer's until it looks
+  h.tracer->settleCursor();
+  EXPECT_TRUE(h.tracer->cursor.valid);
+  EXPECT_EQ(h.tracer->cursor.committed, 2.5);
+  EXPECT_EQ(h.tracer->cursor.steps, 25);
+  EXPECT_EQ(h.tracer->checkpoints().size(), 1u);
+  EXPECT_TRUE(h.tracer->checkpoints().has(20));
+  EXPECT_FALSE(h.tracer->checkpoints().has(40));
+}
+
+TEST(WorkQueue, ALostStateTakesTheCheckpointsWithIt)
+{
+  Handoff h;
+  h.tracer->keepCheckpoint(20, 2.0);
+  h.display.writer.take();
+  h.display.writer.stateLost();
+  h.tracer->settleCursor();
+  EXPECT_FALSE(h.tracer->cursor.valid);
+  EXPECT_EQ(h.tracer->checkpoints().size(), 0u);
+}
+
+TEST(WorkQueue, TheEnginesRecordWordsNeedNoConfiguredEngine)
+{
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    bp::Parameters p;
+    p.numberOfElements = 5;
+    p.trailLength = variant == 1 ? 3 : 0;
+    p.trailInterval = 0.1;
+    if (variant == 2)
+    {
+      p.inertia = bp::Inertia::MaxeyRiley;
+      p.responseTime = 0.01f;
+    }
+    bp::Engine engine;
+    ASSERT_EQ(engine.configure(cross, p), "");
+    EXPECT_EQ(bp::Engine::recordWords(cross, p), engine.recordWords());
+    engine.initialize(bp::serialRunner());
+    std::vector<std::uint32_t> record;
+    engine.packElement(0, record);
+    EXPECT_EQ(record.size(), engine.recordWords());
   }
 }
 } // namespace

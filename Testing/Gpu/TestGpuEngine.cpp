@@ -1292,6 +1292,118 @@ TEST(GpuStepper, ReplaysAWorkQueueToTheSameBits)
   replayed.engine().release();
 }
 
+namespace
+{
+/// The calls the tracer records for a trace of `end` steps that keeps a
+/// checkpoint before steps 10 and 20, with `resume`: runs to step 30, shows a
+/// short step, goes back to the checkpoint at step 10 (as going back in time
+/// does) and steps on to `end`; without: straight to `end`. Short steps shown
+/// and taken back as schedule() takes them.
+void checkpointedTrace(bp::Stepper& stepper, const UnsteadySystem& s, bool resume, int end)
+{
+  ASSERT_EQ(stepper.configure(s.shape, s.p), "");
+  ASSERT_EQ(stepper.setField(s.field), "");
+  stepper.initialize(0.0);
+  stepper.cursor.steps = 0;
+  const double dt = 0.01;
+  auto run = [&](int from, int to)
+  {
+    for (int k = from; k < to; ++k)
+    {
+      if (k % 10 == 0 && k > 0 && k < 30 && !stepper.checkpoints().has(k))
+        stepper.keepCheckpoint(k, k * dt);
+      stepper.step(k * dt, dt);
+      stepper.cursor.steps = k + 1;
+      if (k % 10 == 5)
+      {
+        stepper.save();
+        stepper.step((k + 1) * dt, 0.4 * dt);
+        stepper.restore();
+      }
+    }
+  };
+  if (resume)
+  {
+    run(0, 30);
+    stepper.save(); // a short step shown, which the resume replaces
+    stepper.step(0.3, 0.5 * dt);
+    stepper.resumeCheckpoint(10);
+    EXPECT_EQ(stepper.cursor.steps, 10);
+    run(10, end);
+  }
+  else
+  {
+    run(0, end);
+  }
+}
+
+/// The system of tracked(), with heavy particles if `heavy`.
+UnsteadySystem checkpointed(bool heavy)
+{
+  UnsteadySystem s = tracked();
+  if (heavy)
+  {
+    s.p.inertia = bp::Inertia::MaxeyRiley;
+    s.p.responseTime = 0.02f;
+    s.p.densityRatio = 3.0f;
+  }
+  return s;
+}
+} // namespace
+
+TEST(GpuStepper, ResumesFromACheckpointToTheBitsOfARunThatNeverStopped)
+{
+  // Going back in time on the GPU engine: the tracer records checkpoint
+  // calls into the queue, the renderer's engine keeps copies of its
+  // textures on the GPU and resumes from one; stepping on from there gives
+  // the bits of a run that went straight on, trail and slips included: two
+  // steps on (the trail ring as the checkpoint kept it, no pose recorded
+  // since) and 30 steps on (the ring recorded over).
+  ASSERT_NE(context(), nullptr);
+  for (const bool heavy : { false, true })
+    for (const int end : { 12, 40 })
+    {
+      SCOPED_TRACE(std::string(heavy ? "heavy particles" : "trail, poses") + ", to step " +
+        std::to_string(end));
+      const UnsteadySystem s = checkpointed(heavy);
+      bp::GpuStepper straight;
+      checkpointedTrace(straight, s, false, end);
+      const Readback expected(straight.engine());
+      std::vector<float> expectedSlips;
+      straight.engine().readSlips(expectedSlips);
+      EXPECT_EQ(straight.engine().checkpointCount(), end > 20 ? 2 : 1);
+      straight.engine().release();
+
+      bp::WorkQueue queue(1);
+      EXPECT_TRUE(queue.keepsCheckpoints());
+      checkpointedTrace(queue, s, true, end);
+      EXPECT_EQ(queue.checkpoints().size(), 2u);
+      bp::GpuStepper replayed;
+      for (const bp::EngineCall& call : queue.take())
+        ASSERT_EQ(call.applyTo(replayed), "");
+      // The queue said what the engine holds once its calls ran.
+      EXPECT_EQ(replayed.engine().checkpointCount(), 2);
+      EXPECT_TRUE(replayed.checkpoints().has(10));
+      EXPECT_TRUE(replayed.checkpoints().has(20));
+      expectSameBits(Readback(replayed.engine()), expected);
+      std::vector<float> slips;
+      replayed.engine().readSlips(slips);
+      EXPECT_EQ(slips.size(), heavy ? expected.positions.size() : 0u);
+      EXPECT_TRUE(sameBits(slips, expectedSlips)) << "slips differ";
+      // Within the budget the tracer spaces them by: the engine's textures
+      // take what Core says a checkpoint takes, no more than the queue reports.
+      EXPECT_EQ(replayed.engine().checkpointBytes(), queue.checkpointBytes());
+
+      // Dropped: none left, and a resume changes nothing.
+      const Readback before(replayed.engine());
+      replayed.dropCheckpoints();
+      EXPECT_EQ(replayed.engine().checkpointCount(), 0);
+      replayed.resumeCheckpoint(10);
+      expectSameBits(Readback(replayed.engine()), before);
+      replayed.engine().release();
+    }
+}
+
 TEST(GpuStepper, ReleasesDrawFromTheEmitterSetDuringATrace)
 {
   // In situ, after the grid changed, the tracer moves the emitter box into

@@ -4,8 +4,9 @@ progress from about 0 to 1, never going back, where ParaView's progress bar
 listens (the display, relayed by the session's progress handler), and an abort
 asked for from a progress observer stops it between two steps. The next render
 draws what was stepped, without errors, and the next update goes on from there
-to the very picture of a replay that was never stopped. The GPU engine runs on
-this machine's Mesa llvmpipe."""
+to the very picture of a replay that was never stopped; going back in time then
+resumes from a checkpoint on the GPU to the picture of a fresh trace. The GPU
+engine runs on this machine's Mesa llvmpipe."""
 import os
 import sys
 import time
@@ -204,6 +205,25 @@ bptest.check(mean == 0.0 and pixels == 0.0,
              "going on after the abort drew another picture than a replay never stopped "
              "(mean %.4f, pixels %.4f)" % (mean, pixels))
 bptest.check(bptest.covered_fraction(continued) > 0.002, "the picture going on is empty")
+
+# Back in time on the GPU engine: the display's engine resumes from a
+# checkpoint it keeps on the GPU (no replay from the start), and draws the
+# picture of a fresh trace to that time.
+back_seconds = render_at(times[-4])
+back = picture("back")
+render_at(times[0])
+fresh_seconds = render_at(times[-4])
+fresh = picture("fresh")
+mean, pixels = bptest.image_difference(back, fresh, threshold=0)
+print("back to t = %g: %.2f s against a fresh trace's %.2f s; mean difference %.4f, "
+      "pixels differing %.4f" % (times[-4], back_seconds, fresh_seconds, mean, pixels))
+bptest.check(back_seconds < 0.3 * fresh_seconds,
+             "going back took %.2f s, a fresh trace %.2f s: it replayed" % (back_seconds,
+                                                                            fresh_seconds))
+bptest.check(mean == 0.0 and pixels == 0.0,
+             "back in time drew another picture than a fresh trace (mean %.4f, pixels %.4f)"
+             % (mean, pixels))
+bptest.check(bptest.covered_fraction(back) > 0.002, "the picture back in time is empty")
 
 Delete(shown)
 Delete(view)
