@@ -138,21 +138,20 @@ TEST(WorkQueue, ALostStateDropsWhatIsQueuedAndTheTracerReplays)
 
 TEST(WorkQueue, StopsAndLossesBetweenTwoDecisionsComeToWhatTheyDidInTurn)
 {
-  // A loss and then a stop: no trace (replay), standing at the stop.
+  // A loss and a stop, in either order: no trace (replay), standing at the stop.
+  for (const bool lossFirst : { true, false })
   {
+    SCOPED_TRACE(lossFirst ? "a loss, then a stop" : "a stop, then a loss");
     Handoff h;
-    h.display.writer.stateLost();
+    if (lossFirst)
+    {
+      h.display.writer.stateLost();
+    }
     h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
-    h.tracer->settleCursor();
-    EXPECT_FALSE(h.tracer->cursor.valid);
-    EXPECT_EQ(h.tracer->cursor.committed, 2.5);
-    EXPECT_FALSE(h.tracer->cursor.showsPartialStep);
-  }
-  // A stop and then a loss: the same.
-  {
-    Handoff h;
-    h.display.writer.stoppedAt(2.5, 25, bp::CheckpointIndex());
-    h.display.writer.stateLost();
+    if (!lossFirst)
+    {
+      h.display.writer.stateLost();
+    }
     h.tracer->settleCursor();
     EXPECT_FALSE(h.tracer->cursor.valid);
     EXPECT_EQ(h.tracer->cursor.committed, 2.5);
