@@ -21,7 +21,8 @@ LoadPlugin(args.plugin, ns=globals())
 
 flow = AnalyticFlow(Flow="Double Gyre", NumberOfTimeSteps=21)
 flow.UpdatePipeline()
-tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU")
+# Checkpoint Memory set: on the GPU engine the automatic budget keeps none.
+tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU", CheckpointMemory=256)
 view = CreateRenderView(ViewSize=[240, 240])
 view.OrientationAxesVisibility = 0
 shown = Show(tracer, view)
