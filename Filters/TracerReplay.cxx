@@ -363,14 +363,7 @@ bp::CheckpointSpacing vtkBoundParticleTracerInternals::checkpointSpacing(const C
   // they are larger: bp::gpuCheckpointBytes).
   const double stateBytes = stepper.checkpointBytes();
   // Automatic: half the whole trace's size (engine and output), the same
-  // estimate that refuses a trace too large for the process; on the GPU
-  // engine none, until asked for: on llvmpipe the memory of its checkpoints'
-  // textures was not all handed back when the tracer went (gui.memory held
-  // about 2 MiB more per GPU tracer made and deleted).
-  if (config.checkpointMemory < 0.0 && this->Steppers.queue())
-  {
-    return bp::CheckpointSpacing();
-  }
+  // estimate that refuses a trace too large for the process.
   const double asked = config.checkpointMemory < 0.0 ? 0.5 * this->Resolved.traceBytes
                                                      : config.checkpointMemory * 1048576.0;
   const double budget = std::min(asked, 0.5 * bp::allocatableBytes());

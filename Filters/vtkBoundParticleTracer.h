@@ -228,11 +228,10 @@ public:
   /// the trace, so that going back in time resumes from the latest one at or
   /// before the time asked for instead of replaying from the start (with the
   /// same result, bit for bit). -1 (default): half the trace's own size (its
-  /// engine state and output, as the memory estimate gives it) on the CPU
-  /// engine, none on the GPU engine; 0 keeps none. At most half of what the
-  /// process can allocate is used. The GPU engine keeps its checkpoints in
-  /// GPU memory (copies of its state textures, made on the GPU) within the
-  /// budget set. Clamped to [-1, 1e7], a value
+  /// engine state and output, as the memory estimate gives it); 0 keeps none.
+  /// At most half of what the process can allocate is used. The GPU engine
+  /// keeps its checkpoints in GPU memory (copies of its state textures, made
+  /// on the GPU) within the same budget. Clamped to [-1, 1e7], a value
   /// outside said.
   vtkBPClampedSetMacro(CheckpointMemory, double, -1.0, 1.0e7);
   vtkGetMacro(CheckpointMemory, double);

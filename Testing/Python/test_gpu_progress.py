@@ -21,8 +21,7 @@ LoadPlugin(args.plugin, ns=globals())
 
 flow = AnalyticFlow(Flow="Double Gyre", NumberOfTimeSteps=21)
 flow.UpdatePipeline()
-# Checkpoint Memory set: on the GPU engine the automatic budget keeps none.
-tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU", CheckpointMemory=256)
+tracer = BoundParticleTracer(Input=flow, NumberOfElements=2500, Engine="GPU")
 view = CreateRenderView(ViewSize=[240, 240])
 view.OrientationAxesVisibility = 0
 shown = Show(tracer, view)
