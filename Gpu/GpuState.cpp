@@ -236,14 +236,26 @@ void GpuState::keepCheckpoint(const GpuPasses& passes, const GpuLayout& layout, 
   c.trailNewest = this->trail.newest;
 }
 
+void GpuState::Checkpoint::reset()
+{
+  this->particles.reset();
+  this->slips.reset();
+  for (GlTexture& texture : this->perElement)
+  {
+    texture.reset();
+  }
+  this->trailParticles.clear();
+  this->trailElements.clear();
+}
+
 bool GpuState::resumeCheckpoint(const GpuPasses& passes, const GpuLayout& layout, long long steps)
 {
-  const auto found = this->Checkpoints.find(steps);
-  if (found == this->Checkpoints.end())
+  const Checkpoint* found = this->Checkpoints.find(steps);
+  if (!found)
   {
     return false;
   }
-  const Checkpoint& c = found->second;
+  const Checkpoint& c = *found;
   const int pw = layout.particleTextureWidth, ph = layout.particleTextureHeight;
   const int w = layout.elementGrid[0], h = layout.elementGrid[1];
   this->copyState(passes, layout, c.particles.get(), c.slips.get(), c.perElement, false);

@@ -165,8 +165,52 @@ private:
     GlTextureList trailParticles, trailElements;
     std::vector<double> trailTimes;
     int trailNewest = -1;
+
+    /// Deletes its textures (the context must be current).
+    void reset();
   };
-  std::map<long long, Checkpoint> Checkpoints;
+  /**
+   * The checkpoints by step count. Like GlObjectList, it deletes their
+   * textures when cleared or when another set is assigned over it (the
+   * engine's release assigns a new state): a std::map alone would only
+   * forget them, as ~GlObject calls no GL, and their memory would stay held
+   * after the tracer went (gui.memory found it).
+   */
+  class CheckpointSet
+  {
+  public:
+    CheckpointSet() = default;
+    CheckpointSet(CheckpointSet&&) noexcept = default;
+    CheckpointSet& operator=(CheckpointSet&& other) noexcept
+    {
+      if (this != &other)
+      {
+        this->clear();
+        this->Items = std::move(other.Items);
+      }
+      return *this;
+    }
+    /// Deletes every checkpoint's textures (the context must be current).
+    void clear()
+    {
+      for (auto& item : this->Items)
+      {
+        item.second.reset();
+      }
+      this->Items.clear();
+    }
+    Checkpoint& operator[](long long steps) { return this->Items[steps]; }
+    const Checkpoint* find(long long steps) const
+    {
+      const auto found = this->Items.find(steps);
+      return found == this->Items.end() ? nullptr : &found->second;
+    }
+    std::size_t size() const { return this->Items.size(); }
+
+  private:
+    std::map<long long, Checkpoint> Items;
+  };
+  CheckpointSet Checkpoints;
   /// Copies the pairs' current textures and the slips into `particles`,
   /// `slips` and `perElement`, or back (save()'s copy and a checkpoint's alike).
   void copyState(const GpuPasses& passes, const GpuLayout& layout, GLuint particles, GLuint slips,
