@@ -63,11 +63,17 @@ void attach(GLenum framebuffer, int k, GLuint texture)
 }
 } // namespace
 
-FusedStep FusedStep::of(const Parameters& parameters, int particles, bool springs, int maxThreads,
-  int sharedBytes, int wantedElements)
+int FusedStep::imagesBound(bool inertial)
+{
+  return 1 + ElementTextureCount + (inertial ? 1 : 0);
+}
+
+FusedStep FusedStep::of(const Parameters& parameters, int particles, bool springs,
+  const ComputeLimits& limits, int wantedElements)
 {
   FusedStep fused;
   fused.particles = particles;
+  const int maxThreads = limits.threads;
   int elements = wantedElements > 0
     ? std::max(1, std::min(wantedElements, maxThreads / std::max(particles, 1)))
     : fusedGroupElements(particles, maxThreads);
@@ -77,12 +83,15 @@ FusedStep FusedStep::of(const Parameters& parameters, int particles, bool spring
   const long perElement = 16L * particles * (fused.inertial ? 2 : 1) + 6L * 16;
   if (wantedElements > 0)
   {
-    elements = int(std::max(1L, std::min(long(elements), sharedBytes / perElement)));
+    elements = int(std::max(1L, std::min(long(elements), limits.sharedBytes / perElement)));
   }
   const long bytes = perElement * elements;
-  if (parameters.linking != Linking::None || particles > maxThreads || bytes > sharedBytes)
+  // Links join elements, which a workgroup cannot hold; a GPU with fewer
+  // image units than the step stores into cannot compile it.
+  if (parameters.linking != Linking::None || particles > maxThreads || bytes > limits.sharedBytes ||
+    imagesBound(fused.inertial) > limits.images)
   {
-    return fused; // links join elements; a workgroup cannot hold one
+    return fused;
   }
   fused.groupElements = elements;
   const Restoration r = parameters.restoration;

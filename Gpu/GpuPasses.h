@@ -80,6 +80,16 @@ enum class FusedRestore
   ShapeMatching ///< BP_FUSED_SHAPE_MATCHING
 };
 
+/// What a GPU's compute stage allows, as the fused step needs it.
+struct ComputeLimits
+{
+  int threads = 0;     ///< invocations a workgroup (and its x size, the smaller)
+  int sharedBytes = 0; ///< GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
+  /// Images one compute program may bind: the smaller of
+  /// GL_MAX_COMPUTE_IMAGE_UNIFORMS and GL_MAX_IMAGE_UNITS.
+  int images = 0;
+};
+
 /// The fused step of the compute path (bp_step.comp), as compiled for a system.
 struct FusedStep
 {
@@ -88,13 +98,17 @@ struct FusedStep
   FusedRestore restoration = FusedRestore::None; ///< BP_RESTORATION
   bool inertial = false; ///< heavy particles: slips stepped and shared (BP_INERTIAL)
   /// The fused step for a system, or none (groupElements 0) where its
-  /// elements do not fit a workgroup of `maxThreads` invocations and
-  /// `sharedBytes` of shared memory, or a super set's links join them.
+  /// elements do not fit a workgroup of `limits.threads` invocations and
+  /// `limits.sharedBytes` of shared memory, the images it stores into are
+  /// more than `limits.images`, or a super set's links join elements.
   /// `wantedElements` above 0 asks for that many elements a workgroup
   /// (BOUNDPARTICLES_FUSED_GROUP) in place of a SIMD group's worth; fewer
   /// where the limits hold fewer.
-  static FusedStep of(const Parameters& parameters, int particles, bool springs, int maxThreads,
-    int sharedBytes, int wantedElements = 0);
+  static FusedStep of(const Parameters& parameters, int particles, bool springs,
+    const ComputeLimits& limits, int wantedElements = 0);
+  /// The images the fused step stores into: the particles, each element
+  /// texture, and the slips of heavy particles (bp_step.comp).
+  static int imagesBound(bool inertial);
 };
 
 /// One pass being set up: its program in use, texture units handed out in turn.

@@ -100,14 +100,20 @@ std::string GpuSystem::checkTextureSize(const ParticleLayout&, int textureSizeLi
 
 FusedStep GpuSystem::fusedStep() const
 {
-  GLint threads = 0, sizeX = 0, shared = 0;
+  GLint threads = 0, sizeX = 0, shared = 0, images = 0, units = 0;
   glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &threads);
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_SIZE, 0, &sizeX);
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared);
+  glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &images);
+  glGetIntegerv(GL_MAX_IMAGE_UNITS, &units);
+  ComputeLimits limits;
+  limits.threads = std::min(threads, sizeX);
+  limits.sharedBytes = shared;
+  limits.images = std::min(images, units);
   // BOUNDPARTICLES_FUSED_GROUP: elements a workgroup, for tuning on a GPU.
   const char* wanted = std::getenv(FusedGroupVariable);
   return FusedStep::of(this->parameters, this->layout.particlesPerElement,
-    !this->shape.springs.empty(), std::min(threads, sizeX), shared, fusedGroupValue(wanted));
+    !this->shape.springs.empty(), limits, fusedGroupValue(wanted));
 }
 
 void GpuSystem::initialize(double startTime)

@@ -148,14 +148,34 @@ TEST(GpuPath, FusedGroupIsSetWithinTheLimits)
   EXPECT_EQ(bp::fusedGroupValue("2048"), 0);
   bp::Parameters p;
   p.numberOfElements = 1000;
-  const int automatic = bp::FusedStep::of(p, 16, true, 1024, 49152).groupElements;
+  const bp::ComputeLimits limits{ 1024, 49152, 8 };
+  const int automatic = bp::FusedStep::of(p, 16, true, limits).groupElements;
   EXPECT_EQ(automatic, 32);
-  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 8).groupElements, 8);
-  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 16).groupElements, 16);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, limits, 8).groupElements, 8);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, limits, 16).groupElements, 16);
   // 64 Strip16 elements are 1024 threads: the most a workgroup holds.
-  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 1024, 49152, 100).groupElements, 64);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, limits, 100).groupElements, 64);
   // Shared memory: 16 bytes a particle and 96 an element: 32 KiB hold 93.
-  EXPECT_EQ(bp::FusedStep::of(p, 16, true, 4096, 32768, 200).groupElements, 93);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, { 4096, 32768, 8 }, 200).groupElements, 93);
+}
+
+// The fused step stores into every element texture and the particles (and
+// the slips of heavy particles) at once: a GPU whose compute stage binds
+// fewer images gets the per-kernel passes, which store into at most four.
+TEST(GpuPath, FusedStepNeedsAnImageUnitForEachTextureItStores)
+{
+  bp::Parameters p;
+  p.numberOfElements = 1000;
+  const int massless = bp::FusedStep::imagesBound(false);
+  EXPECT_EQ(bp::FusedStep::imagesBound(true), massless + 1);
+  EXPECT_GT(bp::FusedStep::of(p, 16, true, { 1024, 49152, massless }).groupElements, 0);
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, { 1024, 49152, massless - 1 }).groupElements, 0);
+  p.inertia = bp::Inertia::MaxeyRiley;
+  p.responseTime = 0.1f;
+  EXPECT_EQ(bp::FusedStep::of(p, 16, true, { 1024, 49152, massless }).groupElements, 0);
+  EXPECT_GT(bp::FusedStep::of(p, 16, true, { 1024, 49152, massless + 1 }).groupElements, 0);
+  // OpenGL 4.3 promises 8 compute image uniforms: every fused step fits.
+  EXPECT_LE(bp::FusedStep::imagesBound(true), 8);
 }
 
 TEST(GpuPath, EnvironmentValuesAreCheckedAlike)
