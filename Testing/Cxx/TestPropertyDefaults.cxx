@@ -6,7 +6,8 @@
 //   for an enumeration, a text getter for a string, every component of a
 //   vector), read through the plugin's ClientServer wrapping as ParaView
 //   calls the class, starts at the XML's default; the setter keeps every
-//   component of both ends of the XML's range; an enumeration's values are
+//   component of both ends of the XML's range, and a boolean's 0 and 1; the
+//   default lies in the range; an enumeration's values are
 //   distinct, its default among them, its setter keeps each value offered and
 //   none past them, and says each as the entry's text. The display's setters
 //   that hand their value to its actor, vtkProperty or mapper are read back
@@ -249,6 +250,25 @@ bool read(const std::string& className, const Fresh& object, const std::string& 
   return true;
 }
 
+/// A boolean's class keeps both 0 and 1 (the panel's check box).
+void checkBoolean(const std::string& key, const std::string& className, vtkXMLDataElement* property)
+{
+  if (!property->FindNestedElementWithName("BooleanDomain"))
+  {
+    return;
+  }
+  const std::string setter = property->GetAttribute("command");
+  for (double value : { 0.0, 1.0 })
+  {
+    const Fresh object = fresh(className);
+    std::vector<double> kept;
+    ASSERT_TRUE(pdt::classes().set(object.Id, setter, { value }, true)) << setter;
+    ASSERT_TRUE(read(className, object, setter, kept));
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0], value) << key << ": " << setter << "(" << value << ") keeps " << kept[0];
+  }
+}
+
 /// The class keeps each component of both ends of the range the XML's panel
 /// offers (a setter that clamps tighter would take a value the panel shows
 /// away from it), the other components at their defaults.
@@ -366,6 +386,7 @@ bool checkAgainstTheClass(
       << " starts at " << actual[k];
   }
   checkRange(key, className, property, declared);
+  checkBoolean(key, className, property);
   return true;
 }
 
