@@ -136,6 +136,12 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   vtkInternals& I = *this->Internals;
   I.Actor->SetProperty(I.Property);
   I.Actor->SetMapper(I.CpuMapper);
+  // Where the XML's defaults (the Surface representation's, which these
+  // properties are shared with) differ from VTK's, the display starts at
+  // them, as its setters would leave it (TestPropertyDefaults).
+  I.Property->SetPointSize(2.0);
+  I.Property->SetSpecularPower(100.0);
+  I.CpuMapper->SetColorModeToMapScalars();
   I.GpuMapper->SetWorkQueue(I.Queue, &I.Display.writer);
   // ParaView listens to this display's progress and sets its abort flag: the
   // mapper reports a long GPU replay here and stops it on request.

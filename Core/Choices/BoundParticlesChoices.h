@@ -7,8 +7,8 @@
  * A value's number is what a saved state (.pvsm) and the proxy XML hold, so
  * no enumerator may change its value or move. `EnumTraits<E>::names[v]` is
  * the text the panel shows for value v; Plugin/BoundParticles.xml lists the
- * same entries by hand, and PropertyDefaults.TheXmlNamesEveryChoiceAsCoreDoes
- * holds the two together.
+ * same entries by hand, and PropertyDefaults.EveryPropertyOfEveryProxyHasOneVerdict
+ * holds the two together (E is the type of the class's typed getter).
  *
  * This header depends on nothing but the standard library, so any layer may
  * include it: Core's modules, the filters, the display and the GPU engine.

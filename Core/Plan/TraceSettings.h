@@ -38,7 +38,7 @@ constexpr std::size_t LatticeOverrunWarning = 100;
 constexpr double GravityWarningFields = 100.0;
 
 /// The engine settings a new tracer starts with: the panel's defaults
-/// (Plugin/BoundParticles.xml; PropertyDefaults.TheTracersDefaultsAreCores
+/// (Plugin/BoundParticles.xml; PropertyDefaults.EveryPropertyOfEveryProxyHasOneVerdict
 /// holds them together). Parameters keeps engine-neutral ones: a random
 /// orientation, which needs no field, and massless particles.
 inline Parameters propertyDefaults()
