@@ -136,9 +136,7 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   vtkInternals& I = *this->Internals;
   I.Actor->SetProperty(I.Property);
   I.Actor->SetMapper(I.CpuMapper);
-  // Where the XML's defaults (the Surface representation's, which these
-  // properties are shared with) differ from VTK's, the display starts at
-  // them, as its setters would leave it (TestPropertyDefaults).
+  // The XML's (Surface's) defaults where VTK's differ (TestPropertyDefaults).
   I.Property->SetPointSize(2.0);
   I.Property->SetSpecularPower(100.0);
   I.CpuMapper->SetColorModeToMapScalars();
