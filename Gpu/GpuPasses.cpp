@@ -56,6 +56,49 @@ ShaderPiece restoreKernel(const std::string& springSumCode)
       GeneratedSpringsSource) };
 }
 
+/// The bytes of a texel of a sized internal format the engine uses.
+std::size_t texelBytes(GLint format)
+{
+  switch (format)
+  {
+    case GL_R32F:
+    case GL_R32I:
+    case GL_R32UI:
+    case GL_RGBA8:
+      return 4;
+    case GL_RG32F:
+    case GL_RGBA16F:
+      return 8;
+    case GL_RGB32F:
+      return 12;
+    default:
+      return 16; // RGBA32F, the state's format
+  }
+}
+
+/// The bytes of level 0 of the texture bound to `target` on the active unit.
+std::size_t boundTextureBytes(GLenum target)
+{
+  GLint width = 0, height = 0, depth = 0, format = 0;
+  glGetTexLevelParameteriv(target, 0, GL_TEXTURE_WIDTH, &width);
+  glGetTexLevelParameteriv(target, 0, GL_TEXTURE_HEIGHT, &height);
+  glGetTexLevelParameteriv(target, 0, GL_TEXTURE_DEPTH, &depth);
+  glGetTexLevelParameteriv(target, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  return std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 1)) *
+    std::size_t(std::max(depth, 1)) * texelBytes(format);
+}
+
+/// The bytes of level 0 of a 2D texture, its binding on the active unit kept.
+std::size_t textureBytes(GLuint texture)
+{
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  const std::size_t bytes = boundTextureBytes(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, GLuint(previous));
+  return bytes;
+}
+
 /// Attaches `texture` (0: none) as colour attachment k of the bound framebuffer.
 void attach(GLenum framebuffer, int k, GLuint texture)
 {
@@ -142,6 +185,14 @@ GpuPass& GpuPass::texture(const char* name, GLuint texture, GLenum target)
   glActiveTexture(GLenum(GL_TEXTURE0 + unit));
   glBindTexture(target, texture);
   glUniform1i(at, unit);
+  // The traffic counts the state, not the field's samples (3D textures):
+  // neighbouring particles read the same cells, from cache, and how much of
+  // the field a step touches is not known here.
+  if (this->Passes.Observer && target == GL_TEXTURE_2D)
+  {
+    this->UnitBytes.resize(std::max<std::size_t>(this->UnitBytes.size(), unit + 1), 0);
+    this->UnitBytes[unit] = boundTextureBytes(target);
+  }
   return *this;
 }
 
@@ -197,8 +248,26 @@ void GpuPass::run(std::initializer_list<GLuint> targets, int width, int height) 
   }
   if (observer)
   {
+    std::size_t written = 0;
+    for (GLuint target : targets)
+    {
+      // The domain's texels of each target (a target may be larger).
+      const std::size_t all = textureBytes(target);
+      written += std::min(all, std::size_t(width) * std::size_t(height) * 16);
+    }
+    this->tellTraffic(written);
     observer->end();
   }
+}
+
+void GpuPass::tellTraffic(std::size_t written) const
+{
+  std::size_t read = 0;
+  for (std::size_t bytes : this->UnitBytes)
+  {
+    read += bytes;
+  }
+  this->Passes.Observer->traffic(read, written);
 }
 
 void GpuPass::dispatch(std::initializer_list<GLuint> targets, int width, int height) const
@@ -233,6 +302,12 @@ void GpuPass::runGroups(std::size_t groups, std::initializer_list<GLuint> images
   glMemoryBarrier(AfterShaderWrites);
   if (observer)
   {
+    std::size_t written = 0;
+    for (GLuint image : images)
+    {
+      written += image ? textureBytes(image) : 0;
+    }
+    this->tellTraffic(written);
     observer->end();
   }
 }
@@ -490,6 +565,8 @@ void GpuPasses::copyTexture(GLuint from, GLuint to, int width, int height) const
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   if (this->Observer)
   {
+    const std::size_t bytes = std::size_t(width) * std::size_t(height) * 16;
+    this->Observer->traffic(bytes, bytes);
     this->Observer->end();
   }
 }

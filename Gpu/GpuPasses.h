@@ -152,11 +152,16 @@ private:
   void draw(std::initializer_list<GLuint> targets, int width, int height) const;
   void dispatch(std::initializer_list<GLuint> targets, int width, int height) const;
 
+  /// Tells the observer the pass's traffic: its textures' bytes and `written`.
+  void tellTraffic(std::size_t written) const;
+
   const GpuPasses& Passes;
   const GpuLayout& Layout;
   GLuint Program = 0;
   int Unit = 0;
   std::vector<std::pair<std::string, int>> Units; ///< the unit of each sampler bound
+  /// With an observer: the bytes of the texture on each unit (by unit).
+  std::vector<std::size_t> UnitBytes;
 };
 
 class GpuPasses

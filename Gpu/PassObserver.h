@@ -2,13 +2,15 @@
 /**
  * @file PassObserver.h
  * @brief What the GPU engine tells about its passes while it runs them: a
- * call before and after every pass and copy, for whoever wants to time or
- * count them (the tests' and benchmarks' PassTimer, Gpu/Support/PassTimer.h).
+ * call before and after every pass and copy, and the memory each moves, for
+ * whoever wants to time or count them (the tests' and benchmarks' PassTimer,
+ * Gpu/Support/PassTimer.h; the benchmarks' PassTraffic, Gpu/Support/PassTraffic.h).
  * No GL header: a renderer's code includes GpuEngine.h beside its own GL loader.
  */
 #ifndef BoundParticles_PassObserver_h
 #define BoundParticles_PassObserver_h
 
+#include <cstddef>
 #include <string>
 
 namespace bp
@@ -22,6 +24,16 @@ struct PassObserver
   virtual ~PassObserver() = default;
   /// A pass begins: `name` is its kernel's, "step (fused)" or "copy".
   virtual void begin(const std::string& name) = 0;
+  /// The pass begun last moves at least `bytesRead` and `bytesWritten` of the
+  /// engine's state: the whole of every 2D texture it binds, read once, and of
+  /// every target or image it stores into, written once (its compulsory
+  /// traffic; a texel fetched again comes from cache). The field's samples
+  /// (3D textures) are not counted. Told between begin() and end().
+  virtual void traffic(std::size_t bytesRead, std::size_t bytesWritten)
+  {
+    (void)bytesRead;
+    (void)bytesWritten;
+  }
   /// The pass begun last has issued its GL calls.
   virtual void end() = 0;
 };

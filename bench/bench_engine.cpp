@@ -419,17 +419,18 @@ void printHeads(const Options& o, bool cpuAll, std::FILE* csv)
     std::printf(" %10s", ("CPU" + std::to_string(o.threads) + " st/s").c_str());
   std::printf(" %9s %9s", "CPU Mps/s", "vs plain");
   for (const bench::GpuVariant& v : bench::gpuVariants())
-    std::printf(" | %-8s %8s %8s %6s", v.name, "st/s", "Mps/s", "%BW");
+    std::printf(" | %-8s %8s %8s %6s %5s", v.name, "st/s", "Mps/s", "%BW", "B/ps");
   std::printf(" %7s\n", "B/elem");
   if (csv)
   {
     std::fprintf(csv,
       "field,shape,elements,particles,cpu1_steps_per_s,cpu2_steps_per_s,"
       "cpu_all_threads,cpu_all_steps_per_s,cpu2_particle_steps_per_s,"
-      "plain2_particle_steps_per_s,bytes_per_element,bytes_per_particle_step");
+      "plain2_particle_steps_per_s,bytes_per_element");
     for (const bench::GpuVariant& v : bench::gpuVariants())
-      std::fprintf(
-        csv, ",%s_steps_per_s,%s_particle_steps_per_s,%s_bandwidth_share", v.name, v.name, v.name);
+      std::fprintf(csv,
+        ",%s_steps_per_s,%s_particle_steps_per_s,%s_bytes_per_particle_step,%s_bandwidth_share",
+        v.name, v.name, v.name, v.name);
     std::fprintf(csv, "\n");
   }
 }
@@ -497,7 +498,6 @@ int main(int argc, char** argv)
       const double all = cpuAll ? cpuStepsPerSecond(t, p, field, steps, dt, o.threads) : two;
       const double plain =
         median([&] { return referenceLoop(field, particles, steps, dt, bp::poolRunner(2)); });
-      const double bytes = bench::bytesPerParticleStep(t.particleCount(), p.trackPoses);
       const char* fieldName = isUnsteady ? "unsteady" : "steady";
       std::printf("%-8s %-8s %9zu %9zu %10.1f %10.1f", fieldName, t.name.c_str(), c.elements,
         particles, one, two);
@@ -505,25 +505,31 @@ int main(int argc, char** argv)
         std::printf(" %10.1f", all);
       const double ps = particles * two;
       std::printf(" %9.2f %8.2fx", ps / 1e6, (particles * steps / plain) / ps);
-      std::vector<double> rates;
+      std::vector<bench::GpuRate> rates;
       for (const bench::GpuVariant& v : bench::gpuVariants())
       {
-        const double rate =
-          gpu ? bench::gpuStepsPerSecond(v, t, p, field, steps, dt, false, median) : 0.0;
-        const double share = bandwidth > 0.0 ? rate * particles * bytes / bandwidth : 0.0;
-        rates.push_back(rate);
-        std::printf(" | %-8s %8.1f %8.1f %5.1f%%", "", rate, rate * particles / 1e6, 100 * share);
+        const bench::GpuRate r =
+          gpu ? bench::gpuRate(v, t, p, field, steps, dt, false, median) : bench::GpuRate();
+        const double rate = r.stepsPerSecond;
+        const double share =
+          bandwidth > 0.0 ? rate * particles * r.bytesPerParticleStep / bandwidth : 0.0;
+        rates.push_back(r);
+        std::printf(" | %-8s %8.1f %8.1f %5.1f%% %5.0f", "", rate, rate * particles / 1e6,
+          100 * share, r.bytesPerParticleStep);
       }
       const std::size_t stateBytes = stateBytesPerElement(t, p);
       std::printf(" %7zu\n", stateBytes);
       if (csv)
       {
-        std::fprintf(csv, "%s,%s,%zu,%zu,%.3f,%.3f,%u,%.3f,%.1f,%.1f,%zu,%.1f", fieldName,
+        std::fprintf(csv, "%s,%s,%zu,%zu,%.3f,%.3f,%u,%.3f,%.1f,%.1f,%zu", fieldName,
           t.name.c_str(), c.elements, particles, one, two, cpuAll ? o.threads : 2u, all, ps,
-          particles * steps / plain, stateBytes, bytes);
-        for (double rate : rates)
-          std::fprintf(csv, ",%.3f,%.1f,%.5f", rate, rate * particles,
+          particles * steps / plain, stateBytes);
+        for (const bench::GpuRate& r : rates)
+        {
+          const double rate = r.stepsPerSecond, bytes = r.bytesPerParticleStep;
+          std::fprintf(csv, ",%.3f,%.1f,%.1f,%.5f", rate, rate * particles, bytes,
             bandwidth > 0.0 ? rate * particles * bytes / bandwidth : 0.0);
+        }
         std::fprintf(csv, "\n");
       }
       if (gpu && o.passTimes)

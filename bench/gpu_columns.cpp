@@ -2,6 +2,7 @@
 #include "gpu_columns.h"
 
 #include "PassTimer.h"
+#include "PassTraffic.h"
 #include "WorkQueue.h"
 
 #include <epoxy/gl.h>
@@ -87,10 +88,13 @@ const std::vector<GpuVariant>& gpuVariants()
   return variants;
 }
 
-double bytesPerParticleStep(std::size_t particlesPerElement, bool poses)
+double bytesPerParticleStep(bp::GpuEngine& engine, double t, double dt, std::size_t particles)
 {
-  const double perElement = 8 * 16 + (poses ? 16 : 0);
-  return 2 * 16 + perElement / double(std::max<std::size_t>(particlesPerElement, 1));
+  bp::PassTraffic traffic;
+  engine.setPassObserver(&traffic);
+  engine.step(t, dt);
+  engine.setPassObserver(nullptr);
+  return double(traffic.bytes()) / double(std::max<std::size_t>(particles, 1));
 }
 
 double deviceBandwidth(
@@ -116,13 +120,13 @@ double deviceBandwidth(
   return 0.0;
 }
 
-double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& shape,
+GpuRate gpuRate(const GpuVariant& variant, const bp::ElementTemplate& shape,
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt, bool generated,
   const std::function<double(const std::function<double()>&)>& median)
 {
   bp::GpuEngine engine;
   if (!configureVariant(engine, variant, shape, p, field, generated))
-    return 0.0;
+    return {};
   engine.initialize();
   const double took = median(
     [&]
@@ -134,8 +138,12 @@ double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& s
       glFinish();
       return seconds(start);
     });
+  GpuRate rate;
+  rate.stepsPerSecond = steps / took;
+  rate.bytesPerParticleStep =
+    bytesPerParticleStep(engine, steps * dt, dt, p.numberOfElements * shape.particleCount());
   engine.release();
-  return steps / took;
+  return rate;
 }
 
 std::vector<bp::PassTime> gpuPassTimes(const GpuVariant& variant,

@@ -29,13 +29,12 @@ struct GpuVariant
 /// Fragment, compute (a dispatch per kernel), fused (the compute path's fused step).
 const std::vector<GpuVariant>& gpuVariants();
 
-/// The bytes a step must move per particle, at the least: the particle's
-/// texel read and written (2 x 16), and its element's per-element state read
-/// and written (State, Centers, Orientations, Poses: 8 x 16; the spins' 16
-/// more written with poses tracked) shared by its n particles. The field's
-/// samples are left out (neighbouring particles read the same cells, from
-/// cache). 40 for a Strip16 without poses.
-double bytesPerParticleStep(std::size_t particlesPerElement, bool poses);
+/// The bytes one step of a configured and initialised engine moves per
+/// particle, at the least: what its passes tell (PassObserver::traffic: every
+/// state texture a pass binds read once, every target written once; the
+/// field's samples left out), each path its own. Steps the engine once, from
+/// `t` by `dt`.
+double bytesPerParticleStep(bp::GpuEngine& engine, double t, double dt, std::size_t particles);
 
 /// The device's memory bandwidth in bytes per second: `given` (GB/s) when
 /// above 0, else the data sheet's for a GPU this knows by its GL_RENDERER
@@ -53,11 +52,20 @@ bool configureVariant(bp::GpuEngine& engine, const GpuVariant& variant,
   const bp::ElementTemplate& shape, const bp::Parameters& p, const bp::VectorField& field,
   bool generated = false);
 
-/// Steps per second of `variant` on the system, the median of `median`'s
-/// runs of `steps` steps (glFinish around each, never inside); 0 where the
-/// variant cannot run (no compute path on this context, or no fused step
-/// for this system). `generated`: springs as code (setGeneratedSprings).
-double gpuStepsPerSecond(const GpuVariant& variant, const bp::ElementTemplate& shape,
+/// One variant's speed on a system: steps per second, and its bytes a
+/// particle-step (bytesPerParticleStep); 0 where it cannot run.
+struct GpuRate
+{
+  double stepsPerSecond = 0.0;
+  double bytesPerParticleStep = 0.0;
+};
+
+/// `variant` on the system: the median of `median`'s runs of `steps` steps
+/// (glFinish around each, never inside), then one step's traffic; nothing
+/// where the variant cannot run (no compute path on this context, or no
+/// fused step for this system). `generated`: springs as code
+/// (setGeneratedSprings).
+GpuRate gpuRate(const GpuVariant& variant, const bp::ElementTemplate& shape,
   const bp::Parameters& p, const bp::VectorField& field, int steps, double dt, bool generated,
   const std::function<double(const std::function<double()>&)>& median);
 

@@ -189,7 +189,6 @@ double runRow(const Row& row, const bench::Fields& fields, const Options& o, boo
   bp::Parameters p = bench::parametersFor(field, elements);
   p.integrator = row.unsteady ? bp::Integrator::RK4 : bp::Integrator::Euler;
   p.trackPoses = t.particleCount() > 1;
-  const double bytes = bench::bytesPerParticleStep(t.particleCount(), p.trackPoses);
   const char* fieldName = row.unsteady ? "unsteady" : "steady";
   std::printf(
     "%-8s %-5s %-8s %9zu", fieldName, row.unsteady ? "RK4" : "Euler", t.name.c_str(), particles);
@@ -200,7 +199,7 @@ double runRow(const Row& row, const bench::Fields& fields, const Options& o, boo
   for (const bench::GpuVariant& v : bench::gpuVariants())
   {
     bp::GpuEngine engine;
-    double rate = 0.0;
+    double rate = 0.0, bytes = 0.0;
     int steps = 0;
     const bool wanted = std::find(o.paths.begin(), o.paths.end(), v.name) != o.paths.end();
     if (gpu && wanted && bench::configureVariant(engine, v, t, p, field))
@@ -218,14 +217,16 @@ double runRow(const Row& row, const bench::Fields& fields, const Options& o, boo
           return seconds(begin);
         },
         o, steps);
+      bytes = bench::bytesPerParticleStep(engine, time, dt, particles);
       engine.release();
     }
     const double share = bandwidth > 0.0 ? rate * particles * bytes / bandwidth : 0.0;
-    std::snprintf(cell, sizeof cell, " | %9.1f %9.3f %5.1f%% %5d", rate, rate * particles / 1e9,
-      100.0 * share, steps);
-    std::printf("%s", rate > 0.0 ? cell : " |       n/a       n/a    n/a     -");
+    std::snprintf(cell, sizeof cell, " | %9.1f %9.3f %5.1f%% %5.0f %5d", rate,
+      rate * particles / 1e9, 100.0 * share, bytes, steps);
+    std::printf("%s", rate > 0.0 ? cell : " |       n/a       n/a    n/a     -     -");
     std::fflush(stdout);
-    std::snprintf(cell, sizeof cell, ",%.3f,%.1f,%.5f,%d", rate, rate * particles, share, steps);
+    std::snprintf(
+      cell, sizeof cell, ",%.3f,%.1f,%.1f,%.5f,%d", rate, rate * particles, bytes, share, steps);
     csvLine += cell;
   }
   double cpuRate = 0.0;
@@ -305,18 +306,20 @@ int main(int argc, char** argv)
               "%.3g s), median of %d; CPU engine on %u threads; %%BW: share of %.0f GB/s (%s) "
               "at %s\n",
     o.resolution, o.minTime, o.minSteps, 4 * o.minTime, o.repeats, o.threads, bandwidth / 1e9,
-    source.c_str(), "40 B a particle-step (Strip16 with poses: 41; bench/gpu_columns.h)");
+    source.c_str(), "each path's bytes a particle-step (B/ps: what its passes read and write)");
   std::printf("%-8s %-5s %-8s %9s", "field", "integ", "shape", "particles");
   for (const bench::GpuVariant& v : bench::gpuVariants())
-    std::printf(" | %-9s %9s %6s %5s", v.name, "Gps/s", "%BW", "steps");
+    std::printf(" | %-9s %9s %6s %5s %5s", v.name, "Gps/s", "%BW", "B/ps", "steps");
   std::printf(" | %-9s %9s %5s\n", ("CPU" + std::to_string(o.threads)).c_str(), "Gps/s", "steps");
   std::FILE* csv = o.csvPath.empty() ? nullptr : std::fopen(o.csvPath.c_str(), "w");
   if (csv)
   {
     std::fprintf(csv, "field,integrator,shape,particles");
     for (const bench::GpuVariant& v : bench::gpuVariants())
-      std::fprintf(csv, ",%s_steps_per_s,%s_particle_steps_per_s,%s_bandwidth_share,%s_steps",
-        v.name, v.name, v.name, v.name);
+      std::fprintf(csv,
+        ",%s_steps_per_s,%s_particle_steps_per_s,%s_bytes_per_particle_step,%s_bandwidth_share,"
+        "%s_steps",
+        v.name, v.name, v.name, v.name, v.name);
     std::fprintf(csv, ",cpu_threads,cpu_steps_per_s,cpu_particle_steps_per_s,cpu_steps\n");
   }
   double lastSeconds = 0.0;

@@ -8,6 +8,7 @@
 #include "GpuEngine.h"
 #include "GpuPasses.h"
 #include "PassTimer.h"
+#include "PassTraffic.h"
 #include "SharedContext.h"
 #include "WorkQueue.h"
 
@@ -462,4 +463,72 @@ TEST(GpuEngine, PassObserverIsToldOfEveryPassUntilDetached)
   EXPECT_EQ(seen.total(), detached) << "told after it was detached";
   EXPECT_EQ(seen.ended, seen.total());
   gpu.release();
+}
+
+namespace
+{
+/// One step's compulsory traffic (PassTraffic.h) on `path`, fused or not,
+/// after five steps; its passes counted apart from the tellings.
+struct StepTraffic : bp::PassTraffic
+{
+  long told = 0;
+  void traffic(std::size_t read, std::size_t written) override
+  {
+    ++told;
+    bp::PassTraffic::traffic(read, written);
+  }
+};
+
+StepTraffic stepTraffic(const char* path, const char* fused, const bp::Parameters& p)
+{
+  setenv(bp::GpuPathVariable, path, 1);
+  setenv(bp::FusedStepVariable, fused, 1);
+  bp::GpuEngine gpu;
+  trace(gpu, p, 5);
+  StepTraffic traffic;
+  gpu.setPassObserver(&traffic);
+  gpu.step(0.05, 0.01);
+  gpu.setPassObserver(nullptr);
+  gpu.release();
+  return traffic;
+}
+} // namespace
+
+// The bandwidth share the benchmarks give comes from what each path's passes
+// move (PassObserver::traffic), not one byte count for every path: every pass
+// tells it; the fragment path and a dispatch per kernel run the same passes on
+// the same textures, so move the same bytes; the fused step keeps positions in
+// shared memory between kernels, so moves fewer; and every path at least reads
+// and writes each particle's texel (32 bytes a particle).
+TEST(GpuEngine, PassTrafficIsEachPathsOwn)
+{
+  if (!bp::haveSharedContext())
+    return;
+  if (epoxy_gl_version() < bp::ComputePathVersion)
+    GTEST_SKIP() << "no compute path on this context";
+  const char* was = std::getenv(bp::GpuPathVariable);
+  const std::string before = was ? was : "";
+  const bp::Parameters p = strips(256);
+  const std::size_t particles = 256 * 16;
+  const StepTraffic fragment = stepTraffic("fragment", "off", p);
+  const StepTraffic kernels = stepTraffic("compute", "off", p);
+  const StepTraffic fused = stepTraffic("compute", "on", p);
+  unsetenv(bp::FusedStepVariable);
+  if (was)
+    setenv(bp::GpuPathVariable, before.c_str(), 1);
+  else
+    unsetenv(bp::GpuPathVariable);
+  for (const StepTraffic* t : { &fragment, &kernels, &fused })
+  {
+    EXPECT_EQ(t->told, t->passes()) << "a pass that told no traffic";
+    EXPECT_GE(t->bytesRead(), 16 * particles);
+    EXPECT_GE(t->bytesWritten(), 16 * particles);
+  }
+  EXPECT_EQ(fragment.bytes(), kernels.bytes());
+  EXPECT_EQ(fragment.passes(), kernels.passes());
+  EXPECT_EQ(fused.passes(), 1);
+  EXPECT_LT(fused.bytes(), kernels.bytes());
+  std::printf("bytes a particle-step: fragment %.1f, compute %.1f, fused %.1f (%ld passes, %ld)\n",
+    double(fragment.bytes()) / particles, double(kernels.bytes()) / particles,
+    double(fused.bytes()) / particles, kernels.passes(), fused.passes());
 }
