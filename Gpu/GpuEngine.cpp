@@ -72,6 +72,11 @@ bool GpuEngine::fusedStep() const
   return bool(this->I->system.passes.programs.step);
 }
 
+long GpuEngine::uniformLookups() const
+{
+  return this->I->system.passes.uniformLookups();
+}
+
 void GpuEngine::setPassObserver(PassObserver* observer)
 {
   this->I->observer = observer;

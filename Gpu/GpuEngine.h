@@ -203,6 +203,9 @@ public:
   /// The path configure() chose (GpuPath.h), and whether the step is fused.
   GpuPath path() const;
   bool fusedStep() const;
+  /// How many uniform locations the driver was asked since configure(): each
+  /// program's names once, then none while stepping (GpuPasses::uniformLocation).
+  long uniformLookups() const;
 
   /// Tells `observer` about every pass and copy from now on, across
   /// configure() and release(), or stops (null). Not owned: it must outlive

@@ -7,6 +7,7 @@
 #include "ShaderSource.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <utility>
 
 namespace bp
@@ -165,7 +166,23 @@ std::size_t GpuLayout::particleTexel(int e, int i) const
 
 int GpuPass::location(const char* name) const
 {
-  return glGetUniformLocation(this->Program, name);
+  return this->Passes.uniformLocation(this->Program, name);
+}
+
+int GpuPasses::uniformLocation(GLuint program, const char* name) const
+{
+  // Asked of the driver once per program and name: a pass sets its uniforms
+  // every step, and glGetUniformLocation hashes the name each time.
+  std::unordered_map<std::string, int>& names = this->Locations[program];
+  const auto known = names.find(name);
+  if (known != names.end())
+  {
+    return known->second;
+  }
+  ++this->LocationLookups;
+  const int at = glGetUniformLocation(program, name);
+  names.emplace(name, at);
+  return at;
 }
 
 GpuPass& GpuPass::texture(const char* name, GLuint texture, GLenum target)
@@ -355,6 +372,7 @@ std::string GpuPasses::compile(
 {
   this->Path = path;
   this->fused = fusedStep;
+  this->Locations.clear(); // a program's name may be a deleted one's
   using P = Programs;
   const ShaderPiece restore = restoreKernel(springSumCode);
   const PassKernel kernels[] = {

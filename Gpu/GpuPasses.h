@@ -31,6 +31,7 @@
 #include <functional>
 #include <initializer_list>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -195,6 +196,11 @@ public:
   /// Tells `observer` about every pass and copy from now on (null: none).
   void setObserver(PassObserver* observer) { this->Observer = observer; }
 
+  /// A uniform's location in `program`, asked of the driver the first time only.
+  int uniformLocation(GLuint program, const char* name) const;
+  /// How many times uniformLocation() asked the driver since compile().
+  long uniformLookups() const { return this->LocationLookups; }
+
   /// The passes (a kernel of Shaders/ each), in the order a step runs them.
   struct Programs
   {
@@ -231,6 +237,9 @@ private:
   GlFramebuffer Framebuffer;
   GlFramebuffer CopyTarget; ///< the draw side of copyTexture's blit
   PassObserver* Observer = nullptr; ///< not owned
+  /// Each program's uniform locations by name, as the driver gave them.
+  mutable std::unordered_map<GLuint, std::unordered_map<std::string, int>> Locations;
+  mutable long LocationLookups = 0;
 };
 
 } // namespace bp

@@ -532,3 +532,19 @@ TEST(GpuEngine, PassTrafficIsEachPathsOwn)
     double(fragment.bytes()) / particles, double(kernels.bytes()) / particles,
     double(fused.bytes()) / particles, kernels.passes(), fused.passes());
 }
+
+// A pass sets its uniforms every step; their locations are asked of the
+// driver once per program and name, at the first step, never again.
+TEST(GpuEngine, UniformLocationsAreAskedOncePerProgram)
+{
+  if (!bp::haveSharedContext())
+    return;
+  bp::GpuEngine gpu;
+  trace(gpu, strips(64), 2);
+  const long first = gpu.uniformLookups();
+  EXPECT_GT(first, 0);
+  for (int s = 2; s < 12; ++s)
+    gpu.step(0.01 * s, 0.01);
+  EXPECT_EQ(gpu.uniformLookups(), first) << "asked again while stepping";
+  gpu.release();
+}
