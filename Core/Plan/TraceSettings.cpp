@@ -443,6 +443,11 @@ Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
       return failure("ElementRotation must be finite.");
     }
   }
+  const std::string direction = checkTimeDirection(s.timeDirection, s.engine);
+  if (!direction.empty())
+  {
+    return failure(direction);
+  }
   r.parameters = s.engine;
   r.parameters.numberOfElements = std::size_t(s.numberOfElements);
   r.parameters.frame =
