@@ -118,3 +118,14 @@ TEST(TimeDirection, ABackwardReleaseWindowOutsideTheDatasTimesIsSaid)
   EXPECT_GT(at(tracer, 1.0)->GetNumberOfCells(), 0);
   EXPECT_TRUE(later.messages.empty()) << later.messages.front();
 }
+
+TEST(TimeDirection, BackwardRunsOnTheCpuEngineAndEngineGpuSaysSo)
+{
+  auto source = flow(bp::AnalyticFlow::SolidBodyRotation);
+  auto tracer = rotating(source, bp::TimeDirection::Backward);
+  tracer->SetEngine(int(bp::EngineChoice::Gpu));
+  ErrorLog warnings(tracer, vtkCommand::WarningEvent);
+  EXPECT_EQ(at(tracer, 1.0)->GetNumberOfPoints(), 50) << "the CPU engine's elements";
+  EXPECT_TRUE(warnings.mentions("Time Direction = Backward runs on the CPU engine"))
+    << (warnings.messages.empty() ? "" : warnings.messages.front());
+}
