@@ -70,6 +70,10 @@ void sampleParticles(
 {
   bp::sampleAtPositions(c.field, c.frame.time, c.engine.positions().data() + 3 * begin, end - begin,
     velocity, vorticity, c.serial);
+  for (std::size_t k = 0; c.frame.backward && velocity && k < 3 * (end - begin); ++k)
+  {
+    velocity[k] = -velocity[k];
+  }
 }
 
 /**
@@ -222,6 +226,10 @@ void writeElementState(const bp::OutputArray& row, vtkDataArray* out, const Fill
       break;
     case bp::OutputArrayId::ElementSpin:
       perElementTuple(floats(out), n, begin, end, engine.spins().data(), 4, 3);
+      for (std::size_t k = 3 * begin; c.frame.backward && k < 3 * end; ++k)
+      {
+        floats(out)[k] = -floats(out)[k]; // the turn per time of the data, as Velocity
+      }
       break;
     case bp::OutputArrayId::SpinVorticityRatio:
       perElementTuple(floats(out), n, begin, end, engine.spins().data() + 3, 4, 1);

@@ -28,6 +28,10 @@ namespace bpvtk
 struct OutputFrame
 {
   double time = 0.0;                                   ///< the simulation time shown
+  /// A backward trace (TimeDirection.h): `time` and the field are the trace's,
+  /// whose flow is the data's reversed; Velocity and ElementSpin are written
+  /// per time of the data (negated), SpinVorticityRatio is the same either way.
+  bool backward = false;
   std::array<double, 3> offset = { 0, 0, 0 };          ///< world position of the grid-local origin
   std::array<double, 6> domain = { 0, 1, 0, 1, 0, 1 }; ///< the whole field, grid-local
   double reach = 0.0;      ///< the largest world |coordinate| in the field

@@ -166,21 +166,30 @@ std::string vtkBoundParticleTracerInternals::elementTemplate(
 
 void vtkBoundParticleTracerInternals::warnOfReleaseWindow(const bp::Parameters& p)
 {
+  // Tested in the trace's own time, said in the data's (TimeDirection.h).
   const std::vector<double>& times = this->Plan.outputTimes();
+  const std::vector<double>& offered = this->Plan.offeredTimes();
+  const bool backward = this->Plan.direction() == bp::TimeDirection::Backward;
+  const std::array<double, 2> window =
+    bp::traceWindow(this->Plan.direction(), p.releaseStart, p.releaseStop);
   if (!times.empty() && (p.releaseStop < times.front() || p.releaseStart > times.back()))
   {
     vtkWarningWithObjectMacro(this->Owner,
       "No element is released: the Release Window ["
-        << p.releaseStart << ", " << p.releaseStop << "] lies outside the offered times ["
-        << times.front() << ", " << times.back() << "].");
+        << window[0] << ", " << window[1] << "] lies outside the offered times [" << offered.front()
+        << ", " << offered.back() << "]"
+        << (backward ? " (a backward trace releases from the window's latest time on)." : "."));
   }
   else if (times.size() > 1 && p.releaseStart == times.back())
   {
     // A step releases what is due in [t, t + h): the last offered time ends
     // the last step, so a window that starts there releases in none.
     vtkWarningWithObjectMacro(this->Owner,
-      "No element is shown released: the Release Window starts at the last offered time ("
-        << times.back() << "), after the last step. Start it earlier.");
+      "No element is shown released: the Release Window "
+        << (backward ? "ends at the first offered time (" : "starts at the last offered time (")
+        << bp::traceTime(this->Plan.direction(), times.back())
+        << (backward ? "), where the backward trace ends. End it later."
+                     : "), after the last step. Start it earlier."));
   }
 }
 
@@ -204,6 +213,17 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
 {
+  if (this->Plan.streaming() && config.trace.timeDirection == bp::TimeDirection::Backward)
+  {
+    return "Time Direction = Backward needs the whole time series, but in situ only the present "
+           "time step arrives: set Time Direction to Forward.";
+  }
+  if (config.engine == bp::EngineChoice::Gpu &&
+    config.trace.timeDirection == bp::TimeDirection::Backward)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "Time Direction = Backward runs on the CPU engine: the GPU engine traces forward only.");
+  }
   const std::string templateError = this->elementTemplate(config, inputVector, shape);
   if (!templateError.empty())
   {

@@ -119,6 +119,8 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
     this->takeReleaseWeights(config, input, slice);
   }
   slice.time = this->sliceTime(input);
+  // Backward: the trace samples the data's mirror in time, its flow reversed.
+  slice = bp::traceSlice(this->Plan.direction(), slice);
   const std::string kept = this->keepTimeStep(grid, offset, slice);
   // Each process checks its own piece (its velocities, its grid): one
   // process's failure must be every process's before the next collective step.
@@ -235,7 +237,7 @@ double vtkBoundParticleTracerInternals::sliceTime(vtkDataObject* input)
 {
   // In situ the first step is shown steady but is the start of the time line.
   const double time = this->Plan.unsteady() || this->Plan.streaming()
-    ? this->Plan.inputTimes()[this->Held.requestIndex]
+    ? this->Plan.dataTimeOf(this->Held.requestIndex)
     : 0.0;
   vtkInformation* data = input->GetInformation();
   if (this->Plan.unsteady() && data->Has(vtkDataObject::DATA_TIME_STEP()))

@@ -82,7 +82,7 @@ vtkBoundParticleTracer::~vtkBoundParticleTracer()
 
 double vtkBoundParticleTracer::GetSimulationTime() const
 {
-  return this->Internals->target();
+  return this->Internals->dataTarget();
 }
 vtkIdType vtkBoundParticleTracer::GetStepsInLastUpdate() const
 {
@@ -155,10 +155,13 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.responseTime = bp::settingAsFloat(this->ResponseTime);
   p.densityRatio = bp::settingAsFloat(this->DensityRatio);
   std::transform(this->Gravity, this->Gravity + 3, p.gravity.begin(), bp::settingAsFloat);
+  s.timeDirection = this->TimeDirection;
   if (this->ReleaseWindow)
   {
-    p.releaseStart = this->ReleaseStart;
-    p.releaseStop = this->ReleaseStop;
+    // Backward in the trace's own time: its mirror (TimeDirection.h).
+    const auto window = bp::traceWindow(this->TimeDirection, this->ReleaseStart, this->ReleaseStop);
+    p.releaseStart = window[0];
+    p.releaseStop = window[1];
   }
   p.seed = std::uint32_t(this->Seed);
   // The engine fits poses only for an output that shows them.
@@ -343,8 +346,8 @@ int vtkBoundParticleTracer::RequestInformation(
     scale.gravitySpeed = bp::gravityMotion(config.trace.engine, probe.facts).speed;
   }
   const bp::TimeLine line = this->TimeLine->resolve(settings, inputTimes, scale, unchosen);
-  const std::string error = this->Internals->setTimes(
-    inputTimes, line.duration, this->NumberOfTimeSteps, line.framesPerInterval);
+  const std::string error = this->Internals->setTimes(inputTimes, line.duration,
+    this->NumberOfTimeSteps, line.framesPerInterval, this->TimeDirection);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -681,6 +684,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
      << this->TrailSpacing << " steps)\n";
   os << indent << "ReleaseWindow: " << this->ReleaseWindow << " [" << this->ReleaseStart << ", "
      << this->ReleaseStop << "]\n";
+  os << indent << "TimeDirection: " << this->GetTimeDirectionAsString() << "\n";
   os << indent << "SeedType: "
      << (this->SeedType ? this->SeedType->GetSeedTypeName() : "(none: the emitter box)") << "\n";
   os << indent << "Seed: " << this->Seed << "\n";

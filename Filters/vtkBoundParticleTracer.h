@@ -351,6 +351,18 @@ public:
   ///@}
 
   ///@{
+  /// Which way the trace runs (Core/Plan/TimeDirection.h): Forward (default),
+  /// or Backward: elements are released at the latest time of the release
+  /// window (the data's last time without one) and advected toward earlier
+  /// times through the reversed flow, so the trace shown at time t holds
+  /// elements traced back to t; the FTLE then marks attracting structures.
+  /// The offered time steps stay the data's. Massless elements only
+  /// (Inertia None), and not in situ.
+  // Declares SetTimeDirection, GetTimeDirection and GetTimeDirectionAsString.
+  vtkBPEnumMacro(TimeDirection, bp::TimeDirection);
+  ///@}
+
+  ///@{
   /// Motion trails: with Trails on, each element also shows its last
   /// TrailLength poses, one every TrailSpacing steps, as extra cells whose
   /// points carry their pose's Age (time before the one shown) and their
@@ -572,6 +584,7 @@ protected:
   int ReleaseWindow = 0;
   double ReleaseStart = 0.0;
   double ReleaseStop = 0.0;
+  bp::TimeDirection TimeDirection = bp::TimeDirection::Forward;
   int Trails = 0;
   int TrailLength = 8;
   int TrailSpacing = 4;

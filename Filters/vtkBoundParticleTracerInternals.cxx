@@ -54,9 +54,9 @@ vtkBoundParticleTracerInternals::vtkBoundParticleTracerInternals(vtkAlgorithm* o
 }
 
 std::string vtkBoundParticleTracerInternals::setTimes(const std::vector<double>& inputTimes,
-  double duration, int numberOfTimeSteps, int framesPerInterval)
+  double duration, int numberOfTimeSteps, int framesPerInterval, bp::TimeDirection direction)
 {
-  return this->Plan.setTimes(inputTimes, duration, numberOfTimeSteps, framesPerInterval);
+  return this->Plan.setTimes(inputTimes, duration, numberOfTimeSteps, framesPerInterval, direction);
 }
 
 void vtkBoundParticleTracerInternals::requestPieces(
@@ -106,7 +106,9 @@ void vtkBoundParticleTracerInternals::decide(
   const Config& config, vtkInformation* outInfo, int gpuQueue)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  this->Steppers.select(config.engine, gpuQueue, this->Layout);
+  // A backward trace runs on the CPU engine (checkConfiguration says so to Engine GPU).
+  const bool backward = config.trace.timeDirection == bp::TimeDirection::Backward;
+  this->Steppers.select(backward ? bp::EngineChoice::Cpu : config.engine, gpuQueue, this->Layout);
   // In situ the present step is the time shown, whatever time is asked for.
   const double target = this->Plan.streaming()
     ? this->Plan.outputTimes().back()
@@ -146,7 +148,7 @@ void vtkBoundParticleTracerInternals::requestTimeStep(vtkInformation* inInfo)
   using SDDP = vtkStreamingDemandDrivenPipeline;
   if (this->Plan.unsteady())
   {
-    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.inputTimes()[this->Held.requestIndex]);
+    inInfo->Set(SDDP::UPDATE_TIME_STEP(), this->Plan.dataTimeOf(this->Held.requestIndex));
     this->Held.lastRequested = this->Held.requestIndex;
   }
   else
@@ -361,6 +363,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   {
     bpvtk::OutputFrame frame;
     frame.time = target;
+    frame.backward = this->Plan.direction() == bp::TimeDirection::Backward;
     frame.offset = this->Held.offset;
     frame.domain = this->Layout.domainBounds(this->Held.grid);
     const auto local = this->Held.grid.bounds();
@@ -435,7 +438,7 @@ void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
   // What the automatic settings came to, for the Information panel and scripts.
   bpvtk::addFieldValue(output, "TimeStep", this->Resolved.dt);
   bpvtk::addFieldValue(output, "ElementSize", this->Resolved.elementSize);
-  bpvtk::addFieldValue(output, "SimulationTime", this->target());
+  bpvtk::addFieldValue(output, "SimulationTime", this->dataTarget());
   if (this->Resolved.parameters.trailLength > 0)
   {
     // The age at which a trail pose has faded out on the Bound Particles
@@ -473,5 +476,5 @@ void vtkBoundParticleTracerInternals::addSettingsFieldData(vtkPolyData* output)
     }
     output->GetFieldData()->AddArray(perProcess);
   }
-  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->target());
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->dataTarget());
 }

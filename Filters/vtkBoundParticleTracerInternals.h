@@ -176,9 +176,11 @@ public:
 
   // What the filter asks of its trace.
   bool hasTimes() const { return this->Plan.hasTimes(); }
-  double startTime() const { return this->Plan.startTime(); }
+  /// The trace's start in the data's time (backward: the data's end).
+  double startTime() const { return bp::traceTime(this->Plan.direction(), this->Plan.startTime()); }
   /// The output's time steps (both ports share them).
-  const std::vector<double>& outputTimes() const { return this->Plan.outputTimes(); }
+  /// The times offered to the animation: the data's (TracePlan::offeredTimes).
+  const std::vector<double>& outputTimes() const { return this->Plan.offeredTimes(); }
   vtkIdType stepsInLastUpdate() const { return this->Update.stepsInLastUpdate; }
   bool lastUpdateReplayed() const { return this->Update.lastUpdateReplayed; }
   /// Steps between two checkpoints of the trace; 0: none kept.
@@ -193,7 +195,7 @@ public:
   /// Post hoc RequestInformation: the time line follows the input's
   /// `inputTimes` (TracePlan::setTimes). Returns the error, if any.
   std::string setTimes(const std::vector<double>& inputTimes, double duration,
-    int numberOfTimeSteps, int framesPerInterval);
+    int numberOfTimeSteps, int framesPerInterval, bp::TimeDirection direction);
   /// In situ RequestInformation (TracerInSitu.cxx): the present step's `time`
   /// offered to the time line; a change of the filter's settings (its MTime
   /// `settingsTime`) starts the trace again. Returns the error when the
@@ -219,6 +221,8 @@ public:
 
   bp::Stepper& stepper() { return this->Steppers.active(); }
   double target() const { return this->Update.decision.target; }
+  /// target() in the data's time (TimeDirection.h): what the output is stamped with.
+  double dataTarget() const { return bp::traceTime(this->Plan.direction(), this->target()); }
   /// Where the work still to do starts: the start time for a replay not yet
   /// configured, else where the stepper stands (it moves as passes step).
   double steppingFrom()

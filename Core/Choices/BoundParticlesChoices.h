@@ -230,6 +230,20 @@ struct EnumTraits<EngineChoice>
   static constexpr const char* names[] = { "CPU", "GPU", "Automatic" };
 };
 
+/// Which way a trace runs in time (Time Direction; Core/Plan/TimeDirection.h):
+/// toward later times, or from the end of the release window toward earlier
+/// times through the reversed flow.
+enum class TimeDirection
+{
+  Forward = 0,
+  Backward
+};
+template <>
+struct EnumTraits<TimeDirection>
+{
+  static constexpr const char* names[] = { "Forward", "Backward" };
+};
+
 /// The analytic source's flows (Core/Field/AnalyticFlows.h; the formulas are
 /// in docs/user-guide.md, "Analytic Flow").
 enum class AnalyticFlow

@@ -37,7 +37,26 @@ std::string checkInputTimes(const std::vector<double>& times)
 }
 } // namespace
 
-std::string TracePlan::setTimes(
+std::string TracePlan::setTimes(const std::vector<double>& inputTimes, double duration, int count,
+  int framesPerInterval, TimeDirection direction)
+{
+  this->Direction = TimeDirection::Forward;
+  this->Offered.clear();
+  const std::string error = this->setDataTimes(inputTimes, duration, count, framesPerInterval);
+  if (!error.empty())
+  {
+    return error;
+  }
+  // The data's times stay what the animation is offered; the trace runs on
+  // their mirror backward (TimeDirection.h).
+  this->Offered = this->OutputTimes;
+  this->Direction = direction;
+  this->InputTimes = traceTimes(direction, this->InputTimes);
+  this->OutputTimes = traceTimes(direction, this->OutputTimes);
+  return std::string();
+}
+
+std::string TracePlan::setDataTimes(
   const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval)
 {
   this->InputTimes.clear();
@@ -92,8 +111,10 @@ std::string TracePlan::setTimes(
 void TracePlan::setStreamTimes(const std::vector<double>& times)
 {
   this->Streaming = true;
+  this->Direction = TimeDirection::Forward; // in situ traces forward only
   this->InputTimes = times;
   this->OutputTimes = times;
+  this->Offered = times;
   this->Unsteady = times.size() >= 2;
 }
 
@@ -109,7 +130,8 @@ double TracePlan::targetOf(bool requested, double time) const
   const double start = this->startTime();
   const double end = this->OutputTimes.empty() ? start : this->OutputTimes.back();
   // +inf is past the end (the end); -inf and NaN ask for nothing in range (the start).
-  const double target = requested && !std::isnan(time) ? time : start;
+  const double target =
+    requested && !std::isnan(time) ? bp::traceTime(this->Direction, time) : start;
   return std::min(std::max(target, start), end);
 }
 

@@ -21,6 +21,7 @@
 #include "Checkpoints.h"
 #include "FieldCache.h"
 #include "Stepper.h"
+#include "TimeDirection.h"
 
 #include <cstdint>
 #include <string>
@@ -46,8 +47,23 @@ public:
    * over [0, duration]). Empty on success, otherwise what to fix; the plan
    * then offers no times.
    */
-  std::string setTimes(
-    const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval = 1);
+  std::string setTimes(const std::vector<double>& inputTimes, double duration, int count,
+    int framesPerInterval = 1, TimeDirection direction = TimeDirection::Forward);
+
+  /**
+   * The direction setTimes() was given (TimeDirection.h). Every time the plan
+   * takes or gives is the trace's own (traceTime(): backward, the data's
+   * mirrored), which always increases as the trace runs, except
+   * offeredTimes(), dataTimeOf() and a request's time given to targetOf(),
+   * which are the data's.
+   */
+  TimeDirection direction() const { return this->Direction; }
+  /// The times the animation is offered, the data's, increasing (the output
+  /// times in the data's time, in the data's order).
+  const std::vector<double>& offeredTimes() const { return this->Offered; }
+  /// The data's time of the trace's input time step `index` (the time to ask
+  /// upstream for); its data index is dataIndex(direction(), index, count).
+  double dataTimeOf(int index) const { return traceTime(this->Direction, this->InputTimes[index]); }
 
   /**
    * Sets the time line of an input that offers only its present time step
@@ -68,8 +84,9 @@ public:
   /// Times closer than this are one time.
   double epsilon() const;
 
-  /// The requested time clamped to the offered range (+inf: the end); no
-  /// request, -inf or NaN is the start.
+  /// The requested time (the data's) as the trace's time, clamped to the
+  /// offered range (+inf: the data's end); no request or NaN is the trace's
+  /// start, -inf the data's start.
   double targetOf(bool requested, double time) const;
 
   /**
@@ -135,8 +152,14 @@ public:
   int readAheadIndex(double target) const;
 
 private:
+  /// setTimes() in the data's time.
+  std::string setDataTimes(
+    const std::vector<double>& inputTimes, double duration, int count, int framesPerInterval);
+
   bool Unsteady = false;
   bool Streaming = false;
+  TimeDirection Direction = TimeDirection::Forward;
+  std::vector<double> Offered;
   std::vector<double> InputTimes;
   std::vector<double> OutputTimes;
 };

@@ -401,9 +401,12 @@ static void noteNearlyMassless(Resolution& r)
 Resolution resolveSettings(const TraceSettings& s, const FieldFacts& f)
 {
   Resolution r;
-  if (!(s.stepSize > 0.0) || !std::isfinite(s.stepSize))
+  const std::string refused = checkTimeDirection(s.timeDirection, s.engine);
+  if (!refused.empty() || !(s.stepSize > 0.0) || !std::isfinite(s.stepSize))
   {
-    return failure("StepSize must be positive (it is " + std::to_string(s.stepSize) + ").");
+    return failure(!refused.empty()
+        ? refused
+        : "StepSize must be positive (it is " + std::to_string(s.stepSize) + ").");
   }
   // Heavy particles move by gravity too: the step and automatic lifetimes
   // follow the faster of the two (settling through still fluid, or noise).

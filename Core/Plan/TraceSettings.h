@@ -16,6 +16,7 @@
 #define BoundParticles_TraceSettings_h
 
 #include "Engine.h"
+#include "TimeDirection.h"
 
 #include <array>
 #include <cstddef>
@@ -74,6 +75,9 @@ struct TraceSettings
   double latticeSpacing = 0.0;
   /// Release Weights is set (the warnings where it is not used).
   bool weighted = false;
+  /// Which way the trace runs (TimeDirection.h); Backward takes massless
+  /// elements only (checkTimeDirection).
+  TimeDirection timeDirection = TimeDirection::Forward;
   /// The settings the engine takes as they are (integrator, restoration,
   /// shape matching, linking, reset condition, seed, random orientation);
   /// resolveSettings() fills in the rest of it. It starts at the panel's

@@ -46,5 +46,6 @@ TEST(Choices, EveryValueHasOneTextOfItsOwn)
   expectNamed(bp::Linking::Torus, "Linking");
   expectNamed(bp::EngineChoice::Automatic, "EngineChoice");
   expectNamed(bp::AnalyticFlow::DoubleGyre, "AnalyticFlow");
+  expectNamed(bp::TimeDirection::Backward, "TimeDirection");
 }
 } // namespace

@@ -124,6 +124,7 @@ const std::map<std::string, CoreField> CoreDefaults = {
     [](const auto& c)
     { return one(c.trace.stepInCellLengths ? bp::StepUnit::CellLength : bp::StepUnit::Time); } },
   { "Integrator", [](const auto& c) { return one(c.trace.engine.integrator); } },
+  { "TimeDirection", [](const auto& c) { return one(c.trace.timeDirection); } },
   { "Restoration", [](const auto& c) { return one(c.trace.engine.restoration); } },
   { "RestorationIterations", [](const auto& c) { return one(c.trace.engine.iterations); } },
   { "RelaxationFactor", [](const auto& c) { return one(c.trace.engine.relaxation); } },
@@ -197,6 +198,7 @@ const std::map<std::string, CoreEntries> CoreEnums = {
   { "BoundParticleTracer.StepSizeUnit", entriesOfGetter(&vtkBPT::GetStepSizeUnit) },
   { "BoundParticleTracer.ShapeMatchingMode", entriesOfGetter(&vtkBPT::GetShapeMatchingMode) },
   { "BoundParticleTracer.Integrator", entriesOfGetter(&vtkBPT::GetIntegrator) },
+  { "BoundParticleTracer.TimeDirection", entriesOfGetter(&vtkBPT::GetTimeDirection) },
   { "BoundParticleTracer.Restoration", entriesOfGetter(&vtkBPT::GetRestoration) },
   { "BoundParticleTracer.Anchor", entriesOfGetter(&vtkBPT::GetAnchor) },
   { "BoundParticleTracer.Inertia", entriesOfGetter(&vtkBPT::GetInertia) },

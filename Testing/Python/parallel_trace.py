@@ -157,6 +157,15 @@ def placement_traces():
                                 Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5))
     cases["unsteady_z"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
                                                NumberOfElements=1200, Seed=7), [1.0, 2.0])
+    # Time Direction = Backward: released at the time line's end (2) and
+    # traced back through the reversed flow, to 1 and on to 0. On a source of
+    # its own: under MPI a tracer whose first time step is the one a source
+    # shared with another tracer holds (here the last) is refused, forward too.
+    back = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[12, 8, 40],
+                                Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5))
+    cases["backward"] = (BoundParticleTracer(Input=back, ElementShape="Point",
+                                             NumberOfElements=1200, Seed=7,
+                                             TimeDirection="Backward"), [1.0, 0.0])
     # Meshes, resampled inside the tracer: each rank locates the grid points
     # in its piece of cells. Hexahedra (an image's cells as an unstructured
     # grid) interpolate alike whichever piece holds a point; so do two

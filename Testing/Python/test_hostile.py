@@ -482,6 +482,17 @@ CASES = {
     "burst at the last offered time": (
         lambda: tracer(flow(), Duration=2.0, NumberOfTimeSteps=5, ReleaseWindow=1,
                        ReleaseStart=2.0, ReleaseStop=2.0), 2.0, "last offered time"),
+    "heavy particles backward": (
+        lambda: tracer(flow(), Inertia="Maxey-Riley", TimeDirection="Backward"), 1.0,
+        "Time Direction = Backward", lambda r: r["points"] == 0),
+    "backward release window outside the data's times": (
+        lambda: tracer(flow(), Duration=2.0, NumberOfTimeSteps=5, TimeDirection="Backward",
+                       ReleaseWindow=1, ReleaseStart=5.0, ReleaseStop=6.0), 1.0,
+        "lies outside the offered times [0, 2]"),
+    "backward burst at the first offered time": (
+        lambda: tracer(flow(), Duration=2.0, NumberOfTimeSteps=5, TimeDirection="Backward",
+                       ReleaseWindow=1, ReleaseStart=0.0, ReleaseStop=0.0), 0.0,
+        "first offered time"),
     "stiffness out of range (state file)": (
         lambda: tracer(flow(), Restoration="Shape Matching", ShapeMatchingStiffness=5.0), 1.0,
         "outside [0, 1]", lambda r: r["points"] > 0),
