@@ -37,21 +37,31 @@ install(FILES "${BOUNDPARTICLES_PLUGIN_CONFIG_FILE}"
   COMPONENT runtime)
 
 if (BOUNDPARTICLES_INSTALL_STARTUP)
-  set(BOUNDPARTICLES_INSTALLED_CONFIG_FILE
-    "${CMAKE_INSTALL_PREFIX}/${_config_destination}/${_config_name}")
+  # Made when installing, for the prefix installed to (`cmake --install
+  # --prefix` included): the same build folder installs for /usr/local or,
+  # for the Debian package (scripts/package.sh), for /usr. GNUInstallDirs'
+  # rule for the configuration folder: /etc under / and /usr, PREFIX/etc
+  # elsewhere. systemd's user manager reads PREFIX/lib/environment.d for /usr
+  # and /usr/local.
   set(_startup "${CMAKE_CURRENT_BINARY_DIR}/startup")
-  configure_file("${CMAKE_CURRENT_LIST_DIR}/boundparticles.sh.in"
-    "${_startup}/boundparticles.sh" @ONLY)
-  configure_file("${CMAKE_CURRENT_LIST_DIR}/60-boundparticles.conf.in"
-    "${_startup}/60-boundparticles.conf" @ONLY)
-  # /etc/profile.d under the prefix /usr, PREFIX/etc/profile.d elsewhere.
-  install(FILES "${_startup}/boundparticles.sh"
-    DESTINATION "${CMAKE_INSTALL_FULL_SYSCONFDIR}/profile.d"
-    COMPONENT runtime)
-  # systemd's user manager reads PREFIX/lib/environment.d for /usr and /usr/local.
-  install(FILES "${_startup}/60-boundparticles.conf"
-    DESTINATION "lib/environment.d"
-    COMPONENT runtime)
+  install(CODE "
+    string(REGEX REPLACE \"/+\$\" \"\" _bp_prefix \"\${CMAKE_INSTALL_PREFIX}\")
+    if (_bp_prefix STREQUAL \"\" OR _bp_prefix STREQUAL \"/usr\")
+      set(_bp_etc /etc)
+    else ()
+      set(_bp_etc \"\${_bp_prefix}/etc\")
+    endif ()
+    set(BOUNDPARTICLES_INSTALLED_CONFIG_FILE
+      \"\${_bp_prefix}/${_config_destination}/${_config_name}\")
+    configure_file(\"${CMAKE_CURRENT_LIST_DIR}/boundparticles.sh.in\"
+      \"${_startup}/boundparticles.sh\" @ONLY)
+    configure_file(\"${CMAKE_CURRENT_LIST_DIR}/60-boundparticles.conf.in\"
+      \"${_startup}/60-boundparticles.conf\" @ONLY)
+    file(INSTALL DESTINATION \"\${_bp_etc}/profile.d\" TYPE FILE
+      FILES \"${_startup}/boundparticles.sh\")
+    file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/lib/environment.d\" TYPE FILE
+      FILES \"${_startup}/60-boundparticles.conf\")
+  " COMPONENT runtime)
 endif ()
 
 install(FILES

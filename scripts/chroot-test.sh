@@ -6,7 +6,8 @@
 #   bash scripts/chroot-test.sh forky     # ParaView 6.1,  VTK 9.6, Qt 6
 #   bash scripts/chroot-test.sh forky COMMAND...   # build, then run COMMAND
 #                                                  # inside (in the repository)
-#   bash scripts/chroot-test.sh forky --package    # the Debian package: build it,
+#   bash scripts/chroot-test.sh forky --package    # the Debian package: make it from
+#                                  # the suite's build (/build, brought up to date),
 #                                  # install, check and purge it (scripts/package-test.sh)
 #   bash scripts/chroot-test.sh forky --prepare    # only make the chroot and install
 #                                  # its packages (.ci/run does this beside the host's suite)

@@ -9,7 +9,7 @@
 #   bash scripts/package-test.sh [OUTDIR]    # the .deb stays in OUTDIR
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-out="$(realpath -m "${1:-${BOUNDPARTICLES_BUILD_DIR:-$root/build}-package/deb}")"
+out="$(realpath -m "${1:-${BOUNDPARTICLES_BUILD_DIR:-$root/build}/package/deb}")"
 name=paraview-boundparticles
 codename="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
 

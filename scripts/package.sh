@@ -5,18 +5,19 @@
 #   bash scripts/package.sh [OUTDIR]    # writes OUTDIR/paraview-boundparticles_*.deb
 #   apt install ./OUTDIR/paraview-boundparticles_*.deb
 #
-# Installs what is missing first (scripts/setup.sh), then builds the plugin
-# alone (no tests, no benches) with Debian's build flags for the prefix /usr
-# in ${BOUNDPARTICLES_PACKAGE_BUILD_DIR:-build-package/}, installs it into a
-# staging folder and makes the package with dpkg-deb. The package depends on
-# the exact version of the ParaView package it was built against: apt refuses
-# it beside any other. Its plugin configuration file and login scripts make
-# every ParaView load the plugin at start (docs/user-guide.md, Installing).
-# Prints the package's path last. Lintian's errors fail the script.
+# Builds, or brings up to date, the build folder the test suite runs in
+# (scripts/build.sh: ${BOUNDPARTICLES_BUILD_DIR:-build/}, Release with
+# Debian's build flags, the tests included) and makes the package from it,
+# with no second compile: installs its runtime component for the prefix /usr
+# into a staging folder (in the build folder's package/) and makes the package
+# with dpkg-deb. The package depends on the exact version of the ParaView
+# package it was built against: apt refuses it beside any other. Its plugin
+# configuration file and login scripts make every ParaView load the plugin at
+# start (docs/user-guide.md, Installing). Prints the package's path last.
+# Lintian's errors fail the script.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$(realpath -m "${1:-$root/package-output}")"
-build="${BOUNDPARTICLES_PACKAGE_BUILD_DIR:-${BOUNDPARTICLES_BUILD_DIR:-$root/build}-package}"
 name=paraview-boundparticles
 
 say() { echo "package: $*" >&2; }
@@ -26,33 +27,18 @@ fail() {
 }
 
 bash "$root/scripts/setup.sh" lintian >&2
-mkdir -p "$build" "$out"
+build="$(bash "$root/scripts/build.sh" | tail -n 1)" || fail "the build (scripts/build.sh)"
+work="$build/package" # the staging folder and the logs
+mkdir -p "$work" "$out"
+# The hardening flags lintian checks come from the build's configuration
+# (scripts/build-options.sh); a build folder configured without them by hand
+# would make a package lintian fails.
+grep -q '^CMAKE_CXX_FLAGS:STRING=.*-fstack-protector' "$build/CMakeCache.txt" \
+  || fail "$build is not configured with Debian's build flags (scripts/build-options.sh)"
 
-# Debian's hardening flags (lintian checks them), without debug information.
-export DEB_BUILD_MAINT_OPTIONS=hardening=+all DEB_CFLAGS_MAINT_STRIP=-g DEB_CXXFLAGS_MAINT_STRIP=-g
-CFLAGS="$(dpkg-buildflags --get CPPFLAGS) $(dpkg-buildflags --get CFLAGS)"
-CXXFLAGS="$(dpkg-buildflags --get CPPFLAGS) $(dpkg-buildflags --get CXXFLAGS)"
-LDFLAGS="$(dpkg-buildflags --get LDFLAGS)"
-export CFLAGS CXXFLAGS LDFLAGS
-launcher=()
-if command -v ccache >/dev/null; then
-  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$root" # as scripts/build.sh
-fi
-if ! cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr \
-  -DBUILD_TESTING=OFF -DBOUNDPARTICLES_BUILD_BENCH=OFF \
-  -DCMAKE_INSTALL_DOCDIR="share/doc/$name" "${launcher[@]}" >"$build/configure.log" 2>&1; then
-  cat "$build/configure.log" >&2
-  fail "configure (log: $build/configure.log)"
-fi
-cmake --build "$build" --parallel "$(nproc)" -- --no-print-directory >"$build/build.log" 2>&1 || {
-  tail -n 60 "$build/build.log" >&2
-  fail "build (log: $build/build.log)"
-}
-
-stage="$build/stage"
+stage="$work/stage"
 rm -rf "$stage"
-DESTDIR="$stage" cmake --install "$build" --component runtime >"$build/install.log"
+DESTDIR="$stage" cmake --install "$build" --component runtime --prefix /usr >"$work/install.log"
 # dh_strip's way: no symbol tables or build notes in the shipped libraries.
 find "$stage" -name '*.so' -type f -exec strip --strip-unneeded \
   --remove-section=.comment --remove-section=.note {} +
@@ -90,7 +76,7 @@ cp "$root/packaging/debian/copyright" "$docdir/copyright"
 
 # Dependencies: the libraries the plugin links (dpkg-shlibdeps; the plugin's
 # own libraries beside it need none), and the exact ParaView.
-shlibs="$build/shlibdeps"
+shlibs="$work/shlibdeps"
 rm -rf "$shlibs"
 mkdir -p "$shlibs/debian"
 printf 'Source: %s\n\nPackage: %s\nArchitecture: any\n' "$name" "$name" >"$shlibs/debian/control"
@@ -98,9 +84,9 @@ libraries=()
 while IFS= read -r -d '' file; do libraries+=("$file"); done \
   < <(find "$stage" -name '*.so' -type f -print0)
 depends="$(cd "$shlibs" && dpkg-shlibdeps -O -S"$stage" --ignore-missing-info \
-  -l"$stage/usr/lib" "${libraries[@]}" 2>"$build/shlibdeps.log" \
+  -l"$stage/usr/lib" "${libraries[@]}" 2>"$work/shlibdeps.log" \
   | sed -n 's/^shlibs:Depends=//p')" || {
-  cat "$build/shlibdeps.log" >&2
+  cat "$work/shlibdeps.log" >&2
   fail "dpkg-shlibdeps"
 }
 # ParaView's own libraries come with the exact version instead.
@@ -141,9 +127,9 @@ dpkg-deb --root-owner-group -Zxz --build "$stage" "$deb" >/dev/null
 say "$deb: $(du -k "$deb" | cut -f1) KiB, installed $size KiB; Depends: $depends"
 
 # Lintian's errors fail the package; its warnings are printed.
-if ! lintian --fail-on error --display-info --tag-display-limit 0 "$deb" >"$build/lintian.log" 2>&1; then
-  cat "$build/lintian.log" >&2
+if ! lintian --fail-on error --display-info --tag-display-limit 0 "$deb" >"$work/lintian.log" 2>&1; then
+  cat "$work/lintian.log" >&2
   fail "lintian found errors in $deb"
 fi
-sed 's/^/lintian: /' "$build/lintian.log" >&2
+sed 's/^/lintian: /' "$work/lintian.log" >&2
 echo "$deb"
