@@ -218,12 +218,6 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
     return "Time Direction = Backward needs the whole time series, but in situ only the present "
            "time step arrives: set Time Direction to Forward.";
   }
-  if (config.engine == bp::EngineChoice::Gpu &&
-    config.trace.timeDirection == bp::TimeDirection::Backward)
-  {
-    vtkWarningWithObjectMacro(this->Owner,
-      "Time Direction = Backward runs on the CPU engine: the GPU engine traces forward only.");
-  }
   const std::string templateError = this->elementTemplate(config, inputVector, shape);
   if (!templateError.empty())
   {

@@ -106,9 +106,7 @@ void vtkBoundParticleTracerInternals::decide(
   const Config& config, vtkInformation* outInfo, int gpuQueue)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  // A backward trace runs on the CPU engine (checkConfiguration says so to Engine GPU).
-  const bool backward = config.trace.timeDirection == bp::TimeDirection::Backward;
-  this->Steppers.select(backward ? bp::EngineChoice::Cpu : config.engine, gpuQueue, this->Layout);
+  this->Steppers.select(config.engine, gpuQueue, this->Layout);
   // In situ the present step is the time shown, whatever time is asked for.
   const double target = this->Plan.streaming()
     ? this->Plan.outputTimes().back()
@@ -423,6 +421,7 @@ void vtkBoundParticleTracerInternals::handToDisplay(const Config& config, vtkPol
   }
   d.coloringAxis = config.coloringAxis;
   d.radialCenter = bp::radialCenter(bounds, config.coloringAxis);
+  d.backward = this->Plan.direction() == bp::TimeDirection::Backward;
   ++d.serial;
   queue.setDraw(d);
   // Two points spanning the field (for the camera and the axes grid).

@@ -63,10 +63,9 @@
 
 namespace
 {
-// ParaView 6.1's GUI processes its events on every progress report (for its
-// Abort button); a report from inside a render then never returns there
-// (python.GUI hung in Render), so the GPU replay reports no progress on 6.1
-// and later. An abort request is still honoured between steps.
+// ParaView 6.1's GUI processes its events on every progress report (for its Abort button); a report
+// from inside a render then never returns there (python.GUI hung in Render), so the GPU replay
+// reports no progress on 6.1 and later. An abort request is still honoured between steps.
 #if PARAVIEW_VERSION_NUMBER >= PARAVIEW_VERSION_CHECK(6, 1, 0)
 constexpr bool GpuRunReportsProgress = false;
 #else
@@ -157,10 +156,9 @@ vtkStandardNewMacro(vtkOpenGLBoundParticleMapper);
 vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
   : Internals(new vtkInternals)
 {
-  // Positions come from the engine's textures, grid-local, and the draw's
-  // own translation to world coordinates goes into the camera matrices
-  // (SetCameraShaderParameters): VTK must not shift and scale the template's
-  // buffer (which the shaders do not read) and fold that in as well.
+  // Positions come from the engine's textures, grid-local, and the draw's own translation to world
+  // coordinates goes into the camera matrices (SetCameraShaderParameters): VTK must not shift and
+  // scale the template's buffer (which the shaders do not read) and fold that in as well.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   this->SetScalarVisibility(0);
   bp::setGpuMessageSink(sayInOutputWindow);
@@ -342,8 +340,9 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
     // What has been stepped stays and is drawn; the tracer's next decision
     // starts from where the engine stands (WorkQueue::settleCursor).
     I.Writer->stoppedAt(progress.stoppedAt(), progress.stoppedSteps(), I.Replay.checkpoints());
+    const double sign = I.Queue->draw().backward ? -1.0 : 1.0; // the data's time
     vtkWarningMacro("Aborted: the GPU engine stopped at t = "
-      << progress.stoppedAt() << " on its way to t = " << I.Queue->draw().time
+      << sign * progress.stoppedAt() << " on its way to t = " << sign * I.Queue->draw().time
       << ", and the display shows the elements there. The next update (another time, or "
          "Play) goes on from there.");
   }
@@ -523,6 +522,7 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   program->SetUniformi("bpColoringAxis", d.coloringAxis);
   const float center[2] = { float(d.radialCenter[0]), float(d.radialCenter[1]) };
   program->SetUniform2f("bpRadialCenter", center);
+  program->SetUniformf("bpVelocitySign", d.backward ? -1.0f : 1.0f); // per the data's time
   program->SetUniformi("bpColorTable", I.ColorTable.texture()->GetTextureUnit());
   program->SetUniformf("bpColorTableSize", float(bpvtk::ColorTableTexture::Size));
   // The superclass gave the clipping planes for world positions.

@@ -36,6 +36,7 @@ uniform int bpComponent;       // for vector sources: a component, or -1 for the
 uniform vec2 bpScalarRange;    // the lookup table's range (Layer's: grid-local)
 uniform int bpColoringAxis;
 uniform vec2 bpRadialCenter;   // grid-local, on the two other axes
+uniform float bpVelocitySign;  // -1 backward: Velocity and ElementSpin per the data's time
 // ElementStretch and ElementFTLE (bp::StretchFit, Core/Elements/ElementStretch.h):
 uniform sampler2D bpStretchRest; // template particle i at (i % width, i / width): rest - mean
 uniform int bpStretchRestWidth;
@@ -143,7 +144,7 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
     return max(texelFetch(bpElements, elementTexel, 0).x, 0.0); // none left, as the CPU output
   if (bpScalarMode == BP_COLOR_VELOCITY)
   {
-    vec3 v = texelFetch(bpSamples, texel, 0).xyz;
+    vec3 v = bpVelocitySign * texelFetch(bpSamples, texel, 0).xyz;
     return bpComponent >= 0 ? v[bpComponent] : length(v);
   }
   if (bpScalarMode == BP_COLOR_VORTICITY)
@@ -167,7 +168,7 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
   }
   if (bpScalarMode == BP_COLOR_SPIN)
   {
-    vec3 w = texelFetch(bpSpins, elementTexel, 0).xyz;
+    vec3 w = bpVelocitySign * texelFetch(bpSpins, elementTexel, 0).xyz;
     return bpComponent >= 0 ? w[bpComponent] : length(w);
   }
   if (bpScalarMode == BP_COLOR_SPIN_RATIO)
@@ -185,7 +186,7 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
   {
     vec3 v = texelFetch(bpSlips, texel, 0).xyz;
     if (bpScalarMode == BP_COLOR_PARTICLE_VELOCITY)
-      v += texelFetch(bpSamples, texel, 0).xyz;
+      v += bpVelocitySign * texelFetch(bpSamples, texel, 0).xyz;
     return bpComponent >= 0 ? v[bpComponent] : length(v);
   }
   return 0.0;

@@ -22,6 +22,10 @@ struct DrawSettings
   int coloringAxis = 2;                                   ///< for Layer and Radius
   std::array<double, 2> radialCenter = { 0, 0 };          ///< grid-local, the other two axes
   std::uint64_t serial = 0; ///< changes with every update of the filter
+  /// A backward trace: `time` and the engine's state are the trace's own
+  /// (TimeDirection.h); Velocity and ElementSpin are drawn per the data's
+  /// time (negated back), as the CPU output writes them.
+  bool backward = false;
 };
 
 } // namespace bp

@@ -11,6 +11,7 @@
 #include "Pose.h"
 #include "ReleaseWeights.h"
 #include "SampleAtPositions.h"
+#include "TimeDirection.h"
 #include "WorkQueue.h"
 
 #include <epoxy/gl.h>
@@ -96,6 +97,7 @@ struct Case
   bool weighted = false;   // Release Weights |x - 0.2|
   bool flat = false;       // a flat field (one z point), steady
   bool laidAlongY = false; // the template turned so its long axis is y (a custom template)
+  bool backward = false;   // unsteady, traced back from t = 2 (TimeDirection.h's slices)
 };
 
 /// The largest difference of a quaternion's components, taking the GPU's q
@@ -268,6 +270,12 @@ Scene sceneFor(const Case& c)
   bp::FieldSlice second;
   if (c.unsteady)
     second = slice(bp::AnalyticFlow::DoubleGyre, g, 2.0);
+  if (c.backward) // as the tracer holds them: mirrored (t = -2, then 0), the flow negated
+  {
+    const bp::FieldSlice last = bp::traceSlice(bp::TimeDirection::Backward, second);
+    second = bp::traceSlice(bp::TimeDirection::Backward, first);
+    first = last;
+  }
   if (c.masked)
   {
     first = withOutsideBlock(first, g);
@@ -330,7 +338,7 @@ bp::Parameters parametersFor(const Case& c, const Scene& scene, double dt)
   {
     p.trackPoses = true;
     p.trailLength = 4;
-    p.trailStart = 0.02;
+    p.trailStart = (c.backward ? -2.0 : 0.0) + 0.02; // the trace's time
     p.trailInterval = 3 * dt;
   }
   p.orientation = c.orientation;
@@ -486,16 +494,17 @@ void compare(const Case& c, int steps, bool pinSome = false)
   // What CpuStepper::setField gives the engine; the GPU makes its own.
   cpu.setReleaseMask(scene.grid, bp::releaseUnfitCells(scene.field, p.releaseMinSpeed),
     bp::releaseWeightsOf(scene.grid, scene.first.releaseWeights));
-  cpu.initialize(bp::serialRunner(), 0.0, &scene.field);
+  const double start = scene.field.firstSlice().time; // the trace's: -2 backward
+  cpu.initialize(bp::serialRunner(), start, &scene.field);
   bp::GpuEngine gpu;
   const Released released{ gpu }; // also when an assertion returns early
   ASSERT_EQ(gpu.configure(shape, p), "");
   ASSERT_EQ(gpu.setField(scene.field), "");
-  gpu.initialize();
+  gpu.initialize(start);
   for (int s = 0; s < steps; ++s)
   {
-    cpu.step(scene.field, s * dt, dt, bp::serialRunner());
-    gpu.step(s * dt, dt);
+    cpu.step(scene.field, start + s * dt, dt, bp::serialRunner());
+    gpu.step(start + s * dt, dt);
   }
   cpu.updateNormals(bp::serialRunner());
   gpu.updateNormals();
@@ -529,7 +538,7 @@ void compare(const Case& c, int steps, bool pinSome = false)
   if (c.anchored)
     compareAnchors(cpu, read, n, diagonal);
   // Untracked, the poses stay as placed and the spins 0 on both engines.
-  comparePoses(cpu, gpu, scene.field, steps * dt, dt);
+  comparePoses(cpu, gpu, scene.field, start + steps * dt, dt);
   if (c.poses)
     compareTrails(cpu, gpu, tolerance);
 }
@@ -571,6 +580,17 @@ TEST(GpuEngine, MatchesOnAnUnsteadyField)
   compare(
     { bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi, true },
     200);
+}
+
+// Time Direction = Backward: the engines trace the tracer's mirrored, negated
+// time steps (traceSlice) in the trace's own time, from -2 on.
+TEST(GpuEngine, MatchesOnTheMirroredNegatedSlicesOfABackwardTrace)
+{
+  Case c{ bp::BuiltinShape::Cross, 257, bp::Integrator::RK4, bp::Restoration::AveragedJacobi,
+    true };
+  c.backward = true;
+  c.poses = true;
+  compare(c, 200);
 }
 
 TEST(GpuEngine, MatchesOnARectilinearGrid)

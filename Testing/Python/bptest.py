@@ -180,12 +180,14 @@ def check_baseline(image, baselines, name, update, mean_bar=1.0, pixel_bar=0.005
 
 
 def colour_display(shown, color, scalar_range):
-    """The tests' look of a display: `color` mapped with Cool to Warm over
+    """The tests' look of a display: `color` (an array's name, or its name and
+    a component: ("Velocity", "X")) mapped with Cool to Warm over
     `scalar_range`, or with no `color` a solid sand colour; a little specular."""
     from paraview.simple import ColorBy, GetColorTransferFunction
     if color:
-        ColorBy(shown, ("POINTS", color))
-        lut = GetColorTransferFunction(color)
+        name = color if isinstance(color, str) else color[0]
+        ColorBy(shown, ("POINTS",) + ((color,) if isinstance(color, str) else tuple(color)))
+        lut = GetColorTransferFunction(name)
         lut.ApplyPreset("Cool to Warm", True)
         lut.RescaleTransferFunction(*scalar_range)
     else:

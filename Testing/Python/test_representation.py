@@ -145,6 +145,31 @@ for stream in (1, 0):
     for trace in traces:
         Delete(trace)
 
+# Time Direction = Backward runs on the GPU engine too: the gyre released at
+# its last time (4) and played back to 1 draws as the CPU engine's trace, the
+# Velocity and ElementSpin components per the data's time (their sign is
+# what tells a trace run through the negated flow from one drawn per the
+# data), and the frame's output is the GPU's (two points), not the CPU's.
+traces = [BoundParticleTracer(ReleaseOrientation="Random", Input=gyre, Vectors=VELOCITY,
+                              ElementShape="Strip8", NumberOfElements=300, ElementSize=0.15,
+                              Seed=5, Engine=engine, TimeDirection="Backward")
+          for engine in ("CPU", "GPU")]
+for trace in traces:
+    trace.OutputArrays = list(trace.OutputArrays) + ["ElementSpin"]
+backward_frames = [4.0 - 0.125 * k for k in range(24)]
+for color, scalar_range in [(("Velocity", "X"), (-0.3, 0.3)), (("ElementSpin", "Z"), (-0.6, 0.6))]:
+    name = "Backward_%s" % "".join(color)
+    with bptest.CapturedMessages() as messages:
+        image = compare_paths(traces[0], traces[1], color, scalar_range, name,
+                              frames=backward_frames, time=1.0)
+    bptest.check(bptest.covered_fraction(image) > 0.01, "%s: the strips are drawn" % name)
+    bptest.check(not messages.messages, "%s: nothing said: %s" % (name, messages.messages))
+    shown_points = traces[1].GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints()
+    bptest.check(shown_points == 2, "%s: the GPU engine ran (the output has %d points)" %
+                 (name, shown_points))
+for trace in traces:
+    Delete(trace)
+
 # No stale frames: while the GPU display shows the trace, every other consumer
 # of the same output gets the CPU result.
 view = CreateRenderView(ViewSize=[320, 240])
