@@ -11,6 +11,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
@@ -198,6 +199,45 @@ void PieceLayout::setWholeExtent(const int whole[6])
       this->OwnedExtent[2 * a + 1] = whole[2 * a];
     }
   }
+}
+
+vtkSmartPointer<vtkDataSet> PieceLayout::cropToPiece(vtkDataSet* held) const
+{
+  int have[6];
+  if (vtkImageData* image = vtkImageData::SafeDownCast(held))
+  {
+    image->GetExtent(have);
+  }
+  else if (vtkRectilinearGrid* grid = vtkRectilinearGrid::SafeDownCast(held))
+  {
+    grid->GetExtent(have);
+  }
+  else
+  {
+    return nullptr;
+  }
+  int want[6];
+  if (!this->distributed() || !this->blockWithGhosts(this->Piece, want))
+  {
+    return nullptr;
+  }
+  bool more = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (have[2 * a] > want[2 * a] || have[2 * a + 1] < want[2 * a + 1])
+    {
+      return nullptr; // not the piece asked for: share() and the grid checks say so
+    }
+    more = more || have[2 * a] < want[2 * a] || have[2 * a + 1] > want[2 * a + 1];
+  }
+  if (!more)
+  {
+    return nullptr;
+  }
+  auto cut = vtk::TakeSmartPointer(held->NewInstance());
+  cut->ShallowCopy(held);
+  cut->Crop(want); // new arrays: the producer's output stays as its other consumers hold it
+  return cut;
 }
 
 vtkSmartPointer<vtkImageData> PieceLayout::cutPiece(vtkImageData* whole)

@@ -26,6 +26,7 @@
 
 #include "vtkSmartPointer.h"
 
+class vtkDataSet;
 class vtkImageData;
 class vtkInformation;
 class vtkMultiProcessController;
@@ -106,6 +107,18 @@ public:
    * grids.
    */
   vtkSmartPointer<vtkImageData> gatherPiece(vtkImageData* held, std::string& error);
+
+  /**
+   * Where `held` (an image or a rectilinear grid, as delivered) has more
+   * ghost layers than asked for, this process's block with GhostCells layers
+   * cut from it (a copy; `held` is left as it is); null where it has just
+   * those, or does not hold them all. The executive gives a piece with more
+   * layers without running its producer again when the producer holds one
+   * (asked for by another consumer: a second tracer on the same source),
+   * while the next time step comes with the layers asked for: every time
+   * step must be read on one extent.
+   */
+  vtkSmartPointer<vtkDataSet> cropToPiece(vtkDataSet* held) const;
 
   /// Piece `piece`'s block of the whole extent with GhostCells layers;
   /// false where it owns nothing (more processes than blocks).

@@ -8,8 +8,10 @@
 #include "TracerReleaseWeights.h"
 #include "VectorField.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMultiProcessController.h"
@@ -67,6 +69,20 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
     requested = this->Held.resampler.arrayName();
     vectors = resampled->GetPointData()->GetArray(requested.c_str());
     association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  }
+  vtkSmartPointer<vtkDataSet> cropped =
+    !resampled && !this->Plan.streaming() && this->Layout.distributed()
+    ? this->Layout.cropToPiece(vtkDataSet::SafeDownCast(input))
+    : nullptr;
+  if (cropped)
+  {
+    // A source shared with another tracer that asked for more ghost layers
+    // gave its piece with those: read on the extent every other step comes on.
+    vtkFieldData* arrays = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkFieldData*>(cropped->GetCellData())
+      : static_cast<vtkFieldData*>(cropped->GetPointData());
+    vectors = vectors && vectors->GetName() ? arrays->GetArray(vectors->GetName()) : nullptr;
+    input = cropped;
   }
   vtkSmartPointer<vtkImageData> gathered;
   if (!resampled && this->Plan.streaming() && this->Layout.distributed() &&

@@ -158,14 +158,17 @@ def placement_traces():
     cases["unsteady_z"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
                                                NumberOfElements=1200, Seed=7), [1.0, 2.0])
     # Time Direction = Backward: released at the time line's end (2) and
-    # traced back through the reversed flow, to 1 and on to 0. On a source of
-    # its own: under MPI a tracer whose first time step is the one a source
-    # shared with another tracer holds (here the last) is refused, forward too.
-    back = updated(AnalyticFlow(Flow="Double Gyre", Resolution=[12, 8, 40],
-                                Bounds=[-3, -1, 4, 5, -10, -6], NumberOfTimeSteps=5))
-    cases["backward"] = (BoundParticleTracer(Input=back, ElementShape="Point",
+    # traced back through the reversed flow, to 1 and on to 0; on the source
+    # unsteady_z left at 2, with the ghost layers its trace asked for.
+    cases["backward"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
                                              NumberOfElements=1200, Seed=7,
                                              TimeDirection="Backward"), [1.0, 0.0])
+    # unsteady_z again, started on the source the backward trace left at 0:
+    # each process's piece comes with that trace's ghost layers, not the two
+    # a new tracer asks for, and the next step's with two. It must trace
+    # what unsteady_z did (test_parallel.py: check_shared_start).
+    cases["shared_start"] = (BoundParticleTracer(Input=gyre, ElementShape="Point",
+                                                 NumberOfElements=1200, Seed=7), [1.0, 2.0])
     # Meshes, resampled inside the tracer: each rank locates the grid points
     # in its piece of cells. Hexahedra (an image's cells as an unstructured
     # grid) interpolate alike whichever piece holds a point; so do two

@@ -237,6 +237,21 @@ def check_step_back(result, name):
     bptest.check(same, "%s: back to 0.45 after 1.0 differs from a trace straight to 0.45" % name)
 
 
+def check_shared_start(result, name):
+    """A tracer started on a source another tracer left with more ghost
+    layers than it asks for traces what the same tracer did first on that
+    source, bit for bit, on any number of processes."""
+    if result is None or "shared_start_1_points" not in result.files:
+        bptest.check(False, "%s: no shared_start traced" % name)
+        return
+    for k in (0, 1):
+        same = all(numpy.array_equal(result["shared_start_%d%s" % (k, s)],
+                                     result["unsteady_z_%d%s" % (k, s)])
+                   for s in ("_points", "_element", "_particle", "_velocity"))
+        bptest.check(same, "%s: shared_start at its time %d differs from unsteady_z, the same "
+                     "tracer first on the source" % (name, k))
+
+
 def compare_pictures(reference_dir, result_dir, name):
     expected = coverage(os.path.join(reference_dir, "remote.png"))
     bptest.check(expected > 0.01, "the built-in picture shows elements (%.3f)" % expected)
@@ -255,6 +270,7 @@ def compare_pictures(reference_dir, result_dir, name):
 reference_pictures = os.path.join(args.output, "builtin-pictures")
 reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
 check_step_back(reference, "builtin")
+check_shared_start(reference, "builtin")
 
 if args.mode == "batch":
     for ranks in (1, 2, 4):
@@ -264,6 +280,7 @@ if args.mode == "batch":
                        ["--render", pictures] if ranks == 2 else [])
         compare(reference, result, name, ranks)
         check_step_back(result, name)
+        check_shared_start(result, name)
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
@@ -308,7 +325,9 @@ else:
                 line for line in server_log.splitlines()
                 if "ERR|" in line or "WARN|" in line or "Abort" in line))
         bptest.check(client.returncode == 0, "the client exited with %d" % client.returncode)
-        compare(reference, numpy.load(out) if os.path.exists(out) else None, "client-server", 2)
+        served = numpy.load(out) if os.path.exists(out) else None
+        compare(reference, served, "client-server", 2)
+        check_shared_start(served, "client-server")
         compare_pictures(reference_pictures, pictures, "client-server")
 
     client_server()
