@@ -22,6 +22,31 @@
 #include <algorithm>
 #include <cmath>
 
+namespace
+{
+/**
+ * A source shared with another tracer that asked for more ghost layers gave
+ * its piece with those (the executive does not run it again for fewer): cut
+ * to this process's block and layers, so the step is read on the extent every
+ * other step comes on, with `vectors` found again in the cut. Null, and
+ * `input` and `vectors` as they were, where the piece is already that.
+ */
+vtkSmartPointer<vtkDataSet> cropToPiece(
+  const bpvtk::PieceLayout& layout, int association, vtkDataObject*& input, vtkDataArray*& vectors)
+{
+  vtkSmartPointer<vtkDataSet> cropped = layout.cropToPiece(vtkDataSet::SafeDownCast(input));
+  if (cropped)
+  {
+    vtkFieldData* arrays = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkFieldData*>(cropped->GetCellData())
+      : static_cast<vtkFieldData*>(cropped->GetPointData());
+    vectors = vectors && vectors->GetName() ? arrays->GetArray(vectors->GetName()) : nullptr;
+    input = cropped;
+  }
+  return cropped;
+}
+} // namespace
+
 bool vtkBoundParticleTracerInternals::wantsTimeStep()
 {
   // A first pass with every time step in hand asked for whatever upstream
@@ -70,19 +95,10 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
     vectors = resampled->GetPointData()->GetArray(requested.c_str());
     association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   }
-  vtkSmartPointer<vtkDataSet> cropped =
-    !resampled && !this->Plan.streaming() && this->Layout.distributed()
-    ? this->Layout.cropToPiece(vtkDataSet::SafeDownCast(input))
-    : nullptr;
-  if (cropped)
+  vtkSmartPointer<vtkDataSet> cropped;
+  if (!resampled && !this->Plan.streaming() && this->Layout.distributed())
   {
-    // A source shared with another tracer that asked for more ghost layers
-    // gave its piece with those: read on the extent every other step comes on.
-    vtkFieldData* arrays = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
-      ? static_cast<vtkFieldData*>(cropped->GetCellData())
-      : static_cast<vtkFieldData*>(cropped->GetPointData());
-    vectors = vectors && vectors->GetName() ? arrays->GetArray(vectors->GetName()) : nullptr;
-    input = cropped;
+    cropped = cropToPiece(this->Layout, association, input, vectors);
   }
   vtkSmartPointer<vtkImageData> gathered;
   if (!resampled && this->Plan.streaming() && this->Layout.distributed() &&

@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -79,6 +80,44 @@ std::vector<float> trace(bp::GpuEngine& gpu, const bp::Parameters& p, int steps)
   positions.insert(positions.end(), poses.begin(), poses.end());
   return positions;
 }
+
+/// The path and fused step the engines take from the environment, set for a
+/// test and put back as they were when it goes.
+class PathEnvironment
+{
+public:
+  PathEnvironment()
+    : Path(saved(bp::GpuPathVariable))
+    , Fused(saved(bp::FusedStepVariable))
+  {
+  }
+  ~PathEnvironment()
+  {
+    restore(bp::GpuPathVariable, this->Path);
+    restore(bp::FusedStepVariable, this->Fused);
+  }
+  void set(const char* path, const char* fused) const
+  {
+    setenv(bp::GpuPathVariable, path, 1);
+    setenv(bp::FusedStepVariable, fused, 1);
+  }
+
+private:
+  using Saved = std::pair<bool, std::string>;
+  static Saved saved(const char* name)
+  {
+    const char* value = std::getenv(name);
+    return { value != nullptr, value ? value : "" };
+  }
+  static void restore(const char* name, const Saved& value)
+  {
+    if (value.first)
+      setenv(name, value.second.c_str(), 1);
+    else
+      unsetenv(name);
+  }
+  Saved Path, Fused;
+};
 } // namespace
 
 TEST(GpuPath, ComputeFromOpenGL43UnlessTheFragmentPathIsAsked)
@@ -240,21 +279,19 @@ TEST(GpuPath, ComputeCompileFailureFallsBackToTheFragmentPath)
     return;
   if (epoxy_gl_version() < bp::ComputePathVersion)
     GTEST_SKIP() << "no compute path on this context";
-  const char* was = std::getenv(bp::GpuPathVariable);
-  const std::string before = was ? was : "";
   said().clear();
   bp::setGpuMessageSink(listen);
   bp::setComputeCompileFailureForTesting(true);
   for (const char* fused : { "on", "off" })
   {
-    setenv(bp::GpuPathVariable, "compute", 1);
-    setenv(bp::FusedStepVariable, fused, 1);
+    const PathEnvironment environment;
+    environment.set("compute", fused);
     bp::GpuEngine refused;
     const std::vector<float> got = trace(refused, strips(40), 6);
     EXPECT_EQ(refused.path(), bp::GpuPath::Fragment) << "fused " << fused;
     EXPECT_FALSE(refused.fusedStep());
     refused.release();
-    setenv(bp::GpuPathVariable, "fragment", 1);
+    environment.set("fragment", fused);
     bp::GpuEngine fragment;
     const std::vector<float> want = trace(fragment, strips(40), 6);
     fragment.release();
@@ -264,11 +301,6 @@ TEST(GpuPath, ComputeCompileFailureFallsBackToTheFragmentPath)
   }
   bp::setComputeCompileFailureForTesting(false);
   bp::setGpuMessageSink(nullptr);
-  unsetenv(bp::FusedStepVariable);
-  if (was)
-    setenv(bp::GpuPathVariable, before.c_str(), 1);
-  else
-    unsetenv(bp::GpuPathVariable);
   int warnings = 0;
   for (const auto& message : said())
   {
@@ -335,10 +367,8 @@ TEST(GpuEngine, PassTimesOnASoftwareRendererAreEachPasssOwn)
   if (bp::rendererKind(renderer ? renderer : "") != bp::RendererKind::Software ||
     epoxy_gl_version() < bp::ComputePathVersion)
     GTEST_SKIP() << "a software renderer with the compute path only";
-  const char* was = std::getenv(bp::GpuPathVariable);
-  const std::string before = was ? was : "";
-  setenv(bp::GpuPathVariable, "compute", 1);
-  setenv(bp::FusedStepVariable, "off", 1);
+  const PathEnvironment environment;
+  environment.set("compute", "off");
   bp::Parameters p = strips(4096);
   p.lifetimeMin = p.lifetimeMax = 100.0f; // no release due: the reset pass has nothing to do
   p.iterations = 1;
@@ -353,11 +383,6 @@ TEST(GpuEngine, PassTimesOnASoftwareRendererAreEachPasssOwn)
   gpu.setPassObserver(nullptr);
   timer.enable(false);
   gpu.release();
-  unsetenv(bp::FusedStepVariable);
-  if (was)
-    setenv(bp::GpuPathVariable, before.c_str(), 1);
-  else
-    unsetenv(bp::GpuPathVariable);
   double reset = -1.0, advect = -1.0;
   for (const bp::PassTime& t : times)
   {
@@ -481,8 +506,8 @@ struct StepTraffic : bp::PassTraffic
 
 StepTraffic stepTraffic(const char* path, const char* fused, const bp::Parameters& p)
 {
-  setenv(bp::GpuPathVariable, path, 1);
-  setenv(bp::FusedStepVariable, fused, 1);
+  const PathEnvironment environment;
+  environment.set(path, fused);
   bp::GpuEngine gpu;
   trace(gpu, p, 5);
   StepTraffic traffic;
@@ -506,18 +531,11 @@ TEST(GpuEngine, PassTrafficIsEachPathsOwn)
     return;
   if (epoxy_gl_version() < bp::ComputePathVersion)
     GTEST_SKIP() << "no compute path on this context";
-  const char* was = std::getenv(bp::GpuPathVariable);
-  const std::string before = was ? was : "";
   const bp::Parameters p = strips(256);
   const std::size_t particles = 256 * 16;
   const StepTraffic fragment = stepTraffic("fragment", "off", p);
   const StepTraffic kernels = stepTraffic("compute", "off", p);
   const StepTraffic fused = stepTraffic("compute", "on", p);
-  unsetenv(bp::FusedStepVariable);
-  if (was)
-    setenv(bp::GpuPathVariable, before.c_str(), 1);
-  else
-    unsetenv(bp::GpuPathVariable);
   for (const StepTraffic* t : { &fragment, &kernels, &fused })
   {
     EXPECT_EQ(t->told, t->passes()) << "a pass that told no traffic";
