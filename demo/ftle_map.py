@@ -10,6 +10,10 @@ numpy: the flow map integrated with RK4 through the same sampled field
 differences over +-delta, the largest eigenvalue of the Cauchy-Green tensor.
 
     pvpython demo/ftle_map.py --plugin BoundParticles.so --output docs
+
+It also writes ftle-forward-backward.png: the same map traced forward beside
+the one traced backward (Time Direction = Backward: released at T, traced
+back to 0), whose ridges are the gyre's attracting structures.
 """
 import os
 import sys
@@ -115,11 +119,13 @@ def analytic_velocity(field, times, t, p):
                             np.pi * A * np.cos(np.pi * f) * np.sin(np.pi * y) * (2 * a * x + b)])
 
 
-def flow_map(field, times, p, t_end, h=STEP, sample=velocity):
-    """Classic RK4 from time 0 to t_end."""
+def flow_map(field, times, p, t_end, h=STEP, sample=velocity, t_start=0.0):
+    """Classic RK4 from t_start to t_end (backward where t_end < t_start)."""
     p = p.copy()
-    for s in range(int(round(t_end / h))):
-        t = s * h
+    steps = int(round(abs(t_end - t_start) / h))
+    h = h if t_end >= t_start else -h
+    for s in range(steps):
+        t = t_start + s * h
         k1 = sample(field, times, t, p)
         k2 = sample(field, times, t + h / 2, p + h / 2 * k1)
         k3 = sample(field, times, t + h / 2, p + h / 2 * k2)
@@ -128,18 +134,19 @@ def flow_map(field, times, p, t_end, h=STEP, sample=velocity):
     return p
 
 
-def reference_ftle(field, times, points, t_end, delta, sample=velocity):
-    """FTLE of each point: central differences of the flow map over +-delta
-    along x and y, the Cauchy-Green tensor C = F^T F, ln(sqrt(max eig C)) / T."""
+def reference_ftle(field, times, points, t_end, delta, sample=velocity, t_start=0.0):
+    """FTLE of each point: central differences of the flow map from t_start
+    to t_end over +-delta along x and y, the Cauchy-Green tensor C = F^T F,
+    ln(sqrt(max eig C)) / |t_end - t_start| (backward: attracting structures)."""
     n = len(points)
     offsets = np.array([[delta, 0], [-delta, 0], [0, delta], [0, -delta]])
     moved = flow_map(field, times, np.concatenate([points + o for o in offsets]), t_end,
-                     sample=sample)
+                     sample=sample, t_start=t_start)
     xp, xm, yp, ym = (moved[k * n:(k + 1) * n] for k in range(4))
     F = np.stack([(xp - xm) / (2 * delta), (yp - ym) / (2 * delta)], axis=2)  # n x 2 x 2
     C = np.einsum("nki,nkj->nij", F, F)
     largest = np.linalg.eigvalsh(C)[:, -1]
-    return np.log(np.sqrt(largest)) / t_end
+    return np.log(np.sqrt(largest)) / abs(t_end - t_start)
 
 
 def element_ftle(tracer, n):
@@ -244,6 +251,53 @@ def main():
         shown.FontSize = 14
     look_down(view, 2.075, 0.5, 0.85)
     path = os.path.join(args.output, "ftle-map.png")
+    SaveScreenshot(path, view, ImageResolution=[1600, 620])
+    print("wrote " + path)
+    Delete(view)
+    forward_and_backward(args, flow, tracer, points, reference)
+
+
+def forward_and_backward(args, flow, tracer, points, forward_reference):
+    """The picture of Time Direction: the forward map (repelling structures,
+    released at 0 and traced to T) beside the backward one (attracting
+    structures, released at T and traced back to 0), both from elements."""
+    _, backward = gyre_scene()
+    backward.TimeDirection = "Backward"
+    backward.UpdatePipeline(0.0)
+    image, _, values, found = ftle_image(backward)
+    times = np.arange(0.0, T + 0.25, 0.5)
+    field = sampled_field(flow, times)
+    reference = reference_ftle(field, times, points, 0.0, SIZE / 2, t_start=T)
+    stats = compare(values, reference, found)
+    print("backward FTLE map from elements against numpy: " + ", ".join(
+        "%s %.3g" % (k, v) for k, v in sorted(stats.items())))
+    # The backward map as it was at time 0, beside the forward one at T.
+    shifted = vtkImageData()
+    shifted.DeepCopy(image)
+    origin = image.GetOrigin()
+    shifted.SetOrigin(origin[0] + 2.15, origin[1], origin[2])
+    backward_map = TrivialProducer()
+    backward_map.GetClientSideObject().SetOutput(shifted)
+    view = dark_view(T, size=(1600, 620))
+    view.EnableRenderOnInteraction = 0
+    lut = GetColorTransferFunction("FTLE")
+    apply_preset(lut, "Inferno (matplotlib)")
+    top = max(np.percentile(forward_reference, 99.5), np.percentile(reference, 99.5))
+    lut.RescaleTransferFunction(0.0, float(top))
+    for port in (OutputPort(tracer, 1), backward_map):
+        display = Show(port, view)
+        display.SetRepresentationType("Slice")
+        ColorBy(display, ("POINTS", "FTLE"))
+        display.LookupTable = lut
+    for text, x in (("forward, 0 to 10: repelling", 0.15),
+                    ("backward, 10 to 0: attracting", 0.63)):
+        label = Text(Text=text)
+        shown = Show(label, view)
+        shown.WindowLocation = "Any Location"
+        shown.Position = [x, 0.83]
+        shown.FontSize = 14
+    look_down(view, 2.075, 0.5, 0.85)
+    path = os.path.join(args.output, "ftle-forward-backward.png")
     SaveScreenshot(path, view, ImageResolution=[1600, 620])
     print("wrote " + path)
 
