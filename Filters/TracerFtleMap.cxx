@@ -186,18 +186,22 @@ void vtkBoundParticleTracerInternals::showFtleMap(vtkImageData* image)
   {
     // The GPU engine's state stays in the display: no map.
     image->Initialize();
-    return;
   }
-  if (!this->Layout.distributed())
+  else if (!this->Layout.distributed())
   {
     bpvtk::fillFtleMap(image, *particles, this->Held.offset, nullptr);
-    return;
   }
-  // Collective, so only in an update every process runs in step (as
-  // gatherExchange); otherwise nothing moved since the map last gathered.
-  if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
+  else
   {
-    bpvtk::fillFtleMap(this->FtleMap, *particles, this->Held.offset, this->Layout.Controller);
+    // Collective, so only in an update every process runs in step (as
+    // gatherExchange); otherwise nothing moved since the map last gathered.
+    if (this->Update.stepsInLastUpdate > 0 || this->Update.lastUpdateReplayed)
+    {
+      bpvtk::fillFtleMap(this->FtleMap, *particles, this->Held.offset, this->Layout.Controller);
+    }
+    image->ShallowCopy(this->FtleMap);
   }
-  image->ShallowCopy(this->FtleMap);
+  // The time shown, as the elements' (the executive would stamp the last
+  // input step read: a neighbour of the time shown, between two of them).
+  image->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->dataTarget());
 }

@@ -158,8 +158,11 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   s.timeDirection = this->TimeDirection;
   if (this->ReleaseWindow)
   {
-    // Backward in the trace's own time: its mirror (TimeDirection.h).
-    const auto window = bp::traceWindow(this->TimeDirection, this->ReleaseStart, this->ReleaseStop);
+    // Backward in the trace's own time: its mirror (TimeDirection.h). A window
+    // that ends before it starts stays as given: validate() says so, in the data's times.
+    const auto window = this->ReleaseStart <= this->ReleaseStop
+      ? bp::traceWindow(this->TimeDirection, this->ReleaseStart, this->ReleaseStop)
+      : std::array<double, 2>{ this->ReleaseStart, this->ReleaseStop };
     p.releaseStart = window[0];
     p.releaseStop = window[1];
   }

@@ -231,7 +231,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
     const std::string note = bp::longReplayNote((target - committed) / this->Schedule->dt(),
       double(this->Resolved.parameters.numberOfElements) *
         double(this->Resolved.particlesPerElement),
-      committed, target, *queue);
+      bp::traceTime(this->Plan.direction(), committed), this->dataTarget(), *queue);
     if (!note.empty())
     {
       vtkWarningWithObjectMacro(this->Owner, << note);
@@ -293,7 +293,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
     if (committed == before)
     {
       // Never spin: the schedule lands on every data time step, so this is a bug.
-      return Pass::fail("Time stepping made no progress at t = " + std::to_string(before) +
+      const double shown = bp::traceTime(this->Plan.direction(), before);
+      return Pass::fail("Time stepping made no progress at t = " + std::to_string(shown) +
         "; please report this with the input's time steps.");
     }
   }

@@ -268,9 +268,7 @@ void GpuPass::run(std::initializer_list<GLuint> targets, int width, int height) 
     std::size_t written = 0;
     for (GLuint target : targets)
     {
-      // The domain's texels of each target (a target may be larger).
-      const std::size_t all = textureBytes(target);
-      written += std::min(all, std::size_t(width) * std::size_t(height) * 16);
+      written += textureBytes(target); // each target is the pass's domain
     }
     this->tellTraffic(written);
     observer->end();
@@ -373,6 +371,7 @@ std::string GpuPasses::compile(
   this->Path = path;
   this->fused = fusedStep;
   this->Locations.clear(); // a program's name may be a deleted one's
+  this->LocationLookups = 0;
   using P = Programs;
   const ShaderPiece restore = restoreKernel(springSumCode);
   const PassKernel kernels[] = {

@@ -24,11 +24,12 @@ struct PassObserver
   virtual ~PassObserver() = default;
   /// A pass begins: `name` is its kernel's, "step (fused)" or "copy".
   virtual void begin(const std::string& name) = 0;
-  /// The pass begun last moves at least `bytesRead` and `bytesWritten` of the
-  /// engine's state: the whole of every 2D texture it binds, read once, and of
-  /// every target or image it stores into, written once (its compulsory
-  /// traffic; a texel fetched again comes from cache). The field's samples
-  /// (3D textures) are not counted. Told between begin() and end().
+  /// The pass begun last moves at least `bytesRead` and `bytesWritten`: the
+  /// whole of every 2D texture it binds (the state, and small tables such as
+  /// the seed points or a rectilinear grid's axes), read once, and of every
+  /// target or image it stores into, written once (its compulsory traffic; a
+  /// texel fetched again comes from cache). The field's samples (3D textures)
+  /// are not counted. Told between begin() and end().
   virtual void traffic(std::size_t bytesRead, std::size_t bytesWritten)
   {
     (void)bytesRead;

@@ -31,7 +31,7 @@ const std::vector<GpuVariant>& gpuVariants();
 
 /// The bytes one step of a configured and initialised engine moves per
 /// particle, at the least: what its passes tell (PassObserver::traffic: every
-/// state texture a pass binds read once, every target written once; the
+/// 2D texture a pass binds read once, every target written once; the
 /// field's samples left out), each path its own. Steps the engine once, from
 /// `t` by `dt`.
 double bytesPerParticleStep(bp::GpuEngine& engine, double t, double dt, std::size_t particles);

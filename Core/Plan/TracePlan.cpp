@@ -222,7 +222,9 @@ std::string TracePlan::checkWork(double from, double target, double dt) const
   if (!(steps <= double(MaxStepsPerUpdate)))
   {
     std::ostringstream err;
-    err << "Reaching t = " << target << " from t = " << from << " takes about " << steps
+    // In the data's times, which the user sees (a backward trace's are mirrored).
+    err << "Reaching t = " << traceTime(this->direction(), target)
+        << " from t = " << traceTime(this->direction(), from) << " takes about " << steps
         << " steps of " << dt << ", more than the " << MaxStepsPerUpdate
         << " one update may take. The step comes from Step Size and the field's top speed: "
            "check the velocity's units (and byte order), or raise Step Size, or shorten "

@@ -133,6 +133,16 @@ TEST(TimeDirection, APlanBackwardOffersTheDatasTimesAndStartsAtTheirEnd)
   EXPECT_EQ(plan.dataTimeOf(0), 0.0);
 }
 
+// What the plan says of a trace's times, it says in the data's times: a
+// backward trace's own are their mirror, which the user never sees.
+TEST(TimeDirection, APlansMessagesGiveTheDatasTimes)
+{
+  bp::TracePlan plan;
+  ASSERT_EQ(plan.setTimes({ 0.0, 1.0, 2.0 }, 10.0, 101, 2, bp::TimeDirection::Backward), "");
+  const std::string message = plan.checkWork(-2.0, -0.5, 1e-9);
+  EXPECT_NE(message.find("Reaching t = 0.5 from t = 2 "), std::string::npos) << message;
+}
+
 TEST(TimeDirection, SolidBodyRotationBackwardReachesTheAnalyticEarlierPositions)
 {
   // Released at t = pi (the steady time line's end), traced back to t = pi / 2 and to 0.

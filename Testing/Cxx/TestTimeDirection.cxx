@@ -5,9 +5,12 @@
 // times are said.
 #include "TracerTestHelpers.h"
 
+#include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -117,6 +120,43 @@ TEST(TimeDirection, ABackwardReleaseWindowOutsideTheDatasTimesIsSaid)
   EXPECT_EQ(at(tracer, 1.8)->GetNumberOfCells(), 0) << "not yet released at 1.8";
   EXPECT_GT(at(tracer, 1.0)->GetNumberOfCells(), 0);
   EXPECT_TRUE(later.messages.empty()) << later.messages.front();
+}
+
+// A window that ends before it starts is refused in the data's times, as
+// forward, not in the trace's mirrored ones.
+TEST(TimeDirection, AReversedReleaseWindowIsSaidInTheDatasTimes)
+{
+  auto source = flow(bp::AnalyticFlow::SolidBodyRotation);
+  auto tracer = rotating(source, bp::TimeDirection::Backward);
+  tracer->SetReleaseWindow(1);
+  tracer->SetReleaseStart(1.5);
+  tracer->SetReleaseStop(0.5);
+  ErrorLog errors(tracer);
+  EXPECT_EQ(at(tracer, 1.0)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.mentions("ReleaseStart 1.5 is after ReleaseStop 0.5"))
+    << (errors.messages.empty() ? "" : errors.messages.front());
+}
+
+// The output's Velocity is the data's at each point, in the data's sign, on
+// a backward trace too (the trace samples the negated flow): solid-body
+// rotation about z, u = (-y, x, 0).
+TEST(TimeDirection, BackwardVelocityIsTheDatas)
+{
+  auto source = flow(bp::AnalyticFlow::SolidBodyRotation);
+  auto tracer = rotating(source, bp::TimeDirection::Backward);
+  vtkPolyData* out = at(tracer, 1.0);
+  vtkDataArray* velocity = out->GetPointData()->GetArray("Velocity");
+  ASSERT_NE(velocity, nullptr);
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3], u[3];
+    out->GetPoint(i, x);
+    velocity->GetTuple(i, u);
+    worst = std::max({ worst, std::abs(u[0] + x[1]), std::abs(u[1] - x[0]) });
+  }
+  EXPECT_LT(worst, 0.02) << "Velocity is not (-y, x): its sign is the trace's";
 }
 
 // Both engines trace backward: Engine GPU is taken as asked, without a word

@@ -53,5 +53,10 @@ bptest.check(other["correlation"] < stats["correlation"] - 0.1,
              "the forward map is another: correlation %.3f" % other["correlation"])
 map_time = OutputPort(tracer, 1).GetDataInformation().DataInformation.GetTime()
 bptest.check(map_time == 0.0, "the map is stamped with the time shown (%s)" % map_time)
+# Between two input time steps (0.5 apart) too: the time shown, not the
+# last step read.
+tracer.UpdatePipeline(2.25)
+map_time = OutputPort(tracer, 1).GetDataInformation().DataInformation.GetTime()
+bptest.check(map_time == 2.25, "at 2.25 the map is stamped with the time shown (%s)" % map_time)
 
 bptest.finish()
