@@ -227,33 +227,15 @@ def main():
     stats = compare(elements, reference, valid)
     print("FTLE map from elements against numpy: " + ", ".join(
         "%s %.3g" % (k, v) for k, v in sorted(stats.items())))
-    view = dark_view(T, size=(1600, 620))
-    view.EnableRenderOnInteraction = 0
-    lut = GetColorTransferFunction("FTLE")
-    apply_preset(lut, "Inferno (matplotlib)")
-    lut.RescaleTransferFunction(0.0, float(np.percentile(reference, 99.5)))
     # The tracer's map as it is (FTLE 0 where a point is not valid), and
     # numpy's beside it.
     first = points[0]
     numpy_map = TrivialProducer()
     numpy_map.GetClientSideObject().SetOutput(
         image_of(reference, COUNTS, (first[0] + 2.15, first[1])))
-    for port in (OutputPort(tracer, 1), numpy_map):
-        display = Show(port, view)
-        display.SetRepresentationType("Slice")
-        ColorBy(display, ("POINTS", "FTLE"))
-        display.LookupTable = lut
-    for text, x in (("elements (ElementFTLE)", 0.19), ("numpy (flow map)", 0.68)):
-        label = Text(Text=text)
-        shown = Show(label, view)
-        shown.WindowLocation = "Any Location"
-        shown.Position = [x, 0.83]
-        shown.FontSize = 14
-    look_down(view, 2.075, 0.5, 0.85)
-    path = os.path.join(args.output, "ftle-map.png")
-    SaveScreenshot(path, view, ImageResolution=[1600, 620])
-    print("wrote " + path)
-    Delete(view)
+    save_two_maps(args, (OutputPort(tracer, 1), numpy_map),
+                  (("elements (ElementFTLE)", 0.19), ("numpy (flow map)", 0.68)),
+                  np.percentile(reference, 99.5), "ftle-map.png")
     forward_and_backward(args, flow, tracer, points, reference)
 
 
@@ -278,29 +260,36 @@ def forward_and_backward(args, flow, tracer, points, forward_reference):
     shifted.SetOrigin(origin[0] + 2.15, origin[1], origin[2])
     backward_map = TrivialProducer()
     backward_map.GetClientSideObject().SetOutput(shifted)
+    top = max(np.percentile(forward_reference, 99.5), np.percentile(reference, 99.5))
+    save_two_maps(args, (OutputPort(tracer, 1), backward_map),
+                  (("forward, 0 to 10: repelling", 0.15), ("backward, 10 to 0: attracting", 0.63)),
+                  top, "ftle-forward-backward.png")
+
+
+def save_two_maps(args, ports, labels, top, name):
+    """Two FTLE maps side by side at time T, each with its label (text, x),
+    coloured 0 to `top`, saved as `name` in the output folder."""
     view = dark_view(T, size=(1600, 620))
     view.EnableRenderOnInteraction = 0
     lut = GetColorTransferFunction("FTLE")
     apply_preset(lut, "Inferno (matplotlib)")
-    top = max(np.percentile(forward_reference, 99.5), np.percentile(reference, 99.5))
     lut.RescaleTransferFunction(0.0, float(top))
-    for port in (OutputPort(tracer, 1), backward_map):
+    for port in ports:
         display = Show(port, view)
         display.SetRepresentationType("Slice")
         ColorBy(display, ("POINTS", "FTLE"))
         display.LookupTable = lut
-    for text, x in (("forward, 0 to 10: repelling", 0.15),
-                    ("backward, 10 to 0: attracting", 0.63)):
+    for text, x in labels:
         label = Text(Text=text)
         shown = Show(label, view)
         shown.WindowLocation = "Any Location"
         shown.Position = [x, 0.83]
         shown.FontSize = 14
     look_down(view, 2.075, 0.5, 0.85)
-    path = os.path.join(args.output, "ftle-forward-backward.png")
+    path = os.path.join(args.output, name)
     SaveScreenshot(path, view, ImageResolution=[1600, 620])
     print("wrote " + path)
-
+    Delete(view)
 
 if __name__ == "__main__":
     main()
