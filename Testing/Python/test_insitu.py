@@ -119,6 +119,19 @@ bptest.check(said.mentions("must have a finite time") and empty == 0,
 fresh_producer.GetClientSideObject().SetOutput(step_of(times[1]), times[1])
 fresh_producer.MarkModified(fresh_producer)
 bptest.check(len(elements(fresh, times[1])) > 0, "the next good step starts the trace")
+# Backward needs the whole time series: in situ, where only the present step
+# comes, it is refused with a message and an empty output.
+backward_feed = PVTrivialProducer()
+backward = BoundParticleTracer(Input=backward_feed, **dict(SETTINGS, TimeDirection="Backward"))
+with bptest.CapturedMessages() as said:
+    backward_feed.GetClientSideObject().SetOutput(step_of(times[0]), times[0])
+    backward_feed.MarkModified(backward_feed)
+    backward.UpdatePipeline(times[0])
+    empty = servermanager.Fetch(backward).GetNumberOfPoints()
+bptest.check(said.mentions("Time Direction = Backward needs the whole time series") and empty == 0,
+             "in situ backward: refused, empty output (%d points): %s" % (empty, said.messages))
+Delete(backward)
+Delete(backward_feed)
 
 
 def trace_in_situ(step_at, settings):
