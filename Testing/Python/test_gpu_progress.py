@@ -217,7 +217,11 @@ fresh = picture("fresh")
 mean, pixels = bptest.image_difference(back, fresh, threshold=0)
 print("back to t = %g: %.2f s against a fresh trace's %.2f s; mean difference %.4f, "
       "pixels differing %.4f" % (times[-4], back_seconds, fresh_seconds, mean, pixels))
-bptest.check(back_seconds < 0.3 * fresh_seconds,
+# A replay from the start takes about a fresh trace's time; a resume from the
+# checkpoint before takes at most the automatic spacing's steps plus the
+# render (0.30 of a fresh trace measured once in trixie's chroot): half tells
+# the two apart without timing the machine's load.
+bptest.check(back_seconds < 0.5 * fresh_seconds,
              "going back took %.2f s, a fresh trace %.2f s: it replayed" % (back_seconds,
                                                                             fresh_seconds))
 bptest.check(mean == 0.0 and pixels == 0.0,
