@@ -48,6 +48,7 @@
 
 #include "ElementTemplate.h"
 #include "EngineParameters.h"
+#include "EngineState.h"
 #include "Inertia.h"
 #include "Parallel.h"
 #include "ReleaseWeights.h"
@@ -228,6 +229,20 @@ public:
    */
   std::string exchange(
     const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records);
+  ///@}
+
+  /// @name A state to save and resume (EngineState.h)
+  ///@{
+  /// A record's arrays (forEachElementArray's, by name and type), those of
+  /// no component left out.
+  std::vector<StateArray> stateLayout() const;
+  /// Every element's record, ids increasing, and the state's scalars (the
+  /// trail ring's times and newest slot, the emitter box).
+  EngineState saveState() const;
+  /// Replaces every element held by the state's and takes its scalars, on an
+  /// engine configured with the template and parameters it was saved with
+  /// (checkTraceState first); empty on success, otherwise what is wrong.
+  std::string loadState(const EngineState& state);
   ///@}
 
   /// For tests: direct access to the positions of the system.
