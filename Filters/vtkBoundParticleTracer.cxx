@@ -10,6 +10,7 @@
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
 #include "TracerInput.h"
+#include "TracerPorts.h"
 #include "TracerTimeLine.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
@@ -17,6 +18,7 @@
 #include "vtkDataArraySelection.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -53,8 +55,9 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   , TimeLine(new bpvtk::TracerTimeLine(this))
 {
   this->SetNumberOfInputPorts(3);
-  // The elements, and the FTLE map of a lattice release (TracerFtleMap.h).
-  this->SetNumberOfOutputPorts(2);
+  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), and
+  // the trace's state to save (TracerPorts.h).
+  this->SetNumberOfOutputPorts(bpvtk::TracerPortCount);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     // Off by default (the table's flags): the pose arrays (a fit per element a
@@ -186,6 +189,7 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
   c.coloringAxis = this->ColoringAxis;
   c.checkpointMemory = this->CheckpointMemory;
+  c.initialStateFile = this->InitialStateFile;
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
@@ -413,18 +417,12 @@ bpvtk::FieldProbe vtkBoundParticleTracer::ProbeDelivered(
 int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkBoundParticleTracerInternals& I = *this->Internals;
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  // Both outputs come from one execution: the port asked for gives the time
-  // and pieces, and the other is asked alike (stamped with what it holds),
-  // so that its consumer at the same time finds it up to date.
-  const int port = request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
-      request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 1
-    ? 1
-    : 0;
+  // One execution fills every output (TracerPorts.h).
+  const int port = bpvtk::askedPort(request);
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
-  bpvtk::askAlike(outInfo, outputVector->GetInformationObject(1 - port));
+  bpvtk::askOthersAlike(outputVector, port);
 
   I.requestPieces(
     outInfo, inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
@@ -434,9 +432,11 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
     // The engine as the elements' display asks (port 0), whichever port asks.
+    // A writer of the State output takes the CPU engine's (the GPU's stays in the display).
     vtkInformation* display = outputVector->GetInformationObject(0);
-    I.decide(
-      this->Config(), outInfo, display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0);
+    I.decide(this->Config(), outInfo,
+      display->Has(GPU_WORK_QUEUE()) && port != bpvtk::StatePort ? display->Get(GPU_WORK_QUEUE())
+                                                                  : 0);
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -444,38 +444,20 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   // every algorithm upstream run again (a reader re-read its time step and
   // ParaView gathered its data information, every frame).
   inInfo->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
-  // The template and the seed points are whole on every process: each
-  // process places elements anywhere, and a piece of them would differ.
-  for (int port = 1; port < 3; ++port)
-  {
-    if (vtkInformation* whole = inputVector[port]->GetInformationObject(0))
-    {
-      whole->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
-      whole->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
-      whole->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-      // An image's own whole extent (the field's would crop it).
-      if (whole->Has(SDDP::WHOLE_EXTENT()))
-      {
-        whole->Set(SDDP::UPDATE_EXTENT(), whole->Get(SDDP::WHOLE_EXTENT()), 6);
-      }
-      whole->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
-      if (!whole->Has(SDDP::TIME_STEPS()))
-      {
-        // The time copied from downstream means nothing to a source without
-        // time steps, but a new one would run it again on every update.
-        whole->Remove(SDDP::UPDATE_TIME_STEP());
-      }
-      else if (I.hasTimes())
-      {
-        // A time-varying template or seed source gives what it holds at the
-        // trace's start: the same trace whatever time was shown before
-        // (the time copied from downstream made a replay depend on it).
-        whole->Set(SDDP::UPDATE_TIME_STEP(), I.startTime());
-      }
-    }
-  }
+  bpvtk::requestWholeInputs(inputVector, I.hasTimes(), I.startTime());
   I.requestTimeStep(inInfo);
   return 1;
+}
+
+vtkTypeBool vtkBoundParticleTracer::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
+  {
+    bpvtk::markStateNotGenerated(request, outputVector);
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 int vtkBoundParticleTracer::RequestData(
@@ -504,6 +486,7 @@ int vtkBoundParticleTracer::RequestData(
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
   vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
   vtkImageData::GetData(outputVector->GetInformationObject(1))->Initialize();
+  vtkPolyData::GetData(outputVector->GetInformationObject(bpvtk::StatePort))->Initialize();
   return 1;
 }
 
@@ -543,6 +526,8 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   output->Initialize();
   vtkImageData* ftleMap = vtkImageData::GetData(outputVector->GetInformationObject(1));
   ftleMap->Initialize();
+  vtkPolyData* stateOutput = vtkPolyData::GetData(outputVector, bpvtk::StatePort);
+  stateOutput->Initialize();
   this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
@@ -590,11 +575,22 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   I.finishPasses();
   request->Remove(SDDP::CONTINUE_EXECUTING());
   const Pass shown = I.show(config, output);
-  if (shown.kind == Pass::Done)
+  if (shown.kind != Pass::Done)
   {
-    I.showFtleMap(ftleMap);
+    return end(shown);
   }
-  return shown.kind == Pass::Done ? 1 : end(shown);
+  I.showFtleMap(ftleMap);
+  if (bpvtk::askedPort(request) == bpvtk::StatePort)
+  {
+    // A state that cannot be saved leaves the trace as it is.
+    const Pass saved = I.showState(stateOutput);
+    if (saved.kind != Pass::Done)
+    {
+      vtkErrorMacro(<< saved.message);
+      stateOutput->Initialize();
+    }
+  }
+  return 1;
 }
 
 vtkDataArraySelection* vtkBoundParticleTracer::GetOutputArraySelection()
@@ -677,6 +673,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepSize: " << this->StepSize << "\n";
   os << indent << "CheckpointMemory: " << this->CheckpointMemory
      << (this->CheckpointMemory < 0.0 ? " (half the trace's size)\n" : " MiB\n");
+  os << indent << "InitialStateFile: " << this->InitialStateFile << "\n";
   os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio

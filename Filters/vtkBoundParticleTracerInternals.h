@@ -37,6 +37,7 @@
 #include "TracerParallel.h"
 #include "TracerResample.h"
 #include "TracerSaidOnce.h"
+#include "TracerState.h"
 #include "TracerSteppers.h"
 
 #include "vtkAlgorithm.h"
@@ -158,6 +159,7 @@ struct ResolvedTrace
   double elementSize = 0.0;
   std::size_t particlesPerElement = 1;
   double traceBytes = 0.0;    ///< the whole trace's size (bp::traceBytes)
+  double startMaxSpeed = 0.0; ///< the field's largest speed at the start (bp::FieldFacts)
   bp::RangeFacts rangeFacts; ///< for the GPU display's output
 };
 
@@ -286,6 +288,10 @@ public:
   /// The second output after show(): the FTLE map of a lattice release
   /// (TracerFtleMap.cxx; collective in a distributed run).
   void showFtleMap(vtkImageData* image);
+  /// The third output, when asked for: the state at the committed step
+  /// boundary (TracerResume.cxx; collective in a distributed run: process
+  /// 0's holds every element).
+  Pass showState(vtkPolyData* out);
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
@@ -382,9 +388,26 @@ private:
   /// The element template: the built-in shape or the template input.
   std::string elementTemplate(
     const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
-  /// Points the stepper at the start of a new trace, its checkpoints
-  /// spaced within the config's budget.
+  /// Points the stepper at the start of a new trace, or at the Initial
+  /// State it resumed, its checkpoints spaced within the config's budget.
   void startTrace(const Config& config);
+
+  // Saving and resuming (TracerResume.cxx).
+  /// After the stepper placed its elements: with an Initial State File and a
+  /// target at or after its time, the state's elements instead, once it is
+  /// checked against this trace (agreed between processes). Empty on success.
+  std::string resumeFromState(
+    const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// What of `state` differs from this trace, said by name; empty when nothing.
+  std::string stateMismatch(
+    const bp::TraceState& state, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// The facts of the field a state must match (the grid, its offset, the
+  /// largest speed at the start, the time direction), as named values.
+  std::vector<bp::NamedValue> fieldValues();
+  bpvtk::InitialState Initial; ///< the Initial State File as last read
+  /// The state resumed by the last replay: its step count (-1: none) and time.
+  long long ResumedSteps = -1;
+  double ResumedTime = 0.0;
   /// Every how many steps a new trace keeps a checkpoint (Checkpoints.h):
   /// Checkpoint Memory (automatic: half the trace's own size), at most half
   /// of what this process can allocate, over the whole system's state; the
