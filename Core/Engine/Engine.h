@@ -40,8 +40,9 @@
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
  * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineLinked.cpp
  * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
- * (distributed runs) and Engine.cpp (trails, step 4's normals, and advance()
- * along the step schedule).
+ * (distributed runs), EngineSaveState.cpp (a state to save and resume; the
+ * state's checks are in EngineState.cpp) and Engine.cpp (trails, step 4's
+ * normals, and advance() along the step schedule).
  */
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
@@ -236,6 +237,10 @@ public:
   /// A record's arrays (forEachElementArray's, by name and type), those of
   /// no component left out.
   std::vector<StateArray> stateLayout() const;
+  /// The same for a system of `shape` and `parameters`, without configuring
+  /// one (checkTraceState).
+  static std::vector<StateArray> stateLayout(
+    const ElementTemplate& shape, const Parameters& parameters);
   /// Every element's record, ids increasing, and the state's scalars (the
   /// trail ring's times and newest slot, the emitter box).
   EngineState saveState() const;
