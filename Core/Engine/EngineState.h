@@ -118,6 +118,17 @@ std::string firstDifference(
 std::uint64_t stateChecksum(const TraceState& state);
 
 /**
+ * What keeps the engine's state `state` from loading into an engine whose
+ * stateLayout() is `layout`, configured with `p`: another layout or record
+ * size, records that are not whole records, more elements than
+ * p.numberOfElements, element ids out of range, repeated or not increasing,
+ * a trail ring other than p.trailLength slots, an emitter box that is not
+ * finite. Empty when it can (Engine::loadState checks it first).
+ */
+std::string checkEngineState(
+  const EngineState& state, const std::vector<StateArray>& layout, const Parameters& p);
+
+/**
  * What keeps `state` from resuming on an engine configured with `shape` and
  * `p`: another EngineStateVersion, a record layout other than
  * Engine::stateLayout()'s, element ids out of range, repeated or not
