@@ -56,11 +56,15 @@ void askOthersAlike(vtkInformationVector* outputs, int port)
   }
 }
 
-void markStateNotGenerated(vtkInformation* request, vtkInformationVector* outputs)
+void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs)
 {
-  if (askedPort(request) != StatePort && outputs->GetNumberOfInformationObjects() > StatePort)
+  const bool state = askedPort(request) == StatePort;
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
   {
-    outputs->GetInformationObject(StatePort)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+    if ((port == StatePort) != state)
+    {
+      outputs->GetInformationObject(port)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+    }
   }
 }
 

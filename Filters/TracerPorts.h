@@ -7,12 +7,11 @@
  *
  * Output 0 holds the elements, output 1 the FTLE map of a lattice release
  * (TracerFtleMap.h), output 2 the trace's state (TracerState.h). One
- * execution fills them all: the port asked for gives the time and pieces,
- * and the others are asked alike, so that a consumer of another port at the
- * same time finds it up to date. The State output is filled only when it is
- * the port asked for (a writer's Save Data): every other execution marks it
- * not generated, so a later request for it executes again, and an update
- * of the elements pays nothing for it.
+ * execution fills the elements and the map: the port asked for gives the
+ * time and pieces, and the others are asked alike, so that a consumer of
+ * another port at the same time finds it up to date. The State output is
+ * filled only when it is the port asked for (markNotGenerated), so an
+ * update of the elements pays nothing for it.
  */
 #ifndef BoundParticles_TracerPorts_h
 #define BoundParticles_TracerPorts_h
@@ -42,9 +41,16 @@ void askOthersAlike(vtkInformationVector* outputs, int port);
 /// `other` asked for the time and pieces `asked` was asked for.
 void askAlike(vtkInformation* asked, vtkInformation* other);
 
-/// REQUEST_DATA_NOT_GENERATED: the State output is not generated unless it
-/// is the port asked for.
-void markStateNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
+/**
+ * REQUEST_DATA_NOT_GENERATED: an execution for the elements (or the map)
+ * leaves the State output not generated, so that a later request for it
+ * (a writer's) executes again; one for the State output fills it alone and
+ * leaves the others not generated (they keep what they hold). ParaView
+ * updates every port of a source it updates (vtkSMSourceProxy::
+ * UpdatePipeline), so the state is made then too: a copy of the engine's
+ * state, without a step.
+ */
+void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
 
 /**
  * The template (input 1) and seed (input 2) connections asked for whole on

@@ -127,8 +127,12 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(vtkPolyData* out)
   const bp::Engine* particles = stepper.particles();
   if (!particles || !stepper.committedState(state.engine))
   {
-    return Pass::fail("The State output holds the CPU engine's state: the GPU engine's stays in "
-                      "its display. Set Engine to CPU to save the trace's state.");
+    // Said when the file is read, not here: ParaView asks for every output
+    // of a source it updates, a writer or not.
+    bpvtk::writeStateNote("the GPU engine's state stays in its display: set Engine to CPU and "
+                          "save the State output again",
+      out);
+    return Pass();
   }
   state.time = stepper.cursor.committed;
   state.steps = stepper.cursor.steps;

@@ -409,14 +409,25 @@ std::string readStateFields(vtkFieldData* fields, bp::TraceState& state)
 }
 } // namespace
 
+void writeStateNote(const std::string& why, vtkPolyData* out)
+{
+  out->Initialize();
+  addStrings(out->GetFieldData(), "bpStateNote", { why });
+}
+
 std::string readStatePolyData(vtkPolyData* data, bp::TraceState& state)
 {
-  std::vector<std::string> format;
+  std::vector<std::string> format, note;
+  if (data && takeStrings(data->GetFieldData(), "bpStateNote", note) && note.size() == 1)
+  {
+    return "it holds no state: " + note[0];
+  }
   if (!data || !takeStrings(data->GetFieldData(), "bpStateFormat", format) || format.size() != 1 ||
     format[0] != FormatName)
   {
-    return "it is not a Bound Particles state (it has no bpStateFormat field array): save one "
-           "from the tracer's State output";
+    return "it is not a Bound Particles state (it has no bpStateFormat field array, or was saved "
+           "as ASCII, which cannot be read back whole): save the tracer's State output with Data "
+           "Mode Binary";
   }
   state = bp::TraceState();
   const std::string fieldError = readStateFields(data->GetFieldData(), state);

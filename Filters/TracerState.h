@@ -38,6 +38,9 @@ namespace bpvtk
 void writeStatePolyData(
   const bp::TraceState& state, const std::array<double, 3>& offset, vtkPolyData* out);
 
+/// In place of a state, why there is none (readStatePolyData says it).
+void writeStateNote(const std::string& why, vtkPolyData* out);
+
 /// The state `data` holds (as writeStatePolyData wrote it); empty on success,
 /// otherwise what is missing or wrong, its checksum included.
 std::string readStatePolyData(vtkPolyData* data, bp::TraceState& state);

@@ -432,11 +432,9 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
     // The engine as the elements' display asks (port 0), whichever port asks.
-    // A writer of the State output takes the CPU engine's (the GPU's stays in the display).
     vtkInformation* display = outputVector->GetInformationObject(0);
     I.decide(this->Config(), outInfo,
-      display->Has(GPU_WORK_QUEUE()) && port != bpvtk::StatePort ? display->Get(GPU_WORK_QUEUE())
-                                                                  : 0);
+      display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0, port == bpvtk::StatePort);
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -454,7 +452,7 @@ vtkTypeBool vtkBoundParticleTracer::ProcessRequest(
 {
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
   {
-    bpvtk::markStateNotGenerated(request, outputVector);
+    bpvtk::markNotGenerated(request, outputVector);
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
@@ -484,9 +482,10 @@ int vtkBoundParticleTracer::RequestData(
   vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-  vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
-  vtkImageData::GetData(outputVector->GetInformationObject(1))->Initialize();
-  vtkPolyData::GetData(outputVector->GetInformationObject(bpvtk::StatePort))->Initialize();
+  for (int port = 0; port < bpvtk::TracerPortCount; ++port)
+  {
+    vtkDataObject::GetData(outputVector, port)->Initialize();
+  }
   return 1;
 }
 
@@ -522,12 +521,15 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   using Pass = bpvtk::TracerPass;
   vtkBoundParticleTracerInternals& I = *this->Internals;
   const bpvtk::TracerConfig config = this->Config();
-  vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
+  // A request for the State output fills it alone (TracerPorts.h).
+  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, saving ? bpvtk::StatePort : 0);
   output->Initialize();
   vtkImageData* ftleMap = vtkImageData::GetData(outputVector->GetInformationObject(1));
-  ftleMap->Initialize();
-  vtkPolyData* stateOutput = vtkPolyData::GetData(outputVector, bpvtk::StatePort);
-  stateOutput->Initialize();
+  if (!saving)
+  {
+    ftleMap->Initialize();
+  }
   this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
@@ -574,21 +576,20 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   }
   I.finishPasses();
   request->Remove(SDDP::CONTINUE_EXECUTING());
-  const Pass shown = I.show(config, output);
-  if (shown.kind != Pass::Done)
+  // The state on the last step boundary reached (no short step shown), or
+  // the elements; a state that cannot be saved leaves the trace as it is.
+  const Pass shown = saving ? I.showState(output) : I.show(config, output);
+  if (shown.kind != Pass::Done && !saving)
   {
     return end(shown);
   }
-  I.showFtleMap(ftleMap);
-  if (bpvtk::askedPort(request) == bpvtk::StatePort)
+  if (shown.kind != Pass::Done)
   {
-    // A state that cannot be saved leaves the trace as it is.
-    const Pass saved = I.showState(stateOutput);
-    if (saved.kind != Pass::Done)
-    {
-      vtkErrorMacro(<< saved.message);
-      stateOutput->Initialize();
-    }
+    vtkErrorMacro(<< shown.message);
+  }
+  else if (!saving)
+  {
+    I.showFtleMap(ftleMap);
   }
   return 1;
 }

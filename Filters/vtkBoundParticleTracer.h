@@ -534,7 +534,7 @@ protected:
   /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
   /// port 2: the trace's state (vtkPolyData, filled only when it is asked for).
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  /// Marks the State output not generated unless it is asked for (TracerPorts.h).
+  /// The State output filled only when it is asked for (bpvtk::markNotGenerated).
   vtkTypeBool ProcessRequest(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

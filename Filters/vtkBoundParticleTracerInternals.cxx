@@ -103,9 +103,10 @@ void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
 }
 
 void vtkBoundParticleTracerInternals::decide(
-  const Config& config, vtkInformation* outInfo, int gpuQueue)
+  const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
+  this->Update.forState = forState;
   this->Steppers.select(config.engine, gpuQueue, this->Layout);
   // In situ the present step is the time shown, whatever time is asked for.
   const double target = this->Plan.streaming()
@@ -166,9 +167,12 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   bp::Stepper& stepper = this->stepper();
   const bool replay = this->Update.decision.replay;
   this->ReplayPending = replay;
-  this->Update.stepsInLastUpdate = 0;
+  if (!this->Update.forState)
+  {
+    this->Update.stepsInLastUpdate = 0;
+    this->Update.lastUpdateReplayed = replay;
+  }
   this->Exchange.migrated = 0;
-  this->Update.lastUpdateReplayed = replay;
   this->Held.readThisUpdate = false;
   if (this->Update.decision.resume >= 0)
   {
@@ -240,7 +244,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   bool aborted = false;
   auto keepGoing = [&](double t)
   {
-    ++this->Update.stepsInLastUpdate;
+    this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
     this->Update.progressAt = t;
     this->Owner->UpdateProgress(this->progress());
     // In parallel every process must take every step (each exchanges
@@ -353,7 +357,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     stepper.save();
     stepper.step(committed, target - committed);
     stepper.cursor.showsPartialStep = true;
-    ++this->Update.stepsInLastUpdate;
+    this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
   }
   this->gatherExchange();
   const bp::Engine* particles = stepper.particles();

@@ -131,6 +131,7 @@ struct UpdatePass
   double progressAt = 0.0;        ///< where it stands
   vtkIdType stepsInLastUpdate = 0;
   bool lastUpdateReplayed = false;
+  bool forState = false; ///< an update for the State output (its steps are not reported)
 };
 
 /// In situ: the times given since the trace started (TracerInSitu.cxx),
@@ -256,8 +257,10 @@ public:
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
-  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none).
-  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue);
+  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none);
+  /// `forState`: the request is the State output's (the elements' report of
+  /// what the last update did is kept).
+  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState = false);
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
   void decideInSitu(double target);

@@ -103,6 +103,10 @@ std::string valueText(double v)
   {
     return v > 0 ? "inf" : "-inf";
   }
+  if (v == std::floor(v) && std::abs(v) < 9.0e15)
+  {
+    return std::to_string((long long)v); // a count or a whole number, never "1.2e+02"
+  }
   const bool isFloat =
     std::abs(v) <= double(std::numeric_limits<float>::max()) && sameBits(double(float(v)), v);
   std::string text;

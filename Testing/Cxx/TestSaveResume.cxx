@@ -8,6 +8,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkPassThrough.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -58,13 +59,15 @@ vtkSmartPointer<vtkAnalyticFlowSource> gyre()
   return source;
 }
 
-/// The tracer's State output at time t.
-vtkPolyData* stateAt(vtkBoundParticleTracer* tracer, double t)
+/// The tracer's State output at time t, as a consumer (a writer) reads it.
+vtkSmartPointer<vtkPolyData> stateAt(vtkBoundParticleTracer* tracer, double t)
 {
-  tracer->UpdateInformation();
-  tracer->GetOutputInformation(2)->Set(SDDP::UPDATE_TIME_STEP(), t);
-  tracer->Update(2);
-  return vtkPolyData::SafeDownCast(tracer->GetOutputDataObject(2));
+  vtkNew<vtkPassThrough> reader;
+  reader->SetInputConnection(tracer->GetOutputPort(2));
+  reader->UpdateTimeStep(t);
+  auto state = vtkSmartPointer<vtkPolyData>::New();
+  state->ShallowCopy(reader->GetOutputDataObject(0));
+  return state;
 }
 
 /// The state at time t written to `path` (Binary, or ASCII).
@@ -179,22 +182,27 @@ TEST(SaveResume, TimesBeforeTheStateAreTracedFromTheStartAndLaterOnesFromIt)
   }
 }
 
-TEST(SaveResume, TheStateOutputIsFilledOnlyWhenAskedFor)
+TEST(SaveResume, TheStateOutputIsFilledOnlyWhenAskedForAndLeavesTheElementsAsTheyAre)
 {
   auto source = gyre();
   auto tracer = gyreTracer(source);
-  at(tracer, 2.0);
-  vtkPolyData* state = vtkPolyData::SafeDownCast(tracer->GetOutputDataObject(2));
-  EXPECT_EQ(state->GetNumberOfCells(), 0) << "an update of the elements leaves it empty";
-  state = stateAt(tracer, 2.0);
+  const std::vector<float> shown = pointsOf(at(tracer, 2.0));
+  EXPECT_EQ(tracer->GetOutputDataObject(2)->GetNumberOfElements(vtkDataObject::CELL), 0)
+    << "an update of the elements leaves it empty";
+  const vtkIdType steps = tracer->GetStepsInLastUpdate();
+  vtkSmartPointer<vtkPolyData> state = stateAt(tracer, 3.0);
   EXPECT_EQ(state->GetNumberOfCells(), 120) << "one poly-vertex per element";
   EXPECT_EQ(state->GetNumberOfPoints(), 120 * 8);
   EXPECT_NE(state->GetCellData()->GetArray("bpPositions"), nullptr);
   EXPECT_NE(state->GetFieldData()->GetAbstractArray("bpChecksum"), nullptr);
-  // Asked again after the elements moved on: filled again, at its own time.
-  at(tracer, 3.0);
-  state = stateAt(tracer, 3.0);
-  EXPECT_EQ(state->GetNumberOfCells(), 120);
+  EXPECT_EQ(pointsOf(tracer->GetOutput()), shown) << "the elements' output is left as it was";
+  EXPECT_EQ(tracer->GetStepsInLastUpdate(), steps) << "and so is its report";
+  // The elements then go on from where the state was taken, as a fresh trace.
+  const std::vector<float> later = pointsOf(at(tracer, 3.5));
+  EXPECT_DOUBLE_EQ(
+    tracer->GetOutputDataObject(2)->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 3.0)
+    << "the State output still holds the state it was asked for, stamped with its time";
+  EXPECT_EQ(later, pointsOf(at(gyreTracer(source), 3.5)));
 }
 
 TEST(SaveResume, AStateThatDoesNotFitIsSaidAndNothingIsLost)
