@@ -534,9 +534,15 @@ protected:
   /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
   /// port 2: the trace's state (vtkPolyData, filled only when it is asked for).
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  /// The State output filled only when it is asked for (bpvtk::markNotGenerated).
+  ///@{
+  /// The State output: filled only when it is asked for
+  /// (bpvtk::markNotGenerated), with the time last shown, and out of date
+  /// once another time is shown.
   vtkTypeBool ProcessRequest(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputePipelineMTime(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    int port, vtkMTimeType* mtime) override;
+  ///@}
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

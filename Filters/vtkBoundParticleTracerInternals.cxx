@@ -75,6 +75,8 @@ void vtkBoundParticleTracerInternals::invalidate()
   ++this->Configuration;
   this->Said.forget();
   this->Steppers.invalidate();
+  this->Shown.valid = false;
+  this->Shown.stamp.Modified();
 }
 
 void vtkBoundParticleTracerInternals::clear()
@@ -108,9 +110,11 @@ void vtkBoundParticleTracerInternals::decide(
   using SDDP = vtkStreamingDemandDrivenPipeline;
   this->Update.forState = forState;
   this->Steppers.select(config.engine, gpuQueue, this->Layout);
-  // In situ the present step is the time shown, whatever time is asked for.
-  const double target = this->Plan.streaming()
-    ? this->Plan.outputTimes().back()
+  // In situ the present step is the time shown, whatever time is asked for;
+  // the State output saves the time shown.
+  const double target = this->Plan.streaming() ? this->Plan.outputTimes().back()
+    : forState && this->Shown.valid
+    ? this->Shown.target
     : this->Plan.targetOf(
         outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   const bp::Stepper& stepper = this->stepper();
@@ -386,6 +390,9 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     this->handToDisplay(config, output);
   }
   this->addSettingsFieldData(output);
+  this->Shown.valid = true;
+  this->Shown.target = target;
+  this->Shown.stamp.Modified();
   return Pass();
 }
 

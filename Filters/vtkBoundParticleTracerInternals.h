@@ -44,6 +44,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h"
 #include "vtkType.h"
 
 #include <algorithm>
@@ -185,6 +186,9 @@ public:
   /// The times offered to the animation: the data's (TracePlan::offeredTimes).
   const std::vector<double>& outputTimes() const { return this->Plan.offeredTimes(); }
   vtkIdType stepsInLastUpdate() const { return this->Update.stepsInLastUpdate; }
+  /// When the elements were last shown (or the trace forgotten): the State
+  /// output, which saves the time shown, is out of date since.
+  vtkMTimeType shownMTime() const { return this->Shown.stamp.GetMTime(); }
   bool lastUpdateReplayed() const { return this->Update.lastUpdateReplayed; }
   /// Steps between two checkpoints of the trace; 0: none kept.
   long long checkpointEvery() const { return this->Spacing.every; }
@@ -258,8 +262,11 @@ public:
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
   /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none);
-  /// `forState`: the request is the State output's (the elements' report of
-  /// what the last update did is kept).
+  /// `forState`: the request is the State output's, which saves the trace
+  /// at the time the elements were last shown (a writer asks for the time
+  /// the pipeline last asked of that output: in the GUI, when it was applied),
+  /// or, with none shown, at the time asked for; the elements' report of what
+  /// the last update did is kept.
   void decide(const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState = false);
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
@@ -321,6 +328,14 @@ private:
   bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
+  /// The time the elements were last shown at (trace time), which the State
+  /// output saves, and when it was shown.
+  struct ShownTime
+  {
+    bool valid = false;
+    double target = 0.0;
+    vtkTimeStamp stamp;
+  } Shown;
 
   vtkAlgorithm* const Owner;  ///< for messages, progress and abort only
   bool ReplayPending = false; ///< this update replays from the start (startTrace clears it)

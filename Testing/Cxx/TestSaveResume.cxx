@@ -190,7 +190,15 @@ TEST(SaveResume, TheStateOutputIsFilledOnlyWhenAskedForAndLeavesTheElementsAsThe
   EXPECT_EQ(tracer->GetOutputDataObject(2)->GetNumberOfElements(vtkDataObject::CELL), 0)
     << "an update of the elements leaves it empty";
   const vtkIdType steps = tracer->GetStepsInLastUpdate();
+  // The trace at the time shown (2), whatever time its reader asks for (a
+  // writer asks for the time last asked of that output: in the GUI, the
+  // time the tracer was applied at).
   vtkSmartPointer<vtkPolyData> state = stateAt(tracer, 3.0);
+  EXPECT_DOUBLE_EQ(state->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 2.0);
+  vtkDataArray* stateTime = state->GetFieldData()->GetArray("bpTime");
+  ASSERT_NE(stateTime, nullptr);
+  EXPECT_LE(stateTime->GetTuple1(0), 2.0) << "the last step boundary at or before it";
+  EXPECT_GT(stateTime->GetTuple1(0), 1.5);
   EXPECT_EQ(state->GetNumberOfCells(), 120) << "one poly-vertex per element";
   EXPECT_EQ(state->GetNumberOfPoints(), 120 * 8);
   EXPECT_NE(state->GetCellData()->GetArray("bpPositions"), nullptr);
@@ -199,9 +207,9 @@ TEST(SaveResume, TheStateOutputIsFilledOnlyWhenAskedForAndLeavesTheElementsAsThe
   EXPECT_EQ(tracer->GetStepsInLastUpdate(), steps) << "and so is its report";
   // The elements then go on from where the state was taken, as a fresh trace.
   const std::vector<float> later = pointsOf(at(tracer, 3.5));
-  EXPECT_DOUBLE_EQ(
-    tracer->GetOutputDataObject(2)->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 3.0)
-    << "the State output still holds the state it was asked for, stamped with its time";
+  EXPECT_DOUBLE_EQ(stateAt(tracer, 0.0)->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()),
+    3.5)
+    << "once another time is shown, the state is that time's";
   EXPECT_EQ(later, pointsOf(at(gyreTracer(source), 3.5)));
 }
 
