@@ -10,8 +10,10 @@
  * execution fills the elements and the map: the port asked for gives the
  * time and pieces, and the others are asked alike, so that a consumer of
  * another port at the same time finds it up to date. The State output is
- * filled only when it is the port asked for (markNotGenerated), so an
- * update of the elements pays nothing for it.
+ * filled only when it is the port asked for (markNotGenerated): playing
+ * the animation pays nothing for it, while ParaView's Apply and a script's
+ * UpdatePipeline, which ask for every port, pay a copy of the engine's
+ * state (and under MPI its gather to process 0), with no step.
  */
 #ifndef BoundParticles_TracerPorts_h
 #define BoundParticles_TracerPorts_h

@@ -11,9 +11,26 @@
 #include "vtkInformation.h"
 #include "vtkPolyData.h"
 
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 
-std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues()
+namespace
+{
+/// A 32-bit FNV-1a hash of `bytes`, exact in a double (a named value).
+double hash32(const void* bytes, std::size_t size)
+{
+  std::uint32_t h = 2166136261u;
+  const auto* b = static_cast<const unsigned char*>(bytes);
+  for (std::size_t k = 0; k < size; ++k)
+  {
+    h = (h ^ b[k]) * 16777619u;
+  }
+  return double(h);
+}
+} // namespace
+
+std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues(const Config& config)
 {
   std::vector<bp::NamedValue> values;
   const char* axes[3] = { "x", "y", "z" };
@@ -30,12 +47,25 @@ std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues()
     values.push_back(
       { std::string("bounds ") + axes[a] + " to", bounds[2 * a + 1] + this->Held.offset[a] });
   }
+  // What the field is beyond its grid: which arrays, its time steps (the
+  // schedule's breaks), its largest speed at the start. Its values after
+  // the start are not compared.
+  values.push_back({ "Vectors array (hash)",
+    hash32(config.vectors.name.data(), config.vectors.name.size()) + config.vectors.association });
+  values.push_back({ "Release Weights array (hash)",
+    hash32(config.releaseWeights.data(), config.releaseWeights.size()) });
+  const std::vector<double>& times = this->Plan.inputTimes();
+  values.push_back({ "time steps", double(times.size()) });
+  values.push_back({ "time steps (hash)", hash32(times.data(), times.size() * sizeof(double)) });
   values.push_back({ "largest speed at the start", this->Resolved.startMaxSpeed });
   values.push_back({ "Time Direction (0 Forward, 1 Backward)", double(this->Plan.direction()) });
+  // Pieces trace a little differently from a whole (test_parallel.py's
+  // tolerance): the same number of processes goes on bit for bit.
+  values.push_back({ "processes", double(this->Layout.Pieces) });
   return values;
 }
 
-std::string vtkBoundParticleTracerInternals::stateMismatch(
+std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
   const bp::TraceState& state, const bp::ElementTemplate& shape, const bp::Parameters& p)
 {
   // The version first: another version's values may differ in name too.
@@ -43,7 +73,8 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(
   {
     return bp::checkTraceState(state, shape, p);
   }
-  std::string difference = bp::firstDifference(state.field, this->fieldValues(), "the field's");
+  std::string difference =
+    bp::firstDifference(state.field, this->fieldValues(config), "the field's");
   if (difference.empty())
   {
     difference = bp::firstDifference(state.shape, bp::templateValues(shape), "the template's");
@@ -57,43 +88,78 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(
   {
     std::ostringstream text;
     text.precision(17);
-    text << "its trace started at t = "
-         << bp::traceTime(this->Plan.direction(), state.scheduleStart) << " with steps of "
-         << state.dt << "; this one starts at t = " << this->startTime() << " with steps of "
-         << this->Resolved.dt;
+    text << "its trace started at t = " << bp::traceTime(this->Plan.direction(), state.scheduleStart)
+         << " with steps of " << state.dt << "; this one starts at t = " << this->startTime()
+         << " with steps of " << this->Resolved.dt;
     difference = text.str();
   }
   // Then the records themselves (ids, layout, trail ring).
   return difference.empty() ? bp::checkTraceState(state, shape, p) : difference;
 }
 
+bool vtkBoundParticleTracerInternals::resumesFromState(const Config& config, double from)
+{
+  if (config.initialStateFile.empty())
+  {
+    this->Initial = bpvtk::InitialState(); // its memory back
+    return false;
+  }
+  this->Initial.take(config.initialStateFile);
+  // A state that cannot be read, or lies past the trace's times, is said by
+  // the replay; one whose time the work reaches and has not yet passed is
+  // gone on from.
+  const double eps = this->Plan.epsilon();
+  const double t = this->Initial.state.time;
+  return this->Initial.error.empty() && from < t - eps && this->target() >= t - eps;
+}
+
 std::string vtkBoundParticleTracerInternals::resumeFromState(
   const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p)
 {
   this->ResumedSteps = -1;
-  if (config.initialStateFile.empty())
+  const bool distributed = this->Layout.distributed();
+  // Every branch below is taken alike on every process: what each read is
+  // agreed on first. A file that cannot be read, or lies past this trace's
+  // times, is said whatever time is asked for.
+  bool resumes = this->resumesFromState(config, this->Plan.startTime());
+  resumes = resumes || !this->Initial.error.empty() ||
+    (!config.initialStateFile.empty() && !this->Plan.outputTimes().empty() &&
+      this->Initial.state.time > this->Plan.outputTimes().back() + this->Plan.epsilon());
+  if (!(distributed ? this->Layout.globalMax(resumes ? 1.0 : 0.0) > 0.0 : resumes))
   {
     return std::string();
   }
-  this->Initial.take(config.initialStateFile);
+  const std::string named = "Initial State File '" + config.initialStateFile + "'";
   const bp::TraceState& state = this->Initial.state;
   std::string error = this->Initial.error;
-  if (error.empty() && this->target() < state.time - this->Plan.epsilon())
+  const std::vector<double>& times = this->Plan.outputTimes();
+  if (error.empty() && !times.empty() && state.time > times.back() + this->Plan.epsilon())
   {
-    // Before the state's time: traced from the start, as without one. Every
-    // process reads the same file and decides alike.
-    return std::string();
+    error = named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), state.time)) +
+      " lies past this trace's times: it was saved by another trace.";
   }
-  if (error.empty())
+  if (distributed)
   {
-    const std::string difference = this->stateMismatch(state, shape, p);
-    if (!difference.empty())
+    error = this->Layout.agree(error);
+    if (error.empty() && this->Layout.globalMax(state.time) != -this->Layout.globalMax(-state.time))
     {
-      error = "Initial State File '" + config.initialStateFile +
-        "' was saved by a trace that differs from this one: " + difference +
-        ". Set the tracer and its input as they were when it was saved, or clear Initial "
-        "State File to trace from the start.";
+      error = named + ": the processes read different states (is the file the same for all?).";
     }
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (this->target() < state.time - this->Plan.epsilon())
+  {
+    return std::string(); // before the state's time: traced from the start
+  }
+  std::string difference = this->stateMismatch(config, state, shape, p);
+  if (!difference.empty())
+  {
+    error = named + " was saved by a trace that differs from this one: " + difference +
+      ". Set the tracer and its input as they were when it was saved, or clear Initial State "
+      "File to trace from the start.";
   }
   if (error.empty() && !this->stepper().particles())
   {
@@ -103,15 +169,9 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   if (error.empty())
   {
     const std::string refused = this->stepper().loadState(state.engine);
-    if (!refused.empty())
-    {
-      error = "Initial State File '" + config.initialStateFile + "': " + refused + ".";
-    }
+    error = refused.empty() ? refused : named + ": " + refused + ".";
   }
-  if (this->Layout.distributed())
-  {
-    error = this->Layout.agree(error);
-  }
+  error = distributed ? this->Layout.agree(error) : error;
   if (error.empty())
   {
     this->ResumedSteps = state.steps;
@@ -120,7 +180,8 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   return error;
 }
 
-bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(vtkPolyData* out)
+bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
+  const Config& config, vtkPolyData* out)
 {
   bp::Stepper& stepper = this->stepper();
   bp::TraceState state;
@@ -140,14 +201,19 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(vtkPolyData* out)
   state.dt = this->Schedule->dt();
   state.parameters = bp::parameterValues(this->Resolved.parameters);
   state.shape = bp::templateValues(particles->shape());
-  state.field = this->fieldValues();
+  state.field = this->fieldValues(config);
   if (this->Layout.distributed())
   {
-    const std::string error =
-      this->Layout.agree(bpvtk::gatherStateElements(this->Layout.Controller, state.engine));
+    // Process 0's piece holds every element; the others hold none (and no
+    // field data, which a reader of the pieces would take as well).
+    const std::string error = bpvtk::gatherStateElements(this->Layout.Controller, state.engine);
     if (!error.empty())
     {
       return Pass::fail(error);
+    }
+    if (this->Layout.Piece != 0)
+    {
+      return Pass();
     }
   }
   bpvtk::writeStatePolyData(state, this->Held.offset, out);

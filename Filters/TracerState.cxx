@@ -4,6 +4,7 @@
 #include "TracerState.h"
 
 #include "Memory.h"
+#include "TracerParallel.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -25,6 +26,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <numeric>
@@ -382,12 +384,20 @@ std::string readStateFields(vtkFieldData* fields, bp::TraceState& state)
   {
     return "its record layout (bpLayout) is not one this plugin wrote";
   }
-  const auto whole = [](double v, double most)
-  { return v >= 0.0 && v <= most && v == double((long long)v); };
-  if (!whole(version[0], 4294967295.0) || !whole(steps[0], 9.0e15) ||
-    !(newest[0] >= -1.0 && newest[0] <= double(bp::MaxTrailLength)))
+  const auto whole = [](double v, double least, double most)
+  { return v >= least && v <= most && v == std::floor(v); };
+  if (!whole(version[0], 0.0, 4294967295.0) || !whole(steps[0], 0.0, 9.0e15) ||
+    !whole(newest[0], -1.0, double(bp::MaxTrailLength)))
   {
     return "its version, step count or trail slot is not a count";
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    // Checked as doubles: float() of one beyond float's range is undefined.
+    if (!(std::abs(emitterMin[k]) <= 3.0e38 && std::abs(emitterMax[k]) <= 3.0e38))
+    {
+      return "its emitter box is not finite";
+    }
   }
   state.version = std::uint32_t(version[0]);
   state.time = time[0];
@@ -547,6 +557,21 @@ std::string gatherStateElements(vtkMultiProcessController* controller, bp::Engin
   {
     offsets[std::size_t(p)] = total;
     total += lengths[std::size_t(p)];
+  }
+  // Process 0 holds them all, sorted once more, then as arrays: refused
+  // alike on every process where that cannot be had, before any is sent.
+  std::string error;
+  if (me == 0)
+  {
+    error = total > vtkIdType(0x7fffffff) // the communicator's counts are int
+      ? "the state's " + std::to_string(total) + " words are more than one process can gather"
+      : bp::checkAllocatable(12.0 * double(total), "the whole state on process 0");
+  }
+  error = agreeOnError(controller, error);
+  if (!error.empty())
+  {
+    return "The State output cannot be saved: " + error +
+      ". Save fewer elements, or trace on fewer processes.";
   }
   std::vector<std::uint32_t> all(me == 0 ? std::size_t(total) : std::size_t(0));
   // As unsigned int, which vtkCommunicator sends (32 bits on every platform we build for).

@@ -342,6 +342,17 @@ vtkTypeBool vtkBoundParticleTracer::ProcessRequest(
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
   {
     bpvtk::markNotGenerated(request, outputVector);
+    // Set before the executive reports 0: a state pass follows the elements'
+    // update ParaView just ran, whose progress stays at its end; a new
+    // update starts at 0 (a later pass of one holds the bar where it stands).
+    if (bpvtk::askedPort(request) == bpvtk::StatePort)
+    {
+      this->SetProgressShiftScale(1.0, 0.0);
+    }
+    else if (!this->Internals->continuing())
+    {
+      this->SetProgressShiftScale(0.0, 1.0);
+    }
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
@@ -385,9 +396,13 @@ int vtkBoundParticleTracer::RequestData(
   vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
   for (int port = 0; port < bpvtk::TracerPortCount; ++port)
   {
-    vtkDataObject::GetData(outputVector, port)->Initialize();
+    if ((port == bpvtk::StatePort) == saving) // a state pass leaves the others as they are
+    {
+      vtkDataObject::GetData(outputVector, port)->Initialize();
+    }
   }
   return 1;
 }
@@ -404,7 +419,7 @@ int vtkBoundParticleTracer::EndUpdatePass(
     request->Set(SDDP::CONTINUE_EXECUTING(), 1);
     // The executive reports 1 at this pass's end and 0 at the next one's
     // start: hold the bar where the update stands until steps move it.
-    this->SetProgressShiftScale(I.progress(), 0.0);
+    this->SetProgressShiftScale(I.forState() ? 1.0 : I.progress(), 0.0);
     return 1;
   }
   if (pass.kind != Pass::Aborted)
@@ -432,8 +447,8 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   if (!saving)
   {
     ftleMap->Initialize();
+    this->SetProgressShiftScale(0.0, 1.0);
   }
-  this->SetProgressShiftScale(0.0, 1.0);
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
   // The time line's warnings of an update whose Vectors is still not chosen.
@@ -446,6 +461,11 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   {
     // Asked for a piece of several with no process per piece: piece 0 holds
     // the whole trace.
+    return 1;
+  }
+  if (saving && !I.stepper().particles())
+  {
+    I.showState(config, output); // the GPU's state stays in its display: a note
     return 1;
   }
   if (!I.continuing())
@@ -481,7 +501,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   request->Remove(SDDP::CONTINUE_EXECUTING());
   // The state on the last step boundary reached (no short step shown), or
   // the elements; a state that cannot be saved leaves the trace as it is.
-  const Pass shown = saving ? I.showState(output) : I.show(config, output);
+  const Pass shown = saving ? I.showState(config, output) : I.show(config, output);
   if (shown.kind != Pass::Done && !saving)
   {
     return end(shown);

@@ -125,6 +125,17 @@ void vtkBoundParticleTracerInternals::decide(
     this->decideInSitu(target);
     return;
   }
+  bp::TracePlan::Update& u = this->Update.decision;
+  if (!u.replay && !this->Layout.distributed() && this->resumesFromState(config, u.from))
+  {
+    // An Initial State this trace has not used, and the work would pass its
+    // time: it is gone on from instead (a replay loads it). Not under MPI,
+    // where a process that read another file would part from the others; a
+    // replay there uses it.
+    u.replay = true;
+    u.resume = -1;
+    u.from = this->Plan.startTime();
+  }
   this->Held.requestIndex =
     this->Plan.firstRequest(this->Update.decision, this->Held.cache, this->Held.lastRequested);
 }

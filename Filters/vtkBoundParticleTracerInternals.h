@@ -301,7 +301,9 @@ public:
   /// The third output, when asked for: the state at the committed step
   /// boundary (TracerResume.cxx; collective in a distributed run: process
   /// 0's holds every element).
-  Pass showState(vtkPolyData* out);
+  Pass showState(const Config& config, vtkPolyData* out);
+  /// An update for the State output (decide's `forState`).
+  bool forState() const { return this->Update.forState; }
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
@@ -416,12 +418,16 @@ private:
   /// checked against this trace (agreed between processes). Empty on success.
   std::string resumeFromState(
     const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// Whether work that starts at `from` (trace time) reaches the Initial
+  /// State's time without passing it: the state, read, is then gone on from.
+  bool resumesFromState(const Config& config, double from);
   /// What of `state` differs from this trace, said by name; empty when nothing.
-  std::string stateMismatch(
-    const bp::TraceState& state, const bp::ElementTemplate& shape, const bp::Parameters& p);
-  /// The facts of the field a state must match (the grid, its offset, the
-  /// largest speed at the start, the time direction), as named values.
-  std::vector<bp::NamedValue> fieldValues();
+  std::string stateMismatch(const Config& config, const bp::TraceState& state,
+    const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// The facts of the field a state must match (the grid and its bounds,
+  /// the arrays traced, its time steps, its largest speed at the start, the
+  /// time direction, the number of processes), as named values.
+  std::vector<bp::NamedValue> fieldValues(const Config& config);
   bpvtk::InitialState Initial; ///< the Initial State File as last read
   /// The state resumed by the last replay: its step count (-1: none) and time.
   long long ResumedSteps = -1;

@@ -85,15 +85,9 @@ std::string Engine::loadState(const EngineState& state)
   {
     return error;
   }
-  const std::size_t elements = state.elementCount();
-  if (!this->Links.empty() && elements != this->Params.numberOfElements)
-  {
-    // A super set's links join elements by their ids, all held together.
-    return "the state holds " + std::to_string(elements) + " elements of a super set of " +
-      std::to_string(this->Params.numberOfElements) + ": a super set is saved whole";
-  }
-  // Every element held leaves; the state's come in, by exchange()'s merge
-  // (which takes a super set too: nothing is split here).
+  // Every element held leaves; the state's, all of them (checkEngineState),
+  // come in by exchange()'s merge (which takes a super set too: nothing is
+  // split here).
   error = this->merge(std::vector<std::uint8_t>(this->elementCount(), 1), state.records);
   if (!error.empty())
   {

@@ -390,7 +390,9 @@ std::string checkEngineState(
     return "the state's element records are cut short: " + std::to_string(state.records.size()) +
       " words are not whole records of " + std::to_string(words);
   }
-  if (state.elementCount() > p.numberOfElements)
+  // Whole: a state's elements are every element of its trace (a piece of a
+  // distributed run keeps its own after loading them all).
+  if (state.elementCount() != p.numberOfElements)
   {
     return "the state holds " + std::to_string(state.elementCount()) +
       " elements where this trace has " + std::to_string(p.numberOfElements);

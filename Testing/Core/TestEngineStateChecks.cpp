@@ -91,6 +91,9 @@ TEST(EngineState, BadStatesAreRefusedWithTheirReason)
   bp::Parameters fewer = good.p;
   fewer.numberOfElements = 10;
   expectRefused(good.state, good.shape, fewer, { "holds 20 elements", "this trace has 10" });
+  bp::Parameters more = good.p;
+  more.numberOfElements = 30; // a part of a state would lose the rest for good
+  expectRefused(good.state, good.shape, more, { "holds 20 elements", "this trace has 30" });
   // Records of another size, or cut short.
   expectRefused(changed([](bp::TraceState& s) { ++s.engine.recordWords; }), good.shape, good.p,
     { std::to_string(words + 1) + " words each", "this trace's are " + std::to_string(words) });
@@ -125,9 +128,9 @@ TEST(EngineState, BadStatesAreRefusedWithTheirReason)
     std::vector<std::function<void(bp::TraceState&)>>{ [](bp::TraceState& s) { s.time = NAN; },
       [](bp::TraceState& s) { s.steps = -1; }, [](bp::TraceState& s) { s.dt = INFINITY; } })
     expectRefused(changed(change), good.shape, good.p, { "time, step count or step" }, false);
-  // No element at all resumes (a trace may hold none in a piece's state).
+  // A state is every element of its trace: none, or some, would lose the rest.
   const bp::TraceState none = changed([](bp::TraceState& s) { s.engine.records.clear(); });
-  EXPECT_EQ(bp::checkTraceState(none, good.shape, good.p), "");
+  expectRefused(none, good.shape, good.p, { "holds 0 elements", "this trace has 20" });
 }
 
 TEST(EngineState, ASuperSetLoadsWholeAndIsStillNotSplitAmongPieces)
@@ -144,7 +147,7 @@ TEST(EngineState, ASuperSetLoadsWholeAndIsStillNotSplitAmongPieces)
   b.initialize(bp::serialRunner());
   bp::EngineState state = a.saveState();
   state.records.resize(state.records.size() - state.recordWords);
-  EXPECT_NE(b.loadState(state).find("a super set is saved whole"), std::string::npos);
+  EXPECT_NE(b.loadState(state).find("holds 11 elements"), std::string::npos);
   EXPECT_EQ(b.loadState(a.saveState()), "");
   EXPECT_NE(b.exchange(std::vector<std::uint8_t>(12, 0), {}).find("super set cannot be split"),
     std::string::npos);

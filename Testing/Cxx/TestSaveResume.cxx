@@ -178,8 +178,32 @@ TEST(SaveResume, TimesBeforeTheStateAreTracedFromTheStartAndLaterOnesFromIt)
   {
     vtkNew<vtkPolyData> expected;
     expected->DeepCopy(at(straight, t));
+    const vtkIdType straightSteps = straight->GetStepsInLastUpdate();
     expectSameOutput(at(resumed, t), expected, "t = " + std::to_string(t));
+    if (t == 3.0)
+    {
+      // From 1 to 3 the work passes the state's time: it goes on from the
+      // state (a replay that loads it), not from 1.
+      EXPECT_TRUE(resumed->GetLastUpdateReplayed());
+      EXPECT_LT(resumed->GetStepsInLastUpdate(), straightSteps / 2)
+        << "from 2.5, not from 1: " << straightSteps << " steps from 1";
+    }
   }
+}
+
+TEST(SaveResume, AStateOfALongerTraceIsSaid)
+{
+  auto source = gyre();
+  TempFile file("longer.vtp");
+  saveState(gyreTracer(source), 4.5, file.path);
+  auto fewerSteps = flow(bp::AnalyticFlow::DoubleGyre, 16);
+  fewerSteps->SetNumberOfTimeSteps(7); // to 3
+  auto shorter = gyreTracer(fewerSteps);
+  shorter->SetInitialStateFile(file.path.c_str());
+  ErrorLog errors(shorter);
+  EXPECT_EQ(at(shorter, 1.0)->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(errors.mentions("lies past this trace's times"))
+    << (errors.messages.empty() ? "(none)" : errors.messages.front());
 }
 
 TEST(SaveResume, TheStateOutputIsFilledOnlyWhenAskedForAndLeavesTheElementsAsTheyAre)
