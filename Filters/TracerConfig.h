@@ -51,6 +51,8 @@ struct TracerConfig
   /// Checkpoint Memory: MiB the trace's checkpoints may take (0: none kept;
   /// -1: half the trace's own size, bp::traceBytes).
   double checkpointMemory = -1.0;
+  /// Initial State File: a saved state to go on from (TracerState.h); empty for none.
+  std::string initialStateFile;
 
   bool linking() const { return this->trace.engine.linking != bp::Linking::None; }
   bool wants(bp::OutputArrayId id) const { return this->wanted[std::size_t(id)]; }

@@ -156,27 +156,6 @@ void announceFtleMap(vtkInformation* info, const TracerConfig& config, const Fie
   info->Set(vtkDataObject::SPACING(), spacing, 3);
 }
 
-void askAlike(vtkInformation* asked, vtkInformation* other)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  if (asked->Has(SDDP::UPDATE_TIME_STEP()))
-  {
-    other->Set(SDDP::UPDATE_TIME_STEP(), asked->Get(SDDP::UPDATE_TIME_STEP()));
-  }
-  else
-  {
-    other->Remove(SDDP::UPDATE_TIME_STEP());
-  }
-  for (vtkInformationIntegerKey* key : { SDDP::UPDATE_PIECE_NUMBER(),
-         SDDP::UPDATE_NUMBER_OF_PIECES(), SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS() })
-  {
-    if (asked->Has(key))
-    {
-      other->Set(key, asked->Get(key));
-    }
-  }
-}
-
 } // namespace bpvtk
 
 void vtkBoundParticleTracerInternals::showFtleMap(vtkImageData* image)

@@ -61,14 +61,6 @@ void announceFtleMap(vtkInformation* info, const TracerConfig& config, const Fie
 void fillFtleMap(vtkImageData* image, const bp::Engine& engine, const std::array<double, 3>& offset,
   vtkMultiProcessController* controller);
 
-/**
- * Sets `other` output's update time and pieces to those asked of `asked`:
- * one execution makes both outputs, and the executive stamps each with what
- * its port asked for, so the other port, asked alike, is stamped with the
- * time and piece it holds.
- */
-void askAlike(vtkInformation* asked, vtkInformation* other);
-
 } // namespace bpvtk
 
 #endif

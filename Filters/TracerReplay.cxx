@@ -61,6 +61,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   }
   this->Resolved.dt = resolved.dt;
   this->Resolved.elementSize = resolved.elementSize;
+  this->Resolved.startMaxSpeed = facts.maxSpeed;
   if (this->needMoreGhostLayers(resolved, facts))
   {
     this->Held.cache.clear();
@@ -310,6 +311,12 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::configureStepper(const Config
   this->Resolved.parameters = p;
   this->Resolved.particlesPerElement = shape.particleCount();
   this->Resolved.traceBytes = bp::traceBytes(shape, p);
+  // Then, with an Initial State File, its elements instead of those placed.
+  error = this->resumeFromState(config, shape, p);
+  if (!error.empty())
+  {
+    return Pass::fail(error);
+  }
   if (this->Steppers.queue())
   {
     // The display's output has no particles: it carries the ranges they span.
@@ -361,6 +368,17 @@ void vtkBoundParticleTracerInternals::startTrace(const Config& config)
   cursor.configuration = this->Configuration;
   cursor.producer = this->ProducerId;
   cursor.showsPartialStep = false;
+  if (this->ResumedSteps >= 0)
+  {
+    // The state resumed stands where its trace stood; kept as a checkpoint
+    // (when checkpoints are kept), so going back to it is a copy.
+    cursor.committed = this->ResumedTime;
+    cursor.steps = this->ResumedSteps;
+    if (this->Spacing.every > 0)
+    {
+      stepper.keepCheckpoint(cursor.steps, cursor.committed);
+    }
+  }
   this->ReplayPending = false;
 }
 

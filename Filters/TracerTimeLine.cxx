@@ -74,10 +74,11 @@ void TracerTimeLine::announce(vtkInformationVector* outputVector, const std::vec
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkInformation* mapInfo = outputVector->GetInformationObject(1);
-  // The FTLE map shares the time line; its extent is the lattice's, known
-  // from the settings and the field (empty for other releases).
-  for (vtkInformation* info : { outputVector->GetInformationObject(0), mapInfo })
+  // The FTLE map and the state share the time line; the map's extent is the
+  // lattice's, known from the settings and the field (empty for other releases).
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
   {
+    vtkInformation* info = outputVector->GetInformationObject(port);
     if (!times)
     {
       info->Remove(SDDP::TIME_STEPS());

@@ -10,6 +10,7 @@
 #include "TracerFtleMap.h"
 #include "TracerInSitu.h"
 #include "TracerInput.h"
+#include "TracerPorts.h"
 #include "TracerTimeLine.h"
 #include "vtkBoundParticleSeedType.h"
 #include "vtkBoundParticleTracerInternals.h"
@@ -17,6 +18,7 @@
 #include "vtkDataArraySelection.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -53,8 +55,9 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   , TimeLine(new bpvtk::TracerTimeLine(this))
 {
   this->SetNumberOfInputPorts(3);
-  // The elements, and the FTLE map of a lattice release (TracerFtleMap.h).
-  this->SetNumberOfOutputPorts(2);
+  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), and
+  // the trace's state to save (TracerPorts.h).
+  this->SetNumberOfOutputPorts(bpvtk::TracerPortCount);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
     // Off by default (the table's flags): the pose arrays (a fit per element a
@@ -119,116 +122,6 @@ const char* vtkBoundParticleTracer::GetUnitsFittingVectors()
 {
   this->TimeLine->checkHeldInput(this->TimeLineProperties());
   return this->TimeLine->fittingVectors().c_str();
-}
-
-bp::TraceSettings vtkBoundParticleTracer::Settings() const
-{
-  bp::TraceSettings s;
-  s.numberOfElements = this->NumberOfElements;
-  s.elementSize = this->ElementSize;
-  std::copy(this->EmitterCenter, this->EmitterCenter + 3, s.emitterCenter.begin());
-  std::copy(this->EmitterSize, this->EmitterSize + 3, s.emitterSize.begin());
-  std::copy(this->ElementRotation, this->ElementRotation + 3, s.rotationDegrees.begin());
-  s.lifetimeRange = { this->LifetimeRange[0], this->LifetimeRange[1] };
-  s.stepSize = this->StepSize;
-  s.stepInCellLengths = this->StepSizeUnit == bp::StepUnit::CellLength;
-  s.minimumReleaseSpeed = this->MinimumReleaseSpeed;
-  s.trailLength = this->Trails ? this->TrailLength : 0;
-  s.trailSpacing = this->TrailSpacing;
-  s.latticeSpacing = this->LatticeSpacing;
-  bp::Parameters& p = s.engine;
-  p.iterations = this->RestorationIterations;
-  p.relaxation = bp::settingAsFloat(this->RelaxationFactor);
-  p.shapeStiffness = bp::settingAsFloat(this->ShapeMatchingStiffness);
-  p.integrator = this->Integrator;
-  p.restoration = this->Restoration;
-  p.linearShapeMatching = this->ShapeMatchingMode == bp::ShapeFit::Linear;
-  p.linearBlend = bp::settingAsFloat(this->LinearShapeMatchingBeta);
-  p.orientation = this->ReleaseOrientation;
-  p.releasePattern = this->ReleasePattern;
-  p.anchor = this->Anchor;
-  p.inertia = this->Inertia;
-  p.linking = this->Linking;
-  p.resetWhen = this->ResetWhen;
-  p.latticeWidth = this->LatticeWidth;
-  p.linkStiffness = bp::settingAsFloat(this->LinkStiffness);
-  p.responseTime = bp::settingAsFloat(this->ResponseTime);
-  p.densityRatio = bp::settingAsFloat(this->DensityRatio);
-  std::transform(this->Gravity, this->Gravity + 3, p.gravity.begin(), bp::settingAsFloat);
-  s.timeDirection = this->TimeDirection;
-  if (this->ReleaseWindow)
-  {
-    // Backward in the trace's own time: its mirror (TimeDirection.h). A window
-    // that ends before it starts stays as given: validate() says so, in the data's times.
-    const auto window = this->ReleaseStart <= this->ReleaseStop
-      ? bp::traceWindow(this->TimeDirection, this->ReleaseStart, this->ReleaseStop)
-      : std::array<double, 2>{ this->ReleaseStart, this->ReleaseStop };
-    p.releaseStart = window[0];
-    p.releaseStop = window[1];
-  }
-  p.seed = std::uint32_t(this->Seed);
-  // The engine fits poses only for an output that shows them.
-  for (const bp::OutputArray& row : bp::outputArrays())
-  {
-    p.trackPoses =
-      p.trackPoses || (row.needsPoses && this->OutputArraySelection->ArrayIsEnabled(row.name) != 0);
-  }
-  return s;
-}
-
-bpvtk::TracerConfig vtkBoundParticleTracer::Config()
-{
-  bpvtk::TracerConfig c;
-  c.trace = this->Settings();
-  c.engine = this->Engine;
-  c.shape = this->ElementShape;
-  c.templateSprings = this->TemplateSprings;
-  std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
-  c.coloringAxis = this->ColoringAxis;
-  c.checkpointMemory = this->CheckpointMemory;
-  for (const bp::OutputArray& row : bp::outputArrays())
-  {
-    c.wanted[std::size_t(row.id)] = this->GetOutputArrayStatus(row.name) != 0 &&
-      (row.id != bp::OutputArrayId::Vorticity || this->ComputeVorticity);
-  }
-  // Trails fade by their poses' Age (the Bound Particles display's fade of
-  // the CPU output): it comes with them whatever Output Arrays holds.
-  c.wanted[std::size_t(bp::OutputArrayId::Age)] =
-    c.wanted[std::size_t(bp::OutputArrayId::Age)] || this->Trails;
-  c.seedType = this->SeedType;
-  c.templateInput = this->GetNumberOfInputConnections(1) > 0;
-  c.seedSource = this->GetNumberOfInputConnections(2) > 0;
-  vtkInformation* vectors = this->GetInputArrayInformation(0);
-  const char* name = vectors && vectors->Has(vtkDataObject::FIELD_NAME())
-    ? vectors->Get(vtkDataObject::FIELD_NAME())
-    : nullptr;
-  c.vectors.name = name ? name : "";
-  c.vectors.association = vectors && vectors->Has(vtkDataObject::FIELD_ASSOCIATION())
-    ? vectors->Get(vtkDataObject::FIELD_ASSOCIATION())
-    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  c.vectorsUnitsReason = this->TimeLine->reasonFor(c.vectors.name, c.vectors.association);
-  // Release Weights: input array 1, "None" (the panel's) or unset for none.
-  vtkInformation* weights = this->GetInputArrayInformation(1);
-  const char* weightsName = weights && weights->Has(vtkDataObject::FIELD_NAME())
-    ? weights->Get(vtkDataObject::FIELD_NAME())
-    : nullptr;
-  c.releaseWeights = weightsName && std::string(weightsName) != "None" ? weightsName : "";
-  c.releaseWeightsAssociation = weights && weights->Has(vtkDataObject::FIELD_ASSOCIATION())
-    ? weights->Get(vtkDataObject::FIELD_ASSOCIATION())
-    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  c.trace.weighted = !c.releaseWeights.empty();
-  return c;
-}
-
-bpvtk::TimeLineSettings vtkBoundParticleTracer::TimeLineProperties() const
-{
-  bpvtk::TimeLineSettings s;
-  s.duration = this->Duration;
-  s.framesPerInputStep = this->FramesPerInputStep;
-  s.numberOfTimeSteps = this->NumberOfTimeSteps;
-  s.stepSize = this->StepSize;
-  s.stepInCellLengths = this->StepSizeUnit == bp::StepUnit::CellLength;
-  return s;
 }
 
 bpvtk::TracerInputStep vtkBoundParticleTracer::InputStep(vtkInformationVector** inputVector)
@@ -413,18 +306,12 @@ bpvtk::FieldProbe vtkBoundParticleTracer::ProbeDelivered(
 int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
   vtkBoundParticleTracerInternals& I = *this->Internals;
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  // Both outputs come from one execution: the port asked for gives the time
-  // and pieces, and the other is asked alike (stamped with what it holds),
-  // so that its consumer at the same time finds it up to date.
-  const int port = request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
-      request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 1
-    ? 1
-    : 0;
+  // One execution fills every output (TracerPorts.h).
+  const int port = bpvtk::askedPort(request);
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
-  bpvtk::askAlike(outInfo, outputVector->GetInformationObject(1 - port));
+  bpvtk::askOthersAlike(outputVector, port);
 
   I.requestPieces(
     outInfo, inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
@@ -435,8 +322,8 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // so the state changes wait for RequestData, which takes this decision.
     // The engine as the elements' display asks (port 0), whichever port asks.
     vtkInformation* display = outputVector->GetInformationObject(0);
-    I.decide(
-      this->Config(), outInfo, display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0);
+    I.decide(this->Config(), outInfo,
+      display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0, port == bpvtk::StatePort);
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -444,38 +331,45 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   // every algorithm upstream run again (a reader re-read its time step and
   // ParaView gathered its data information, every frame).
   inInfo->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
-  // The template and the seed points are whole on every process: each
-  // process places elements anywhere, and a piece of them would differ.
-  for (int port = 1; port < 3; ++port)
-  {
-    if (vtkInformation* whole = inputVector[port]->GetInformationObject(0))
-    {
-      whole->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
-      whole->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
-      whole->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-      // An image's own whole extent (the field's would crop it).
-      if (whole->Has(SDDP::WHOLE_EXTENT()))
-      {
-        whole->Set(SDDP::UPDATE_EXTENT(), whole->Get(SDDP::WHOLE_EXTENT()), 6);
-      }
-      whole->Remove(vtkBoundParticleTracer::GPU_WORK_QUEUE());
-      if (!whole->Has(SDDP::TIME_STEPS()))
-      {
-        // The time copied from downstream means nothing to a source without
-        // time steps, but a new one would run it again on every update.
-        whole->Remove(SDDP::UPDATE_TIME_STEP());
-      }
-      else if (I.hasTimes())
-      {
-        // A time-varying template or seed source gives what it holds at the
-        // trace's start: the same trace whatever time was shown before
-        // (the time copied from downstream made a replay depend on it).
-        whole->Set(SDDP::UPDATE_TIME_STEP(), I.startTime());
-      }
-    }
-  }
+  bpvtk::requestWholeInputs(inputVector, I.hasTimes(), I.startTime());
   I.requestTimeStep(inInfo);
   return 1;
+}
+
+vtkTypeBool vtkBoundParticleTracer::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
+  {
+    bpvtk::markNotGenerated(request, outputVector);
+    // Set before the executive reports 0: a state pass follows the elements'
+    // update ParaView just ran, whose progress stays at its end; a new
+    // update starts at 0 (a later pass of one holds the bar where it stands).
+    if (bpvtk::askedPort(request) == bpvtk::StatePort)
+    {
+      this->SetProgressShiftScale(1.0, 0.0);
+    }
+    else if (!this->Internals->continuing())
+    {
+      this->SetProgressShiftScale(0.0, 1.0);
+    }
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int vtkBoundParticleTracer::ComputePipelineMTime(vtkInformation* request,
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector, int port,
+  vtkMTimeType* mtime)
+{
+  const int result =
+    this->Superclass::ComputePipelineMTime(request, inputVector, outputVector, port, mtime);
+  if (port == bpvtk::StatePort)
+  {
+    // The state saved is the time shown: out of date once another is shown.
+    *mtime = std::max(*mtime, this->Internals->shownMTime());
+  }
+  return result;
 }
 
 int vtkBoundParticleTracer::RequestData(
@@ -502,8 +396,14 @@ int vtkBoundParticleTracer::RequestData(
   vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-  vtkPolyData::GetData(outputVector->GetInformationObject(0))->Initialize();
-  vtkImageData::GetData(outputVector->GetInformationObject(1))->Initialize();
+  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
+  for (int port = 0; port < bpvtk::TracerPortCount; ++port)
+  {
+    if ((port == bpvtk::StatePort) == saving) // a state pass leaves the others as they are
+    {
+      vtkDataObject::GetData(outputVector, port)->Initialize();
+    }
+  }
   return 1;
 }
 
@@ -519,7 +419,7 @@ int vtkBoundParticleTracer::EndUpdatePass(
     request->Set(SDDP::CONTINUE_EXECUTING(), 1);
     // The executive reports 1 at this pass's end and 0 at the next one's
     // start: hold the bar where the update stands until steps move it.
-    this->SetProgressShiftScale(I.progress(), 0.0);
+    this->SetProgressShiftScale(I.forState() ? 1.0 : I.progress(), 0.0);
     return 1;
   }
   if (pass.kind != Pass::Aborted)
@@ -539,11 +439,16 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   using Pass = bpvtk::TracerPass;
   vtkBoundParticleTracerInternals& I = *this->Internals;
   const bpvtk::TracerConfig config = this->Config();
-  vtkPolyData* output = vtkPolyData::GetData(outputVector->GetInformationObject(0));
+  // A request for the State output fills it alone (TracerPorts.h).
+  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, saving ? bpvtk::StatePort : 0);
   output->Initialize();
   vtkImageData* ftleMap = vtkImageData::GetData(outputVector->GetInformationObject(1));
-  ftleMap->Initialize();
-  this->SetProgressShiftScale(0.0, 1.0);
+  if (!saving)
+  {
+    ftleMap->Initialize();
+    this->SetProgressShiftScale(0.0, 1.0);
+  }
 
   auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
   // The time line's warnings of an update whose Vectors is still not chosen.
@@ -556,6 +461,11 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   {
     // Asked for a piece of several with no process per piece: piece 0 holds
     // the whole trace.
+    return 1;
+  }
+  if (saving && !I.stepper().particles())
+  {
+    I.showState(config, output); // the GPU's state stays in its display: a note
     return 1;
   }
   if (!I.continuing())
@@ -589,12 +499,22 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   }
   I.finishPasses();
   request->Remove(SDDP::CONTINUE_EXECUTING());
-  const Pass shown = I.show(config, output);
-  if (shown.kind == Pass::Done)
+  // The state on the last step boundary reached (no short step shown), or
+  // the elements; a state that cannot be saved leaves the trace as it is.
+  const Pass shown = saving ? I.showState(config, output) : I.show(config, output);
+  if (shown.kind != Pass::Done && !saving)
+  {
+    return end(shown);
+  }
+  if (shown.kind != Pass::Done)
+  {
+    vtkErrorMacro(<< shown.message);
+  }
+  else if (!saving)
   {
     I.showFtleMap(ftleMap);
   }
-  return shown.kind == Pass::Done ? 1 : end(shown);
+  return 1;
 }
 
 vtkDataArraySelection* vtkBoundParticleTracer::GetOutputArraySelection()
@@ -677,6 +597,7 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepSize: " << this->StepSize << "\n";
   os << indent << "CheckpointMemory: " << this->CheckpointMemory
      << (this->CheckpointMemory < 0.0 ? " (half the trace's size)\n" : " MiB\n");
+  os << indent << "InitialStateFile: " << this->InitialStateFile << "\n";
   os << indent << "RestorationIterations: " << this->RestorationIterations << "\n";
   os << indent << "LatticeSpacing: " << this->LatticeSpacing << "\n";
   os << indent << "ResponseTime: " << this->ResponseTime << ", DensityRatio: " << this->DensityRatio

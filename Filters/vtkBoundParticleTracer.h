@@ -238,6 +238,20 @@ public:
   ///@}
 
   ///@{
+  /// A trace's state to go on from (File > Save Data on the State output,
+  /// output 2, as .vtp or .pvtp in Binary): times at or after the state's
+  /// are traced from it, bit for bit as the trace that saved it, instead of
+  /// from the start; earlier times are traced from the start as usual. The
+  /// tracer's settings and its input must be those it was saved with: a
+  /// state that differs (another setting, template, grid or field, or a file
+  /// cut short, altered or saved as ASCII) fails the update with a message
+  /// that names the difference. The CPU engine resumes (the GPU engine
+  /// cannot yet). Empty (default): none.
+  vtkSetStdStringFromCharMacro(InitialStateFile);
+  vtkGetCharFromStdStringMacro(InitialStateFile);
+  ///@}
+
+  ///@{
   /// Advection integrator: Euler (thesis eq. 2.2, default), Runge-Kutta 2
   /// (midpoint) or Runge-Kutta 4 (classic).
   // Declares SetIntegrator, GetIntegrator and GetIntegratorAsString.
@@ -517,8 +531,18 @@ protected:
   ~vtkBoundParticleTracer() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData).
+  /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
+  /// port 2: the trace's state (vtkPolyData, filled only when it is asked for).
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  ///@{
+  /// The State output: filled only when it is asked for
+  /// (bpvtk::markNotGenerated), with the time last shown, and out of date
+  /// once another time is shown.
+  vtkTypeBool ProcessRequest(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputePipelineMTime(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    int port, vtkMTimeType* mtime) override;
+  ///@}
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -571,6 +595,7 @@ protected:
   double LifetimeRange[2] = { 0.0, 0.0 };
   double StepSize = 0.5;
   double CheckpointMemory = -1.0;
+  std::string InitialStateFile;
   int RestorationIterations = 1;
   double RelaxationFactor = 0.2;
   double ShapeMatchingStiffness = 1.0;

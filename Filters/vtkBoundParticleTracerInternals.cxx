@@ -75,6 +75,8 @@ void vtkBoundParticleTracerInternals::invalidate()
   ++this->Configuration;
   this->Said.forget();
   this->Steppers.invalidate();
+  this->Shown.valid = false;
+  this->Shown.stamp.Modified();
 }
 
 void vtkBoundParticleTracerInternals::clear()
@@ -103,13 +105,16 @@ void vtkBoundParticleTracerInternals::endFailedUpdate(bool skipped)
 }
 
 void vtkBoundParticleTracerInternals::decide(
-  const Config& config, vtkInformation* outInfo, int gpuQueue)
+  const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
+  this->Update.forState = forState;
   this->Steppers.select(config.engine, gpuQueue, this->Layout);
-  // In situ the present step is the time shown, whatever time is asked for.
-  const double target = this->Plan.streaming()
-    ? this->Plan.outputTimes().back()
+  // In situ the present step is the time shown, whatever time is asked for;
+  // the State output saves the time shown.
+  const double target = this->Plan.streaming() ? this->Plan.outputTimes().back()
+    : forState && this->Shown.valid
+    ? this->Shown.target
     : this->Plan.targetOf(
         outInfo->Has(SDDP::UPDATE_TIME_STEP()), outInfo->Get(SDDP::UPDATE_TIME_STEP()));
   const bp::Stepper& stepper = this->stepper();
@@ -119,6 +124,17 @@ void vtkBoundParticleTracerInternals::decide(
   {
     this->decideInSitu(target);
     return;
+  }
+  bp::TracePlan::Update& u = this->Update.decision;
+  if (!u.replay && !this->Layout.distributed() && this->resumesFromState(config, u.from))
+  {
+    // An Initial State this trace has not used, and the work would pass its
+    // time: it is gone on from instead (a replay loads it). Not under MPI,
+    // where a process that read another file would part from the others; a
+    // replay there uses it.
+    u.replay = true;
+    u.resume = -1;
+    u.from = this->Plan.startTime();
   }
   this->Held.requestIndex =
     this->Plan.firstRequest(this->Update.decision, this->Held.cache, this->Held.lastRequested);
@@ -166,9 +182,12 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   bp::Stepper& stepper = this->stepper();
   const bool replay = this->Update.decision.replay;
   this->ReplayPending = replay;
-  this->Update.stepsInLastUpdate = 0;
+  if (!this->Update.forState)
+  {
+    this->Update.stepsInLastUpdate = 0;
+    this->Update.lastUpdateReplayed = replay;
+  }
   this->Exchange.migrated = 0;
-  this->Update.lastUpdateReplayed = replay;
   this->Held.readThisUpdate = false;
   if (this->Update.decision.resume >= 0)
   {
@@ -240,7 +259,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::stepToTarget()
   bool aborted = false;
   auto keepGoing = [&](double t)
   {
-    ++this->Update.stepsInLastUpdate;
+    this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
     this->Update.progressAt = t;
     this->Owner->UpdateProgress(this->progress());
     // In parallel every process must take every step (each exchanges
@@ -353,7 +372,7 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     stepper.save();
     stepper.step(committed, target - committed);
     stepper.cursor.showsPartialStep = true;
-    ++this->Update.stepsInLastUpdate;
+    this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
   }
   this->gatherExchange();
   const bp::Engine* particles = stepper.particles();
@@ -382,6 +401,9 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     this->handToDisplay(config, output);
   }
   this->addSettingsFieldData(output);
+  this->Shown.valid = true;
+  this->Shown.target = target;
+  this->Shown.stamp.Modified();
   return Pass();
 }
 

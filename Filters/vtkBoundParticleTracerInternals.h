@@ -37,12 +37,14 @@
 #include "TracerParallel.h"
 #include "TracerResample.h"
 #include "TracerSaidOnce.h"
+#include "TracerState.h"
 #include "TracerSteppers.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h"
 #include "vtkType.h"
 
 #include <algorithm>
@@ -130,6 +132,7 @@ struct UpdatePass
   double progressAt = 0.0;        ///< where it stands
   vtkIdType stepsInLastUpdate = 0;
   bool lastUpdateReplayed = false;
+  bool forState = false; ///< an update for the State output (its steps are not reported)
 };
 
 /// In situ: the times given since the trace started (TracerInSitu.cxx),
@@ -158,6 +161,7 @@ struct ResolvedTrace
   double elementSize = 0.0;
   std::size_t particlesPerElement = 1;
   double traceBytes = 0.0;    ///< the whole trace's size (bp::traceBytes)
+  double startMaxSpeed = 0.0; ///< the field's largest speed at the start (bp::FieldFacts)
   bp::RangeFacts rangeFacts; ///< for the GPU display's output
 };
 
@@ -182,6 +186,9 @@ public:
   /// The times offered to the animation: the data's (TracePlan::offeredTimes).
   const std::vector<double>& outputTimes() const { return this->Plan.offeredTimes(); }
   vtkIdType stepsInLastUpdate() const { return this->Update.stepsInLastUpdate; }
+  /// When the elements were last shown (or the trace forgotten): the State
+  /// output, which saves the time shown, is out of date since.
+  vtkMTimeType shownMTime() const { return this->Shown.stamp.GetMTime(); }
   bool lastUpdateReplayed() const { return this->Update.lastUpdateReplayed; }
   /// Steps between two checkpoints of the trace; 0: none kept.
   long long checkpointEvery() const { return this->Spacing.every; }
@@ -254,8 +261,13 @@ public:
   /// The decision for a request (RequestUpdateExtent): picks the stepper
   /// for this request, then replay or continue and the first time step.
   /// Only for a new update (not a later pass of one), with times offered.
-  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none).
-  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue);
+  /// `gpuQueue`: the work queue a Bound Particles display asked for (0: none);
+  /// `forState`: the request is the State output's, which saves the trace
+  /// at the time the elements were last shown (a writer asks for the time
+  /// the pipeline last asked of that output: in the GUI, when it was applied),
+  /// or, with none shown, at the time asked for; the elements' report of what
+  /// the last update did is kept.
+  void decide(const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState = false);
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
   void decideInSitu(double target);
@@ -286,6 +298,12 @@ public:
   /// The second output after show(): the FTLE map of a lattice release
   /// (TracerFtleMap.cxx; collective in a distributed run).
   void showFtleMap(vtkImageData* image);
+  /// The third output, when asked for: the state at the committed step
+  /// boundary (TracerResume.cxx; collective in a distributed run: process
+  /// 0's holds every element).
+  Pass showState(const Config& config, vtkPolyData* out);
+  /// An update for the State output (decide's `forState`).
+  bool forState() const { return this->Update.forState; }
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
@@ -312,6 +330,14 @@ private:
   bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
+  /// The time the elements were last shown at (trace time), which the State
+  /// output saves, and when it was shown.
+  struct ShownTime
+  {
+    bool valid = false;
+    double target = 0.0;
+    vtkTimeStamp stamp;
+  } Shown;
 
   vtkAlgorithm* const Owner;  ///< for messages, progress and abort only
   bool ReplayPending = false; ///< this update replays from the start (startTrace clears it)
@@ -382,9 +408,30 @@ private:
   /// The element template: the built-in shape or the template input.
   std::string elementTemplate(
     const Config& config, vtkInformationVector** inputVector, bp::ElementTemplate& shape);
-  /// Points the stepper at the start of a new trace, its checkpoints
-  /// spaced within the config's budget.
+  /// Points the stepper at the start of a new trace, or at the Initial
+  /// State it resumed, its checkpoints spaced within the config's budget.
   void startTrace(const Config& config);
+
+  // Saving and resuming (TracerResume.cxx).
+  /// After the stepper placed its elements: with an Initial State File and a
+  /// target at or after its time, the state's elements instead, once it is
+  /// checked against this trace (agreed between processes). Empty on success.
+  std::string resumeFromState(
+    const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// Whether work that starts at `from` (trace time) reaches the Initial
+  /// State's time without passing it: the state, read, is then gone on from.
+  bool resumesFromState(const Config& config, double from);
+  /// What of `state` differs from this trace, said by name; empty when nothing.
+  std::string stateMismatch(const Config& config, const bp::TraceState& state,
+    const bp::ElementTemplate& shape, const bp::Parameters& p);
+  /// The facts of the field a state must match (the grid and its bounds,
+  /// the arrays traced, its time steps, its largest speed at the start, the
+  /// time direction, the number of processes), as named values.
+  std::vector<bp::NamedValue> fieldValues(const Config& config);
+  bpvtk::InitialState Initial; ///< the Initial State File as last read
+  /// The state resumed by the last replay: its step count (-1: none) and time.
+  long long ResumedSteps = -1;
+  double ResumedTime = 0.0;
   /// Every how many steps a new trace keeps a checkpoint (Checkpoints.h):
   /// Checkpoint Memory (automatic: half the trace's own size), at most half
   /// of what this process can allocate, over the whole system's state; the

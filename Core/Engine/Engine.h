@@ -40,14 +40,16 @@
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
  * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineLinked.cpp
  * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
- * (distributed runs) and Engine.cpp (trails, step 4's normals, and advance()
- * along the step schedule).
+ * (distributed runs), EngineSaveState.cpp (a state to save and resume; the
+ * state's checks are in EngineState.cpp) and Engine.cpp (trails, step 4's
+ * normals, and advance() along the step schedule).
  */
 #ifndef BoundParticles_Engine_h
 #define BoundParticles_Engine_h
 
 #include "ElementTemplate.h"
 #include "EngineParameters.h"
+#include "EngineState.h"
 #include "Inertia.h"
 #include "Parallel.h"
 #include "ReleaseWeights.h"
@@ -230,6 +232,24 @@ public:
     const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records);
   ///@}
 
+  /// @name A state to save and resume (EngineState.h)
+  ///@{
+  /// A record's arrays (forEachElementArray's, by name and type), those of
+  /// no component left out.
+  std::vector<StateArray> stateLayout() const;
+  /// The same for a system of `shape` and `parameters`, without configuring
+  /// one (checkTraceState).
+  static std::vector<StateArray> stateLayout(
+    const ElementTemplate& shape, const Parameters& parameters);
+  /// Every element's record, ids increasing, and the state's scalars (the
+  /// trail ring's times and newest slot, the emitter box).
+  EngineState saveState() const;
+  /// Replaces every element held by the state's and takes its scalars, on an
+  /// engine configured with the template and parameters it was saved with
+  /// (checkTraceState first); empty on success, otherwise what is wrong.
+  std::string loadState(const EngineState& state);
+  ///@}
+
   /// For tests: direct access to the positions of the system.
   std::vector<float>& mutablePositions() { return this->Positions; }
   /// For tests: direct access to the slips (a particle released at rest).
@@ -237,35 +257,38 @@ public:
 
 private:
   /**
-   * Calls f(array, width, blocks, fill) for every per-element array of the
-   * state, `self` an Engine or a const one: `array` holds `blocks` blocks of
-   * elementCount() elements, `width` values each (element e of block b at
-   * (b * E + e) * width), all `fill` when sized. The one list of what an
-   * element is made of: configure() sizes by it, and migration packs,
-   * unpacks and counts by it (EngineMigration.cpp), so a new array is sized
-   * and migrated by its line here alone (a type other than uint32, uint8 or
-   * float needs a toWord() overload there); what it holds is still written
-   * where an element is placed (place()) and stepped (EngineStep.cpp). Ids
-   * comes first: a migration record starts with the element's id.
+   * Calls f(name, array, width, blocks, fill) for every per-element array of
+   * the state, `self` an Engine or a const one: `name` is the member's, as
+   * a saved state names the array (EngineState.h); `array` holds `blocks`
+   * blocks of elementCount() elements, `width` values each (element e of
+   * block b at (b * E + e) * width), all `fill` when sized. The one list of what an
+   * element is made of: configure() sizes by it, migration packs, unpacks
+   * and counts by it (EngineMigration.cpp) and a saved state is laid out by
+   * it (stateLayout), so a new array is sized, migrated and saved by its
+   * line here alone (a type other than uint32, uint8 or float needs a
+   * toWord() overload there and a StateArray::Type); what it holds is still
+   * written where an element is placed (place()) and stepped
+   * (EngineStep.cpp). Ids comes first: a record starts with the element's
+   * id. A new array, or a change in what one holds, bumps EngineStateVersion.
    */
   template <class Self, class F>
   static void forEachElementArray(Self& self, F&& f)
   {
     const std::size_t n = self.Shape.particleCount();
     const std::size_t slots = std::size_t(std::max(self.Params.trailLength, 0));
-    f(self.Ids, 1, 1, std::uint32_t(0));
-    f(self.Generations, 1, 1, std::uint32_t(0));
-    f(self.ResetFlags, 1, 1, std::uint8_t(0));
-    f(self.Lifetimes, 1, 1, 0.0f);
-    f(self.InitialCenters, 3, 1, 0.0f);
-    f(self.Orientations, 4, 1, 0.0f);
-    f(self.Poses, 4, 1, 0.0f);
-    f(self.Spins, 4, 1, 0.0f);
-    f(self.Positions, 3 * n, 1, 0.0f);
-    f(self.Forces, n, 1, 0.0f);
-    f(self.Slips, carriesInertia(self.Params) ? 3 * n : 0, 1, 0.0f);
-    f(self.TrailGenerations, 1, slots, NoTrailPose);
-    f(self.TrailPositions, 3 * n, slots, 0.0f);
+    f("Ids", self.Ids, 1, 1, std::uint32_t(0));
+    f("Generations", self.Generations, 1, 1, std::uint32_t(0));
+    f("ResetFlags", self.ResetFlags, 1, 1, std::uint8_t(0));
+    f("Lifetimes", self.Lifetimes, 1, 1, 0.0f);
+    f("InitialCenters", self.InitialCenters, 3, 1, 0.0f);
+    f("Orientations", self.Orientations, 4, 1, 0.0f);
+    f("Poses", self.Poses, 4, 1, 0.0f);
+    f("Spins", self.Spins, 4, 1, 0.0f);
+    f("Positions", self.Positions, 3 * n, 1, 0.0f);
+    f("Forces", self.Forces, n, 1, 0.0f);
+    f("Slips", self.Slips, carriesInertia(self.Params) ? 3 * n : 0, 1, 0.0f);
+    f("TrailGenerations", self.TrailGenerations, 1, slots, NoTrailPose);
+    f("TrailPositions", self.TrailPositions, 3 * n, slots, 0.0f);
   }
 
   /// @name configure()'s parts (EngineConfigure.cpp)
@@ -285,6 +308,12 @@ private:
   std::string mergeOrder(const std::vector<std::uint8_t>& leaving,
     const std::vector<std::uint32_t>& records,
     std::vector<std::pair<std::uint32_t, std::size_t>>& order) const;
+  /// exchange()'s and loadState()'s merge, on records checked to be whole
+  /// records of this engine's layout: the elements kept and those the
+  /// records hold, in increasing id order; empty on success, otherwise what
+  /// is wrong with the records (an id out of range or repeated).
+  std::string merge(
+    const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records);
 
   struct SpringWork
   {

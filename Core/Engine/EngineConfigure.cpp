@@ -158,7 +158,7 @@ void Engine::buildIncidences()
 void Engine::sizeElements(std::size_t E)
 {
   forEachElementArray(*this,
-    [E](auto& array, std::size_t width, std::size_t blocks, auto fill)
+    [E](const char* /*name*/, auto& array, std::size_t width, std::size_t blocks, auto fill)
     { assignLarge(array, blocks * E * width, fill); });
   for (std::size_t e = 0; e < E; ++e)
   {

@@ -3,7 +3,8 @@
 // runs"): an element's state as 32-bit words and the exchange that drops the
 // elements leaving and takes in those arriving. Both walk the one list of
 // per-element arrays (Engine::forEachElementArray), so a record holds every
-// array in that list, bit for bit.
+// array in that list, bit for bit. A saved state's records are the same
+// (EngineSaveState.cpp): Engine::loadState takes them in by the same merge.
 #include "Engine.h"
 
 #include <algorithm>
@@ -114,8 +115,8 @@ std::size_t Engine::recordWords() const
 {
   std::size_t words = 0;
   forEachElementArray(*this,
-    [&words](const auto& /*array*/, std::size_t width, std::size_t blocks, auto /*fill*/)
-    { words += width * blocks; });
+    [&words](const char* /*name*/, const auto& /*array*/, std::size_t width, std::size_t blocks,
+      auto /*fill*/) { words += width * blocks; });
   return words;
 }
 
@@ -133,7 +134,8 @@ void Engine::packElement(std::size_t e, std::vector<std::uint32_t>& out) const
 {
   const std::size_t E = this->elementCount();
   forEachElementArray(*this,
-    [&](const auto& array, std::size_t width, std::size_t blocks, auto /*fill*/)
+    [&](
+      const char* /*name*/, const auto& array, std::size_t width, std::size_t blocks, auto /*fill*/)
     {
       for (std::size_t b = 0; b < blocks; ++b)
       {
@@ -200,6 +202,13 @@ std::string Engine::exchange(
   {
     return std::string(); // nothing moves: the elements stay as they are, in order
   }
+  return this->merge(leaving, records);
+}
+
+std::string Engine::merge(
+  const std::vector<std::uint8_t>& leaving, const std::vector<std::uint32_t>& records)
+{
+  const std::size_t held = this->elementCount(), words = this->recordWords();
   std::vector<std::pair<std::uint32_t, std::size_t>> order;
   const std::string error = this->mergeOrder(leaving, records, order);
   if (!error.empty())
@@ -209,7 +218,7 @@ std::string Engine::exchange(
   const Sources sources{ order, held, records, words };
   std::size_t offset = 0; // of the array's words in a record
   forEachElementArray(*this,
-    [&](auto& array, std::size_t width, std::size_t blocks, auto /*fill*/)
+    [&](const char* /*name*/, auto& array, std::size_t width, std::size_t blocks, auto /*fill*/)
     {
       array = merged(array, width, blocks, sources, offset);
       offset += blocks * width;

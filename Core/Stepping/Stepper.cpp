@@ -98,6 +98,18 @@ double CpuStepper::checkpointBytes() const
     double(std::max<std::size_t>(this->Current.parameters().numberOfElements, 1));
 }
 
+bool CpuStepper::committedState(EngineState& state)
+{
+  // While a short step is shown, the committed boundary is save()'s copy.
+  state = (this->cursor.showsPartialStep ? this->Saved : this->Current).saveState();
+  return true;
+}
+
+std::string CpuStepper::loadState(const EngineState& state)
+{
+  return this->Current.loadState(state);
+}
+
 const Engine* CpuStepper::particles()
 {
   return &this->Current;
@@ -130,6 +142,23 @@ void DistributedStepper::initialize(double startTime)
   // The reposition test takes the whole field's domain, not the ghosted piece's.
   this->engine().setDomain(this->WholeDomain);
   keepOwned(this->engine(), *this->Pieces, this->Piece);
+}
+
+std::string DistributedStepper::loadState(const EngineState& state)
+{
+  if (!this->Pieces)
+  {
+    return "the pieces of the distributed run are not set";
+  }
+  const std::string error = this->CpuStepper::loadState(state);
+  if (!error.empty())
+  {
+    return error;
+  }
+  // As initialize() does: the whole field's domain, and this piece's elements.
+  this->engine().setDomain(this->WholeDomain);
+  keepOwned(this->engine(), *this->Pieces, this->Piece);
+  return std::string();
 }
 
 void DistributedStepper::step(double t, double h)

@@ -93,6 +93,21 @@ public:
   virtual double checkpointBytes() const { return 0.0; }
   ///@}
 
+  /// @name A state to save and resume (EngineState.h)
+  ///@{
+  /// The engine's state at the committed boundary (the copy save() kept
+  /// while a short step is shown); false where the state lives elsewhere (a
+  /// renderer's GPU textures).
+  virtual bool committedState(EngineState& /*state*/) { return false; }
+  /// After configure(), setField() and initialize(): replaces the elements
+  /// by the state's (a piece of a distributed run keeps those whose centres
+  /// lie in it); empty on success, otherwise why not.
+  virtual std::string loadState(const EngineState& /*state*/)
+  {
+    return "this engine cannot resume a saved state";
+  }
+  ///@}
+
   /// The particles as data in this process; null where they live elsewhere
   /// (in a renderer's GPU textures). Their normals are not kept: they do
   /// not feed back into the simulation, and the output computes them from
@@ -133,6 +148,8 @@ public:
   /// The engine's state words an element (Engine::recordWords) times the
   /// whole system's elements.
   double checkpointBytes() const override;
+  bool committedState(EngineState& state) override;
+  std::string loadState(const EngineState& state) override;
   const Engine* particles() override;
 
   Engine& engine() { return this->Current; }
@@ -174,6 +191,8 @@ public:
   void initialize(double startTime) override;
   /// Resets, exchanges elements with the other pieces, then steps.
   void step(double t, double h) override;
+  /// Loads the whole state, then keeps the elements whose centres lie in this piece.
+  std::string loadState(const EngineState& state) override;
 
   /// Elements this piece sent away since the count was last taken.
   long long takeMigrated();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Distributed runs without MPI: pieces on threads exchange elements through
 // memory, and must reproduce the single-process run.
+#include "MemoryExchange.h"
 #include "Partition.h"
 #include "TestHelpers.h"
 
@@ -8,72 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <condition_variable>
 #include <map>
-#include <mutex>
 #include <thread>
 
 namespace
 {
-
-/// A barrier for `count` threads, reusable.
-class Barrier
-{
-public:
-  explicit Barrier(int count)
-    : Count(count)
-  {
-  }
-  void wait()
-  {
-    std::unique_lock<std::mutex> lock(this->Mutex);
-    const int generation = this->Generation;
-    if (++this->Waiting == this->Count)
-    {
-      this->Waiting = 0;
-      ++this->Generation;
-      this->Changed.notify_all();
-      return;
-    }
-    this->Changed.wait(lock, [&] { return generation != this->Generation; });
-  }
-
-private:
-  std::mutex Mutex;
-  std::condition_variable Changed;
-  int Count, Waiting = 0, Generation = 0;
-};
-
-/// All-to-all through memory for `pieces` threads.
-class MemoryExchange
-{
-public:
-  explicit MemoryExchange(int pieces)
-    : Sync(pieces)
-    , Mail(std::size_t(pieces))
-  {
-  }
-  bp::ExchangeFunction forPiece(int piece)
-  {
-    return [this, piece](const std::vector<std::vector<std::uint32_t>>& outgoing)
-    {
-      this->Mail[std::size_t(piece)] = outgoing;
-      this->Sync.wait();
-      std::vector<std::uint32_t> incoming;
-      for (const auto& box : this->Mail)
-      {
-        const auto& records = box[std::size_t(piece)];
-        incoming.insert(incoming.end(), records.begin(), records.end());
-      }
-      this->Sync.wait(); // nobody overwrites its mail before all have read
-      return incoming;
-    };
-  }
-
-private:
-  Barrier Sync;
-  std::vector<std::vector<std::vector<std::uint32_t>>> Mail;
-};
 
 /// The whole grid's point extent [first, last] along each axis split in two
 /// along x and, for four pieces, along y: piece k's point ranges.
@@ -188,7 +128,7 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
   const bp::Partition partition(boxes);
   const int ghost =
     bp::ghostCellsNeeded(parameters().elementSize, whole.maxSpeed(), dt, whole.grid().cellLength());
-  MemoryExchange exchange(pieces);
+  bptest::MemoryExchange exchange(pieces);
   const std::size_t count = std::size_t(pieces);
   std::vector<bp::Engine> engines(count);
   std::vector<std::string> errors(count);

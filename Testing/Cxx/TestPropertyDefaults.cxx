@@ -163,6 +163,7 @@ const std::map<std::string, std::string> NotInCore = {
   { "ReleaseStop", "Core holds +infinity while Release Window is off" },
   { "TrailLength", "Core holds 0 while Trails is off" },
   { "ComputeVorticity", "folded into TracerConfig::wanted (Vorticity)" },
+  { "InitialStateFile", "a file the tracer reads (TracerConfig::initialStateFile), not a setting" },
 };
 
 /// A Core enumeration's entries, value: text (bp::EnumTraits<E>::names).

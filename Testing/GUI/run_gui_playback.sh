@@ -41,6 +41,8 @@ fi
 if [ -n "${BOUNDPARTICLES_DATA_DIR:-}" ]; then
   sed -i "s#\$BOUNDPARTICLES_DATA_DIR#$(cd "$BOUNDPARTICLES_DATA_DIR" && pwd)#g" "$played"
 fi
+# $BOUNDPARTICLES_SCRATCH in the events: this run's scratch folder ($HOME).
+sed -i "s#\$BOUNDPARTICLES_SCRATCH#$HOME#g" "$played"
 script="$played"
 timeout 300 bash "$(dirname "$0")/../../scripts/with-display.sh" \
   paraview --dr --data-directory="$data_dir" --test-directory="$HOME" \

@@ -78,6 +78,21 @@ def placement_traces():
         cases[name] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
                                            NumberOfElements=400, Seed=4, CheckpointMemory=64,
                                            LifetimeRange=[0.3, 0.6]), times)
+    # Save and resume: the state at 0.5 saved as a user does it (SaveData on
+    # the State output, .pvtp: a piece per process, process 0's holding
+    # every element), and a new tracer that goes on from it to 1.0 must
+    # trace what one that never stopped does (test_parallel.py:
+    # check_save_resume), on the same number of processes.
+    def resumable(**extra):
+        return BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                                   Seed=12, LifetimeRange=[0.3, 0.6], **extra)
+    saver = resumable()
+    saver.UpdatePipeline(0.5)
+    state = os.path.abspath(args.output) + "-state.pvtp"
+    SaveData(state, proxy=OutputPort(saver, 2))
+    Delete(saver)
+    cases["resumed"] = (resumable(InitialStateFile=state), [1.0])
+    cases["resumed_straight"] = (resumable(), [1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,

@@ -252,6 +252,18 @@ def check_shared_start(result, name):
                      "tracer first on the source" % (name, k))
 
 
+def check_save_resume(result, name):
+    """A tracer that went on from a state saved at 0.5 (on as many processes)
+    traces to 1.0 what one that never stopped does, bit for bit."""
+    if result is None or "resumed_0_points" not in result.files:
+        bptest.check(False, "%s: no resumed trace" % name)
+        return
+    same = all(numpy.array_equal(result["resumed_0" + s], result["resumed_straight_0" + s])
+               for s in ("_points", "_element", "_particle", "_velocity"))
+    bptest.check(same, "%s: resumed from the state saved at 0.5, at 1.0 it differs from the "
+                 "trace that never stopped" % name)
+
+
 def compare_pictures(reference_dir, result_dir, name):
     expected = coverage(os.path.join(reference_dir, "remote.png"))
     bptest.check(expected > 0.01, "the built-in picture shows elements (%.3f)" % expected)
@@ -271,6 +283,7 @@ reference_pictures = os.path.join(args.output, "builtin-pictures")
 reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
 check_step_back(reference, "builtin")
 check_shared_start(reference, "builtin")
+check_save_resume(reference, "builtin")
 
 if args.mode == "batch":
     for ranks in (1, 2, 4):
@@ -281,6 +294,7 @@ if args.mode == "batch":
         compare(reference, result, name, ranks)
         check_step_back(result, name)
         check_shared_start(result, name)
+        check_save_resume(result, name)
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
@@ -328,6 +342,7 @@ else:
         served = numpy.load(out) if os.path.exists(out) else None
         compare(reference, served, "client-server", 2)
         check_shared_start(served, "client-server")
+        check_save_resume(served, "client-server")
         compare_pictures(reference_pictures, pictures, "client-server")
 
     client_server()

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file TracerPorts.h
+ * @brief How the tracer's requests reach its ports and inputs: its three
+ * outputs come from one execution, and its template and seed inputs are
+ * asked for whole.
+ *
+ * Output 0 holds the elements, output 1 the FTLE map of a lattice release
+ * (TracerFtleMap.h), output 2 the trace's state (TracerState.h). One
+ * execution fills the elements and the map: the port asked for gives the
+ * time and pieces, and the others are asked alike, so that a consumer of
+ * another port at the same time finds it up to date. The State output is
+ * filled only when it is the port asked for (markNotGenerated): playing
+ * the animation pays nothing for it, while ParaView's Apply and a script's
+ * UpdatePipeline, which ask for every port, pay a copy of the engine's
+ * state (and under MPI its gather to process 0), with no step.
+ */
+#ifndef BoundParticles_TracerPorts_h
+#define BoundParticles_TracerPorts_h
+
+class vtkInformation;
+class vtkInformationVector;
+
+namespace bpvtk
+{
+
+/// The tracer's output ports.
+enum TracerPort
+{
+  ElementsPort = 0,
+  FtleMapPort = 1,
+  StatePort = 2,
+  TracerPortCount = 3
+};
+
+/// The output port a request came from (the elements' when it names none).
+int askedPort(vtkInformation* request);
+
+/// Every other output asked for what the port `port` was asked for: the
+/// time and the pieces.
+void askOthersAlike(vtkInformationVector* outputs, int port);
+
+/// `other` asked for the time and pieces `asked` was asked for.
+void askAlike(vtkInformation* asked, vtkInformation* other);
+
+/**
+ * REQUEST_DATA_NOT_GENERATED: an execution for the elements (or the map)
+ * leaves the State output not generated, so that a later request for it
+ * (a writer's) executes again; one for the State output fills it alone and
+ * leaves the others not generated (they keep what they hold). ParaView
+ * updates every port of a source it updates (vtkSMSourceProxy::
+ * UpdatePipeline), so the state is made then too: a copy of the engine's
+ * state, without a step.
+ */
+void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
+
+/**
+ * The template (input 1) and seed (input 2) connections asked for whole on
+ * every process, and without the GPU display's request; a time-varying one
+ * at the trace's start `startTime` when `hasTimes`, a steady one at no time.
+ */
+void requestWholeInputs(vtkInformationVector** inputs, bool hasTimes, double startTime);
+
+} // namespace bpvtk
+
+#endif
