@@ -69,7 +69,12 @@ for name in ("state.vtp", "state.pvtp"):
     with bptest.CapturedMessages() as messages:
         steps = steps_to(resumed, LATER)
         got = arrays(bptest.fetch(resumed, LATER))
-    bptest.check(not messages.messages, "%s: no messages: %s" % (name, messages.messages[:2]))
+    # ParaView 6.1's XML piece reader (VTK 9.6) says it cannot read back the
+    # L2_NORM_RANGE information key its own writer stored with an array whose
+    # norm range ParaView had computed; the arrays themselves read whole (the
+    # check below), so that message alone is not the tracer's.
+    said = [m for m in messages.messages if "L2_NORM_RANGE" not in m]
+    bptest.check(not said, "%s: no messages: %s" % (name, said[:2]))
     bptest.check(same(got, expected),
                  "%s: resumed at %s, every array equals the trace that never stopped" % (name, LATER))
     bptest.check(0 < steps < straight_steps,
