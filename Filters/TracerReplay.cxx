@@ -39,7 +39,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   {
     return Pass::fail(seedError);
   }
-  const bp::FieldFacts facts = this->fieldFacts(field);
+  bp::FieldFacts facts = this->fieldFacts(field);
+  this->restartInSitu(config, facts);
   bp::TraceSettings settings = config.trace;
   settings.seeded = !seeds.xyz.empty() && !config.linking();
   if (!seeds.xyz.empty() && config.linking())
@@ -225,7 +226,7 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
     return templateError;
   }
   this->warnOfDeformation(config, shape, p);
-  p.trailStart = this->Plan.startTime(); // trail poses on the schedule's own steps
+  p.trailStart = this->Resolved.scheduleStart; // trail poses on the schedule's own steps
   if (!seeds.xyz.empty())
   {
     const std::string seedError = this->seedPoints(seeds, field, p);
@@ -356,7 +357,7 @@ void vtkBoundParticleTracerInternals::warnOfUnreachableWeights(
 void vtkBoundParticleTracerInternals::startTrace(const Config& config)
 {
   this->Storage.reset(); // the element count or shape may have changed
-  this->Schedule.reset(new bp::StepSchedule(this->Plan.startTime(), this->Resolved.dt,
+  this->Schedule.reset(new bp::StepSchedule(this->Resolved.scheduleStart, this->Resolved.dt,
     this->Plan.unsteady() ? this->Plan.inputTimes() : std::vector<double>()));
   bp::Stepper& stepper = this->stepper();
   stepper.dropCheckpoints();

@@ -11,6 +11,8 @@
 #include "vtkInformation.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -27,6 +29,24 @@ double hash32(const void* bytes, std::size_t size)
     h = (h ^ b[k]) * 16777619u;
   }
   return double(h);
+}
+
+/// The named field value a restart in situ resolves its settings from.
+const char* const LargestStartSpeed = "largest speed at the start";
+/// The field's values that say its time steps: in situ, those handed since
+/// the trace started, which a restart's are not.
+bool namesTimeSteps(const std::string& name)
+{
+  return name == "time steps" || name == "time steps (hash)";
+}
+
+/// `values` without those `namesTimeSteps`.
+std::vector<bp::NamedValue> withoutTimeSteps(std::vector<bp::NamedValue> values)
+{
+  values.erase(std::remove_if(values.begin(), values.end(),
+                 [](const bp::NamedValue& v) { return namesTimeSteps(v.name); }),
+    values.end());
+  return values;
 }
 } // namespace
 
@@ -57,7 +77,7 @@ std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues(const C
   const std::vector<double>& times = this->Plan.inputTimes();
   values.push_back({ "time steps", double(times.size()) });
   values.push_back({ "time steps (hash)", hash32(times.data(), times.size() * sizeof(double)) });
-  values.push_back({ "largest speed at the start", this->Resolved.startMaxSpeed });
+  values.push_back({ LargestStartSpeed, this->Resolved.startMaxSpeed });
   values.push_back({ "Time Direction (0 Forward, 1 Backward)", double(this->Plan.direction()) });
   // Pieces trace a little differently from a whole (test_parallel.py's
   // tolerance): the same number of processes goes on bit for bit.
@@ -73,8 +93,12 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
   {
     return bp::checkTraceState(state, shape, p);
   }
-  std::string difference =
-    bp::firstDifference(state.field, this->fieldValues(config), "the field's");
+  // A restart in situ has only the time steps handed since it started.
+  const bool restart = this->restartsAtState();
+  std::string difference = restart
+    ? bp::firstDifference(
+        withoutTimeSteps(state.field), withoutTimeSteps(this->fieldValues(config)), "the field's")
+    : bp::firstDifference(state.field, this->fieldValues(config), "the field's");
   if (difference.empty())
   {
     difference = bp::firstDifference(state.shape, bp::templateValues(shape), "the template's");
@@ -84,7 +108,7 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
     difference = bp::firstDifference(state.parameters, bp::parameterValues(p), "the setting");
   }
   if (difference.empty() &&
-    (state.scheduleStart != this->Plan.startTime() || state.dt != this->Resolved.dt))
+    (state.scheduleStart != this->Resolved.scheduleStart || state.dt != this->Resolved.dt))
   {
     std::ostringstream text;
     text.precision(17);
@@ -110,7 +134,65 @@ bool vtkBoundParticleTracerInternals::resumesFromState(const Config& config, dou
   // gone on from.
   const double eps = this->Plan.epsilon();
   const double t = this->Initial.state.time;
-  return this->Initial.error.empty() && from < t - eps && this->target() >= t - eps;
+  return this->Initial.error.empty() && (from < t - eps || this->restartsAtState()) &&
+    this->target() >= t - eps;
+}
+
+bool vtkBoundParticleTracerInternals::restartsAtState() const
+{
+  // In situ the trace cannot replay to a later state's time, nor go back to
+  // an earlier one's: only a state at the first step handed is gone on from.
+  return this->Plan.streaming() && this->Initial.error.empty() &&
+    std::abs(this->Initial.state.time - this->Plan.startTime()) <= this->Plan.epsilon();
+}
+
+void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::FieldFacts& facts)
+{
+  this->Resolved.scheduleStart = this->Plan.startTime();
+  if (!this->Plan.streaming() || config.initialStateFile.empty())
+  {
+    return;
+  }
+  this->Initial.take(config.initialStateFile);
+  if (!this->Initial.error.empty())
+  {
+    return; // said by resumeFromState, on every process alike
+  }
+  const bp::TraceState& state = this->Initial.state;
+  bool restarts = this->restartsAtState();
+  if (this->Layout.distributed())
+  {
+    restarts = this->Layout.globalMax(restarts ? 0.0 : 1.0) == 0.0; // collective: all or none
+  }
+  if (!restarts)
+  {
+    std::ostringstream text;
+    text << "Initial State File '" << config.initialStateFile << "' stands at t = " << state.time
+         << ", but the first time step handed in situ is t = " << this->Plan.startTime()
+         << ": it is not used, and the trace starts at t = " << this->Plan.startTime()
+         << ". A simulation restarted from its checkpoint must hand the step the state was "
+            "saved at first.";
+    if (this->Said.first(bpvtk::Topic::InitialState, text.str()))
+    {
+      vtkWarningWithObjectMacro(this->Owner, << text.str());
+    }
+    return;
+  }
+  // The settings resolve as they did at the saved trace's start (its step,
+  // lifetimes and release speed come from its largest speed there), and
+  // its steps stay on the saved schedule; the rest is checked as a replay's.
+  for (const bp::NamedValue& value : state.field)
+  {
+    if (value.name == LargestStartSpeed)
+    {
+      facts.maxSpeed = value.value;
+    }
+  }
+  if (this->Layout.distributed())
+  {
+    facts.maxSpeed = this->Layout.globalMax(facts.maxSpeed); // the same on every process
+  }
+  this->Resolved.scheduleStart = state.scheduleStart;
 }
 
 std::string vtkBoundParticleTracerInternals::resumeFromState(
@@ -122,9 +204,11 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   // agreed on first. A file that cannot be read, or lies past this trace's
   // times, is said whatever time is asked for.
   bool resumes = this->resumesFromState(config, this->Plan.startTime());
-  resumes = resumes || !this->Initial.error.empty() ||
-    (!config.initialStateFile.empty() && !this->Plan.outputTimes().empty() &&
-      this->Initial.state.time > this->Plan.outputTimes().back() + this->Plan.epsilon());
+  // In situ a state at another time than the first step's is not used
+  // (restartInSitu says so): the times to come are not known.
+  const bool past = !this->Plan.streaming() && !this->Plan.outputTimes().empty() &&
+    this->Initial.state.time > this->Plan.outputTimes().back() + this->Plan.epsilon();
+  resumes = resumes || !this->Initial.error.empty() || (!config.initialStateFile.empty() && past);
   if (!(distributed ? this->Layout.globalMax(resumes ? 1.0 : 0.0) > 0.0 : resumes))
   {
     return std::string();
@@ -132,8 +216,7 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   const std::string named = "Initial State File '" + config.initialStateFile + "'";
   const bp::TraceState& state = this->Initial.state;
   std::string error = this->Initial.error;
-  const std::vector<double>& times = this->Plan.outputTimes();
-  if (error.empty() && !times.empty() && state.time > times.back() + this->Plan.epsilon())
+  if (error.empty() && past)
   {
     error = named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), state.time)) +
       " lies past this trace's times: it was saved by another trace.";

@@ -162,6 +162,9 @@ struct ResolvedTrace
   std::size_t particlesPerElement = 1;
   double traceBytes = 0.0;    ///< the whole trace's size (bp::traceBytes)
   double startMaxSpeed = 0.0; ///< the field's largest speed at the start (bp::FieldFacts)
+  /// The step schedule's start: the trace's start, or in situ the start of
+  /// the trace a restart's Initial State was saved by (restartInSitu).
+  double scheduleStart = 0.0;
   bp::RangeFacts rangeFacts; ///< for the GPU display's output
 };
 
@@ -421,6 +424,14 @@ private:
   /// Whether work that starts at `from` (trace time) reaches the Initial
   /// State's time without passing it: the state, read, is then gone on from.
   bool resumesFromState(const Config& config, double from);
+  /// In situ, whether the Initial State stands at the first time step handed
+  /// (a simulation restarted from its checkpoint): the trace goes on from it.
+  bool restartsAtState() const;
+  /// Before the settings are resolved, in situ: with a restart's Initial
+  /// State, the facts its trace was resolved with (the largest speed at its
+  /// start, its schedule's start) stand in for the present step's; an
+  /// Initial State at another time is not used, and said so (once).
+  void restartInSitu(const Config& config, bp::FieldFacts& facts);
   /// What of `state` differs from this trace, said by name; empty when nothing.
   std::string stateMismatch(const Config& config, const bp::TraceState& state,
     const bp::ElementTemplate& shape, const bp::Parameters& p);

@@ -288,6 +288,50 @@ for name, box in (("spanning the field", {}),
                  "the grid shrank and moved: one warning, that says where releases land (%s)" % said.messages)
 
 
+# A restart from a saved state (issue 57): a trace's State saved at step K,
+# and a new tracer whose Initial State File it is, fed from step K on as a
+# simulation restarted from its checkpoint K would feed it, ends on the bits
+# of the trace that never stopped. A state saved at another step than the
+# first one fed is not used, and said so once; one saved by other settings
+# is an error naming the setting (an empty output at that step), and the
+# trace starts at the next step without it.
+KEEP = STEPS // 2
+states = bptest.scratch("bp-insitu-state-")
+state_file = os.path.join(states, "state.vtp")
+
+
+def save_state_in_situ(settings, path):
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **settings)
+    for t in times[:KEEP + 1]:
+        feed.GetClientSideObject().SetOutput(step_of(t), t)
+        feed.MarkModified(feed)
+        tracer.UpdatePipeline(t)
+    SaveData(path, proxy=OutputPort(tracer, 2))
+    Delete(tracer)
+    Delete(feed)
+
+
+save_state_in_situ(SETTINGS, state_file)
+never_stopped, _ = trace_in_situ(lambda k, t: step_of(t), SETTINGS)
+restarted, said = trace_in_situ(lambda k, t: step_of(t) if k >= KEEP else None,
+                                dict(SETTINGS, InitialStateFile=state_file))
+bptest.check(not said.messages, "a restart in situ says nothing: %s" % said.messages)
+bptest.check(set(restarted) == set(never_stopped) and
+             all((restarted[key] == never_stopped[key]).all() for key in never_stopped),
+             "restarted in situ from step %d: the bits of the trace that never stopped" % KEEP)
+late, said = trace_in_situ(lambda k, t: step_of(t) if k >= KEEP + 2 else None,
+                           dict(SETTINGS, InitialStateFile=state_file))
+unused = [m for m in said.messages if "it is not used" in m]
+bptest.check(len(unused) == 1 and len(late) > 0, "a state at another step than the first fed: "
+             "said once, the trace starts there (%d elements): %s" % (len(late), said.messages))
+other, said = trace_in_situ(lambda k, t: step_of(t) if k >= KEEP else None,
+                            dict(SETTINGS, NumberOfElements=150, InitialStateFile=state_file))
+bptest.check(said.mentions("numberOfElements") and said.mentions("it is not used") and other,
+             "a state of other settings in situ: said by name, then the trace starts at the next "
+             "step without it (%d points): %s" % (len(other), said.messages))
+
+
 # The GPU engine behind a Bound Particles display follows the same changes of
 # grid: its picture is the one of a trace on one grid, pixel for pixel.
 def gpu_picture(name, grid_at):

@@ -19,10 +19,18 @@
  *     double_gyre_sim --plugin BoundParticles.so --script trace_elements.py
  *                     [--steps 50] [--dt 0.2] [--every 10] [--out DIR]
  *                     [--write-steps DIR] [--engine CPU|GPU|Automatic]
+ *                     [--checkpoint-every K] [--restart-from N] [--checkpoints DIR]
  *
  * With `--write-steps DIR` it also writes every step it hands over to DIR
  * (`flow.pvd` over `flow_NNNN.pvti`, over a `flow_NNNN_R.vti` piece per
  * process), so the same steps can be traced post hoc.
+ *
+ * Checkpoint and restart, as double_gyre_sim.py: `--checkpoint-every K`
+ * writes the solver's checkpoint every K steps (`checkpoint_NNNN.txt`, its
+ * step and time: the flow is analytic) while the analysis script writes the
+ * trace's state at the same step; `--restart-from N` starts from checkpoint N
+ * (in `--checkpoints DIR`, by default `--out`), handing step N first, and the
+ * trace goes on from the state saved there.
  */
 #include "vtkCPDataDescription.h"
 #include "vtkCPInputDataDescription.h"
@@ -59,8 +67,8 @@ constexpr int GhostLayers = 1;
 
 struct Options
 {
-  std::string plugin, script, out = "insitu-out", writeSteps, engine = "CPU";
-  int steps = 50, every = 10;
+  std::string plugin, script, out = "insitu-out", writeSteps, engine = "CPU", checkpoints;
+  int steps = 50, every = 10, checkpointEvery = 0, restartFrom = -1;
   double dt = 0.2;
 };
 
@@ -85,6 +93,12 @@ bool parse(int argc, char* argv[], Options& o)
       o.every = std::atoi(value.c_str());
     else if (key == "--dt")
       o.dt = std::atof(value.c_str());
+    else if (key == "--checkpoint-every")
+      o.checkpointEvery = std::atoi(value.c_str());
+    else if (key == "--restart-from")
+      o.restartFrom = std::atoi(value.c_str());
+    else if (key == "--checkpoints")
+      o.checkpoints = value;
     else
       return false;
   }
@@ -216,6 +230,31 @@ std::string writeStep(const std::string& dir, vtkImageData* grid, int step, int 
   return std::string(name) + ".pvti";
 }
 
+/// The solver's checkpoint at `step` in `dir`: the flow is analytic, so its
+/// step and time are all of the solver's state.
+std::string checkpointName(const std::string& dir, int step)
+{
+  char name[32];
+  std::snprintf(name, sizeof(name), "checkpoint_%04d.txt", step);
+  return dir + "/" + name;
+}
+
+void writeCheckpoint(const std::string& dir, int step, double time)
+{
+  std::ofstream checkpoint(checkpointName(dir, step));
+  checkpoint.precision(17);
+  checkpoint << step << " " << time << "\n";
+}
+
+/// The step checkpoint `step` in `dir` restarts from; -1 if it cannot be read.
+int readCheckpoint(const std::string& dir, int step)
+{
+  std::ifstream checkpoint(checkpointName(dir, step));
+  int saved = -1;
+  double time = 0.0;
+  return (checkpoint >> saved >> time) ? saved : -1;
+}
+
 void writeCollection(
   const std::string& dir, const std::vector<std::pair<double, std::string>>& steps)
 {
@@ -246,7 +285,8 @@ int main(int argc, char* argv[])
       std::cerr << "usage: " << argv[0]
                 << " --plugin BoundParticles.so --script trace_elements.py [--steps 50]"
                    " [--dt 0.2] [--every 10] [--out DIR] [--write-steps DIR]"
-                   " [--engine CPU|GPU|Automatic]\n";
+                   " [--engine CPU|GPU|Automatic] [--checkpoint-every K] [--restart-from N]"
+                   " [--checkpoints DIR]\n";
     }
 #if BOUNDPARTICLES_EXAMPLE_MPI
     MPI_Finalize();
@@ -267,6 +307,15 @@ int main(int argc, char* argv[])
   ::setenv("BOUNDPARTICLES_INSITU_EVERY", std::to_string(options.every).c_str(), 1);
   ::setenv("BOUNDPARTICLES_INSITU_LAST", std::to_string(options.steps - 1).c_str(), 1);
   ::setenv("BOUNDPARTICLES_INSITU_ENGINE", options.engine.c_str(), 1);
+  const std::string given = options.checkpoints.empty() ? options.out : options.checkpoints;
+  ::mkdir(given.c_str(), 0777);
+  const std::string checkpoints = ::realpath(given.c_str(), outPath) ? outPath : given;
+  ::setenv(
+    "BOUNDPARTICLES_INSITU_CHECKPOINT_EVERY", std::to_string(options.checkpointEvery).c_str(), 1);
+  ::setenv("BOUNDPARTICLES_INSITU_CHECKPOINTS", checkpoints.c_str(), 1);
+  ::setenv("BOUNDPARTICLES_INSITU_RESTART", std::to_string(options.restartFrom).c_str(), 1);
+  // The solver goes on from its checkpoint: the restart step is handed first.
+  const int first = options.restartFrom >= 0 ? readCheckpoint(checkpoints, options.restartFrom) : 0;
 
   int failed = 0;
   {
@@ -276,7 +325,12 @@ int main(int argc, char* argv[])
     vtkNew<vtkCPProcessor> processor;
     const bool started = processor->Initialize() != 0;
     vtkNew<vtkCPPythonScriptV2Pipeline> pipeline;
-    if (!started || !pipeline->Initialize(options.script.c_str()))
+    if (first < 0)
+    {
+      std::cerr << "no checkpoint " << options.restartFrom << " in " << checkpoints << "\n";
+      failed = 1;
+    }
+    else if (!started || !pipeline->Initialize(options.script.c_str()))
     {
       std::cerr << "Catalyst could not start with the script " << options.script << "\n";
       failed = 1;
@@ -286,11 +340,16 @@ int main(int argc, char* argv[])
       processor->AddPipeline(pipeline);
       Simulation simulation(rank, ranks);
       std::vector<std::pair<double, std::string>> written;
-      for (int step = 0; step < options.steps; ++step)
+      for (int step = first; step < options.steps; ++step)
       {
         const double time = step * options.dt;
         simulation.advanceTo(time);
         coprocess(processor, simulation.grid(), time, step, step == options.steps - 1);
+        if (options.checkpointEvery > 0 && step % options.checkpointEvery == 0 && step > first &&
+          rank == 0)
+        {
+          writeCheckpoint(checkpoints, step, time);
+        }
         if (!options.writeSteps.empty())
         {
           written.emplace_back(

@@ -16,6 +16,16 @@ would hold it; the tracer gathers what its own blocks need from the pieces.
 With `--write-steps DIR` it also writes every step it hands over to DIR
 (`flow.pvd` over `flow_NNNN.pvti`, over a `flow_NNNN_R.vti` piece per
 process), so that the same steps can be traced post hoc.
+
+Checkpoint and restart: with `--checkpoint-every K` the solver writes its
+checkpoint every K steps (`checkpoint_NNNN.txt`: the step and its time; the
+flow is analytic, so that is all the solver's state) and the analysis script
+writes the trace's state at the same step (`state_NNNN.vtp`, `.pvtp` under
+MPI: the tracer's State output). `--restart-from N` starts the solver from
+its checkpoint N (in `--checkpoints DIR`, by default `--out`) and the script
+sets the tracer's Initial State File to the state saved there: the trace goes
+on as if the run had never stopped (the CPU engine; the GPU display cannot
+save its state).
 """
 import argparse
 import math
@@ -37,7 +47,30 @@ parser.add_argument("--out", default="insitu-out")
 parser.add_argument("--write-steps", default="")
 parser.add_argument("--engine", default="CPU", choices=["CPU", "GPU", "Automatic"],
                     help="the tracer's engine; GPU draws the elements with the GPU engine")
+parser.add_argument("--checkpoint-every", type=int, default=0,
+                    help="write a checkpoint (the solver's and the trace's state) every K steps")
+parser.add_argument("--restart-from", type=int, default=-1,
+                    help="start from the checkpoint written at step N")
+parser.add_argument("--checkpoints", default="", help="where checkpoints are written and read "
+                    "(default: --out)")
 args = parser.parse_args()
+CHECKPOINTS = os.path.abspath(args.checkpoints or args.out)
+
+
+def checkpoint_name(step):
+    return os.path.join(CHECKPOINTS, "checkpoint_%04d.txt" % step)
+
+
+def write_checkpoint(step, t):
+    """The solver's state at this step (the flow is analytic: its step and time)."""
+    with open(checkpoint_name(step), "w") as checkpoint:
+        checkpoint.write("%d %r\n" % (step, t))
+
+
+def read_checkpoint(step):
+    with open(checkpoint_name(step)) as checkpoint:
+        saved_step, t = checkpoint.read().split()
+    return int(saved_step), float(t)
 
 DIMS = (64, 32, 2)
 BOUNDS = (0.0, 2.0, 0.0, 1.0, 0.0, 0.05)
@@ -116,16 +149,26 @@ os.environ["BOUNDPARTICLES_INSITU_OUT"] = os.path.abspath(args.out)
 os.environ["BOUNDPARTICLES_INSITU_EVERY"] = str(args.every)
 os.environ["BOUNDPARTICLES_INSITU_LAST"] = str(args.steps - 1)
 os.environ["BOUNDPARTICLES_INSITU_ENGINE"] = args.engine
+os.environ["BOUNDPARTICLES_INSITU_CHECKPOINT_EVERY"] = str(args.checkpoint_every)
+os.environ["BOUNDPARTICLES_INSITU_CHECKPOINTS"] = CHECKPOINTS
+os.environ["BOUNDPARTICLES_INSITU_RESTART"] = str(args.restart_from)
+os.makedirs(CHECKPOINTS, exist_ok=True)
+first = 0
+if args.restart_from >= 0:
+    first, _ = read_checkpoint(args.restart_from)  # the solver goes on from its state there
 bridge.initialize()
 bridge.add_pipeline(os.path.join(os.path.dirname(os.path.abspath(__file__)), "trace_elements.py"), 2)
 controller = vtkMultiProcessController.GetGlobalController()
 rank, ranks = (controller.GetLocalProcessId(), controller.GetNumberOfProcesses()) if controller else (0, 1)
 extent = piece_extent(rank, ranks)
 written = []
-for step in range(args.steps):
+for step in range(first, args.steps):
     t = step * args.dt
     grid = grid_at(t, extent)  # the solver's state at this step: this process's piece
+    # The restart step is handed first: the trace goes on from its state there.
     bridge.coprocess(t, step, grid, name="input", wholeExtent=[0, DIMS[0] - 1, 0, DIMS[1] - 1, 0, DIMS[2] - 1])
+    if args.checkpoint_every > 0 and step % args.checkpoint_every == 0 and step > first and rank == 0:
+        write_checkpoint(step, t)
     if args.write_steps:
         written.append((t, write_step(args.write_steps, grid, step, rank, ranks)))
 bridge.finalize()

@@ -6,7 +6,13 @@ picture (`elements_NNNN.png`).
 With the GPU engine (the simulation's `--engine GPU`, on one process) the
 Bound Particles display traces in the render view's GL context and draws
 the elements there, rendering every step: the elements live on the GPU, so
-only the pictures are written."""
+only the pictures are written.
+
+Checkpoints (the simulation's `--checkpoint-every K`): every K steps the
+trace's state is written with the solver's checkpoint (`state_NNNN.vtp`, or
+`.pvtp` under MPI: the tracer's State output, its third). A simulation
+restarted from its checkpoint N (`--restart-from N`) hands step N first, and
+the tracer goes on from the state saved there (its Initial State File)."""
 import os
 
 from paraview import catalyst
@@ -19,6 +25,9 @@ OUT = os.environ.get("BOUNDPARTICLES_INSITU_OUT", ".")
 EVERY = int(os.environ.get("BOUNDPARTICLES_INSITU_EVERY", "10"))
 LAST = int(os.environ.get("BOUNDPARTICLES_INSITU_LAST", "-1"))
 ENGINE = os.environ.get("BOUNDPARTICLES_INSITU_ENGINE", "CPU")
+CHECKPOINT_EVERY = int(os.environ.get("BOUNDPARTICLES_INSITU_CHECKPOINT_EVERY", "0"))
+CHECKPOINTS = os.environ.get("BOUNDPARTICLES_INSITU_CHECKPOINTS", OUT)
+RESTART = int(os.environ.get("BOUNDPARTICLES_INSITU_RESTART", "-1"))
 # ParaView writes a serial .vtp from one process only; under MPI each process
 # writes its piece of the elements under one .pvtp.
 PARALLEL = vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions() > 1
@@ -41,6 +50,19 @@ SPEEDS = [0.0, 0.35]
 # Catalyst's producer: the simulation's grid at the present step.
 flow = TrivialProducer(registrationName="input")
 tracer = BoundParticleTracer(Input=flow, Engine=ENGINE, **SETTINGS)
+
+
+def state_name(step):
+    return os.path.join(CHECKPOINTS, "state_%04d%s" % (step, EXTENSION))
+
+
+if RESTART >= 0:
+    # The simulation restarted from its checkpoint: the trace goes on from
+    # the state saved with it.
+    tracer.InitialStateFile = state_name(RESTART)
+if CHECKPOINT_EVERY > 0 and ENGINE != "CPU":
+    print("Checkpoints: the GPU display keeps its state on the GPU and cannot save it; the "
+          "trace's state is not written (run with --engine CPU to checkpoint the trace).")
 SIZE = [640, 360]
 view = CreateRenderView(ViewSize=SIZE, OrientationAxesVisibility=0)
 shown = Show(tracer, view)
@@ -66,6 +88,11 @@ def catalyst_execute(info):
         render()
     else:
         tracer.UpdatePipeline(info.time)
+    checkpoint = CHECKPOINT_EVERY > 0 and info.timestep % CHECKPOINT_EVERY == 0
+    if checkpoint and info.timestep > max(RESTART, 0) and ENGINE == "CPU":
+        # The state at the step just traced: every data time is a step
+        # boundary, so a restart from this step goes on bit for bit.
+        SaveData(state_name(info.timestep), proxy=OutputPort(tracer, 2))
     if written:
         if ENGINE == "CPU":
             SaveData(name + EXTENSION, proxy=tracer)
