@@ -29,6 +29,9 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/play_frames.py" \
 # Going back in time: Previous Frame and drags back with and without checkpoints.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/step_back.py" \
   --plugin "$plugin" | tee "$out/step_back.txt"
+# Saving a trace's state and resuming from it, against a straight trace.
+bash "$root/scripts/with-display.sh" pvpython "$root/bench/save_resume.py" \
+  --plugin "$plugin" | tee "$out/save_resume.txt"
 # The CPU output against the engine's step, array by array; the engine on 1 to 16
 # threads (those this machine has); the mesh resampler's first and kept resample.
 "$build/bin/BoundParticlesOutputBench" | tee "$out/output.txt"
@@ -78,4 +81,4 @@ bash "$root/scripts/with-display.sh" pvpython "$root/bench/stream_frames.py" \
 # The tracer's loops on the plugin's thread pool against vtkSMPTools.
 bash "$root/scripts/with-display.sh" pvpython "$root/bench/smp_loops.py" \
   --plugin "$plugin" | tee "$out/smp_loops.txt"
-echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/inertia.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/step_back.txt, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt, $out/insitu_steps.txt"
+echo "bench: wrote $out/output.txt, $out/threads.txt, $out/resample.txt, $out/inertia.txt, $out/real_data.txt, $out/real-data/*.png, $out/first-minutes/, $out/engines.txt, $out/engines.csv, $out/engines.png, $out/vs_paraview.txt, $out/play_frames.txt, $out/play_frames.png, $out/step_back.txt, $out/save_resume.txt, $out/unstructured.txt, $out/parallel_scaling.txt, $out/parallel_balance.txt, $out/gui_play.txt, $out/mesh_data.txt, $out/streaming.txt, $out/stream_frames.txt, $out/smp_loops.txt, $out/insitu_steps.txt"
