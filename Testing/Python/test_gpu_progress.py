@@ -171,7 +171,9 @@ print("aborted at %s; the render returned %.3f s after the abort was asked; said
 bptest.check(bool(asked), "no progress report reached 0.25 to abort at")
 bptest.check(shares and 0.25 <= shares[-1] < 0.6,
              "the replay stopped at %s, asked at 0.25" % shares[-1:])
-bptest.check(latency < 2.0, "the render returned %.2f s after the abort" % latency)
+# How soon the render returns after the abort is a speed, printed above and
+# quoted in docs/performance.md ("GPU replay: progress and abort"), not
+# checked here: stopping short of the end is.
 bptest.check(len(unexpected(aborted.messages)) == 1 and
              aborted.mentions("Aborted: the GPU engine stopped at"),
              "the abort was said as %r" % aborted.messages)
@@ -209,21 +211,33 @@ bptest.check(bptest.covered_fraction(continued) > 0.002, "the picture going on i
 # Back in time on the GPU engine: the display's engine resumes from a
 # checkpoint it keeps on the GPU (no replay from the start), and draws the
 # picture of a fresh trace to that time.
+def tracer_report():
+    """What the tracer recorded for the display's last update: whether it
+    replayed from the start, its steps, and the checkpoints' spacing."""
+    tracer.UpdatePropertyInformation()
+    return (tracer.GetPropertyValue("LastUpdateReplayed"),
+            tracer.GetPropertyValue("StepsInLastUpdate"),
+            tracer.GetPropertyValue("CheckpointSpacing"))
+
+
 back_seconds = render_at(times[-4])
+back_replayed, back_steps, spacing = tracer_report()
 back = picture("back")
 render_at(times[0])
 fresh_seconds = render_at(times[-4])
+_, fresh_steps, _ = tracer_report()
 fresh = picture("fresh")
 mean, pixels = bptest.image_difference(back, fresh, threshold=0)
-print("back to t = %g: %.2f s against a fresh trace's %.2f s; mean difference %.4f, "
-      "pixels differing %.4f" % (times[-4], back_seconds, fresh_seconds, mean, pixels))
-# A replay from the start takes about a fresh trace's time; a resume from the
-# checkpoint before takes at most the automatic spacing's steps plus the
-# render (0.30 of a fresh trace measured once in trixie's chroot): half tells
-# the two apart without timing the machine's load.
-bptest.check(back_seconds < 0.5 * fresh_seconds,
-             "going back took %.2f s, a fresh trace %.2f s: it replayed" % (back_seconds,
-                                                                            fresh_seconds))
+print("back to t = %g: %d steps in %.2f s (replayed: %d; checkpoints every %d steps) against a "
+      "fresh trace's %d in %.2f s; mean difference %.4f, pixels differing %.4f"
+      % (times[-4], back_steps, back_seconds, back_replayed, spacing, fresh_steps, fresh_seconds,
+         mean, pixels))
+# A resume from the checkpoint before takes at most the spacing's steps; a
+# replay would take a fresh trace's (what it costs in seconds is
+# bench/step_back.py's --engine GPU).
+bptest.check(back_replayed == 0 and spacing > 0 and 0 < back_steps <= spacing < fresh_steps,
+             "going back resumed from a checkpoint: %d steps (replayed: %d; checkpoints every %d "
+             "steps; a fresh trace %d)" % (back_steps, back_replayed, spacing, fresh_steps))
 bptest.check(mean == 0.0 and pixels == 0.0,
              "back in time drew another picture than a fresh trace (mean %.4f, pixels %.4f)"
              % (mean, pixels))
