@@ -204,11 +204,16 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   // agreed on first. A file that cannot be read, or lies past this trace's
   // times, is said whatever time is asked for.
   bool resumes = this->resumesFromState(config, this->Plan.startTime());
-  // In situ a state at another time than the first step's is not used
+  // A state outside this trace's times was saved by another trace. In situ
+  // a state at another time than the first step's is not used
   // (restartInSitu says so): the times to come are not known.
-  const bool past = !this->Plan.streaming() && !this->Plan.outputTimes().empty() &&
-    this->Initial.state.time > this->Plan.outputTimes().back() + this->Plan.epsilon();
-  resumes = resumes || !this->Initial.error.empty() || (!config.initialStateFile.empty() && past);
+  const std::vector<double>& times = this->Plan.outputTimes();
+  const double eps = this->Plan.epsilon();
+  const double saved = this->Initial.state.time;
+  const bool past = !this->Plan.streaming() && !times.empty() && saved > times.back() + eps;
+  const bool before = !this->Plan.streaming() && !times.empty() && saved < times.front() - eps;
+  resumes = resumes || !this->Initial.error.empty() ||
+    (!config.initialStateFile.empty() && (past || before));
   if (!(distributed ? this->Layout.globalMax(resumes ? 1.0 : 0.0) > 0.0 : resumes))
   {
     return std::string();
@@ -216,10 +221,11 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   const std::string named = "Initial State File '" + config.initialStateFile + "'";
   const bp::TraceState& state = this->Initial.state;
   std::string error = this->Initial.error;
-  if (error.empty() && past)
+  if (error.empty() && (past || before))
   {
-    error = named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), state.time)) +
-      " lies past this trace's times: it was saved by another trace.";
+    error = named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), saved)) +
+      (past ? " lies past this trace's times" : " lies before this trace's start") +
+      ": it was saved by another trace.";
   }
   if (distributed)
   {

@@ -2,8 +2,8 @@
 output (OutputPort(tracer, 2)), as .vtp and as .pvtp with the writers'
 defaults, then a new tracer with InitialStateFile goes on from it: its points
 and every point array equal a trace that never stopped (numpy.array_equal),
-it steps only from the state on, and a state from another setting is said
-by name with an empty output.
+it steps only from the state on, and a state from another setting, or from
+before the trace's start, is said with an empty output.
 """
 import os
 import sys
@@ -98,5 +98,15 @@ bptest.check(any("numberOfElements: the state's 300, this trace's 200" in m
                  for m in messages.messages), "said by name: %s" % messages.messages[:1])
 other.InitialStateFile = ""
 bptest.check(bptest.fetch(other, LATER).GetNumberOfPoints() > 0, "cleared, the trace starts over")
+
+# A state from before this trace's start (the same flow, its times shifted
+# later): saved by another trace, said, nothing shown; never silently unused.
+shifted = TemporalShiftScale(Input=flow, PreShift=SAVE_AT + 1.0)
+late = tracer_on(Input=shifted, InitialStateFile=os.path.join(folder, "state.vtp"))
+with bptest.CapturedMessages() as messages:
+    data = bptest.fetch(late, SAVE_AT + 5.0)
+bptest.check(data.GetNumberOfPoints() == 0 and messages.mentions("lies before this trace's start"),
+             "a state before the trace's start is said (%d points): %s"
+             % (data.GetNumberOfPoints(), messages.messages[:1]))
 
 bptest.finish()
