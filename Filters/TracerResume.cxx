@@ -293,6 +293,9 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
   state.field = this->fieldValues(config);
   if (this->Layout.distributed())
   {
+    // The exchanges of the steps this pass took (a replay to the time
+    // shown) are not the elements' update's to report.
+    this->Steppers.distributed().takeMigrated();
     // Process 0's piece holds every element; the others hold none (and no
     // field data, which a reader of the pieces would take as well).
     const std::string error = bpvtk::gatherStateElements(this->Layout.Controller, state.engine);

@@ -186,8 +186,8 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   {
     this->Update.stepsInLastUpdate = 0;
     this->Update.lastUpdateReplayed = replay;
+    this->Exchange.migrated = 0;
   }
-  this->Exchange.migrated = 0;
   this->Held.readThisUpdate = false;
   if (this->Update.decision.resume >= 0)
   {
