@@ -90,7 +90,7 @@ std::string WorkQueue::loadState(const EngineState& state)
 {
   if (this->ConfiguredLayout.empty())
   {
-    return "no system is configured";
+    return "the GPU engine cannot resume a state before its system is configured";
   }
   std::string error = checkEngineState(state, this->ConfiguredLayout, this->Configured);
   if (error.empty())

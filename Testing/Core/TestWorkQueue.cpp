@@ -345,7 +345,8 @@ TEST(WorkQueue, RecordsAStateToLoadAfterTheGpuEnginesChecks)
   ASSERT_EQ(engine.configure(cross, p), "");
   engine.initialize(bp::serialRunner());
   const bp::EngineState saved = engine.saveState();
-  EXPECT_EQ(tracer->loadState(saved), "no system is configured");
+  EXPECT_EQ(tracer->loadState(saved),
+    "the GPU engine cannot resume a state before its system is configured");
   ASSERT_EQ(tracer->configure(cross, p), "");
   tracer->take();
   // Generations past a float's exact integers, a pending Along Flow turn.
