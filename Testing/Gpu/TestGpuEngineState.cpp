@@ -43,9 +43,16 @@ bp::FieldSlice slice(const bp::GridGeometry& g, double t)
   return s;
 }
 
+enum class Kind
+{
+  Massless,
+  Heavy,   ///< heavy particles: the record's slips
+  SuperSet ///< a super set's tube of Strip4 elements (links built at configure)
+};
+
 /// The unsteady double gyre, elements placed again several times over 60
-/// steps, with poses, a trail of 3 poses and, `inertial`, heavy particles:
-/// every array of the record holds something.
+/// steps, with poses, a trail of 3 poses and heavy particles or a super set
+/// as `kind` says: every array of the record holds something.
 struct System
 {
   bp::GridGeometry g = grid(41, 21, 6, { 0, 2, 0, 1, 0, 0.25 });
@@ -54,7 +61,7 @@ struct System
   bp::Parameters p;
   static constexpr double dt = 0.01;
 
-  explicit System(bool inertial)
+  explicit System(Kind kind)
   {
     p.numberOfElements = 333;
     p.elementSize = 0.1f;
@@ -66,7 +73,12 @@ struct System
     p.trackPoses = true;
     p.trailLength = 3;
     p.trailInterval = 0.02;
-    if (inertial)
+    if (kind == Kind::SuperSet)
+    {
+      shape = bp::builtinTemplate(bp::BuiltinShape::Strip4);
+      p.linking = bp::Linking::Tube;
+    }
+    if (kind == Kind::Heavy)
     {
       p.inertia = bp::Inertia::MaxeyRiley;
       p.responseTime = 0.05f;
@@ -182,7 +194,7 @@ void expectSameBits(const bp::EngineState& a, const bp::EngineState& b)
   EXPECT_EQ(a.emitterMax, b.emitterMax);
 }
 
-class GpuEngineState : public ::testing::TestWithParam<bool>
+class GpuEngineState : public ::testing::TestWithParam<Kind>
 {
 };
 
@@ -252,6 +264,9 @@ TEST_P(GpuEngineState, AStateReadBackGoesOnBitForBit)
   ASSERT_EQ(straight.readState(a), "");
   ASSERT_EQ(resumed.readState(b), "");
   expectSameBits(b, a);
+  // The steps after the state moved the elements: the state is what they went on from.
+  const auto moved = differences(a, at30);
+  EXPECT_GT(moved.at("Positions"), 1e-3);
   std::vector<float> x, y;
   straight.read(&x, nullptr, nullptr);
   resumed.read(&y, nullptr, nullptr);
@@ -260,13 +275,20 @@ TEST_P(GpuEngineState, AStateReadBackGoesOnBitForBit)
   resumed.release();
 }
 
-INSTANTIATE_TEST_SUITE_P(Particles, GpuEngineState, ::testing::Values(false, true),
-  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Heavy" : "Massless"; });
+std::string kindName(const ::testing::TestParamInfo<Kind>& info)
+{
+  return info.param == Kind::Heavy ? "Heavy"
+    : info.param == Kind::SuperSet ? "SuperSet"
+                                   : "Massless";
+}
+
+INSTANTIATE_TEST_SUITE_P(Systems, GpuEngineState,
+  ::testing::Values(Kind::Massless, Kind::Heavy, Kind::SuperSet), kindName);
 
 TEST(GpuStepperState, TheCommittedStateIsTheSavedCopyWhileAShortStepIsShown)
 {
   ASSERT_TRUE(bp::haveSharedContext());
-  const System s(false);
+  const System s(Kind::Massless);
   bp::GpuStepper stepper;
   ASSERT_EQ(stepper.configure(s.shape, s.p), "");
   ASSERT_EQ(stepper.setField(s.field), "");
@@ -288,7 +310,7 @@ TEST(GpuStepperState, TheCommittedStateIsTheSavedCopyWhileAShortStepIsShown)
 TEST(GpuEngineStateRefusal, SaysWhatTheGpuCannotHold)
 {
   ASSERT_TRUE(bp::haveSharedContext());
-  const System s(false);
+  const System s(Kind::Massless);
   bp::Engine cpu;
   s.start(cpu);
   s.run(cpu, 0, 5);
@@ -337,7 +359,7 @@ TEST(GpuEngineStateQueue, ADisplaysReplayLoadsTheState)
   // The filter's side records the load into the display's queue; the
   // display's replay uploads it into its GPU engine.
   ASSERT_TRUE(bp::haveSharedContext());
-  const System s(false);
+  const System s(Kind::Massless);
   bp::Engine cpu;
   s.start(cpu);
   s.run(cpu, 0, 12);
