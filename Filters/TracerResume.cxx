@@ -250,11 +250,6 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
       ". Set the tracer and its input as they were when it was saved, or clear Initial State "
       "File to trace from the start.";
   }
-  if (error.empty() && !this->stepper().particles())
-  {
-    error = "Initial State File: the GPU engine cannot resume a saved state yet; set Engine to "
-            "CPU to go on from it.";
-  }
   if (error.empty())
   {
     const std::string refused = this->stepper().loadState(state.engine);

@@ -245,8 +245,9 @@ public:
   /// tracer's settings and its input must be those it was saved with: a
   /// state that differs (another setting, template, grid or field, or a file
   /// cut short, altered or saved as ASCII) fails the update with a message
-  /// that names the difference. The CPU engine resumes (the GPU engine
-  /// cannot yet). Empty (default): none.
+  /// that names the difference. Both engines resume (the GPU engine in the
+  /// Bound Particles display, within the engines' agreement); only the CPU
+  /// engine saves. Empty (default): none.
   vtkSetStdStringFromCharMacro(InitialStateFile);
   vtkGetCharFromStdStringMacro(InitialStateFile);
   ///@}

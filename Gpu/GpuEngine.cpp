@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuEngine.h"
 
+#include "GpuEngineState.h"
 #include "GpuSystem.h"
 
 #include <algorithm>
@@ -164,6 +165,16 @@ void GpuEngine::saveState()
 void GpuEngine::restoreState()
 {
   this->I->system.state.restore(this->I->system.passes, this->I->system.layout);
+}
+
+std::string GpuEngine::readState(EngineState& state, bool saved) const
+{
+  return readEngineState(this->I->system, saved, state);
+}
+
+std::string GpuEngine::loadState(const EngineState& state)
+{
+  return loadEngineState(this->I->system, state);
 }
 
 void GpuEngine::keepCheckpoint(long long steps)

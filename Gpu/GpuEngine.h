@@ -135,6 +135,21 @@ public:
   void saveState();
   void restoreState();
 
+  /// @name A state to save and resume (Core/Engine/EngineState.h, GpuEngineState.h)
+  ///@{
+  /// The state at the step boundary as the CPU engine's Engine::saveState()
+  /// gives it (with `saved`, saveState()'s copy: a short step is shown past
+  /// it); empty on success, otherwise why not.
+  std::string readState(EngineState& state, bool saved = false) const;
+  /// Replaces every element by the state's, with its trail ring and emitter
+  /// box, on an engine configured with the template and parameters it was
+  /// saved with: a state the CPU engine saved goes on here, one read here
+  /// goes on bit for bit. Refuses (nothing changed) a state that is not
+  /// whole or that the GPU cannot hold (bp::gpuStateRefusal): empty on
+  /// success, otherwise why not.
+  std::string loadState(const EngineState& state);
+  ///@}
+
   /// @name Checkpoints: copies of the state saveState() copies and of the
   /// whole trail ring, kept on the GPU by texture copies (no read-back),
   /// keyed by the steps from the start (Stepper::keepCheckpoint). A

@@ -542,6 +542,35 @@ void GpuPasses::readParticles(
     }
 }
 
+void GpuPasses::writeTexture(
+  GLuint texture, int width, int height, const std::vector<float>& texels) const
+{
+  // A render window's context may have any texture bound on its active unit.
+  GLint bound = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  TightUnpack unpack;
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+  glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+}
+
+void GpuPasses::writeParticles(GLuint texture, const GpuLayout& layout,
+  const std::vector<float>& xyz, const std::vector<float>* w) const
+{
+  std::vector<float> texels;
+  this->readTexture(texture, layout.particleTextureWidth, layout.particleTextureHeight, texels);
+  const int elements = layout.elementCount, n = layout.particlesPerElement;
+  for (int e = 0; e < elements; ++e)
+    for (int i = 0; i < n; ++i)
+    {
+      float* t = &texels[4 * layout.particleTexel(e, i)];
+      const std::size_t id = std::size_t(e) * n + i;
+      std::copy(xyz.begin() + std::ptrdiff_t(3 * id), xyz.begin() + std::ptrdiff_t(3 * id + 3), t);
+      t[3] = w ? (*w)[id] : 0.0f;
+    }
+  this->writeTexture(texture, layout.particleTextureWidth, layout.particleTextureHeight, texels);
+}
+
 void GpuPasses::clearTexture(GLuint texture, const float* value) const
 {
   glBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer.get());

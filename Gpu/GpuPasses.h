@@ -188,6 +188,14 @@ public:
   /// `xyz` (3 per particle) and w into `w` (null to skip either).
   void readParticles(
     GLuint texture, const GpuLayout& layout, std::vector<float>* xyz, std::vector<float>* w) const;
+  /// Writes a texture's texels, 4 floats each, row by row (readTexture's
+  /// inverse: a saved state's upload, GpuEngine::loadState).
+  void writeTexture(GLuint texture, int width, int height, const std::vector<float>& texels) const;
+  /// Writes a particle texture from `xyz` (3 per particle) and `w` (1 per
+  /// particle; null: 0) in the CPU engine's element-major order
+  /// (readParticles' inverse); its padding texels keep their values.
+  void writeParticles(GLuint texture, const GpuLayout& layout, const std::vector<float>& xyz,
+    const std::vector<float>* w) const;
   /// Copies a texture's texels into another of the same size (a blit: GL 3.3).
   void copyTexture(GLuint from, GLuint to, int width, int height) const;
   /// Sets every texel of a texture to `value` (4 floats), without an upload.

@@ -272,6 +272,40 @@ bool GpuState::resumeCheckpoint(const GpuPasses& passes, const GpuLayout& layout
   return true;
 }
 
+GpuState::Boundary GpuState::boundary(bool saved) const
+{
+  Boundary b;
+  const bool copy = saved && this->Copy.particles;
+  b.particles = copy ? this->Copy.particles.get() : this->particles.current();
+  b.slips = copy ? this->Copy.slips.get() : this->slips.get();
+  for (int row = 0; row < ElementTextureCount; ++row)
+  {
+    const std::size_t r = std::size_t(row);
+    b.perElement[r] = copy ? this->Copy.perElement[r].get() : this->perElement[r].current();
+  }
+  for (int k = 0; k < this->trail.length(); ++k)
+  {
+    // The one slot a step since save() overwrote is in the copy.
+    const bool kept = copy && this->Copy.trailSlot == k;
+    b.trailParticles.push_back(
+      kept ? this->Copy.trailParticles.get() : this->trail.particles[std::size_t(k)]);
+    b.trailElements.push_back(
+      kept ? this->Copy.trailElements.get() : this->trail.elements[std::size_t(k)]);
+  }
+  b.trailTimes = copy ? this->Copy.trailTimes : this->trail.times;
+  b.trailNewest = copy ? this->Copy.trailNewest : this->trail.newest;
+  return b;
+}
+
+void GpuState::setTrail(const std::vector<double>& times, int newest)
+{
+  this->trail.times = times;
+  this->trail.newest = newest;
+  // What save() kept is of another state now.
+  this->Copy.watchesTrail = false;
+  this->Copy.trailSlot = -1;
+}
+
 double GpuState::checkpointBytes(const GpuLayout& layout) const
 {
   const double particleTexels =

@@ -96,6 +96,26 @@ public:
   double checkpointBytes(const GpuLayout& layout) const;
   ///@}
 
+  /// @name A state to save and resume (GpuEngineState.h)
+  ///@{
+  /// The textures that hold the state at a step boundary, and the trail's
+  /// times and newest slot: the current ones, or with `saved` those of
+  /// save()'s copy (a short step shown past the boundary; the current ones
+  /// before any save()).
+  struct Boundary
+  {
+    GLuint particles = 0, slips = 0;
+    std::array<GLuint, ElementTextureCount> perElement{};
+    std::vector<GLuint> trailParticles, trailElements; ///< by slot
+    std::vector<double> trailTimes;
+    int trailNewest = -1;
+  };
+  Boundary boundary(bool saved) const;
+  /// The trail ring's times and newest slot, after its textures were written
+  /// (a loaded state): a later restore() keeps them.
+  void setTrail(const std::vector<double>& times, int newest);
+  ///@}
+
   /// Empties the trail ring (Engine::initialize): no time recorded, every
   /// slot's generations -1 and positions 0.
   void clearTrail(const GpuPasses& passes);

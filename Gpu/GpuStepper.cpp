@@ -45,6 +45,16 @@ void GpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<fl
   this->Gpu.setEmitter(min, max);
 }
 
+bool GpuStepper::committedState(EngineState& state)
+{
+  return this->Gpu.readState(state, this->cursor.showsPartialStep).empty();
+}
+
+std::string GpuStepper::loadState(const EngineState& state)
+{
+  return this->Gpu.loadState(state);
+}
+
 void GpuStepper::keepCheckpoint(long long steps, double time)
 {
   this->Gpu.keepCheckpoint(steps);

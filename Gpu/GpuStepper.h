@@ -40,6 +40,11 @@ public:
   void resumeCheckpoint(long long steps) override;
   void dropCheckpoints() override;
   double checkpointBytes() const override { return this->Gpu.checkpointBytes(); }
+  /// GpuEngine::readState() of the committed boundary (save()'s copy while
+  /// cursor.showsPartialStep, as CpuStepper): a read-back.
+  bool committedState(EngineState& state) override;
+  /// GpuEngine::loadState(): an upload.
+  std::string loadState(const EngineState& state) override;
   /// Null: the state lives in GPU textures (engine().read() fetches it).
   const Engine* particles() override { return nullptr; }
 

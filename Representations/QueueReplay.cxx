@@ -28,7 +28,9 @@ void QueueReplay::run(
     if (!error.empty())
     {
       this->Failed = true;
+      const bool load = call.kind == bp::EngineCall::Kind::LoadState;
       listener.failed(std::string(configure ? "The GPU engine cannot run this trace: "
+                          : load            ? "The GPU engine cannot resume this state: "
                                             : "The GPU engine cannot hold this field: ") +
         error + ". This display draws the CPU result from the next update on.");
     }

@@ -5,10 +5,11 @@
  * engine, and keeps what a failure means for the calls after it.
  *
  * vtkBoundParticleTracer records engine calls (configure, setField,
- * initialize, step, save, restore) into the display's bp::WorkQueue;
- * vtkOpenGLBoundParticleMapper hands each render's calls to this replay,
- * with the render window's context current. Only configure and setField can
- * fail (the system or the field does not fit the GPU): the calls after a
+ * initialize, step, save, restore, load a saved state) into the display's
+ * bp::WorkQueue; vtkOpenGLBoundParticleMapper hands each render's calls to
+ * this replay, with the render window's context current. Only configure,
+ * setField and a state's load can fail (the system or the field does not
+ * fit the GPU; the tracer checked the state first): the calls after a
  * failure would continue from nothing, so they are skipped until the next
  * configure starts over. The mapper hears of each configure that succeeded
  * (to make its draw tables) and of each failure (to report it and make the

@@ -62,4 +62,63 @@ double gpuCheckpointBytes(
   return 16.0 * texels; // RGBA32F
 }
 
+std::string gpuStateRefusal(const EngineState& state, std::size_t elements)
+{
+  const std::size_t E = state.elementCount();
+  if (E != elements)
+  {
+    return "the GPU engine resumes a whole state, all " + std::to_string(elements) +
+      " elements; this one holds " + std::to_string(E);
+  }
+  // Each array's first word in a record, by name.
+  std::size_t generations = 0, flags = 0, trail = 0, trailSlots = 0, offset = 0;
+  bool found[2] = { false, false };
+  for (const StateArray& array : state.layout)
+  {
+    if (array.name == "Generations")
+    {
+      generations = offset;
+      found[0] = true;
+    }
+    else if (array.name == "ResetFlags")
+    {
+      flags = offset;
+      found[1] = true;
+    }
+    else if (array.name == "TrailGenerations")
+    {
+      trail = offset;
+      trailSlots = array.components;
+    }
+    offset += array.components;
+  }
+  if (!found[0] || !found[1])
+  {
+    return "the state holds no Generations or ResetFlags";
+  }
+  for (std::size_t e = 0; e < E; ++e)
+  {
+    const std::uint32_t* record = state.records.data() + e * state.recordWords;
+    std::uint32_t highest = record[generations];
+    for (std::size_t s = 0; s < trailSlots; ++s)
+    {
+      const std::uint32_t g = record[trail + s];
+      highest = g == NoTrailPose ? highest : std::max(highest, g);
+    }
+    if (highest > GpuMaxGeneration)
+    {
+      return "element " + std::to_string(record[0]) + " is in its generation " +
+        std::to_string(highest) + ", beyond the " + std::to_string(GpuMaxGeneration) +
+        " the GPU engine holds exactly (a float); resume it with Engine CPU";
+    }
+    if (record[flags] & AlignPending)
+    {
+      return "element " + std::to_string(record[0]) +
+        " waits for its Along Flow turn (a state saved inside a distributed step), which the GPU "
+        "engine does not hold";
+    }
+  }
+  return std::string();
+}
+
 } // namespace bp

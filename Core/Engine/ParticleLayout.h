@@ -9,6 +9,7 @@
 #define BoundParticles_ParticleLayout_h
 
 #include "ElementTemplate.h"
+#include "EngineState.h"
 
 #include <cstddef>
 #include <string>
@@ -57,6 +58,20 @@ constexpr int GpuElementTextureRows = 5;
  */
 double gpuCheckpointBytes(
   std::size_t elements, std::size_t particlesPerElement, int trailLength, bool inertial);
+
+/// The largest generation the GPU engine holds exactly: its element state
+/// keeps the generation in a float (GpuStateLayout.h's ElementTexture::State).
+constexpr std::uint32_t GpuMaxGeneration = 1u << 24;
+
+/**
+ * What keeps `state`, which checkEngineState found whole for its engine, from
+ * loading into the GPU engine of `elements` elements (GpuEngine::loadState):
+ * not every element of the system (the GPU engine holds them all, ids 0 to
+ * elements - 1), a generation, or a trail pose's, above GpuMaxGeneration,
+ * an element whose Along Flow turn is pending (AlignPending: the GPU engine
+ * has no such flag). Empty when it can.
+ */
+std::string gpuStateRefusal(const EngineState& state, std::size_t elements);
 
 } // namespace bp
 

@@ -36,6 +36,8 @@ std::string EngineCall::applyTo(Stepper& target) const
     case Kind::DropCheckpoints:
       target.dropCheckpoints();
       break;
+    case Kind::LoadState:
+      return target.loadState(*this->state);
   }
   return std::string();
 }

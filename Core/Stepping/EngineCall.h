@@ -32,7 +32,8 @@ struct EngineCall
     SetEmitter,       ///< parameters.emitterMin, emitterMax
     KeepCheckpoint,   ///< steps, t: keep a checkpoint of the state (Stepper::keepCheckpoint)
     ResumeCheckpoint, ///< steps: go back to that checkpoint
-    DropCheckpoints   ///< drop every checkpoint
+    DropCheckpoints,  ///< drop every checkpoint
+    LoadState         ///< state: replace the elements by a saved state's (Stepper::loadState)
   };
   Kind kind = Kind::Step;
   double t = 0.0, h = 0.0;
@@ -43,6 +44,7 @@ struct EngineCall
   std::shared_ptr<const ElementTemplate> shape;
   Parameters parameters;
   std::shared_ptr<const VectorField> field;
+  std::shared_ptr<const EngineState> state;
 
   /// Makes this call on `target`; empty on success, otherwise its error.
   std::string applyTo(Stepper& target) const;

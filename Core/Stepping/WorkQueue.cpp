@@ -21,6 +21,8 @@ std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters&
   this->Checkpoints.clear();
   Parameters gpu = parameters;
   gpu.trackPoses = true; // as GpuStepper::configure
+  this->Configured = gpu;
+  this->ConfiguredLayout = Engine::stateLayout(shape, gpu);
   const double cpuBytes = 4.0 * double(Engine::recordWords(shape, gpu));
   const double elements = double(std::max<std::size_t>(parameters.numberOfElements, 1));
   this->CheckpointBytes = std::max(cpuBytes * elements,
@@ -82,6 +84,28 @@ void WorkQueue::setEmitter(const std::array<float, 3>& min, const std::array<flo
   call.parameters.emitterMin = min;
   call.parameters.emitterMax = max;
   this->Pending.push_back(call);
+}
+
+std::string WorkQueue::loadState(const EngineState& state)
+{
+  if (this->ConfiguredLayout.empty())
+  {
+    return "the GPU engine cannot resume a state before its system is configured";
+  }
+  std::string error = checkEngineState(state, this->ConfiguredLayout, this->Configured);
+  if (error.empty())
+  {
+    error = gpuStateRefusal(state, this->Configured.numberOfElements);
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  EngineCall call;
+  call.kind = EngineCall::Kind::LoadState;
+  call.state = std::make_shared<const EngineState>(state);
+  this->Pending.push_back(std::move(call));
+  return std::string();
 }
 
 void WorkQueue::keepCheckpoint(long long steps, double time)

@@ -75,6 +75,12 @@ public:
   void save() override;
   void restore() override;
   void setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max) override;
+  /// Checks that the state loads into the engine last configured, the GPU
+  /// engine's limits included (bp::gpuStateRefusal), so that a refusal is the
+  /// tracer's to say, then records the call (EngineCall::Kind::LoadState)
+  /// that the renderer's GPU engine uploads. committedState() stays false:
+  /// the state lives in the renderer's textures.
+  std::string loadState(const EngineState& state) override;
   bool readsAhead() const override { return this->Report.streamTimeSteps; }
   void offerUpcoming(const FieldSlice& slice) override { this->Upcoming = slice; }
 
@@ -143,6 +149,10 @@ private:
   bool AutomaticOnCpu = false;
   FieldSlice Upcoming;
   double CheckpointBytes = 0.0;
+  /// The system last configured, as the GPU engine runs it (trackPoses on):
+  /// what loadState() checks a state against.
+  Parameters Configured;
+  std::vector<StateArray> ConfiguredLayout;
   /// The engineState counts this queue's cursor has taken in (settleCursor).
   std::uint64_t SettledStops = 0;
   std::uint64_t SettledLosses = 0;

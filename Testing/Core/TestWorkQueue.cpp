@@ -330,4 +330,50 @@ TEST(WorkQueue, TheEnginesRecordWordsNeedNoConfiguredEngine)
     EXPECT_EQ(record.size(), engine.recordWords());
   }
 }
+
+TEST(WorkQueue, RecordsAStateToLoadAfterTheGpuEnginesChecks)
+{
+  // The tracer hears a refusal at once: the display's upload cannot answer it.
+  std::shared_ptr<bp::WorkQueue> tracer;
+  bp::DisplayWorkQueue display = bp::newDisplayWorkQueue(4, tracer);
+  bp::Parameters p;
+  p.numberOfElements = 6;
+  p.trailLength = 2;
+  p.trailInterval = 0.1;
+  const bp::ElementTemplate cross = bp::builtinTemplate(bp::BuiltinShape::Cross);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(cross, p), "");
+  engine.initialize(bp::serialRunner());
+  const bp::EngineState saved = engine.saveState();
+  EXPECT_EQ(tracer->loadState(saved),
+    "the GPU engine cannot resume a state before its system is configured");
+  ASSERT_EQ(tracer->configure(cross, p), "");
+  tracer->take();
+  // Generations past a float's exact integers, a pending Along Flow turn.
+  bp::EngineState old = saved;
+  old.records[2 * old.recordWords + 1] = bp::GpuMaxGeneration + 1;
+  EXPECT_NE(tracer->loadState(old).find("generation 16777217"), std::string::npos);
+  bp::EngineState pending = saved;
+  pending.records[5 * pending.recordWords + 2] |= bp::AlignPending;
+  EXPECT_NE(tracer->loadState(pending).find("Along Flow"), std::string::npos);
+  bp::EngineState part = saved;
+  part.records.resize(part.records.size() - part.recordWords);
+  EXPECT_NE(tracer->loadState(part), "");
+  EXPECT_FALSE(tracer->hasPending());
+  // A state it can hold is recorded, shared, not copied again.
+  ASSERT_EQ(tracer->loadState(saved), "");
+  std::vector<bp::EngineCall> calls = display.writer.take();
+  ASSERT_EQ(calls.size(), 1u);
+  EXPECT_EQ(calls[0].kind, bp::EngineCall::Kind::LoadState);
+  ASSERT_TRUE(calls[0].state);
+  EXPECT_EQ(calls[0].state->records, saved.records);
+  // Its state lives in the renderer: the queue saves none.
+  bp::EngineState none;
+  EXPECT_FALSE(tracer->committedState(none));
+  // Applied to a CPU stepper (as a GPU one in the display), it loads.
+  bp::CpuStepper cpu;
+  ASSERT_EQ(cpu.configure(cross, p), "");
+  cpu.initialize(0.0);
+  EXPECT_EQ(calls[0].applyTo(cpu), "");
+}
 } // namespace
