@@ -235,7 +235,11 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
       return seedError;
     }
   }
-  this->warnOfReleaseWindow(p);
+  if (!this->InSitu.restart)
+  {
+    // A restart's only time is its first step: its elements came before.
+    this->warnOfReleaseWindow(p);
+  }
   // The engine's own checks first: they name the setting to change.
   const std::string invalid = bp::Engine::validate(shape, p);
   if (!invalid.empty())

@@ -33,11 +33,26 @@ double hash32(const void* bytes, std::size_t size)
 
 /// The named field value a restart in situ resolves its settings from.
 const char* const LargestStartSpeed = "largest speed at the start";
+/// The named field value of the trace's direction.
+const char* const TimeDirectionValue = "Time Direction (0 Forward, 1 Backward)";
 /// The field's values that say its time steps: in situ, those handed since
 /// the trace started, which a restart's are not.
 bool namesTimeSteps(const std::string& name)
 {
   return name == "time steps" || name == "time steps (hash)";
+}
+
+/// The value named `name` in `values`; `otherwise` where there is none.
+double namedValue(const std::vector<bp::NamedValue>& values, const char* name, double otherwise)
+{
+  for (const bp::NamedValue& value : values)
+  {
+    if (value.name == name)
+    {
+      return value.value;
+    }
+  }
+  return otherwise;
 }
 
 /// `values` without those `namesTimeSteps`.
@@ -78,7 +93,7 @@ std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues(const C
   values.push_back({ "time steps", double(times.size()) });
   values.push_back({ "time steps (hash)", hash32(times.data(), times.size() * sizeof(double)) });
   values.push_back({ LargestStartSpeed, this->Resolved.startMaxSpeed });
-  values.push_back({ "Time Direction (0 Forward, 1 Backward)", double(this->Plan.direction()) });
+  values.push_back({ TimeDirectionValue, double(this->Plan.direction()) });
   // Pieces trace a little differently from a whole (test_parallel.py's
   // tolerance): the same number of processes goes on bit for bit.
   values.push_back({ "processes", double(this->Layout.Pieces) });
@@ -112,9 +127,11 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
   {
     std::ostringstream text;
     text.precision(17);
-    text << "its trace started at t = " << bp::traceTime(this->Plan.direction(), state.scheduleStart)
-         << " with steps of " << state.dt << "; this one starts at t = " << this->startTime()
-         << " with steps of " << this->Resolved.dt;
+    text << "its trace started at t = "
+         << bp::traceTime(this->Plan.direction(), state.scheduleStart) << " with steps of "
+         << state.dt << "; this one starts at t = "
+         << bp::traceTime(this->Plan.direction(), this->Resolved.scheduleStart) << " with steps of "
+         << this->Resolved.dt;
     difference = text.str();
   }
   // Then the records themselves (ids, layout, trail ring).
@@ -149,56 +166,69 @@ bool vtkBoundParticleTracerInternals::restartsAtState() const
 void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::FieldFacts& facts)
 {
   this->Resolved.scheduleStart = this->Plan.startTime();
+  this->InSitu.restart = false;
   if (!this->Plan.streaming() || config.initialStateFile.empty())
   {
     return;
   }
-  this->Initial.take(config.initialStateFile);
-  if (!this->Initial.error.empty())
+  // Each decision is taken alike on every process (collective, in order).
+  const auto agreed = [this](bool everywhere)
   {
-    return; // said by resumeFromState, on every process alike
+    return this->Layout.distributed() ? this->Layout.globalMax(everywhere ? 0.0 : 1.0) == 0.0
+                                      : everywhere;
+  };
+  this->Initial.take(config.initialStateFile);
+  // A state tried once in this run (gone on from, refused, or not used) is
+  // not tried again when the trace starts again at a later step (a setting
+  // changed): the later step is not a restart.
+  if (agreed(this->Initial.stamp == this->InSitu.stateTried))
+  {
+    return;
+  }
+  if (!agreed(this->Initial.error.empty()))
+  {
+    this->InSitu.restart = true; // resumeFromState says why, at this step only
+    return;
   }
   const bp::TraceState& state = this->Initial.state;
-  bool restarts = this->restartsAtState();
-  if (this->Layout.distributed())
+  if (!agreed(this->restartsAtState()))
   {
-    restarts = this->Layout.globalMax(restarts ? 0.0 : 1.0) == 0.0; // collective: all or none
-  }
-  if (!restarts)
-  {
-    std::ostringstream text;
-    text << "Initial State File '" << config.initialStateFile << "' stands at t = " << state.time
-         << ", but the first time step handed in situ is t = " << this->Plan.startTime()
-         << ": it is not used, and the trace starts at t = " << this->Plan.startTime()
-         << ". A simulation restarted from its checkpoint must hand the step the state was "
-            "saved at first.";
-    if (this->Said.first(bpvtk::Topic::InitialState, text.str()))
-    {
-      vtkWarningWithObjectMacro(this->Owner, << text.str());
-    }
+    this->InSitu.stateTried = this->Initial.stamp;
+    vtkWarningWithObjectMacro(this->Owner,
+      "Initial State File '"
+        << config.initialStateFile << "' stands at t = " << state.time
+        << ", but the first time step handed in situ is t = " << this->Plan.startTime()
+        << ": it is not used, and the trace starts at t = " << this->Plan.startTime()
+        << ". A simulation restarted from its checkpoint must hand the step the state was "
+           "saved at first.");
     return;
   }
   // The settings resolve as they did at the saved trace's start (its step,
   // lifetimes and release speed come from its largest speed there), and
   // its steps stay on the saved schedule; the rest is checked as a replay's.
-  for (const bp::NamedValue& value : state.field)
-  {
-    if (value.name == LargestStartSpeed)
-    {
-      facts.maxSpeed = value.value;
-    }
-  }
+  facts.maxSpeed = namedValue(state.field, LargestStartSpeed, facts.maxSpeed);
   if (this->Layout.distributed())
   {
     facts.maxSpeed = this->Layout.globalMax(facts.maxSpeed); // the same on every process
   }
   this->Resolved.scheduleStart = state.scheduleStart;
+  this->InSitu.restart = true;
 }
 
 std::string vtkBoundParticleTracerInternals::resumeFromState(
   const Config& config, const bp::ElementTemplate& shape, const bp::Parameters& p)
 {
   this->ResumedSteps = -1;
+  if (this->Plan.streaming() && !this->InSitu.restart)
+  {
+    return std::string(); // in situ only a restart goes on from a state (restartInSitu)
+  }
+  if (this->Plan.streaming())
+  {
+    // Gone on from or refused here, it is not tried again in this run (a
+    // replay that asked for more ghost layers first tries it again).
+    this->InSitu.stateTried = this->Initial.stamp;
+  }
   const bool distributed = this->Layout.distributed();
   // Every branch below is taken alike on every process: what each read is
   // agreed on first. A file that cannot be read, or lies past this trace's
@@ -223,9 +253,13 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   std::string error = this->Initial.error;
   if (error.empty() && (past || before))
   {
-    error = named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), saved)) +
-      (past ? " lies past this trace's times" : " lies before this trace's start") +
-      ": it was saved by another trace.";
+    // A state of the other direction has its time in that direction's terms.
+    const double direction = double(this->Plan.direction());
+    error = namedValue(state.field, TimeDirectionValue, direction) != direction
+      ? named + " was saved by a trace of the other Time Direction: set Time Direction as it was."
+      : named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), saved)) +
+        (past ? " lies past this trace's times" : " lies before this trace's start") +
+        ": it was saved by another trace.";
   }
   if (distributed)
   {

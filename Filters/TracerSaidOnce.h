@@ -30,8 +30,7 @@ enum class Topic
   OutOfPlane,  ///< a flat field's crossing vectors
   GridChange,  ///< in situ, a change of grid
   CellVectors, ///< point Vectors made of a cell array
-  Emitter,     ///< the emitter box moved into a changed grid (releaseIntoGrid)
-  InitialState ///< in situ, an Initial State File not at the first step handed
+  Emitter      ///< the emitter box moved into a changed grid (releaseIntoGrid)
 };
 
 class SaidOnce

@@ -143,6 +143,10 @@ struct InSituTimeLine
   bp::StreamTimeLine stream;
   vtkMTimeType settingsTime = 0;
   std::vector<double> grid;
+  /// The Initial State File a restart tried (TracerResume.cxx): in this run
+  /// it is not tried again.
+  bpvtk::StateFileStamp stateTried;
+  bool restart = false; ///< this replay goes on from the Initial State File
 };
 
 /// In parallel, the element exchange of the last steps.

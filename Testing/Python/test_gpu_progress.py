@@ -235,7 +235,7 @@ print("back to t = %g: %d steps in %.2f s (replayed: %d; checkpoints every %d st
 # A resume from the checkpoint before takes at most the spacing's steps; a
 # replay would take a fresh trace's (what it costs in seconds is
 # bench/step_back.py's --engine GPU).
-bptest.check(back_replayed == 0 and spacing > 0 and 0 < back_steps <= spacing < fresh_steps,
+bptest.check(back_replayed == 0 and spacing > 0 and back_steps <= spacing < fresh_steps,
              "going back resumed from a checkpoint: %d steps (replayed: %d; checkpoints every %d "
              "steps; a fresh trace %d)" % (back_steps, back_replayed, spacing, fresh_steps))
 bptest.check(mean == 0.0 and pixels == 0.0,
