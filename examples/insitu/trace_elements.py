@@ -56,10 +56,13 @@ def state_name(step):
     return os.path.join(CHECKPOINTS, "state_%04d%s" % (step, EXTENSION))
 
 
-if RESTART >= 0:
+if RESTART >= 0 and os.path.exists(state_name(RESTART)):
     # The simulation restarted from its checkpoint: the trace goes on from
-    # the state saved with it.
+    # the state saved with it (on either engine).
     tracer.InitialStateFile = state_name(RESTART)
+elif RESTART >= 0:
+    print("Restart: no trace state %s (a run with the GPU engine saves none): the trace starts "
+          "afresh at step %d." % (state_name(RESTART), RESTART))
 if CHECKPOINT_EVERY > 0 and ENGINE != "CPU":
     print("Checkpoints: the GPU display keeps its state on the GPU and cannot save it; the "
           "trace's state is not written (run with --engine CPU to checkpoint the trace).")
