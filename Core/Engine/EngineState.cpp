@@ -46,13 +46,18 @@ public:
     std::memcpy(&u, &d, sizeof u);
     this->u64(u);
   }
-  void text(const std::string& s)
+  /// The characters alone, without the length text() puts first.
+  void chars(const std::string& s)
   {
-    this->u64(s.size());
     for (const char c : s)
     {
       this->bytes(std::uint8_t(c), 1);
     }
+  }
+  void text(const std::string& s)
+  {
+    this->u64(s.size());
+    this->chars(s);
   }
   Word value() const { return this->Value; }
 
@@ -273,6 +278,44 @@ std::vector<NamedValue> templateValues(const ElementTemplate& shape)
     { "springs", double(shape.springs.size()) }, { "rest positions (hash)", double(rest.value()) },
     { "springs (hash)", double(springs.value()) },
     { "pinned particles (hash)", double(pinned.value()) } };
+}
+
+std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts)
+{
+  // The names and values (and their order) are those of the first states
+  // saved: a state keeps them, and one saved before must still resume.
+  std::vector<NamedValue> values;
+  const char* axes[3] = { "x", "y", "z" };
+  for (int a = 0; a < 3; ++a)
+  {
+    values.push_back({ std::string("points along ") + axes[a], double(facts.dims[a]) });
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    const double from = facts.bounds[2 * a], to = facts.bounds[2 * a + 1];
+    values.push_back({ std::string("bounds ") + axes[a] + " from", from });
+    values.push_back({ std::string("bounds ") + axes[a] + " to", to });
+  }
+  // What the field is beyond its grid: which arrays, its time steps (the
+  // schedule's breaks), its largest speed at the start. Its values after
+  // the start are not compared.
+  Hash32 vectors, weights, times;
+  vectors.chars(facts.vectors);
+  weights.chars(facts.releaseWeights);
+  for (const double t : facts.inputTimes)
+  {
+    times.f64(t);
+  }
+  values.push_back({ "Vectors array (hash)", double(vectors.value()) + facts.vectorsAssociation });
+  values.push_back({ "Release Weights array (hash)", double(weights.value()) });
+  values.push_back({ "time steps", double(facts.inputTimes.size()) });
+  values.push_back({ "time steps (hash)", double(times.value()) });
+  values.push_back({ "largest speed at the start", facts.startMaxSpeed });
+  values.push_back({ "Time Direction (0 Forward, 1 Backward)", double(facts.timeDirection) });
+  // Pieces trace a little differently from a whole (test_parallel.py's
+  // tolerance): the same number of processes goes on bit for bit.
+  values.push_back({ "processes", double(facts.processes) });
+  return values;
 }
 
 std::string firstDifference(

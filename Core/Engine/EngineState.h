@@ -106,6 +106,33 @@ std::vector<NamedValue> parameterValues(const Parameters& p);
 std::vector<NamedValue> templateValues(const ElementTemplate& shape);
 
 /**
+ * What a tracer knows of its field, as a state keeps it (fieldStateValues):
+ * the whole field's, and the number of processes tracing it.
+ */
+struct FieldStateFacts
+{
+  std::array<int, 3> dims = { 0, 0, 0 }; ///< the whole grid's points along x, y and z
+  /// The whole domain in world coordinates: x from, x to, y from, y to, z from, z to.
+  std::array<double, 6> bounds = { 0, 0, 0, 0, 0, 0 };
+  std::string vectors;            ///< the Vectors array's name
+  int vectorsAssociation = 0;     ///< its association (vtkDataObject's FIELD_ASSOCIATION_*)
+  std::string releaseWeights;     ///< the Release Weights array's name (empty: none)
+  std::vector<double> inputTimes; ///< the input's time steps (the schedule's breaks)
+  double startMaxSpeed = 0.0;     ///< the field's largest speed at the start
+  int timeDirection = 0;          ///< TimeDirection: 0 forward, 1 backward
+  int processes = 1;              ///< the processes tracing
+};
+
+/**
+ * The field's named values a resumed trace must match: the grid's points
+ * and bounds, 32-bit hashes of the arrays' names and of the time steps, the
+ * largest speed at the start, the time direction, and the process count.
+ * (Pieces trace a little differently from a whole: the same number of
+ * processes goes on bit for bit.)
+ */
+std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts);
+
+/**
  * The first value of `now` that differs from `saved` (by bits; NaN equals
  * NaN), or that either list lacks, said as "<what> <name>: the state's
  * <value>, this trace's <value>"; empty when they agree.

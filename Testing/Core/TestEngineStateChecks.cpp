@@ -356,3 +356,37 @@ TEST(EngineState, TheChecksumChangesWithAnyWordOrValue)
     EXPECT_TRUE(sums.insert(bp::stateChecksum(s)).second) << "change " << k;
   }
 }
+
+TEST(EngineState, FieldStateValuesKeepTheNamesAndHashesOfTheFirstStates)
+{
+  // The values the tracer saved before they moved to Core (its own FNV-1a
+  // over the names' characters and the times' bytes): a state saved then
+  // must still resume.
+  bp::FieldStateFacts facts;
+  facts.dims = { 24, 20, 2 };
+  facts.bounds = { -1, 1, 0, 1.8, 0.25, 0.25 };
+  facts.vectors = "velocity";
+  facts.vectorsAssociation = 1;
+  facts.releaseWeights = "w";
+  facts.inputTimes = { 0.0, 0.5, 1.0 };
+  facts.startMaxSpeed = 2.5;
+  facts.timeDirection = 1;
+  facts.processes = 2;
+  const std::vector<std::pair<std::string, double>> expected = { { "points along x", 24 },
+    { "points along y", 20 }, { "points along z", 2 }, { "bounds x from", -1 },
+    { "bounds x to", 1 }, { "bounds y from", 0 }, { "bounds y to", 1.8 }, { "bounds z from", 0.25 },
+    { "bounds z to", 0.25 }, { "Vectors array (hash)", 846470194.0 + 1 },
+    { "Release Weights array (hash)", 4060888886.0 }, { "time steps", 3 },
+    { "time steps (hash)", 3521701429.0 }, { "largest speed at the start", 2.5 },
+    { "Time Direction (0 Forward, 1 Backward)", 1 }, { "processes", 2 } };
+  const std::vector<bp::NamedValue> values = bp::fieldStateValues(facts);
+  ASSERT_EQ(values.size(), expected.size());
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    EXPECT_EQ(values[k].name, expected[k].first);
+    EXPECT_EQ(values[k].value, expected[k].second) << values[k].name;
+  }
+  // No Release Weights: the hash of no characters, FNV-1a's basis.
+  facts.releaseWeights.clear();
+  EXPECT_EQ(bp::fieldStateValues(facts)[10].value, 2166136261.0);
+}
