@@ -73,6 +73,9 @@ struct NamedValue
 {
   std::string name;
   double value = 0.0;
+  /// How far a saved value may lie from this one and still agree (firstDifference):
+  /// 0 asks for the same bits; infinity keeps the value for the record only. Not saved.
+  double tolerance = 0.0;
 };
 
 /// A trace's state: the engine's and the trace's around it.
@@ -107,7 +110,8 @@ std::vector<NamedValue> templateValues(const ElementTemplate& shape);
 
 /**
  * What a tracer knows of its field, as a state keeps it (fieldStateValues):
- * the whole field's, and the number of processes tracing it.
+ * the whole field's, the same on any number of processes but for the
+ * rounding of the bounds.
  */
 struct FieldStateFacts
 {
@@ -120,22 +124,25 @@ struct FieldStateFacts
   std::vector<double> inputTimes; ///< the input's time steps (the schedule's breaks)
   double startMaxSpeed = 0.0;     ///< the field's largest speed at the start
   int timeDirection = 0;          ///< TimeDirection: 0 forward, 1 backward
-  int processes = 1;              ///< the processes tracing
+  int processes = 1;              ///< the processes tracing (kept, not compared)
 };
 
 /**
  * The field's named values a resumed trace must match: the grid's points
  * and bounds, 32-bit hashes of the arrays' names and of the time steps, the
  * largest speed at the start, the time direction, and the process count.
- * (Pieces trace a little differently from a whole: the same number of
- * processes goes on bit for bit.)
+ * The bounds agree within a few ulps (pieces compute their corners from
+ * their own first points, so another split rounds them differently); the
+ * process count is kept for the record, not compared, so a state saved on
+ * one number of processes resumes on another.
  */
 std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts);
 
 /**
- * The first value of `now` that differs from `saved` (by bits; NaN equals
- * NaN), or that either list lacks, said as "<what> <name>: the state's
- * <value>, this trace's <value>"; empty when they agree.
+ * The first value of `now` that differs from `saved` (by bits, NaN equals
+ * NaN; or by more than `now`'s tolerance), or that either list lacks, said
+ * as "<what> <name>: the state's <value>, this trace's <value>"; empty when
+ * they agree.
  */
 std::string firstDifference(
   const std::vector<NamedValue>& saved, const std::vector<NamedValue>& now, const std::string& what);

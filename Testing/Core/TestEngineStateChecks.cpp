@@ -390,3 +390,55 @@ TEST(EngineState, FieldStateValuesKeepTheNamesAndHashesOfTheFirstStates)
   facts.releaseWeights.clear();
   EXPECT_EQ(bp::fieldStateValues(facts)[10].value, 2166136261.0);
 }
+
+TEST(EngineState, AFieldOnAnotherNumberOfProcessesAgrees)
+{
+  bp::FieldStateFacts facts;
+  facts.dims = { 24, 24, 24 };
+  facts.bounds = { 1e6, 1e6 + 4, -1, 1, -1, 1 };
+  facts.vectors = "velocity";
+  facts.inputTimes = { 0.0 };
+  facts.startMaxSpeed = 1.75;
+  facts.processes = 2;
+  const std::vector<bp::NamedValue> saved = bp::fieldStateValues(facts);
+  // Another process count, and corners rounded another way (seen: 1 on 2
+  // processes, 0.9999999999999998 on 4).
+  bp::FieldStateFacts other = facts;
+  other.processes = 4;
+  other.bounds[1] = std::nextafter(std::nextafter(1e6 + 4, 0.0), 0.0);
+  other.bounds[3] = 0.9999999999999998;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"), "");
+  // But not another grid: a bound moved by a billionth of the domain, a
+  // point more, or the largest speed a bit off.
+  other = facts;
+  other.bounds[3] = 1 + 2e-9;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"),
+    "the field's bounds y to: the state's 1, this trace's 1.000000002");
+  other = facts;
+  other.bounds[0] = 1e6 + 1e-6;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's")
+              .rfind("the field's bounds x from:", 0),
+    0u);
+  other = facts;
+  other.dims[2] = 25;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"),
+    "the field's points along z: the state's 24, this trace's 25");
+  other = facts;
+  other.startMaxSpeed = std::nextafter(1.75, 2.0);
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's")
+              .rfind("the field's largest speed at the start:", 0),
+    0u);
+}
+
+TEST(EngineState, FirstDifferenceTakesTheTracesTolerance)
+{
+  const std::vector<bp::NamedValue> now = { { "a", 1.0, 0.5 }, { "b", 2.0, INFINITY } };
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.5 }, { "b", -7.0 } }, now, "the field's"), "");
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.6 }, { "b", 2.0 } }, now, "the field's"),
+    "the field's a: the state's 1.6, this trace's 1");
+  // NaN lies within no tolerance; a name missing is still said.
+  EXPECT_EQ(bp::firstDifference({ { "a", NAN }, { "b", 2.0 } }, now, "the field's"),
+    "the field's a: the state's NaN, this trace's 1");
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.0 } }, now, "the field's"),
+    "the field's b: the state's none, this trace's 2");
+}
