@@ -289,8 +289,9 @@ vtkSmartPointer<vtkImageData> PieceLayout::cutPiece(vtkImageData* whole)
 namespace
 {
 /// What each process tells the others in share(): its block's box, whether
-/// it read its piece, its smallest cell width.
-constexpr int ShareValues = 8;
+/// it read its piece, its smallest cell width, and its grid's spacing along
+/// each uniform axis (NaN along a rectilinear one, or without a block).
+constexpr int ShareValues = 11;
 
 /// This process's values for share() (`mine`), or the error when the input
 /// delivered an extent that lacks the block this process owns.
@@ -316,6 +317,10 @@ std::string localShare(
     {
       mine[2 * a] = grid.coordinate(a, owned[2 * a] - extent[2 * a]);
       mine[2 * a + 1] = grid.coordinate(a, owned[2 * a + 1] - extent[2 * a]);
+      if (!grid.isRectilinear(a))
+      {
+        mine[8 + a] = std::abs(grid.spacing[a]);
+      }
     }
     for (int i = 0; i + 1 < grid.dims[a]; ++i)
     {
@@ -333,7 +338,8 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   std::array<double, 3>& offset)
 {
   std::copy(extent, extent + 6, this->PieceExtent);
-  double mine[ShareValues] = { 1, 0, 1, 0, 1, 0, 1, 0 };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double mine[ShareValues] = { 1, 0, 1, 0, 1, 0, 1, 0, nan, nan, nan };
   if (error.empty())
   {
     error = localShare(grid, extent, this->OwnedExtent, mine);
@@ -347,6 +353,8 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   this->Controller->AllGather(mine, all.data(), ShareValues);
   std::vector<bp::Box> boxes(std::size_t(this->Pieces));
   this->DomainSmallestCell = std::numeric_limits<double>::infinity();
+  std::array<double, 3> spacing = { nan, nan, nan };
+  bool spaced = false;
   for (int q = 0; q < this->Pieces; ++q)
   {
     const double* v = all.data() + std::size_t(q) * ShareValues;
@@ -357,6 +365,11 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
     }
     std::copy(v, v + 6, boxes[std::size_t(q)].begin());
     this->DomainSmallestCell = std::min(this->DomainSmallestCell, v[7]);
+    if (!spaced && !bp::isEmptyBox(boxes[std::size_t(q)]))
+    {
+      std::copy(v + 8, v + 11, spacing.begin()); // the first block's, alike on every process
+      spaced = true;
+    }
   }
   if (error.empty())
   {
@@ -367,11 +380,12 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   {
     return error;
   }
-  this->placeDomain(boxes, offset);
+  this->placeDomain(boxes, spacing, offset);
   return std::string();
 }
 
-void PieceLayout::placeDomain(std::vector<bp::Box> boxes, std::array<double, 3>& offset)
+void PieceLayout::placeDomain(
+  std::vector<bp::Box> boxes, const std::array<double, 3>& spacing, std::array<double, 3>& offset)
 {
   const bp::Box world = bp::Partition(boxes).domain();
   offset = { world[0], world[2], world[4] };
@@ -401,7 +415,12 @@ void PieceLayout::placeDomain(std::vector<bp::Box> boxes, std::array<double, 3>&
     this->Domain.degenerate[a] = cells < 1;
     if (cells >= 1)
     {
-      sum += (local[2 * a + 1] - local[2 * a]) / cells;
+      // A uniform axis's spacing, as one process's grid gives it: the
+      // domain's far corner rounds differently with each split (each piece
+      // places its points from its own first one), and the steps and sizes
+      // that follow from this length must not depend on the process count
+      // (a saved state resumes on another, its step compared by bits).
+      sum += std::isnan(spacing[a]) ? (local[2 * a + 1] - local[2 * a]) / cells : spacing[a];
       ++axes;
     }
   }

@@ -190,8 +190,10 @@ public:
 
 private:
   /// After share(): the whole grid's first point as `offset`, the pieces'
-  /// `boxes` moved by it into the partition, and the whole field's domain.
-  void placeDomain(std::vector<bp::Box> boxes, std::array<double, 3>& offset);
+  /// `boxes` moved by it into the partition, and the whole field's domain
+  /// and cell length (from `spacing` along uniform axes, NaN elsewhere).
+  void placeDomain(std::vector<bp::Box> boxes, const std::array<double, 3>& spacing,
+    std::array<double, 3>& offset);
 };
 
 } // namespace bpvtk

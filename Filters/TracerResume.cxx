@@ -13,33 +13,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <sstream>
 
 namespace
 {
-/// A 32-bit FNV-1a hash of `bytes`, exact in a double (a named value).
-double hash32(const void* bytes, std::size_t size)
-{
-  std::uint32_t h = 2166136261u;
-  const auto* b = static_cast<const unsigned char*>(bytes);
-  for (std::size_t k = 0; k < size; ++k)
-  {
-    h = (h ^ b[k]) * 16777619u;
-  }
-  return double(h);
-}
-
-/// The named field value a restart in situ resolves its settings from.
-const char* const LargestStartSpeed = "largest speed at the start";
-/// The named field value of the trace's direction.
-const char* const TimeDirectionValue = "Time Direction (0 Forward, 1 Backward)";
 /// The field's values that say its time steps: in situ, those handed since
 /// the trace started, which a restart's are not.
 bool namesTimeSteps(const std::string& name)
 {
-  return name == "time steps" || name == "time steps (hash)";
+  return name == bp::FieldStateNames::TimeSteps || name == bp::FieldStateNames::TimeStepsHash;
 }
 
 /// The value named `name` in `values`; `otherwise` where there is none.
@@ -67,37 +49,22 @@ std::vector<bp::NamedValue> withoutTimeSteps(std::vector<bp::NamedValue> values)
 
 std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues(const Config& config)
 {
-  std::vector<bp::NamedValue> values;
-  const char* axes[3] = { "x", "y", "z" };
-  const std::array<int, 3> dims = this->Layout.wholeDims(this->Held.grid);
-  const std::array<double, 6> bounds = this->Layout.domainBounds(this->Held.grid);
+  bp::FieldStateFacts facts;
+  facts.dims = this->Layout.wholeDims(this->Held.grid);
+  facts.bounds = this->Layout.domainBounds(this->Held.grid);
   for (int a = 0; a < 3; ++a)
   {
-    values.push_back({ std::string("points along ") + axes[a], double(dims[a]) });
+    facts.bounds[2 * a] += this->Held.offset[a];
+    facts.bounds[2 * a + 1] += this->Held.offset[a];
   }
-  for (int a = 0; a < 3; ++a)
-  {
-    values.push_back(
-      { std::string("bounds ") + axes[a] + " from", bounds[2 * a] + this->Held.offset[a] });
-    values.push_back(
-      { std::string("bounds ") + axes[a] + " to", bounds[2 * a + 1] + this->Held.offset[a] });
-  }
-  // What the field is beyond its grid: which arrays, its time steps (the
-  // schedule's breaks), its largest speed at the start. Its values after
-  // the start are not compared.
-  values.push_back({ "Vectors array (hash)",
-    hash32(config.vectors.name.data(), config.vectors.name.size()) + config.vectors.association });
-  values.push_back({ "Release Weights array (hash)",
-    hash32(config.releaseWeights.data(), config.releaseWeights.size()) });
-  const std::vector<double>& times = this->Plan.inputTimes();
-  values.push_back({ "time steps", double(times.size()) });
-  values.push_back({ "time steps (hash)", hash32(times.data(), times.size() * sizeof(double)) });
-  values.push_back({ LargestStartSpeed, this->Resolved.startMaxSpeed });
-  values.push_back({ TimeDirectionValue, double(this->Plan.direction()) });
-  // Pieces trace a little differently from a whole (test_parallel.py's
-  // tolerance): the same number of processes goes on bit for bit.
-  values.push_back({ "processes", double(this->Layout.Pieces) });
-  return values;
+  facts.vectors = config.vectors.name;
+  facts.vectorsAssociation = config.vectors.association;
+  facts.releaseWeights = config.releaseWeights;
+  facts.inputTimes = this->Plan.inputTimes();
+  facts.startMaxSpeed = this->Resolved.startMaxSpeed;
+  facts.timeDirection = int(this->Plan.direction());
+  facts.processes = this->Layout.Pieces;
+  return bp::fieldStateValues(facts);
 }
 
 std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
@@ -206,7 +173,7 @@ void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::Fi
   // The settings resolve as they did at the saved trace's start (its step,
   // lifetimes and release speed come from its largest speed there), and
   // its steps stay on the saved schedule; the rest is checked as a replay's.
-  facts.maxSpeed = namedValue(state.field, LargestStartSpeed, facts.maxSpeed);
+  facts.maxSpeed = namedValue(state.field, bp::FieldStateNames::LargestStartSpeed, facts.maxSpeed);
   if (this->Layout.distributed())
   {
     facts.maxSpeed = this->Layout.globalMax(facts.maxSpeed); // the same on every process
@@ -255,7 +222,7 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   {
     // A state of the other direction has its time in that direction's terms.
     const double direction = double(this->Plan.direction());
-    error = namedValue(state.field, TimeDirectionValue, direction) != direction
+    error = namedValue(state.field, bp::FieldStateNames::TimeDirection, direction) != direction
       ? named + " was saved by a trace of the other Time Direction: set Time Direction as it was."
       : named + ": its time " + std::to_string(bp::traceTime(this->Plan.direction(), saved)) +
         (past ? " lies past this trace's times" : " lies before this trace's start") +

@@ -46,13 +46,18 @@ public:
     std::memcpy(&u, &d, sizeof u);
     this->u64(u);
   }
-  void text(const std::string& s)
+  /// The characters alone, without the length text() puts first.
+  void chars(const std::string& s)
   {
-    this->u64(s.size());
     for (const char c : s)
     {
       this->bytes(std::uint8_t(c), 1);
     }
+  }
+  void text(const std::string& s)
+  {
+    this->u64(s.size());
+    this->chars(s);
   }
   Word value() const { return this->Value; }
 
@@ -275,6 +280,49 @@ std::vector<NamedValue> templateValues(const ElementTemplate& shape)
     { "pinned particles (hash)", double(pinned.value()) } };
 }
 
+std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts)
+{
+  // The names and values (and their order) are those of the first states
+  // saved: a state keeps them, and one saved before must still resume.
+  std::vector<NamedValue> values;
+  const char* axes[3] = { "x", "y", "z" };
+  for (int a = 0; a < 3; ++a)
+  {
+    values.push_back({ std::string("points along ") + axes[a], double(facts.dims[a]) });
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    // The corners of pieces split another way round to a few ulps of the
+    // domain's size or place (2.2e-16 at 1 seen between 2 and 4 processes).
+    const double from = facts.bounds[2 * a], to = facts.bounds[2 * a + 1];
+    const double scale = std::max({ std::abs(from), std::abs(to), std::abs(to - from) });
+    const double tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+    values.push_back({ std::string("bounds ") + axes[a] + " from", from, tolerance });
+    values.push_back({ std::string("bounds ") + axes[a] + " to", to, tolerance });
+  }
+  // What the field is beyond its grid: which arrays, its time steps (the
+  // schedule's breaks), its largest speed at the start. Its values after
+  // the start are not compared.
+  Hash32 vectors, weights, times;
+  vectors.chars(facts.vectors);
+  weights.chars(facts.releaseWeights);
+  for (const double t : facts.inputTimes)
+  {
+    times.f64(t);
+  }
+  values.push_back({ "Vectors array (hash)", double(vectors.value()) + facts.vectorsAssociation });
+  values.push_back({ "Release Weights array (hash)", double(weights.value()) });
+  values.push_back({ FieldStateNames::TimeSteps, double(facts.inputTimes.size()) });
+  values.push_back({ FieldStateNames::TimeStepsHash, double(times.value()) });
+  values.push_back({ FieldStateNames::LargestStartSpeed, facts.startMaxSpeed });
+  values.push_back({ FieldStateNames::TimeDirection, double(facts.timeDirection) });
+  // Kept to say where a state came from; the elements are split among the
+  // resuming processes by their centres, whatever number saved them.
+  values.push_back(
+    { "processes", double(facts.processes), std::numeric_limits<double>::infinity() });
+  return values;
+}
+
 std::string firstDifference(
   const std::vector<NamedValue>& saved, const std::vector<NamedValue>& now, const std::string& what)
 {
@@ -294,10 +342,11 @@ std::string firstDifference(
     }
     return say(name, textA, textB);
   };
-  std::map<std::string, double> current, before;
+  std::map<std::string, const NamedValue*> current;
+  std::map<std::string, double> before;
   for (const NamedValue& v : now)
   {
-    current.emplace(v.name, v.value); // the first of a name repeated
+    current.emplace(v.name, &v); // the first of a name repeated
   }
   for (const NamedValue& v : saved)
   {
@@ -307,9 +356,13 @@ std::string firstDifference(
     {
       return say(v.name, valueText(v.value), "none");
     }
-    if (!sameBits(found->second, v.value))
+    const NamedValue& mine = *found->second;
+    // NaN is within no tolerance, but the same bits.
+    const bool near = mine.tolerance > 0.0 &&
+      (std::isinf(mine.tolerance) || std::abs(mine.value - v.value) <= mine.tolerance);
+    if (!near && !sameBits(mine.value, v.value))
     {
-      return differ(v.name, v.value, found->second);
+      return differ(v.name, v.value, mine.value);
     }
   }
   for (const NamedValue& v : now)

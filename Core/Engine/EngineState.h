@@ -73,6 +73,9 @@ struct NamedValue
 {
   std::string name;
   double value = 0.0;
+  /// How far a saved value may lie from this one and still agree (firstDifference):
+  /// 0 asks for the same bits; infinity keeps the value for the record only. Not saved.
+  double tolerance = 0.0;
 };
 
 /// A trace's state: the engine's and the trace's around it.
@@ -106,9 +109,50 @@ std::vector<NamedValue> parameterValues(const Parameters& p);
 std::vector<NamedValue> templateValues(const ElementTemplate& shape);
 
 /**
- * The first value of `now` that differs from `saved` (by bits; NaN equals
- * NaN), or that either list lacks, said as "<what> <name>: the state's
- * <value>, this trace's <value>"; empty when they agree.
+ * What a tracer knows of its field, as a state keeps it (fieldStateValues):
+ * the whole field's, the same on any number of processes but for the
+ * rounding of the bounds.
+ */
+/// The names of the field's values that the tracer also reads back (a
+/// restart in situ: TracerResume.cxx).
+namespace FieldStateNames
+{
+constexpr const char* TimeSteps = "time steps";
+constexpr const char* TimeStepsHash = "time steps (hash)";
+constexpr const char* LargestStartSpeed = "largest speed at the start";
+constexpr const char* TimeDirection = "Time Direction (0 Forward, 1 Backward)";
+} // namespace FieldStateNames
+
+struct FieldStateFacts
+{
+  std::array<int, 3> dims = { 0, 0, 0 }; ///< the whole grid's points along x, y and z
+  /// The whole domain in world coordinates: x from, x to, y from, y to, z from, z to.
+  std::array<double, 6> bounds = { 0, 0, 0, 0, 0, 0 };
+  std::string vectors;            ///< the Vectors array's name
+  int vectorsAssociation = 0;     ///< its association (vtkDataObject's FIELD_ASSOCIATION_*)
+  std::string releaseWeights;     ///< the Release Weights array's name (empty: none)
+  std::vector<double> inputTimes; ///< the input's time steps (the schedule's breaks)
+  double startMaxSpeed = 0.0;     ///< the field's largest speed at the start
+  int timeDirection = 0;          ///< TimeDirection: 0 forward, 1 backward
+  int processes = 1;              ///< the processes tracing (kept, not compared)
+};
+
+/**
+ * The field's named values a resumed trace must match: the grid's points
+ * and bounds, 32-bit hashes of the arrays' names and of the time steps, the
+ * largest speed at the start, the time direction, and the process count.
+ * The bounds agree within a few ulps (pieces compute their corners from
+ * their own first points, so another split rounds them differently); the
+ * process count is kept for the record, not compared, so a state saved on
+ * one number of processes resumes on another.
+ */
+std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts);
+
+/**
+ * The first value of `now` that differs from `saved` (by bits, NaN equals
+ * NaN; or by more than `now`'s tolerance), or that either list lacks, said
+ * as "<what> <name>: the state's <value>, this trace's <value>"; empty when
+ * they agree.
  */
 std::string firstDifference(
   const std::vector<NamedValue>& saved, const std::vector<NamedValue>& now, const std::string& what);

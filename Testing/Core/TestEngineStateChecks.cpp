@@ -356,3 +356,89 @@ TEST(EngineState, TheChecksumChangesWithAnyWordOrValue)
     EXPECT_TRUE(sums.insert(bp::stateChecksum(s)).second) << "change " << k;
   }
 }
+
+TEST(EngineState, FieldStateValuesKeepTheNamesAndHashesOfTheFirstStates)
+{
+  // The values the tracer saved before they moved to Core (its own FNV-1a
+  // over the names' characters and the times' bytes): a state saved then
+  // must still resume.
+  bp::FieldStateFacts facts;
+  facts.dims = { 24, 20, 2 };
+  facts.bounds = { -1, 1, 0, 1.8, 0.25, 0.25 };
+  facts.vectors = "velocity";
+  facts.vectorsAssociation = 1;
+  facts.releaseWeights = "w";
+  facts.inputTimes = { 0.0, 0.5, 1.0 };
+  facts.startMaxSpeed = 2.5;
+  facts.timeDirection = 1;
+  facts.processes = 2;
+  const std::vector<std::pair<std::string, double>> expected = { { "points along x", 24 },
+    { "points along y", 20 }, { "points along z", 2 }, { "bounds x from", -1 },
+    { "bounds x to", 1 }, { "bounds y from", 0 }, { "bounds y to", 1.8 }, { "bounds z from", 0.25 },
+    { "bounds z to", 0.25 }, { "Vectors array (hash)", 846470194.0 + 1 },
+    { "Release Weights array (hash)", 4060888886.0 }, { "time steps", 3 },
+    { "time steps (hash)", 3521701429.0 }, { "largest speed at the start", 2.5 },
+    { "Time Direction (0 Forward, 1 Backward)", 1 }, { "processes", 2 } };
+  const std::vector<bp::NamedValue> values = bp::fieldStateValues(facts);
+  ASSERT_EQ(values.size(), expected.size());
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    EXPECT_EQ(values[k].name, expected[k].first);
+    EXPECT_EQ(values[k].value, expected[k].second) << values[k].name;
+  }
+  // No Release Weights: the hash of no characters, FNV-1a's basis.
+  facts.releaseWeights.clear();
+  EXPECT_EQ(bp::fieldStateValues(facts)[10].value, 2166136261.0);
+}
+
+TEST(EngineState, AFieldOnAnotherNumberOfProcessesAgrees)
+{
+  bp::FieldStateFacts facts;
+  facts.dims = { 24, 24, 24 };
+  facts.bounds = { 1e6, 1e6 + 4, -1, 1, -1, 1 };
+  facts.vectors = "velocity";
+  facts.inputTimes = { 0.0 };
+  facts.startMaxSpeed = 1.75;
+  facts.processes = 2;
+  const std::vector<bp::NamedValue> saved = bp::fieldStateValues(facts);
+  // Another process count, and corners rounded another way (seen: 1 on 2
+  // processes, 0.9999999999999998 on 4).
+  bp::FieldStateFacts other = facts;
+  other.processes = 4;
+  other.bounds[1] = std::nextafter(std::nextafter(1e6 + 4, 0.0), 0.0);
+  other.bounds[3] = 0.9999999999999998;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"), "");
+  // But not another grid: a bound moved by a billionth of the domain, a
+  // point more, or the largest speed a bit off.
+  other = facts;
+  other.bounds[3] = 1 + 2e-9;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"),
+    "the field's bounds y to: the state's 1, this trace's 1.000000002");
+  other = facts;
+  other.bounds[0] = 1e6 + 1e-6;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's")
+              .rfind("the field's bounds x from:", 0),
+    0u);
+  other = facts;
+  other.dims[2] = 25;
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's"),
+    "the field's points along z: the state's 24, this trace's 25");
+  other = facts;
+  other.startMaxSpeed = std::nextafter(1.75, 2.0);
+  EXPECT_EQ(bp::firstDifference(saved, bp::fieldStateValues(other), "the field's")
+              .rfind("the field's largest speed at the start:", 0),
+    0u);
+}
+
+TEST(EngineState, FirstDifferenceTakesTheTracesTolerance)
+{
+  const std::vector<bp::NamedValue> now = { { "a", 1.0, 0.5 }, { "b", 2.0, INFINITY } };
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.5 }, { "b", -7.0 } }, now, "the field's"), "");
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.6 }, { "b", 2.0 } }, now, "the field's"),
+    "the field's a: the state's 1.6, this trace's 1");
+  // NaN lies within no tolerance; a name missing is still said.
+  EXPECT_EQ(bp::firstDifference({ { "a", NAN }, { "b", 2.0 } }, now, "the field's"),
+    "the field's a: the state's NaN, this trace's 1");
+  EXPECT_EQ(bp::firstDifference({ { "a", 1.0 } }, now, "the field's"),
+    "the field's b: the state's none, this trace's 2");
+}

@@ -23,6 +23,9 @@ parser.add_argument("--render", help="write a picture per remote-render threshol
 parser.add_argument("--rectilinear", help="a .vtr vector field with stretched z layers to trace")
 parser.add_argument("--bpvol", help="the same field as a raw volume series (.bpvol)")
 parser.add_argument("--data", help="the shared real data sets' folder (read in place)")
+parser.add_argument("--resume-from", action="append", default=[], metavar="NAME=STATE",
+                    help="a state saved by another run (on another number of processes) to go "
+                         "on from, as the case resumed_from_NAME")
 args = parser.parse_args()
 
 if args.connect:
@@ -82,10 +85,19 @@ def placement_traces():
     # the State output, .pvtp: a piece per process, process 0's holding
     # every element), and a new tracer that goes on from it to 1.0 must
     # trace what one that never stopped does (test_parallel.py:
-    # check_save_resume), on the same number of processes.
+    # check_save_resume), on the same number of processes; and from the
+    # states other runs saved on other numbers of processes, whose elements
+    # this run's processes split by their centres (check_resume_across).
+    # The field's far corner rounds differently on 4 processes than on 1 and
+    # 2 (each piece places its points from its own first one): the step that
+    # follows from its cell length must not.
+    skewed = updated(AnalyticFlow(Flow="ABC", Resolution=[13, 36, 11],
+                                  Bounds=[-32.71, -31.6405, -16.5, -15.3741, 28.791, 32.455]))
+
     def resumable(**extra):
-        return BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
-                                   Seed=12, LifetimeRange=[0.3, 0.6], **extra)
+        return BoundParticleTracer(Input=skewed, ElementShape="Cross", NumberOfElements=400,
+                                   Seed=12, Duration=1.0, NumberOfTimeSteps=11,
+                                   LifetimeRange=[0.3, 0.6], **extra)
     saver = resumable()
     saver.UpdatePipeline(0.5)
     state = os.path.abspath(args.output) + "-state.pvtp"
@@ -93,6 +105,9 @@ def placement_traces():
     Delete(saver)
     cases["resumed"] = (resumable(InitialStateFile=state), [1.0])
     cases["resumed_straight"] = (resumable(), [1.0])
+    for named in args.resume_from:
+        tag, path = named.split("=", 1)
+        cases["resumed_from_" + tag] = (resumable(InitialStateFile=path), [1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -289,6 +304,11 @@ for name, (tracer, times) in all_traces().items():
         times = [steps[2], steps[-1]]
     for k, t in enumerate(times):
         ids.UpdatePipeline(t)
+        key = "%s_%d" % (name, k)
+        if name.startswith("resumed"):
+            # The steps this update took (read before the fetch updates again).
+            tracer.UpdatePropertyInformation()
+            result[key + "_steps"] = numpy.array([tracer.GetPropertyValue("StepsInLastUpdate")])
         data = servermanager.Fetch(ids)
         pd = data.GetPointData()
         element = vtk_to_numpy(pd.GetArray("ElementId")).astype(numpy.int64)
@@ -297,7 +317,6 @@ for name, (tracer, times) in all_traces().items():
         age = pd.GetArray("Age")
         age = vtk_to_numpy(age) if age is not None else numpy.zeros(len(element))
         order = numpy.lexsort((particle, age, element))
-        key = "%s_%d" % (name, k)
         result[key + "_points"] = vtk_to_numpy(data.GetPoints().GetData())[order].astype(float)
         result[key + "_element"] = element[order]
         result[key + "_particle"] = particle[order]

@@ -7,7 +7,10 @@ traces sorted by (ElementId, ParticleIndex): the same elements, positions and
 velocities within a float tolerance. Checks that the work was shared (every
 rank holds elements, elements changed ranks, no element is split) and that
 the Bound Particles display draws the same picture when the ranks' images are
-composited, with remote rendering on and off.
+composited, with remote rendering on and off. A state saved at 0.5 resumes bit
+for bit on as many processes, and on another number (saved on 1 resumed on 2,
+saved on 2 resumed on 1 and 4) with the same elements as a trace on that
+number, within the same tolerance.
 """
 import argparse
 import json
@@ -150,6 +153,37 @@ def check_balance(result, base, element, process, ranks, name):
                       held.tolist()))
 
 
+def check_close(name, base, reference, reference_base, result, result_base):
+    """The same elements and particles (in order), and positions and
+    velocities within the tolerance of pieces against a whole; whether the
+    elements and particles are the same."""
+    expected = {s: reference[reference_base + s] for s in ARRAYS}
+    got = {s: result[result_base + s] for s in ARRAYS}
+    same_ids = (expected["_element"].shape == got["_element"].shape and
+                (expected["_element"] == got["_element"]).all() and
+                (expected["_particle"] == got["_particle"]).all())
+    bptest.check(same_ids, "%s %s: the same elements and particles (%d points, expected %d)" %
+                 (name, base, len(got["_element"]), len(expected["_element"])))
+    if not same_ids:
+        return False
+    points = expected["_points"]
+    diagonal = numpy.linalg.norm(points.max(axis=0) - points.min(axis=0))
+    # Pieces locate cells from their own first point, so positions may
+    # differ by float rounding; the velocity sampled there by that times
+    # the field's gradient (steep in the combustor): its tolerance is a
+    # share of the top speed.
+    top_speed = float(numpy.linalg.norm(expected["_velocity"], axis=1).max())
+    for array, scale, share in (("_points", diagonal, 2e-5), ("_velocity", top_speed, 1e-3)):
+        error = float(abs(got[array] - expected[array]).max())
+        print("%s %s%s: largest difference %.3g (scale %.3g)" %
+              (name, base, array, error, scale))
+        bptest.check(error <= share * scale, "%s %s%s differ by %g" % (name, base, array, error))
+    return True
+
+
+ARRAYS = ("_points", "_element", "_particle", "_velocity")
+
+
 def compare(reference, result, name, ranks):
     if result is None:
         bptest.check(False, "%s wrote no trace" % name)
@@ -174,30 +208,13 @@ def compare(reference, result, name, ranks):
         if not key.endswith("_points"):
             continue
         base = key[: -len("_points")]
-        same_ids = (reference[base + "_element"].shape == result[base + "_element"].shape and
-                    (reference[base + "_element"] == result[base + "_element"]).all() and
-                    (reference[base + "_particle"] == result[base + "_particle"]).all())
-        bptest.check(same_ids, "%s %s: the same elements and particles" % (name, base))
-        if not same_ids:
+        if not check_close(name, base, reference, base, result, base):
             continue
-        points = reference[key]
         if base.startswith("inertial_plane"):
             # The flat field's plane (parallel_trace.PLANE_Z), whatever the process count.
             z = result[key][:, 2]
             bptest.check(len(z) > 0 and (z == 0.25).all(), "%s %s: points leave the plane z = "
                          "0.25 (z in [%g, %g])" % (name, base, z.min(initial=0), z.max(initial=0)))
-        diagonal = numpy.linalg.norm(points.max(axis=0) - points.min(axis=0))
-        # Pieces locate cells from their own first point, so positions may
-        # differ by float rounding; the velocity sampled there by that times
-        # the field's gradient (steep in the combustor): its tolerance is a
-        # share of the top speed.
-        top_speed = float(numpy.linalg.norm(reference[base + "_velocity"], axis=1).max())
-        for array, scale, share in (("_points", diagonal, 2e-5), ("_velocity", top_speed, 1e-3)):
-            error = float(abs(result[base + array] - reference[base + array]).max())
-            print("%s %s%s: largest difference %.3g (scale %.3g)" %
-                  (name, base, array, error, scale))
-            bptest.check(error <= share * scale, "%s %s%s differ by %g" %
-                         (name, base, array, error))
         for array in ("_age", "_spin", "_ftle", "_stretch", "_slip"):
             if base + array in reference.files:
                 scale = max(float(abs(reference[base + array]).max()), 1e-9)
@@ -264,6 +281,35 @@ def check_save_resume(result, name):
                  "trace that never stopped" % name)
 
 
+def state_of(run_name):
+    """The state parallel_trace.py saved at 0.5 in the run `run_name`."""
+    return os.path.join(args.output, run_name + ".npz") + "-state.pvtp"
+
+
+def check_resume_across(result, name, ranks, saved_by):
+    """A tracer that went on from a state saved at 0.5 on another number of
+    processes (`saved_by`: the runs that saved them) traces to 1.0 the
+    elements one that never stopped traces on this number: the same ids and
+    count, positions within the tolerance of pieces against a whole; every
+    process holds some; and it stepped from 0.5 only."""
+    for saver in saved_by:
+        base = "resumed_from_%s_0" % saver
+        label = "%s, from the state %s saved" % (name, saver)
+        if result is None or base + "_points" not in result.files:
+            bptest.check(False, "%s: no trace" % label)
+            continue
+        check_close(label, base, result, "resumed_straight_0", result, base)
+        held = numpy.bincount(result[base + "_process"], minlength=ranks)
+        print("%s: elements' particles per rank %s" % (label, held.tolist()))
+        bptest.check(len(held) == ranks and (held > 0).all(),
+                     "%s: every rank holds elements (%s)" % (label, held.tolist()))
+        steps = int(result[base + "_steps"][0])
+        straight = int(result["resumed_straight_0_steps"][0])
+        print("%s: %d steps to 1.0, %d from the start" % (label, steps, straight))
+        bptest.check(0 < steps < straight, "%s: %d steps to 1.0 (from the start %d): not resumed" %
+                     (label, steps, straight))
+
+
 def compare_pictures(reference_dir, result_dir, name):
     expected = coverage(os.path.join(reference_dir, "remote.png"))
     bptest.check(expected > 0.01, "the built-in picture shows elements (%.3f)" % expected)
@@ -286,15 +332,20 @@ check_shared_start(reference, "builtin")
 check_save_resume(reference, "builtin")
 
 if args.mode == "batch":
-    for ranks in (1, 2, 4):
+    # Each run resumes from states the runs before it saved on other numbers
+    # of processes: 1 to 2, 2 to 1, 2 to 4.
+    resume_from = {2: ["builtin"], 1: ["pvbatch-2"], 4: ["pvbatch-2"]}
+    for ranks in (2, 1, 4):
         name = "pvbatch-%d" % ranks
         pictures = os.path.join(args.output, name + "-pictures")
+        states = ["--resume-from=%s=%s" % (saver, state_of(saver)) for saver in resume_from[ranks]]
         result = trace(name, mpiexec + ["-n", str(ranks), args.pvbatch],
-                       ["--render", pictures] if ranks == 2 else [])
+                       (["--render", pictures] if ranks == 2 else []) + states)
         compare(reference, result, name, ranks)
         check_step_back(result, name)
         check_shared_start(result, name)
         check_save_resume(result, name)
+        check_resume_across(result, name, ranks, resume_from[ranks])
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
@@ -321,7 +372,8 @@ else:
                 os.remove(out)
             client = run_group(
                 [args.pvpython, script, "--plugin", args.plugin, "--output", out,
-                 "--connect", "localhost:%d" % port, "--render", pictures] + inputs, 300)
+                 "--connect", "localhost:%d" % port, "--render", pictures,
+                 "--resume-from=builtin=" + state_of("builtin")] + inputs, 300)
             print(client.stdout[-3000:])
             try:
                 server.wait(timeout=60)  # the server ends when its client disconnects
@@ -343,6 +395,7 @@ else:
         compare(reference, served, "client-server", 2)
         check_shared_start(served, "client-server")
         check_save_resume(served, "client-server")
+        check_resume_across(served, "client-server", 2, ["builtin"])
         compare_pictures(reference_pictures, pictures, "client-server")
 
     client_server()
