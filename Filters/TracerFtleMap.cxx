@@ -47,7 +47,7 @@ std::vector<float> localValues(const bp::Engine& engine, std::size_t points)
   for (std::size_t e = 0; e < engine.elementCount(); ++e)
   {
     const std::size_t id = engine.elementIds()[e];
-    const bool hidden = engine.resetFlags()[e] & bp::ReleaseHidden;
+    const bool hidden = engine.resetFlags()[e] & bp::HiddenFlags;
     const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
     // Too young for an FTLE: invalid, as a point not yet released.
     if (id >= points || hidden || !(age >= engine.parameters().ftleMinimumAge))

@@ -336,12 +336,12 @@ void OutputStorage::applyCells(
   vtkPolyData* output, const bp::Engine& engine, std::size_t trailPoses)
 {
   const std::size_t E = engine.elementCount();
-  // An element placed outside the release window keeps its points but has
-  // no cells: it is not drawn.
+  // An element placed outside the release window, or terminated at the
+  // boundary (Boundary Terminate), keeps its points but has no cells.
   std::vector<std::uint8_t> hidden(E);
   const std::vector<std::uint8_t>& flags = engine.resetFlags();
   std::transform(flags.begin(), flags.end(), hidden.begin(),
-    [](std::uint8_t f) { return std::uint8_t((f & bp::ReleaseHidden) != 0); });
+    [](std::uint8_t f) { return std::uint8_t((f & bp::HiddenFlags) != 0); });
   if (!this->Cells || this->Elements != E || hidden != this->Hidden)
   {
     this->Elements = E; // in parallel, the count changes as elements move

@@ -174,7 +174,7 @@ void writeDeformation(
     const double age = double(engine.drawnLifetime(e)) - double(engine.lifetimes()[e]);
     const std::array<float, 3> d =
       bp::elementDeformation(fit, engine.positions().data() + 3 * e * n, age,
-        engine.resetFlags()[e] & bp::ReleaseHidden, engine.parameters().ftleMinimumAge);
+        engine.resetFlags()[e] & bp::HiddenFlags, engine.parameters().ftleMinimumAge);
     for (std::size_t i = e * n; i < (e + 1) * n; ++i)
     {
       if (stretch)
@@ -344,7 +344,7 @@ std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
     for (std::size_t e = 0; e < E; ++e)
     {
       if (engine.trailGenerations()[slot * E + e] == engine.generations()[e] &&
-        !(engine.resetFlags()[e] & bp::ReleaseHidden))
+        !(engine.resetFlags()[e] & bp::HiddenFlags))
       {
         poses.push_back({ slot, e, float(time - recorded) });
       }

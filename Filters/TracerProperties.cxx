@@ -51,6 +51,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.inertia = this->Inertia;
   p.linking = this->Linking;
   p.resetWhen = this->ResetWhen;
+  p.boundary = this->Boundary;
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = bp::settingAsFloat(this->LinkStiffness);
   p.responseTime = bp::settingAsFloat(this->ResponseTime);

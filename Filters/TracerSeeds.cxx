@@ -112,8 +112,10 @@ void warnOfSeeds(vtkObject* owner, const bpvtk::TracerSeeds& seeds, std::size_t 
     vtkWarningWithObjectMacro(
       owner, << n.atBoundary << " of the " << name << "'s points lie within half an element of the "
              << "field's boundary: with Reset When = Any Particle Leaves, elements released there "
-             << "leave at once and are released again every step. Move the seeds inward, or reset "
-             << "when the centre leaves.");
+             << "leave at once and "
+             << (p.boundary == bp::Boundary::Terminate ? "are hidden until their lifetime ends"
+                                                       : "are released again every step")
+             << ". Move the seeds inward, or reset when the centre leaves.");
   }
   const std::size_t kept = p.seedPoints.size() / 3;
   // A few seeds in still flow are the flow's business; a share that changes

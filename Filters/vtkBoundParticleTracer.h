@@ -344,6 +344,18 @@ public:
   ///@}
 
   ///@{
+  /// What happens to an element that leaves the field (through a side of the
+  /// grid, or into a cell outside the flow; Reset When says whether its
+  /// centre or any particle counts): Release Again (default) puts it back
+  /// into the emitter at once as its next generation; Terminate hides it
+  /// until its lifetime runs out, and only then releases it again, so fewer
+  /// elements are shown while some wait. Terminate cannot be used with
+  /// Linking (a super set lives out its lifetime whole).
+  // Declares SetBoundary, GetBoundary and GetBoundaryAsString.
+  vtkBPEnumMacro(Boundary, bp::Boundary);
+  ///@}
+
+  ///@{
   /// Releases avoid stagnant flow: an element whose centre moves slower than
   /// this fraction of the field's top speed (at the start) over its first
   /// step is released again. 0 keeps every release.
@@ -585,6 +597,7 @@ protected:
   bp::Inertia Inertia = bp::Inertia::None;
   bp::Linking Linking = bp::Linking::None;
   bp::ResetWhen ResetWhen = bp::ResetWhen::CenterLeaves;
+  bp::Boundary Boundary = bp::Boundary::ReleaseAgain;
   int ColoringAxis = 2;
   int ResampleDimensions[3] = { 0, 0, 0 };
   vtkIdType NumberOfElements = 1000;

@@ -127,6 +127,7 @@ void GpuSystem::testInputs(
   pass.setInt("bpSettleOnly", settleOnly ? 1 : 0);
   const bool any = this->parameters.resetWhen == ResetWhen::AnyParticleLeaves;
   pass.setInt("bpAnyParticle", any ? 1 : 0);
+  pass.setInt("bpBoundary", int(this->parameters.boundary));
   pass.setFloat("bpStep", float(h));
   pass.setFloat("bpReleaseMinSpeed", this->parameters.releaseMinSpeed);
   pass.setFloat("bpEndWeight", endWeight);

@@ -48,10 +48,14 @@ out float bpScalarVSOutput;    // the scalar, scaled to [0, 1] over the range
 vec4 bpVertexMC;
 vec3 bpNormalMC;
 bool bpHidden; // the element, or an element of the link, was placed outside the release window
+              // or terminated at the boundary
 
+// Centre .w 1: placed outside the release window; 2: terminated (bp_reset.glsl),
+// as is an element whose last test flagged it 2 (bp_test.glsl).
 bool bpHiddenElement(int e)
 {
-  return texelFetch(bpCenters, bpElementTexel(e), 0).w > 0.5;
+  ivec2 texel = bpElementTexel(e);
+  return texelFetch(bpCenters, texel, 0).w > 0.5 || texelFetch(bpElements, texel, 0).z > 1.5;
 }
 
 // A hidden element is not drawn: every vertex of its primitives lies outside

@@ -85,11 +85,16 @@ vec4 bpPlacedOrientation(int e, float generation, vec3 center)
 void bpResetElement(int e, inout vec4 state, inout vec4 center, inout vec4 orientation,
   inout vec4 pose)
 {
-  // A hidden element (placed outside the release window) is due at every step.
-  bool hidden = center.w > 0.5;
-  if (!(bpInitialize || state.z > 0.5 || state.x <= 0.0 || hidden))
+  // A hidden element (placed outside the release window: centre .w 1) is due
+  // at every step. One terminated at the boundary (its test's flag 2, then
+  // centre .w 2; Engine's Terminated) stays hidden, due only at the end of
+  // its lifetime.
+  bool hidden = center.w > 0.5 && center.w < 1.5;
+  bool terminated = state.z > 1.5 || center.w > 1.5;
+  if (!(bpInitialize || (state.z > 0.5 && state.z < 1.5) || state.x <= 0.0 || hidden))
   {
     state = vec4(state.x, state.y, 0.0, 0.0);
+    center.w = terminated ? 2.0 : center.w;
     return;
   }
   float generation = bpInitialize ? 0.0 : state.y + 1.0;

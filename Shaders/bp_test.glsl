@@ -2,8 +2,11 @@
 // element when its centre (or any particle) left the field or entered a cell
 // outside the flow's domain, when in its first step its centre moved slower
 // than the release speed, or when a position is not finite; and take the
-// step off its lifetime.
+// step off its lifetime. With Boundary Terminate (bpBoundary) an element that
+// left the field is flagged 2 instead of 1 (Engine::settle's Terminated): the
+// reset keeps it hidden (centre .w 2) until its lifetime runs out.
 uniform bool bpAnyParticle;
+uniform int bpBoundary; // a bp::Boundary
 uniform float bpReleaseMinSpeed; // 0: every release stays
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
 // Anchor = Centre (bpAnchored): the element is tested where it is moved back
@@ -56,12 +59,18 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
       anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
     }
   }
-  bool leave = !finite || (bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight)) ||
-    bpReleasedStagnant(e, state, c, center.xyz);
+  bool left = bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight);
+  bool due = !finite || bpReleasedStagnant(e, state, c, center.xyz);
   // A super set's element stays (finalize keeps its last good positions):
-  // resetting it alone would tear the structure.
-  leave = leave && !bpLinked;
-  tested = vec4(state.x - bpStep, state.y, leave ? 1.0 : 0.0, finite ? 0.0 : 1.0);
+  // resetting it alone would tear the structure. A terminated element
+  // (centre .w 2) stays terminated until its lifetime runs out.
+  float flag = 0.0;
+  if (!bpLinked && !(center.w > 1.5))
+  {
+    flag = due || left ? 1.0 : 0.0;
+    flag = left && !due && bpBoundary == BP_BOUNDARY_TERMINATE ? 2.0 : flag;
+  }
+  tested = vec4(state.x - bpStep, state.y, flag, finite ? 0.0 : 1.0);
 }
 
 void bpTestPass(ivec2 texel, int e, int i, inout vec4 tested, inout vec4 shift,

@@ -135,6 +135,22 @@ struct EnumTraits<ResetWhen>
   static constexpr const char* names[] = { "Center Leaves", "Any Particle Leaves" };
 };
 
+/// What happens to an element that leaves the field (Boundary): through a
+/// side of the grid or into a cell outside the flow, as Reset When tests it.
+/// ReleaseAgain places it again at once (its next generation); Terminate
+/// hides it until its lifetime runs out, and only then places it again, so
+/// its slot stays empty meanwhile (engine specification, "Boundaries").
+enum class Boundary
+{
+  ReleaseAgain = 0,
+  Terminate
+};
+template <>
+struct EnumTraits<Boundary>
+{
+  static constexpr const char* names[] = { "Release Again", "Terminate" };
+};
+
 /// The unit of the tracer's Step Size (Step Size Unit): cells, the fastest
 /// particle of the field moving that many cell lengths per step
 /// (TraceSettings::stepInCellLengths), or the data's time units.

@@ -340,7 +340,8 @@ private:
   /// Along Flow: turns element e onto the flow at its initial centre.
   void alignToFlow(std::size_t e, const ReleaseFlow& flow);
   /// Whether element e is placed anew in the next step: flagged by the
-  /// reposition test, hidden, or out of lifetime.
+  /// reposition test, hidden, or out of lifetime (a Terminated element waits
+  /// for the end of its lifetime).
   bool isDue(std::size_t e) const
   {
     return (this->ResetFlags[e] & (ResetDue | ReleaseHidden)) || this->Lifetimes[e] <= 0.0f;

@@ -226,7 +226,7 @@ std::string Engine::merge(
   // A record's flags keep only the bits a flag may hold.
   for (std::uint8_t& flags : this->ResetFlags)
   {
-    flags = std::uint8_t(flags & (ResetDue | ReleaseHidden | AlignPending));
+    flags = std::uint8_t(flags & (ResetDue | ReleaseHidden | AlignPending | Terminated));
   }
   this->Scratch.visitOrder.clear();
   this->Scratch.normals.clear(); // recomputed from the positions before they are shown

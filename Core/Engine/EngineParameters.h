@@ -40,6 +40,11 @@ constexpr std::uint8_t ReleaseHidden = 2;
 /// distributed step, whose new centre may lie in another piece); turned onto
 /// the flow by the piece that holds it, before it is advected.
 constexpr std::uint8_t AlignPending = 4;
+/// Bit 3: left the field with Boundary::Terminate: hidden, and not due
+/// until its lifetime runs out (Engine::isDue), when it is placed again.
+constexpr std::uint8_t Terminated = 8;
+/// The bits of an element that is not shown (no cells, no trail, no FTLE).
+constexpr std::uint8_t HiddenFlags = ReleaseHidden | Terminated;
 
 /// How many candidate centres a release draws before it takes the last one
 /// (Engine::place): with 95% of the box unfit, 96% of releases still land fit.
@@ -96,6 +101,9 @@ struct Parameters
   int latticeWidth = 0;       ///< W of a sheet, tube or torus; 0 for near square
   float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
+  /// What an element that leaves the field (by resetWhen) does: released
+  /// again (ResetDue), or terminated (Terminated) until its lifetime ends.
+  Boundary boundary = Boundary::ReleaseAgain;
   ReleasePattern releasePattern = ReleasePattern::Random;
   /// The lattice of ReleasePattern::Lattice, over the emitter box
   /// (resolveSettings makes numberOfElements its size()).

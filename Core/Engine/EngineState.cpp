@@ -225,6 +225,7 @@ std::vector<NamedValue> parameterValues(const Parameters& p)
   add(v, "latticeWidth", p.latticeWidth);
   add(v, "linkStiffness", p.linkStiffness);
   addEnum(v, "resetWhen", p.resetWhen);
+  addEnum(v, "boundary", p.boundary);
   addEnum(v, "releasePattern", p.releasePattern);
   addArray(v, "lattice.counts", p.lattice.counts);
   addArray(v, "lattice.origin", p.lattice.origin);

@@ -35,7 +35,7 @@ namespace bp
 /// The version of the state's layout and of the engine's arithmetic a state
 /// was saved by: bumped when either changes, and a state of another version
 /// is refused (TestEngineState's golden bits fail on a change left unbumped).
-constexpr std::uint32_t EngineStateVersion = 1;
+constexpr std::uint32_t EngineStateVersion = 2;
 
 /// One per-element array of the state, in record order.
 struct StateArray

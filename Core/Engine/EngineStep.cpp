@@ -332,7 +332,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   {
     shareSlip(slips, n); // restored: the element moves as one body
   }
-  bool leave;
+  bool leave = false, left = false; // due at once; out of the field (by resetWhen)
   if (!finite)
   {
     // Keep the last good positions on view until the reset at the next step.
@@ -354,11 +354,11 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
       at = this->InitialCenters.data() + 3 * e;
       anyOutside = this->anchor(e, field, weights, center, byParticle);
     }
-    leave = byParticle ? anyOutside : !this->inDomain(field, at, weights.end);
+    left = byParticle ? anyOutside : !this->inDomain(field, at, weights.end);
     // The release-speed test reads the centre the flow carried the element
     // to, before anchoring took it back (else every anchored release would
     // look stagnant).
-    leave = leave || this->releasedStagnant(e, center, h);
+    leave = this->releasedStagnant(e, center, h);
   }
   if (this->Params.trackPoses)
   {
@@ -368,8 +368,16 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   // turn non-finite): resetting it alone would tear the structure.
   // A hidden element stays hidden, and due (even in a super set, which is
   // released whole when the window opens).
-  const std::uint8_t hidden = this->ResetFlags[e] & ReleaseHidden;
-  this->ResetFlags[e] = std::uint8_t((leave && this->Links.empty() ? ResetDue : 0) | hidden);
+  // Boundary::Terminate: one that left the field is hidden (Terminated)
+  // until its lifetime runs out, and stays so whatever happens to it meanwhile.
+  const std::uint8_t hidden = this->ResetFlags[e] & (ReleaseHidden | Terminated);
+  std::uint8_t flag = 0;
+  if (this->Links.empty() && !(hidden & Terminated))
+  {
+    const bool terminates = left && !leave && this->Params.boundary == Boundary::Terminate;
+    flag = terminates ? Terminated : (leave || left) ? ResetDue : 0;
+  }
+  this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);
 }
 

@@ -258,6 +258,22 @@ std::string checkInertia(const ElementTemplate& /*shape*/, const Parameters& p)
   }
   return std::string();
 }
+
+std::string checkBoundary(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (p.boundary != Boundary::ReleaseAgain && p.boundary != Boundary::Terminate)
+  {
+    return "Boundary must be Release Again or Terminate";
+  }
+  if (p.boundary == Boundary::Terminate && p.linking != Linking::None)
+  {
+    // A super set's elements are never flagged when they leave the field.
+    return "Boundary = Terminate ends single elements that leave the field; a super set "
+           "(Linking) lives out its lifetime whole: set Linking to None or Boundary to Release "
+           "Again";
+  }
+  return std::string();
+}
 } // namespace
 
 std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
@@ -267,7 +283,7 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
   const Check checks[] = { checkShape, checkLattice, checkSize, checkTrail, checkReleaseWindow,
-    checkRelease, checkRestoration, checkLinking, checkAnchor, checkInertia };
+    checkRelease, checkRestoration, checkLinking, checkAnchor, checkInertia, checkBoundary };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);

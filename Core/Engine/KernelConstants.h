@@ -80,7 +80,9 @@ enum class KernelConstantUse
   X(ORIENTATION_ALONG_FLOW, Int, int(::bp::Orientation::AlongFlow), EnumValue)                    \
   X(INTEGRATOR_EULER, Int, int(::bp::Integrator::Euler), Kernels)                                 \
   X(INTEGRATOR_RK2, Int, int(::bp::Integrator::RK2), Kernels)                                     \
-  X(INTEGRATOR_RK4, Int, int(::bp::Integrator::RK4), EnumValue)
+  X(INTEGRATOR_RK4, Int, int(::bp::Integrator::RK4), EnumValue)                                  \
+  X(BOUNDARY_RELEASE_AGAIN, Int, int(::bp::Boundary::ReleaseAgain), EnumValue)                    \
+  X(BOUNDARY_TERMINATE, Int, int(::bp::Boundary::Terminate), Kernels)
 // clang-format on
 
 #endif

@@ -466,7 +466,7 @@ TEST(EngineState, GoldenBitsOfThisVersion)
   bp::TraceState state;
   state.engine = engine.saveState();
   EXPECT_GT(generationsSum(engine), 0u);
-  EXPECT_EQ(bp::EngineStateVersion, 1u);
-  EXPECT_EQ(bp::stateChecksum(state), 0x6f37aca594a5d18full)
+  EXPECT_EQ(bp::EngineStateVersion, 2u);
+  EXPECT_EQ(bp::stateChecksum(state), 0x0a073e57142dced4ull)
     << std::hex << bp::stateChecksum(state);
 }

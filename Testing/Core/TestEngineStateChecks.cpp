@@ -79,9 +79,9 @@ TEST(EngineState, BadStatesAreRefusedWithTheirReason)
     change(s);
     return s;
   };
-  const bp::TraceState newer = changed([](bp::TraceState& s) { s.version = 2; });
+  const bp::TraceState newer = changed([](bp::TraceState& s) { s.version = 3; });
   expectRefused(newer, good.shape, good.p,
-    { "version 2", "this engine's is 1", "trace again from the start" }, false);
+    { "version 3", "this engine's is 2", "trace again from the start" }, false);
   // Another template, trails off, more elements than the trace has.
   expectRefused(good.state, bp::builtinTemplate(bp::BuiltinShape::Strip8), good.p,
     { "element array Positions", "another element template" });
@@ -158,7 +158,7 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   // Whoever adds a member to bp::Parameters adds it to bp::parameterValues
   // (Core/Engine/EngineState.cpp) and to `changes` below, in declaration
   // order, then sets the size here (a resumed trace compares every setting).
-  static_assert(sizeof(void*) != 8 || sizeof(bp::Parameters) == 280,
+  static_assert(sizeof(void*) != 8 || sizeof(bp::Parameters) == 288,
     "bp::Parameters changed: add the new member to bp::parameterValues and to this test");
   using P = bp::Parameters;
   struct Change
@@ -196,6 +196,7 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   add("latticeWidth", [](P& p) { p.latticeWidth = 4; });
   add("linkStiffness", [](P& p) { p.linkStiffness = 0.5f; });
   add("resetWhen", [](P& p) { p.resetWhen = bp::ResetWhen::AnyParticleLeaves; });
+  add("boundary", [](P& p) { p.boundary = bp::Boundary::Terminate; });
   add("releasePattern", [](P& p) { p.releasePattern = bp::ReleasePattern::Lattice; });
   addArray("lattice.counts", 3, [](P& p, std::size_t k) { p.lattice.counts[k] = 5; });
   addArray("lattice.origin", 3, [](P& p, std::size_t k) { p.lattice.origin[k] = 0.5f; });
@@ -328,7 +329,7 @@ TEST(EngineState, TheChecksumChangesWithAnyWordOrValue)
     copy.engine.records[k] = good.state.engine.records[k];
   }
   const std::vector<std::function<void(bp::TraceState&)>> changes = {
-    [](bp::TraceState& s) { s.version = 2; },
+    [](bp::TraceState& s) { s.version = 3; },
     [](bp::TraceState& s) { s.engine.layout[2].name = "Flags"; },
     [](bp::TraceState& s) { s.engine.layout[3].type = bp::StateArray::Type::UInt32; },
     [](bp::TraceState& s) { ++s.engine.layout[4].components; },

@@ -143,6 +143,7 @@ const std::map<std::string, CoreField> CoreDefaults = {
   { "LatticeWidth", [](const auto& c) { return one(c.trace.engine.latticeWidth); } },
   { "LinkStiffness", [](const auto& c) { return one(c.trace.engine.linkStiffness); } },
   { "ResetWhen", [](const auto& c) { return one(c.trace.engine.resetWhen); } },
+  { "Boundary", [](const auto& c) { return one(c.trace.engine.boundary); } },
   { "MinimumReleaseSpeed", [](const auto& c) { return one(c.trace.minimumReleaseSpeed); } },
   { "Trails", [](const auto& c) { return one(c.trace.trailLength > 0 ? 1 : 0); } },
   { "TrailSpacing", [](const auto& c) { return one(c.trace.trailSpacing); } },
@@ -205,6 +206,7 @@ const std::map<std::string, CoreEntries> CoreEnums = {
   { "BoundParticleTracer.Inertia", entriesOfGetter(&vtkBPT::GetInertia) },
   { "BoundParticleTracer.Linking", entriesOfGetter(&vtkBPT::GetLinking) },
   { "BoundParticleTracer.ResetWhen", entriesOfGetter(&vtkBPT::GetResetWhen) },
+  { "BoundParticleTracer.Boundary", entriesOfGetter(&vtkBPT::GetBoundary) },
 };
 
 /// The enumerated properties with no Core enumeration, and why.
