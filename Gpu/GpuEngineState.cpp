@@ -78,13 +78,17 @@ bool transfer(Columns& c, const std::vector<StateArray>& layout, std::size_t e, 
     }
     else if (name == "ResetFlags")
     {
+      // The test's flag (1 due, 2 terminated this step) and the centre's .w
+      // (1 hidden, 2 terminated before): bp_reset.glsl's encoding.
       if (read)
-        *record = (state[2] > 0.5f ? ResetDue : 0u) | (centers[3] > 0.5f ? ReleaseHidden : 0u);
+        *record = (state[2] > 0.5f && state[2] < 1.5f ? ResetDue : 0u) |
+          (centers[3] > 0.5f && centers[3] < 1.5f ? ReleaseHidden : 0u) |
+          (state[2] > 1.5f || centers[3] > 1.5f ? Terminated : 0u);
       else
       {
         state[2] = (*record & ResetDue) ? 1.0f : 0.0f;
         state[3] = 0.0f;
-        centers[3] = (*record & ReleaseHidden) ? 1.0f : 0.0f;
+        centers[3] = (*record & Terminated) ? 2.0f : (*record & ReleaseHidden) ? 1.0f : 0.0f;
       }
       ++record;
     }

@@ -46,8 +46,9 @@ bp::FieldSlice slice(const bp::GridGeometry& g, double t)
 enum class Kind
 {
   Massless,
-  Heavy,   ///< heavy particles: the record's slips
-  SuperSet ///< a super set's tube of Strip4 elements (links built at configure)
+  Heavy,    ///< heavy particles: the record's slips
+  SuperSet, ///< a super set's tube of Strip4 elements (links built at configure)
+  Terminate ///< Boundary Terminate: elements with a particle out of the field are terminated
 };
 
 /// The unsteady double gyre, elements placed again several times over 60
@@ -77,6 +78,13 @@ struct System
     {
       shape = bp::builtinTemplate(bp::BuiltinShape::Strip4);
       p.linking = bp::Linking::Tube;
+    }
+    if (kind == Kind::Terminate)
+    {
+      // Released up to the field's sides, an element with a particle out is
+      // terminated (not replaced before its lifetime ends).
+      p.boundary = bp::Boundary::Terminate;
+      p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
     }
     if (kind == Kind::Heavy)
     {
@@ -215,6 +223,14 @@ TEST_P(GpuEngineState, ReadsBackWhatTheCpuEngineSaves)
   for (std::size_t k = 0; k < saved.layout.size(); ++k)
     EXPECT_EQ(read.layout[k].name, saved.layout[k].name);
   expectParity(read, saved, s.g.diagonal());
+  if (GetParam() == Kind::Terminate)
+  {
+    const auto& flags = cpu.resetFlags();
+    EXPECT_GT(std::count_if(flags.begin(), flags.end(),
+                [](std::uint8_t f) { return (f & bp::Terminated) != 0; }),
+      0)
+      << "the state holds terminated elements";
+  }
   gpu.release();
 }
 
@@ -277,13 +293,14 @@ TEST_P(GpuEngineState, AStateReadBackGoesOnBitForBit)
 
 std::string kindName(const ::testing::TestParamInfo<Kind>& info)
 {
-  return info.param == Kind::Heavy ? "Heavy"
-    : info.param == Kind::SuperSet ? "SuperSet"
-                                   : "Massless";
+  return info.param == Kind::Heavy  ? "Heavy"
+    : info.param == Kind::SuperSet  ? "SuperSet"
+    : info.param == Kind::Terminate ? "Terminate"
+                                    : "Massless";
 }
 
 INSTANTIATE_TEST_SUITE_P(Systems, GpuEngineState,
-  ::testing::Values(Kind::Massless, Kind::Heavy, Kind::SuperSet), kindName);
+  ::testing::Values(Kind::Massless, Kind::Heavy, Kind::SuperSet, Kind::Terminate), kindName);
 
 TEST(GpuStepperState, TheCommittedStateIsTheSavedCopyWhileAShortStepIsShown)
 {
