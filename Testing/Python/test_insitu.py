@@ -134,9 +134,10 @@ Delete(backward)
 Delete(backward_feed)
 
 
-def trace_in_situ(step_at, settings):
+def trace_in_situ(step_at, settings, take=elements):
     """The tracer fed step_at(k, t) for each time (None: that step never
-    comes); its elements at the last step, and the messages said."""
+    comes); take(tracer, t) at the last step fed (its elements by default),
+    and the messages said."""
     feed = PVTrivialProducer()
     tracer = BoundParticleTracer(Input=feed, **settings)
     with bptest.CapturedMessages() as said:
@@ -145,7 +146,7 @@ def trace_in_situ(step_at, settings):
             if data is not None:
                 feed.GetClientSideObject().SetOutput(data, t)
                 feed.MarkModified(feed)
-                got = elements(tracer, t)
+                got = take(tracer, t)
     said.messages = [m for m in said.messages if "New time step is not" not in m]
     Delete(tracer)
     Delete(feed)
@@ -315,30 +316,22 @@ def save_state_in_situ(settings, path):
 save_state_in_situ(SETTINGS, state_file)
 
 
-def last_output(step_at, settings):
-    """The tracer fed step_at(k, t) for each time (None: that step never
-    comes): every point array of its last output (with the points), by
-    name, and the messages said."""
-    feed = PVTrivialProducer()
-    tracer = BoundParticleTracer(Input=feed, **settings)
-    with bptest.CapturedMessages() as said:
-        for k, t in enumerate(times):
-            data = step_at(k, t)
-            if data is not None:
-                feed.GetClientSideObject().SetOutput(data, t)
-                feed.MarkModified(feed)
-                tracer.UpdatePipeline(t)
-        out = servermanager.Fetch(tracer)
-    said.messages = [m for m in said.messages if "New time step is not" not in m]
+def point_arrays(tracer, t):
+    """Every point array of the tracer's output at t (with the points), by name."""
+    tracer.UpdatePipeline(t)
+    out = servermanager.Fetch(tracer)
     arrays = {}
     if out.GetNumberOfPoints():
         arrays["points"] = vtk_to_numpy(out.GetPoints().GetData()).copy()
         for i in range(out.GetPointData().GetNumberOfArrays()):
             array = out.GetPointData().GetArray(i)
             arrays[array.GetName()] = vtk_to_numpy(array).copy()
-    Delete(tracer)
-    Delete(feed)
-    return arrays, said
+    return arrays
+
+
+def last_output(step_at, settings):
+    """trace_in_situ's, with every point array of the last output."""
+    return trace_in_situ(step_at, settings, take=point_arrays)
 
 
 never_stopped, _ = last_output(lambda k, t: step_of(t), SETTINGS)
