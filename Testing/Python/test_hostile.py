@@ -5,11 +5,12 @@ time limit per case.
 Each case must end with exit status 0 (no signal, no abort), within its time
 limit, with finite output; a case the tracer must refuse must also say why,
 naming the problem. Run as the driver (`--plugin P`); the driver runs itself
-with `--case NAME ...`. The cases in ALONE (those that ask for more memory
-than the machine has, and those that draw in a view) each get a process of
-their own; the others share one, in a fresh session each, which saves a
-pvpython start-up per case. A case that kills or hangs the shared process
-fails by name, and the cases after it go on in a new one.
+with `--case NAME ...`. The cases share processes, each case in a fresh
+session, which saves a pvpython start-up per case: those in BIG (that ask for
+more memory than the machine has) share one, those in DRAWN (that draw in a
+view) another, and the rest a third. A case that kills or hangs its process
+fails by name, and the cases after it go on in a new one, so a regression in
+one case never takes the others with it.
 """
 import argparse
 import hashlib
@@ -502,16 +503,21 @@ CASES = {
 }
 
 
-# Cases that each run in a process of their own: allocations far past the
-# machine (a regression there must not take the other cases with it) and
-# displays (pvpython crashes at exit with a view left alive).
-ALONE = {
+# Cases that share a process apart from the others: allocations far past the
+# machine (a process their regression ends or bloats holds no other kind of
+# case), and displays (a view left alive after a failed case must not reach
+# the cases that draw nothing).
+BIG = {
     "Resample Dimensions of 2^33 points", "Resample Dimensions of 2^30 points",
     "resolution 4096^3", "all pairs on 20k points", "2^26 point elements",
     "template id beyond 32 bits", ".bpvol dimensions overflowing 64 bits",
-    "GPU template of 20k points", "GPU template of 200k points", "GPU template of 2k points",
-    "multiblock seed source, Bound Particles display", "Line of a billion points",
+    "Line of a billion points",
 }
+DRAWN = {
+    "GPU template of 20k points", "GPU template of 200k points", "GPU template of 2k points",
+    "multiblock seed source, Bound Particles display",
+}
+assert BIG <= set(CASES) and DRAWN <= set(CASES), "a case named in BIG or DRAWN is not in CASES"
 
 
 def run_case(name, seconds_from):
@@ -608,19 +614,21 @@ def run_cases_process(names, scratch):
     return ran
 
 
-def run_all(names, scratch):
-    """Every case: (exit status, output, seconds, result) by name, the shared ones in
-    as few processes as their failures allow."""
-    results = {}
-    for name in names:
-        if name in ALONE:
-            results[name] = run_cases_process([name], scratch)[0][1:]
-    shared = [name for name in names if name not in ALONE]
-    while shared:
-        for row in run_cases_process(shared, scratch):
+def run_shared(names, scratch, results):
+    """Runs the cases in as few processes as their failures allow: the next
+    process starts at the first case without a result."""
+    while names:
+        for row in run_cases_process(names, scratch):
             results[row[0]] = row[1:]
-        # The next process starts at the first case without a result.
-        shared = [name for name in shared if name not in results]
+        names = [name for name in names if name not in results]
+
+
+def run_all(names, scratch):
+    """Every case: (exit status, output, seconds, result) by name."""
+    results = {}
+    for group in (BIG, DRAWN):
+        run_shared([name for name in names if name in group], scratch, results)
+    run_shared([name for name in names if name not in BIG | DRAWN], scratch, results)
     return results
 
 
