@@ -360,8 +360,8 @@ public:
   /// back to where it was before the step (and stops). Walled elements are
   /// never released again for leaving. Terminate cannot be used with
   /// Linking (a super set lives out its lifetime whole); Stick, Slip and
-  /// Bounce cannot be used with Linking or Anchor = Centre, and run on the
-  /// CPU engine only so far.
+  /// Bounce cannot be used with Linking or Anchor = Centre. Both engines do
+  /// the same.
   // Declares SetBoundary, GetBoundary and GetBoundaryAsString.
   vtkBPEnumMacro(Boundary, bp::Boundary);
   ///@}

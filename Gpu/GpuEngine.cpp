@@ -97,12 +97,6 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     return error;
   }
-  if (isWall(p.boundary))
-  {
-    return std::string("Boundary = ") + enumName(p.boundary) +
-      " runs on the CPU engine only so far: set the engine to CPU, or Boundary to Release Again "
-      "or Terminate";
-  }
   this->release();
   Internals& I = *this->I;
   error = I.system.make(shape, p, I.textureSizeLimit, I.generatedSprings, I.fusedSteps);

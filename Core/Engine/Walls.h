@@ -3,7 +3,7 @@
  * @file Walls.h
  * @brief The field's own boundary as a wall (Boundary Stick, Slip or Bounce;
  * engine specification 2.8, "Walls"): the rules for one particle, which both
- * engines follow (the GPU engine in Shaders/bp_wall.glsl).
+ * engines follow (the GPU engine in Shaders/bp_common.glsl).
  *
  * The walls are the sides of the domain box (Engine::domainOf: the whole
  * field's bounds, also under MPI) along its axes of more than one point; a
@@ -41,6 +41,9 @@ inline bool isWall(Boundary b)
 /// The sides a particle met: bit 2a for the lower side of axis a, bit
 /// 2a + 1 for the upper; 0 for none.
 using WallHits = unsigned;
+/// With the sides, in what the GPU engine's advect pass hands its slip share
+/// pass: the particle went back out of a cell outside the flow.
+constexpr WallHits WallMaskedCell = 1u << 6;
 
 /// Whether p lies on a side of `box` (p[a] equal to its lower or upper bound
 /// along an axis a that is not flat): a particle that Stick holds.
