@@ -393,3 +393,31 @@ TEST(Walls, BadCombinationsAreRefusedByName)
   unknown.boundary = bp::Boundary(7);
   EXPECT_NE(bp::Engine::validate(shape, unknown).find("Boundary must be"), std::string::npos);
 }
+
+TEST(Walls, AResumedStickTraceHoldsWhatItHeld)
+{
+  // Held is a property of the position (on a side, exactly): a state saved
+  // with particles held resumes them held, to the bits of a trace that never
+  // stopped, with no new state.
+  const bp::VectorField field = uniformFlow({ 1.0f, 0.25f, 0 });
+  bp::Parameters p = strip(bp::Boundary::Stick, { 0.5f, -0.5f, 0 });
+  p.numberOfElements = 8;
+  p.emitterMin = { 0.2f, -0.6f, -0.5f };
+  p.emitterMax = { 0.6f, 0.6f, 0.5f };
+  p.orientation = bp::Orientation::Random;
+  p.lifetimeMin = 0.5f;
+  p.lifetimeMax = 1.5f;
+  bp::Engine a = started(p, bp::BuiltinShape::Strip4);
+  run(a, field, 60, 0.01);
+  int held = 0;
+  for (std::size_t q = 0; q < a.positions().size(); q += 3)
+    held += bp::onWall(cube(), a.positions().data() + q) ? 1 : 0;
+  EXPECT_GT(held, 4);
+  bp::Engine b = started(p, bp::BuiltinShape::Strip4);
+  ASSERT_EQ(b.loadState(a.saveState()), "");
+  run(a, field, 90, 0.01, 0.6);
+  run(b, field, 90, 0.01, 0.6);
+  EXPECT_EQ(a.positions(), b.positions());
+  EXPECT_EQ(a.generations(), b.generations());
+  EXPECT_GT(a.generations()[0] + a.generations()[1], 0u); // released again at their lifetime's end
+}
