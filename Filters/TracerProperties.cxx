@@ -52,6 +52,7 @@ bp::TraceSettings vtkBoundParticleTracer::Settings() const
   p.linking = this->Linking;
   p.resetWhen = this->ResetWhen;
   p.boundary = this->Boundary;
+  p.restitution = bp::settingAsFloat(this->Restitution);
   p.latticeWidth = this->LatticeWidth;
   p.linkStiffness = bp::settingAsFloat(this->LinkStiffness);
   p.responseTime = bp::settingAsFloat(this->ResponseTime);

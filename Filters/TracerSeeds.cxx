@@ -107,7 +107,9 @@ void warnOfSeeds(vtkObject* owner, const bpvtk::TracerSeeds& seeds, std::size_t 
              << " points lie outside the field" << (n.nonFinite ? " or are not finite" : "")
              << "; releases take only the other " << p.seedPoints.size() / 3 << ".");
   }
-  if (n.atBoundary > 0 && p.resetWhen == bp::ResetWhen::AnyParticleLeaves)
+  // A wall (Stick, Slip, Bounce) keeps particles in: none leaves at once.
+  if (n.atBoundary > 0 && p.resetWhen == bp::ResetWhen::AnyParticleLeaves &&
+    !bp::isWall(p.boundary))
   {
     vtkWarningWithObjectMacro(
       owner, << n.atBoundary << " of the " << name << "'s points lie within half an element of the "

@@ -585,7 +585,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Inertia: " << this->GetInertiaAsString() << "\n";
   os << indent << "Linking: " << this->GetLinkingAsString() << "\n";
   os << indent << "ResetWhen: " << this->GetResetWhenAsString() << "\n";
-  os << indent << "Boundary: " << this->GetBoundaryAsString() << "\n";
+  os << indent << "Boundary: " << this->GetBoundaryAsString()
+     << ", Restitution: " << this->Restitution << "\n";
   os << indent << "ColoringAxis: " << char('X' + this->ColoringAxis) << "\n";
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "ElementSize: " << this->ElementSize << "\n";

@@ -349,10 +349,31 @@ public:
   /// centre or any particle counts): Release Again (default) puts it back
   /// into the emitter at once as its next generation; Terminate hides it
   /// until its lifetime runs out, and only then releases it again, so fewer
-  /// elements are shown while some wait. Terminate cannot be used with
-  /// Linking (a super set lives out its lifetime whole).
+  /// elements are shown while some wait. Stick, Slip and Bounce make the
+  /// field's boundary a wall that keeps every particle in: a particle that
+  /// crosses a side of the grid is held where it met it (Stick), put on it
+  /// and slides along it (Slip), or reflected back with the Restitution
+  /// (Bounce), and the springs restore the rest of the element, so a strip
+  /// lies down along a wall or tumbles off it; heavy particles (Inertia)
+  /// lose their velocity, its normal component, or have that reversed times
+  /// the Restitution. A particle that enters a cell outside the flow goes
+  /// back to where it was before the step (and stops). Walled elements are
+  /// never released again for leaving. Terminate cannot be used with
+  /// Linking (a super set lives out its lifetime whole); Stick, Slip and
+  /// Bounce cannot be used with Linking or Anchor = Centre. Both engines do
+  /// the same.
   // Declares SetBoundary, GetBoundary and GetBoundaryAsString.
   vtkBPEnumMacro(Boundary, bp::Boundary);
+  ///@}
+
+  ///@{
+  /// Bounce's coefficient of restitution, 0 to 1 (default 1, a mirror): a
+  /// particle's step beyond a wall comes back this share of the way, a heavy
+  /// particle leaves the wall with this share of its normal velocity (and
+  /// rises to its square of the height it fell from). 0 is Slip. Used by
+  /// Boundary = Bounce only; outside [0, 1] (or NaN) is refused.
+  vtkSetMacro(Restitution, double);
+  vtkGetMacro(Restitution, double);
   ///@}
 
   ///@{
@@ -598,6 +619,7 @@ protected:
   bp::Linking Linking = bp::Linking::None;
   bp::ResetWhen ResetWhen = bp::ResetWhen::CenterLeaves;
   bp::Boundary Boundary = bp::Boundary::ReleaseAgain;
+  double Restitution = 1.0;
   int ColoringAxis = 2;
   int ResampleDimensions[3] = { 0, 0, 0 };
   vtkIdType NumberOfElements = 1000;

@@ -374,8 +374,8 @@ std::string GpuPasses::compile(
   this->LocationLookups = 0;
   using P = Programs;
   const ShaderPiece restore = restoreKernel(springSumCode);
-  const PassKernel kernels[] = {
-    { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4, &P::reset, "reset" },
+  const PassKernel kernels[] = { { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4,
+                                   &P::reset, "reset" },
     { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipPass", false, 2, &P::slip, "slip" },
     { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipSharePass", false, 1, &P::slipShare,
       "slip share" },
@@ -389,13 +389,13 @@ std::string GpuPasses::compile(
     { { bpShaderTestNumber, bpShaderTest }, "bpTestPass", true, 2, &P::test, "test" },
     { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpFinalizePass", false, 1, &P::finalize,
       "finalize" },
+    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpWallPass", false, 1, &P::wall, "wall" },
     { { bpShaderNormalsNumber, bpShaderNormals }, "bpNormalsPass", false, 1, &P::normals,
       "normals" },
     { { bpShaderSamplesNumber, bpShaderSamples }, "bpSamplesPass", false, 1, &P::samples,
       "samples" },
     { { bpShaderLinkNumber, bpShaderLink }, "bpLinkPass", false, 1, &P::link, "link" },
-    { { bpShaderPoseNumber, bpShaderPose }, "bpPosePass", true, 2, &P::pose, "pose" }
-  };
+    { { bpShaderPoseNumber, bpShaderPose }, "bpPosePass", true, 2, &P::pose, "pose" } };
   const bool compute = path == GpuPath::Compute;
   const ShaderPiece main = compute ? ShaderPiece{ bpShaderPassCompNumber, bpShaderPassComp }
                                    : ShaderPiece{ bpShaderPassFragNumber, bpShaderPassFrag };
@@ -490,6 +490,10 @@ GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& share
   pass.setFloat("bpLifetimeMin", p.lifetimeMin);
   pass.setFloat("bpLifetimeMax", p.lifetimeMax);
   pass.setInt("bpLinked", shared.linked ? 1 : 0);
+  // The walls (Boundary Stick, Slip, Bounce; bp_common.glsl), read by
+  // several kernels.
+  pass.setInt("bpBoundary", int(p.boundary));
+  pass.setFloat("bpRestitution", p.restitution);
   const bool lattice = p.releasePattern == ReleasePattern::Lattice;
   pass.setInt("bpLattice", lattice ? 1 : 0);
   pass.setIVec3("bpLatticeCounts", p.lattice.counts[0], p.lattice.counts[1], p.lattice.counts[2]);

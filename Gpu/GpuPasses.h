@@ -221,6 +221,7 @@ public:
     GlProgram match;       ///< shape matching: a fit per element
     GlProgram matchApply;  ///< shape matching: a move per particle
     GlProgram link;        ///< a super set's links between elements
+    GlProgram wall;        ///< the walls after restoration (Boundary Stick, Slip, Bounce)
     GlProgram test;        ///< the reposition test
     GlProgram finalize;    ///< the new state
     GlProgram normals;     ///< per particle, from the template's triangles

@@ -6,6 +6,7 @@
 #include "KernelConstants.h"
 #include "Quaternion.h"
 #include "SuperSet.h"
+#include "Walls.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -165,12 +166,19 @@ void GpuSystem::step(double t, double h)
   {
     positions = this->restoreOnce(positions, restorationPass);
   }
+  // The walls after restoration: no particle pushed back through one.
+  const bool restores =
+    !this->shape.springs.empty() || this->parameters.restoration == Restoration::ShapeMatching;
+  if (isWall(this->parameters.boundary) && restores)
+  {
+    positions = this->wallRestored(positions, endWeight, restorationPass);
+  }
   // 5. Reposition test, then the new state.
   this->test(positions, false, h, endWeight);
   this->finalize(positions, false);
   if (carriesInertia(this->parameters))
   {
-    this->shareSlips();
+    this->shareSlips(endWeight);
   }
   // 6. Poses and spins.
   if (this->parameters.trackPoses)

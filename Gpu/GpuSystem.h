@@ -79,7 +79,8 @@ private:
   /// Heavy particles: the slip pass (new slips and their displacements),
   /// and after the test the share pass (a restored element's mean slip).
   void stepSlips(double t, double h);
-  void shareSlips();
+  void shareSlips(float endWeight);
+  GLuint wallRestored(GLuint positions, float endWeight, int& restorationPass);
   GLuint restoreOnce(GLuint positions, int& restorationPass);
   GLuint matchShapes(GLuint positions, int& restorationPass);
   GLuint gaussSeidel(GLuint positions, int& restorationPass);

@@ -81,11 +81,27 @@ void GpuSystem::stepSlips(double t, double h)
   pass.runPerParticle({ this->state.slipsNext.get(), this->state.slipMoves.get() });
 }
 
-void GpuSystem::shareSlips()
+void GpuSystem::shareSlips(float endWeight)
 {
   GpuPass pass = this->begin(this->passes.programs.slipShare);
   this->slipInputs(pass, 0.0, 0.0);
+  // The walls' rule on the velocity: where the advect pass left each
+  // particle and what the walls did (.w), the flow at the step's end.
+  pass.texture("bpAdvected", this->state.advected.get());
+  pass.setFloat("bpEndWeight", endWeight);
   pass.runPerParticle({ this->state.slips.get() });
+}
+
+/// The walls after restoration (Boundary Stick, Slip, Bounce): the restored
+/// `positions` kept in the box (Engine::wallAfterRestoration); returns the
+/// texture they end in.
+GLuint GpuSystem::wallRestored(GLuint positions, float endWeight, int& restorationPass)
+{
+  GpuPass pass = this->begin(this->passes.programs.wall);
+  pass.texture("bpPositions", positions);
+  pass.texture("bpAdvected", this->state.advected.get());
+  pass.setFloat("bpEndWeight", endWeight);
+  return this->runRestorationPass(pass, restorationPass);
 }
 
 void GpuSystem::jacobiInputs(GpuPass& pass, GLuint positions) const
@@ -127,7 +143,6 @@ void GpuSystem::testInputs(
   pass.setInt("bpSettleOnly", settleOnly ? 1 : 0);
   const bool any = this->parameters.resetWhen == ResetWhen::AnyParticleLeaves;
   pass.setInt("bpAnyParticle", any ? 1 : 0);
-  pass.setInt("bpBoundary", int(this->parameters.boundary));
   pass.setFloat("bpStep", float(h));
   pass.setFloat("bpReleaseMinSpeed", this->parameters.releaseMinSpeed);
   pass.setFloat("bpEndWeight", endWeight);

@@ -32,7 +32,16 @@ void bpAdvectParticle(int i, vec4 element, vec4 center, vec4 orientation, vec3 c
   before = element.z > 0.5
     ? bpPlace(center.xyz, orientation, texelFetch(bpRest, ivec2(i, 0), 0).xyz)
     : current;
-  advected = (bpPlaceOnly || bpPinned(i)) ? before : bpIntegrate(before);
+  // Stick holds a particle on a side of the box: not advected.
+  advected = (bpPlaceOnly || bpPinned(i) || bpHeld(before)) ? before : bpIntegrate(before);
+}
+
+// Whether particle i, starting the step at `before`, meets the walls after
+// advection (Engine::resetAndAdvect): a wall boundary, not placing only,
+// neither pinned nor held.
+bool bpMeetsWalls(int i, vec3 before)
+{
+  return bpWalled() && !bpPlaceOnly && !bpPinned(i) && !bpHeld(before);
 }
 
 void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 before,
@@ -46,6 +55,8 @@ void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 bef
   {
     a += texelFetch(bpSlipMoves, texel, 0).xyz; // the slip's own (bp_slip.glsl)
   }
-  advected = vec4(a, 0.0);
+  // The walls (bp_common.glsl), what they did in .w for the slip share pass.
+  int hits = bpMeetsWalls(i, b) ? bpWallParticle(b, a, bpWeights.z) : 0;
+  advected = vec4(a, float(hits));
   before = vec4(b, 0.0);
 }

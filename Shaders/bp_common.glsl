@@ -437,6 +437,199 @@ bool bpFinite(vec3 p)
   return !any(isnan(p)) && !any(isinf(p));
 }
 
+// ---- Walls (Core/Engine/Walls.h; engine specification 2.8, "Walls") -------
+// With Boundary Stick, Slip or Bounce the sides of the domain box (along
+// axes that are not flat) keep every particle in. Sides met are bits: 2a
+// for the lower side of axis a, 2a + 1 for the upper (WallHits).
+uniform int bpBoundary;      // a bp::Boundary
+uniform float bpRestitution; // Bounce's e, in [0, 1]
+
+bool bpWalled()
+{
+  return bpBoundary == BP_BOUNDARY_STICK || bpBoundary == BP_BOUNDARY_SLIP ||
+    bpBoundary == BP_BOUNDARY_BOUNCE;
+}
+
+// onWall: p on a side, compared exactly.
+bool bpOnWall(vec3 p)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!bpDegenerate[a] && (p[a] == bpLower[a] || p[a] == bpUpper[a]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// A particle Stick holds: not advected, back where it was after restoration.
+bool bpHeld(vec3 p)
+{
+  return bpBoundary == BP_BOUNDARY_STICK && bpOnWall(p);
+}
+
+// clampToBox: p put on the sides it lies beyond; the sides met.
+int bpClampToBox(inout vec3 p)
+{
+  int hits = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpDegenerate[a])
+    {
+      continue;
+    }
+    if (p[a] < bpLower[a])
+    {
+      p[a] = bpLower[a];
+      hits |= 1 << (2 * a);
+    }
+    else if (p[a] > bpUpper[a])
+    {
+      p[a] = bpUpper[a];
+      hits |= 1 << (2 * a + 1);
+    }
+  }
+  return hits;
+}
+
+// Stick from a `before` in the box: the first point of before -> p on a side.
+int bpStickAlongStep(vec3 before, inout vec3 p)
+{
+  float first = 1.0;
+  int axis = -1;
+  float wall = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpDegenerate[a])
+    {
+      continue;
+    }
+    float w = p[a] < bpLower[a] ? bpLower[a] : p[a] > bpUpper[a] ? bpUpper[a] : p[a];
+    if (w == p[a])
+    {
+      continue;
+    }
+    float t = (w - before[a]) / (p[a] - before[a]);
+    if (axis < 0 || t < first)
+    {
+      first = t;
+      axis = a;
+      wall = w;
+    }
+  }
+  if (axis < 0)
+  {
+    return 0;
+  }
+  vec3 q;
+  for (int a = 0; a < 3; ++a)
+  {
+    q[a] = a == axis ? wall : before[a] + first * (p[a] - before[a]);
+  }
+  p = q;
+  int hit = 1 << (2 * axis + (wall == bpUpper[axis] ? 1 : 0));
+  return hit | bpClampToBox(p);
+}
+
+// wallAfterAdvection for Boundary bpBoundary.
+int bpWallAfterAdvection(vec3 before, inout vec3 p)
+{
+  if (bpBoundary == BP_BOUNDARY_STICK)
+  {
+    return bpContains(before) ? bpStickAlongStep(before, p) : bpClampToBox(p);
+  }
+  if (bpBoundary == BP_BOUNDARY_SLIP)
+  {
+    return bpClampToBox(p);
+  }
+  int hits = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpDegenerate[a])
+    {
+      continue;
+    }
+    if (p[a] < bpLower[a])
+    {
+      p[a] = bpLower[a] + bpRestitution * (bpLower[a] - p[a]);
+      hits |= 1 << (2 * a);
+    }
+    else if (p[a] > bpUpper[a])
+    {
+      p[a] = bpUpper[a] - bpRestitution * (p[a] - bpUpper[a]);
+      hits |= 1 << (2 * a + 1);
+    }
+  }
+  return hits | bpClampToBox(p);
+}
+
+// Engine::wallParticle's positions: p, advected from `before`, back into
+// the box, and back to `before` from a cell outside the flow (at the weight
+// `weight` of the step's end). Returns the sides met, with
+// BP_WALL_MASKED_CELL where it went back out of a cell outside the flow (the
+// advected texture's .w carries it to the slip share pass).
+int bpWallParticle(vec3 before, inout vec3 p, float weight)
+{
+  if (!bpFinite(p))
+  {
+    return 0;
+  }
+  int hits = bpWallAfterAdvection(before, p);
+  if (bpOutsideCell(p, weight))
+  {
+    p = before;
+    hits |= BP_WALL_MASKED_CELL;
+  }
+  return hits;
+}
+
+// wallVelocity on a heavy particle's slip s at its walled position p: the
+// rule acts on v = u + s, u the flow there at the step's end.
+vec3 bpWallSlip(int hits, vec3 p, vec3 s, float weight)
+{
+  if (hits == 0)
+  {
+    return s;
+  }
+  vec3 u = bpSample(p, weight);
+  vec3 v = u + s;
+  if ((hits & BP_WALL_MASKED_CELL) != 0 || bpBoundary == BP_BOUNDARY_STICK)
+  {
+    v = vec3(0.0);
+  }
+  else
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      bool lower = (hits & (1 << (2 * a))) != 0;
+      bool upper = (hits & (1 << (2 * a + 1))) != 0;
+      if ((lower && v[a] < 0.0) || (upper && v[a] > 0.0))
+      {
+        v[a] = bpBoundary == BP_BOUNDARY_BOUNCE ? -bpRestitution * v[a] : 0.0;
+      }
+    }
+  }
+  return v - u;
+}
+
+// Engine::wallAfterRestoration for one particle restored to q from its
+// walled advected position a: a held one back at a, another kept in the
+// box and out of cells outside the flow.
+vec3 bpWallRestored(vec3 q, vec3 a, float weight)
+{
+  if (bpHeld(a))
+  {
+    return a;
+  }
+  bpClampToBox(q);
+  if (bpFinite(q) && bpOutsideCell(q, weight))
+  {
+    q = a;
+  }
+  return q;
+}
+
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where

@@ -2,7 +2,6 @@
 // positions from before the step (so nothing non-finite is ever drawn); the
 // force is the length of the restoration displacement.
 uniform sampler2D bpRestored;
-uniform sampler2D bpAdvected;
 uniform sampler2D bpBefore;
 uniform sampler2D bpShifts; // per element, from the test pass (anchored only)
 
@@ -32,4 +31,16 @@ void bpFinalizePass(ivec2 texel, int e, int i, inout vec4 state, inout vec4 unus
   state = bpFinalParticle(texelFetch(bpRestored, texel, 0).xyz,
     texelFetch(bpAdvected, texel, 0).xyz, texelFetch(bpBefore, texel, 0).xyz,
     texelFetch(bpElementState, at, 0), texelFetch(bpShifts, at, 0));
+}
+
+// Engine::wallAfterRestoration, a pass of its own after the last restoration
+// pass (Boundary Stick, Slip or Bounce): each particle's restored position
+// (bpPositions) kept in the box and out of cells outside the flow, or back at
+// its walled advected position where Stick holds it.
+void bpWallPass(ivec2 texel, int e, int i, inout vec4 walled, inout vec4 unused1,
+  inout vec4 unused2, inout vec4 unused3)
+{
+  walled = vec4(bpWallRestored(texelFetch(bpPositions, texel, 0).xyz,
+                  texelFetch(bpAdvected, texel, 0).xyz, bpEndWeight),
+    0.0);
 }

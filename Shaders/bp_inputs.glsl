@@ -28,6 +28,10 @@ uniform bool bpLinearMatching; // linear shape matching (bp_match.glsl)
 // to the tracer's in this step (bp_advect.glsl adds it).
 uniform bool bpInertial;
 uniform sampler2D bpSlipMoves;
+// Per particle: its position after advection and the walls (.w: what the
+// walls did, bp_common.glsl's bpWallParticle), for the finalize pass's force,
+// the walls after restoration and the slip share pass.
+uniform sampler2D bpAdvected;
 
 // Whether particle i is pinned (it never moves).
 bool bpPinned(int i)

@@ -73,9 +73,9 @@ void bpSlipParticle(int i, vec4 element, vec3 p, inout vec3 s, out vec3 move)
   {
     s = vec3(0.0); // placed anew: released with the flow's velocity
   }
-  if (bpPinned(i))
+  if (bpPinned(i) || bpHeld(p))
   {
-    return;
+    return; // a particle Stick holds keeps its slip
   }
   vec3 u, dudt, along;
   bpSampleAlong(p, bpSlipWeights.x, s, u, dudt, along);
@@ -99,19 +99,33 @@ void bpSlipPass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 move,
   move = vec4(m, 0.0);
 }
 
+// The slip pass's slip at a particle's texel with the walls' rule on its
+// velocity (Engine::wallParticle), from what the advect pass wrote in the
+// advected texture (its walled position, and in .w what the walls did).
+vec3 bpWalledSlipOf(ivec2 texel)
+{
+  vec3 s = texelFetch(bpSlipsNext, texel, 0).xyz;
+  if (!bpWalled())
+  {
+    return s;
+  }
+  vec4 a = texelFetch(bpAdvected, texel, 0);
+  return bpWallSlip(int(a.w), a.xyz, s, bpEndWeight);
+}
+
 // shareSlip, then a non-finite element's slips 0: particle i's slip after
 // the step, reading its element's slips through `slipOf`.
 void bpSlipSharePass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 unused1,
   inout vec4 unused2, inout vec4 unused3)
 {
   vec4 element = texelFetch(bpElementState, bpElementTexel(e), 0);
-  vec3 s = texelFetch(bpSlipsNext, texel, 0).xyz;
+  vec3 s = bpWalledSlipOf(texel);
   if (bpShareSlip && bpParticles > 1)
   {
     vec3 mean = vec3(0.0);
     for (int k = 0; k < bpParticles; ++k)
     {
-      mean += texelFetch(bpSlipsNext, bpParticleTexel(e, k), 0).xyz;
+      mean += bpWalledSlipOf(bpParticleTexel(e, k));
     }
     s = mean / float(bpParticles);
   }

@@ -106,6 +106,15 @@ void main()
     bpSlipParticle(i, bpLocalState[local], before, slip, move);
     advected += move;
 #endif
+    // The walls (Boundary Stick, Slip, Bounce): the advect pass's, and the
+    // slip share pass's rule on the velocity.
+    if (bpMeetsWalls(i, before))
+    {
+      int hits = bpWallParticle(before, advected, bpWeights.z);
+#ifdef BP_INERTIAL
+      slip = bpWallSlip(hits, advected, slip, bpEndWeight);
+#endif
+    }
   }
   bpLocalPositions[thread] = advected;
   vec3 p = advected;
@@ -154,6 +163,18 @@ void main()
     bpLocalPositions[thread] = p;
     bpSync();
 #endif
+  }
+
+  // The walls after restoration (the wall pass), before the test reads them.
+  if (bpWalled())
+  {
+    if (live)
+    {
+      p = bpWallRestored(p, advected, bpEndWeight);
+    }
+    bpSync();
+    bpLocalPositions[thread] = p;
+    bpSync();
   }
 
   // 4. Test, on the restored positions.

@@ -6,7 +6,6 @@
 // left the field is flagged 2 instead of 1 (Engine::settle's Terminated): the
 // reset keeps it hidden (centre .w 2) until its lifetime runs out.
 uniform bool bpAnyParticle;
-uniform int bpBoundary; // a bp::Boundary
 uniform float bpReleaseMinSpeed; // 0: every release stays
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
 // Anchor = Centre (bpAnchored): the element is tested where it is moved back
@@ -67,7 +66,8 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
   float flag = 0.0;
   if (!bpLinked && !(center.w > 1.5))
   {
-    flag = due || left ? 1.0 : 0.0;
+    // A wall (Stick, Slip, Bounce) keeps the element in: never reset for leaving.
+    flag = due || (left && !bpWalled()) ? 1.0 : 0.0;
     flag = left && !due && bpBoundary == BP_BOUNDARY_TERMINATE ? 2.0 : flag;
   }
   tested = vec4(state.x - bpStep, state.y, flag, finite ? 0.0 : 1.0);

@@ -139,16 +139,24 @@ struct EnumTraits<ResetWhen>
 /// side of the grid or into a cell outside the flow, as Reset When tests it.
 /// ReleaseAgain places it again at once (its next generation); Terminate
 /// hides it until its lifetime runs out, and only then places it again, so
-/// its slot stays empty meanwhile (engine specification, "Boundaries").
+/// its slot stays empty meanwhile. Stick, Slip and Bounce make the field's
+/// boundary a wall that keeps the particles in (Walls.h): one that crosses
+/// it is held on it (Stick), slides along it (Slip) or is reflected with the
+/// Restitution (Bounce), and the springs restore the rest of the element
+/// (engine specification, "Boundaries").
 enum class Boundary
 {
   ReleaseAgain = 0,
-  Terminate
+  Terminate,
+  Stick,
+  Slip,
+  Bounce
 };
 template <>
 struct EnumTraits<Boundary>
 {
-  static constexpr const char* names[] = { "Release Again", "Terminate" };
+  static constexpr const char* names[] = { "Release Again", "Terminate", "Stick", "Slip",
+    "Bounce" };
 };
 
 /// The unit of the tracer's Step Size (Step Size Unit): cells, the fastest

@@ -56,6 +56,7 @@
 #include "StepSchedule.h"
 #include "SuperSet.h"
 #include "VectorField.h"
+#include "Walls.h"
 
 #include <algorithm>
 #include <array>
@@ -390,6 +391,18 @@ private:
   void matchShape(float* p, float* orientation) const;
   bool restoresElements() const;
   std::size_t restorationScratchFloats() const;
+  /// A wall (Boundary Stick, Slip, Bounce; Walls.h) after advection for one
+  /// particle: p, advected from `before`, back into the domain's box and out
+  /// of cells outside the flow (back to `before` there); a heavy particle's
+  /// `slip` (or null) by the same rule on its velocity.
+  void wallParticle(const VectorField& field, const StepWeights& weights, const float before[3],
+    float p[3], float* slip) const;
+  /// The wall after restoration for element e: a particle Stick holds (on a
+  /// side in `advected`, its walled position) goes back there; another
+  /// pushed out of the box is put on its side, one pushed into a cell
+  /// outside the flow back to its position in `advected`.
+  void wallAfterRestoration(
+    std::size_t e, const VectorField& field, const StepWeights& weights, const float* advected);
   /// Forces (unless `advected` is null), the reposition test and the
   /// lifetime after restoration.
   void settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,

@@ -102,8 +102,14 @@ struct Parameters
   float linkStiffness = 1.0f; ///< in [0, 1], of every link
   ResetWhen resetWhen = ResetWhen::CenterLeaves;
   /// What an element that leaves the field (by resetWhen) does: released
-  /// again (ResetDue), or terminated (Terminated) until its lifetime ends.
+  /// again (ResetDue), or terminated (Terminated) until its lifetime ends;
+  /// or the field's boundary is a wall that keeps it in (Stick, Slip,
+  /// Bounce: Walls.h).
   Boundary boundary = Boundary::ReleaseAgain;
+  /// Bounce's coefficient of restitution e, in [0, 1]: a particle's step
+  /// beyond the wall comes back e times as far, a heavy particle's normal
+  /// velocity leaves at e times its speed. 1 (the default) is a mirror.
+  float restitution = 1.0f;
   ReleasePattern releasePattern = ReleasePattern::Random;
   /// The lattice of ReleasePattern::Lattice, over the emitter box
   /// (resolveSettings makes numberOfElements its size()).

@@ -226,6 +226,7 @@ std::vector<NamedValue> parameterValues(const Parameters& p)
   add(v, "linkStiffness", p.linkStiffness);
   addEnum(v, "resetWhen", p.resetWhen);
   addEnum(v, "boundary", p.boundary);
+  add(v, "restitution", p.restitution);
   addEnum(v, "releasePattern", p.releasePattern);
   addArray(v, "lattice.counts", p.lattice.counts);
   addArray(v, "lattice.origin", p.lattice.origin);

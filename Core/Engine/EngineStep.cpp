@@ -258,19 +258,28 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   float* p = this->Positions.data() + 3 * e * n;
   std::copy_n(p, 3 * n, before);
   float* slips = this->Slips.empty() ? nullptr : this->Slips.data() + 3 * e * n;
+  const bool walls = isWall(this->Params.boundary);
+  // Stick holds a particle that lies on a side of the box: not advected.
+  const bool stick = this->Params.boundary == Boundary::Stick;
+  const Domain& box = this->domainOf(field);
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (this->Pinned[i])
+    if (this->Pinned[i] || (stick && onWall(box, p + 3 * i)))
     {
       continue;
     }
-    if (slips)
+    float* slip = slips ? slips + 3 * i : nullptr;
+    if (slip)
     {
-      this->advectHeavyParticle(field, weights, h, p + 3 * i, slips + 3 * i);
+      this->advectHeavyParticle(field, weights, h, p + 3 * i, slip);
     }
     else
     {
       this->advectParticle(field, weights, h, p + 3 * i);
+    }
+    if (walls)
+    {
+      this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip);
     }
   }
   if (advected)
@@ -293,8 +302,68 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
   {
     this->restore(this->Positions.data() + 3 * e * n, scratch.data() + 6 * n,
       this->Orientations.data() + 4 * e);
+    if (isWall(this->Params.boundary))
+    {
+      this->wallAfterRestoration(e, field, weights, advected);
+    }
   }
   this->settle(e, field, weights, h, before, advected);
+}
+
+void Engine::wallParticle(const VectorField& field, const StepWeights& weights,
+  const float before[3], float p[3], float* slip) const
+{
+  if (!finite3(p))
+  {
+    return; // settle() takes the element back to its positions before the step
+  }
+  const Parameters& P = this->Params;
+  const WallHits hits =
+    wallAfterAdvection(P.boundary, P.restitution, this->domainOf(field), before, p);
+  // A cell outside the flow has no normal: the particle goes back to where
+  // it was before the step, and a heavy one stops there.
+  const bool masked = field.outsideCellAt(p, weights.end);
+  if (masked)
+  {
+    std::copy_n(before, 3, p);
+  }
+  if (slip && (hits || masked))
+  {
+    // The rule acts on the particle's velocity v = u + slip, u the flow
+    // where the wall leaves it at the step's end.
+    float u[3];
+    field.sampleWeighted(p, weights.end, u);
+    float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
+    wallVelocity(masked ? Boundary::Stick : P.boundary, P.restitution, masked ? 1u : hits, v);
+    for (int k = 0; k < 3; ++k)
+    {
+      slip[k] = v[k] - u[k];
+    }
+  }
+}
+
+void Engine::wallAfterRestoration(
+  std::size_t e, const VectorField& field, const StepWeights& weights, const float* advected)
+{
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  const Domain& box = this->domainOf(field);
+  const bool stick = this->Params.boundary == Boundary::Stick;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float* q = p + 3 * i;
+    const float* a = advected + 3 * i;
+    if (stick && onWall(box, a))
+    {
+      std::copy_n(a, 3, q); // held
+      continue;
+    }
+    clampToBox(box, q);
+    if (finite3(q) && field.outsideCellAt(q, weights.end))
+    {
+      std::copy_n(a, 3, q);
+    }
+  }
 }
 
 void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
@@ -374,8 +443,10 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   std::uint8_t flag = 0;
   if (this->Links.empty() && !(hidden & Terminated))
   {
+    // A wall keeps the element in: it is never released again for leaving.
     const bool terminates = left && !leave && this->Params.boundary == Boundary::Terminate;
-    flag = terminates ? Terminated : (leave || left) ? ResetDue : 0;
+    const bool walled = isWall(this->Params.boundary);
+    flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);

@@ -261,9 +261,18 @@ std::string checkInertia(const ElementTemplate& /*shape*/, const Parameters& p)
 
 std::string checkBoundary(const ElementTemplate& /*shape*/, const Parameters& p)
 {
-  if (p.boundary != Boundary::ReleaseAgain && p.boundary != Boundary::Terminate)
+  if (int(p.boundary) < int(Boundary::ReleaseAgain) || int(p.boundary) > int(Boundary::Bounce))
   {
-    return "Boundary must be Release Again or Terminate";
+    return "Boundary must be Release Again, Terminate, Stick, Slip or Bounce";
+  }
+  if (!(p.restitution >= 0.0f && p.restitution <= 1.0f))
+  {
+    // Checked whatever the Boundary, so that a saved setting is always sound.
+    std::ostringstream said;
+    said << "Restitution must be between 0 and 1 (a bounce keeps that share of the normal "
+            "velocity), not "
+         << p.restitution;
+    return said.str();
   }
   if (p.boundary == Boundary::Terminate && p.linking != Linking::None)
   {
@@ -271,6 +280,22 @@ std::string checkBoundary(const ElementTemplate& /*shape*/, const Parameters& p)
     return "Boundary = Terminate ends single elements that leave the field; a super set "
            "(Linking) lives out its lifetime whole: set Linking to None or Boundary to Release "
            "Again";
+  }
+  if (isWall(p.boundary) && p.linking != Linking::None)
+  {
+    // The links' pass runs after every restoration iteration and would take
+    // particles back through a wall: not defined yet.
+    return std::string("Boundary = ") + enumName(p.boundary) +
+      " walls single elements in; a super set (Linking) cannot be walled yet: set Linking to "
+      "None or Boundary to Release Again";
+  }
+  if (isWall(p.boundary) && p.anchor != Anchor::None)
+  {
+    // Anchoring moves the element back to its release centre after the step,
+    // past any wall; an anchored element never travels to one.
+    return std::string("Boundary = ") + enumName(p.boundary) +
+      " walls travelling elements in; Anchor = Centre holds them at their release centre: set "
+      "Anchor to None or Boundary to Release Again";
   }
   return std::string();
 }

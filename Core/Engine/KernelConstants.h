@@ -31,6 +31,7 @@
 #include "Quaternion.h"
 #include "ReleaseWeights.h"
 #include "ShapeMatching.h"
+#include "Walls.h"
 
 namespace bp
 {
@@ -82,7 +83,11 @@ enum class KernelConstantUse
   X(INTEGRATOR_RK2, Int, int(::bp::Integrator::RK2), Kernels)                                     \
   X(INTEGRATOR_RK4, Int, int(::bp::Integrator::RK4), EnumValue)                                  \
   X(BOUNDARY_RELEASE_AGAIN, Int, int(::bp::Boundary::ReleaseAgain), EnumValue)                    \
-  X(BOUNDARY_TERMINATE, Int, int(::bp::Boundary::Terminate), Kernels)
+  X(BOUNDARY_TERMINATE, Int, int(::bp::Boundary::Terminate), Kernels)                            \
+  X(BOUNDARY_STICK, Int, int(::bp::Boundary::Stick), Kernels)                                    \
+  X(BOUNDARY_SLIP, Int, int(::bp::Boundary::Slip), Kernels)                                      \
+  X(BOUNDARY_BOUNCE, Int, int(::bp::Boundary::Bounce), Kernels)                                \
+  X(WALL_MASKED_CELL, Int, int(::bp::WallMaskedCell), Kernels)
 // clang-format on
 
 #endif

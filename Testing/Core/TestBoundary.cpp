@@ -173,7 +173,7 @@ TEST(Boundary, SuperSetsRefuseTerminate)
   p.boundary = bp::Boundary(7);
   p.linking = bp::Linking::None;
   EXPECT_NE(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p)
-              .find("Boundary must be Release Again or Terminate"),
+              .find("Boundary must be Release Again, Terminate, Stick, Slip or Bounce"),
     std::string::npos);
 }
 

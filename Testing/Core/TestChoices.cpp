@@ -39,7 +39,7 @@ TEST(Choices, EveryValueHasOneTextOfItsOwn)
   expectNamed(bp::Anchor::Centre, "Anchor");
   expectNamed(bp::Inertia::MaxeyRiley, "Inertia");
   expectNamed(bp::ResetWhen::AnyParticleLeaves, "ResetWhen");
-  expectNamed(bp::Boundary::Terminate, "Boundary");
+  expectNamed(bp::Boundary::Bounce, "Boundary");
   expectNamed(bp::StepUnit::Time, "StepUnit");
   expectNamed(bp::ShapeFit::Linear, "ShapeFit");
   expectNamed(bp::BuiltinShape::Fish, "BuiltinShape");

@@ -197,6 +197,7 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   add("linkStiffness", [](P& p) { p.linkStiffness = 0.5f; });
   add("resetWhen", [](P& p) { p.resetWhen = bp::ResetWhen::AnyParticleLeaves; });
   add("boundary", [](P& p) { p.boundary = bp::Boundary::Terminate; });
+  add("restitution", [](P& p) { p.restitution = 0.5f; });
   add("releasePattern", [](P& p) { p.releasePattern = bp::ReleasePattern::Lattice; });
   addArray("lattice.counts", 3, [](P& p, std::size_t k) { p.lattice.counts[k] = 5; });
   addArray("lattice.origin", 3, [](P& p, std::size_t k) { p.lattice.origin[k] = 0.5f; });

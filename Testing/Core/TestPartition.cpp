@@ -65,9 +65,12 @@ bp::VectorField cut(const bp::VectorField& whole, std::array<int, 6> extent, int
   return bp::VectorField(piece, s);
 }
 
-bp::Parameters parameters(bp::Orientation orientation = bp::Orientation::Random)
+bp::Parameters parameters(bp::Orientation orientation = bp::Orientation::Random,
+  bp::Boundary boundary = bp::Boundary::ReleaseAgain)
 {
   bp::Parameters p;
+  p.boundary = boundary;
+  p.restitution = 0.5f;
   p.orientation = orientation;
   p.numberOfElements = 300;
   p.elementSize = 0.12f;
@@ -118,7 +121,8 @@ Element elementOf(const bp::Engine& engine, std::size_t e)
 /// Runs the system on `pieces` threads; the state by element id, and the
 /// number of elements that changed pieces.
 std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, int pieces,
-  bool ghostedPieces, int steps, double dt, long long& migrated, bp::Orientation orientation)
+  bool ghostedPieces, int steps, double dt, long long& migrated, bp::Orientation orientation,
+  bp::Boundary boundary)
 {
   const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
   const auto extents = splitExtent(whole.grid(), pieces);
@@ -142,7 +146,7 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
         const bp::VectorField field =
           ghostedPieces ? cut(whole, extents[std::size_t(k)], ghost) : whole;
         bp::Engine& engine = engines[std::size_t(k)];
-        errors[std::size_t(k)] = engine.configure(shape, parameters(orientation));
+        errors[std::size_t(k)] = engine.configure(shape, parameters(orientation, boundary));
         engine.setDomain(whole.domain());
         // Along Flow samples this piece's field: right for the elements it keeps.
         engine.initialize(bp::serialRunner(), 0.0, &field);
@@ -181,7 +185,7 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
 /// Expects runs on 2 and 4 pieces, with the whole field or ghosted pieces,
 /// to reproduce `serial`, run on `whole` from the same parameters.
 void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whole, int steps,
-  double dt, bp::Orientation orientation)
+  double dt, bp::Orientation orientation, bp::Boundary boundary = bp::Boundary::ReleaseAgain)
 {
   const std::size_t n = serial.particlesPerElement();
   for (int pieces : { 2, 4 })
@@ -189,7 +193,8 @@ void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whol
     for (bool ghosted : { false, true })
     {
       long long migrated = 0;
-      const auto state = runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation);
+      const auto state =
+        runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation, boundary);
       ASSERT_EQ(state.size(), serial.elementCount());
       // Elements crossed between pieces, and some were reset (lifetimes end).
       EXPECT_GT(migrated, 100) << pieces << " pieces";
@@ -304,5 +309,32 @@ TEST(Partition, PiecesReproduceTheSingleProcessRun)
     for (int s = 0; s < steps; ++s)
       serial.step(whole, s * dt, dt, bp::serialRunner());
     expectPiecesReproduce(serial, whole, steps, dt, orientation);
+  }
+}
+
+TEST(Partition, PiecesReproduceTheSingleProcessRunWithWalls)
+{
+  // The walls are the whole domain's sides (Engine::setDomain), not a
+  // piece's: pieces split the field, and their elements stick, slide and
+  // bounce as the single process's do.
+  const bp::VectorField whole = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+  const int steps = 60;
+  const double dt = 0.02;
+  for (bp::Boundary boundary : { bp::Boundary::Stick, bp::Boundary::Slip, bp::Boundary::Bounce })
+  {
+    SCOPED_TRACE(bp::enumName(boundary));
+    bp::Engine serial;
+    ASSERT_EQ(serial.configure(bp::builtinTemplate(bp::BuiltinShape::Cross),
+                parameters(bp::Orientation::Random, boundary)),
+      "");
+    serial.initialize(bp::serialRunner(), 0.0, &whole);
+    for (int s = 0; s < steps; ++s)
+      serial.step(whole, s * dt, dt, bp::serialRunner());
+    int onWall = 0;
+    for (std::size_t q = 0; q < serial.positions().size(); q += 3)
+      onWall += bp::onWall(whole.domain(), serial.positions().data() + q) ? 1 : 0;
+    if (boundary != bp::Boundary::Bounce)
+      EXPECT_GT(onWall, 20) << "the walls are met";
+    expectPiecesReproduce(serial, whole, steps, dt, bp::Orientation::Random, boundary);
   }
 }

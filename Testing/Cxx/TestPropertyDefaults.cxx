@@ -144,6 +144,7 @@ const std::map<std::string, CoreField> CoreDefaults = {
   { "LinkStiffness", [](const auto& c) { return one(c.trace.engine.linkStiffness); } },
   { "ResetWhen", [](const auto& c) { return one(c.trace.engine.resetWhen); } },
   { "Boundary", [](const auto& c) { return one(c.trace.engine.boundary); } },
+  { "Restitution", [](const auto& c) { return one(c.trace.engine.restitution); } },
   { "MinimumReleaseSpeed", [](const auto& c) { return one(c.trace.minimumReleaseSpeed); } },
   { "Trails", [](const auto& c) { return one(c.trace.trailLength > 0 ? 1 : 0); } },
   { "TrailSpacing", [](const auto& c) { return one(c.trace.trailSpacing); } },

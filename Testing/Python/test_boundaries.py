@@ -10,6 +10,14 @@
   generation: at t = 2.1 every element is shown again.
 - Terminate with a super set (Linking) is refused with a message that says
   so, and the output is empty.
+- Stick, Slip and Bounce (the grid's sides as a wall): in the same shear
+  layer every element stays shown and is never released again (its lifetime
+  left is the first release's), every particle is finite and in the field,
+  and the walled elements pile up at the outflow side x = 1; Restitution
+  outside [0, 1] is refused by name; a wall with Linking is refused.
+- On a real grid (a Wavelet image, a uniform flow (1, 0.5, 0) put on it by
+  a Calculator) strips driven into the side x = 10 with Slip lie on it and
+  slide along it (+y) at the flow's tangential speed; with Stick they stop.
 """
 import os
 import sys
@@ -52,7 +60,8 @@ def shown(data):
 terminate, again = tracer("Terminate"), tracer("Release Again")
 bptest.check(terminate.Boundary == "Terminate" and again.Boundary == "Release Again",
              "Boundary is set by name")
-bptest.check(terminate.GetProperty("Boundary").Available == ["Release Again", "Terminate"],
+bptest.check(terminate.GetProperty("Boundary").Available ==
+             ["Release Again", "Terminate", "Stick", "Slip", "Bounce"],
              "Boundary offers %s" % terminate.GetProperty("Boundary").Available)
 late, lateAgain = bptest.fetch(terminate, 1.8), bptest.fetch(again, 1.8)
 kept, keptPoints = shown(late)
@@ -89,4 +98,72 @@ bptest.check(said.mentions("Boundary = Terminate"), "Linking with Terminate is r
 bptest.check(data.GetNumberOfPoints() == 0, "no output when refused")
 terminate.Linking = "None"
 bptest.check(len(shown(bptest.fetch(terminate, 0.5))[0]) > 0, "traces again after")
+
+# The grid's sides as a wall: nothing leaves, nothing is released again.
+for wall in ("Stick", "Slip", "Bounce"):
+    walled = tracer(wall)
+    walled.Restitution = 0.5
+    data = bptest.fetch(walled, 1.8)
+    kept, points = shown(data)
+    left = bptest.point_array(data, "Lifetime")[::N]
+    every = vtk_to_numpy(data.GetPoints().GetData())
+    print("%s at t = 1.8: %d shown, %d points, x up to %.4f, lifetimes left %.3f to %.3f"
+          % (wall, len(kept), len(every), every[:, 0].max(), left.min(), left.max()))
+    bptest.check(len(kept) == COUNT, "%s shows every element: %d" % (wall, len(kept)))
+    bptest.check(np.all(np.isfinite(every)), "%s: every point finite" % wall)
+    bptest.check(np.abs(every).max() <= 1.0 + 1e-6, "%s: every particle in the field: %.6f"
+                 % (wall, np.abs(every).max()))
+    bptest.check(np.allclose(left, 0.2, atol=1e-3), "%s: none released again: lifetimes left "
+                 "%.3f to %.3f" % (wall, left.min(), left.max()))
+    atWall = np.mean(points[:, :, 0].max(axis=1) > 1.0 - 0.05)
+    bptest.check(atWall > 0.3, "%s: the elements carried out pile up at x = 1: %.2f of them"
+                 % (wall, atWall))
+    walled.Restitution = 1.5
+    with bptest.CapturedMessages() as said:
+        refused = bptest.fetch(walled, 0.5)
+    bptest.check(said.mentions("Restitution must be between 0 and 1"),
+                 "%s: Restitution 1.5 is refused by name: %s" % (wall, said.messages))
+    bptest.check(refused.GetNumberOfPoints() == 0, "%s: no output when refused" % wall)
+    walled.Restitution = 1.0
+    walled.Linking = "Chain"
+    with bptest.CapturedMessages() as said:
+        bptest.fetch(walled, 0.5)
+    bptest.check(said.mentions("Boundary = %s" % wall) and said.mentions("Linking"),
+                 "%s with Linking is refused: %s" % (wall, said.messages))
+    Delete(walled)
+
+# A strip sliding along a wall of a real grid: a Wavelet image ([-10, 10]^3,
+# spacing 1) with the uniform flow (1, 0.5, 0); the strips start at x = 6,
+# reach the side x = 10 after about 4 and slide along it in +y.
+wavelet = Wavelet()
+uniform = Calculator(Input=wavelet, ResultArrayName="wind", Function="iHat + 0.5*jHat")
+uniform.UpdatePipeline()
+
+
+def sliding(boundary):
+    return BoundParticleTracer(Input=uniform, Vectors=["POINTS", "wind"],
+                               ElementShape="Strip4", NumberOfElements=20, ElementSize=1.0,
+                               EmitterCenter=[6, -6, 0], EmitterSize=[1, 1, 8],
+                               StepSizeUnit="Time", StepSize=0.05, Duration=10,
+                               LifetimeRange=[20, 20], Seed=5, Boundary=boundary)
+
+
+for wall in ("Slip", "Stick"):
+    strips = sliding(wall)
+    first = vtk_to_numpy(bptest.fetch(strips, 6.0).GetPoints().GetData()).reshape(-1, N, 3)
+    later = vtk_to_numpy(bptest.fetch(strips, 8.0).GetPoints().GetData()).reshape(-1, N, 3)
+    onWall = np.mean(np.abs(later[:, :, 0] - 10.0) < 1e-3)
+    climb = (later[:, :, 1] - first[:, :, 1]).mean()
+    print("%s on the Wavelet: %.2f of the particles on x = 10 at t = 8, mean y moved %.3f from "
+          "t = 6" % (wall, onWall, climb))
+    bptest.check(np.all(np.isfinite(later)) and later[:, :, 0].max() <= 10.0,
+                 "%s: every particle finite and inside x = 10" % wall)
+    if wall == "Slip":
+        bptest.check(onWall > 0.95, "Slip: the strips lie on the wall: %.2f of the particles"
+                     % onWall)
+        bptest.check(abs(climb - 1.0) < 0.05, "Slip: they slide at the flow's 0.5 along the "
+                     "wall: %.3f in 2" % climb)
+    else:
+        bptest.check(climb < 0.2, "Stick: they stop on the wall: %.3f in 2" % climb)
+    Delete(strips)
 bptest.finish()
