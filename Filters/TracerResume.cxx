@@ -269,14 +269,28 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
   const Config& config, vtkPolyData* out)
 {
   bp::Stepper& stepper = this->stepper();
+  bp::WorkQueue* queue = this->Steppers.queue();
   bp::TraceState state;
-  const bp::Engine* particles = stepper.particles();
-  if (!particles || !stepper.committedState(state.engine))
+  const bp::Engine* particles = queue ? nullptr : stepper.particles();
+  const bp::ElementTemplate* shape = queue ? queue->configuredShape()
+    : particles                            ? &particles->shape()
+                                           : nullptr;
+  // The GPU display's engine is read back in its GL context, once it has run
+  // every call recorded for it (WorkQueue::readState).
+  std::string why = queue                               ? queue->readState(state.engine)
+    : particles && stepper.committedState(state.engine) ? std::string()
+                                                        : std::string("the engine holds no trace");
+  if (why.empty() && !shape)
+  {
+    why = "the engine holds no trace";
+  }
+  if (!why.empty())
   {
     // Said when the file is read, not here: ParaView asks for every output
     // of a source it updates, a writer or not.
-    bpvtk::writeStateNote("the GPU engine's state stays in its display: set Engine to CPU and "
-                          "save the State output again",
+    bpvtk::writeStateNote(queue ? "the GPU display's state could not be read back: " + why +
+          "; show the time to keep in the view and save again, or set Engine to CPU"
+                                : why,
       out);
     return Pass();
   }
@@ -285,8 +299,18 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
   state.scheduleStart = this->Schedule->start();
   state.dt = this->Schedule->dt();
   state.parameters = bp::parameterValues(this->Resolved.parameters);
-  state.shape = bp::templateValues(particles->shape());
+  state.shape = bp::templateValues(*shape);
   state.field = this->fieldValues(config);
+  if (queue && !this->Update.readsShownState)
+  {
+    // This update took back the short step the display showed, or stepped
+    // for it: it goes on to the time shown again, so it draws what it drew.
+    const Pass shortStep = this->stepShort(false);
+    if (shortStep.kind != Pass::Done)
+    {
+      return shortStep;
+    }
+  }
   if (this->Layout.distributed())
   {
     // The exchanges of the steps this pass took (a replay to the time
