@@ -118,16 +118,19 @@ bool vtkBoundParticleTracerInternals::resumesFromState(const Config& config, dou
   // gone on from.
   const double eps = this->Plan.epsilon();
   const double t = this->Initial.state.time;
-  return this->Initial.error.empty() && (from < t - eps || this->restartsAtState()) &&
-    this->target() >= t - eps;
+  const bool restart = this->restartsAtState();
+  return this->Initial.error.empty() && (from < t - eps || restart) &&
+    (this->target() >= t - eps || restart);
 }
 
 bool vtkBoundParticleTracerInternals::restartsAtState() const
 {
   // In situ the trace cannot replay to a later state's time, nor go back to
   // an earlier one's: only a state at the first step handed is gone on from.
+  // One time within the times' own rounding (TracePlan::sameTime): at 1e9
+  // (seconds since 1970) two doubles are 1.2e-7 apart at the least.
   return this->Plan.streaming() && this->Initial.error.empty() &&
-    std::abs(this->Initial.state.time - this->Plan.startTime()) <= this->Plan.epsilon();
+    this->Plan.sameTime(this->Initial.state.time, this->Plan.startTime());
 }
 
 void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::FieldFacts& facts)
@@ -161,13 +164,17 @@ void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::Fi
   if (!agreed(this->restartsAtState()))
   {
     this->InSitu.stateTried = this->Initial.stamp;
+    // Every digit: times of 1e9 that differ print alike at 6 digits.
+    std::ostringstream times;
+    times.precision(17);
+    times << "stands at t = " << state.time
+          << ", but the first time step handed in situ is t = " << this->Plan.startTime();
     vtkWarningWithObjectMacro(this->Owner,
       "Initial State File '"
-        << config.initialStateFile << "' stands at t = " << state.time
-        << ", but the first time step handed in situ is t = " << this->Plan.startTime()
-        << ": it is not used, and the trace starts at t = " << this->Plan.startTime()
-        << ". A simulation restarted from its checkpoint must hand the step the state was "
-           "saved at first.");
+        << config.initialStateFile << "' " << times.str()
+        << ": it is not used, and the trace starts there. A simulation restarted from its "
+           "checkpoint must hand the step the state was saved at first (the same time within "
+           "its rounding).");
     return;
   }
   // The settings resolve as they did at the saved trace's start (its step,
@@ -240,7 +247,7 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   {
     return error;
   }
-  if (this->target() < state.time - this->Plan.epsilon())
+  if (this->target() < state.time - this->Plan.epsilon() && !this->restartsAtState())
   {
     return std::string(); // before the state's time: traced from the start
   }
