@@ -334,6 +334,8 @@ bool vtkOpenGLBoundParticleMapper::RunCalls(
   if (GpuRunReportsProgress && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
+    // The GUI ran in the reports ("Error in cache state" in ParaView 5.11).
+    guard.resetCacheAfter(window->GetState());
   }
   if (progress.stopped())
   {
