@@ -13,7 +13,8 @@
  * filled only when it is the port asked for (markNotGenerated): playing
  * the animation pays nothing for it, while ParaView's Apply and a script's
  * UpdatePipeline, which ask for every port, pay a copy of the engine's
- * state (and under MPI its gather to process 0), with no step.
+ * state (and under MPI its gather to process 0; for the GPU display that
+ * showed the elements, a read-back of its textures), with no step.
  */
 #ifndef BoundParticles_TracerPorts_h
 #define BoundParticles_TracerPorts_h

@@ -118,16 +118,19 @@ bool vtkBoundParticleTracerInternals::resumesFromState(const Config& config, dou
   // gone on from.
   const double eps = this->Plan.epsilon();
   const double t = this->Initial.state.time;
-  return this->Initial.error.empty() && (from < t - eps || this->restartsAtState()) &&
-    this->target() >= t - eps;
+  const bool restart = this->restartsAtState();
+  return this->Initial.error.empty() && (from < t - eps || restart) &&
+    (this->target() >= t - eps || restart);
 }
 
 bool vtkBoundParticleTracerInternals::restartsAtState() const
 {
   // In situ the trace cannot replay to a later state's time, nor go back to
   // an earlier one's: only a state at the first step handed is gone on from.
+  // One time within the times' own rounding (TracePlan::sameTime): at 1e9
+  // (seconds since 1970) two doubles are 1.2e-7 apart at the least.
   return this->Plan.streaming() && this->Initial.error.empty() &&
-    std::abs(this->Initial.state.time - this->Plan.startTime()) <= this->Plan.epsilon();
+    this->Plan.sameTime(this->Initial.state.time, this->Plan.startTime());
 }
 
 void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::FieldFacts& facts)
@@ -161,13 +164,17 @@ void vtkBoundParticleTracerInternals::restartInSitu(const Config& config, bp::Fi
   if (!agreed(this->restartsAtState()))
   {
     this->InSitu.stateTried = this->Initial.stamp;
+    // Every digit: times of 1e9 that differ print alike at 6 digits.
+    std::ostringstream times;
+    times.precision(17);
+    times << "stands at t = " << state.time
+          << ", but the first time step handed in situ is t = " << this->Plan.startTime();
     vtkWarningWithObjectMacro(this->Owner,
       "Initial State File '"
-        << config.initialStateFile << "' stands at t = " << state.time
-        << ", but the first time step handed in situ is t = " << this->Plan.startTime()
-        << ": it is not used, and the trace starts at t = " << this->Plan.startTime()
-        << ". A simulation restarted from its checkpoint must hand the step the state was "
-           "saved at first.");
+        << config.initialStateFile << "' " << times.str()
+        << ": it is not used, and the trace starts there. A simulation restarted from its "
+           "checkpoint must hand the step the state was saved at first (the same time within "
+           "its rounding).");
     return;
   }
   // The settings resolve as they did at the saved trace's start (its step,
@@ -240,7 +247,7 @@ std::string vtkBoundParticleTracerInternals::resumeFromState(
   {
     return error;
   }
-  if (this->target() < state.time - this->Plan.epsilon())
+  if (this->target() < state.time - this->Plan.epsilon() && !this->restartsAtState())
   {
     return std::string(); // before the state's time: traced from the start
   }
@@ -269,14 +276,28 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
   const Config& config, vtkPolyData* out)
 {
   bp::Stepper& stepper = this->stepper();
+  bp::WorkQueue* queue = this->Steppers.queue();
   bp::TraceState state;
-  const bp::Engine* particles = stepper.particles();
-  if (!particles || !stepper.committedState(state.engine))
+  const bp::Engine* particles = queue ? nullptr : stepper.particles();
+  const bp::ElementTemplate* shape = queue ? queue->configuredShape()
+    : particles                            ? &particles->shape()
+                                           : nullptr;
+  // The GPU display's engine is read back in its GL context, once it has run
+  // every call recorded for it (WorkQueue::readState).
+  std::string why = queue                               ? queue->readState(state.engine)
+    : particles && stepper.committedState(state.engine) ? std::string()
+                                                        : std::string("the engine holds no trace");
+  if (why.empty() && !shape)
+  {
+    why = "the engine holds no trace";
+  }
+  if (!why.empty())
   {
     // Said when the file is read, not here: ParaView asks for every output
     // of a source it updates, a writer or not.
-    bpvtk::writeStateNote("the GPU engine's state stays in its display: set Engine to CPU and "
-                          "save the State output again",
+    bpvtk::writeStateNote(queue ? "the GPU display's state could not be read back: " + why +
+          "; show the time to keep in the view and save again, or set Engine to CPU"
+                                : why,
       out);
     return Pass();
   }
@@ -285,8 +306,18 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
   state.scheduleStart = this->Schedule->start();
   state.dt = this->Schedule->dt();
   state.parameters = bp::parameterValues(this->Resolved.parameters);
-  state.shape = bp::templateValues(particles->shape());
+  state.shape = bp::templateValues(*shape);
   state.field = this->fieldValues(config);
+  if (queue && !this->Update.readsShownState)
+  {
+    // This update took back the short step the display showed, or stepped
+    // for it: it goes on to the time shown again, so it draws what it drew.
+    const Pass shortStep = this->stepShort(false);
+    if (shortStep.kind != Pass::Done)
+    {
+      return shortStep;
+    }
+  }
   if (this->Layout.distributed())
   {
     // The exchanges of the steps this pass took (a replay to the time

@@ -320,7 +320,8 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     // A new update: decide it once here, before anything is asked of
     // upstream. The pipeline may ask for an update extent without executing,
     // so the state changes wait for RequestData, which takes this decision.
-    // The engine as the elements' display asks (port 0), whichever port asks.
+    // The engine as the elements' display asks (port 0), whichever port asks
+    // (the State output's: as the elements were last shown, decide()).
     vtkInformation* display = outputVector->GetInformationObject(0);
     I.decide(this->Config(), outInfo,
       display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0, port == bpvtk::StatePort);
@@ -463,9 +464,14 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
     // the whole trace.
     return 1;
   }
-  if (saving && !I.stepper().particles())
+  if (saving && I.readsShownState())
   {
-    I.showState(config, output); // the GPU's state stays in its display: a note
+    // The GPU display's engine read back where it stands: nothing to step.
+    const Pass shown = I.showState(config, output);
+    if (shown.kind != Pass::Done)
+    {
+      vtkErrorMacro(<< shown.message);
+    }
     return 1;
   }
   if (!I.continuing())

@@ -109,7 +109,12 @@ void vtkBoundParticleTracerInternals::decide(
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   this->Update.forState = forState;
-  this->Steppers.select(config.engine, gpuQueue, this->Layout);
+  this->Update.readsShownState = false;
+  // The State output saves what was shown last, from the stepper that
+  // showed it: the display's request on the elements' output is taken back
+  // once it drew, so it no longer says which.
+  const int queueAsked = forState && this->Shown.valid ? this->Shown.queue : gpuQueue;
+  this->Steppers.select(config.engine, queueAsked, this->Layout);
   // In situ the present step is the time shown, whatever time is asked for;
   // the State output saves the time shown.
   const double target = this->Plan.streaming() ? this->Plan.outputTimes().back()
@@ -126,6 +131,14 @@ void vtkBoundParticleTracerInternals::decide(
     return;
   }
   bp::TracePlan::Update& u = this->Update.decision;
+  if (forState && this->Steppers.queue() && this->Shown.valid && this->Shown.target == target &&
+    !u.replay && u.resume < 0 && this->Schedule &&
+    this->Schedule->next(stepper.cursor.committed) > target + this->Schedule->epsilon())
+  {
+    // The display stands on the last boundary before the time it shows (and
+    // shows the short step past it, or stands on the time itself).
+    this->Update.readsShownState = true;
+  }
   if (!u.replay && !this->Layout.distributed() && this->resumesFromState(config, u.from))
   {
     // An Initial State this trace has not used, and the work would pass its
@@ -366,13 +379,10 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
   {
     return Pass::fail(fieldError + ".");
   }
-  const double committed = stepper.cursor.committed;
-  if (target - committed > this->Schedule->epsilon())
+  const Pass shortStep = this->stepShort(true);
+  if (shortStep.kind != Pass::Done)
   {
-    stepper.save();
-    stepper.step(committed, target - committed);
-    stepper.cursor.showsPartialStep = true;
-    this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
+    return shortStep;
   }
   this->gatherExchange();
   const bp::Engine* particles = stepper.particles();
@@ -401,9 +411,43 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::show(const Config& config, vt
     this->handToDisplay(config, output);
   }
   this->addSettingsFieldData(output);
+  // The GPU display that showed this time stays the one the State output
+  // reads, when the CPU output shows the same time after it: ParaView
+  // updates every output of the tracer (the elements' on the CPU, its
+  // display's request taken back) before a writer of the State output runs.
+  const int queue = this->Steppers.queue() ? this->Steppers.queue()->id() : 0;
+  if (queue != 0 || !this->Shown.valid || this->Shown.target != target)
+  {
+    this->Shown.queue = queue;
+  }
   this->Shown.valid = true;
   this->Shown.target = target;
   this->Shown.stamp.Modified();
+  return Pass();
+}
+
+bpvtk::TracerPass vtkBoundParticleTracerInternals::stepShort(bool fieldSet)
+{
+  bp::Stepper& stepper = this->stepper();
+  const double target = this->target();
+  const double committed = stepper.cursor.committed;
+  if (!(target - committed > this->Schedule->epsilon()))
+  {
+    return Pass();
+  }
+  if (!fieldSet)
+  {
+    const std::string fieldError = stepper.setField(
+      this->Held.cache.field(this->Held.grid, this->Plan.intervalAt(target, false)));
+    if (!fieldError.empty())
+    {
+      return Pass::fail(fieldError + ".");
+    }
+  }
+  stepper.save();
+  stepper.step(committed, target - committed);
+  stepper.cursor.showsPartialStep = true;
+  this->Update.stepsInLastUpdate += this->Update.forState ? 0 : 1;
   return Pass();
 }
 

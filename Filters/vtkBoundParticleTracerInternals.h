@@ -133,6 +133,9 @@ struct UpdatePass
   vtkIdType stepsInLastUpdate = 0;
   bool lastUpdateReplayed = false;
   bool forState = false; ///< an update for the State output (its steps are not reported)
+  /// A State update whose stepper, the GPU display's queue, stands on the
+  /// boundary of the time shown: read back as it is, nothing recorded.
+  bool readsShownState = false;
 };
 
 /// In situ: the times given since the trace started (TracerInSitu.cxx),
@@ -272,8 +275,10 @@ public:
   /// `forState`: the request is the State output's, which saves the trace
   /// at the time the elements were last shown (a writer asks for the time
   /// the pipeline last asked of that output: in the GUI, when it was applied),
-  /// or, with none shown, at the time asked for; the elements' report of what
-  /// the last update did is kept.
+  /// with the stepper that showed them (the GPU display's queue, whatever
+  /// `gpuQueue` the elements' output holds now: the display takes its
+  /// request back once it drew), or, with none shown, at the time asked
+  /// for; the elements' report of what the last update did is kept.
   void decide(const Config& config, vtkInformation* outInfo, int gpuQueue, bool forState = false);
   /// The decision in situ: go on from the kept step to the present one, or
   /// start again at the present one when a step the work needs is gone.
@@ -311,6 +316,10 @@ public:
   Pass showState(const Config& config, vtkPolyData* out);
   /// An update for the State output (decide's `forState`).
   bool forState() const { return this->Update.forState; }
+  /// An update for the State output that reads the GPU display's engine
+  /// back where it stands, on the boundary of the time it shows: no step,
+  /// no call recorded, the picture unchanged (showState alone).
+  bool readsShownState() const { return this->Update.readsShownState; }
 
   /// For the time line's probe: `data` (a mesh) resampled whole on every
   /// process (collective over the global controller) into `grid`; its vectors.
@@ -343,6 +352,9 @@ private:
   {
     bool valid = false;
     double target = 0.0;
+    /// The GPU display's queue that showed them at `target` (0: only the
+    /// CPU output did), kept when the CPU output shows the same time after it.
+    int queue = 0;
     vtkTimeStamp stamp;
   } Shown;
 
@@ -475,6 +487,11 @@ private:
   /// display samples the field again), and fills the output with the
   /// arrays' expected ranges on two points spanning the field.
   void handToDisplay(const Config& config, vtkPolyData* output);
+  /// The short step from the committed boundary to the target, shown and
+  /// taken back at the next update (show(); after a State update that
+  /// recorded steps for the GPU display, so that it draws the time shown);
+  /// `fieldSet`: the stepper holds the target's field already.
+  Pass stepShort(bool fieldSet);
 };
 
 #endif

@@ -12,6 +12,7 @@ std::string GpuStepper::configure(const ElementTemplate& shape, const Parameters
   p.trackPoses = true;
   // The engine's configure drops its checkpoints.
   this->Checkpoints.clear();
+  this->cursor.showsPartialStep = false;
   return this->Gpu.configure(shape, p);
 }
 
@@ -23,6 +24,7 @@ std::string GpuStepper::setField(const VectorField& field)
 void GpuStepper::initialize(double startTime)
 {
   this->Gpu.initialize(startTime);
+  this->cursor.showsPartialStep = false;
 }
 
 void GpuStepper::step(double t, double h)
@@ -33,11 +35,13 @@ void GpuStepper::step(double t, double h)
 void GpuStepper::save()
 {
   this->Gpu.saveState();
+  this->cursor.showsPartialStep = true; // the short step the tracer shows follows
 }
 
 void GpuStepper::restore()
 {
   this->Gpu.restoreState();
+  this->cursor.showsPartialStep = false;
 }
 
 void GpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<float, 3>& max)
@@ -47,12 +51,22 @@ void GpuStepper::setEmitter(const std::array<float, 3>& min, const std::array<fl
 
 bool GpuStepper::committedState(EngineState& state)
 {
-  return this->Gpu.readState(state, this->cursor.showsPartialStep).empty();
+  return this->readCommittedState(state).empty();
+}
+
+std::string GpuStepper::readCommittedState(EngineState& state) const
+{
+  return this->Gpu.readState(state, this->cursor.showsPartialStep);
 }
 
 std::string GpuStepper::loadState(const EngineState& state)
 {
-  return this->Gpu.loadState(state);
+  const std::string error = this->Gpu.loadState(state);
+  if (error.empty())
+  {
+    this->cursor.showsPartialStep = false;
+  }
+  return error;
 }
 
 void GpuStepper::keepCheckpoint(long long steps, double time)

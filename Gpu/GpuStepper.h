@@ -41,8 +41,14 @@ public:
   void dropCheckpoints() override;
   double checkpointBytes() const override { return this->Gpu.checkpointBytes(); }
   /// GpuEngine::readState() of the committed boundary (save()'s copy while
-  /// cursor.showsPartialStep, as CpuStepper): a read-back.
+  /// cursor.showsPartialStep, as CpuStepper): a read-back. The stepper keeps
+  /// cursor.showsPartialStep itself, as a display's replay of a queue's
+  /// calls has it: save() sets it (the tracer saves only to show a short
+  /// step), restore(), initialize(), loadState(), configure() and a
+  /// checkpoint's resume clear it.
   bool committedState(EngineState& state) override;
+  /// The same, with why not.
+  std::string readCommittedState(EngineState& state) const;
   /// GpuEngine::loadState(): an upload.
   std::string loadState(const EngineState& state) override;
   /// Null: the state lives in GPU textures (engine().read() fetches it).

@@ -2,6 +2,8 @@
 // Saves and restores the GL state around the GPU engine's passes (GLStateGuard.h).
 #include "GLStateGuard.h"
 
+#include "vtkOpenGLState.h"
+
 // VTK 9.4 replaced GLEW by glad as its OpenGL loader.
 #if __has_include("vtk_glad.h")
 #include "vtk_glad.h"
@@ -69,6 +71,10 @@ GLStateGuard::~GLStateGuard()
   glViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(this->DrawFbo));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(this->ReadFbo));
+  if (this->Cache)
+  {
+    this->Cache->Reset();
+  }
 }
 
 } // namespace bpvtk

@@ -13,6 +13,8 @@
 #ifndef BoundParticles_GLStateGuard_h
 #define BoundParticles_GLStateGuard_h
 
+class vtkOpenGLState;
+
 namespace bpvtk
 {
 
@@ -26,6 +28,14 @@ public:
   GLStateGuard(const GLStateGuard&) = delete;
   GLStateGuard& operator=(const GLStateGuard&) = delete;
 
+  /**
+   * VTK's cache `state` learns the context's state again once the guard has
+   * put GL back (vtkOpenGLState::Reset): for a run that let the GUI run
+   * inside it (a progress report), which may have recorded the engine's
+   * state in the cache, behind which the guard then puts GL back.
+   */
+  void resetCacheAfter(vtkOpenGLState* state) { this->Cache = state; }
+
   /// The texture units saved (the first ones, up to the context's count).
   static constexpr int Units = 16;
   /// GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST, GL_CULL_FACE, GL_STENCIL_TEST.
@@ -37,6 +47,7 @@ private:
       Vao = 0, UnitCount = 0;
   int Texture2D[Units] = {}, Texture3D[Units] = {};
   unsigned char Enabled[Capabilities] = {}, ColorMask[4] = {};
+  vtkOpenGLState* Cache = nullptr;
 };
 
 } // namespace bpvtk

@@ -55,6 +55,15 @@ public:
   void run(const std::vector<bp::EngineCall>& calls, bp::ReplayProgress& progress,
     const Listener& listener);
 
+  /// The engine's state at its committed step boundary, read back (the
+  /// context current): save()'s copy while a short step is shown
+  /// (bp::GpuStepper::readCommittedState). Empty on success.
+  std::string readState(bp::EngineState& state) const
+  {
+    return this->ready() ? this->Stepper.readCommittedState(state)
+                         : std::string("the display's GPU engine holds no trace");
+  }
+
   /// The engine holds a system and nothing since its configure failed: its state can be drawn.
   bool ready() const { return this->Configured && !this->Failed; }
   /// The engine holds a system (its GL objects need releasing).

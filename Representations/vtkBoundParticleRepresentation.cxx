@@ -141,6 +141,15 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
   I.Property->SetSpecularPower(100.0);
   I.CpuMapper->SetColorModeToMapScalars();
   I.GpuMapper->SetWorkQueue(I.Queue, &I.Display.writer);
+  // The tracer's State output reads the GPU engine's state back through the
+  // queue: the mapper does, in the context of the view this display is in.
+  I.Display.writer.setStateReader(
+    [this](bp::EngineState& state)
+    {
+      auto* view = vtkPVRenderView::SafeDownCast(this->GetView());
+      return this->Internals->GpuMapper->ReadEngineState(
+        view ? view->GetRenderWindow() : nullptr, state);
+    });
   // ParaView listens to this display's progress and sets its abort flag: the
   // mapper reports a long GPU replay here and stops it on request.
   I.GpuMapper->SetContainerAlgorithm(this);
@@ -158,6 +167,8 @@ vtkBoundParticleRepresentation::vtkBoundParticleRepresentation()
 
 vtkBoundParticleRepresentation::~vtkBoundParticleRepresentation()
 {
+  // The tracer may hold the queue a while longer: it must not call back here.
+  this->Internals->Display.writer.setStateReader(nullptr);
   this->ReleaseGpuRequest();
   // A renderer may hold the mapper still: it keeps neither this display nor
   // the writer this display lent it.

@@ -18,7 +18,10 @@
  * GPU state. Otherwise (Engine CPU, or after a GPU failure) the display
  * draws the CPU polydata with a polydata mapper that keeps its index buffers
  * while the cells stay (vtkOpenGLKeptCellsMapper), coloured the same way;
- * trails that fade get colours made here (TrailFade.h). Once the tracer has
+ * trails that fade get colours made here (TrailFade.h). The tracer's State
+ * output reads the GPU engine's state back through the queue: the display
+ * lends it the mapper's read-back in its view's render window
+ * (vtkOpenGLBoundParticleMapper::ReadEngineState). Once the tracer has
  * answered a request with its CPU result (Engine CPU, or Automatic on a
  * software renderer), the display asks as every other consumer does until
  * the pipeline or the renderer changes, so that the tracer runs once a frame

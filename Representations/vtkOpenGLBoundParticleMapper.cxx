@@ -310,7 +310,7 @@ bool vtkOpenGLBoundParticleMapper::ReportsReplayProgress()
   return GpuRunReportsProgress;
 }
 
-void vtkOpenGLBoundParticleMapper::RunCalls(
+bool vtkOpenGLBoundParticleMapper::RunCalls(
   const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window)
 {
   vtkInternals& I = *this->Internals;
@@ -334,6 +334,8 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
   if (GpuRunReportsProgress && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
+    // The GUI ran in the reports ("Error in cache state" in ParaView 5.11).
+    guard.resetCacheAfter(window->GetState());
   }
   if (progress.stopped())
   {
@@ -357,6 +359,45 @@ void vtkOpenGLBoundParticleMapper::RunCalls(
         "; this display draws the CPU result from the next update on.");
     }
   }
+  return progress.stopped();
+}
+
+std::string vtkOpenGLBoundParticleMapper::ReadEngineState(
+  vtkRenderWindow* renderWindow, bp::EngineState& state)
+{
+  vtkInternals& I = *this->Internals;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderWindow);
+  if (!I.Queue || !I.Writer)
+  {
+    return "the display holds no GPU engine";
+  }
+  if (I.Replay.replaying())
+  {
+    return "the display's GPU engine is running its work";
+  }
+  if (!window || window->GetNeverRendered())
+  {
+    // Before its first render a window may have no context to read in.
+    return "the view has not drawn yet: render it (Render() in pvpython), then save";
+  }
+  window->PushContext();
+  std::string error;
+  const std::vector<bp::EngineCall> calls = I.Writer->take();
+  if (!calls.empty() && this->RunCalls(calls, window))
+  {
+    error = "the GPU engine was stopped before the time shown: show it again, then save";
+  }
+  else if (!I.Replay.ready())
+  {
+    error = I.LastError.empty() ? "the display's GPU engine holds no trace" : I.LastError;
+  }
+  else
+  {
+    bpvtk::GLStateGuard guard;
+    error = I.Replay.readState(state);
+  }
+  window->PopContext();
+  return error;
 }
 
 void vtkOpenGLBoundParticleMapper::MeasureRate(

@@ -79,9 +79,11 @@ namespace bp
 class WorkQueue;
 class RendererReportWriter;
 struct EngineCall;
+struct EngineState;
 }
 #endif
 class vtkOpenGLRenderWindow;
+class vtkRenderWindow;
 
 class BOUNDPARTICLESREPRESENTATIONS_EXPORT vtkOpenGLBoundParticleMapper
   : public vtkOpenGLPolyDataMapper
@@ -97,6 +99,20 @@ public:
   /// null queue); the display takes them back before it goes.
   void SetWorkQueue(
     const std::shared_ptr<const bp::WorkQueue>& queue, bp::RendererReportWriter* writer);
+#endif
+
+#ifndef __VTK_WRAP__
+  /**
+   * The GPU engine's state at its committed step boundary, read back for the
+   * tracer's State output (the queue's state reader,
+   * bp::RendererReportWriter::setStateReader, set by the display): in
+   * `window`'s context (made current, and the one current before put back),
+   * the calls still queued run first as a render runs them, then the state
+   * is read (save()'s copy while a short step is shown). What is drawn does
+   * not change. Empty on success, otherwise why not: the view has not drawn
+   * yet, the run was stopped, the engine failed or holds no trace.
+   */
+  std::string ReadEngineState(vtkRenderWindow* window, bp::EngineState& state);
 #endif
 
   /**
@@ -185,7 +201,8 @@ private:
 #ifndef __VTK_WRAP__
   /// Applies the queue's calls to the engine in `window`'s current context,
   /// with progress and abort; a failure makes the display draw the CPU result.
-  void RunCalls(const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window);
+  /// True when the user stopped the run before its end.
+  bool RunCalls(const std::vector<bp::EngineCall>& calls, vtkOpenGLRenderWindow* window);
   /// After a configure that succeeded: the template as this mapper's input,
   /// and the draw's tables for the new system (DrawTables.h).
   void ConfigureDraw(const bp::EngineCall& configure);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 
 namespace bp
@@ -123,6 +124,19 @@ double TracePlan::epsilon() const
   const double span =
     this->InputTimes.empty() ? 1.0 : this->InputTimes.back() - this->InputTimes.front();
   return 1e-9 * std::max(1.0, std::abs(span));
+}
+
+double TracePlan::timeTolerance(double a, double b) const
+{
+  const double span =
+    this->InputTimes.size() < 2 ? 0.0 : this->InputTimes.back() - this->InputTimes.front();
+  const double scale = std::max(std::abs(a), std::abs(b));
+  return std::max(1e-9 * std::abs(span), 8.0 * std::numeric_limits<double>::epsilon() * scale);
+}
+
+bool TracePlan::sameTime(double a, double b) const
+{
+  return std::abs(a - b) <= this->timeTolerance(a, b);
 }
 
 double TracePlan::targetOf(bool requested, double time) const

@@ -83,6 +83,18 @@ public:
   double startTime() const { return this->OutputTimes.empty() ? 0.0 : this->OutputTimes.front(); }
   /// Times closer than this are one time.
   double epsilon() const;
+  /**
+   * Whether `a` and `b` are one time for a saved state's time against a
+   * trace's (a restart's first step in situ): within 1e-9 of the times'
+   * span, or within 8 double epsilons of the larger time (8 to 16 units in
+   * its last place), whichever is larger. Relative to the times' magnitude where epsilon() is not:
+   * times of 1e9 (seconds since 1970) are 1.2e-7 apart at the least, more
+   * than epsilon() of a short span, and a time carried through a little
+   * arithmetic (t0 + k dt against a sum of steps) differs in its last bits.
+   */
+  bool sameTime(double a, double b) const;
+  /// The tolerance sameTime() allows between `a` and `b`.
+  double timeTolerance(double a, double b) const;
 
   /// The requested time (the data's) as the trace's time, clamped to the
   /// offered range (+inf: the data's end); no request or NaN is the trace's

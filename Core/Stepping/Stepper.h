@@ -96,8 +96,8 @@ public:
   /// @name A state to save and resume (EngineState.h)
   ///@{
   /// The engine's state at the committed boundary (the copy save() kept
-  /// while a short step is shown); false where the state lives elsewhere (a
-  /// renderer's GPU textures).
+  /// while a short step is shown); false where it cannot be had (a
+  /// renderer's GPU textures that no display reads back: WorkQueue::readState).
   virtual bool committedState(EngineState& /*state*/) { return false; }
   /// After configure(), setField() and initialize(): replaces the elements
   /// by the state's (a piece of a distributed run keeps those whose centres

@@ -23,6 +23,7 @@ std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters&
   gpu.trackPoses = true; // as GpuStepper::configure
   this->Configured = gpu;
   this->ConfiguredLayout = Engine::stateLayout(shape, gpu);
+  this->ConfiguredShape = std::make_shared<const ElementTemplate>(shape);
   const double cpuBytes = 4.0 * double(Engine::recordWords(shape, gpu));
   const double elements = double(std::max<std::size_t>(parameters.numberOfElements, 1));
   this->CheckpointBytes = std::max(cpuBytes * elements,
@@ -30,7 +31,7 @@ std::string WorkQueue::configure(const ElementTemplate& shape, const Parameters&
       carriesInertia(parameters)));
   EngineCall call;
   call.kind = EngineCall::Kind::Configure;
-  call.shape = std::make_shared<const ElementTemplate>(shape);
+  call.shape = this->ConfiguredShape;
   call.parameters = parameters;
   this->Pending.push_back(std::move(call));
   return std::string();
@@ -106,6 +107,19 @@ std::string WorkQueue::loadState(const EngineState& state)
   call.state = std::make_shared<const EngineState>(state);
   this->Pending.push_back(std::move(call));
   return std::string();
+}
+
+std::string WorkQueue::readState(EngineState& state)
+{
+  if (!this->StateReader)
+  {
+    return "no display reads the GPU engine's state back";
+  }
+  if (!this->cursor.valid || !this->ConfiguredShape)
+  {
+    return "the GPU engine holds no trace";
+  }
+  return this->StateReader(state);
 }
 
 void WorkQueue::keepCheckpoint(long long steps, double time)

@@ -19,8 +19,10 @@
  *    what to draw, and reads the renderer's report `const`;
  *  - the display that made the queue holds it `const` plus its
  *    RendererReportWriter, made with the queue and never copied: the one
- *    path that writes the report, takes the calls, and records where a run
- *    stopped or that the state was lost. The tracer settles its own cursor
+ *    path that writes the report, takes the calls, records where a run
+ *    stopped or that the state was lost, and lends the queue the display's
+ *    read-back of its engine's state (setStateReader), which the tracer's
+ *    State output calls (readState). The tracer settles its own cursor
  *    from that record at the start of its next decision (settleCursor()); the
  *    renderer never writes the cursor.
  *
@@ -41,6 +43,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -78,9 +81,26 @@ public:
   /// Checks that the state loads into the engine last configured, the GPU
   /// engine's limits included (bp::gpuStateRefusal), so that a refusal is the
   /// tracer's to say, then records the call (EngineCall::Kind::LoadState)
-  /// that the renderer's GPU engine uploads. committedState() stays false:
-  /// the state lives in the renderer's textures.
+  /// that the renderer's GPU engine uploads.
   std::string loadState(const EngineState& state) override;
+
+  /// @name The GPU engine's state, read back by the display that runs it
+  ///@{
+  /**
+   * The renderer's engine state at its committed step boundary (the copy of
+   * save() while a short step is shown), read back in the renderer's GL
+   * context once every pending call has run there: the display's state
+   * reader (RendererReportWriter::setStateReader). Empty on success,
+   * otherwise why not (no display reads it back, the display has not drawn,
+   * its run was stopped or failed). On success the engine stands where the
+   * cursor says: the state is the trace at cursor.committed, cursor.steps.
+   */
+  std::string readState(EngineState& state);
+  /// readState() succeeded (false where no display reads it back).
+  bool committedState(EngineState& state) override { return this->readState(state).empty(); }
+  /// The template of the system last configured (null before any).
+  const ElementTemplate* configuredShape() const { return this->ConfiguredShape.get(); }
+  ///@}
   bool readsAhead() const override { return this->Report.streamTimeSteps; }
   void offerUpcoming(const FieldSlice& slice) override { this->Upcoming = slice; }
 
@@ -153,6 +173,9 @@ private:
   /// what loadState() checks a state against.
   Parameters Configured;
   std::vector<StateArray> ConfiguredLayout;
+  std::shared_ptr<const ElementTemplate> ConfiguredShape;
+  /// The display's read-back (RendererReportWriter::setStateReader).
+  std::function<std::string(EngineState&)> StateReader;
   /// The engineState counts this queue's cursor has taken in (settleCursor).
   std::uint64_t SettledStops = 0;
   std::uint64_t SettledLosses = 0;
@@ -201,6 +224,19 @@ public:
   /// released its GL resources): what is queued continues from it, so it is
   /// dropped, and the tracer's next update replays into this queue.
   void stateLost();
+
+  /**
+   * How the tracer reads the renderer's engine state back (WorkQueue::readState):
+   * `reader` makes the renderer's GL context current, runs the calls pending
+   * (take()) as a render would, and reads the state at the committed step
+   * boundary; empty on success, otherwise why not. A null reader (the
+   * display going away) leaves none: set it back to null before whatever
+   * it calls goes.
+   */
+  void setStateReader(std::function<std::string(EngineState&)> reader)
+  {
+    this->Queue->StateReader = std::move(reader);
+  }
 
 private:
   friend DisplayWorkQueue newDisplayWorkQueue(int id, std::shared_ptr<WorkQueue>& recorder);

@@ -249,3 +249,42 @@ TEST(TracePlan, StepsToTheEndCountTheDataTimeSteps)
   stream.setStreamTimes({ 0.0, 1.0 });
   EXPECT_EQ(stream.stepsToEnd(0.25), 0); // in situ the end is not known
 }
+
+TEST(TracePlan, OneTimeIsRelativeToTheTimesMagnitude)
+{
+  // A restart in situ compares a saved state's time with the first step
+  // handed: one time within the times' rounding, however large they are.
+  const double epoch = 1.7e9; // seconds since 1970
+  bp::TracePlan stream;
+  stream.setStreamTimes({ epoch });
+  const double ulp = std::nextafter(epoch, 2.0 * epoch) - epoch;
+  EXPECT_GT(ulp, stream.epsilon()); // the absolute epsilon cannot tell such times apart
+  EXPECT_TRUE(stream.sameTime(epoch, epoch));
+  EXPECT_TRUE(stream.sameTime(epoch, epoch + ulp));
+  EXPECT_TRUE(stream.sameTime(epoch + 4.0 * ulp, epoch - 3.0 * ulp));
+  // 0.1 s apart is another time step, not rounding.
+  EXPECT_FALSE(stream.sameTime(epoch, epoch + 0.1));
+  EXPECT_FALSE(stream.sameTime(epoch, epoch + 64.0 * ulp));
+  // t0 + k dt against a sum of k steps: the last bits differ, one time.
+  double sum = 1.0e6;
+  for (int k = 0; k < 10; ++k)
+  {
+    sum += 0.1;
+  }
+  bp::TracePlan million;
+  million.setStreamTimes({ 1.0e6 + 10 * 0.1 });
+  EXPECT_TRUE(million.sameTime(sum, 1.0e6 + 10 * 0.1));
+  EXPECT_FALSE(million.sameTime(sum, 1.0e6 + 11 * 0.1));
+  // Small times are not one time merely for being within an absolute 1e-9:
+  // microseconds of a simulation stepping by nanoseconds stay apart.
+  bp::TracePlan micro;
+  micro.setStreamTimes({ 2.0e-6 });
+  EXPECT_FALSE(micro.sameTime(2.0e-6, 2.0e-6 + 1.0e-9));
+  EXPECT_TRUE(micro.sameTime(2.0e-6, 2.0e-6 * (1.0 + 1e-15)));
+  // Post hoc the times' span sets the floor, as epsilon() does.
+  bp::TracePlan span;
+  ASSERT_EQ(span.setTimes({ 0.0, 10.0 }, 10.0, 11), "");
+  EXPECT_TRUE(span.sameTime(5.0, 5.0 + 5e-9));
+  EXPECT_FALSE(span.sameTime(5.0, 5.0 + 1e-7));
+  EXPECT_DOUBLE_EQ(span.timeTolerance(5.0, 5.0), 1e-8);
+}

@@ -2,12 +2,19 @@
 // Save and resume through the tracer: its State output (port 2) written as
 // a .vtp file, and a new tracer that goes on from it (Initial State File)
 // with the bits of a trace that never stopped; the state filled only when
-// asked for; a state that does not fit said, nothing lost.
+// asked for; a state that does not fit said, nothing lost; the GPU
+// display's state read back through its work queue (a display without GL).
 #include "TracerTestHelpers.h"
+
+#include "BoundParticleWorkQueues.h"
+#include "EngineCall.h"
+#include "TracerState.h"
+#include "WorkQueue.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerRequestKey.h"
 #include "vtkPassThrough.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -17,6 +24,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <map>
 #include <string>
 #include <unistd.h>
 
@@ -292,4 +300,137 @@ TEST(SaveResume, AStateThatDoesNotFitIsSaidAndNothingIsLost)
   EXPECT_EQ(at(tracer, 3.0)->GetNumberOfPoints(), 0);
   EXPECT_TRUE(errors.mentions("the field's points along x: the state's 16, this trace's 20"))
     << (errors.messages.empty() ? "(none)" : errors.messages.front());
+}
+
+namespace
+{
+/// The cell arrays (the engine's records) and bpTime of a state, by name.
+std::map<std::string, std::vector<double>> records(vtkPolyData* state)
+{
+  std::map<std::string, std::vector<double>> all;
+  for (int a = 0; a < state->GetCellData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = state->GetCellData()->GetArray(a);
+    std::vector<double>& values = all[array->GetName()];
+    for (vtkIdType k = 0; k < array->GetNumberOfValues(); ++k)
+      values.push_back(array->GetVariantValue(k).ToDouble());
+  }
+  if (vtkDataArray* time = state->GetFieldData()->GetArray("bpTime"))
+    all["bpTime"] = { time->GetTuple1(0) };
+  return all;
+}
+
+/// A Bound Particles display without GL: it replays the queue's calls on a
+/// CPU stepper (the GPU engine's stand-in: the calls are the same), keeps
+/// whether a short step is shown as GpuStepper does (save() sets it), and
+/// lends the queue its read-back, as vtkBoundParticleRepresentation does.
+struct FakeDisplay
+{
+  bp::DisplayWorkQueue display = bpvtk::NewWorkQueue();
+  bp::CpuStepper engine;
+  int reads = 0;
+
+  FakeDisplay()
+  {
+    this->display.writer.setStateReader(
+      [this](bp::EngineState& state)
+      {
+        ++this->reads;
+        this->run();
+        return this->engine.committedState(state) ? std::string()
+                                                  : std::string("the engine holds no trace");
+      });
+  }
+  ~FakeDisplay() { this->display.writer.setStateReader(nullptr); }
+
+  /// The queued calls, as a render runs them.
+  void run()
+  {
+    for (const bp::EngineCall& call : this->display.writer.take())
+    {
+      ASSERT_EQ(call.applyTo(this->engine), "");
+      using Kind = bp::EngineCall::Kind;
+      const bool shows = call.kind == Kind::Save;
+      const bool back = call.kind == Kind::Restore || call.kind == Kind::Configure ||
+        call.kind == Kind::Initialize || call.kind == Kind::LoadState;
+      this->engine.cursor.showsPartialStep =
+        shows || (!back && this->engine.cursor.showsPartialStep);
+    }
+  }
+
+  /// The tracer's elements shown at t for this display (its request key on
+  /// port 0), then the request taken back, as the display does once it drew.
+  void show(vtkBoundParticleTracer* tracer, double t)
+  {
+    vtkInformation* elements = tracer->GetOutputInformation(0);
+    elements->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), this->display.queue->id());
+    tracer->UpdateTimeStep(t);
+    elements->Set(vtkBoundParticleTracer::GPU_WORK_QUEUE(), 0);
+  }
+};
+} // namespace
+
+TEST(SaveResume, TheGpuDisplaysStateIsReadBackThroughItsQueue)
+{
+  auto source = gyre();
+  const auto onGpu = [](vtkBoundParticleTracer* t) { t->SetEngine(int(bp::EngineChoice::Gpu)); };
+  auto tracer = gyreTracer(source, onGpu);
+  auto cpu = gyreTracer(source);
+  FakeDisplay display;
+  display.show(tracer, 2.3);
+  EXPECT_NE(tracer->GetOutput()->GetFieldData()->GetArray("BoundParticlesWorkQueue"), nullptr)
+    << "the update recorded for the display";
+  display.run(); // the render
+  ASSERT_FALSE(display.display.queue->hasPending());
+
+  // Saved with the request taken back (0 on port 0): still the display's
+  // trace, read back through its queue, on the boundary before 2.3; the
+  // CPU engine replaying the same calls has the CPU tracer's bits.
+  // The CPU tracer's state at t: the elements shown there first (the State
+  // output saves the time shown).
+  vtkNew<vtkPolyData> expected;
+  const auto cpuStateAt = [&](double t)
+  {
+    cpu->UpdateTimeStep(t);
+    expected->DeepCopy(stateAt(cpu, t));
+  };
+  cpuStateAt(2.3);
+  ErrorLog errors(tracer);
+  vtkSmartPointer<vtkPolyData> state = stateAt(tracer, 2.3);
+  EXPECT_EQ(display.reads, 1);
+  EXPECT_EQ(state->GetFieldData()->GetAbstractArray("bpStateNote"), nullptr);
+  EXPECT_TRUE(records(state) == records(expected)) << "the display's state, on its boundary";
+  EXPECT_LT(records(state)["bpTime"][0], 2.3);
+  // Standing on that boundary, nothing was recorded: what it draws stays.
+  EXPECT_FALSE(display.display.queue->hasPending());
+  EXPECT_TRUE(display.engine.cursor.showsPartialStep);
+  bp::TraceState read;
+  EXPECT_EQ(bpvtk::readStatePolyData(state, read), "");
+
+  // The display lost its state after it showed 2.6: the State update
+  // replays into its queue, reads it back, and records the short step again
+  // so that the display draws 2.6 once more.
+  display.show(tracer, 2.6);
+  display.run();
+  display.display.writer.stateLost();
+  cpuStateAt(2.6);
+  state = stateAt(tracer, 2.6);
+  EXPECT_EQ(display.reads, 2);
+  EXPECT_TRUE(records(state) == records(expected)) << "replayed for the display, then read";
+  const std::vector<bp::EngineCall> after = display.display.writer.take();
+  ASSERT_EQ(after.size(), 3u) << "the field, save and the short step, for the display to draw";
+  EXPECT_EQ(after[1].kind, bp::EngineCall::Kind::Save);
+  EXPECT_EQ(after[2].kind, bp::EngineCall::Kind::Step);
+  EXPECT_TRUE(errors.messages.empty()) << errors.messages.front();
+
+  // A display that cannot read back (gone, or no context yet): a note, no
+  // error (ParaView asks for every output of a source it updates).
+  display.display.writer.setStateReader(nullptr);
+  display.show(tracer, 2.9);
+  state = stateAt(tracer, 2.9);
+  EXPECT_NE(bpvtk::readStatePolyData(state, read)
+              .find("the GPU display's state could not be read back: no display reads"),
+    std::string::npos)
+    << bpvtk::readStatePolyData(state, read);
+  EXPECT_TRUE(errors.messages.empty()) << errors.messages.front();
 }

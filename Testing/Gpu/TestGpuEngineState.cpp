@@ -312,16 +312,81 @@ TEST(GpuStepperState, TheCommittedStateIsTheSavedCopyWhileAShortStepIsShown)
   stepper.initialize(0.0);
   for (int k = 0; k < 20; ++k)
     stepper.step(k * s.dt, s.dt);
-  bp::EngineState boundary, shown, committed;
+  bp::EngineState boundary, shown, committed, restored;
   ASSERT_TRUE(stepper.committedState(boundary));
+  EXPECT_FALSE(stepper.cursor.showsPartialStep);
+  // A display's replay runs the recorded calls only: no tracer sets the
+  // stepper's cursor, so save() itself says a short step follows.
   stepper.save();
   stepper.step(20 * s.dt, 0.4 * s.dt);
-  ASSERT_TRUE(stepper.committedState(shown));
-  stepper.cursor.showsPartialStep = true;
+  EXPECT_TRUE(stepper.cursor.showsPartialStep);
+  ASSERT_EQ(stepper.engine().readState(shown), "");
   ASSERT_TRUE(stepper.committedState(committed));
   EXPECT_FALSE(shown.records == boundary.records); // the short step moved them
   expectSameBits(committed, boundary);
+  // Taken back, the current textures are the boundary again.
+  stepper.restore();
+  EXPECT_FALSE(stepper.cursor.showsPartialStep);
+  ASSERT_EQ(stepper.readCommittedState(restored), "");
+  expectSameBits(restored, boundary);
   stepper.engine().release();
+}
+
+TEST(GpuStepperState, ADisplaysReplayReadsTheBoundaryOfTheTracersCursor)
+{
+  // The tracer records into a queue; the display replays the calls onto its
+  // GpuStepper and reads back through the queue's reader (what the State
+  // output calls): the boundary the tracer's cursor names, not the short
+  // step the display draws.
+  ASSERT_TRUE(bp::haveSharedContext());
+  const System s(Kind::Massless);
+  std::shared_ptr<bp::WorkQueue> recorder;
+  bp::DisplayWorkQueue display = bp::newDisplayWorkQueue(7, recorder);
+  bp::WorkQueue& tracer = *recorder;
+  bp::EngineState none;
+  EXPECT_NE(tracer.readState(none).find("no display"), std::string::npos);
+  bp::GpuStepper gpu;
+  display.writer.setStateReader(
+    [&](bp::EngineState& state)
+    {
+      for (const bp::EngineCall& call : display.writer.take())
+      {
+        const std::string error = call.applyTo(gpu);
+        if (!error.empty())
+          return error;
+      }
+      return gpu.readCommittedState(state);
+    });
+  EXPECT_NE(tracer.readState(none).find("holds no trace"), std::string::npos);
+  ASSERT_EQ(tracer.configure(s.shape, s.p), "");
+  ASSERT_EQ(tracer.setField(s.field), "");
+  tracer.initialize(0.0);
+  tracer.cursor.valid = true;
+  for (int k = 0; k < 20; ++k)
+    tracer.step(k * s.dt, s.dt);
+  // The same trace on a stepper of its own, to the boundary and no further.
+  bp::GpuStepper straight;
+  ASSERT_EQ(straight.configure(s.shape, s.p), "");
+  ASSERT_EQ(straight.setField(s.field), "");
+  straight.initialize(0.0);
+  for (int k = 0; k < 20; ++k)
+    straight.step(k * s.dt, s.dt);
+  bp::EngineState boundary;
+  ASSERT_TRUE(straight.committedState(boundary));
+  tracer.save();
+  tracer.step(20 * s.dt, 0.4 * s.dt);
+  tracer.cursor.showsPartialStep = true;
+  bp::EngineState read;
+  ASSERT_EQ(tracer.readState(read), "");
+  EXPECT_FALSE(tracer.hasPending()); // the reader ran every call
+  expectSameBits(read, boundary);
+  bp::EngineState drawn;
+  ASSERT_EQ(gpu.engine().readState(drawn), "");
+  EXPECT_FALSE(drawn.records == boundary.records); // the display still shows the short step
+  display.writer.setStateReader(nullptr);
+  EXPECT_NE(tracer.readState(none).find("no display"), std::string::npos);
+  gpu.engine().release();
+  straight.engine().release();
 }
 
 TEST(GpuEngineStateRefusal, SaysWhatTheGpuCannotHold)

@@ -360,6 +360,60 @@ bptest.check(said.messages and all("none.vtp" in m for m in said.messages) and m
              "without it: %s" % said.messages)
 
 
+# Times of the size of seconds since 1970 (1.7e9: doubles 2.4e-7 apart): a
+# simulation restarted from its checkpoint that computes its restart time
+# anew, a few units in the last place from the time it saved at, restarts
+# (one time within the times' rounding, bp::TracePlan::sameTime) and goes on
+# as the trace that never stopped, within float rounding of the field's
+# weights; a restart step 0.1 later is another step, not used.
+EPOCH = 1.7e9
+
+
+def at_epoch(first, settings, restart=0.0, save=None):
+    """The tracer fed the steps from `first` on at EPOCH + t, the first one
+    `restart` later; its elements at the last step (or, with `save`, the
+    State output saved at step KEEP) and the messages said."""
+    feed = PVTrivialProducer()
+    tracer = BoundParticleTracer(Input=feed, **settings)
+    got = {}
+    with bptest.CapturedMessages() as said:
+        for k, t in enumerate(times[:KEEP + 1] if save else times):
+            if k < first:
+                continue
+            handed = EPOCH + t + (restart if k == first else 0.0)
+            feed.GetClientSideObject().SetOutput(step_of(t), handed)
+            feed.MarkModified(feed)
+            tracer.UpdatePipeline(handed)
+        if save:
+            SaveData(save, proxy=OutputPort(tracer, 2))
+        else:
+            got = elements(tracer, handed)
+    said.messages = [m for m in said.messages if "New time step is not" not in m]
+    Delete(tracer)
+    Delete(feed)
+    return got, said
+
+
+epoch_state = os.path.join(states, "epoch.vtp")
+at_epoch(0, SETTINGS, save=epoch_state)
+epoch_straight, _ = at_epoch(0, SETTINGS)
+saved_at = EPOCH + times[KEEP]
+nudge = numpy.nextafter(numpy.nextafter(numpy.nextafter(saved_at, 2 * EPOCH), 2 * EPOCH),
+                        2 * EPOCH) - saved_at  # three units in the last place
+epoch_restarted, said = at_epoch(KEEP, dict(SETTINGS, InitialStateFile=epoch_state),
+                                 restart=float(nudge))
+gap = farthest(epoch_restarted, epoch_straight)
+print("times at 1.7e9, restarted %g later than saved: %g from the trace that never stopped"
+      % (nudge, gap))
+bptest.check(not said.messages and gap <= 1e-4 * 2.0,
+             "times at 1.7e9: a restart %g after the saved time goes on from the state (%g from "
+             "the trace that never stopped): %s" % (nudge, gap, said.messages[:2]))
+_, said = at_epoch(KEEP, dict(SETTINGS, InitialStateFile=epoch_state), restart=0.1)
+bptest.check(said.mentions("it is not used"),
+             "times at 1.7e9: a restart step 0.1 after the saved time is another step, the state "
+             "not used: %s" % said.messages[:2])
+
+
 # The GPU engine behind a Bound Particles display follows the same changes of
 # grid: its picture is the one of a trace on one grid, pixel for pixel.
 def gpu_picture(name, grid_at):
