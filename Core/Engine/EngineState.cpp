@@ -226,7 +226,9 @@ std::vector<NamedValue> parameterValues(const Parameters& p)
   add(v, "linkStiffness", p.linkStiffness);
   addEnum(v, "resetWhen", p.resetWhen);
   addEnum(v, "boundary", p.boundary);
-  add(v, "restitution", p.restitution);
+  // Restitution came with the walls (Bounce): before them every trace
+  // reflected nothing, which its default 1 leaves as it was.
+  v.push_back({ "restitution", p.restitution, 0.0, 1.0 });
   addEnum(v, "releasePattern", p.releasePattern);
   addArray(v, "lattice.counts", p.lattice.counts);
   addArray(v, "lattice.origin", p.lattice.origin);
@@ -369,7 +371,8 @@ std::string firstDifference(
   }
   for (const NamedValue& v : now)
   {
-    if (before.find(v.name) == before.end())
+    // A setting the state predates agrees when this trace keeps it as it was.
+    if (before.find(v.name) == before.end() && !sameBits(v.whenAbsent, v.value))
     {
       return say(v.name, "none", valueText(v.value));
     }

@@ -26,6 +26,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,10 @@ struct NamedValue
   /// How far a saved value may lie from this one and still agree (firstDifference):
   /// 0 asks for the same bits; infinity keeps the value for the record only. Not saved.
   double tolerance = 0.0;
+  /// A setting added after states were first saved: what a state saved
+  /// before it (without the name) stands for, the one value every trace had
+  /// then. NaN: the name is required. Not saved.
+  double whenAbsent = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A trace's state: the engine's and the trace's around it.

@@ -274,6 +274,24 @@ TEST(EngineState, TemplateValuesChangeWithWhatAStepDependsOn)
   }
 }
 
+TEST(EngineState, AStateFromBeforeASettingStandsForItsValueThen)
+{
+  // Restitution came with the walls: a state saved before them carries no
+  // such name and resumes a trace that reflects as every trace did then.
+  bp::Parameters p;
+  std::vector<bp::NamedValue> before = bp::parameterValues(p);
+  before.erase(std::remove_if(before.begin(), before.end(),
+                 [](const bp::NamedValue& v) { return v.name == "restitution"; }),
+    before.end());
+  EXPECT_EQ(bp::firstDifference(before, bp::parameterValues(p), "the setting"), "");
+  p.restitution = 0.5f;
+  EXPECT_EQ(bp::firstDifference(before, bp::parameterValues(p), "the setting"),
+    "the setting restitution: the state's none, this trace's 0.5");
+  // A name this trace lacks is still a difference, whatever it stood for.
+  EXPECT_EQ(bp::firstDifference(bp::parameterValues(p), before, "the setting"),
+    "the setting restitution: the state's 0.5, this trace's none");
+}
+
 TEST(EngineState, FirstDifferenceSaysWhichAndBothValues)
 {
   using V = std::vector<bp::NamedValue>;
