@@ -4,6 +4,7 @@
 #include "BoundParticleWorkQueues.h"
 #include "EngineChoice.h"
 #include "OutputArrays.h"
+#include "RendererNotes.h"
 #include "TrailFade.h"
 #include "WorkQueue.h"
 #include "vtkBoundParticleTracer.h"
@@ -21,7 +22,6 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOutputWindow.h"
 #include "vtkPVRenderView.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -84,49 +84,6 @@ struct vtkBoundParticleRepresentation::vtkInternals
   /// Why Automatic traces on the CPU engine was said (once per display).
   bool SaidAutomaticOnCpu = false;
 };
-
-namespace
-{
-/// Tells the tracer (through the queue's report) what renderer the view draws
-/// with, for Engine = Automatic: read once from the window's capabilities
-/// after it first drew (before that the window may have no context).
-void recordRenderer(vtkPVRenderView* view, bp::RendererReportWriter& writer)
-{
-  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
-  bp::RendererReport& report = writer.report();
-  if (report.renderer != bp::RendererKind::Unknown || !window || window->GetNeverRendered())
-  {
-    return;
-  }
-  const char* capabilities = window->ReportCapabilities();
-  const std::string text = capabilities ? capabilities : "";
-  const std::string key = "OpenGL renderer string:";
-  const std::size_t at = text.find(key);
-  if (at == std::string::npos)
-  {
-    return;
-  }
-  const std::size_t first = text.find_first_not_of(" \t", at + key.size());
-  const std::size_t end = text.find('\n', at);
-  report.rendererName = first < end ? text.substr(first, end - first) : std::string();
-  report.renderer = bp::rendererKind(report.rendererName);
-}
-
-/// Says once, in Output Messages, why Engine Automatic traces on the CPU
-/// engine, as soon as the display knows it draws with a software renderer:
-/// at the update where it knew before, else at the render that finds out.
-void sayAutomaticOnCpu(bool automaticOnCpu, const bp::WorkQueue& queue, bool& said)
-{
-  const bp::RendererReport& report = queue.report();
-  if (!automaticOnCpu || said || report.renderer != bp::RendererKind::Software)
-  {
-    return;
-  }
-  said = true;
-  const std::string text = bp::automaticOnCpuNote(report.rendererName) + "\n";
-  vtkOutputWindowDisplayText(text.c_str());
-}
-} // namespace
 
 vtkStandardNewMacro(vtkBoundParticleRepresentation);
 
@@ -305,7 +262,7 @@ int vtkBoundParticleRepresentation::RequestUpdateExtent(
   // Known before the tracer decides wherever the view drew before (the GUI's
   // view draws its background first): Automatic then picks its engine, and
   // says so, at the display's first frame.
-  recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
+  bpvtk::recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
   bp::RendererReport& report = I.Display.writer.report();
   if (!report.failure.empty())
   {
@@ -388,7 +345,7 @@ int vtkBoundParticleRepresentation::RequestData(
       if (asked && !failedGpuAnswer)
       {
         I.AutomaticOnCpu = !I.Gpu && I.Queue->automaticOnCpu();
-        sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
+        bpvtk::sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
       }
       if (I.Gpu)
       {
@@ -453,8 +410,8 @@ int vtkBoundParticleRepresentation::ProcessViewRequest(
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
     this->ReleaseGpuRequest(); // the view's update pass is over
-    recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
-    sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
+    bpvtk::recordRenderer(vtkPVRenderView::SafeDownCast(this->GetView()), I.Display.writer);
+    bpvtk::sayAutomaticOnCpu(I.AutomaticOnCpu, *I.Queue, I.SaidAutomaticOnCpu);
     vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
     if (I.Gpu)
     {

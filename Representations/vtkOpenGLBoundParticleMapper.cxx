@@ -4,6 +4,7 @@
 // to the instanced draws. Its parts have files of their own, one role each:
 //   GLStateGuard          GL state saved around the engine's passes
 //   QueueReplay           the work queue's calls run on the GPU engine
+//   ReplayHooks           where a replay's progress, stop and messages go
 //   DrawTables            the template, link and corner tables of a configuration
 //   DrawDeformation       the stretch fit's template side (ElementStretch, ElementFTLE)
 //   ColorTableTexture     the lookup table as a texture
@@ -23,6 +24,7 @@
 #include "GridLocalCoordinates.h"
 #include "OutputArrays.h"
 #include "QueueReplay.h"
+#include "ReplayHooks.h"
 #include "ReplayProgress.h"
 #include "TrailFade.h"
 #include "WorkQueue.h"
@@ -38,8 +40,6 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
-#include "vtkOutputWindow.h"
-#include "vtkPVVersion.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -56,37 +56,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace
 {
-// ParaView 6.1's GUI processes its events on every progress report (for its Abort button); a report
-// from inside a render then never returns there (python.GUI hung in Render), so the GPU replay
-// reports no progress on 6.1 and later. An abort request is still honoured between steps.
-#if PARAVIEW_VERSION_NUMBER >= PARAVIEW_VERSION_CHECK(6, 1, 0)
-constexpr bool GpuRunReportsProgress = false;
-#else
-constexpr bool GpuRunReportsProgress = true;
-#endif
-
-/// The GPU engine's messages (which path it runs, GpuPath.h) in VTK's
-/// output window, where the tracer's own notes go: said once per process.
-void sayInOutputWindow(const std::string& text, bool warning)
-{
-  const std::string line = text + "\n";
-  if (warning)
-  {
-    vtkOutputWindowDisplayWarningText(line.c_str());
-  }
-  else
-  {
-    vtkOutputWindowDisplayText(line.c_str());
-  }
-}
-
 /// What a frame spends on uploading the next field time step: a 128^3
 /// float time step (24 MiB) then arrives over a few frames on a software
 /// renderer, in one or two on a GPU.
@@ -161,7 +136,7 @@ vtkOpenGLBoundParticleMapper::vtkOpenGLBoundParticleMapper()
   // scale the template's buffer (which the shaders do not read) and fold that in as well.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   this->SetScalarVisibility(0);
-  bp::setGpuMessageSink(sayInOutputWindow);
+  bp::setGpuMessageSink(bpvtk::sayInOutputWindow);
 }
 
 vtkOpenGLBoundParticleMapper::~vtkOpenGLBoundParticleMapper() = default;
@@ -280,34 +255,9 @@ bool vtkOpenGLBoundParticleMapper::TakeAbortRequest()
   return true;
 }
 
-namespace
-{
-/// Where a replay's progress goes (the display that holds the mapper, whose
-/// progress ParaView shows), what stops it, and how it resumes drawing.
-bp::ReplayProgress::Hooks replayHooks(
-  vtkAlgorithm* owner, vtkOpenGLRenderWindow* window, std::function<bool()> stop)
-{
-  bp::ReplayProgress::Hooks hooks;
-  // Finished before an abort is asked too, so a stop comes when the work does.
-  hooks.settle = [] { glFinish(); };
-  hooks.stop = std::move(stop);
-  if (GpuRunReportsProgress)
-  {
-    hooks.report = [owner](double share)
-    {
-      owner->SetProgressText("Bound Particles: GPU engine");
-      owner->UpdateProgress(share);
-    };
-    // Whatever listens to the progress may have drawn in another window.
-    hooks.resume = [window] { window->MakeCurrent(); };
-  }
-  return hooks;
-}
-} // namespace
-
 bool vtkOpenGLBoundParticleMapper::ReportsReplayProgress()
 {
-  return GpuRunReportsProgress;
+  return bpvtk::replayReportsProgress();
 }
 
 bool vtkOpenGLBoundParticleMapper::RunCalls(
@@ -321,7 +271,7 @@ bool vtkOpenGLBoundParticleMapper::RunCalls(
   vtkAlgorithm* owner = this->GetContainerAlgorithm() ? this->GetContainerAlgorithm() : this;
   const std::string ownerText = owner->GetProgressText() ? owner->GetProgressText() : "";
   bp::ReplayProgress progress(
-    calls, replayHooks(owner, window, [this] { return this->TakeAbortRequest(); }));
+    calls, bpvtk::replayHooks(owner, window, [this] { return this->TakeAbortRequest(); }));
   bpvtk::QueueReplay::Listener listener;
   listener.configured = [this](const bp::EngineCall& call) { this->ConfigureDraw(call); };
   listener.failed = [this](const std::string& message) { this->Fail(message); };
@@ -331,7 +281,7 @@ bool vtkOpenGLBoundParticleMapper::RunCalls(
   I.Replay.run(calls, progress, listener);
   progress.finish();
   this->MeasureRate(calls, std::chrono::steady_clock::now() - started, progress.stopped());
-  if (GpuRunReportsProgress && progress.reports() > 0)
+  if (bpvtk::replayReportsProgress() && progress.reports() > 0)
   {
     owner->SetProgressText(ownerText.empty() ? nullptr : ownerText.c_str());
     // The GUI ran in the reports ("Error in cache state" in ParaView 5.11).
