@@ -27,31 +27,10 @@ import gui_check
 import gui_render
 import numpy
 from paraview.simple import FindSource, GetActiveView, OutputPort, Render, SaveData
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from state_file import read_state
 
 tracer = FindSource("BoundParticleTracer1")
 view = GetActiveView()
-
-
-def read_state(path):
-    """The file's cell arrays (the engine's records) and field arrays."""
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    cells = {}
-    for k in range(data.GetCellData().GetNumberOfArrays()):
-        a = data.GetCellData().GetArray(k)
-        cells[a.GetName()] = vtk_to_numpy(a).copy()
-    fields = {}
-    for k in range(data.GetFieldData().GetNumberOfArrays()):
-        a = data.GetFieldData().GetAbstractArray(k)
-        if a.IsA("vtkDataArray"):
-            fields[a.GetName()] = [a.GetTuple1(i) for i in range(a.GetNumberOfTuples())]
-        else:
-            fields[a.GetName()] = [a.GetValue(i) for i in range(a.GetNumberOfValues())]
-    return cells, fields
 
 
 def save(name, saved_in_menu=False):

@@ -16,8 +16,9 @@ plugin_dir="$1"
 data_dir="$2"
 script="$3"
 export PV_PLUGIN_PATH="$plugin_dir${4:+:$4}"
-# The check scripts the playback runs import gui_check.py from beside them.
-export PYTHONPATH="$data_dir/GUI${PYTHONPATH:+:$PYTHONPATH}"
+# The check scripts the playback runs import gui_check.py from beside them,
+# and what they share with the pvpython tests (state_file.py) from there.
+export PYTHONPATH="$data_dir/GUI:$data_dir/Python${PYTHONPATH:+:$PYTHONPATH}"
 # An installed package's plugin (its login script sets PV_PLUGIN_CONFIG_FILE)
 # must not load beside the one under test.
 unset PV_PLUGIN_CONFIG_FILE

@@ -9,15 +9,36 @@
 
 #include "Engine.h"
 #include "GpuStepper.h"
+#include "SharedContext.h"
 #include "Stepper.h"
 
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bptest
 {
+/// A physics test run on each engine: its parameter is true for the GPU
+/// engine, which needs a headless OpenGL context (a failure without one).
+class OnEachEngine : public ::testing::TestWithParam<bool>
+{
+protected:
+  void SetUp() override
+  {
+    if (GetParam() && !bp::haveSharedContext())
+      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
+  }
+  const char* engine() const { return GetParam() ? "GPU" : "CPU"; }
+};
+
+/// The engine in a test's name (INSTANTIATE_TEST_SUITE_P): /CPU or /GPU.
+inline std::string engineName(const ::testing::TestParamInfo<bool>& info)
+{
+  return info.param ? "GPU" : "CPU";
+}
+
 /// One engine or the other behind the stepper verbs (Core/Stepping/Stepper.h), with
 /// the readbacks the checks need.
 class System

@@ -89,14 +89,8 @@ double rotationDistance(const float* q, const std::array<double, 4>& r)
   return 1.0 - std::abs(q[0] * r[0] + q[1] * r[1] + q[2] * r[2] + q[3] * r[3]);
 }
 
-class Physics : public ::testing::TestWithParam<bool>
+class Physics : public bptest::OnEachEngine
 {
-protected:
-  void SetUp() override
-  {
-    if (GetParam() && !bp::haveSharedContext())
-      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
-  }
 };
 } // namespace
 
@@ -646,5 +640,4 @@ TEST_P(Physics, LinearShapeMatchingLetsElementsShear)
   EXPECT_GT(most.second, half.second);
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, Physics, ::testing::Values(false, true),
-  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });
+INSTANTIATE_TEST_SUITE_P(Engines, Physics, ::testing::Values(false, true), bptest::engineName);

@@ -9,6 +9,7 @@
 #include "ElementStretch.h"
 #include "Engine.h"
 #include "GpuStepper.h"
+#include "PhysicsSystem.h"
 #include "SharedContext.h"
 #include "Stepper.h"
 
@@ -120,14 +121,8 @@ bp::Parameters placed(std::size_t elements, float size, float reach)
   return p;
 }
 
-class Deformation : public ::testing::TestWithParam<bool>
+class Deformation : public bptest::OnEachEngine
 {
-protected:
-  void SetUp() override
-  {
-    if (GetParam() && !bp::haveSharedContext())
-      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
-  }
 };
 } // namespace
 
@@ -205,5 +200,4 @@ TEST_P(Deformation, SolidBodyRotationStretchesNothing)
   EXPECT_LT(worstStretch, 1e-2);
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, Deformation, ::testing::Values(false, true),
-  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });
+INSTANTIATE_TEST_SUITE_P(Engines, Deformation, ::testing::Values(false, true), bptest::engineName);

@@ -71,15 +71,8 @@ bp::Parameters heavy(std::array<float, 3> lo, std::array<float, 3> hi, float tau
   return p;
 }
 
-class InertiaPhysics : public ::testing::TestWithParam<bool>
+class InertiaPhysics : public bptest::OnEachEngine
 {
-protected:
-  void SetUp() override
-  {
-    if (GetParam() && !bp::haveSharedContext())
-      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
-  }
-  const char* engine() const { return GetParam() ? "GPU" : "CPU"; }
 };
 } // namespace
 
@@ -178,8 +171,8 @@ TEST_P(InertiaPhysics, ZeroResponseTimeIsTheMasslessTrace)
   EXPECT_TRUE(a.slips().empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, InertiaPhysics, ::testing::Values(false, true),
-  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });
+INSTANTIATE_TEST_SUITE_P(
+  Engines, InertiaPhysics, ::testing::Values(false, true), bptest::engineName);
 
 namespace
 {

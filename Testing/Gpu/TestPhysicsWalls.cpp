@@ -77,15 +77,8 @@ bp::Parameters dropped(bp::Boundary boundary, float tau, std::array<float, 3> at
   return p;
 }
 
-class WallPhysics : public ::testing::TestWithParam<bool>
+class WallPhysics : public bptest::OnEachEngine
 {
-protected:
-  void SetUp() override
-  {
-    if (GetParam() && !bp::haveSharedContext())
-      GTEST_FAIL() << "the GPU engine needs a headless OpenGL context";
-  }
-  const char* engine() const { return GetParam() ? "GPU" : "CPU"; }
 };
 } // namespace
 
@@ -216,5 +209,4 @@ TEST_P(WallPhysics, AStripInAChannelSlidesAlongASlipWall)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, WallPhysics, ::testing::Values(false, true),
-  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "GPU" : "CPU"; });
+INSTANTIATE_TEST_SUITE_P(Engines, WallPhysics, ::testing::Values(false, true), bptest::engineName);

@@ -15,8 +15,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bptest  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
+from state_file import read_state  # noqa: E402
 
 args = bptest.arguments()
 LoadPlugin(args.plugin, ns=globals())
@@ -32,26 +31,6 @@ def tracer_on(**extra):
                     LifetimeRange=[1.0, 3.0], Trails=1, TrailLength=4)
     settings.update(extra)
     return BoundParticleTracer(**settings)
-
-
-def read_state(path):
-    """The state file's cell arrays (the engine's records) and field arrays."""
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    cells = {}
-    for k in range(data.GetCellData().GetNumberOfArrays()):
-        a = data.GetCellData().GetArray(k)
-        cells[a.GetName()] = vtk_to_numpy(a).copy()
-    fields = {}
-    for k in range(data.GetFieldData().GetNumberOfArrays()):
-        a = data.GetFieldData().GetAbstractArray(k)
-        if a.IsA("vtkDataArray"):
-            fields[a.GetName()] = vtk_to_numpy(a).copy()
-        else:
-            fields[a.GetName()] = [a.GetValue(i) for i in range(a.GetNumberOfValues())]
-    return cells, fields
 
 
 def save_state(tracer, name):
