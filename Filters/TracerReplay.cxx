@@ -242,6 +242,12 @@ std::string vtkBoundParticleTracerInternals::checkPeriodic(
         ": turn Periodic off along " + axes[a] + ".";
     }
   }
+  if (config.linking())
+  {
+    return "Periodic (" + named +
+      ") cannot be used with Linking: a super set's elements would move across a periodic side "
+      "one by one, and their links would then span the whole domain; set Linking to None.";
+  }
   if (config.trace.trailLength > 0)
   {
     return "Periodic (" + named +

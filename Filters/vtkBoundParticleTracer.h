@@ -386,7 +386,8 @@ public:
   /// shape and deformation untouched; it is never released for leaving
   /// there). Boundary applies to the other axes' sides only. Refused along an
   /// axis of one grid point, with Trails (a trail would cross the domain at
-  /// the jump), and with several MPI processes. Both engines do the same.
+  /// the jump), with Linking (a super set's links would span the domain),
+  /// and with several MPI processes. Both engines do the same.
   vtkSetVector3Macro(Periodic, int);
   vtkGetVector3Macro(Periodic, int);
   ///@}

@@ -20,8 +20,8 @@
   slide along it (+y) at the flow's tangential speed; with Stick they stop.
 - Periodic along x on the same Wavelet (period 20) in the flow (1, 0, 0):
   every strip is back where it was after one period, whole, its centre
-  inside the period; Periodic with Trails, and along a flat axis, is refused
-  by name.
+  inside the period; Periodic with Trails, with Linking, and along a flat
+  axis, is refused by name.
 """
 import os
 import sys
@@ -200,6 +200,13 @@ with bptest.CapturedMessages() as said:
 bptest.check(said.mentions("cannot be used with Trails"),
              "Periodic with Trails is refused: %s" % said.messages)
 bptest.check(refused.GetNumberOfPoints() == 0, "Periodic with Trails: no output")
+periodic.Trails = 0
+periodic.Linking = "Chain"
+with bptest.CapturedMessages() as said:
+    refused = bptest.fetch(periodic, 2.0)
+bptest.check(said.mentions("cannot be used with Linking"),
+             "Periodic with Linking is refused: %s" % said.messages)
+bptest.check(refused.GetNumberOfPoints() == 0, "Periodic with Linking: no output")
 Delete(periodic)
 flat = Wavelet(WholeExtent=[-10, 10, -10, 10, 0, 0])
 flatWind = Calculator(Input=flat, ResultArrayName="wind", Function="iHat")
