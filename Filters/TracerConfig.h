@@ -33,6 +33,8 @@ struct TracerConfig
   bp::BuiltinShape shape = bp::BuiltinShape::Strip8; ///< when no template input
   bp::MeshSprings templateSprings = bp::MeshSprings::EdgesAndDiagonals;
   std::array<int, 3> resampleDimensions = { 0, 0, 0 }; ///< 0: chosen (TracerResample.h)
+  /// Periodic axes (the Periodic property; Periodic.h): set on the held grid.
+  std::array<bool, 3> periodic = { false, false, false };
   int coloringAxis = 2;
   /// The output arrays to compute, by bp::OutputArrayId.
   std::array<bool, std::size_t(bp::OutputArrayId::Count)> wanted{};

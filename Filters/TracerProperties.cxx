@@ -87,6 +87,8 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
   c.shape = this->ElementShape;
   c.templateSprings = this->TemplateSprings;
   std::copy(this->ResampleDimensions, this->ResampleDimensions + 3, c.resampleDimensions.begin());
+  std::transform(
+    this->Periodic, this->Periodic + 3, c.periodic.begin(), [](int flag) { return flag != 0; });
   c.coloringAxis = this->ColoringAxis;
   c.checkpointMemory = this->CheckpointMemory;
   c.initialStateFile = this->InitialStateFile;

@@ -211,6 +211,52 @@ void vtkBoundParticleTracerInternals::warnOfDeformation(
   }
 }
 
+std::string vtkBoundParticleTracerInternals::checkPeriodic(
+  const Config& config, const bp::VectorField& field) const
+{
+  static const char* const axes[3] = { "x", "y", "z" };
+  std::string named;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (config.periodic[a])
+    {
+      named += named.empty() ? axes[a] : std::string(", ") + axes[a];
+    }
+  }
+  if (named.empty())
+  {
+    return std::string();
+  }
+  if (this->Layout.distributed())
+  {
+    return "Periodic (" + named +
+      ") is not supported with several MPI processes: elements are not exchanged across a "
+      "periodic seam between pieces; run on one process or turn Periodic off.";
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (config.periodic[a] && field.grid().dims[a] < 2)
+    {
+      return std::string("Periodic along ") + axes[a] + " needs the grid to have more than one " +
+        "point along " + axes[a] + ", but it has " + std::to_string(field.grid().dims[a]) +
+        ": turn Periodic off along " + axes[a] + ".";
+    }
+  }
+  if (config.linking())
+  {
+    return "Periodic (" + named +
+      ") cannot be used with Linking: a super set's elements would move across a periodic side "
+      "one by one, and their links would then span the whole domain; set Linking to None.";
+  }
+  if (config.trace.trailLength > 0)
+  {
+    return "Periodic (" + named +
+      ") cannot be used with Trails: an element that moves across a periodic side would draw "
+      "its trail across the whole domain; turn Trails off.";
+  }
+  return std::string();
+}
+
 std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
@@ -219,6 +265,11 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
   {
     return "Time Direction = Backward needs the whole time series, but in situ only the present "
            "time step arrives: set Time Direction to Forward.";
+  }
+  const std::string periodicError = this->checkPeriodic(config, field);
+  if (!periodicError.empty())
+  {
+    return periodicError;
   }
   const std::string templateError = this->elementTemplate(config, inputVector, shape);
   if (!templateError.empty())

@@ -153,6 +153,7 @@ std::string vtkBoundParticleTracerInternals::takeTimeStep(
   slice.time = this->sliceTime(input);
   // Backward: the trace samples the data's mirror in time, its flow reversed.
   slice = bp::traceSlice(this->Plan.direction(), slice);
+  grid.periodic = config.periodic;
   const std::string kept = this->keepTimeStep(grid, offset, slice);
   // Each process checks its own piece (its velocities, its grid): one
   // process's failure must be every process's before the next collective step.

@@ -593,6 +593,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ResetWhen: " << this->GetResetWhenAsString() << "\n";
   os << indent << "Boundary: " << this->GetBoundaryAsString()
      << ", Restitution: " << this->Restitution << "\n";
+  os << indent << "Periodic: " << this->Periodic[0] << " " << this->Periodic[1] << " "
+     << this->Periodic[2] << "\n";
   os << indent << "ColoringAxis: " << char('X' + this->ColoringAxis) << "\n";
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "ElementSize: " << this->ElementSize << "\n";

@@ -377,6 +377,22 @@ public:
   ///@}
 
   ///@{
+  /// Periodic sides: one flag per axis x, y, z (default 0 0 0, none). Along
+  /// a periodic axis the grid (the image, the rectilinear grid, or the grid
+  /// an unstructured input is resampled onto) repeats with a period of its
+  /// extent, its last plane standing for its first: the field is sampled
+  /// across the seam, and an element whose centre leaves through one side
+  /// moves whole, by one period, to the other (its springs stay short, its
+  /// shape and deformation untouched; it is never released for leaving
+  /// there). Boundary applies to the other axes' sides only. Refused along an
+  /// axis of one grid point, with Trails (a trail would cross the domain at
+  /// the jump), with Linking (a super set's links would span the domain),
+  /// and with several MPI processes. Both engines do the same.
+  vtkSetVector3Macro(Periodic, int);
+  vtkGetVector3Macro(Periodic, int);
+  ///@}
+
+  ///@{
   /// Releases avoid stagnant flow: an element whose centre moves slower than
   /// this fraction of the field's top speed (at the start) over its first
   /// step is released again. 0 keeps every release.
@@ -620,6 +636,7 @@ protected:
   bp::ResetWhen ResetWhen = bp::ResetWhen::CenterLeaves;
   bp::Boundary Boundary = bp::Boundary::ReleaseAgain;
   double Restitution = 1.0;
+  int Periodic[3] = { 0, 0, 0 };
   int ColoringAxis = 2;
   int ResampleDimensions[3] = { 0, 0, 0 };
   vtkIdType NumberOfElements = 1000;

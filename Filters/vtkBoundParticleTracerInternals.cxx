@@ -195,6 +195,8 @@ void vtkBoundParticleTracerInternals::begin(const Config& config)
   bp::Stepper& stepper = this->stepper();
   const bool replay = this->Update.decision.replay;
   this->ReplayPending = replay;
+  // Periodic belongs to the grid: the held time steps take a change at once.
+  this->Held.grid.periodic = config.periodic;
   if (!this->Update.forState)
   {
     this->Update.stepsInLastUpdate = 0;

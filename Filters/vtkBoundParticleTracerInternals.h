@@ -412,6 +412,8 @@ private:
   /// This process's checks of a new trace: the template, the seeds, the
   /// engine's limits, memory, a stable relaxation, the GPU's limits; then
   /// the stepper configured. Returns the error, if any.
+  /// Periodic's refusals: several processes, an axis of one point, Linking, Trails.
+  std::string checkPeriodic(const Config& config, const bp::VectorField& field) const;
   std::string checkConfiguration(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bpvtk::TracerSeeds& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);

@@ -156,6 +156,7 @@ void GpuFieldCache::applyTo(GpuPass& pass) const
   pass.setIVec3(
     "bpNextCorner", c.degenerate[0] ? 0 : 1, c.degenerate[1] ? 0 : 1, c.degenerate[2] ? 0 : 1);
   pass.setIVec3("bpDegenerate", c.degenerate[0], c.degenerate[1], c.degenerate[2]);
+  pass.setIVec3("bpPeriodic", c.periodic[0], c.periodic[1], c.periodic[2]);
   pass.setIVec3("bpRectilinear", c.rectilinear[0], c.rectilinear[1], c.rectilinear[2]);
   const auto& dims = field.grid().dims;
   pass.setIVec3(

@@ -54,6 +54,17 @@ public:
   /// the layers still to upload (0 when it is resident).
   int stageSlice(const FieldSlice& slice, std::size_t maxBytes);
 
+  /// Whether the field last set has a periodic axis (Periodic.h).
+  bool periodic() const
+  {
+    if (!this->Field)
+    {
+      return false;
+    }
+    const auto c = this->Field->samplingConstants();
+    return c.periodic[0] || c.periodic[1] || c.periodic[2];
+  }
+
   /// How many time steps are resident (at most three).
   int residentTimeSteps() const;
 

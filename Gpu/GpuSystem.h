@@ -117,6 +117,10 @@ private:
     return !placing && this->parameters.anchor == Anchor::Centre;
   }
 
+  /// Whether a step (not the placing) moves elements across a periodic side:
+  /// the test pass writes each element's shift, the finalize pass applies it.
+  bool shiftsPeriodic(bool placing) const { return !placing && this->fieldCache.periodic(); }
+
   /// parameters.frame as a quaternion, for the reset pass.
   std::array<float, 4> FrameQuaternion = { 0, 0, 0, 1 };
   std::array<float, 3> LongAxis = { 1, 0, 0 }; ///< longAxis() of the template

@@ -157,6 +157,7 @@ void GpuSystem::finalizeInputs(GpuPass& pass, GLuint restored, bool placed) cons
   pass.texture("bpBefore", this->state.before.get());
   this->bindCurrent(pass, { ElementTexture::State });
   pass.setInt("bpAnchored", this->anchored(placed) ? 1 : 0);
+  pass.setInt("bpShiftsPeriodic", this->shiftsPeriodic(placed) ? 1 : 0);
   pass.texture("bpShifts", this->state.anchorShifts.get());
 }
 
@@ -282,7 +283,7 @@ void GpuSystem::test(GLuint positions, bool settleOnly, double h, float endWeigh
   TexturePair& elements = this->state.element(ElementTexture::State);
   GpuPass pass = this->begin(this->passes.programs.test);
   this->testInputs(pass, positions, settleOnly, h, endWeight);
-  if (this->anchored(settleOnly))
+  if (this->anchored(settleOnly) || this->shiftsPeriodic(settleOnly))
   {
     pass.runPerElement({ elements.next(), this->state.anchorShifts.get() });
   }

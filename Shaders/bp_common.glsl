@@ -220,6 +220,46 @@ uniform ivec3 bpNextCorner; // 1 along an axis with cells, 0 along a flat one
 uniform vec3 bpLower;
 uniform vec3 bpUpper;
 uniform bvec3 bpDegenerate;
+uniform bvec3 bpPeriodic; // periodic axes (Periodic.h), never a flat one
+
+// Periodic.h's wrapPeriodic: x moved by whole periods into [lower, upper).
+float bpWrapPeriodic(float x, float lower, float upper)
+{
+  if (!(x < lower || x > upper) || isinf(x) || isnan(x))
+  {
+    return x;
+  }
+  float period = upper - lower;
+  float w = x - period * floor((x - lower) / period);
+  if (!(w >= lower) || !(w < upper))
+  {
+    w = lower;
+  }
+  return w;
+}
+
+// Periodic.h's periodicShift along each periodic axis: the whole periods that
+// bring an element's centre c back into the box; 0 elsewhere.
+vec3 bpPeriodicShift(vec3 c)
+{
+  vec3 shift = vec3(0.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    float lower = bpLower[a], upper = bpUpper[a];
+    if (bpPeriodic[a] && (c[a] < lower || c[a] > upper) && !isinf(c[a]) && !isnan(c[a]))
+    {
+      float period = upper - lower;
+      shift[a] = -floor((c[a] - lower) / period) * period;
+    }
+  }
+  return shift;
+}
+
+// Domain::bounded: an axis with sides, neither flat nor periodic.
+bool bpBounded(int a)
+{
+  return !bpDegenerate[a] && !bpPeriodic[a];
+}
 // Rectilinear axes: row a of bpAxes holds, per point i, its coordinate and the
 // inverse width of cell i (VectorField::axisTable); row 3 + a holds, per bin
 // of a uniform division of the axis into bpBins[a] bins, the cell that holds
@@ -235,6 +275,10 @@ uniform sampler2D bpAxes;
 // VectorField::locate finds by binary search, the same weight arithmetic.
 void bpLocate(int a, float x, out int cell, out float fraction)
 {
+  if (bpPeriodic[a])
+  {
+    x = bpWrapPeriodic(x, bpLower[a], bpUpper[a]); // across the seam
+  }
   if (!bpRectilinear[a])
   {
     float g = (x - bpOrigin[a]) * bpInverseSpacing[a];
@@ -325,7 +369,7 @@ bool bpContains(vec3 p)
 {
   for (int a = 0; a < 3; ++a)
   {
-    if (!bpDegenerate[a] && !(p[a] >= bpLower[a] && p[a] <= bpUpper[a]))
+    if (bpBounded(a) && !(p[a] >= bpLower[a] && p[a] <= bpUpper[a]))
     {
       return false;
     }
@@ -455,7 +499,7 @@ bool bpOnWall(vec3 p)
 {
   for (int a = 0; a < 3; ++a)
   {
-    if (!bpDegenerate[a] && (p[a] == bpLower[a] || p[a] == bpUpper[a]))
+    if (bpBounded(a) && (p[a] == bpLower[a] || p[a] == bpUpper[a]))
     {
       return true;
     }
@@ -475,7 +519,7 @@ int bpClampToBox(inout vec3 p)
   int hits = 0;
   for (int a = 0; a < 3; ++a)
   {
-    if (bpDegenerate[a])
+    if (!bpBounded(a))
     {
       continue;
     }
@@ -501,7 +545,7 @@ int bpStickAlongStep(vec3 before, inout vec3 p)
   float wall = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    if (bpDegenerate[a])
+    if (!bpBounded(a))
     {
       continue;
     }
@@ -546,7 +590,7 @@ int bpWallAfterAdvection(vec3 before, inout vec3 p)
   int hits = 0;
   for (int a = 0; a < 3; ++a)
   {
-    if (bpDegenerate[a])
+    if (!bpBounded(a))
     {
       continue;
     }

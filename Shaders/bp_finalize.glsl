@@ -3,7 +3,7 @@
 // force is the length of the restoration displacement.
 uniform sampler2D bpRestored;
 uniform sampler2D bpBefore;
-uniform sampler2D bpShifts; // per element, from the test pass (anchored only)
+uniform sampler2D bpShifts; // per element, from the test pass (anchored or periodic only)
 
 // A particle's state after the step (position, force) from its positions
 // before the step, after advection and after restoration, its element's
@@ -16,7 +16,7 @@ vec4 bpFinalParticle(vec3 restored, vec3 advected, vec3 before, vec4 element, ve
   }
   vec3 q = restored;
   vec3 d = q - advected;
-  if (bpAnchored)
+  if (bpAnchored || bpShiftsPeriodic)
   {
     // The force stays the restoration's: it is taken before the move.
     q += shift.xyz;

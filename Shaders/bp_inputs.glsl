@@ -23,6 +23,7 @@ uniform sampler2D bpParticleInfo;
 uniform float bpStep;          // float(h)
 uniform float bpEndWeight;     // the second time step's weight at t + h
 uniform bool bpAnchored;       // Anchor = Centre (bp_test.glsl, bp_finalize.glsl)
+uniform bool bpShiftsPeriodic; // a periodic field: finalize applies the test's shifts
 uniform bool bpLinearMatching; // linear shape matching (bp_match.glsl)
 // Heavy particles (bp_slip.glsl): per particle, the displacement the slip adds
 // to the tracer's in this step (bp_advect.glsl adds it).

@@ -58,6 +58,22 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
       anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
     }
   }
+  else if (finite && any(bpPeriodic))
+  {
+    // Engine::wrapPeriodic: a centre beyond a periodic side moves the whole
+    // element by whole periods (Periodic.h); finalize applies the shift.
+    shift = vec4(bpPeriodicShift(c), 0.0);
+    if (shift.xyz != vec3(0.0))
+    {
+      at = c + shift.xyz;
+      anyOutside = false;
+      for (int i = 0; bpAnyParticle && i < bpParticles; ++i)
+      {
+        vec3 q = bpPositionOf(e, i) + shift.xyz;
+        anyOutside = anyOutside || !bpInDomain(q, bpEndWeight);
+      }
+    }
+  }
   bool left = bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight);
   bool due = !finite || bpReleasedStagnant(e, state, c, center.xyz);
   // A super set's element stays (finalize keeps its last good positions):

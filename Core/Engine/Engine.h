@@ -412,6 +412,15 @@ private:
   /// (tested only with `testParticles`).
   bool anchor(std::size_t e, const VectorField& field, const StepWeights& weights,
     const float center[3], bool testParticles);
+  /// A periodic side (Periodic.h): element e, its particles' mean at
+  /// `center`, moved whole by whole periods where that centre lies beyond a
+  /// periodic side; then its new centre in `wrapped`. Whether it moved.
+  bool wrapPeriodic(
+    std::size_t e, const VectorField& field, const float center[3], float wrapped[3]);
+  /// Whether a particle of element e is outside the domain (false unless
+  /// `testParticles`).
+  bool anyOutside(
+    std::size_t e, const VectorField& field, const StepWeights& weights, bool testParticles) const;
   /// Whether p is in the domain after a step: in the bounds, in a cell
   /// inside the flow's domain (DomainMask.h).
   bool inDomain(const VectorField& field, const float p[3], float weight) const

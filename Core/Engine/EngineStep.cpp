@@ -418,15 +418,21 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
     const float* at = center;
+    float wrapped[3];
     if (anchored)
     {
       at = this->InitialCenters.data() + 3 * e;
       anyOutside = this->anchor(e, field, weights, center, byParticle);
     }
+    else if (this->wrapPeriodic(e, field, center, wrapped))
+    {
+      at = wrapped;
+      anyOutside = this->anyOutside(e, field, weights, testParticles);
+    }
     left = byParticle ? anyOutside : !this->inDomain(field, at, weights.end);
     // The release-speed test reads the centre the flow carried the element
     // to, before anchoring took it back (else every anchored release would
-    // look stagnant).
+    // look stagnant) or a periodic side moved it by a period.
     leave = this->releasedStagnant(e, center, h);
   }
   if (this->Params.trackPoses)
@@ -450,6 +456,58 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);
+}
+
+bool Engine::wrapPeriodic(
+  std::size_t e, const VectorField& field, const float center[3], float wrapped[3])
+{
+  // An element whose centre left through a periodic side moves whole by
+  // whole periods to the other side (Periodic.h): its shape is untouched.
+  const Domain& box = this->domainOf(field);
+  float shift[3] = { 0, 0, 0 };
+  bool moves = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (box.periodic[a] && !box.degenerate[a])
+    {
+      shift[a] = periodicShift(center[a], box.lower[a], box.upper[a]);
+      moves = moves || shift[a] != 0.0f;
+    }
+  }
+  if (!moves)
+  {
+    return false;
+  }
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  for (std::size_t i = 0; i < 3 * n; ++i)
+  {
+    p[i] += shift[i % 3];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    wrapped[k] = center[k] + shift[k];
+  }
+  return true;
+}
+
+bool Engine::anyOutside(
+  std::size_t e, const VectorField& field, const StepWeights& weights, bool testParticles) const
+{
+  if (!testParticles)
+  {
+    return false;
+  }
+  const std::size_t n = this->Shape.particleCount();
+  const float* p = this->Positions.data() + 3 * e * n;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!this->inDomain(field, p + 3 * i, weights.end))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool Engine::anchor(std::size_t e, const VectorField& field, const StepWeights& weights,

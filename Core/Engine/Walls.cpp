@@ -8,7 +8,7 @@ bool onWall(const Domain& box, const float p[3])
 {
   for (int a = 0; a < 3; ++a)
   {
-    if (!box.degenerate[a] && (p[a] == box.lower[a] || p[a] == box.upper[a]))
+    if (box.bounded(a) && (p[a] == box.lower[a] || p[a] == box.upper[a]))
     {
       return true;
     }
@@ -21,7 +21,7 @@ WallHits clampToBox(const Domain& box, float p[3])
   WallHits hits = 0;
   for (int a = 0; a < 3; ++a)
   {
-    if (box.degenerate[a])
+    if (!box.bounded(a))
     {
       continue;
     }
@@ -51,7 +51,7 @@ WallHits stickAlongStep(const Domain& box, const float before[3], float p[3])
   float wall = 0.0f;
   for (int a = 0; a < 3; ++a)
   {
-    if (box.degenerate[a])
+    if (!box.bounded(a))
     {
       continue;
     }
@@ -96,7 +96,7 @@ WallHits wallAfterAdvection(
       WallHits hits = 0;
       for (int a = 0; a < 3; ++a)
       {
-        if (box.degenerate[a])
+        if (!box.bounded(a))
         {
           continue;
         }

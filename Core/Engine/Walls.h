@@ -7,7 +7,8 @@
  *
  * The walls are the sides of the domain box (Engine::domainOf: the whole
  * field's bounds, also under MPI) along its axes of more than one point; a
- * flat axis has none. A particle's step is walled twice:
+ * flat axis has none, nor has a periodic one (Periodic.h: Domain::bounded). A particle's step is
+ * walled twice:
  *
  *  - after advection (wallAfterAdvection), from its position before the
  *    step: Stick puts a particle that crossed a side where its step's

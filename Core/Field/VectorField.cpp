@@ -271,6 +271,8 @@ VectorField::VectorField(const GridGeometry& grid, FieldSlice first, FieldSlice 
     this->Bounds.lower[a] = this->Lower[a];
     this->Bounds.upper[a] = this->Upper[a];
     this->Bounds.degenerate[a] = this->Degenerate[a];
+    this->Periodic[a] = grid.periodic[a] && !this->Degenerate[a];
+    this->Bounds.periodic[a] = this->Periodic[a];
     // A plane repeats its single layer: the "next" corner is the same point.
     this->Stride[a] = this->Degenerate[a] ? 0 : stride;
     stride *= std::size_t(std::max(grid.dims[a], 1));
@@ -404,6 +406,7 @@ VectorField::SamplingConstants VectorField::samplingConstants() const
     c.upper[a] = this->Upper[a];
     c.degenerate[a] = this->Degenerate[a];
     c.rectilinear[a] = !this->AxisTable[a].empty();
+    c.periodic[a] = this->Periodic[a];
   }
   return c;
 }

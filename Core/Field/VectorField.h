@@ -20,6 +20,7 @@
 #ifndef BoundParticles_VectorField_h
 #define BoundParticles_VectorField_h
 
+#include "Periodic.h"
 #include "Simd.h"
 #include "TrilinearAlong.h"
 
@@ -48,6 +49,9 @@ struct GridGeometry
   /// (0 for a whole grid). Uniform axes then locate from the whole grid's
   /// first point and shift by it, so every piece rounds as the whole does.
   std::array<int, 3> firstIndex = { 0, 0, 0 };
+  /// Periodic axes (Periodic.h): the period is the axis's extent, its last
+  /// plane standing for its first. Ignored along an axis of one point.
+  std::array<bool, 3> periodic = { false, false, false };
 
   /// Makes axis a rectilinear with these point coordinates (dims, origin and
   /// the mean spacing follow from them).
@@ -95,12 +99,17 @@ struct Domain
   std::array<float, 3> lower = { 0, 0, 0 };
   std::array<float, 3> upper = { 0, 0, 0 };
   std::array<bool, 3> degenerate = { true, true, true };
+  /// Periodic axes (Periodic.h): no side there, neither to leave nor a wall.
+  std::array<bool, 3> periodic = { false, false, false };
+
+  /// Whether axis a has sides: not a plane, not periodic.
+  bool bounded(int a) const { return !this->degenerate[a] && !this->periodic[a]; }
 
   bool contains(const float p[3]) const
   {
     for (int a = 0; a < 3; ++a)
     {
-      if (!this->degenerate[a] && !(p[a] >= this->lower[a] && p[a] <= this->upper[a]))
+      if (this->bounded(a) && !(p[a] >= this->lower[a] && p[a] <= this->upper[a]))
       {
         return false;
       }
@@ -226,6 +235,7 @@ public:
     float origin[3], inverseSpacing[3], maxIndex[3], lower[3], upper[3];
     bool degenerate[3];
     bool rectilinear[3];
+    bool periodic[3]; ///< Periodic.h: wrapped by period upper - lower
   };
   SamplingConstants samplingConstants() const;
 
@@ -296,6 +306,7 @@ private:
   float Lower[3];
   float Upper[3];
   bool Degenerate[3];
+  bool Periodic[3]; ///< periodic axes of more than one point (Periodic.h)
   Domain Bounds;
   std::size_t Stride[3];
   std::array<std::vector<float>, 3> AxisTable;
@@ -307,6 +318,10 @@ private:
 
 inline void VectorField::locate(int a, float x, std::size_t& cell, float& fraction) const
 {
+  if (this->Periodic[a])
+  {
+    x = wrapPeriodic(x, this->Lower[a], this->Upper[a]); // across the seam
+  }
   if (this->Rectilinear[a])
   {
     this->locateRectilinear(a, x, cell, fraction);

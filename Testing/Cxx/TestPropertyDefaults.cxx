@@ -145,6 +145,7 @@ const std::map<std::string, CoreField> CoreDefaults = {
   { "ResetWhen", [](const auto& c) { return one(c.trace.engine.resetWhen); } },
   { "Boundary", [](const auto& c) { return one(c.trace.engine.boundary); } },
   { "Restitution", [](const auto& c) { return one(c.trace.engine.restitution); } },
+  { "Periodic", [](const auto& c) { return all(c.periodic); } },
   { "MinimumReleaseSpeed", [](const auto& c) { return one(c.trace.minimumReleaseSpeed); } },
   { "Trails", [](const auto& c) { return one(c.trace.trailLength > 0 ? 1 : 0); } },
   { "TrailSpacing", [](const auto& c) { return one(c.trace.trailSpacing); } },

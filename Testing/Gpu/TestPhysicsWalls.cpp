@@ -5,6 +5,8 @@
 // settling time and place; one that bounces rises to e^2 of its drop
 // height; a strip carried across a channel onto a Slip wall lies down on it
 // and slides along it at the flow's speed there, and stops on a Stick wall.
+// A periodic box (Periodic, 2.8 "Periodic domains") brings every element
+// back to its start after one period, its shape unchanged.
 #include "Engine.h"
 #include "PhysicsSystem.h"
 #include "SharedContext.h"
@@ -206,6 +208,69 @@ TEST_P(WallPhysics, AStripInAChannelSlidesAlongASlipWall)
       EXPECT_NEAR(slid, 2.0, 0.02);
     else
       EXPECT_EQ(slid, 0.0);
+  }
+}
+
+TEST_P(WallPhysics, APeriodicBoxBringsEveryElementBackAfterOnePeriod)
+{
+  // A box [-1, 1]^3 periodic along every axis (period 2, its last planes
+  // standing for its first) in the uniform flow (1, -0.5, 0.25): after
+  // t = 8, one period along z, two along y and four along x, every particle
+  // is back where it started (within the float steps' rounding), never
+  // released, and the springs stayed at rest all the way across the seams.
+  bp::GridGeometry g = grid({ 9, 9, 9 }, { -1, -1, -1 }, { 1, 1, 1 });
+  g.periodic = { true, true, true };
+  const bp::VectorField field = fieldOf(g,
+    [](double, double) {
+      return std::array<float, 3>{ 1.0f, -0.5f, 0.25f };
+    });
+  for (bp::BuiltinShape shape : { bp::BuiltinShape::Cross, bp::BuiltinShape::Strip8 })
+  {
+    bp::Parameters p;
+    p.numberOfElements = 20;
+    p.elementSize = 0.4f;
+    p.emitterMin = { -0.9f, -0.9f, -0.9f };
+    p.emitterMax = { 0.9f, 0.9f, 0.9f };
+    p.lifetimeMin = p.lifetimeMax = 1e6f;
+    p.integrator = bp::Integrator::RK4;
+    p.iterations = 4;
+    p.seed = 3;
+    const bp::ElementTemplate t = bp::builtinTemplate(shape);
+    System s(GetParam(), t, p, field);
+    const double h = 0.02;
+    s.step(0.0, h);
+    const std::vector<float> start = s.positions();
+    const std::size_t n = t.particleCount();
+    // The largest change of any particle's offset from its element's first
+    // particle: 0 for an element moved whole.
+    double worstShape = 0.0, worstReturn = 0.0;
+    int jumps = 0;
+    std::vector<float> last = start;
+    for (int k = 1; k <= 400; ++k)
+    {
+      s.step(k * h, h);
+      const std::vector<float> x = s.positions();
+      for (std::size_t e = 0; e < p.numberOfElements; ++e)
+        for (std::size_t i = 0; i < n; ++i)
+          for (int a = 0; a < 3; ++a)
+          {
+            const std::size_t q = 3 * (e * n + i) + a, o = 3 * e * n + a;
+            worstShape =
+              std::max(worstShape, double(std::abs((x[q] - x[o]) - (start[q] - start[o]))));
+            jumps += i == 0 && std::abs(x[q] - last[q]) > 1.0f;
+          }
+      last = x;
+    }
+    for (std::size_t q = 0; q < start.size(); ++q)
+      worstReturn = std::max(worstReturn, double(std::abs(last[q] - start[q])));
+    const std::vector<float> flags = s.flags();
+    std::printf("%s, %s: back within %.3g after one period, shape within %.3g, %d seam jumps\n",
+      engine(), t.name.c_str(), worstReturn, worstShape, jumps);
+    EXPECT_LT(worstReturn, 1e-3);
+    EXPECT_LT(worstShape, 1e-3);
+    EXPECT_GE(jumps, int(p.numberOfElements) * 7); // 4 + 2 + 1 seams each
+    for (float f : flags)
+      EXPECT_EQ(f, 0.0f) << "never released for leaving";
   }
 }
 

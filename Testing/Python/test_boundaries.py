@@ -18,6 +18,10 @@
 - On a real grid (a Wavelet image, a uniform flow (1, 0.5, 0) put on it by
   a Calculator) strips driven into the side x = 10 with Slip lie on it and
   slide along it (+y) at the flow's tangential speed; with Stick they stop.
+- Periodic along x on the same Wavelet (period 20) in the flow (1, 0, 0):
+  every strip is back where it was after one period, whole, its centre
+  inside the period; Periodic with Trails, with Linking, and along a flat
+  axis, is refused by name.
 """
 import os
 import sys
@@ -166,4 +170,52 @@ for wall in ("Slip", "Stick"):
     else:
         bptest.check(climb < 0.2, "Stick: they stop on the wall: %.3f in 2" % climb)
     Delete(strips)
+
+# Periodic along x on the Wavelet (period 20, its extent) in the uniform flow
+# (1, 0, 0): every strip crosses the seam at x = 10 and is back where it was
+# after one period, t = 1 to t = 21, whole (never released again), its centre
+# always inside [-10, 10] along x.
+along = Calculator(Input=wavelet, ResultArrayName="wind", Function="iHat")
+periodic = BoundParticleTracer(Input=along, Vectors=["POINTS", "wind"], ElementShape="Strip4",
+                               NumberOfElements=20, ElementSize=1.0, EmitterCenter=[0, 0, 0],
+                               EmitterSize=[16, 16, 16], StepSizeUnit="Time", StepSize=0.05,
+                               Duration=22, LifetimeRange=[100, 100], Seed=5, Periodic=[1, 0, 0])
+start = vtk_to_numpy(bptest.fetch(periodic, 1.0).GetPoints().GetData()).reshape(-1, N, 3)
+middle = vtk_to_numpy(bptest.fetch(periodic, 9.0).GetPoints().GetData()).reshape(-1, N, 3)
+back = vtk_to_numpy(bptest.fetch(periodic, 21.0).GetPoints().GetData()).reshape(-1, N, 3)
+moved = np.abs(back - start).max()
+centres = middle.mean(axis=1)
+print("Periodic x on the Wavelet: back within %.2g after one period; centres at t = 9 in x "
+      "%.3f to %.3f" % (moved, centres[:, 0].min(), centres[:, 0].max()))
+bptest.check(moved < 1e-3, "Periodic: every strip back where it was after one period: %.2g"
+             % moved)
+bptest.check(centres[:, 0].min() >= -10.0 and centres[:, 0].max() <= 10.0,
+             "Periodic: the centres stay in the period: %.3f to %.3f"
+             % (centres[:, 0].min(), centres[:, 0].max()))
+spread = np.abs(middle[:, :, 0] - middle[:, :1, 0]).max()
+bptest.check(spread < 5.0, "Periodic: no strip torn across the seam: %.3f" % spread)
+periodic.Trails = 1
+with bptest.CapturedMessages() as said:
+    refused = bptest.fetch(periodic, 2.0)
+bptest.check(said.mentions("cannot be used with Trails"),
+             "Periodic with Trails is refused: %s" % said.messages)
+bptest.check(refused.GetNumberOfPoints() == 0, "Periodic with Trails: no output")
+periodic.Trails = 0
+periodic.Linking = "Chain"
+with bptest.CapturedMessages() as said:
+    refused = bptest.fetch(periodic, 2.0)
+bptest.check(said.mentions("cannot be used with Linking"),
+             "Periodic with Linking is refused: %s" % said.messages)
+bptest.check(refused.GetNumberOfPoints() == 0, "Periodic with Linking: no output")
+Delete(periodic)
+flat = Wavelet(WholeExtent=[-10, 10, -10, 10, 0, 0])
+flatWind = Calculator(Input=flat, ResultArrayName="wind", Function="iHat")
+onPlane = BoundParticleTracer(Input=flatWind, Vectors=["POINTS", "wind"], ElementShape="Strip4",
+                              NumberOfElements=5, ElementSize=1.0, StepSizeUnit="Time",
+                              StepSize=0.05, Duration=1, Periodic=[0, 0, 1])
+with bptest.CapturedMessages() as said:
+    refused = bptest.fetch(onPlane, 0.5)
+bptest.check(said.mentions("Periodic along z needs the grid to have more than one point"),
+             "Periodic along a flat axis is refused by name: %s" % said.messages)
+bptest.check(refused.GetNumberOfPoints() == 0, "Periodic along a flat axis: no output")
 bptest.finish()

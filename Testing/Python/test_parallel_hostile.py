@@ -177,6 +177,8 @@ CASES = {
     "a serial mesh weighted by its unnamed vectors": (serial_mesh_weighted_by_vectors, 0.5, True,
                                                       None),
     "the newest features together": (newest_features_together, 0.5, True, None),
+    "Periodic on several ranks": (lambda: tracer(flow(), Periodic=[1, 0, 0]), 0.5, False,
+                                  "not supported with several MPI processes"),
 }
 
 

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Periodic.h
+ * @brief Periodic axes (Periodic; engine specification 2.8, "Periodic
+ * domains"): the period of a grid axis and the two rules both engines follow
+ * (the GPU engine in Shaders/bp_common.glsl, bpWrapPeriodic and
+ * bpPeriodicShift, with the same float operations).
+ *
+ * The period of a periodic axis is the grid's extent along it, upper - lower:
+ * its last plane stands for its first (a copy of it), so the same rule holds
+ * on uniform and rectilinear axes alike and the field needs no extra cell.
+ *
+ *  - Sampling (VectorField): a coordinate along a periodic axis is moved by
+ *    whole periods into [lower, upper) before its cell is found, so a sample
+ *    beyond a side (an integrator's stage, a particle of an element whose
+ *    centre is still inside) reads the field across the seam.
+ *  - Elements (the engines' settle): an element whose centre lies beyond a
+ *    periodic side after a step moves whole by whole periods (periodicShift),
+ *    every particle by the same shift, so its springs and shape are untouched.
+ */
+#ifndef BoundParticles_Periodic_h
+#define BoundParticles_Periodic_h
+
+#include <cmath>
+
+namespace bp
+{
+
+/// x moved by whole periods (upper - lower > 0) into [lower, upper). A
+/// coordinate already in [lower, upper] is returned as it is (the upper side
+/// is the lower one); NaN and infinities are returned as they are.
+inline float wrapPeriodic(float x, float lower, float upper)
+{
+  if (!(x < lower || x > upper) || !std::isfinite(x))
+  {
+    return x;
+  }
+  const float period = upper - lower;
+  float w = x - period * std::floor((x - lower) / period);
+  // Rounding may leave w a hair outside: the two sides are one point.
+  if (!(w >= lower) || !(w < upper))
+  {
+    w = lower;
+  }
+  return w;
+}
+
+/// The shift that moves an element whose centre is at c back into [lower,
+/// upper] by whole periods: 0 while c is in it, otherwise -n (upper - lower)
+/// with n = floor((c - lower) / (upper - lower)). 0 for NaN or infinite c.
+inline float periodicShift(float c, float lower, float upper)
+{
+  if (!(c < lower || c > upper) || !std::isfinite(c))
+  {
+    return 0.0f;
+  }
+  const float period = upper - lower;
+  return -std::floor((c - lower) / period) * period;
+}
+
+} // namespace bp
+
+#endif
