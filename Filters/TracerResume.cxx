@@ -63,6 +63,7 @@ std::vector<bp::NamedValue> vtkBoundParticleTracerInternals::fieldValues(const C
   facts.inputTimes = this->Plan.inputTimes();
   facts.startMaxSpeed = this->Resolved.startMaxSpeed;
   facts.timeDirection = int(this->Plan.direction());
+  facts.periodic = config.periodic;
   facts.processes = this->Layout.Pieces;
   return bp::fieldStateValues(facts);
 }

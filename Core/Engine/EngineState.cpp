@@ -320,6 +320,12 @@ std::vector<NamedValue> fieldStateValues(const FieldStateFacts& facts)
   values.push_back({ FieldStateNames::TimeStepsHash, double(times.value()) });
   values.push_back({ FieldStateNames::LargestStartSpeed, facts.startMaxSpeed });
   values.push_back({ FieldStateNames::TimeDirection, double(facts.timeDirection) });
+  // Periodic came with the periodic domains: every trace before them had none.
+  for (int a = 0; a < 3; ++a)
+  {
+    values.push_back(
+      { std::string("periodic along ") + axes[a], facts.periodic[a] ? 1.0 : 0.0, 0.0, 0.0 });
+  }
   // Kept to say where a state came from; the elements are split among the
   // resuming processes by their centres, whatever number saved them.
   values.push_back(

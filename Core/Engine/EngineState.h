@@ -139,13 +139,15 @@ struct FieldStateFacts
   std::vector<double> inputTimes; ///< the input's time steps (the schedule's breaks)
   double startMaxSpeed = 0.0;     ///< the field's largest speed at the start
   int timeDirection = 0;          ///< TimeDirection: 0 forward, 1 backward
+  std::array<bool, 3> periodic = { false, false, false }; ///< the grid's periodic axes
   int processes = 1;              ///< the processes tracing (kept, not compared)
 };
 
 /**
  * The field's named values a resumed trace must match: the grid's points
  * and bounds, 32-bit hashes of the arrays' names and of the time steps, the
- * largest speed at the start, the time direction, and the process count.
+ * largest speed at the start, the time direction, the periodic axes (a
+ * state saved before Periodic existed stands for none), and the process count.
  * The bounds agree within a few ulps (pieces compute their corners from
  * their own first points, so another split rounds them differently); the
  * process count is kept for the record, not compared, so a state saved on

@@ -398,7 +398,8 @@ TEST(EngineState, FieldStateValuesKeepTheNamesAndHashesOfTheFirstStates)
     { "bounds z to", 0.25 }, { "Vectors array (hash)", 846470194.0 + 1 },
     { "Release Weights array (hash)", 4060888886.0 }, { "time steps", 3 },
     { "time steps (hash)", 3521701429.0 }, { "largest speed at the start", 2.5 },
-    { "Time Direction (0 Forward, 1 Backward)", 1 }, { "processes", 2 } };
+    { "Time Direction (0 Forward, 1 Backward)", 1 }, { "periodic along x", 0 },
+    { "periodic along y", 0 }, { "periodic along z", 0 }, { "processes", 2 } };
   const std::vector<bp::NamedValue> values = bp::fieldStateValues(facts);
   ASSERT_EQ(values.size(), expected.size());
   for (std::size_t k = 0; k < values.size(); ++k)
@@ -409,6 +410,30 @@ TEST(EngineState, FieldStateValuesKeepTheNamesAndHashesOfTheFirstStates)
   // No Release Weights: the hash of no characters, FNV-1a's basis.
   facts.releaseWeights.clear();
   EXPECT_EQ(bp::fieldStateValues(facts)[10].value, 2166136261.0);
+}
+
+TEST(EngineState, AStateFromBeforePeriodicStandsForNoPeriodicAxis)
+{
+  bp::FieldStateFacts facts;
+  facts.dims = { 9, 9, 9 };
+  facts.bounds = { -1, 1, -1, 1, -1, 1 };
+  facts.vectors = "velocity";
+  std::vector<bp::NamedValue> before = bp::fieldStateValues(facts);
+  before.erase(std::remove_if(before.begin(), before.end(),
+                 [](const bp::NamedValue& v) { return v.name.rfind("periodic", 0) == 0; }),
+    before.end());
+  EXPECT_EQ(bp::firstDifference(before, bp::fieldStateValues(facts), "the field's"), "");
+  facts.periodic[1] = true;
+  EXPECT_EQ(bp::firstDifference(before, bp::fieldStateValues(facts), "the field's"),
+    "the field's periodic along y: the state's none, this trace's 1");
+  // A state saved periodic resumes only a periodic trace.
+  EXPECT_EQ(bp::firstDifference(bp::fieldStateValues(facts), before, "the field's"),
+    "the field's periodic along x: the state's 0, this trace's none");
+  bp::FieldStateFacts other = facts;
+  other.periodic[1] = false;
+  EXPECT_EQ(
+    bp::firstDifference(bp::fieldStateValues(facts), bp::fieldStateValues(other), "the field's"),
+    "the field's periodic along y: the state's 1, this trace's 0");
 }
 
 TEST(EngineState, AFieldOnAnotherNumberOfProcessesAgrees)
