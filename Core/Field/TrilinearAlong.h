@@ -40,10 +40,13 @@ struct Lanes
     : v(_mm_set1_ps(s))
   {
   }
-  /// Three floats into lanes 0-2 (lane 3 is 0), reading no further.
+  /// Three floats into lanes 0-2 (lane 3 is 0), reading no further. The
+  /// first two through _mm_loadl_pi, which needs no alignment: floats are
+  /// only 4-byte aligned, and _mm_load_sd dereferences a double (UBSan
+  /// reports the misaligned load).
   static Lanes load(const float in[3])
   {
-    const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(in)));
+    const __m128 xy = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(in));
     return Lanes(_mm_movelh_ps(xy, _mm_load_ss(in + 2)));
   }
   /// Lanes 0-2 into out[0..2], writing no further.

@@ -208,6 +208,31 @@ struct AlongProbe
 };
 } // namespace
 
+#if BOUNDPARTICLES_SSE2
+TEST(VectorField, LanesLoadAndStoreThreeFloatsAtAnAddressOnlyFloatAligned)
+{
+  // A heavy particle's velocity sits at any float of the state (4-byte
+  // aligned): Lanes::load and store move three floats there and no more.
+  // The sanitized build (BOUNDPARTICLES_SANITIZE) stops on a misaligned
+  // double load here, as Lanes::load once made through _mm_load_sd.
+  alignas(16) float in[6] = { -1.0f, 1.5f, -2.5f, 3.25f, -9.0f, -9.0f };
+  const bp::Lanes l = bp::Lanes::load(in + 1);
+  alignas(16) float lanes[4];
+  _mm_store_ps(lanes, l.v);
+  EXPECT_EQ(lanes[0], 1.5f);
+  EXPECT_EQ(lanes[1], -2.5f);
+  EXPECT_EQ(lanes[2], 3.25f);
+  EXPECT_EQ(lanes[3], 0.0f);
+  alignas(16) float out[5] = { 7.0f, 7.0f, 7.0f, 7.0f, 7.0f };
+  l.store(out + 1);
+  EXPECT_EQ(out[0], 7.0f);
+  EXPECT_EQ(out[1], 1.5f);
+  EXPECT_EQ(out[2], -2.5f);
+  EXPECT_EQ(out[3], 3.25f);
+  EXPECT_EQ(out[4], 7.0f);
+}
+#endif
+
 TEST(VectorField, TheDerivativeAlongADirectionIsTheCellGradients)
 {
   // v = s (2y - z, 3x + z/2, x - 4y) with s = 1, then 2 (as the vorticity

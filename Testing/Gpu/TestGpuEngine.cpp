@@ -1211,7 +1211,9 @@ struct Readback
 
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b)
 {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+  // Empty vectors may hold no storage: memcmp takes no null pointer, even for 0 bytes.
+  return a.size() == b.size() &&
+    (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
 void expectSameBits(const Readback& a, const Readback& b)
