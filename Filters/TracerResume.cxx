@@ -300,7 +300,8 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::showState(
           "; show the time to keep in the view and save again, or set Engine to CPU"
                                 : why,
       out);
-    return Pass();
+    // The display still goes on to the time it shows, read back or not.
+    return queue && !this->Update.readsShownState ? this->stepShort(false) : Pass();
   }
   state.time = stepper.cursor.committed;
   state.steps = stepper.cursor.steps;

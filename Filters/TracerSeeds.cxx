@@ -47,14 +47,14 @@ bool localPoint(
 }
 
 /// Whether `x` lies within `radius` of the domain's boundary along an axis
-/// that is not flat.
+/// that has sides (not flat, not periodic: nothing leaves through a seam).
 bool nearBoundary(const bp::Domain& domain, const float x[3], float radius)
 {
   bool near = false;
   for (int a = 0; a < 3; ++a)
   {
     near = near ||
-      (!domain.degenerate[a] &&
+      (domain.bounded(a) &&
         (x[a] - domain.lower[a] < radius || domain.upper[a] - x[a] < radius));
   }
   return near;

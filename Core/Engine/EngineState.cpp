@@ -378,7 +378,8 @@ std::string firstDifference(
   for (const NamedValue& v : now)
   {
     // A setting the state predates agrees when this trace keeps it as it was.
-    if (before.find(v.name) == before.end() && !sameBits(v.whenAbsent, v.value))
+    const bool standsFor = !std::isnan(v.whenAbsent) && sameBits(v.whenAbsent, v.value);
+    if (before.find(v.name) == before.end() && !standsFor)
     {
       return say(v.name, "none", valueText(v.value));
     }
