@@ -8,6 +8,7 @@
 #include "ElementTemplate.h"
 #include "Memory.h"
 #include "Partition.h"
+#include "Periodic.h"
 #include "TracerInput.h"
 #include "VectorField.h"
 #include "vtkBoundParticleSeedType.h"
@@ -257,6 +258,32 @@ std::string vtkBoundParticleTracerInternals::checkPeriodic(
   return std::string();
 }
 
+void vtkBoundParticleTracerInternals::warnOfPeriodicSeams(
+  const Config& config, const bp::VectorField& field) const
+{
+  static const char* const axes[3] = { "x", "y", "z" };
+  const auto& velocity = field.firstSlice().velocity;
+  for (int a = 0; a < 3 && velocity; ++a)
+  {
+    // The period is the extent: a last plane that is not a copy of the first
+    // (data one spacing short of its period) is traced, but with a jump at
+    // the seam and the wrong period. A thousandth of the top speed is rounding.
+    const double mismatch =
+      config.periodic[a] ? bp::periodicSeamMismatch(field.grid(), *velocity, a) : 0.0;
+    if (mismatch > 1e-3)
+    {
+      vtkWarningWithObjectMacro(this->Owner,
+        "Periodic along " << axes[a] << ": the grid's last plane along " << axes[a]
+                          << " is not a copy of its first (they differ by up to "
+                          << 100.0 * mismatch
+                          << "% of the largest speed). The period is the grid's extent, its last "
+                             "plane standing for its first; data whose last plane is one spacing "
+                             "short of the period is traced with a jump at the seam: append a "
+                             "copy of the first plane (the user guide's Periodic domains).");
+    }
+  }
+}
+
 std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, const bpvtk::TracerSeeds& seeds,
   bp::ElementTemplate& shape, bp::Parameters& p)
@@ -271,6 +298,7 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
   {
     return periodicError;
   }
+  this->warnOfPeriodicSeams(config, field);
   const std::string templateError = this->elementTemplate(config, inputVector, shape);
   if (!templateError.empty())
   {

@@ -409,11 +409,14 @@ private:
   /// (agreed between processes), then the field and the placement.
   Pass configureStepper(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bp::Resolution& resolved, const bpvtk::TracerSeeds& seeds);
+  /// Periodic's refusals: several processes, an axis of one point, Linking, Trails.
+  std::string checkPeriodic(const Config& config, const bp::VectorField& field) const;
+  /// A warning for each periodic axis whose last plane is not a copy of its
+  /// first (bp::periodicSeamMismatch): traced, with a jump at the seam.
+  void warnOfPeriodicSeams(const Config& config, const bp::VectorField& field) const;
   /// This process's checks of a new trace: the template, the seeds, the
   /// engine's limits, memory, a stable relaxation, the GPU's limits; then
   /// the stepper configured. Returns the error, if any.
-  /// Periodic's refusals: several processes, an axis of one point, Linking, Trails.
-  std::string checkPeriodic(const Config& config, const bp::VectorField& field) const;
   std::string checkConfiguration(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bpvtk::TracerSeeds& seeds, bp::ElementTemplate& shape,
     bp::Parameters& p);

@@ -22,6 +22,7 @@
 #define BoundParticles_Periodic_h
 
 #include <cmath>
+#include <vector>
 
 namespace bp
 {
@@ -57,6 +58,19 @@ inline float periodicShift(float c, float lower, float upper)
   const float period = upper - lower;
   return -std::floor((c - lower) / period) * period;
 }
+
+struct GridGeometry;
+
+/**
+ * How far the last plane of `velocity` (3 floats per grid point, x fastest)
+ * along axis `a` lies from its first: the largest difference of a component
+ * between matching points, as a share of the largest speed over the grid.
+ * 0 where the last plane is a copy of the first, as the period rule above
+ * assumes; 0 for a field at rest or an axis of one point. Data whose last
+ * plane is one spacing short of the period (points at 0, h, ..., L - h)
+ * shows here as the difference of two neighbouring planes.
+ */
+double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& velocity, int a);
 
 } // namespace bp
 

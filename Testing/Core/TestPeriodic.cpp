@@ -254,3 +254,30 @@ TEST(Periodic, WithoutPeriodicTheSameTraceReleasesAgainAndTheOtherSidesStayWalls
     EXPECT_LE(centerOf(slip, e)[0], 1.0f);
   }
 }
+
+TEST(Periodic, TheSeamMismatchTellsACopiedLastPlaneFromAShortOne)
+{
+  // sineFlow's last x plane repeats its first; its y component, 0.5 y, is
+  // the same on the first and last y planes only where y = 0, so along y
+  // the planes differ by 1 (y = -1 against y = 1) of a top speed near 1.12.
+  const bp::GridGeometry g = bptest::grid(9);
+  const bp::VectorField field = sineFlow(g);
+  const std::vector<float>& v = *field.firstSlice().velocity;
+  EXPECT_EQ(bp::periodicSeamMismatch(g, v, 0), 0.0);
+  EXPECT_NEAR(bp::periodicSeamMismatch(g, v, 1), 1.0 / std::sqrt(1.0 + 0.25), 1e-6);
+  // A sine sampled at 0, h, ..., L - h (its last plane one spacing short of
+  // the period) differs at the seam by about the step to the next plane.
+  std::vector<float> shortOne;
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+        shortOne.insert(shortOne.end(), { float(std::sin(2.0 * M_PI * i / 9.0)), 0.0f, 0.0f });
+  EXPECT_NEAR(bp::periodicSeamMismatch(g, shortOne, 0),
+    std::sin(2.0 * M_PI * 8 / 9.0) * -1.0 / std::sin(2.0 * M_PI * 2 / 9.0), 1e-5);
+  // At rest, or along an axis of one point: nothing to say.
+  EXPECT_EQ(bp::periodicSeamMismatch(g, std::vector<float>(3 * g.pointCount(), 0.0f), 0), 0.0);
+  bp::GridGeometry flat = g;
+  flat.dims[2] = 1;
+  EXPECT_EQ(
+    bp::periodicSeamMismatch(flat, std::vector<float>(3 * flat.pointCount(), 1.0f), 2), 0.0);
+}

@@ -20,7 +20,8 @@
   slide along it (+y) at the flow's tangential speed; with Stick they stop.
 - Periodic along x on the same Wavelet (period 20) in the flow (1, 0, 0):
   every strip is back where it was after one period, whole, its centre
-  inside the period; Periodic with Trails, with Linking, and along a flat
+  inside the period, with no message; a flow whose last plane differs from its
+  first is traced with a warning; Periodic with Trails, with Linking, and along a flat
   axis, is refused by name.
 """
 import os
@@ -180,7 +181,10 @@ periodic = BoundParticleTracer(Input=along, Vectors=["POINTS", "wind"], ElementS
                                NumberOfElements=20, ElementSize=1.0, EmitterCenter=[0, 0, 0],
                                EmitterSize=[16, 16, 16], StepSizeUnit="Time", StepSize=0.05,
                                Duration=22, LifetimeRange=[100, 100], Seed=5, Periodic=[1, 0, 0])
-start = vtk_to_numpy(bptest.fetch(periodic, 1.0).GetPoints().GetData()).reshape(-1, N, 3)
+with bptest.CapturedMessages() as said:
+    start = vtk_to_numpy(bptest.fetch(periodic, 1.0).GetPoints().GetData()).reshape(-1, N, 3)
+bptest.check(not said.messages, "Periodic on a flow whose planes repeat: no message: %s"
+             % said.messages[:2])
 middle = vtk_to_numpy(bptest.fetch(periodic, 9.0).GetPoints().GetData()).reshape(-1, N, 3)
 back = vtk_to_numpy(bptest.fetch(periodic, 21.0).GetPoints().GetData()).reshape(-1, N, 3)
 moved = np.abs(back - start).max()
@@ -207,6 +211,15 @@ with bptest.CapturedMessages() as said:
 bptest.check(said.mentions("cannot be used with Linking"),
              "Periodic with Linking is refused: %s" % said.messages)
 bptest.check(refused.GetNumberOfPoints() == 0, "Periodic with Linking: no output")
+periodic.Linking = "None"
+# A flow whose last x plane is not a copy of its first (u = x / 10 + 1, 0
+# at x = -10 and 2 at x = 10) is traced, with a warning that names the axis.
+along.Function = "(coordsX / 10 + 1) * iHat"
+with bptest.CapturedMessages() as said:
+    traced = bptest.fetch(periodic, 2.0)
+bptest.check(said.mentions("Periodic along x: the grid's last plane along x is not a copy"),
+             "Periodic on planes that differ: a warning by name: %s" % said.messages)
+bptest.check(traced.GetNumberOfPoints() > 0, "Periodic on planes that differ: still traced")
 Delete(periodic)
 flat = Wavelet(WholeExtent=[-10, 10, -10, 10, 0, 0])
 flatWind = Calculator(Input=flat, ResultArrayName="wind", Function="iHat")
