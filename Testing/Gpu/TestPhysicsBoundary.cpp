@@ -35,6 +35,44 @@ struct Counts
   int replaced = 0;   ///< of those, placed again by the end
 };
 
+/// The boundary tests' common trace: 300 elements of size 0.1 released in
+/// [-0.9, 0.9]^3 with lifetimes in [lifetimeMin, lifetimeMax], two iterations,
+/// the case's shape, integrator, restoration and boundary.
+bp::Parameters boundaryTrace(bp::Integrator integrator, bp::Restoration restoration,
+  bp::Boundary boundary, float lifetimeMin, float lifetimeMax, unsigned seed)
+{
+  bp::Parameters p;
+  p.numberOfElements = 300;
+  p.elementSize = 0.1f;
+  p.emitterMin = { -0.9f, -0.9f, -0.9f };
+  p.emitterMax = { 0.9f, 0.9f, 0.9f };
+  p.lifetimeMin = lifetimeMin;
+  p.lifetimeMax = lifetimeMax;
+  p.integrator = integrator;
+  p.restoration = restoration;
+  p.iterations = 2;
+  p.boundary = boundary;
+  p.seed = seed;
+  return p;
+}
+
+/// Both engines configured with the same trace and field, at t = 0.
+struct EnginePair
+{
+  bp::CpuStepper cpu{ bp::serialRunner() };
+  bp::GpuStepper gpu;
+  EnginePair(
+    const bp::ElementTemplate& shape, const bp::Parameters& p, const bp::VectorField& field)
+  {
+    EXPECT_EQ(this->cpu.configure(shape, p), "");
+    EXPECT_EQ(this->gpu.configure(shape, p), "");
+    EXPECT_EQ(this->cpu.setField(field), "");
+    EXPECT_EQ(this->gpu.setField(field), "");
+    this->cpu.initialize(0.0);
+    this->gpu.initialize(0.0);
+  }
+};
+
 Counts compareEngines(const BoundaryCase& c)
 {
   Counts counts;
@@ -46,28 +84,12 @@ Counts compareEngines(const BoundaryCase& c)
   s.velocity =
     std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(bp::AnalyticFlow::ABC, g, 0.0));
   const bp::VectorField field(g, s);
-  bp::Parameters p;
-  p.numberOfElements = 300;
-  p.elementSize = 0.1f;
-  p.emitterMin = { -0.9f, -0.9f, -0.9f };
-  p.emitterMax = { 0.9f, 0.9f, 0.9f };
-  p.lifetimeMin = 0.4f;
-  p.lifetimeMax = 1.0f;
-  p.integrator = c.integrator;
-  p.restoration = c.restoration;
-  p.iterations = 2;
+  bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.4f, 1.0f, 5);
   p.resetWhen = c.resetWhen;
-  p.boundary = c.boundary;
-  p.seed = 5;
   const bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
-  bp::CpuStepper cpu(bp::serialRunner());
-  bp::GpuStepper gpu;
-  EXPECT_EQ(cpu.configure(shape, p), "");
-  EXPECT_EQ(gpu.configure(shape, p), "");
-  EXPECT_EQ(cpu.setField(field), "");
-  EXPECT_EQ(gpu.setField(field), "");
-  cpu.initialize(0.0);
-  gpu.initialize(0.0);
+  EnginePair engines(shape, p, field);
+  bp::CpuStepper& cpu = engines.cpu;
+  bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements;
   std::vector<std::uint32_t> terminatedAt(elements, 0); // a generation + 1; 0: none
@@ -182,19 +204,8 @@ bp::VectorField wallField(bool masked)
 int compareWalls(const WallCase& c)
 {
   const bp::VectorField field = wallField(c.masked);
-  bp::Parameters p;
-  p.numberOfElements = 300;
-  p.elementSize = 0.1f;
-  p.emitterMin = { -0.9f, -0.9f, -0.9f };
-  p.emitterMax = { 0.9f, 0.9f, 0.9f };
-  p.lifetimeMin = 0.8f;
-  p.lifetimeMax = 1.6f;
-  p.integrator = c.integrator;
-  p.restoration = c.restoration;
-  p.iterations = 2;
-  p.boundary = c.boundary;
+  bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.8f, 1.6f, 7);
   p.restitution = 0.6f;
-  p.seed = 7;
   if (c.heavy)
   {
     p.inertia = bp::Inertia::MaxeyRiley;
@@ -203,14 +214,9 @@ int compareWalls(const WallCase& c)
     p.gravity = { 0, 0, -4.0f };
   }
   const bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
-  bp::CpuStepper cpu(bp::serialRunner());
-  bp::GpuStepper gpu;
-  EXPECT_EQ(cpu.configure(shape, p), "");
-  EXPECT_EQ(gpu.configure(shape, p), "");
-  EXPECT_EQ(cpu.setField(field), "");
-  EXPECT_EQ(gpu.setField(field), "");
-  cpu.initialize(0.0);
-  gpu.initialize(0.0);
+  EnginePair engines(shape, p, field);
+  bp::CpuStepper& cpu = engines.cpu;
+  bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
   const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
@@ -349,29 +355,13 @@ bp::VectorField periodicField()
 int comparePeriodic(const BoundaryCase& c)
 {
   const bp::VectorField field = periodicField();
-  bp::Parameters p;
-  p.numberOfElements = 300;
-  p.elementSize = 0.1f;
-  p.emitterMin = { -0.9f, -0.9f, -0.9f };
-  p.emitterMax = { 0.9f, 0.9f, 0.9f };
-  p.lifetimeMin = 0.8f;
-  p.lifetimeMax = 1.6f;
-  p.integrator = c.integrator;
-  p.restoration = c.restoration;
-  p.iterations = 2;
+  bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.8f, 1.6f, 11);
   p.resetWhen = c.resetWhen;
-  p.boundary = c.boundary;
   p.restitution = 0.6f;
-  p.seed = 11;
   const bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
-  bp::CpuStepper cpu(bp::serialRunner());
-  bp::GpuStepper gpu;
-  EXPECT_EQ(cpu.configure(shape, p), "");
-  EXPECT_EQ(gpu.configure(shape, p), "");
-  EXPECT_EQ(cpu.setField(field), "");
-  EXPECT_EQ(gpu.setField(field), "");
-  cpu.initialize(0.0);
-  gpu.initialize(0.0);
+  EnginePair engines(shape, p, field);
+  bp::CpuStepper& cpu = engines.cpu;
+  bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
   const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
