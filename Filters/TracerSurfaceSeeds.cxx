@@ -99,11 +99,20 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
   if (unused > 0 && !this->Said.said(bpvtk::Topic::Seeds))
   {
     // Once, as the seeds' other warnings (seedPoints says them first next).
+    std::string parts;
+    if (summary.nonFinite > 0)
+    {
+      parts = std::to_string(summary.nonFinite) + " have a corner that is not finite";
+    }
+    if (summary.noVelocity > 0)
+    {
+      parts += (parts.empty() ? "" : " and ") + std::to_string(summary.noVelocity) +
+        " lie outside the field or in cells outside the flow's domain at the trace's start";
+    }
     vtkWarningWithObjectMacro(this->Owner,
-      << unused << " of the Seed Source's " << summary.triangles << " surface triangles "
-      << (summary.nonFinite > 0 ? "have a corner that is not finite or " : "")
-      << "lie outside the field or in cells outside the flow's domain at the trace's start; "
-      << "the Surface releases over the other " << summary.triangles - unused << ".");
+      "Of the Seed Source's " << summary.triangles << " surface triangles, " << parts
+                              << "; the Surface releases over the other "
+                              << summary.triangles - unused << ".");
   }
   for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
   {
