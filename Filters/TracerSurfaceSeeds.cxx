@@ -15,6 +15,60 @@
 #include <algorithm>
 #include <cmath>
 
+namespace
+{
+/// The velocity at a surface's point (world coordinates) at time `start`:
+/// none outside this process's field (its piece, with its ghost layers,
+/// under MPI: the largest weight over the processes is the one of whichever
+/// holds the point) or in a cell outside the flow's domain. Along a flat
+/// axis the point is taken on the field's plane.
+bp::SurfaceVelocity velocityAt(const bp::VectorField& field, const bp::Domain& whole,
+  const std::array<double, 3>& offset, double start)
+{
+  const float weight = field.timeWeight(start);
+  return [&field, &whole, offset, weight](const std::array<double, 3>& x, double u[3])
+  {
+    float local[3];
+    for (std::size_t a = 0; a < 3; ++a)
+    {
+      const double l = whole.degenerate[a] ? double(whole.lower[a]) : x[a] - offset[a];
+      if (!std::isfinite(l) || std::abs(l) > 1e30)
+      {
+        return false;
+      }
+      local[a] = float(l);
+    }
+    if (!field.contains(local) || field.outsideCellAt(local, weight))
+    {
+      return false;
+    }
+    float v[3];
+    field.sampleWeighted(local, weight, v);
+    std::copy(v, v + 3, u);
+    return true;
+  };
+}
+
+/// The warning about triangles left out (a corner not finite, or no flow).
+void warnOfUnusedTriangles(vtkObject* owner, const bp::SurfaceSummary& summary)
+{
+  std::string parts;
+  if (summary.nonFinite > 0)
+  {
+    parts = std::to_string(summary.nonFinite) + " have a corner that is not finite";
+  }
+  if (summary.noVelocity > 0)
+  {
+    parts += (parts.empty() ? "" : " and ") + std::to_string(summary.noVelocity) +
+      " lie outside the field or in cells outside the flow's domain at the trace's start";
+  }
+  vtkWarningWithObjectMacro(owner,
+    "Of the Seed Source's " << summary.triangles << " surface triangles, " << parts
+                            << "; the Surface releases over the other "
+                            << summary.triangles - summary.nonFinite - summary.noVelocity << ".");
+}
+} // namespace
+
 std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, bpvtk::TracerSeeds& seeds)
 {
@@ -51,31 +105,7 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
   // sampled, and its points put, on the plane.
   const bp::Domain& whole = distributed ? this->Layout.Domain : field.domain();
   const double start = this->Plan.startTime();
-  const float weight = field.timeWeight(start);
-  const bp::SurfaceVelocity velocity = [&](const std::array<double, 3>& x, double u[3])
-  {
-    float local[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double l = whole.degenerate[a] ? double(whole.lower[a])
-                                           : x[std::size_t(a)] - this->Held.offset[std::size_t(a)];
-      if (!std::isfinite(l) || std::abs(l) > 1e30)
-      {
-        return false;
-      }
-      local[a] = float(l);
-    }
-    // This process's piece (with its ghost layers) under MPI: the largest
-    // weight over the processes is the one of whichever holds the centroid.
-    if (!field.contains(local) || field.outsideCellAt(local, weight))
-    {
-      return false;
-    }
-    float v[3];
-    field.sampleWeighted(local, weight, v);
-    std::copy(v, v + 3, u);
-    return true;
-  };
+  const bp::SurfaceVelocity velocity = velocityAt(field, whole, this->Held.offset, start);
   const bool flip = surface->GetFlipNormals() != 0;
   std::vector<double> weights = bp::surfaceWeights(triangles, velocity, flip);
   if (distributed)
@@ -95,24 +125,9 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
     return "The flux through the Seed Source's surface is too large to weigh (it overflows a "
            "double): Seed Type Surface releases nothing. Scale the velocity down.";
   }
-  const std::size_t unused = summary.nonFinite + summary.noVelocity;
-  if (unused > 0 && !this->Said.said(bpvtk::Topic::Seeds))
+  if (summary.nonFinite + summary.noVelocity > 0 && !this->Said.said(bpvtk::Topic::Seeds))
   {
-    // Once, as the seeds' other warnings (seedPoints says them first next).
-    std::string parts;
-    if (summary.nonFinite > 0)
-    {
-      parts = std::to_string(summary.nonFinite) + " have a corner that is not finite";
-    }
-    if (summary.noVelocity > 0)
-    {
-      parts += (parts.empty() ? "" : " and ") + std::to_string(summary.noVelocity) +
-        " lie outside the field or in cells outside the flow's domain at the trace's start";
-    }
-    vtkWarningWithObjectMacro(this->Owner,
-      "Of the Seed Source's " << summary.triangles << " surface triangles, " << parts
-                              << "; the Surface releases over the other "
-                              << summary.triangles - unused << ".");
+    warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
   }
   for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
   {
