@@ -6,7 +6,7 @@ chi-square test, which a uniform spread fails); the same Seed gives the same
 releases; the surface's own normals decide the side (a Box's outward faces,
 Flip Normals for its inflow face); Orientation = Along Flow turns the
 elements onto the flow; no Seed Source, or no flux along the normals, is
-refused by name with an empty output.
+refused by name with an empty output; a state file brings it back.
 """
 import os
 import sys
@@ -145,4 +145,22 @@ for e in numpy.unique(element):
     worst = max(worst, 1.0 - cosine)
 bptest.check(len(numpy.unique(element)) == 50 and worst < 1e-3,
              "Along Flow: every strip along the flow at its release (worst 1 - cos %.3g)" % worst)
+
+# A state file brings back the Surface, its parameters and its Seed Source,
+# and the same releases.
+strips.SeedType.NumberOfPoints = 300
+strips.SeedType.FlipNormals = 0
+strips.UpdatePipeline(strips.TimestepValues[0])
+before = vtk_to_numpy(servermanager.Fetch(strips).GetPoints().GetData()).astype(float)
+state = os.path.join(bptest.scratch("bp-surface-seeds-"), "surface.pvsm")
+SaveState(state)
+ResetSession()
+LoadPlugin(args.plugin, ns=globals())
+LoadState(state)
+loaded = [s for s in GetSources().values() if s.GetXMLName() == "BoundParticleTracer"][0]
+bptest.check(loaded.SeedType.GetXMLLabel() == "Surface" and loaded.SeedType.NumberOfPoints == 300
+             and loaded.SeedSource is not None, "the state brings back the Surface and its source")
+loaded.UpdatePipeline(loaded.TimestepValues[0])
+after = vtk_to_numpy(servermanager.Fetch(loaded).GetPoints().GetData()).astype(float)
+bptest.check(numpy.array_equal(before, after), "and the same releases")
 bptest.finish()
