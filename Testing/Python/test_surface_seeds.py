@@ -4,7 +4,8 @@ flow whose normal velocity grows linearly across it (w = 1 + 3x) takes
 releases only on the plane, in each band of x by its share of the flux (a
 chi-square test, which a uniform spread fails); the same Seed gives the same
 releases; the surface's own normals decide the side (a Box's outward faces,
-Flip Normals for its inflow face); Orientation = Along Flow turns the
+Flip Normals for its inflow face); on a 2D field a Plane standing across
+the slice releases on its line; Orientation = Along Flow turns the
 elements onto the flow; no Seed Source, or no flux along the normals, is
 refused by name with an empty output; a state file brings it back.
 """
@@ -145,6 +146,21 @@ for e in numpy.unique(element):
     worst = max(worst, 1.0 - cosine)
 bptest.check(len(numpy.unique(element)) == 50 and worst < 1e-3,
              "Along Flow: every strip along the flow at its release (worst 1 - cos %.3g)" % worst)
+
+# On a 2D field (z one point, at 0.25) a Plane standing across the slice is
+# an inlet line: the releases lie on the field's plane, where the solid-body
+# rotation about (2, 1) crosses x = 1 along the plane's normal +x (y < 1).
+flat = AnalyticFlow(Flow="Solid Body Rotation", Resolution=[41, 21, 1],
+                    Bounds=[0, 4, 0, 2, 0.25, 0.25])
+wall = Plane(Origin=[1, 0.2, -1], Point1=[1, 1.8, -1], Point2=[1, 0.2, 1], XResolution=8,
+             YResolution=2)
+sliced = BoundParticleTracer(Input=flat, Vectors=["POINTS", "velocity"], ElementShape="Point",
+                             NumberOfElements=300, SeedType="Surface", SeedSource=wall)
+points, _ = released(sliced)
+bptest.check(len(points) == 300 and numpy.allclose(points[:, 2], 0.25) and
+             numpy.allclose(points[:, 0], 1.0, atol=1e-5) and points[:, 1].max() < 1.0 + 1e-5,
+             "a 2D field: releases on its plane, where the flow crosses along the normal")
+Delete(sliced)
 
 # A state file brings back the Surface, its parameters and its Seed Source,
 # and the same releases.
