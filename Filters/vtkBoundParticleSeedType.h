@@ -8,12 +8,13 @@
  * points: a Seed Source (its third input, any dataset) or a Seed Type, one of
  * this class's subclasses (vtkBoundParticlePointCloudSeeds,
  * vtkBoundParticleLineSeeds, and vtkBoundParticleSurfaceSeeds, which draws
- * its points over the Seed Source's surface instead of giving way to it). A Seed Type is a set of
- * parameters, not a pipeline source: the tracer computes the points itself, so that they are the
- * same on every process and in every run (ParaView's Point Cloud source draws from a process-wide
- * random sequence, which gave each rank of an MPI job, and each run, other points). In ParaView
- * these are the entries of the tracer's Seed Type list, each with its 3D widget, as in the Stream
- * Tracer.
+ * its points over the Seed Source's surface instead of giving way to it). A
+ * Seed Type is a set of parameters, not a pipeline source: the tracer
+ * computes the points itself, so that they are the same on every process and
+ * in every run (ParaView's Point Cloud source draws from a process-wide
+ * random sequence, which gave each rank of an MPI job, and each run, other
+ * points). In ParaView these are the entries of the tracer's Seed Type list,
+ * each with its 3D widget, as in the Stream Tracer.
  */
 #ifndef vtkBoundParticleSeedType_h
 #define vtkBoundParticleSeedType_h
