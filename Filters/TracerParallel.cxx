@@ -434,6 +434,14 @@ double PieceLayout::globalMax(double value) const
   return global;
 }
 
+void PieceLayout::globalMax(std::vector<double>& values) const
+{
+  std::vector<double> global(values.size());
+  this->Controller->AllReduce(
+    values.data(), global.data(), vtkIdType(values.size()), vtkCommunicator::MAX_OP);
+  values.swap(global);
+}
+
 std::vector<long long> PieceLayout::gather(long long count) const
 {
   std::vector<long long> all(std::size_t(this->Pieces), 0);

@@ -135,6 +135,8 @@ public:
 
   /// The largest of every process's `value` (collective).
   double globalMax(double value) const;
+  /// Each value the largest over the processes (every process gives as many).
+  void globalMax(std::vector<double>& values) const;
 
   /// Every process's `count`, in process order (collective).
   std::vector<long long> gather(long long count) const;

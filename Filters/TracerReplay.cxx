@@ -80,6 +80,10 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
 std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
   vtkInformationVector** inputVector, const bp::VectorField& field, bpvtk::TracerSeeds& seeds)
 {
+  if (config.seedType && config.seedType->UsesSeedSource())
+  {
+    return this->surfaceSeedPoints(config, inputVector, field, seeds);
+  }
   const std::string seedError = this->readSeeds(config, inputVector, seeds.xyz);
   if (!seedError.empty())
   {

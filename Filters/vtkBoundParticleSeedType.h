@@ -7,12 +7,14 @@
  * The tracer releases elements in its emitter box unless it is given seed
  * points: a Seed Source (its third input, any dataset) or a Seed Type, one of
  * this class's subclasses (vtkBoundParticlePointCloudSeeds,
- * vtkBoundParticleLineSeeds). A Seed Type is a set of parameters, not a
- * pipeline source: the tracer computes the points itself, so that they are
- * the same on every process and in every run (ParaView's Point Cloud source
- * draws from a process-wide random sequence, which gave each rank of an MPI
- * job, and each run, other points). In ParaView these are the entries of the
- * tracer's Seed Type list, each with its 3D widget, as in the Stream Tracer.
+ * vtkBoundParticleLineSeeds, and vtkBoundParticleSurfaceSeeds, which draws
+ * its points over the Seed Source's surface instead of giving way to it). A
+ * Seed Type is a set of parameters, not a pipeline source: the tracer
+ * computes the points itself, so that they are the same on every process and
+ * in every run (ParaView's Point Cloud source draws from a process-wide
+ * random sequence, which gave each rank of an MPI job, and each run, other
+ * points). In ParaView these are the entries of the tracer's Seed Type list,
+ * each with its 3D widget, as in the Stream Tracer.
  */
 #ifndef vtkBoundParticleSeedType_h
 #define vtkBoundParticleSeedType_h
@@ -39,6 +41,10 @@ public:
 
   /// How many points these seeds have.
   virtual vtkIdType GetNumberOfSeedPoints() = 0;
+
+  /// Whether these seeds are drawn over the Seed Source (Surface: its surface,
+  /// weighted by the flux through it) rather than replaced by it.
+  virtual bool UsesSeedSource() { return false; }
 
 #ifndef __VTK_WRAP__
   /**

@@ -118,8 +118,9 @@ public:
   /// The optional third input: any vtkDataSet whose points are the release
   /// centres, taken in order and cycling (release r = generation *
   /// NumberOfElements + element id is at point r modulo their count; at most
-  /// 65,536), instead of the emitter box or the SeedType. Minimum Release
-  /// Speed does not apply.
+  /// 65,536), instead of the emitter box or the SeedType; with a
+  /// vtkBoundParticleSurfaceSeeds Seed Type, its surface is where releases
+  /// land instead. Minimum Release Speed does not apply.
   void SetSeedSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetTemplateData(vtkPolyData* shape);
   ///@}
@@ -132,8 +133,11 @@ public:
    * release centres, taken in order and cycling as a Seed Source's points.
    * The filter computes them itself, so they are the same on every process.
    * A connected Seed Source wins (with a warning when this is set too), and
-   * with Linking the seeds are not used. Changing the seeds' parameters
-   * modifies the filter (GetMTime).
+   * with Linking the seeds are not used. A vtkBoundParticleSurfaceSeeds
+   * (Surface, an inlet) needs the Seed Source instead: its points are drawn
+   * over the Seed Source's surface by the flux through it at the trace's
+   * start; with none connected nothing is released (an error says so).
+   * Changing the seeds' parameters modifies the filter (GetMTime).
    */
   void SetSeedType(vtkBoundParticleSeedType* seeds);
   vtkBoundParticleSeedType* GetSeedType();

@@ -479,6 +479,11 @@ private:
   /// every process; along the field's flat axes they lie on its plane.
   void seedTypePoints(
     const Config& config, const bp::VectorField& field, bpvtk::TracerSeeds& seeds) const;
+  /// Seed Type Surface: its points drawn over the Seed Source's surface by
+  /// the flux through it at the trace's start (TracerSurfaceSeeds.cxx,
+  /// collective in parallel); an error when nothing can be released.
+  std::string surfaceSeedPoints(const Config& config, vtkInformationVector** inputVector,
+    const bp::VectorField& field, bpvtk::TracerSeeds& seeds);
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
   std::string seedPoints(

@@ -647,6 +647,7 @@ TEST(PropertyDefaults, TheXmlsMaximaAreCoresLimits)
     { { Tracer, "FramesPerInputStep" }, bp::MaxFramesPerInterval },
     { { Tracer, "NumberOfElements" }, bp::MaxLatticeCount },
     { { "PointCloud", "NumberOfPoints" }, double(bp::MaxSeedPoints) },
+    { { "Surface", "NumberOfPoints" }, double(bp::MaxSeedPoints) },
   };
   const pdt::XmlFile file = pdt::readXml(BOUNDPARTICLES_PLUGIN_XML_DIR "/BoundParticles.xml");
   for (const auto& [key, limit] : limits)

@@ -3,8 +3,13 @@
 // tracer releasing from them and replaying when they change.
 #include "TracerTestHelpers.h"
 
+#include "SurfaceRelease.h"
 #include "vtkBoundParticleLineSeeds.h"
 #include "vtkBoundParticlePointCloudSeeds.h"
+#include "vtkBoundParticleSurfaceSeeds.h"
+#include "vtkImageData.h"
+#include "vtkLineSource.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 
 #include <gtest/gtest.h>
@@ -153,4 +158,64 @@ TEST(SeedTypes, TracerReleasesFromTheLineAndReplaysWhenItChanges)
     spread = std::max(spread, std::abs(c[2]));
   }
   EXPECT_GT(spread, 0.1);
+}
+
+TEST(SeedTypes, SurfaceTrianglesKeepTheSurfacesOrientation)
+{
+  std::vector<double> t;
+  // A Plane: two triangles whose normal is (Point1 - Origin) x (Point2 - Origin).
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0, 0, 0);
+  plane->SetPoint1(2, 0, 0);
+  plane->SetPoint2(0, 0, 1); // (2, 0, 0) x (0, 0, 1) points along -y
+  plane->Update();
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(plane->GetOutput(), t);
+  ASSERT_EQ(t.size(), 2u * 9u);
+  double area = 0.0;
+  for (std::size_t i = 0; i < 2; ++i)
+  {
+    EXPECT_EQ(bp::triangleNormal(t.data() + 9 * i), (std::array<double, 3>{ 0, -1, 0 }));
+    area += bp::triangleArea(t.data() + 9 * i);
+  }
+  EXPECT_DOUBLE_EQ(area, 2.0);
+  // A volume: its boundary, normals outward (a unit cube of voxels: 12
+  // triangles, area 6, the normals summing to 0 face by face).
+  vtkNew<vtkImageData> cube;
+  cube->SetDimensions(2, 2, 2);
+  t.clear();
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(cube, t);
+  ASSERT_EQ(t.size(), 12u * 9u);
+  area = 0.0;
+  for (std::size_t i = 0; i < 12; ++i)
+  {
+    const double* tri = t.data() + 9 * i;
+    const std::array<double, 3> n = bp::triangleNormal(tri), c = bp::triangleCentroid(tri);
+    // Outward: from the cube's centre to the face's centroid.
+    EXPECT_GT(n[0] * (c[0] - 0.5) + n[1] * (c[1] - 0.5) + n[2] * (c[2] - 0.5), 0.0) << i;
+    area += bp::triangleArea(tri);
+  }
+  EXPECT_DOUBLE_EQ(area, 6.0);
+  // Lines and vertices have no surface; nothing at all, none either.
+  vtkNew<vtkLineSource> line;
+  line->Update();
+  t.clear();
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(line->GetOutput(), t);
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(nullptr, t);
+  EXPECT_TRUE(t.empty());
+}
+
+TEST(SeedTypes, SurfaceHasNoPointsOfItsOwn)
+{
+  vtkNew<vtkBoundParticleSurfaceSeeds> surface;
+  EXPECT_STREQ(surface->GetSeedTypeName(), "Surface");
+  EXPECT_TRUE(surface->UsesSeedSource());
+  EXPECT_EQ(surface->GetNumberOfSeedPoints(), 10000);
+  std::vector<double> xyz;
+  surface->AppendPoints(1u, NotFlat, 100, xyz);
+  EXPECT_TRUE(xyz.empty()); // the tracer draws them over the Seed Source
+  surface->SetNumberOfPoints(-2);
+  EXPECT_EQ(surface->GetNumberOfSeedPoints(), 1);
+  EXPECT_NE(surface->DescribeUnusableParameters().find("below 1"), std::string::npos);
+  vtkNew<vtkBoundParticleLineSeeds> line;
+  EXPECT_FALSE(line->UsesSeedSource());
 }

@@ -1,7 +1,8 @@
 # Run from the GUI's Python shell by seeds.xml after a Seed Type was picked and
 # set in the tracer's panel and applied. When the tracer holds what was typed
 # and its elements start where those seeds are, sets the Coloring Axis (X
-# after the Line, Y after the Point Cloud), which seeds.xml then checks.
+# after the Line, Y after the Point Cloud, Z after the Surface over a Plane
+# connected as the Seed Source), which seeds.xml then checks.
 import numpy
 
 import gui_check
@@ -27,6 +28,17 @@ if kind == "Line":
     expected = numpy.linspace([-0.5, 0.0, 0.25], [0.5, 0.0, 0.25], 50)
     found["centres on the line's points"] = abs(centres - expected).max() < 1e-4
     axis = 0
+elif kind == "Surface":
+    # Over the Plane x = 0 (normal +x) across the shear layer, whose u_x =
+    # 1.25 - z^2 is largest at mid-depth: 64% of the flux crosses |z| < 0.5.
+    found["surface as typed"] = (seeds.NumberOfPoints == 500 and seeds.FlipNormals == 0
+                                 and tracer.SeedSource.GetXMLName() == "PlaneSource")
+    found["centres on the plane"] = (abs(centres[:, 0]).max() < 1e-4
+                                     and abs(centres[:, 1]).max() <= 0.5 + 1e-4
+                                     and abs(centres[:, 2]).max() <= 1.0 + 1e-4)
+    middle = int((abs(centres[:, 2]) < 0.5).sum())
+    found["more where the flux is higher"] = middle > 50 - middle
+    axis = 2
 else:
     found["point cloud as typed"] = (kind == "Point Cloud"
                                      and list(seeds.Center) == [0.25, 0.0, 0.0]

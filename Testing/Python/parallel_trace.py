@@ -122,6 +122,14 @@ def placement_traces():
     seed_line.SeedType.Point2 = [0.9, -0.7, 0.5]
     seed_line.SeedType.Resolution = 199
     cases["seed_line"] = (seed_line, [0.5, 1.0])
+    # Seed Type Surface: every process weighs the Seed Source's surface by
+    # the flux through it from the velocities the processes holding each
+    # triangle sampled, and draws the same points.
+    inlet = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                                Seed=4, SeedType="Surface",
+                                SeedSource=Box(Center=[0.4, 0.0, 0.0], XLength=0.6,
+                                               YLength=0.4, ZLength=0.8))
+    cases["seed_surface"] = (inlet, [0.5, 1.0])
     # Spins and trails: each element's poses travel with it between pieces.
     trails = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
                                  Seed=6, Trails=1, TrailLength=3, TrailSpacing=2)

@@ -200,6 +200,23 @@ def seeded(kind, **seed_properties):
     return made
 
 
+def surface(source, **flow_properties):  # Seed Type Surface over `source`
+    return tracer(flow(**flow_properties), SeedType="Surface", SeedSource=source)
+
+
+def NONE(r):  # a case's check: nothing released
+    return r["points"] == 0
+
+
+def nan_plane(where):
+    """A Plane whose points are NaN where `where` (of x) holds."""
+    return ProgrammableFilter(Input=Plane(XResolution=4, YResolution=4), Script=(
+        "import numpy\nfrom vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy\n"
+        "out = self.GetOutput()\nout.DeepCopy(self.GetInput())\np = vtk_to_numpy(out.GetPoints()"
+        ".GetData()).astype(float)\nx = p[:, 0]\np[numpy.asarray(%s) & (x == x), :] = numpy.nan\n"
+        "out.GetPoints().SetData(numpy_to_vtk(p, deep=True))\n" % where))
+
+
 def reloaded(made, edits=None):
     """The tracer `made` saved in a state file (its values replaced by the
     texts in `edits`, by property name), the session reset and the file
@@ -470,6 +487,17 @@ CASES = {
     "Point Cloud of radius 0": (
         lambda: seeded("Point Cloud", Center=[0, 0, 0], Radius=0.0), 1.0, None,
         lambda r: r["points"] > 0),
+    # Seed Type Surface (an inlet) over surfaces that carry no flux.
+    "Surface, no Seed Source": (lambda: seeded("Surface"), 1.0, "no Seed Source", NONE),
+    "Surface of points and lines only": (lambda: surface(GroupDatasets(
+        Input=[PointSource(), Line()])), 1.0, "no surface with area", NONE),
+    "Surface outside the field": (lambda: surface(Plane(Origin=[5] * 3, Point1=[6, 5, 5],
+                                  Point2=[5, 6, 5])), 1.0, "outside the field", NONE),
+    "Surface of NaN points": (lambda: surface(nan_plane("True")), 1.0, "not finite", NONE),
+    "Surface, some points NaN": (lambda: surface(nan_plane("x > 0.3"), Flow="ABC"), 1.0,
+                                 "not finite", lambda r: r["points"] > 0),
+    "Surface the flow runs along": (lambda: surface(Plane(), Flow="Solid Body Rotation"), 1.0,
+                                    "No flow crosses", NONE),
     "seeds with a stale emitter box": (
         lambda: tracer(flow(), EmitterCenter=[50, 50, 50], EmitterSize=[0.1, 0.1, 0.1],
                        MinimumReleaseSpeed=0.5, SeedSource=Line()), 1.0, None),

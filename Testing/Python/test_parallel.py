@@ -133,7 +133,7 @@ def coverage(png):
 # Traces whose elements the data, not the split, places: the combustor's flow
 # fills 42% of its box, and seeds (a line, a cloud) need not cross every block.
 # Release Weights crowd releases where the weights are large.
-UNEVEN = ("combustor", "seeded", "seed_cloud", "seed_line", "weighted")
+UNEVEN = ("combustor", "seeded", "seed_cloud", "seed_line", "seed_surface", "weighted")
 
 
 def check_balance(result, base, element, process, ranks, name):

@@ -177,6 +177,14 @@ CASES = {
     "a serial mesh weighted by its unnamed vectors": (serial_mesh_weighted_by_vectors, 0.5, True,
                                                       None),
     "the newest features together": (newest_features_together, 0.5, True, None),
+    # Seed Type Surface: the ranks weigh the surface's triangles together
+    # (each samples what its piece holds) and agree on a refusal.
+    "Surface across the pieces": (lambda: tracer(flow(Flow="ABC"), SeedType="Surface",
+                                                 SeedSource=Plane(XResolution=10, YResolution=10)),
+                                  0.5, True, None),
+    "Surface the flow runs along": (lambda: tracer(flow(Flow="Solid Body Rotation"),
+                                                   SeedType="Surface", SeedSource=Plane()),
+                                    0.5, False, "No flow crosses"),
     "Periodic on several ranks": (lambda: tracer(flow(), Periodic=[1, 0, 0]), 0.5, False,
                                   "not supported with several MPI processes"),
 }

@@ -1,5 +1,6 @@
 """Seed Types (issue 29, item 3) from pvpython: the tracer's Seed Type list
-(Emitter Box, Point Cloud, Line) as in the Stream Tracer. Each releases where
+(Emitter Box, Point Cloud, Line; Surface has test_surface_seeds.py) as in the
+Stream Tracer. Each releases where
 it says, in order; the point cloud is the same for the same Seed and on a 2D
 field fills the disc in its plane; changing a seed's parameter replays; a
 connected Seed Source wins; the seed warnings name the Seed Type; a state
@@ -43,7 +44,7 @@ tracer = BoundParticleTracer(Input=flow, Vectors=VELOCITY, ElementShape="Square"
 # 5.13 and later list the labels as Python names, without spaces; either
 # spelling sets the property).
 available = tracer.GetProperty("SeedType").Available
-bptest.check([a.replace(" ", "") for a in available] == ["EmitterBox", "PointCloud", "Line"],
+bptest.check([a.replace(" ", "") for a in available] == ["EmitterBox", "PointCloud", "Line", "Surface"],
              "the list: %s" % available)
 bptest.check(tracer.SeedType.GetXMLLabel() == "Emitter Box",
              "the default is the emitter box (%s)" % tracer.SeedType.GetXMLLabel())

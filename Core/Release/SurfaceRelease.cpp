@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "SurfaceRelease.h"
+
+#include "CounterHash.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace bp
+{
+
+namespace
+{
+bool finiteTriangle(const double t[9])
+{
+  return std::all_of(t, t + 9, [](double x) { return std::isfinite(x); });
+}
+
+/// (b − a) × (c − a); zero where a corner is not finite.
+std::array<double, 3> doubleAreaNormal(const double t[9])
+{
+  if (!finiteTriangle(t))
+  {
+    return { 0.0, 0.0, 0.0 };
+  }
+  const double e1[3] = { t[3] - t[0], t[4] - t[1], t[5] - t[2] };
+  const double e2[3] = { t[6] - t[0], t[7] - t[1], t[8] - t[2] };
+  return { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+    e1[0] * e2[1] - e1[1] * e2[0] };
+}
+
+double length(const std::array<double, 3>& v)
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+} // namespace
+
+double triangleArea(const double t[9])
+{
+  const double a = 0.5 * length(doubleAreaNormal(t));
+  return std::isfinite(a) ? a : 0.0;
+}
+
+std::array<double, 3> triangleNormal(const double t[9])
+{
+  const std::array<double, 3> m = doubleAreaNormal(t);
+  const double l = length(m);
+  if (!(l > 0.0) || !std::isfinite(l))
+  {
+    return { 0.0, 0.0, 0.0 };
+  }
+  return { m[0] / l, m[1] / l, m[2] / l };
+}
+
+std::array<double, 3> triangleCentroid(const double t[9])
+{
+  return { (t[0] + t[3] + t[6]) / 3.0, (t[1] + t[4] + t[7]) / 3.0, (t[2] + t[5] + t[8]) / 3.0 };
+}
+
+double fluxWeight(const double t[9], const double u[3], bool flip)
+{
+  if (!(std::isfinite(u[0]) && std::isfinite(u[1]) && std::isfinite(u[2])))
+  {
+    return 0.0;
+  }
+  const std::array<double, 3> n = triangleNormal(t);
+  const double un = (flip ? -1.0 : 1.0) * (u[0] * n[0] + u[1] * n[1] + u[2] * n[2]);
+  const double w = std::max(0.0, un) * triangleArea(t);
+  return std::isfinite(w) ? w : 0.0;
+}
+
+std::vector<double> surfaceWeights(
+  const std::vector<double>& triangles, const SurfaceVelocity& velocity, bool flip)
+{
+  std::vector<double> weights(triangles.size() / 9, 0.0);
+  for (std::size_t i = 0; i < weights.size(); ++i)
+  {
+    const double* t = triangles.data() + 9 * i;
+    if (!(triangleArea(t) > 0.0))
+    {
+      continue; // no area, or a corner not finite: 0
+    }
+    double u[3] = { 0.0, 0.0, 0.0 };
+    const bool has = velocity(triangleCentroid(t), u) && std::isfinite(u[0]) &&
+      std::isfinite(u[1]) && std::isfinite(u[2]);
+    weights[i] = has ? fluxWeight(t, u, flip) : NoVelocity;
+  }
+  return weights;
+}
+
+SurfaceSummary summarizeSurface(
+  const std::vector<double>& triangles, const std::vector<double>& weights)
+{
+  SurfaceSummary s;
+  s.triangles = std::min(triangles.size() / 9, weights.size());
+  for (std::size_t i = 0; i < s.triangles; ++i)
+  {
+    const double* t = triangles.data() + 9 * i;
+    const double area = triangleArea(t);
+    if (!finiteTriangle(t))
+    {
+      ++s.nonFinite;
+    }
+    else if (!(area > 0.0))
+    {
+      ++s.noArea;
+    }
+    else if (!(weights[i] >= 0.0))
+    {
+      ++s.noVelocity;
+    }
+    else if (weights[i] > 0.0)
+    {
+      ++s.crossing;
+      s.total += weights[i];
+    }
+    s.area += area;
+  }
+  return s;
+}
+
+std::string surfaceProblem(const SurfaceSummary& s, bool flip)
+{
+  std::ostringstream out;
+  const std::string nothing = ": Seed Type Surface releases nothing.";
+  if (s.triangles == 0)
+  {
+    out << "The Seed Source has no surface with area (no cells, or only points and lines)"
+        << nothing << " Connect a surface or a volume (a Plane, a data set's boundary), or use "
+        << "the Line or Point Cloud Seed Type.";
+  }
+  else if (s.nonFinite == s.triangles)
+  {
+    out << "Every one of the Seed Source's " << s.triangles
+        << " surface triangles has a corner that is not finite (NaN or Inf)" << nothing;
+  }
+  else if (s.nonFinite + s.noArea == s.triangles)
+  {
+    out << "The Seed Source's surface has no area (its " << s.triangles - s.nonFinite
+        << " finite triangles are degenerate)" << nothing;
+  }
+  else if (s.nonFinite + s.noArea + s.noVelocity == s.triangles)
+  {
+    out << "The Seed Source's surface lies outside the field (or only in cells outside the "
+           "flow's domain) at the trace's start"
+        << nothing << " Move it into the field.";
+  }
+  else if (!(s.total > 0.0))
+  {
+    out << "No flow crosses the Seed Source's surface along its " << (flip ? "flipped " : "")
+        << "normals at the trace's start (max(0, u·n) is 0 on each of its "
+        << s.triangles - s.nonFinite - s.noArea - s.noVelocity << " triangles in the flow)"
+        << nothing << " " << (flip ? "Unset" : "Set")
+        << " the Surface's Flip Normals if the flow crosses it the other way, or use another "
+           "Seed Type.";
+  }
+  return out.str();
+}
+
+double surfaceDraw(std::uint32_t seed, std::uint32_t point, std::uint32_t draw)
+{
+  // 27 + 26 bits: every double of [0, 1) on a 2^-53 step.
+  const std::uint32_t hi = counterHash(seed, point, SurfaceLane, 2 * draw) >> 5u;
+  const std::uint32_t lo = counterHash(seed, point, SurfaceLane, 2 * draw + 1) >> 6u;
+  return (double(hi) * 67108864.0 + double(lo)) / 9007199254740992.0;
+}
+
+std::array<double, 3> pointInTriangle(const double t[9], double r1, double r2)
+{
+  const double s = std::sqrt(r1);
+  const double wa = 1.0 - s, wb = s * (1.0 - r2), wc = s * r2;
+  return { wa * t[0] + wb * t[3] + wc * t[6], wa * t[1] + wb * t[4] + wc * t[7],
+    wa * t[2] + wb * t[5] + wc * t[8] };
+}
+
+std::size_t pickWeighted(const std::vector<double>& cumulative, double r)
+{
+  if (cumulative.empty() || !(cumulative.back() > 0.0))
+  {
+    return cumulative.size();
+  }
+  const double target = r * cumulative.back();
+  // The first running sum above the target: a weight of 0 repeats the sum
+  // before it, which is never above a target it did not pass.
+  std::size_t i = std::size_t(
+    std::upper_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
+  if (i >= cumulative.size())
+  {
+    // r · total rounded up to total: the last triangle with weight.
+    i = cumulative.size() - 1;
+    while (i > 0 && cumulative[i - 1] == cumulative[i])
+    {
+      --i;
+    }
+  }
+  return i;
+}
+
+std::vector<double> drawSurfacePoints(const std::vector<double>& triangles,
+  const std::vector<double>& weights, std::uint32_t seed, std::size_t count)
+{
+  const std::size_t n = std::min(triangles.size() / 9, weights.size());
+  std::vector<double> cumulative(n);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    sum += std::max(0.0, std::isfinite(weights[i]) ? weights[i] : 0.0);
+    cumulative[i] = sum;
+  }
+  std::vector<double> xyz;
+  if (!(sum > 0.0) || !std::isfinite(sum))
+  {
+    return xyz;
+  }
+  xyz.reserve(3 * count);
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    const std::uint32_t point = std::uint32_t(p);
+    const std::size_t i = pickWeighted(cumulative, surfaceDraw(seed, point, 0));
+    const std::array<double, 3> x = pointInTriangle(
+      triangles.data() + 9 * i, surfaceDraw(seed, point, 1), surfaceDraw(seed, point, 2));
+    xyz.insert(xyz.end(), x.begin(), x.end());
+  }
+  return xyz;
+}
+
+} // namespace bp

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The tracer's internals, Seed Type Surface (an inlet): points drawn over the
+// Seed Source's surface by the flux through it, sampled in the field at the
+// trace's start (bp::surfaceWeights and bp::drawSurfacePoints,
+// Core/Release/SurfaceRelease.h). See vtkBoundParticleTracerInternals.h.
+#include "vtkBoundParticleTracerInternals.h"
+
+#include "SurfaceRelease.h"
+#include "VectorField.h"
+#include "vtkBoundParticleSurfaceSeeds.h"
+
+#include "vtkDataObject.h"
+#include "vtkInformationVector.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+/// The velocity at a surface's point (world coordinates) at time `start`:
+/// none outside this process's field (its piece, with its ghost layers,
+/// under MPI: the largest weight over the processes is the one of whichever
+/// holds the point) or in a cell outside the flow's domain. Along a flat
+/// axis the point is taken on the field's plane.
+bp::SurfaceVelocity velocityAt(const bp::VectorField& field, const bp::Domain& whole,
+  const std::array<double, 3>& offset, double start)
+{
+  const float weight = field.timeWeight(start);
+  return [&field, &whole, offset, weight](const std::array<double, 3>& x, double u[3])
+  {
+    float local[3];
+    for (std::size_t a = 0; a < 3; ++a)
+    {
+      const double l = whole.degenerate[a] ? double(whole.lower[a]) : x[a] - offset[a];
+      if (!std::isfinite(l) || std::abs(l) > 1e30)
+      {
+        return false;
+      }
+      local[a] = float(l);
+    }
+    if (!field.contains(local) || field.outsideCellAt(local, weight))
+    {
+      return false;
+    }
+    float v[3];
+    field.sampleWeighted(local, weight, v);
+    std::copy(v, v + 3, u);
+    return true;
+  };
+}
+
+/// The warning about triangles left out (a corner not finite, or no flow).
+void warnOfUnusedTriangles(vtkObject* owner, const bp::SurfaceSummary& summary)
+{
+  std::string parts;
+  if (summary.nonFinite > 0)
+  {
+    parts = std::to_string(summary.nonFinite) + " have a corner that is not finite";
+  }
+  if (summary.noVelocity > 0)
+  {
+    parts += (parts.empty() ? "" : " and ") + std::to_string(summary.noVelocity) +
+      " lie outside the field or in cells outside the flow's domain at the trace's start";
+  }
+  vtkWarningWithObjectMacro(owner,
+    "Of the Seed Source's " << summary.triangles << " surface triangles, " << parts
+                            << "; the Surface releases over the other "
+                            << summary.triangles - summary.nonFinite - summary.noVelocity << ".");
+}
+} // namespace
+
+std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& config,
+  vtkInformationVector** inputVector, const bp::VectorField& field, bpvtk::TracerSeeds& seeds)
+{
+  vtkBoundParticleSeedType* type = config.seedType;
+  auto* surface = vtkBoundParticleSurfaceSeeds::SafeDownCast(type);
+  seeds.name = type->GetSeedTypeName();
+  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
+  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
+    ", or use fewer elements.";
+  seeds.xyz.clear();
+  if (!config.seedSource || !surface)
+  {
+    return "Seed Type Surface releases over the Seed Source's surface, and no Seed Source is "
+           "connected: nothing is released. Connect one (a Plane, or a data set whose boundary "
+           "is the inlet) as the Seed Source, or choose another Seed Type.";
+  }
+  const std::string unusable = surface->DescribeUnusableParameters();
+  if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
+  {
+    vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
+  }
+  std::vector<double> triangles;
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(
+    vtkDataObject::GetData(inputVector[2], 0), triangles);
+  const bool distributed = this->Layout.distributed();
+  if (distributed && this->Layout.shareFirst(triangles) > 0)
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      "The Seed Source gives a different surface on different processes; every process "
+      "releases over the first process's "
+        << triangles.size() / 9 << " triangles.");
+  }
+  // The whole field's flat axes: a surface across a 2D field's plane is
+  // sampled, and its points put, on the plane.
+  const bp::Domain& whole = distributed ? this->Layout.Domain : field.domain();
+  const double start = this->Plan.startTime();
+  const bp::SurfaceVelocity velocity = velocityAt(field, whole, this->Held.offset, start);
+  const bool flip = surface->GetFlipNormals() != 0;
+  std::vector<double> weights = bp::surfaceWeights(triangles, velocity, flip);
+  if (distributed)
+  {
+    this->Layout.globalMax(weights);
+  }
+  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights);
+  std::string problem = bp::surfaceProblem(summary, flip);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  seeds.xyz = bp::drawSurfacePoints(
+    triangles, weights, config.trace.engine.seed, std::min(seeds.total, bp::MaxSeedPoints));
+  if (seeds.xyz.empty())
+  {
+    return "The flux through the Seed Source's surface is too large to weigh (it overflows a "
+           "double): Seed Type Surface releases nothing. Scale the velocity down.";
+  }
+  if (summary.nonFinite + summary.noVelocity > 0 && !this->Said.said(bpvtk::Topic::Seeds))
+  {
+    warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
+  }
+  for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
+  {
+    const std::size_t a = i % 3;
+    if (whole.degenerate[a])
+    {
+      seeds.xyz[i] = double(whole.lower[a]) + this->Held.offset[a];
+    }
+  }
+  return std::string();
+}
