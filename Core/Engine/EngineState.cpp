@@ -227,8 +227,11 @@ std::vector<NamedValue> parameterValues(const Parameters& p)
   addEnum(v, "resetWhen", p.resetWhen);
   addEnum(v, "boundary", p.boundary);
   // Restitution came with the walls (Bounce): before them every trace
-  // reflected nothing, which its default 1 leaves as it was.
-  v.push_back({ "restitution", p.restitution, 0.0, 1.0 });
+  // reflected nothing, which its default 1 leaves as it was. Only Bounce
+  // reads it, so any other Boundary saves 1: a trace whose hidden
+  // Restitution was once changed still resumes a state that never bounced.
+  const double restitution = p.boundary == Boundary::Bounce ? p.restitution : 1.0;
+  v.push_back({ "restitution", restitution, 0.0, 1.0 });
   addEnum(v, "releasePattern", p.releasePattern);
   addArray(v, "lattice.counts", p.lattice.counts);
   addArray(v, "lattice.origin", p.lattice.origin);

@@ -220,6 +220,7 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   add("ftleMinimumAge", [](P& p) { p.ftleMinimumAge = 1.0; });
   P base;
   base.seedPoints = { 0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f };
+  base.boundary = bp::Boundary::Bounce; // the one Boundary that reads restitution
   const std::vector<bp::NamedValue> values = bp::parameterValues(base);
   ASSERT_EQ(values.size(), changes.size());
   for (std::size_t k = 0; k < values.size(); ++k)
@@ -279,6 +280,7 @@ TEST(EngineState, AStateFromBeforeASettingStandsForItsValueThen)
   // Restitution came with the walls: a state saved before them carries no
   // such name and resumes a trace that reflects as every trace did then.
   bp::Parameters p;
+  p.boundary = bp::Boundary::Bounce;
   std::vector<bp::NamedValue> before = bp::parameterValues(p);
   before.erase(std::remove_if(before.begin(), before.end(),
                  [](const bp::NamedValue& v) { return v.name == "restitution"; }),
@@ -290,6 +292,20 @@ TEST(EngineState, AStateFromBeforeASettingStandsForItsValueThen)
   // A name this trace lacks is still a difference, whatever it stood for.
   EXPECT_EQ(bp::firstDifference(bp::parameterValues(p), before, "the setting"),
     "the setting restitution: the state's 0.5, this trace's none");
+}
+
+TEST(EngineState, RestitutionCountsOnlyWhereTheBoundaryBounces)
+{
+  // A hidden Restitution once changed must not keep a Slip trace from
+  // resuming a state saved with the default.
+  bp::Parameters p;
+  p.boundary = bp::Boundary::Slip;
+  const std::vector<bp::NamedValue> saved = bp::parameterValues(p);
+  p.restitution = 0.25f;
+  EXPECT_EQ(bp::firstDifference(saved, bp::parameterValues(p), "the setting"), "");
+  p.boundary = bp::Boundary::Bounce;
+  EXPECT_EQ(bp::firstDifference(saved, bp::parameterValues(p), "the setting"),
+    "the setting boundary: the state's 3, this trace's 4"); // Slip, Bounce
 }
 
 TEST(EngineState, FirstDifferenceSaysWhichAndBothValues)
