@@ -12,7 +12,10 @@
 #   -O3 -DNDEBUG come after them, so -O3 wins over Debian's -O2. They are
 #   passed as CMake options, not in CFLAGS and the like, so that a build
 #   folder configured before takes them too;
-# - the package's documentation folder (share/doc/paraview-boundparticles).
+# - the package's documentation folder (share/doc/paraview-boundparticles);
+# - BOUNDPARTICLES_CORE_TESTS from the environment where it is set
+#   (scripts/chroot-test.sh sets OFF: the engine core's tests cannot differ
+#   between ParaView versions and run on the host).
 #   The prefix stays CMake's (/usr/local): scripts/package.sh installs with
 #   `cmake --install --prefix /usr`, and the login scripts are made for the
 #   prefix installed to (cmake/BoundParticlesInstall.cmake).
@@ -20,6 +23,9 @@ build_options() {
   local root="$1" cppflags cflags cxxflags ldflags
   build_options=(-DCMAKE_BUILD_TYPE=Release
     -DCMAKE_INSTALL_DOCDIR=share/doc/paraview-boundparticles)
+  if [ -n "${BOUNDPARTICLES_CORE_TESTS:-}" ]; then
+    build_options+=("-DBOUNDPARTICLES_CORE_TESTS=$BOUNDPARTICLES_CORE_TESTS")
+  fi
   if command -v ccache >/dev/null; then
     build_options+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
     export CCACHE_BASEDIR="$root"
