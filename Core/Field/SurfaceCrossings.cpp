@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "SurfaceCrossings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bp
+{
+namespace
+{
+using Vec = std::array<double, 3>;
+
+Vec sub(const double* a, const double* b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+Vec cross(const Vec& a, const Vec& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+double dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// How far outside a triangle's edges a hit may lie, in barycentric units,
+/// and still count: a segment through a shared edge, computed from either
+/// triangle, must not fall between them by a rounding.
+constexpr double EdgeSlack = 1e-9;
+
+/// Where the segment a + t d, t in (0, 1], meets triangle v (9 doubles);
+/// NaN where it does not (Moller-Trumbore, closed on the edges).
+double meet(const double* v, const double a[3], const Vec& d)
+{
+  const Vec e1 = sub(v + 3, v), e2 = sub(v + 6, v);
+  const Vec p = cross(d, e2);
+  const double det = dot(e1, p);
+  if (det == 0.0 || !std::isfinite(det))
+  {
+    return std::nan("");
+  }
+  const Vec s = sub(a, v);
+  const double u = dot(s, p) / det;
+  if (!(u >= -EdgeSlack && u <= 1.0 + EdgeSlack))
+  {
+    return std::nan("");
+  }
+  const Vec q = cross(s, e1);
+  const double w = dot(d, q) / det;
+  if (!(w >= -EdgeSlack && u + w <= 1.0 + EdgeSlack))
+  {
+    return std::nan("");
+  }
+  const double t = dot(e2, q) / det;
+  return t > 0.0 && t <= 1.0 ? t : std::nan("");
+}
+
+bool finite3(const float p[3])
+{
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+} // namespace
+
+SurfaceCrossings::SurfaceCrossings(
+  const std::vector<float>& corners, const std::vector<std::int32_t>& surfaces)
+{
+  const std::size_t given = corners.size() / 9;
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+  for (std::size_t k = 0; k < given; ++k)
+  {
+    double v[9];
+    bool finite = true;
+    for (int i = 0; i < 9; ++i)
+    {
+      v[i] = corners[9 * k + std::size_t(i)];
+      finite = finite && std::isfinite(v[i]);
+    }
+    const Vec n = finite ? cross(sub(v + 3, v), sub(v + 6, v)) : Vec{ 0, 0, 0 };
+    if (!finite || !(dot(n, n) > 0.0) || !std::isfinite(dot(n, n)))
+    {
+      ++this->Dropped;
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const double x = v[3 * c + a];
+        const bool first = this->Surface.empty() && c == 0;
+        lo[a] = first ? x : std::min(lo[a], x);
+        hi[a] = first ? x : std::max(hi[a], x);
+      }
+    }
+    this->Corners.insert(this->Corners.end(), v, v + 9);
+    this->Surface.push_back(surfaces.size() == given ? surfaces[k] : 0);
+    this->Original.push_back(std::uint32_t(k));
+  }
+  const std::size_t T = this->Surface.size();
+  // About sqrt(T) buckets along the longest side (one triangle a bucket
+  // column of a flat surface), at most 256, and at most 4 T + 64 in all.
+  const double longest = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  double size =
+    longest > 0.0 ? longest / std::min(256.0, std::max(1.0, std::ceil(std::sqrt(double(T))))) : 1.0;
+  for (;;)
+  {
+    double total = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Buckets[a] = std::max(1, int(std::ceil((hi[a] - lo[a]) / size)));
+      total *= this->Buckets[a];
+    }
+    if (total <= 4.0 * double(T) + 64.0)
+    {
+      break;
+    }
+    size *= std::cbrt(total / (4.0 * double(T) + 64.0)) * 1.01;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Lower[a] = lo[a];
+    this->Upper[a] = hi[a];
+    this->BucketSize[a] = size;
+  }
+  // Each triangle in every bucket its box touches (a counting sort).
+  const std::size_t B = std::size_t(this->Buckets[0]) * this->Buckets[1] * this->Buckets[2];
+  std::vector<std::uint32_t> count(B + 1, 0);
+  auto visit = [&](auto&& act)
+  {
+    for (std::size_t k = 0; k < T; ++k)
+    {
+      const double* v = &this->Corners[9 * k];
+      double blo[3], bhi[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        blo[a] = std::min({ v[a], v[3 + a], v[6 + a] });
+        bhi[a] = std::max({ v[a], v[3 + a], v[6 + a] });
+      }
+      int f[3], l[3];
+      this->bucketRange(blo, bhi, f, l);
+      for (int z = f[2]; z <= l[2]; ++z)
+        for (int y = f[1]; y <= l[1]; ++y)
+          for (int x = f[0]; x <= l[0]; ++x)
+            act((std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + x, k);
+    }
+  };
+  visit([&](std::size_t b, std::size_t) { ++count[b + 1]; });
+  for (std::size_t b = 0; b < B; ++b)
+  {
+    count[b + 1] += count[b];
+  }
+  this->Start = count;
+  this->Members.resize(count[B]);
+  visit([&](std::size_t b, std::size_t k) { this->Members[count[b]++] = std::uint32_t(k); });
+}
+
+void SurfaceCrossings::bucketRange(
+  const double lo[3], const double hi[3], int first[3], int last[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const double f = std::floor((lo[a] - this->Lower[a]) / this->BucketSize[a]);
+    const double l = std::floor((hi[a] - this->Lower[a]) / this->BucketSize[a]);
+    const double top = this->Buckets[a] - 1;
+    // The grid's last bucket holds the upper bound itself (closed).
+    first[a] = int(std::clamp(f, 0.0, top));
+    last[a] = int(std::clamp(l, 0.0, top));
+    if (hi[a] < this->Lower[a] || lo[a] > this->Upper[a])
+    {
+      last[a] = first[a] - 1; // the box misses the triangles' bounds: no bucket
+    }
+  }
+}
+
+bool SurfaceCrossings::firstCrossing(
+  const float a[3], const float b[3], SurfaceCrossing& crossing) const
+{
+  if (this->Surface.empty() || !finite3(a) || !finite3(b))
+  {
+    return false;
+  }
+  const double da[3] = { a[0], a[1], a[2] };
+  const Vec d = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = std::min<double>(a[k], b[k]);
+    hi[k] = std::max<double>(a[k], b[k]);
+  }
+  int f[3], l[3];
+  this->bucketRange(lo, hi, f, l);
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t bestTriangle = 0;
+  for (int z = f[2]; z <= l[2]; ++z)
+    for (int y = f[1]; y <= l[1]; ++y)
+      for (int x = f[0]; x <= l[0]; ++x)
+      {
+        const std::size_t bucket = (std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + x;
+        for (std::uint32_t m = this->Start[bucket]; m < this->Start[bucket + 1]; ++m)
+        {
+          const std::uint32_t k = this->Members[m];
+          const double t = meet(&this->Corners[9 * std::size_t(k)], da, d);
+          if (t < best || (t == best && k < bestTriangle))
+          {
+            best = t;
+            bestTriangle = k;
+          }
+        }
+      }
+  if (!std::isfinite(best))
+  {
+    return false;
+  }
+  const double* v = &this->Corners[9 * std::size_t(bestTriangle)];
+  Vec n = cross(sub(v + 3, v), sub(v + 6, v));
+  const double length = std::sqrt(dot(n, n));
+  crossing.t = best;
+  for (int k = 0; k < 3; ++k)
+  {
+    crossing.point[std::size_t(k)] = float(da[k] + best * d[std::size_t(k)]);
+    crossing.normal[std::size_t(k)] = float(n[std::size_t(k)] / length);
+  }
+  crossing.direction = dot(d, n) > 0.0 ? 1 : -1;
+  crossing.surface = this->Surface[bestTriangle];
+  crossing.triangle = this->Original[bestTriangle];
+  return true;
+}
+
+} // namespace bp

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Where a step crosses a surface of triangles (Core/Field/SurfaceCrossings.h).
+#include "SurfaceCrossings.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace
+{
+/// The unit square in z = 0 as two triangles, counter-clockwise seen from
+/// +z (normal +z), sharing the diagonal (0, 0) - (1, 1), offset by `o`.
+std::vector<float> unitSquare(float o = 0.0f)
+{
+  return { o, o, 0, 1 + o, o, 0, 1 + o, 1 + o, 0, o, o, 0, 1 + o, 1 + o, 0, o, 1 + o, 0 };
+}
+
+bool cross(const bp::SurfaceCrossings& s, std::vector<float> a, std::vector<float> b,
+  bp::SurfaceCrossing* out = nullptr)
+{
+  bp::SurfaceCrossing c;
+  const bool hit = s.firstCrossing(a.data(), b.data(), c);
+  if (out)
+  {
+    *out = c;
+  }
+  return hit;
+}
+} // namespace
+
+TEST(SurfaceCrossings, AStepThroughATriangleCrossesWhereItMeetsIt)
+{
+  const bp::SurfaceCrossings square(unitSquare(), { 7, 7 });
+  ASSERT_EQ(square.triangleCount(), 2u);
+  bp::SurfaceCrossing c;
+  ASSERT_TRUE(cross(square, { 0.75f, 0.25f, 1 }, { 0.75f, 0.25f, -1 }, &c));
+  EXPECT_DOUBLE_EQ(c.t, 0.5);
+  EXPECT_FLOAT_EQ(c.point[0], 0.75f);
+  EXPECT_FLOAT_EQ(c.point[1], 0.25f);
+  EXPECT_FLOAT_EQ(c.point[2], 0.0f);
+  EXPECT_FLOAT_EQ(c.normal[2], 1.0f);
+  EXPECT_EQ(c.direction, -1); // down, against the normal
+  EXPECT_EQ(c.surface, 7);
+  EXPECT_EQ(c.triangle, 0u);
+  ASSERT_TRUE(cross(square, { 0.25f, 0.75f, -0.5f }, { 0.25f, 0.75f, 1.5f }, &c));
+  EXPECT_DOUBLE_EQ(c.t, 0.25);
+  EXPECT_EQ(c.direction, 1);
+  EXPECT_EQ(c.triangle, 1u);
+}
+
+TEST(SurfaceCrossings, AStepThroughASharedEdgeOrCornerIsOneCrossing)
+{
+  const bp::SurfaceCrossings square(unitSquare(), {});
+  bp::SurfaceCrossing c;
+  // The diagonal both triangles share: the first triangle's crossing.
+  ASSERT_TRUE(cross(square, { 0.5f, 0.5f, 1 }, { 0.5f, 0.5f, -1 }, &c));
+  EXPECT_EQ(c.triangle, 0u);
+  EXPECT_EQ(c.surface, 0);
+  // A corner of both, and the square's outer edge: still crossed.
+  EXPECT_TRUE(cross(square, { 0, 0, 1 }, { 0, 0, -1 }));
+  EXPECT_TRUE(cross(square, { 1, 0.3f, 1 }, { 1, 0.3f, -1 }));
+  // Just outside the edge: not.
+  EXPECT_FALSE(cross(square, { 1.001f, 0.3f, 1 }, { 1.001f, 0.3f, -1 }));
+}
+
+TEST(SurfaceCrossings, AParticleLandingOnASurfaceCrossesItOnce)
+{
+  const bp::SurfaceCrossings square(unitSquare(), {});
+  bp::SurfaceCrossing c;
+  // Ends on it: crossed at t = 1; starts from it next step: not again.
+  ASSERT_TRUE(cross(square, { 0.3f, 0.6f, 1 }, { 0.3f, 0.6f, 0 }, &c));
+  EXPECT_DOUBLE_EQ(c.t, 1.0);
+  EXPECT_FALSE(cross(square, { 0.3f, 0.6f, 0 }, { 0.3f, 0.6f, -1 }));
+  // Along it, standing still, or beside it: no crossing.
+  EXPECT_FALSE(cross(square, { 0.1f, 0.1f, 0 }, { 0.9f, 0.2f, 0 }));
+  EXPECT_FALSE(cross(square, { 0.3f, 0.6f, 0.5f }, { 0.3f, 0.6f, 0.5f }));
+  EXPECT_FALSE(cross(square, { 0.3f, 0.6f, 0.5f }, { 0.3f, 0.6f, 0.1f }));
+  EXPECT_FALSE(cross(square, { 3, 3, 1 }, { 3, 3, -1 }));
+}
+
+TEST(SurfaceCrossings, TrianglesWithoutAreaOrFiniteCornersAreLeftOutAndCounted)
+{
+  std::vector<float> corners = unitSquare();
+  const std::vector<float> flat = { 0, 0, 0, 1, 1, 1, 2, 2, 2 }; // on a line
+  const std::vector<float> nan = { 0, 0, 0, NAN, 0, 0, 0, 1, 0 };
+  corners.insert(corners.end(), flat.begin(), flat.end());
+  corners.insert(corners.end(), nan.begin(), nan.end());
+  corners.insert(corners.end(), { 0, 0, 5, 1, 0, 5, 0, 1, 5 }); // kept, index 4
+  const bp::SurfaceCrossings s(corners, { 1, 2, 3, 4, 5 });
+  EXPECT_EQ(s.triangleCount(), 3u);
+  EXPECT_EQ(s.droppedTriangles(), 2u);
+  bp::SurfaceCrossing c;
+  ASSERT_TRUE(cross(s, { 0.2f, 0.2f, 6 }, { 0.2f, 0.2f, 4 }, &c));
+  EXPECT_EQ(c.triangle, 4u); // its index as given
+  EXPECT_EQ(c.surface, 5);
+  // A step that is not finite crosses nothing; no triangles, nothing either.
+  EXPECT_FALSE(cross(s, { NAN, 0.2f, 6 }, { 0.2f, 0.2f, -1 }));
+  EXPECT_FALSE(cross(s, { 0.2f, 0.2f, 6 }, { 0.2f, INFINITY, -1 }));
+  const bp::SurfaceCrossings none({}, {});
+  EXPECT_EQ(none.triangleCount(), 0u);
+  EXPECT_FALSE(cross(none, { 0, 0, 1 }, { 0, 0, -1 }));
+}
+
+TEST(SurfaceCrossings, FarFromTheOriginAStepStillCrosses)
+{
+  const bp::SurfaceCrossings square(unitSquare(1.0e6f), {});
+  bp::SurfaceCrossing c;
+  ASSERT_TRUE(cross(
+    square, { 1.0e6f + 0.5f, 1.0e6f + 0.25f, 0.5f }, { 1.0e6f + 0.5f, 1.0e6f + 0.25f, -0.5f }, &c));
+  EXPECT_DOUBLE_EQ(c.t, 0.5);
+  EXPECT_FLOAT_EQ(c.point[0], 1.0e6f + 0.5f);
+}
+
+TEST(SurfaceCrossings, TheBucketsFindTheFirstCrossingOfEveryTriangle)
+{
+  // Many small triangles anywhere in a box, many steps: the first crossing
+  // the buckets find is the first of all triangles, each tested alone.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> where(-2.0f, 2.0f), small(-0.3f, 0.3f);
+  std::vector<float> corners;
+  for (int k = 0; k < 3000; ++k)
+  {
+    const float c[3] = { where(random), where(random), where(random) };
+    for (int i = 0; i < 9; ++i)
+      corners.push_back(c[i % 3] + small(random));
+  }
+  const bp::SurfaceCrossings all(corners, {});
+  std::vector<bp::SurfaceCrossings> alone;
+  for (std::size_t k = 0; k < corners.size() / 9; ++k)
+  {
+    alone.emplace_back(std::vector<float>(corners.begin() + 9 * k, corners.begin() + 9 * k + 9),
+      std::vector<std::int32_t>{});
+  }
+  int crossings = 0;
+  for (int s = 0; s < 2000; ++s)
+  {
+    const float a[3] = { where(random), where(random), where(random) };
+    const float b[3] = { a[0] + small(random), a[1] + small(random), a[2] + small(random) };
+    bp::SurfaceCrossing found, best;
+    best.t = 2.0;
+    for (std::size_t k = 0; k < alone.size(); ++k)
+    {
+      bp::SurfaceCrossing c;
+      if (alone[k].firstCrossing(a, b, c) && c.t < best.t)
+      {
+        best = c;
+        best.triangle = std::uint32_t(k);
+      }
+    }
+    const bool hit = all.firstCrossing(a, b, found);
+    ASSERT_EQ(hit, best.t <= 1.0) << "step " << s;
+    if (hit)
+    {
+      ++crossings;
+      EXPECT_EQ(found.triangle, best.triangle) << "step " << s;
+      EXPECT_EQ(found.t, best.t) << "step " << s;
+    }
+  }
+  EXPECT_GT(crossings, 100); // the case crosses often enough to mean something
+}
+
+TEST(SurfaceCrossings, AGateOnAHalfPlaneIsCrossedOncePerTurnOfARotation)
+{
+  // The half-plane y = 0, x in [0, 2], z in [-1, 1] (two triangles, normal
+  // -y); a particle turning anticlockwise on a circle of radius 1 about the
+  // z axis, in steps of 1/40 turn started a quarter step past the gate: five
+  // turns cross it five times, each in the step over angle 0 (and never the
+  // other half of the plane, at angle pi).
+  const std::vector<float> gate = { 0, 0, -1, 2, 0, -1, 2, 0, 1, 0, 0, -1, 2, 0, 1, 0, 0, 1 };
+  const bp::SurfaceCrossings s(gate, {});
+  const double pi = std::acos(-1.0), step = 2 * pi / 40;
+  int crossed = 0;
+  for (int k = 0; k < 5 * 40; ++k)
+  {
+    const double t0 = (k + 0.25) * step, t1 = t0 + step;
+    const float a[3] = { float(std::cos(t0)), float(std::sin(t0)), 0.0f };
+    const float b[3] = { float(std::cos(t1)), float(std::sin(t1)), 0.0f };
+    bp::SurfaceCrossing c;
+    if (s.firstCrossing(a, b, c))
+    {
+      ++crossed;
+      EXPECT_EQ(k % 40, 39) << "the step over angle 0";
+      // Where the chord meets y = 0.
+      const double x = a[0] + (double(b[0]) - a[0]) * (-double(a[1])) / (double(b[1]) - a[1]);
+      EXPECT_NEAR(c.point[0], x, 1e-6);
+      EXPECT_NEAR(c.point[1], 0.0, 1e-6);
+      EXPECT_EQ(c.direction, -1); // moving +y, against the normal
+    }
+  }
+  EXPECT_EQ(crossed, 5);
+}
