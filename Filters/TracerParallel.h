@@ -9,8 +9,11 @@
  * whose centres lie in its block, and in each step (after resets, before
  * advection) hands elements to the
  * process that owns their new centre (bp::DistributedStepper, through the
- * global vtkMultiProcessController). Otherwise piece 0 traces the whole field
- * and other pieces are empty.
+ * global vtkMultiProcessController). Along a periodic axis each process
+ * reads the whole axis instead of its block's share (the field across the
+ * seam), and an element the last step moved across the seam is handed over
+ * with the others. Otherwise piece 0 traces the whole field and other
+ * pieces are empty.
  */
 #ifndef BoundParticles_TracerParallel_h
 #define BoundParticles_TracerParallel_h
