@@ -284,10 +284,17 @@ def periodic_trace():
     to the process that owns its new centre."""
     wavelet = Wavelet(WholeExtent=[-10, 10, -5, 5, -2, 2])
     wind = updated(Calculator(Input=wavelet, ResultArrayName="wind", Function="iHat + 0.5*jHat"))
-    return BoundParticleTracer(Input=wind, Vectors=["POINTS", "wind"], ElementShape="Strip4",
-                               NumberOfElements=400, ElementSize=1.0, EmitterCenter=[0, 0, 0],
-                               EmitterSize=[18, 8, 3], StepSizeUnit="Time", StepSize=0.05,
-                               Duration=22, LifetimeRange=[100, 100], Seed=5, Periodic=[1, 1, 0])
+    tracer = BoundParticleTracer(Input=wind, Vectors=["POINTS", "wind"], ElementShape="Strip4",
+                                 NumberOfElements=400, ElementSize=1.0, EmitterCenter=[0, 0, 0],
+                                 EmitterSize=[18, 8, 3], StepSizeUnit="Time", StepSize=0.05,
+                                 Duration=22, LifetimeRange=[100, 100], Seed=5,
+                                 Periodic=[0, 1, 0])
+    # Traced first periodic along y only, then along x too: under MPI each
+    # process then reads the whole x axis as well, and the time step it held
+    # (its block's share of x) must not serve the new trace.
+    tracer.UpdatePipeline(11.0)
+    tracer.Periodic = [1, 1, 0]
+    return tracer
 
 
 def all_traces():

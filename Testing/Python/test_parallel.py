@@ -322,7 +322,7 @@ def check_periodic(result, name, ranks):
         boxes = [(points[(process == r) & ~near_seam].min(axis=0),
                   points[(process == r) & ~near_seam].max(axis=0))
                  for r in range(ranks) if ((process == r) & ~near_seam).any()]
-        worst = 0.0
+        worst = float("-inf")
         for i, (low_a, high_a) in enumerate(boxes):
             for low_b, high_b in boxes[i + 1:]:
                 overlap = numpy.minimum(high_a, high_b) - numpy.maximum(low_a, low_b)
