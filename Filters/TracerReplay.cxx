@@ -257,6 +257,10 @@ void vtkBoundParticleTracerInternals::warnOfPeriodicSeams(
 {
   static const char* const axes[3] = { "x", "y", "z" };
   const auto& velocity = field.firstSlice().velocity;
+  if (!(config.periodic[0] || config.periodic[1] || config.periodic[2]))
+  {
+    return;
+  }
   const bool distributed = this->Layout.distributed();
   double fastest = 0.0;
   if (distributed)
