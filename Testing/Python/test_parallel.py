@@ -283,41 +283,48 @@ def check_save_resume(result, name):
                  "trace that never stopped" % name)
 
 
-def check_periodic(result, name, ranks):
-    """parallel_trace.py's periodic case (x and y periodic, the uniform flow
-    (1, 0.5, 0) on [-10, 10] x [-5, 5] x [-2, 2]): after one period every
-    strip is back where it was, shape and all; halfway, each is whole and
-    its centre inside the box; and each process holds the elements whose
+def check_periodic(result, run_name, ranks):
+    """Each of parallel_trace.py's periodic cases."""
+    for case in ("periodic", "periodic_mesh"):
+        check_periodic_case(result, run_name, case, ranks)
+
+
+def check_periodic_case(result, run_name, case, ranks):
+    """A periodic case of parallel_trace.py (x and y periodic, the uniform
+    flow (1, 0.5, 0) on [-10, 10] x [-5, 5] x [-2, 2]): after one period
+    every strip is back where it was, shape and all; halfway, each is whole
+    and its centre inside the box; and each process holds the elements whose
     centres lie in its block, but for those a step took across a block's
     side or a seam since the last exchange (within a step, 0.056, of it)."""
-    if result is None or "periodic_2_points" not in result.files:
-        bptest.check(False, "%s: no periodic trace" % name)
+    name = "%s %s" % (run_name, case)
+    if result is None or case + "_2_points" not in result.files:
+        bptest.check(False, "%s: not traced" % name)
         return
-    start, back = result["periodic_0_points"], result["periodic_2_points"]
-    same = (numpy.array_equal(result["periodic_0_element"], result["periodic_2_element"]) and
+    start, back = result[case + "_0_points"], result[case + "_2_points"]
+    same = (numpy.array_equal(result[case + "_0_element"], result[case + "_2_element"]) and
             start.shape == back.shape and len(start) > 0)
-    bptest.check(same, "%s periodic: the same elements after one period" % name)
+    bptest.check(same, "%s: the same elements after one period" % name)
     if not same:
         return
     moved = float(abs(back - start).max())
-    print("%s periodic: back within %.3g after one period" % (name, moved))
-    bptest.check(moved < 1e-3, "%s periodic: every strip back where it was after one period "
+    print("%s: back within %.3g after one period" % (name, moved))
+    bptest.check(moved < 1e-3, "%s: every strip back where it was after one period "
                  "(%.3g)" % (name, moved))
-    middle = result["periodic_1_points"].reshape(-1, 4, 3)  # Strip4
+    middle = result[case + "_1_points"].reshape(-1, 4, 3)  # Strip4
     centres = middle.mean(axis=1)
     spread = float(abs(middle[:, :, :2] - centres[:, None, :2]).max())
-    print("%s periodic: halfway, centres in x %.3f to %.3f, y %.3f to %.3f, particles within "
+    print("%s: halfway, centres in x %.3f to %.3f, y %.3f to %.3f, particles within "
           "%.3f of their centres" % (name, centres[:, 0].min(), centres[:, 0].max(),
                                      centres[:, 1].min(), centres[:, 1].max(), spread))
-    bptest.check(spread < 1.0, "%s periodic: a strip torn across a seam (%.3f)" % (name, spread))
+    bptest.check(spread < 1.0, "%s: a strip torn across a seam (%.3f)" % (name, spread))
     inside = (abs(centres[:, 0]) <= 10.0).all() and (abs(centres[:, 1]) <= 5.0).all()
-    bptest.check(inside, "%s periodic: centres outside the period" % name)
+    bptest.check(inside, "%s: centres outside the period" % name)
     if ranks < 2:
         return
     step = 0.06
     for k in range(3):
-        points = result["periodic_%d_points" % k].reshape(-1, 4, 3).mean(axis=1)
-        process = result["periodic_%d_process" % k][::4]
+        points = result["%s_%d_points" % (case, k)].reshape(-1, 4, 3).mean(axis=1)
+        process = result["%s_%d_process" % (case, k)][::4]
         near_seam = (abs(abs(points[:, 0]) - 10.0) < step) | (abs(abs(points[:, 1]) - 5.0) < step)
         boxes = [(points[(process == r) & ~near_seam].min(axis=0),
                   points[(process == r) & ~near_seam].max(axis=0))
@@ -327,10 +334,10 @@ def check_periodic(result, name, ranks):
             for low_b, high_b in boxes[i + 1:]:
                 overlap = numpy.minimum(high_a, high_b) - numpy.maximum(low_a, low_b)
                 worst = max(worst, float(overlap.min()))
-        print("%s periodic_%d: the ranks' boxes of element centres overlap by %.3f at most" %
+        print("%s_%d: the ranks' boxes of element centres overlap by %.3f at most" %
               (name, k, worst))
-        bptest.check(worst <= 2 * step, "%s periodic_%d: a rank holds elements in another's "
-                     "block (its boxes overlap by %.3f)" % (name, k, worst))
+        bptest.check(worst <= 2 * step, "%s_%d: a rank holds elements in another's block (its "
+                     "boxes overlap by %.3f)" % (name, k, worst))
 
 
 def state_of(run_name):
