@@ -179,6 +179,28 @@ void PieceLayout::requestInput(vtkInformation* inInfo, bool mesh)
   inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), this->Pieces);
   inInfo->Set(
     SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), this->distributed() && !mesh ? this->GhostCells : 0);
+  int extent[6];
+  const bool periodic = this->Periodic[0] || this->Periodic[1] || this->Periodic[2];
+  if (periodic && !mesh && inInfo->Has(SDDP::WHOLE_EXTENT()) && this->distributed() &&
+    this->blockWithGhosts(this->Piece, extent))
+  {
+    // The executive splits the update extent into blocks with ghost layers
+    // alike along every axis; along a periodic one each process needs the
+    // whole axis (the field across the seam). So the extent is asked for
+    // as it is, one piece: a source that produces sub-extents gives just
+    // it, another the whole, which cropToPiece() cuts to it.
+    inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
+    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+}
+
+bool PieceLayout::setPeriodic(const std::array<bool, 3>& periodic)
+{
+  const bool changed = periodic != this->Periodic;
+  this->Periodic = periodic;
+  return changed && this->distributed();
 }
 
 void PieceLayout::setWholeExtent(const int whole[6])
@@ -247,13 +269,19 @@ vtkSmartPointer<vtkImageData> PieceLayout::cutPiece(vtkImageData* whole)
   {
     return whole;
   }
-  // This process's block with GhostCells layers, as an image source gives it.
+  // This process's block with GhostCells layers, as an image source gives
+  // it; the whole axis along a periodic one.
   int piece[6];
   for (int a = 0; a < 3; ++a)
   {
     piece[2 * a] = std::max(this->OwnedExtent[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
     piece[2 * a + 1] =
       std::min(this->OwnedExtent[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
+    if (this->Periodic[std::size_t(a)])
+    {
+      piece[2 * a] = this->WholeExtent[2 * a];
+      piece[2 * a + 1] = this->WholeExtent[2 * a + 1];
+    }
   }
   auto cut = vtkSmartPointer<vtkImageData>::New();
   cut->SetOrigin(whole->GetOrigin());
@@ -332,6 +360,29 @@ std::string localShare(
   mine[7] = smallest;
   return std::string();
 }
+
+/// Empty where `extent` spans the whole extent along every periodic axis,
+/// otherwise the error: sampling across the seam reads the other side from
+/// this piece (PieceLayout::setPeriodic).
+std::string periodicGap(
+  const int extent[6], const int whole[6], const std::array<bool, 3>& periodic)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (periodic[std::size_t(a)] &&
+      (extent[2 * a] > whole[2 * a] || extent[2 * a + 1] < whole[2 * a + 1]))
+    {
+      std::ostringstream err;
+      err << "The input delivered extent [" << extent[2 * a] << " " << extent[2 * a + 1]
+          << "] along "
+          << "xyz"[a] << ", which is periodic, where every process needs the whole "
+          << "axis [" << whole[2 * a] << " " << whole[2 * a + 1]
+          << "]; the source must produce the extent it is asked for.";
+      return err.str();
+    }
+  }
+  return std::string();
+}
 } // namespace
 
 std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, const int extent[6],
@@ -343,6 +394,7 @@ std::string PieceLayout::share(std::string error, const bp::GridGeometry& grid, 
   if (error.empty())
   {
     error = localShare(grid, extent, this->OwnedExtent, mine);
+    error = error.empty() ? periodicGap(extent, this->WholeExtent, this->Periodic) : error;
   }
   else
   {
@@ -413,6 +465,10 @@ void PieceLayout::placeDomain(
     this->Domain.lower[a] = float(local[2 * a]);
     this->Domain.upper[a] = float(local[2 * a + 1]);
     this->Domain.degenerate[a] = cells < 1;
+    // No sides along a periodic axis: the engine moves an element whose
+    // centre leaves there by a period (Engine::wrapPeriodic, on the whole
+    // field's bounds), before the next step hands it to its new owner.
+    this->Domain.periodic[a] = this->Periodic[std::size_t(a)] && cells >= 1;
     if (cells >= 1)
     {
       // A uniform axis's spacing, as one process's grid gives it: the

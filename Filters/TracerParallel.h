@@ -9,8 +9,11 @@
  * whose centres lie in its block, and in each step (after resets, before
  * advection) hands elements to the
  * process that owns their new centre (bp::DistributedStepper, through the
- * global vtkMultiProcessController). Otherwise piece 0 traces the whole field
- * and other pieces are empty.
+ * global vtkMultiProcessController). Along a periodic axis each process
+ * reads the whole axis instead of its block's share (the field across the
+ * seam), and an element the last step moved across the seam is handed over
+ * with the others. Otherwise piece 0 traces the whole field and other
+ * pieces are empty.
  */
 #ifndef BoundParticles_TracerParallel_h
 #define BoundParticles_TracerParallel_h
@@ -83,15 +86,28 @@ public:
   /// Asks the input for the whole extent (one process) or this process's
   /// block with GhostCells layers (the executive splits it); a `mesh` (an
   /// input the tracer resamples) for this process's piece, without ghosts.
+  /// With a periodic axis (setPeriodic) an image or grid is asked for
+  /// blockWithGhosts() as one piece: the whole axis on every process.
   void requestInput(vtkInformation* inInfo, bool mesh);
+
+  /**
+   * The periodic axes (the tracer's Periodic). Along one, a process's piece
+   * of the field spans the whole axis, so that sampling across the seam
+   * reads the field on the other side without an exchange of field data,
+   * while the process still owns only the elements of its block (an element
+   * moved across the seam migrates in the next step, as any other). Returns
+   * whether they changed in a distributed run: the pieces read change.
+   */
+  bool setPeriodic(const std::array<bool, 3>& periodic);
 
   /// Takes the whole grid's extent and this process's block of it.
   void setWholeExtent(const int whole[6]);
 
   /**
    * The piece of `whole` (the whole grid, resampled from a mesh) that this
-   * process would have read from an image: its block with GhostCells layers.
-   * `whole` itself outside a distributed run.
+   * process would have read from an image: its block with GhostCells layers
+   * (the whole axis along a periodic one). `whole` itself outside a
+   * distributed run.
    */
   vtkSmartPointer<vtkImageData> cutPiece(vtkImageData* whole);
 
@@ -120,8 +136,9 @@ public:
    */
   vtkSmartPointer<vtkDataSet> cropToPiece(vtkDataSet* held) const;
 
-  /// Piece `piece`'s block of the whole extent with GhostCells layers;
-  /// false where it owns nothing (more processes than blocks).
+  /// Piece `piece`'s block of the whole extent with GhostCells layers, and
+  /// the whole extent along a periodic axis; false where it owns nothing
+  /// (more processes than blocks).
   bool blockWithGhosts(int piece, int extent[6]) const;
 
   /**
@@ -183,6 +200,8 @@ public:
   int RequestedPiece = 0; ///< the output piece asked for (without a controller)
   bool TooSmall = false;  ///< processes to split among, but too few cells
   int GhostCells = 2;     ///< around the owned block; grown at a replay if too few
+  /// Periodic axes: a piece holds the whole axis (setPeriodic).
+  std::array<bool, 3> Periodic = { false, false, false };
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
   int PieceExtent[6] = { 0, -1, 0, -1, 0, -1 }; ///< the extent this process read (with ghosts)

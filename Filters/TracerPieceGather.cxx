@@ -282,8 +282,13 @@ bool PieceLayout::blockWithGhosts(int piece, int extent[6]) const
   }
   for (int a = 0; a < 3; ++a)
   {
-    extent[2 * a] = std::max(owned[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
-    extent[2 * a + 1] = std::min(owned[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
+    // Along a periodic axis the whole axis: the field across the seam.
+    const bool whole = this->Periodic[std::size_t(a)];
+    extent[2 * a] = whole ? this->WholeExtent[2 * a]
+                          : std::max(owned[2 * a] - this->GhostCells, this->WholeExtent[2 * a]);
+    extent[2 * a + 1] = whole
+      ? this->WholeExtent[2 * a + 1]
+      : std::min(owned[2 * a + 1] + this->GhostCells, this->WholeExtent[2 * a + 1]);
   }
   return true;
 }

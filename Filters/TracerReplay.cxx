@@ -232,12 +232,6 @@ std::string vtkBoundParticleTracerInternals::checkPeriodic(
   {
     return std::string();
   }
-  if (this->Layout.distributed())
-  {
-    return "Periodic (" + named +
-      ") is not supported with several MPI processes: elements are not exchanged across a "
-      "periodic seam between pieces; run on one process or turn Periodic off.";
-  }
   for (int a = 0; a < 3; ++a)
   {
     if (config.periodic[a] && field.grid().dims[a] < 2)
@@ -267,13 +261,35 @@ void vtkBoundParticleTracerInternals::warnOfPeriodicSeams(
 {
   static const char* const axes[3] = { "x", "y", "z" };
   const auto& velocity = field.firstSlice().velocity;
-  for (int a = 0; a < 3 && velocity; ++a)
+  if (!(config.periodic[0] || config.periodic[1] || config.periodic[2]))
+  {
+    return;
+  }
+  const bool distributed = this->Layout.distributed();
+  double fastest = 0.0;
+  if (distributed)
+  {
+    // Collective, on every process alike (checkPeriodic passed on each): the
+    // whole field's largest speed.
+    fastest = this->Layout.globalMax(velocity ? bp::largestFiniteSpeed(*velocity) : 0.0);
+  }
+  for (int a = 0; a < 3; ++a)
   {
     // The period is the extent: a last plane that is not a copy of the first
     // (data one spacing short of its period) is traced, but with a jump at
     // the seam and the wrong period. A thousandth of the top speed is rounding.
-    const double mismatch =
-      config.periodic[a] ? bp::periodicSeamMismatch(field.grid(), *velocity, a) : 0.0;
+    double mismatch = 0.0;
+    if (config.periodic[a] && distributed)
+    {
+      // Each piece holds the whole periodic axis, over its block of the others.
+      const double difference = this->Layout.globalMax(
+        velocity ? bp::periodicSeamDifference(field.grid(), *velocity, a) : 0.0);
+      mismatch = fastest > 0.0 ? difference / fastest : 0.0;
+    }
+    else if (config.periodic[a] && velocity)
+    {
+      mismatch = bp::periodicSeamMismatch(field.grid(), *velocity, a);
+    }
     if (mismatch > 1e-3)
     {
       vtkWarningWithObjectMacro(this->Owner,

@@ -313,8 +313,10 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
   bpvtk::askOthersAlike(outputVector, port);
 
-  I.requestPieces(
-    outInfo, inInfo, bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())));
+  const std::array<bool, 3> periodic = { this->Periodic[0] != 0, this->Periodic[1] != 0,
+    this->Periodic[2] != 0 };
+  I.requestPieces(outInfo, inInfo,
+    bpvtk::FieldResampler::needed(inInfo->Get(vtkDataObject::DATA_OBJECT())), periodic);
   if (!I.continuing() && I.hasTimes())
   {
     // A new update: decide it once here, before anything is asked of

@@ -390,8 +390,11 @@ public:
   /// shape and deformation untouched; it is never released for leaving
   /// there). Boundary applies to the other axes' sides only. Refused along an
   /// axis of one grid point, with Trails (a trail would cross the domain at
-  /// the jump), with Linking (a super set's links would span the domain),
-  /// and with several MPI processes. Both engines do the same.
+  /// the jump) and with Linking (a super set's links would span the domain).
+  /// Under MPI every process holds the whole of a periodic axis (the field
+  /// across the seam; its block along the others) and hands an element that
+  /// crosses the seam to the process that owns its new centre, so the trace
+  /// is the same on any number of processes. Both engines do the same.
   vtkSetVector3Macro(Periodic, int);
   vtkGetVector3Macro(Periodic, int);
   ///@}

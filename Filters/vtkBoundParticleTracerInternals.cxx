@@ -60,9 +60,12 @@ std::string vtkBoundParticleTracerInternals::setTimes(const std::vector<double>&
 }
 
 void vtkBoundParticleTracerInternals::requestPieces(
-  vtkInformation* outInfo, vtkInformation* inInfo, bool mesh)
+  vtkInformation* outInfo, vtkInformation* inInfo, bool mesh, const std::array<bool, 3>& periodic)
 {
-  if (this->Layout.takeRequest(outInfo, inInfo))
+  const bool pieces = this->Layout.takeRequest(outInfo, inInfo);
+  // Both run: a periodic axis is read whole by every process.
+  const bool periodicAxes = this->Layout.setPeriodic(periodic);
+  if (pieces || periodicAxes)
   {
     // A change of pieces is a change of input: replay.
     this->forgetTrace();

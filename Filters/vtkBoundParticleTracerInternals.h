@@ -222,10 +222,12 @@ public:
   /// it again too, with the warning.
   std::string offerStreamTime(
     vtkMTimeType settingsTime, double time, const std::vector<double>& grid, std::string& warning);
-  /// RequestUpdateExtent: the pieces this output asks for (a change of them
-  /// is a change of input: every trace is stale), then what the input is
-  /// asked for (`mesh`: an input the resampler takes whole).
-  void requestPieces(vtkInformation* outInfo, vtkInformation* inInfo, bool mesh);
+  /// RequestUpdateExtent: the pieces this output asks for (a change of them,
+  /// or under MPI of the `periodic` axes, along which a piece spans the whole
+  /// axis, is a change of input: every trace is stale), then what the input
+  /// is asked for (`mesh`: an input the resampler takes whole).
+  void requestPieces(vtkInformation* outInfo, vtkInformation* inInfo, bool mesh,
+    const std::array<bool, 3>& periodic);
 
   /// The share of the update's stepping done, over all its passes.
   double progress() const

@@ -9,13 +9,8 @@
 namespace bp
 {
 
-double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& velocity, int a)
+double largestFiniteSpeed(const std::vector<float>& velocity)
 {
-  const std::array<int, 3>& d = grid.dims;
-  if (d[a] < 2 || velocity.size() < 3 * grid.pointCount())
-  {
-    return 0.0;
-  }
   double fastest = 0.0;
   for (std::size_t k = 0; k + 2 < velocity.size(); k += 3)
   {
@@ -23,7 +18,13 @@ double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& 
       double(velocity[k + 1]) * velocity[k + 1] + double(velocity[k + 2]) * velocity[k + 2]);
     fastest = std::max(fastest, std::isfinite(s) ? s : 0.0);
   }
-  if (!(fastest > 0.0))
+  return fastest;
+}
+
+double periodicSeamDifference(const GridGeometry& grid, const std::vector<float>& velocity, int a)
+{
+  const std::array<int, 3>& d = grid.dims;
+  if (d[a] < 2 || velocity.size() < 3 * grid.pointCount())
   {
     return 0.0;
   }
@@ -44,7 +45,17 @@ double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& 
       }
     }
   }
-  return worst / fastest;
+  return worst;
+}
+
+double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& velocity, int a)
+{
+  if (grid.dims[a] < 2 || velocity.size() < 3 * grid.pointCount())
+  {
+    return 0.0;
+  }
+  const double fastest = largestFiniteSpeed(velocity);
+  return fastest > 0.0 ? periodicSeamDifference(grid, velocity, a) / fastest : 0.0;
 }
 
 } // namespace bp

@@ -72,6 +72,15 @@ struct GridGeometry;
  */
 double periodicSeamMismatch(const GridGeometry& grid, const std::vector<float>& velocity, int a);
 
+/// The same difference, not divided by the largest speed: a distributed run
+/// takes the largest over its pieces (each holds the whole periodic axis)
+/// and divides it by the whole field's largest speed.
+double periodicSeamDifference(const GridGeometry& grid, const std::vector<float>& velocity, int a);
+
+/// The largest finite speed of `velocity` (3 floats per point), as
+/// periodicSeamMismatch divides by it.
+double largestFiniteSpeed(const std::vector<float>& velocity);
+
 } // namespace bp
 
 #endif

@@ -38,15 +38,20 @@ bp::Box boxOf(const bp::GridGeometry& g, const std::array<int, 6>& extent)
   return b;
 }
 
-/// The points of `extent` grown by `ghost` layers (within the grid), as a field of its own.
+/// The points of `extent` grown by `ghost` layers (within the grid), and
+/// the whole axis along a periodic one (as the tracer asks its input for
+/// them: PieceLayout::blockWithGhosts), as a field of its own.
 bp::VectorField cut(const bp::VectorField& whole, std::array<int, 6> extent, int ghost)
 {
   const bp::GridGeometry& g = whole.grid();
   bp::GridGeometry piece;
+  piece.periodic = g.periodic;
   for (int a = 0; a < 3; ++a)
   {
-    extent[2 * a] = std::max(0, extent[2 * a] - ghost);
-    extent[2 * a + 1] = std::min(g.dims[a] - 1, extent[2 * a + 1] + ghost);
+    const bool wholeAxis = g.periodic[std::size_t(a)];
+    extent[2 * a] = wholeAxis ? 0 : std::max(0, extent[2 * a] - ghost);
+    extent[2 * a + 1] =
+      wholeAxis ? g.dims[a] - 1 : std::min(g.dims[a] - 1, extent[2 * a + 1] + ghost);
     piece.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
     piece.origin[a] = g.coordinate(a, extent[2 * a]);
     piece.spacing[a] = g.spacing[a];
@@ -66,7 +71,7 @@ bp::VectorField cut(const bp::VectorField& whole, std::array<int, 6> extent, int
 }
 
 bp::Parameters parameters(bp::Orientation orientation = bp::Orientation::Random,
-  bp::Boundary boundary = bp::Boundary::ReleaseAgain)
+  bp::Boundary boundary = bp::Boundary::ReleaseAgain, bool trails = true)
 {
   bp::Parameters p;
   p.boundary = boundary;
@@ -83,7 +88,7 @@ bp::Parameters parameters(bp::Orientation orientation = bp::Orientation::Random,
   p.seed = 11;
   // Poses, spins and trails travel with the elements.
   p.trackPoses = true;
-  p.trailLength = 3;
+  p.trailLength = trails ? 3 : 0; // none with Periodic, as the tracer refuses them
   p.trailInterval = 0.1; // every 5 steps of 0.02
   return p;
 }
@@ -122,7 +127,7 @@ Element elementOf(const bp::Engine& engine, std::size_t e)
 /// number of elements that changed pieces.
 std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, int pieces,
   bool ghostedPieces, int steps, double dt, long long& migrated, bp::Orientation orientation,
-  bp::Boundary boundary)
+  bp::Boundary boundary, bool trails)
 {
   const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
   const auto extents = splitExtent(whole.grid(), pieces);
@@ -146,7 +151,7 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
         const bp::VectorField field =
           ghostedPieces ? cut(whole, extents[std::size_t(k)], ghost) : whole;
         bp::Engine& engine = engines[std::size_t(k)];
-        errors[std::size_t(k)] = engine.configure(shape, parameters(orientation, boundary));
+        errors[std::size_t(k)] = engine.configure(shape, parameters(orientation, boundary, trails));
         engine.setDomain(whole.domain());
         // Along Flow samples this piece's field: right for the elements it keeps.
         engine.initialize(bp::serialRunner(), 0.0, &field);
@@ -188,13 +193,14 @@ void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whol
   double dt, bp::Orientation orientation, bp::Boundary boundary = bp::Boundary::ReleaseAgain)
 {
   const std::size_t n = serial.particlesPerElement();
+  const bool trails = serial.parameters().trailLength > 0;
   for (int pieces : { 2, 4 })
   {
     for (bool ghosted : { false, true })
     {
       long long migrated = 0;
       const auto state =
-        runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation, boundary);
+        runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation, boundary, trails);
       ASSERT_EQ(state.size(), serial.elementCount());
       // Elements crossed between pieces, and some were reset (lifetimes end).
       EXPECT_GT(migrated, 100) << pieces << " pieces";
@@ -215,7 +221,8 @@ void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whol
         trailPoses +=
           int(std::count(s.trailGenerations.begin(), s.trailGenerations.end(), s.generation));
       }
-      EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
+      if (trails)
+        EXPECT_GT(trailPoses, 100); // trails of the elements' own generation
       EXPECT_LE(worstPose, ghosted ? 1e-2f : 0.0f) << pieces << " pieces, ghosted " << ghosted;
       // The whole field on every piece gives the same bits; ghosted pieces
       // locate cells from their own origin, which rounds differently.
@@ -335,6 +342,53 @@ TEST(Partition, PiecesReproduceTheSingleProcessRunWithWalls)
       onWall += bp::onWall(whole.domain(), serial.positions().data() + q) ? 1 : 0;
     if (boundary != bp::Boundary::Bounce)
       EXPECT_GT(onWall, 20) << "the walls are met";
+    expectPiecesReproduce(serial, whole, steps, dt, bp::Orientation::Random, boundary);
+  }
+}
+
+TEST(Partition, PiecesReproduceTheSingleProcessRunAcrossAPeriodicSeam)
+{
+  // Periodic along x and y, the axes the pieces split: each piece holds the
+  // whole of both (the field across the seam, as the tracer asks for it),
+  // owns the elements of its block, and an element moved by a period at
+  // the end of a step (Engine::wrapPeriodic, on the whole field's domain)
+  // goes to its new owner at the start of the next (migrate).
+  bp::GridGeometry g = bptest::grid(33);
+  g.periodic = { true, true, false };
+  const bp::VectorField whole = bptest::steadyFlow(bp::AnalyticFlow::ABC, g);
+  ASSERT_TRUE(whole.domain().periodic[0] && whole.domain().periodic[1]);
+  const int steps = 60;
+  const double dt = 0.02;
+  for (bp::Boundary boundary : { bp::Boundary::ReleaseAgain, bp::Boundary::Slip })
+  {
+    SCOPED_TRACE(bp::enumName(boundary));
+    bp::Engine serial;
+    ASSERT_EQ(serial.configure(bp::builtinTemplate(bp::BuiltinShape::Cross),
+                parameters(bp::Orientation::Random, boundary, false)),
+      "");
+    serial.initialize(bp::serialRunner(), 0.0, &whole);
+    // Elements cross the seams: a centre that jumps by more than half the
+    // period (2) between two steps was moved by one.
+    int jumps = 0;
+    for (int s = 0; s < steps; ++s)
+    {
+      std::map<std::uint32_t, std::array<float, 3>> before;
+      for (std::size_t e = 0; e < serial.elementCount(); ++e)
+        before[serial.elementIds()[e]] = serial.centerOf(e);
+      serial.step(whole, s * dt, dt, bp::serialRunner());
+      for (std::size_t e = 0; e < serial.elementCount(); ++e)
+      {
+        const std::array<float, 3> c = serial.centerOf(e), b = before[serial.elementIds()[e]];
+        jumps += std::abs(c[0] - b[0]) > 1.0f || std::abs(c[1] - b[1]) > 1.0f ? 1 : 0;
+      }
+    }
+    EXPECT_GT(jumps, 100) << "elements cross the periodic seams"; // 313 when written
+    for (std::size_t e = 0; e < serial.elementCount(); ++e)
+      for (int a = 0; a < 2; ++a)
+      {
+        EXPECT_GE(serial.centerOf(e)[std::size_t(a)], -1.0f);
+        EXPECT_LE(serial.centerOf(e)[std::size_t(a)], 1.0f);
+      }
     expectPiecesReproduce(serial, whole, steps, dt, bp::Orientation::Random, boundary);
   }
 }

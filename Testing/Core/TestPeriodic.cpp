@@ -265,6 +265,14 @@ TEST(Periodic, TheSeamMismatchTellsACopiedLastPlaneFromAShortOne)
   const std::vector<float>& v = *field.firstSlice().velocity;
   EXPECT_EQ(bp::periodicSeamMismatch(g, v, 0), 0.0);
   EXPECT_NEAR(bp::periodicSeamMismatch(g, v, 1), 1.0 / std::sqrt(1.0 + 0.25), 1e-6);
+  // Its two parts, which a distributed run takes the largest of over its
+  // pieces: the difference itself and the largest speed.
+  EXPECT_NEAR(bp::periodicSeamDifference(g, v, 1), 1.0, 1e-6);
+  EXPECT_EQ(bp::periodicSeamDifference(g, v, 0), 0.0);
+  EXPECT_NEAR(bp::largestFiniteSpeed(v), std::sqrt(1.0 + 0.25), 1e-6);
+  std::vector<float> withInf = v;
+  withInf[0] = INFINITY;
+  EXPECT_NEAR(bp::largestFiniteSpeed(withInf), std::sqrt(1.0 + 0.25), 1e-6);
   // A sine sampled at 0, h, ..., L - h (its last plane one spacing short of
   // the period) differs at the seam by about the step to the next plane.
   std::vector<float> shortOne;

@@ -232,6 +232,7 @@ def placement_traces():
         Input=moving, ElementShape="Point", NumberOfElements=1200, Seed=7,
         Vectors=["POINTS", "velocity"]), [1.0, 2.0])
     cases["ftle"] = (ftle_trace(), [1.0, 2.0])
+    cases.update(periodic_traces())
     if args.rectilinear:
         grid = XMLRectilinearGridReader(FileName=[args.rectilinear])
         grid.UpdatePipeline()  # the emitter's defaults come from the input's bounds
@@ -274,6 +275,40 @@ def ftle_trace():
     tracer.EmitterCenter = [1.0, 0.5, 0.0]
     tracer.EmitterSize = [2.0, 1.0, 0.0]
     return tracer
+
+
+# Periodic along x and y: a Wavelet image over [-10, 10] x [-5, 5] x [-2, 2]
+# (spacing 1) in the uniform flow (1, 0.5, 0), whose period along x (20 at
+# speed 1) and along y (10 at 0.5) is 20; and the same image as a mesh of
+# hexahedra, resampled onto the same grid. Compared at 1, halfway and one
+# period later (test_parallel.py: check_periodic).
+PERIODIC_TIMES = [1.0, 11.0, 21.0]
+
+
+def periodic_traces():
+    """Strips that cross both periodic seams, and the pieces' boundaries, on
+    their way back to where they were after one period: every process reads
+    the whole of both axes (cuts them from the resampled grid) and hands each
+    element that moves across a seam to the process that owns its new
+    centre."""
+    wavelet = Wavelet(WholeExtent=[-10, 10, -5, 5, -2, 2])
+    wind = updated(Calculator(Input=wavelet, ResultArrayName="wind", Function="iHat + 0.5*jHat"))
+    hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=wind)))
+    cases = {}
+    for name, field, extra in (("periodic", wind, {}),
+                               ("periodic_mesh", hexes, {"ResampleDimensions": [21, 11, 5]})):
+        tracer = BoundParticleTracer(Input=field, Vectors=["POINTS", "wind"], ElementShape="Strip4",
+                                     NumberOfElements=400, ElementSize=1.0,
+                                     EmitterCenter=[0, 0, 0], EmitterSize=[18, 8, 3],
+                                     StepSizeUnit="Time", StepSize=0.05, Duration=22,
+                                     LifetimeRange=[100, 100], Seed=5, Periodic=[0, 1, 0], **extra)
+        # Traced first periodic along y only, then along x too: under MPI
+        # each process then reads the whole x axis as well, and the time step
+        # it held (its block's share of x) must not serve the new trace.
+        tracer.UpdatePipeline(11.0)
+        tracer.Periodic = [1, 1, 0]
+        cases[name] = (tracer, PERIODIC_TIMES)
+    return cases
 
 
 def all_traces():

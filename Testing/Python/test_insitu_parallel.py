@@ -9,6 +9,11 @@ time:
   step (a .pvtp) equal a post hoc trace of the same steps (one process, the
   steps read from disk), matched by ElementId and ParticleIndex within 1e-4
   of the domain.
+- "periodic": "far" with a drift of 0.5 along x added to the gyre (a
+  Calculator after the producer, and after the reader post hoc) and
+  Periodic along x: each rank gathers the whole x axis from both pieces, and
+  the elements that cross the seam move to the rank that owns their new
+  centres; in situ equals post hoc as above.
 - "empty", "bare": rank 0 holds the whole grid, rank 1 no points (an empty
   image with the arrays, or a bare vtkImageData()): rank 1 gathers its
   block on rank 0's grid, and the elements equal post hoc as above.
@@ -54,13 +59,14 @@ LAST_X = DIMS[0] - 1
 # and what the case does to rank 1's piece.
 PIECES = {
     "far": [(0, 23), (23, LAST_X)],      # sharing one plane of points, no ghost layers
+    "periodic": [(0, 23), (23, LAST_X)],  # as far, Periodic along x
     "empty": [(0, LAST_X), None],        # rank 1 holds no points (its arrays, empty)
     "bare": [(0, LAST_X), None],         # rank 1 holds a bare vtkImageData()
     "gap": [(0, 20), (30, LAST_X)],      # points 21 to 29 nobody's
     "arrays": [(0, 23), (23, LAST_X)],   # rank 1 holds one more array
     "grids": [(0, 23), (23, LAST_X)],    # rank 1's piece moved by half a cell
 }
-TRACED = ("far", "empty", "bare")
+TRACED = ("far", "periodic", "empty", "bare")
 DEFAULT_CASES = list(PIECES)
 MESSAGES = {"gap": "do not cover the extent", "arrays": "hold different point arrays",
             "grids": "lie on different grids"}
@@ -90,6 +96,18 @@ def rank1_piece(name, data):
     if name == "grids":
         data.SetOrigin(ORIGIN[0] + 0.5 * SPACING[0], ORIGIN[1], ORIGIN[2])
     return data
+
+
+def traced(name, source):
+    """The tracer of case `name` on `source` (the producer in situ, the
+    reader post hoc): for "periodic" the gyre drifting along x, periodic
+    there (the gyre alone never crosses its sides)."""
+    if name != "periodic":
+        return BoundParticleTracer(Input=source, **SETTINGS)
+    drifting = Calculator(Input=source, ResultArrayName="drifting",
+                          Function="velocity + 0.5*iHat")
+    return BoundParticleTracer(Input=drifting, **dict(SETTINGS, Vectors=["POINTS", "drifting"]),
+                               Periodic=[1, 0, 0])
 
 
 def step_file(work, k):
@@ -136,7 +154,7 @@ def run_case(name):
         times = [float(line.split('"')[1]) for line in pvd if "timestep=" in line]
     producer = PVTrivialProducer()
     producer.GetClientSideObject().SetWholeExtent(whole)
-    tracer = BoundParticleTracer(Input=producer, **SETTINGS)
+    tracer = traced(name, producer)
     points = 0
     started = time.time()
     with bptest.CapturedMessages() as said:
@@ -212,7 +230,7 @@ def compare(name, work, times):
     got = by_particle(servermanager.Fetch(insitu))
     flow = PVDReader(FileName=os.path.join(work, "flow.pvd"))
     flow.UpdatePipeline()
-    posthoc = BoundParticleTracer(Input=flow, **SETTINGS)
+    posthoc = traced(name, flow)
     posthoc.UpdatePipeline(times[-1])
     want = by_particle(servermanager.Fetch(posthoc))
     gap = farthest(got, want)

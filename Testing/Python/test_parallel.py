@@ -10,7 +10,9 @@ the Bound Particles display draws the same picture when the ranks' images are
 composited, with remote rendering on and off. A state saved at 0.5 resumes bit
 for bit on as many processes, and on another number (saved on 1 resumed on 2,
 saved on 2 resumed on 1 and 4) with the same elements as a trace on that
-number, within the same tolerance.
+number, within the same tolerance. Periodic along x and y, strips in a
+uniform flow are back where they were after one period, whole, on every
+number of processes, each process holding the elements of its block.
 """
 import argparse
 import json
@@ -281,6 +283,63 @@ def check_save_resume(result, name):
                  "trace that never stopped" % name)
 
 
+def check_periodic(result, run_name, ranks):
+    """Each of parallel_trace.py's periodic cases."""
+    for case in ("periodic", "periodic_mesh"):
+        check_periodic_case(result, run_name, case, ranks)
+
+
+def check_periodic_case(result, run_name, case, ranks):
+    """A periodic case of parallel_trace.py (x and y periodic, the uniform
+    flow (1, 0.5, 0) on [-10, 10] x [-5, 5] x [-2, 2]): after one period
+    every strip is back where it was, shape and all; halfway, each is whole
+    and its centre inside the box; and each process holds the elements whose
+    centres lie in its block, but for those a step took across a block's
+    side or a seam since the last exchange (within a step, 0.056, of it)."""
+    name = "%s %s" % (run_name, case)
+    if result is None or case + "_2_points" not in result.files:
+        bptest.check(False, "%s: not traced" % name)
+        return
+    start, back = result[case + "_0_points"], result[case + "_2_points"]
+    same = (numpy.array_equal(result[case + "_0_element"], result[case + "_2_element"]) and
+            start.shape == back.shape and len(start) > 0)
+    bptest.check(same, "%s: the same elements after one period" % name)
+    if not same:
+        return
+    moved = float(abs(back - start).max())
+    print("%s: back within %.3g after one period" % (name, moved))
+    bptest.check(moved < 1e-3, "%s: every strip back where it was after one period "
+                 "(%.3g)" % (name, moved))
+    middle = result[case + "_1_points"].reshape(-1, 4, 3)  # Strip4
+    centres = middle.mean(axis=1)
+    spread = float(abs(middle[:, :, :2] - centres[:, None, :2]).max())
+    print("%s: halfway, centres in x %.3f to %.3f, y %.3f to %.3f, particles within "
+          "%.3f of their centres" % (name, centres[:, 0].min(), centres[:, 0].max(),
+                                     centres[:, 1].min(), centres[:, 1].max(), spread))
+    bptest.check(spread < 1.0, "%s: a strip torn across a seam (%.3f)" % (name, spread))
+    inside = (abs(centres[:, 0]) <= 10.0).all() and (abs(centres[:, 1]) <= 5.0).all()
+    bptest.check(inside, "%s: centres outside the period" % name)
+    if ranks < 2:
+        return
+    step = 0.06
+    for k in range(3):
+        points = result["%s_%d_points" % (case, k)].reshape(-1, 4, 3).mean(axis=1)
+        process = result["%s_%d_process" % (case, k)][::4]
+        near_seam = (abs(abs(points[:, 0]) - 10.0) < step) | (abs(abs(points[:, 1]) - 5.0) < step)
+        boxes = [(points[(process == r) & ~near_seam].min(axis=0),
+                  points[(process == r) & ~near_seam].max(axis=0))
+                 for r in range(ranks) if ((process == r) & ~near_seam).any()]
+        worst = float("-inf")
+        for i, (low_a, high_a) in enumerate(boxes):
+            for low_b, high_b in boxes[i + 1:]:
+                overlap = numpy.minimum(high_a, high_b) - numpy.maximum(low_a, low_b)
+                worst = max(worst, float(overlap.min()))
+        print("%s_%d: the ranks' boxes of element centres overlap by %.3f at most" %
+              (name, k, worst))
+        bptest.check(worst <= 2 * step, "%s_%d: a rank holds elements in another's block (its "
+                     "boxes overlap by %.3f)" % (name, k, worst))
+
+
 def state_of(run_name):
     """The state parallel_trace.py saved at 0.5 in the run `run_name`."""
     return os.path.join(args.output, run_name + ".npz") + "-state.pvtp"
@@ -330,6 +389,7 @@ reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
 check_step_back(reference, "builtin")
 check_shared_start(reference, "builtin")
 check_save_resume(reference, "builtin")
+check_periodic(reference, "builtin", 1)
 
 if args.mode == "batch":
     # Each run resumes from states the runs before it saved on other numbers
@@ -346,6 +406,7 @@ if args.mode == "batch":
         check_shared_start(result, name)
         check_save_resume(result, name)
         check_resume_across(result, name, ranks, resume_from[ranks])
+        check_periodic(result, name, ranks)
         if ranks == 2:
             compare_pictures(reference_pictures, pictures, name)
 else:
@@ -396,6 +457,7 @@ else:
         check_shared_start(served, "client-server")
         check_save_resume(served, "client-server")
         check_resume_across(served, "client-server", 2, ["builtin"])
+        check_periodic(served, "client-server", 2)
         compare_pictures(reference_pictures, pictures, "client-server")
 
     client_server()

@@ -5,7 +5,9 @@ process's input differs from the others' (data on rank 0 only) must not leave
 the others waiting in a collective step: it traces, or every rank fails with
 the message (issue 27, items 2 and 11). Neither may a rank whose piece of a
 mesh is empty (a serial file read by every rank), alone or among the newest
-features in one script (issue 38, item 8).
+features in one script (issue 38, item 8). Periodic traces on several ranks,
+on an image and on a serial mesh, and warns of a seam whose planes differ
+(issue 58, item 5).
 
 Run as the driver; it runs itself under pvbatch with `--case NAME...`. The
 cases share one MPI job per rank count (an mpiexec and pvbatch start-up costs
@@ -185,8 +187,17 @@ CASES = {
     "Surface the flow runs along": (lambda: tracer(flow(Flow="Solid Body Rotation"),
                                                    SeedType="Surface", SeedSource=Plane()),
                                     0.5, False, "No flow crosses"),
-    "Periodic on several ranks": (lambda: tracer(flow(), Periodic=[1, 0, 0]), 0.5, False,
-                                  "not supported with several MPI processes"),
+    # Periodic under MPI: every rank reads the whole periodic axis and hands
+    # elements across the seam, along every axis of the ABC flow (whose
+    # planes repeat); a serial mesh, resampled, whose other ranks hold no
+    # cells, and whose seams differ: warned of after an agreement among the
+    # ranks.
+    "Periodic on several ranks": (lambda: tracer(flow(), Periodic=[1, 1, 0]), 0.5, True, None),
+    "Periodic along every axis": (lambda: tracer(flow(Flow="ABC"), Periodic=[1, 1, 1]), 0.5,
+                                  True, None),
+    "Periodic on a serial mesh": (lambda: tracer(XMLUnstructuredGridReader(
+        FileName=[os.path.join(args.meshes, "tets.vtu")]), Periodic=[1, 1, 0],
+        ResampleDimensions=[13, 13, 13]), 0.5, True, "is not a copy of its first"),
 }
 
 
