@@ -436,6 +436,12 @@ private:
   /// whole element (anchor, periodic side).
   void fillVelocity(const float* before, const float center[3], double h,
     std::vector<InteractionEvent>& events, std::size_t first) const;
+  /// settle()'s events for element e: none where the step was taken back
+  /// (`moved` null: non-finite positions); its leaving (recordLeaving) where
+  /// `leftAt` is given; then their velocity (fillVelocity).
+  void noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
+    const float* moved, const float* leftAt, bool terminated, std::vector<InteractionEvent>& events,
+    std::size_t first) const;
   /// One step's events, in any order, kept in the log at `time` (the
   /// step's end), ordered by element and particle.
   void keepInteractions(std::vector<InteractionEvent>&& events, double time);

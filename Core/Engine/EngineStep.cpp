@@ -358,8 +358,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     shareSlip(slips, n); // restored: the element moves as one body
   }
   bool leave = false, left = false; // due at once; out of the field (by resetWhen)
-  float at[3] = { 0, 0, 0 };        // the centre the reposition test read
-  float moved[3] = { 0, 0, 0 };     // the particles' mean after the step
+  float at[3] = { 0, 0, 0 }, moved[3] = { 0, 0, 0 }; // the centre tested; the particles' mean
   if (!finite)
   {
     // Keep the last good positions on view until the reset at the next step.
@@ -370,10 +369,6 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
       std::fill_n(slips, 3 * n, 0.0f);
     }
     leave = true;
-    if (events)
-    {
-      events->resize(first); // the step is taken back: nothing happened
-    }
   }
   else
   {
@@ -416,14 +411,12 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     const bool terminates = left && !leave && this->Params.boundary == Boundary::Terminate;
     const bool walled = isWall(this->Params.boundary);
     flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
-    if (events && left && !walled && !hidden)
-    {
-      this->recordLeaving(e, field, at, terminates, *events);
-    }
   }
-  if (events && events->size() > first)
+  if (events)
   {
-    this->fillVelocity(before, moved, h, *events, first);
+    const bool leaving = left && flag && !hidden && !isWall(this->Params.boundary);
+    this->noteEvents(e, field, h, before, finite ? moved : nullptr, leaving ? at : nullptr,
+      flag == Terminated, *events, first);
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);

@@ -143,6 +143,25 @@ void Engine::fillVelocity(const float* before, const float center[3], double h,
   }
 }
 
+void Engine::noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
+  const float* moved, const float* leftAt, bool terminated, std::vector<InteractionEvent>& events,
+  std::size_t first) const
+{
+  if (!moved)
+  {
+    events.resize(first); // the step is taken back: nothing happened
+    return;
+  }
+  if (leftAt)
+  {
+    this->recordLeaving(e, field, leftAt, terminated, events);
+  }
+  if (events.size() > first)
+  {
+    this->fillVelocity(before, moved, h, events, first);
+  }
+}
+
 void Engine::keepInteractions(std::vector<InteractionEvent>&& events, double time)
 {
   for (InteractionEvent& event : events)
