@@ -6,8 +6,9 @@
  * asked for whole.
  *
  * Output 0 holds the elements, output 1 the FTLE map of a lattice release
- * (TracerFtleMap.h), output 2 the trace's state (TracerState.h). One
- * execution fills the elements and the map: the port asked for gives the
+ * (TracerFtleMap.h), output 2 the trace's state (TracerState.h), output 3
+ * the events at the field's sides (TracerInteractions.h). One execution
+ * fills the elements, the map and the events: the port asked for gives the
  * time and pieces, and the others are asked alike, so that a consumer of
  * another port at the same time finds it up to date. The State output is
  * filled only when it is the port asked for (markNotGenerated): playing
@@ -31,7 +32,8 @@ enum TracerPort
   ElementsPort = 0,
   FtleMapPort = 1,
   StatePort = 2,
-  TracerPortCount = 3
+  InteractionsPort = 3,
+  TracerPortCount = 4
 };
 
 /// The output port a request came from (the elements' when it names none).

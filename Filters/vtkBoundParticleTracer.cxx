@@ -55,8 +55,9 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   , TimeLine(new bpvtk::TracerTimeLine(this))
 {
   this->SetNumberOfInputPorts(3);
-  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), and
-  // the trace's state to save (TracerPorts.h).
+  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), the
+  // trace's state to save (TracerPorts.h) and the events at the field's
+  // sides (TracerInteractions.h).
   this->SetNumberOfOutputPorts(bpvtk::TracerPortCount);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
@@ -445,9 +446,11 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, saving ? bpvtk::StatePort : 0);
   output->Initialize();
   vtkImageData* ftleMap = vtkImageData::GetData(outputVector->GetInformationObject(1));
+  vtkPolyData* interactions = vtkPolyData::GetData(outputVector, bpvtk::InteractionsPort);
   if (!saving)
   {
     ftleMap->Initialize();
+    interactions->Initialize();
     this->SetProgressShiftScale(0.0, 1.0);
   }
 
@@ -519,6 +522,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   else if (!saving)
   {
     I.showFtleMap(ftleMap);
+    I.showInteractions(interactions);
   }
   return 1;
 }

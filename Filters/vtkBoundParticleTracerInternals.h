@@ -43,6 +43,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -60,7 +61,6 @@ class vtkDataObject;
 class vtkImageData;
 class vtkInformation;
 class vtkInformationVector;
-class vtkPolyData;
 
 namespace bpvtk
 {
@@ -310,6 +310,9 @@ public:
   /// The second output after show(): the FTLE map of a lattice release
   /// (TracerFtleMap.cxx; collective in a distributed run).
   void showFtleMap(vtkImageData* image);
+  /// The fourth output after show(): the events at the field's sides so far
+  /// (TracerInteractions.cxx; collective in a distributed run).
+  void showInteractions(vtkPolyData* out);
   /// The third output, when asked for: the state at the committed step
   /// boundary (TracerResume.cxx; collective in a distributed run: process
   /// 0's holds every element).
@@ -346,6 +349,10 @@ private:
   bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
+  /// The events last gathered in a distributed run, and where the trace
+  /// stood then (its cursor's steps, short step shown, target).
+  vtkNew<vtkPolyData> Interactions;
+  std::array<double, 3> InteractionsAt = { -1.0, 0.0, 0.0 };
   /// The time the elements were last shown at (trace time), which the State
   /// output saves, and when it was shown.
   struct ShownTime
