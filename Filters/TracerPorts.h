@@ -53,9 +53,18 @@ void askAlike(vtkInformation* asked, vtkInformation* other);
  * leaves the others not generated (they keep what they hold). ParaView
  * updates every port of a source it updates (vtkSMSourceProxy::
  * UpdatePipeline), so the state is made then too: a copy of the engine's
- * state, without a step.
+ * state, without a step. The Interactions output is left not generated too
+ * by an execution for another port while nothing consumes it (fillsInteractions).
  */
 void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
+
+/**
+ * Whether an execution fills the Interactions output: it is the port asked
+ * for, or it has a consumer (a display, a filter, a writer, a fetch). So
+ * playing the animation with no consumer of it pays nothing for it, and a
+ * later request for it executes again (markNotGenerated).
+ */
+bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs);
 
 /**
  * The template (input 1) and seed (input 2) connections asked for whole on

@@ -522,7 +522,10 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   else if (!saving)
   {
     I.showFtleMap(ftleMap);
-    I.showInteractions(interactions);
+    if (bpvtk::fillsInteractions(request, outputVector))
+    {
+      I.showInteractions(interactions);
+    }
   }
   return 1;
 }

@@ -11,8 +11,11 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkPassThrough.h"
 #include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
 #include <map>
@@ -49,9 +52,12 @@ vtkSmartPointer<vtkBoundParticleTracer> tracer(vtkAlgorithm* source, bp::Boundar
   return t;
 }
 
+/// Port 3 asked for at `time` (the port a consumer of it asks).
 vtkPolyData* interactionsAt(vtkBoundParticleTracer* t, double time)
 {
-  t->UpdateTimeStep(time);
+  t->UpdateInformation();
+  t->GetOutputInformation(3)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), time);
+  t->Update(3);
   return vtkPolyData::SafeDownCast(t->GetOutputDataObject(3));
 }
 
@@ -159,4 +165,26 @@ TEST(InteractionsPort, ReleaseAgainRecordsEachElementThatLeaves)
     EXPECT_EQ(c.second, 1);
   // The elements port is the trace of before (the events change nothing).
   EXPECT_GT(t->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(InteractionsPort, IsFilledOnlyWhenAskedForOrConsumed)
+{
+  // An update for the elements with nothing consuming port 3 leaves it empty
+  // and not generated (playing pays nothing for it); asking for it then
+  // fills it at the time shown, and a consumer keeps it filled.
+  auto source = intoTheSide();
+  auto t = tracer(source, bp::Boundary::Stick);
+  t->UpdateTimeStep(1.0);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(t->GetOutputDataObject(3))->GetNumberOfPoints(), 0);
+  const std::vector<Row> asked = rows(interactionsAt(t, 1.0));
+  ASSERT_FALSE(asked.empty());
+  auto fresh = tracer(source, bp::Boundary::Stick);
+  EXPECT_EQ(asked, rows(interactionsAt(fresh, 1.0)));
+  vtkNew<vtkTrivialProducer> unused; // nothing: a consumer is any algorithm on the port
+  vtkNew<vtkPassThrough> consumer;
+  consumer->SetInputConnection(t->GetOutputPort(3));
+  t->UpdateTimeStep(2.0);
+  const std::vector<Row> consumed = rows(vtkPolyData::SafeDownCast(t->GetOutputDataObject(3)));
+  EXPECT_GT(consumed.size(), asked.size());
+  EXPECT_EQ(consumed, rows(interactionsAt(fresh, 2.0)));
 }
