@@ -21,9 +21,11 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSetGet.h"
 #include "vtkStringArray.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace bpvtk
 {
@@ -167,6 +169,40 @@ void fillInteractions(vtkPolyData* out, std::vector<bp::InteractionEvent> events
 }
 
 } // namespace bpvtk
+
+void vtkBoundParticleTracerInternals::decideInteractionsOnly()
+{
+  bp::Stepper& stepper = this->stepper();
+  const bp::TracePlan::Update& u = this->Update.decision;
+  const bp::TraceCursor& at = stepper.cursor;
+  // Shown here last by the CPU engine, which stands on the target (the short
+  // step to it shown, or a boundary there) or, where a State update took
+  // the short step back since, on the last boundary before it.
+  this->Update.interactionsOnly = !this->Plan.streaming() && this->Schedule && this->Shown.valid &&
+    this->Shown.queue == 0 && this->Shown.target == u.target && !u.replay && u.resume < 0 &&
+    at.valid && stepper.particles() &&
+    (at.showsPartialStep ||
+      this->Schedule->next(at.committed) > u.target + this->Schedule->epsilon());
+}
+
+void vtkBoundParticleTracerInternals::showInteractionsAlone(vtkPolyData* out)
+{
+  if (!this->stepper().cursor.showsPartialStep)
+  {
+    // The short step to the time shown again, as show() takes it (collective
+    // in parallel); the last update's report stays.
+    const vtkIdType steps = this->Update.stepsInLastUpdate;
+    const Pass shortStep = this->stepShort(false);
+    this->Update.stepsInLastUpdate = steps;
+    if (shortStep.kind != Pass::Done)
+    {
+      vtkErrorWithObjectMacro(this->Owner, << shortStep.message);
+      out->Initialize();
+      return;
+    }
+  }
+  this->showInteractions(out);
+}
 
 void vtkBoundParticleTracerInternals::showInteractions(vtkPolyData* out)
 {

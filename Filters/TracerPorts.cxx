@@ -64,13 +64,14 @@ bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs)
     (info && vtkExecutive::CONSUMERS()->Length(info) > 0);
 }
 
-void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs)
+void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs, bool interactionsOnly)
 {
   const bool state = askedPort(request) == StatePort;
   const bool interactions = fillsInteractions(request, outputs);
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
   {
-    if ((port == StatePort) != state || (port == InteractionsPort && !interactions))
+    if ((port == StatePort) != state || (port == InteractionsPort && !interactions) ||
+      (interactionsOnly && port != InteractionsPort))
     {
       outputs->GetInformationObject(port)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
     }

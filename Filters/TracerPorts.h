@@ -56,7 +56,11 @@ void askAlike(vtkInformation* asked, vtkInformation* other);
  * state, without a step. The Interactions output is left not generated too
  * by an execution for another port while nothing consumes it (fillsInteractions).
  */
-void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
+/// With `interactionsOnly` (an update that fills the Interactions output
+/// alone, vtkBoundParticleTracerInternals::interactionsOnly) every other
+/// output is left not generated.
+void markNotGenerated(
+  vtkInformation* request, vtkInformationVector* outputs, bool interactionsOnly = false);
 
 /**
  * Whether an execution fills the Interactions output: it is the port asked

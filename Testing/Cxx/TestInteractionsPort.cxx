@@ -174,12 +174,24 @@ TEST(InteractionsPort, IsFilledOnlyWhenAskedForOrConsumed)
   // fills it at the time shown, and a consumer keeps it filled.
   auto source = intoTheSide();
   auto t = tracer(source, bp::Boundary::Stick);
-  t->UpdateTimeStep(1.0);
+  t->UpdateTimeStep(1.05); // between two frames: a short step shown
   EXPECT_EQ(vtkPolyData::SafeDownCast(t->GetOutputDataObject(3))->GetNumberOfPoints(), 0);
-  const std::vector<Row> asked = rows(interactionsAt(t, 1.0));
+  const vtkMTimeType elements = t->GetOutput()->GetMTime();
+  const vtkIdType steps = t->GetStepsInLastUpdate();
+  const std::vector<Row> asked = rows(interactionsAt(t, 1.05));
   ASSERT_FALSE(asked.empty());
+  // The events of the time shown: nothing stepped, the elements left as they are.
+  EXPECT_EQ(t->GetOutput()->GetMTime(), elements);
+  EXPECT_EQ(t->GetStepsInLastUpdate(), steps);
   auto fresh = tracer(source, bp::Boundary::Stick);
-  EXPECT_EQ(asked, rows(interactionsAt(fresh, 1.0)));
+  EXPECT_EQ(asked, rows(interactionsAt(fresh, 1.05)));
+  // After the State output took the short step back: the same events.
+  t->UpdateInformation();
+  t->GetOutputInformation(2)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), 1.05);
+  t->Update(2);
+  EXPECT_GT(vtkPolyData::SafeDownCast(t->GetOutputDataObject(2))->GetNumberOfPoints(), 0);
+  EXPECT_EQ(rows(interactionsAt(t, 1.05)), asked);
+  EXPECT_EQ(t->GetOutput()->GetMTime(), elements);
   vtkNew<vtkTrivialProducer> unused; // nothing: a consumer is any algorithm on the port
   vtkNew<vtkPassThrough> consumer;
   consumer->SetInputConnection(t->GetOutputPort(3));
