@@ -65,8 +65,9 @@ void markNotGenerated(
 /**
  * Whether an execution fills the Interactions output: it is the port asked
  * for, or it has a consumer (a display, a filter, a writer, a fetch). So
- * playing the animation with no consumer of it pays nothing for it, and a
- * later request for it executes again (markNotGenerated).
+ * playing the animation with no consumer of it pays nothing for it: it keeps
+ * what it holds, not generated, and a later request for it executes again
+ * (markNotGenerated).
  */
 bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs);
 

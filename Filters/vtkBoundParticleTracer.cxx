@@ -460,7 +460,6 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   if (!saving)
   {
     ftleMap->Initialize();
-    vtkPolyData::GetData(outputVector, bpvtk::InteractionsPort)->Initialize();
     this->SetProgressShiftScale(0.0, 1.0);
   }
 

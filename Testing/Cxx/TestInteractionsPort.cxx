@@ -169,8 +169,8 @@ TEST(InteractionsPort, ReleaseAgainRecordsEachElementThatLeaves)
 
 TEST(InteractionsPort, IsFilledOnlyWhenAskedForOrConsumed)
 {
-  // An update for the elements with nothing consuming port 3 leaves it empty
-  // and not generated (playing pays nothing for it); asking for it then
+  // An update for the elements with nothing consuming port 3 leaves it as it
+  // was, not generated (playing pays nothing for it); asking for it then
   // fills it at the time shown, and a consumer keeps it filled.
   auto source = intoTheSide();
   auto t = tracer(source, bp::Boundary::Stick);
