@@ -38,7 +38,8 @@
  * The parameters are in EngineParameters.h; the engine's definitions are in
  * one file per role: EngineValidate.cpp (the parameter checks),
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
- * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineLinked.cpp
+ * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineWalls.cpp (the
+ * walls in a step and the events at the field's sides), EngineLinked.cpp
  * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
  * (distributed runs), EngineSaveState.cpp (a state to save and resume; the
  * state's checks are in EngineState.cpp) and Engine.cpp (trails, step 4's

@@ -3,7 +3,8 @@
 // restoration, the reposition test and the pose; and step(), which runs them
 // over the elements in visiting order, fetching ahead. The per-particle and
 // per-element functions stay in this one file with step() so that the
-// compiler inlines them into its loop.
+// compiler inlines them into its loop; the walls' (Boundary Stick, Slip,
+// Bounce) and the events' (Interactions.h) are in EngineWalls.cpp.
 #include "CounterHash.h"
 #include "Engine.h"
 #include "Pose.h"
