@@ -7,6 +7,7 @@
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
+#include "vtkInformationExecutivePortVectorKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkInformationVector.h"
@@ -56,12 +57,21 @@ void askOthersAlike(vtkInformationVector* outputs, int port)
   }
 }
 
-void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs)
+bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs)
+{
+  vtkInformation* info = outputs->GetInformationObject(InteractionsPort);
+  return askedPort(request) == InteractionsPort ||
+    (info && vtkExecutive::CONSUMERS()->Length(info) > 0);
+}
+
+void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs, bool interactionsOnly)
 {
   const bool state = askedPort(request) == StatePort;
+  const bool interactions = fillsInteractions(request, outputs);
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
   {
-    if ((port == StatePort) != state)
+    if ((port == StatePort) != state || (port == InteractionsPort && !interactions) ||
+      (interactionsOnly && port != InteractionsPort))
     {
       outputs->GetInformationObject(port)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
     }

@@ -6,8 +6,9 @@
  * asked for whole.
  *
  * Output 0 holds the elements, output 1 the FTLE map of a lattice release
- * (TracerFtleMap.h), output 2 the trace's state (TracerState.h). One
- * execution fills the elements and the map: the port asked for gives the
+ * (TracerFtleMap.h), output 2 the trace's state (TracerState.h), output 3
+ * the events at the field's sides (TracerInteractions.h). One execution
+ * fills the elements, the map and the events: the port asked for gives the
  * time and pieces, and the others are asked alike, so that a consumer of
  * another port at the same time finds it up to date. The State output is
  * filled only when it is the port asked for (markNotGenerated): playing
@@ -31,7 +32,8 @@ enum TracerPort
   ElementsPort = 0,
   FtleMapPort = 1,
   StatePort = 2,
-  TracerPortCount = 3
+  InteractionsPort = 3,
+  TracerPortCount = 4
 };
 
 /// The output port a request came from (the elements' when it names none).
@@ -51,9 +53,23 @@ void askAlike(vtkInformation* asked, vtkInformation* other);
  * leaves the others not generated (they keep what they hold). ParaView
  * updates every port of a source it updates (vtkSMSourceProxy::
  * UpdatePipeline), so the state is made then too: a copy of the engine's
- * state, without a step.
+ * state, without a step. The Interactions output is left not generated too
+ * by an execution for another port while nothing consumes it (fillsInteractions).
  */
-void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs);
+/// With `interactionsOnly` (an update that fills the Interactions output
+/// alone, vtkBoundParticleTracerInternals::interactionsOnly) every other
+/// output is left not generated.
+void markNotGenerated(
+  vtkInformation* request, vtkInformationVector* outputs, bool interactionsOnly = false);
+
+/**
+ * Whether an execution fills the Interactions output: it is the port asked
+ * for, or it has a consumer (a display, a filter, a writer, a fetch). So
+ * playing the animation with no consumer of it pays nothing for it: it keeps
+ * what it holds, not generated, and a later request for it executes again
+ * (markNotGenerated).
+ */
+bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs);
 
 /**
  * The template (input 1) and seed (input 2) connections asked for whole on

@@ -55,8 +55,9 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   , TimeLine(new bpvtk::TracerTimeLine(this))
 {
   this->SetNumberOfInputPorts(3);
-  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), and
-  // the trace's state to save (TracerPorts.h).
+  // The elements, the FTLE map of a lattice release (TracerFtleMap.h), the
+  // trace's state to save (TracerPorts.h) and the events at the field's
+  // sides (TracerInteractions.h).
   this->SetNumberOfOutputPorts(bpvtk::TracerPortCount);
   for (const bp::OutputArray& row : bp::outputArrays())
   {
@@ -327,6 +328,10 @@ int vtkBoundParticleTracer::RequestUpdateExtent(
     vtkInformation* display = outputVector->GetInformationObject(0);
     I.decide(this->Config(), outInfo,
       display->Has(GPU_WORK_QUEUE()) ? display->Get(GPU_WORK_QUEUE()) : 0, port == bpvtk::StatePort);
+    if (port == bpvtk::InteractionsPort)
+    {
+      I.decideInteractionsOnly(); // the events of the time shown: no step
+    }
   }
   // The GPU request concerns this filter only. The pipeline copies request
   // keys upstream with every update-extent request; left there, each
@@ -344,7 +349,8 @@ vtkTypeBool vtkBoundParticleTracer::ProcessRequest(
 {
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
   {
-    bpvtk::markNotGenerated(request, outputVector);
+    bpvtk::markNotGenerated(request, outputVector,
+      bpvtk::askedPort(request) == bpvtk::InteractionsPort && this->Internals->interactionsOnly());
     // Set before the executive reports 0: a state pass follows the elements'
     // update ParaView just ran, whose progress stays at its end; a new
     // update starts at 0 (a later pass of one holds the bar where it stands).
@@ -442,6 +448,12 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   using Pass = bpvtk::TracerPass;
   vtkBoundParticleTracerInternals& I = *this->Internals;
   const bpvtk::TracerConfig config = this->Config();
+  if (I.interactionsOnly() && bpvtk::askedPort(request) == bpvtk::InteractionsPort)
+  {
+    // The engine stands at the time shown: its events are the whole update.
+    I.showInteractionsAlone(vtkPolyData::GetData(outputVector, bpvtk::InteractionsPort));
+    return 1;
+  }
   // A request for the State output fills it alone (TracerPorts.h).
   const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
   vtkPolyData* output = vtkPolyData::GetData(outputVector, saving ? bpvtk::StatePort : 0);
@@ -521,6 +533,10 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
   else if (!saving)
   {
     I.showFtleMap(ftleMap);
+    if (bpvtk::fillsInteractions(request, outputVector))
+    {
+      I.showInteractions(vtkPolyData::GetData(outputVector, bpvtk::InteractionsPort));
+    }
   }
   return 1;
 }

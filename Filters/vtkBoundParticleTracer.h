@@ -365,7 +365,8 @@ public:
   /// never released again for leaving. Terminate cannot be used with
   /// Linking (a super set lives out its lifetime whole); Stick, Slip and
   /// Bounce cannot be used with Linking or Anchor = Centre. Both engines do
-  /// the same.
+  /// the same. Output 3 (Interactions) has an event for each element that
+  /// leaves and each particle's first contact with a wall (each bounce).
   // Declares SetBoundary, GetBoundary and GetBoundaryAsString.
   vtkBPEnumMacro(Boundary, bp::Boundary);
   ///@}
@@ -589,7 +590,12 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
-  /// port 2: the trace's state (vtkPolyData, filled only when it is asked for).
+  /// port 2: the trace's state (vtkPolyData, filled only when it is asked for);
+  /// port 3: Interactions, one vertex per event at the field's sides so far
+  /// (TracerInteractions.h): ElementId, ParticleIndex (-1: the element),
+  /// Time, ElementVelocity, Normal, SurfaceId (the box's sides 0..5 = -x, +x,
+  /// -y, +y, -z, +z; 6 up kept for surfaces given later) and Interaction
+  /// (0 Released, 1 Terminated, 2 Stuck, 3 Slid, 4 Bounced); CPU engine only.
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   ///@{
   /// The State output: filled only when it is asked for

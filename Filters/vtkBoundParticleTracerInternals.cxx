@@ -113,6 +113,7 @@ void vtkBoundParticleTracerInternals::decide(
   using SDDP = vtkStreamingDemandDrivenPipeline;
   this->Update.forState = forState;
   this->Update.readsShownState = false;
+  this->Update.interactionsOnly = false;
   // The State output saves what was shown last, from the stepper that
   // showed it: the display's request on the elements' output is taken back
   // once it drew, so it no longer says which.

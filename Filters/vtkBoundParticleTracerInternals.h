@@ -43,6 +43,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -60,7 +61,6 @@ class vtkDataObject;
 class vtkImageData;
 class vtkInformation;
 class vtkInformationVector;
-class vtkPolyData;
 
 namespace bpvtk
 {
@@ -136,6 +136,10 @@ struct UpdatePass
   /// A State update whose stepper, the GPU display's queue, stands on the
   /// boundary of the time shown: read back as it is, nothing recorded.
   bool readsShownState = false;
+  /// An update for the Interactions output alone whose CPU engine already
+  /// stands at the time asked, as shown (decideInteractionsOnly): its events
+  /// are filled, nothing stepped, the other outputs left as they are.
+  bool interactionsOnly = false;
 };
 
 /// In situ: the times given since the trace started (TracerInSitu.cxx),
@@ -312,6 +316,19 @@ public:
   /// The second output after show(): the FTLE map of a lattice release
   /// (TracerFtleMap.cxx; collective in a distributed run).
   void showFtleMap(vtkImageData* image);
+  /// The fourth output after show(): the events at the field's sides so far
+  /// (TracerInteractions.cxx; collective in a distributed run).
+  void showInteractions(vtkPolyData* out);
+  /// After decide(), for a request of the Interactions output: whether the
+  /// CPU engine already stands at the target as the elements were shown
+  /// there (the same trace, no replay or checkpoint), so that filling the
+  /// events is the whole update (interactionsOnly()).
+  void decideInteractionsOnly();
+  bool interactionsOnly() const { return this->Update.interactionsOnly; }
+  /// Such an update: the short step to the target taken again where a State
+  /// update took it back (its failure said, the output empty), then
+  /// showInteractions.
+  void showInteractionsAlone(vtkPolyData* out);
   /// The third output, when asked for: the state at the committed step
   /// boundary (TracerResume.cxx; collective in a distributed run: process
   /// 0's holds every element).
@@ -348,6 +365,10 @@ private:
   bpvtk::ExchangeReport Exchange; ///< the element exchange of the last steps
 
   vtkNew<vtkImageData> FtleMap; ///< the last one gathered, in a distributed run
+  /// The events last gathered in a distributed run, and where the trace
+  /// stood then (its cursor's steps, short step shown, target).
+  vtkNew<vtkPolyData> Interactions;
+  std::array<double, 3> InteractionsAt = { -1.0, 0.0, 0.0 };
   /// The time the elements were last shown at (trace time), which the State
   /// output saves, and when it was shown.
   struct ShownTime

@@ -38,7 +38,8 @@
  * The parameters are in EngineParameters.h; the engine's definitions are in
  * one file per role: EngineValidate.cpp (the parameter checks),
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
- * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineLinked.cpp
+ * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineWalls.cpp (the
+ * walls in a step and the events at the field's sides), EngineLinked.cpp
  * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
  * (distributed runs), EngineSaveState.cpp (a state to save and resume; the
  * state's checks are in EngineState.cpp) and Engine.cpp (trails, step 4's
@@ -51,6 +52,7 @@
 #include "EngineParameters.h"
 #include "EngineState.h"
 #include "Inertia.h"
+#include "Interactions.h"
 #include "Parallel.h"
 #include "ReleaseWeights.h"
 #include "StepSchedule.h"
@@ -197,6 +199,9 @@ public:
   ///@}
   /// The super set's links (empty without Linking).
   const LinkTable& links() const { return this->Links; }
+  /// The events at the field's sides since the trace started (or resumed
+  /// from a saved state), Interactions.h; a copy of the engine keeps its own.
+  const InteractionLog& interactions() const { return this->Log; }
 
   /// The global id of each element held, increasing: what its draws hash.
   const std::vector<std::uint32_t>& elementIds() const { return this->Ids; }
@@ -368,10 +373,13 @@ private:
   /// Steps 1 and 2 for element e: reset when due, then advect; keeps the
   /// positions before the step and after advection (3n floats each;
   /// `advected` may be null when nothing restores).
+  /// `events` (or null) gets the particles' wall contacts (Interactions.h).
   void resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
-    float* before, float* advected);
+    float* before, float* advected, std::vector<InteractionEvent>* events = nullptr);
+  /// Element e's step; `events` gets its events (time and velocity are
+  /// filled by settle() and step()).
   void stepElement(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
-    std::vector<float>& scratch);
+    std::vector<float>& scratch, std::vector<InteractionEvent>& events);
   /// `sampled`, when given, is the field at p at the step's start (k1).
   void advectParticle(const VectorField& field, const StepWeights& w, double h, float p[3],
     const float* sampled = nullptr) const;
@@ -394,19 +402,50 @@ private:
   /// A wall (Boundary Stick, Slip, Bounce; Walls.h) after advection for one
   /// particle: p, advected from `before`, back into the domain's box and out
   /// of cells outside the flow (back to `before` there); a heavy particle's
-  /// `slip` (or null) by the same rule on its velocity.
-  void wallParticle(const VectorField& field, const StepWeights& weights, const float before[3],
-    float p[3], float* slip) const;
+  /// `slip` (or null) by the same rule on its velocity. Returns the side the
+  /// step first met that the particle did not lie on before it (NoSide for
+  /// none, or where it went back out of a cell outside the flow), with its
+  /// point in `contact` (firstContact).
+  int wallParticle(const VectorField& field, const StepWeights& weights, const float before[3],
+    float p[3], float* slip, float contact[3]) const;
   /// The wall after restoration for element e: a particle Stick holds (on a
   /// side in `advected`, its walled position) goes back there; another
   /// pushed out of the box is put on its side, one pushed into a cell
-  /// outside the flow back to its position in `advected`.
-  void wallAfterRestoration(
-    std::size_t e, const VectorField& field, const StepWeights& weights, const float* advected);
+  /// outside the flow back to its position in `advected`. A particle put on
+  /// a side it did not lie on in `before`, with no event yet in this step
+  /// (from `first` on in `events`), gets one there.
+  void wallAfterRestoration(std::size_t e, const VectorField& field, const StepWeights& weights,
+    const float* before, const float* advected, std::vector<InteractionEvent>& events,
+    std::size_t first);
   /// Forces (unless `advected` is null), the reposition test and the
-  /// lifetime after restoration.
+  /// lifetime after restoration. With `events`: an element that left the
+  /// field (Release Again, Terminate) gets its event, and the events from
+  /// `first` on (element e's in this step) its mean velocity, or are
+  /// dropped where the step is taken back (non-finite positions).
   void settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
-    const float* before, const float* advected);
+    const float* before, const float* advected, std::vector<InteractionEvent>* events = nullptr,
+    std::size_t first = 0);
+  /// Element e left the field (its centre the reposition test read at
+  /// `at`): its event, Released or `terminated`, at that centre, on the side
+  /// it lies beyond (or, by any particle, the first particle's; NoSide for a
+  /// cell outside the flow).
+  void recordLeaving(std::size_t e, const VectorField& field, const float at[3], bool terminated,
+    std::vector<InteractionEvent>& events) const;
+  /// The events from `first` on get the element's mean velocity over the
+  /// step: its particles' mean moved from `before` to `center`.
+  /// `center` the particles' mean after the step, before any move of the
+  /// whole element (anchor, periodic side).
+  void fillVelocity(const float* before, const float center[3], double h,
+    std::vector<InteractionEvent>& events, std::size_t first) const;
+  /// settle()'s events for element e: none where the step was taken back
+  /// (`moved` null: non-finite positions); its leaving (recordLeaving) where
+  /// `leftAt` is given; then their velocity (fillVelocity).
+  void noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
+    const float* moved, const float* leftAt, bool terminated, std::vector<InteractionEvent>& events,
+    std::size_t first) const;
+  /// One step's events, in any order, kept in the log at `time` (the
+  /// step's end), ordered by element and particle.
+  void keepInteractions(std::vector<InteractionEvent>&& events, double time);
   /// Anchor::Centre: element e moved whole from its particles' mean `center`
   /// to its release centre; whether a particle is then outside the domain
   /// (tested only with `testParticles`).
@@ -501,6 +540,7 @@ private:
   int TrailNewest = -1; ///< the slot written last, -1 before any
 
   LinkTable Links;
+  InteractionLog Log; ///< interactions()
 
   /**
    * What the engine derives from its state, or writes before it reads it

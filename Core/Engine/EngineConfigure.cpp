@@ -67,6 +67,7 @@ std::string Engine::configure(const ElementTemplate& shape, const Parameters& p)
   }
   this->Shape = shape;
   this->Params = p;
+  this->Log.clear();
   this->buildSprings();
   this->buildGaussSeidelOrder();
   this->buildIncidences();

@@ -229,6 +229,7 @@ void Engine::initialize(const RangeRunner& run, double startTime, const VectorFi
   std::fill(
     this->TrailTimes.begin(), this->TrailTimes.end(), -std::numeric_limits<double>::infinity());
   this->TrailNewest = -1;
+  this->Log.clear(); // a trace's events start with it
   const bool releasing = this->releasesAt(startTime, 0.0);
   const ReleaseFlow flow{ field, field ? field->timeWeight(startTime) : 0.0f };
   run(this->elementCount(),

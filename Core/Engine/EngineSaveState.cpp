@@ -85,6 +85,8 @@ std::string Engine::loadState(const EngineState& state)
   {
     return error;
   }
+  // A resumed trace's events start at the state's time (a state holds none).
+  this->Log.clear();
   // Every element held leaves; the state's, all of them (checkEngineState),
   // come in by exchange()'s merge (which takes a super set too: nothing is
   // split here).

@@ -3,7 +3,8 @@
 // restoration, the reposition test and the pose; and step(), which runs them
 // over the elements in visiting order, fetching ahead. The per-particle and
 // per-element functions stay in this one file with step() so that the
-// compiler inlines them into its loop.
+// compiler inlines them into its loop; the walls' (Boundary Stick, Slip,
+// Bounce) and the events' (Interactions.h) are in EngineWalls.cpp.
 #include "CounterHash.h"
 #include "Engine.h"
 #include "Pose.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 namespace bp
 {
@@ -243,7 +245,7 @@ Engine::StepWeights Engine::beginStep(const VectorField& field, double t, double
 }
 
 void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepWeights& weights,
-  double h, float* before, float* advected)
+  double h, float* before, float* advected, std::vector<InteractionEvent>* events)
 {
   const std::size_t n = this->Shape.particleCount();
   if (weights.resets && (this->isDue(e)))
@@ -279,7 +281,16 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
     }
     if (walls)
     {
-      this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip);
+      InteractionEvent met;
+      met.side = std::int8_t(
+        this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip, met.position.data()));
+      if (events && met.side != NoSide)
+      {
+        met.element = this->Ids[e];
+        met.particle = std::int32_t(i);
+        met.kind = wallInteraction(this->Params.boundary);
+        events->push_back(met);
+      }
     }
   }
   if (advected)
@@ -289,7 +300,7 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
 }
 
 void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeights& weights,
-  double h, std::vector<float>& scratch)
+  double h, std::vector<float>& scratch, std::vector<InteractionEvent>& events)
 {
   const std::size_t n = this->Shape.particleCount();
   float* before = scratch.data(); // positions before the step
@@ -297,77 +308,23 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
   // force stays 0 and nothing is kept.
   const bool restores = this->restoresElements();
   float* advected = restores ? scratch.data() + 3 * n : nullptr;
-  this->resetAndAdvect(e, field, weights, h, before, advected);
+  const std::size_t first = events.size();
+  this->resetAndAdvect(e, field, weights, h, before, advected, &events);
   if (restores)
   {
     this->restore(this->Positions.data() + 3 * e * n, scratch.data() + 6 * n,
       this->Orientations.data() + 4 * e);
     if (isWall(this->Params.boundary))
     {
-      this->wallAfterRestoration(e, field, weights, advected);
+      this->wallAfterRestoration(e, field, weights, before, advected, events, first);
     }
   }
-  this->settle(e, field, weights, h, before, advected);
-}
-
-void Engine::wallParticle(const VectorField& field, const StepWeights& weights,
-  const float before[3], float p[3], float* slip) const
-{
-  if (!finite3(p))
-  {
-    return; // settle() takes the element back to its positions before the step
-  }
-  const Parameters& P = this->Params;
-  const WallHits hits =
-    wallAfterAdvection(P.boundary, P.restitution, this->domainOf(field), before, p);
-  // A cell outside the flow has no normal: the particle goes back to where
-  // it was before the step, and a heavy one stops there.
-  const bool masked = field.outsideCellAt(p, weights.end);
-  if (masked)
-  {
-    std::copy_n(before, 3, p);
-  }
-  if (slip && (hits || masked))
-  {
-    // The rule acts on the particle's velocity v = u + slip, u the flow
-    // where the wall leaves it at the step's end.
-    float u[3];
-    field.sampleWeighted(p, weights.end, u);
-    float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
-    wallVelocity(masked ? Boundary::Stick : P.boundary, P.restitution, masked ? 1u : hits, v);
-    for (int k = 0; k < 3; ++k)
-    {
-      slip[k] = v[k] - u[k];
-    }
-  }
-}
-
-void Engine::wallAfterRestoration(
-  std::size_t e, const VectorField& field, const StepWeights& weights, const float* advected)
-{
-  const std::size_t n = this->Shape.particleCount();
-  float* p = this->Positions.data() + 3 * e * n;
-  const Domain& box = this->domainOf(field);
-  const bool stick = this->Params.boundary == Boundary::Stick;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    float* q = p + 3 * i;
-    const float* a = advected + 3 * i;
-    if (stick && onWall(box, a))
-    {
-      std::copy_n(a, 3, q); // held
-      continue;
-    }
-    clampToBox(box, q);
-    if (finite3(q) && field.outsideCellAt(q, weights.end))
-    {
-      std::copy_n(a, 3, q);
-    }
-  }
+  this->settle(e, field, weights, h, before, advected, &events, first);
 }
 
 void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& weights, double h,
-  const float* before, const float* advected)
+  const float* before, const float* advected, std::vector<InteractionEvent>* events,
+  std::size_t first)
 {
   const std::size_t n = this->Shape.particleCount();
   float* p = this->Positions.data() + 3 * e * n;
@@ -402,6 +359,7 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     shareSlip(slips, n); // restored: the element moves as one body
   }
   bool leave = false, left = false; // due at once; out of the field (by resetWhen)
+  float at[3] = { 0, 0, 0 }, moved[3] = { 0, 0, 0 }; // the centre tested; the particles' mean
   if (!finite)
   {
     // Keep the last good positions on view until the reset at the next step.
@@ -417,16 +375,17 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   {
     const float count = float(n);
     const float center[3] = { c[0] / count, c[1] / count, c[2] / count };
-    const float* at = center;
+    std::copy_n(center, 3, at);
+    std::copy_n(center, 3, moved);
     float wrapped[3];
     if (anchored)
     {
-      at = this->InitialCenters.data() + 3 * e;
+      std::copy_n(this->InitialCenters.data() + 3 * e, 3, at);
       anyOutside = this->anchor(e, field, weights, center, byParticle);
     }
     else if (this->wrapPeriodic(e, field, center, wrapped))
     {
-      at = wrapped;
+      std::copy_n(wrapped, 3, at);
       anyOutside = this->anyOutside(e, field, weights, testParticles);
     }
     left = byParticle ? anyOutside : !this->inDomain(field, at, weights.end);
@@ -453,6 +412,12 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     const bool terminates = left && !leave && this->Params.boundary == Boundary::Terminate;
     const bool walled = isWall(this->Params.boundary);
     flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
+  }
+  if (events)
+  {
+    const bool leaving = left && flag && !hidden && !isWall(this->Params.boundary);
+    this->noteEvents(e, field, h, before, finite ? moved : nullptr, leaving ? at : nullptr,
+      flag == Terminated, *events, first);
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);
@@ -590,11 +555,14 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
   const std::size_t n = this->Shape.particleCount();
   const StepWeights weights = this->beginStep(field, t, h);
   const std::vector<std::uint32_t>& order = this->visitOrder(field);
+  std::vector<InteractionEvent> stepEvents;
+  std::mutex eventsLock;
   run(this->elementCount(),
     [&](std::size_t begin, std::size_t end)
     {
       // before + advected + restoration's scratch, per worker.
       std::vector<float> scratch(6 * n + this->restorationScratchFloats());
+      std::vector<InteractionEvent> events; // this range's (Interactions.h)
       for (std::size_t k = begin; k < end; ++k)
       {
         if (!order.empty())
@@ -617,14 +585,20 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
               field.prefetch(q + 3 * i);
             }
           }
-          this->stepElement(order[k], field, weights, h, scratch);
+          this->stepElement(order[k], field, weights, h, scratch, events);
         }
         else
         {
-          this->stepElement(k, field, weights, h, scratch);
+          this->stepElement(k, field, weights, h, scratch, events);
         }
       }
+      if (!events.empty())
+      {
+        const std::lock_guard<std::mutex> hold(eventsLock);
+        stepEvents.insert(stepEvents.end(), events.begin(), events.end());
+      }
     });
+  this->keepInteractions(std::move(stepEvents), t + h);
 }
 
 void Engine::prefetchElement(std::size_t e) const

@@ -1,7 +1,8 @@
 # Run from the GUI's Python shell by defaults.xml after the tracer was applied
 # to an Analytic Flow with its defaults: when the flow's outline is still shown,
-# the tracer's display is coloured by Speed and its FTLE Map (port 1, empty
-# for a random release) has no display in the view, sets the tracer's Number
+# the tracer's display is coloured by Speed and its other outputs (the FTLE
+# Map, port 1, empty for a random release; State, port 2; Interactions, port
+# 3) have no display in the view, sets the tracer's Number
 # Of Elements to 999, which defaults.xml then checks; what failed is printed.
 import gui_check
 from paraview.simple import FindSource, GetActiveView, GetDisplayProperties
@@ -20,7 +21,7 @@ for r in view.Representations:
 found = {
     "outline kept": flow.Visibility == 1 and flow.Representation == "Outline",
     "coloured by Speed": list(elements.ColorArrayName) == ["POINTS", "Speed"],
-    "FTLE map not shown": shown_ports == [0],
+    "FTLE Map, State and Interactions not shown": shown_ports == [0],
 }
 if gui_check.passed("check_defaults", found, {"ports shown": shown_ports}):
     # Number Of Elements, not Coloring Axis as the other checks: ParaView

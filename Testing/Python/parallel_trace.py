@@ -108,6 +108,12 @@ def placement_traces():
     for named in args.resume_from:
         tag, path = named.split("=", 1)
         cases["resumed_from_" + tag] = (resumable(InitialStateFile=path), [1.0])
+    # Walls: the hurricane's inflow and updraft carry crosses onto the
+    # field's sides, where Stick holds them; the Interactions output (port
+    # 3), gathered on process 0, is the same on any number of processes.
+    cases["walls"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                          NumberOfElements=400, Seed=4, Boundary="Stick",
+                                          LifetimeRange=[2, 2]), [0.5, 1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -311,6 +317,30 @@ def periodic_traces():
     return cases
 
 
+# The cases whose Interactions output (port 3) is compared: Stick's contacts,
+# and Release Again's elements leaving, back in time and straight.
+EVENT_CASES = ("walls", "back", "back_fresh")
+EVENT_ARRAYS = (("Time", 1), ("ElementId", 1), ("ParticleIndex", 1), ("Interaction", 1),
+                ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3))
+
+
+def interactions(tracer, time):
+    """Process 0's Interactions output (every process's events) at `time` as
+    rows: the point, then EVENT_ARRAYS' columns. The tracer is updated at
+    that time first: Fetch's own update asks for none, and its port would
+    stay at the time it was first fetched at."""
+    tracer.UpdatePipeline(time)
+    data = servermanager.Fetch(tracer, 0, None, 3)
+    count = data.GetNumberOfPoints()
+    columns = [vtk_to_numpy(data.GetPoints().GetData()).reshape(count, 3).astype(float)
+               if count else numpy.zeros((0, 3))]
+    for array, components in EVENT_ARRAYS:
+        values = data.GetPointData().GetArray(array)
+        columns.append(vtk_to_numpy(values).reshape(count, components).astype(float)
+                       if values is not None else numpy.zeros((count, components)))
+    return numpy.hstack(columns)
+
+
 def all_traces():
     cases = traces()
     cases.update(placement_traces())
@@ -376,6 +406,8 @@ for name, (tracer, times) in all_traces().items():
             ftle = image.GetPointData().GetArray("FTLE")
             result[key + "_map"] = (vtk_to_numpy(ftle).astype(float) if ftle is not None
                                     else numpy.zeros(0))
+        if name in EVENT_CASES:
+            result[key + "_events"] = interactions(tracer, t)
         per_process = data.GetFieldData().GetArray("ElementsPerProcess")
         if per_process is not None:
             result[key + "_per_process"] = vtk_to_numpy(per_process).astype(int)

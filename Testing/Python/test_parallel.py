@@ -207,6 +207,8 @@ def compare(reference, result, name, ranks):
                                                    1e-9)))
             print("%s %s: %d map points" % (name, key, len(reference[key])))
             bptest.check(same, "%s %s: the FTLE map differs from the built-in run's" % (name, key))
+        if key.endswith("_events"):
+            check_events(name, key, reference[key], result[key] if key in result.files else None)
         if not key.endswith("_points"):
             continue
         base = key[: -len("_points")]
@@ -245,6 +247,28 @@ def compare(reference, result, name, ranks):
             bptest.check(moved > 0, "%s %s: no element changed ranks" % (name, trace_name))
 
 
+def check_events(name, key, expected, got):
+    """The Interactions output (process 0's, every event): the same events in
+    the same order, (Time, ElementId, ParticleIndex, Interaction, SurfaceId,
+    Normal) exactly, points and velocities within the pieces' tolerance."""
+    if got is None or expected.shape != got.shape:
+        bptest.check(False, "%s %s: %s events, expected %d" %
+                     (name, key, None if got is None else len(got), len(expected)))
+        return
+    print("%s %s: %d events (%s)" % (name, key, len(got), ", ".join(
+        "%s %d" % (kind, int((got[:, 6] == k).sum())) for k, kind in
+        enumerate(("Released", "Terminated", "Stuck", "Slid", "Bounced")) if (got[:, 6] == k).any())))
+    bptest.check(numpy.array_equal(got[:, 3:11], expected[:, 3:11]),
+                 "%s %s: the events differ from the built-in run's" % (name, key))
+    if len(expected):
+        diagonal = numpy.linalg.norm(expected[:, :3].max(axis=0) - expected[:, :3].min(axis=0))
+        speed = max(float(abs(expected[:, 11:14]).max()), 1e-9)
+        bptest.check(float(abs(got[:, :3] - expected[:, :3]).max()) <= 2e-5 * max(diagonal, 1e-9),
+                     "%s %s: the events' points differ" % (name, key))
+        bptest.check(float(abs(got[:, 11:14] - expected[:, 11:14]).max()) <= 1e-3 * speed,
+                     "%s %s: the events' velocities differ" % (name, key))
+
+
 def check_step_back(result, name):
     """Back to 0.45 after 1.0 (resumed from a checkpoint) is the trace run
     straight to 0.45, bit for bit, on any number of processes."""
@@ -252,7 +276,7 @@ def check_step_back(result, name):
         bptest.check(False, "%s: no step back traced" % name)
         return
     same = all(numpy.array_equal(result["back_1" + s], result["back_fresh_0" + s])
-               for s in ("_points", "_element", "_particle", "_velocity"))
+               for s in ("_points", "_element", "_particle", "_velocity", "_events"))
     bptest.check(same, "%s: back to 0.45 after 1.0 differs from a trace straight to 0.45" % name)
 
 
