@@ -387,15 +387,13 @@ public:
   /// an unstructured input is resampled onto) repeats with a period of its
   /// extent, its last plane standing for its first: the field is sampled
   /// across the seam, and an element whose centre leaves through one side
-  /// moves whole, by one period, to the other (its springs stay short, its
-  /// shape and deformation untouched; it is never released for leaving
-  /// there). Boundary applies to the other axes' sides only. Refused along an
-  /// axis of one grid point, with Trails (a trail would cross the domain at
-  /// the jump) and with Linking (a super set's links would span the domain).
-  /// Under MPI every process holds the whole of a periodic axis (the field
-  /// across the seam; its block along the others) and hands an element that
-  /// crosses the seam to the process that owns its new centre, so the trace
-  /// is the same on any number of processes. Both engines do the same.
+  /// moves whole, by one period, to the other (its shape untouched; never
+  /// released for leaving there). Boundary applies to the other axes' sides
+  /// only. Refused along an axis of one grid point, with Trails (a trail
+  /// would cross the domain at the jump) and with Linking. Under MPI every
+  /// process holds the whole of a periodic axis and hands an element that
+  /// crosses the seam to the owner of its new centre: the same trace on any
+  /// number of processes. Both engines do the same.
   vtkSetVector3Macro(Periodic, int);
   vtkGetVector3Macro(Periodic, int);
   ///@}
@@ -592,10 +590,7 @@ protected:
   /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
   /// port 2: the trace's state (vtkPolyData, filled only when it is asked for);
   /// port 3: Interactions, one vertex per event at the field's sides so far
-  /// (TracerInteractions.h): ElementId, ParticleIndex (-1: the element),
-  /// Time, ElementVelocity, Normal, SurfaceId (the box's sides 0..5 = -x, +x,
-  /// -y, +y, -z, +z; 6 up kept for surfaces given later) and Interaction
-  /// (0 Released, 1 Terminated, 2 Stuck, 3 Slid, 4 Bounced); CPU engine only.
+  /// (TracerInteractions.h has its arrays); CPU engine only.
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   ///@{
   /// The State output: filled only when it is asked for
