@@ -234,6 +234,14 @@ void vtkBoundParticleTracerInternals::showInteractions(vtkPolyData* out)
     }
     out->ShallowCopy(this->Interactions);
   }
+  if (particles && particles->interactions().full() && this->Said.first(bpvtk::Topic::Interactions))
+  {
+    vtkWarningWithObjectMacro(this->Owner,
+      << "The Interactions output keeps the first " << particles->interactions().capacity()
+      << " events of the trace on each process (about "
+      << particles->interactions().capacity() * sizeof(bp::InteractionEvent) / (1024 * 1024)
+      << " MiB); the later ones are not recorded. Fewer elements or a shorter trace record all.");
+  }
   // The time shown, as the elements'.
   out->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->dataTarget());
 }

@@ -30,7 +30,8 @@ enum class Topic
   OutOfPlane,  ///< a flat field's crossing vectors
   GridChange,  ///< in situ, a change of grid
   CellVectors, ///< point Vectors made of a cell array
-  Emitter      ///< the emitter box moved into a changed grid (releaseIntoGrid)
+  Emitter,     ///< the emitter box moved into a changed grid (releaseIntoGrid)
+  Interactions ///< the engine's event log full (bp::InteractionLog::full)
 };
 
 class SaidOnce

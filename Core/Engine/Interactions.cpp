@@ -126,12 +126,19 @@ InteractionLog::Step::~Step()
 
 void InteractionLog::append(std::vector<InteractionEvent>&& step)
 {
-  if (step.empty())
+  const std::size_t room = this->Capacity - std::min(this->Capacity, this->size());
+  const bool leavesOut = step.size() > room;
+  if (step.empty() || (this->full() && leavesOut))
   {
-    return;
+    return; // nothing new: no events, or a full log that stays full
+  }
+  if (leavesOut)
+  {
+    step.resize(room); // the first of the step's events, in its order
   }
   auto added = std::make_shared<Step>();
   added->total = this->size() + step.size();
+  added->full = this->full() || leavesOut;
   added->events = std::move(step);
   added->previous = this->Head;
   this->Head = std::move(added);

@@ -91,13 +91,24 @@ bool interactionBefore(const InteractionEvent& a, const InteractionEvent& b);
 class InteractionLog
 {
 public:
-  /// Adds one step's events (nothing for none).
+  /// The events a log keeps at most by default (about 370 MiB): a long trace
+  /// of many elements whose every step leaves events (Release Again in an
+  /// outflow) would otherwise take memory without end.
+  static constexpr std::size_t DefaultCapacity = 8000000;
+
+  /// Adds one step's events (nothing for none); past the capacity, only
+  /// those that fit, and the log is full() from then on.
   void append(std::vector<InteractionEvent>&& step);
   /// Every event, oldest step first.
   std::vector<InteractionEvent> events() const;
   /// How many events.
   std::size_t size() const { return this->Head ? this->Head->total : 0; }
+  /// Whether a step's events were left out for the capacity.
+  bool full() const { return this->Head && this->Head->full; }
   void clear() { this->Head.reset(); }
+  /// At most this many events (kept by copies; for tests, a small one).
+  void setCapacity(std::size_t events) { this->Capacity = events; }
+  std::size_t capacity() const { return this->Capacity; }
 
 private:
   struct Step
@@ -105,6 +116,7 @@ private:
     std::vector<InteractionEvent> events;
     std::shared_ptr<const Step> previous;
     std::size_t total = 0; ///< events in this step and every one before
+    bool full = false;     ///< events of this step or one before were left out
     Step() = default;
     Step(const Step&) = delete;
     Step& operator=(const Step&) = delete;
@@ -112,6 +124,7 @@ private:
     ~Step();
   };
   std::shared_ptr<const Step> Head;
+  std::size_t Capacity = DefaultCapacity;
 };
 
 } // namespace bp

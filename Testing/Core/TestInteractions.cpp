@@ -338,3 +338,44 @@ TEST(Interactions, ALongLogIsFreedWithoutDeepRecursion)
   copy.clear(); // the last holder frees the steps one by one
   EXPECT_EQ(copy.size(), 0u);
 }
+
+TEST(Interactions, ALogKeepsTheFirstEventsUpToItsCapacity)
+{
+  // An outflow with Release Again leaves events every step of a long trace:
+  // the log stops at its capacity, keeps the first events in order, and says
+  // it is full; a copy taken before stays as it was.
+  bp::InteractionLog log;
+  EXPECT_EQ(log.capacity(), bp::InteractionLog::DefaultCapacity);
+  log.setCapacity(5);
+  auto step = [](std::uint32_t first, std::uint32_t count)
+  {
+    std::vector<bp::InteractionEvent> events(count);
+    for (std::uint32_t k = 0; k < count; ++k)
+      events[k].element = first + k;
+    return events;
+  };
+  log.append(step(0, 3));
+  const bp::InteractionLog before = log;
+  EXPECT_FALSE(log.full());
+  log.append(step(3, 4)); // two fit
+  EXPECT_TRUE(log.full());
+  EXPECT_EQ(log.size(), 5u);
+  log.append(step(7, 1));
+  EXPECT_EQ(log.size(), 5u);
+  const std::vector<bp::InteractionEvent> kept = log.events();
+  ASSERT_EQ(kept.size(), 5u);
+  for (std::uint32_t k = 0; k < 5; ++k)
+    EXPECT_EQ(kept[k].element, k);
+  EXPECT_FALSE(before.full());
+  EXPECT_EQ(before.size(), 3u);
+  // Exactly full with nothing left out is not full; the next event is.
+  bp::InteractionLog exact;
+  exact.setCapacity(3);
+  exact.append(step(0, 3));
+  EXPECT_FALSE(exact.full());
+  exact.append(step(3, 1));
+  EXPECT_TRUE(exact.full());
+  EXPECT_EQ(exact.size(), 3u);
+  log.clear();
+  EXPECT_FALSE(log.full());
+}
