@@ -401,7 +401,9 @@ for name, (tracer, times) in all_traces().items():
             if pd.GetArray(name_in) is not None:
                 result[key + suffix] = vtk_to_numpy(pd.GetArray(name_in))[order].astype(float)
         if name == "ftle":
-            # Process 0's FTLE map: the whole image (empty without a lattice release).
+            # Process 0's FTLE map: the whole image (empty without a lattice
+            # release), at t: Fetch's own update asks for no time.
+            tracer.UpdatePipeline(t)
             image = servermanager.Fetch(tracer, 0, None, 1)
             ftle = image.GetPointData().GetArray("FTLE")
             result[key + "_map"] = (vtk_to_numpy(ftle).astype(float) if ftle is not None
