@@ -413,9 +413,15 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     const bool walled = isWall(this->Params.boundary);
     flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
   }
-  if (events)
+  if (events && hidden)
   {
-    const bool leaving = left && flag && !hidden && !isWall(this->Params.boundary);
+    // An element not shown (waiting for its release window, or Terminated)
+    // is still placed and moved, but nothing it meets is an event.
+    events->resize(first);
+  }
+  else if (events)
+  {
+    const bool leaving = left && flag && !isWall(this->Params.boundary);
     this->noteEvents(e, field, h, before, finite ? moved : nullptr, leaving ? at : nullptr,
       flag == Terminated, *events, first);
   }

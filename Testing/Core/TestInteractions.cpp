@@ -379,3 +379,32 @@ TEST(Interactions, ALogKeepsTheFirstEventsUpToItsCapacity)
   log.clear();
   EXPECT_FALSE(log.full());
 }
+
+TEST(Interactions, AnElementNotShownRecordsNothing)
+{
+  // One burst at t = 0 (a release window [0, 0.05]) of strips whose
+  // leading particles reach the wall x = 1 in their first step; their
+  // lifetime ends at 0.1 and the next release waits, hidden, for a window
+  // that never comes: placed and moved every step, but not shown, so
+  // nothing after the first generation is an event (it was, every step).
+  const bp::VectorField field = uniformFlow({ 1.0f, 0.0f, 0 });
+  bp::Parameters p;
+  p.numberOfElements = 3;
+  p.elementSize = 0.5f;
+  p.emitterMin = p.emitterMax = { 0.79f, 0.0f, 0.0f };
+  p.orientation = bp::Orientation::Fixed;
+  p.lifetimeMin = p.lifetimeMax = 0.1f;
+  p.boundary = bp::Boundary::Slip;
+  p.releaseStart = 0.0;
+  p.releaseStop = 0.05;
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.initialize(bp::serialRunner());
+  const double h = 0.02;
+  run(engine, field, 0, 50, h);
+  const std::vector<bp::InteractionEvent> events = engine.interactions().events();
+  EXPECT_FALSE(events.empty()); // the first generation's contacts
+  for (const bp::InteractionEvent& x : events)
+    EXPECT_LE(x.time, 0.1 + h + 1e-9) << "an event of a hidden element";
+  EXPECT_EQ(events.size(), 6u); // two particles of each strip, once
+}
