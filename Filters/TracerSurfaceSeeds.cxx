@@ -49,6 +49,21 @@ bp::SurfaceVelocity velocityAt(const bp::VectorField& field, const bp::Domain& w
   };
 }
 
+/// How far a triangle is sampled off the surface where its centroid has no
+/// velocity: a cell's diagonal (over the axes that are not flat), `cell` the
+/// mean cell length, so the point is past the cells that straddle a mesh's
+/// side.
+double sampleStep(double cell, const bp::Domain& whole)
+{
+  int axes = 0;
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    axes += whole.degenerate[a] ? 0 : 1;
+  }
+  const double step = cell * std::sqrt(double(std::max(axes, 1)));
+  return std::isfinite(step) && step > 0.0 ? step : 0.0;
+}
+
 /// The warning about triangles left out (a corner not finite, or no flow).
 void warnOfUnusedTriangles(vtkObject* owner, const bp::SurfaceSummary& summary)
 {
@@ -107,27 +122,58 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
   const double start = this->Plan.startTime();
   const bp::SurfaceVelocity velocity = velocityAt(field, whole, this->Held.offset, start);
   const bool flip = surface->GetFlipNormals() != 0;
-  std::vector<double> weights = bp::surfaceWeights(triangles, velocity, flip);
+  // A triangle whose centroid has no velocity (a mesh's own boundary: the
+  // resampled cells across the mesh's side are outside the flow) is sampled
+  // a cell's diagonal into the flow instead, and its points put there.
+  const double step = sampleStep(this->Layout.cellLength(field.grid()), whole);
+  std::vector<int> sides = bp::surfaceSides(triangles, velocity, flip, step);
   if (distributed)
   {
-    this->Layout.globalMax(weights);
+    // The first side any process has a velocity at: the lowest.
+    std::vector<double> lowest(sides.begin(), sides.end());
+    std::transform(lowest.begin(), lowest.end(), lowest.begin(), [](double s) { return -s; });
+    this->Layout.globalMax(lowest);
+    std::transform(lowest.begin(), lowest.end(), sides.begin(), [](double s) { return int(-s); });
   }
-  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights);
+  std::vector<double> against;
+  std::vector<double> weights =
+    bp::surfaceWeights(triangles, velocity, flip, step, sides, &against);
+  if (distributed)
+  {
+    const std::size_t n = weights.size();
+    weights.insert(weights.end(), against.begin(), against.end());
+    this->Layout.globalMax(weights);
+    against.assign(weights.begin() + std::ptrdiff_t(n), weights.end());
+    weights.resize(n);
+  }
+  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights, against);
   std::string problem = bp::surfaceProblem(summary, flip);
   if (!problem.empty())
   {
     return problem;
   }
+  std::vector<double> shifts(sides.size());
+  std::transform(sides.begin(), sides.end(), shifts.begin(),
+    [step, flip](int side) { return bp::sideShift(side, step, flip); });
   seeds.xyz = bp::drawSurfacePoints(
-    triangles, weights, config.trace.engine.seed, std::min(seeds.total, bp::MaxSeedPoints));
+    triangles, weights, config.trace.engine.seed, std::min(seeds.total, bp::MaxSeedPoints), shifts);
   if (seeds.xyz.empty())
   {
     return "The flux through the Seed Source's surface is too large to weigh (it overflows a "
            "double): Seed Type Surface releases nothing. Scale the velocity down.";
   }
-  if (summary.nonFinite + summary.noVelocity > 0 && !this->Said.said(bpvtk::Topic::Seeds))
+  const std::string warning = bp::surfaceWarning(summary, flip);
+  if ((summary.nonFinite + summary.noVelocity > 0 || !warning.empty()) &&
+    !this->Said.said(bpvtk::Topic::Seeds))
   {
-    warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
+    if (summary.nonFinite + summary.noVelocity > 0)
+    {
+      warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
+    }
+    if (!warning.empty())
+    {
+      vtkWarningWithObjectMacro(this->Owner, << warning);
+    }
   }
   for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
   {
