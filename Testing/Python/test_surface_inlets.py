@@ -75,4 +75,19 @@ if len(points):
     bptest.check(own[:, 1].std() > 0.2,
                  "spread over the face (y' deviation %.3g)" % own[:, 1].std())
 Delete(tracer)
+
+# With Linking a super set is placed in the emitter box: the Surface is not
+# used, said as for the other Seed Types, and the trace runs, even where the
+# Surface would release nothing (a plane the flow runs along: it failed).
+flow = Calculator(Input=Wavelet(WholeExtent=[0, 10, 0, 10, 0, 10]), ResultArrayName="v",
+                  Function="iHat + 0.1*jHat")
+linked = BoundParticleTracer(Input=flow, Vectors=["POINTS", "v"], ElementShape="Cross",
+                             NumberOfElements=20, Linking="Chain", SeedType="Surface",
+                             SeedSource=Plane(Origin=[2, 2, 2], Point1=[8, 2, 2],
+                                              Point2=[2, 8, 2]))
+points, said = released(linked)
+bptest.check(said.mentions("the Surface is not used") and not said.mentions("ERROR") and
+             len(points) > 0, "Linking ignores the Surface (%d points; %s)" %
+             (len(points), said.messages))
+Delete(linked)
 bptest.finish()
