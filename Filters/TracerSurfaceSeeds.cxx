@@ -64,6 +64,43 @@ double sampleStep(double cell, const bp::Domain& whole)
   return std::isfinite(step) && step > 0.0 ? step : 0.0;
 }
 
+/// The triangles' weights, the other way's, and each one's step off the
+/// surface (bp::sideShift) where its velocity is taken.
+struct Weighed
+{
+  std::vector<double> weights, against, shifts;
+};
+
+/// The weights of the triangles; under MPI (`layout`) every process takes
+/// the first side any process has a velocity at (the lowest), and the
+/// largest weight over the processes.
+Weighed weigh(const std::vector<double>& triangles, const bp::SurfaceVelocity& velocity, bool flip,
+  double step, const bpvtk::PieceLayout* layout)
+{
+  std::vector<int> sides = bp::surfaceSides(triangles, velocity, flip, step);
+  if (layout)
+  {
+    std::vector<double> lowest(sides.begin(), sides.end());
+    std::transform(lowest.begin(), lowest.end(), lowest.begin(), [](double s) { return -s; });
+    layout->globalMax(lowest);
+    std::transform(lowest.begin(), lowest.end(), sides.begin(), [](double s) { return int(-s); });
+  }
+  Weighed w;
+  w.weights = bp::surfaceWeights(triangles, velocity, flip, step, sides, &w.against);
+  if (layout)
+  {
+    const std::size_t n = w.weights.size();
+    w.weights.insert(w.weights.end(), w.against.begin(), w.against.end());
+    layout->globalMax(w.weights);
+    w.against.assign(w.weights.begin() + std::ptrdiff_t(n), w.weights.end());
+    w.weights.resize(n);
+  }
+  w.shifts.resize(sides.size());
+  std::transform(sides.begin(), sides.end(), w.shifts.begin(),
+    [step, flip](int side) { return bp::sideShift(side, step, flip); });
+  return w;
+}
+
 /// The warning about triangles left out (a corner not finite, or no flow).
 void warnOfUnusedTriangles(vtkObject* owner, const bp::SurfaceSummary& summary)
 {
@@ -126,37 +163,17 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
   // resampled cells across the mesh's side are outside the flow) is sampled
   // a cell's diagonal into the flow instead, and its points put there.
   const double step = sampleStep(this->Layout.cellLength(field.grid()), whole);
-  std::vector<int> sides = bp::surfaceSides(triangles, velocity, flip, step);
-  if (distributed)
-  {
-    // The first side any process has a velocity at: the lowest.
-    std::vector<double> lowest(sides.begin(), sides.end());
-    std::transform(lowest.begin(), lowest.end(), lowest.begin(), [](double s) { return -s; });
-    this->Layout.globalMax(lowest);
-    std::transform(lowest.begin(), lowest.end(), sides.begin(), [](double s) { return int(-s); });
-  }
-  std::vector<double> against;
-  std::vector<double> weights =
-    bp::surfaceWeights(triangles, velocity, flip, step, sides, &against);
-  if (distributed)
-  {
-    const std::size_t n = weights.size();
-    weights.insert(weights.end(), against.begin(), against.end());
-    this->Layout.globalMax(weights);
-    against.assign(weights.begin() + std::ptrdiff_t(n), weights.end());
-    weights.resize(n);
-  }
-  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights, against);
+  const Weighed weighed =
+    weigh(triangles, velocity, flip, step, distributed ? &this->Layout : nullptr);
+  const std::vector<double>& weights = weighed.weights;
+  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights, weighed.against);
   std::string problem = bp::surfaceProblem(summary, flip);
   if (!problem.empty())
   {
     return problem;
   }
-  std::vector<double> shifts(sides.size());
-  std::transform(sides.begin(), sides.end(), shifts.begin(),
-    [step, flip](int side) { return bp::sideShift(side, step, flip); });
-  seeds.xyz = bp::drawSurfacePoints(
-    triangles, weights, config.trace.engine.seed, std::min(seeds.total, bp::MaxSeedPoints), shifts);
+  seeds.xyz = bp::drawSurfacePoints(triangles, weights, config.trace.engine.seed,
+    std::min(seeds.total, bp::MaxSeedPoints), weighed.shifts);
   if (seeds.xyz.empty())
   {
     return "The flux through the Seed Source's surface is too large to weigh (it overflows a "
