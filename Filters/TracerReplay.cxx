@@ -114,12 +114,7 @@ std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
   if (!config.seedSource)
   {
     this->seedTypePoints(config, field, seeds);
-    const std::string unusable =
-      config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
-    if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
-    {
-      vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
-    }
+    this->warnOfUnusableSeeds(config.seedType);
   }
   return std::string();
 }

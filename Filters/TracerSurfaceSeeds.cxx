@@ -126,22 +126,14 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
 {
   vtkBoundParticleSeedType* type = config.seedType;
   auto* surface = vtkBoundParticleSurfaceSeeds::SafeDownCast(type);
-  seeds.name = type->GetSeedTypeName();
-  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
-  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
-    ", or use fewer elements.";
-  seeds.xyz.clear();
+  nameSeeds(type, seeds);
   if (!config.seedSource || !surface)
   {
     return "Seed Type Surface releases over the Seed Source's surface, and no Seed Source is "
            "connected: nothing is released. Connect one (a Plane, or a data set whose boundary "
            "is the inlet) as the Seed Source, or choose another Seed Type.";
   }
-  const std::string unusable = surface->DescribeUnusableParameters();
-  if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
-  {
-    vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
-  }
+  this->warnOfUnusableSeeds(surface);
   std::vector<double> triangles;
   vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(
     vtkDataObject::GetData(inputVector[2], 0), triangles);
@@ -192,13 +184,6 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
       vtkWarningWithObjectMacro(this->Owner, << warning);
     }
   }
-  for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
-  {
-    const std::size_t a = i % 3;
-    if (whole.degenerate[a])
-    {
-      seeds.xyz[i] = double(whole.lower[a]) + this->Held.offset[a];
-    }
-  }
+  this->putOnFlatAxes(whole, seeds.xyz);
   return std::string();
 }

@@ -2,6 +2,7 @@
 #include "SurfaceRelease.h"
 
 #include "CounterHash.h"
+#include "Triangles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,27 +13,11 @@ namespace bp
 
 namespace
 {
-bool finiteTriangle(const double t[9])
-{
-  return std::all_of(t, t + 9, [](double x) { return std::isfinite(x); });
-}
-
-/// (b − a) × (c − a); zero where a corner is not finite.
-std::array<double, 3> doubleAreaNormal(const double t[9])
-{
-  if (!finiteTriangle(t))
-  {
-    return { 0.0, 0.0, 0.0 };
-  }
-  const double e1[3] = { t[3] - t[0], t[4] - t[1], t[5] - t[2] };
-  const double e2[3] = { t[6] - t[0], t[7] - t[1], t[8] - t[2] };
-  return { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-    e1[0] * e2[1] - e1[1] * e2[0] };
-}
+using triangles::doubleAreaNormal;
 
 double length(const std::array<double, 3>& v)
 {
-  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return std::sqrt(triangles::dot(v, v));
 }
 } // namespace
 
@@ -153,7 +138,7 @@ SurfaceSummary summarizeSurface(const std::vector<double>& triangles,
   {
     const double* t = triangles.data() + 9 * i;
     const double area = triangleArea(t);
-    if (!finiteTriangle(t))
+    if (!triangles::finite(t))
     {
       ++s.nonFinite;
     }
