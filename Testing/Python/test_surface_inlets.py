@@ -1,7 +1,11 @@
 """Seed Type Surface on a mesh's own boundary and on volumes: an inlet patch
 lying on the side of a tetrahedral box turned 30 degrees about z (its
 resampled cells there straddle the mesh's side and are outside the flow)
-is sampled a cell into the flow and releases there.
+is sampled a cell into the flow and releases there. A multiblock volume
+(two halves of a box, grouped) releases on its outer faces only, not the
+face between its blocks; a mirrored (left-handed) grid's boundary points
+outward; a plane most of whose flux crosses it against its normals is
+warned about; with Linking the Surface is not used.
 """
 import math
 import os
@@ -76,15 +80,65 @@ if len(points):
                  "spread over the face (y' deviation %.3g)" % own[:, 1].std())
 Delete(tracer)
 
+# A uniform flow along +x through the box [0, 20]^3.
+flow = Calculator(Input=Wavelet(WholeExtent=[0, 20, 0, 20, 0, 20]), ResultArrayName="v",
+                  Function="iHat")
+flow.UpdatePipeline()
+
+# Two halves of [5, 15]^3 (x below and above 10) as one multiblock, Flip
+# Normals counting the inflow: all on the x = 5 face, none on the face
+# x = 10 between the blocks (half the releases were there).
+halves = GroupDatasets(Input=[ExtractSubset(Input=flow, VOI=[5, 10, 5, 15, 5, 15]),
+                              ExtractSubset(Input=flow, VOI=[10, 15, 5, 15, 5, 15])])
+tracer = BoundParticleTracer(Input=flow, Vectors=["POINTS", "v"], ElementShape="Point",
+                             NumberOfElements=N, SeedType="Surface", SeedSource=halves, Seed=5)
+tracer.SeedType.FlipNormals = 1
+points, said = released(tracer)
+bptest.check(len(points) == N and numpy.allclose(points[:, 0], 5.0, atol=1e-4),
+             "a multiblock's inflow face only (%d points, x from %.3g to %.3g)" %
+             (len(points), points[:, 0].min() if len(points) else 0,
+              points[:, 0].max() if len(points) else 0))
+
+# The box [5, 15]^3 mirrored in x (Scale x = -1, then moved back: a
+# left-handed structured grid whose cells' faces point inward): its
+# boundary points outward all the same, so without Flip Normals the flow
+# leaves through x = 15 (it released on x = 5).
+mirrored = Transform(Input=ExtractSubset(Input=flow, VOI=[5, 15, 5, 15, 5, 15]))
+mirrored.Transform.Translate = [20, 0, 0]
+mirrored.Transform.Scale = [-1, 1, 1]
+mirrored.UpdatePipeline()
+bptest.check(mirrored.GetDataInformation().GetDataSetTypeAsString() == "vtkStructuredGrid",
+             "the mirror is a structured grid (%s)" %
+             mirrored.GetDataInformation().GetDataSetTypeAsString())
+tracer.SeedSource = mirrored
+tracer.SeedType.FlipNormals = 0
+points, said = released(tracer)
+bptest.check(len(points) == N and numpy.allclose(points[:, 0], 15.0, atol=1e-4),
+             "a left-handed grid's outflow face (%d points, x from %.3g to %.3g)" %
+             (len(points), points[:, 0].min() if len(points) else 0,
+              points[:, 0].max() if len(points) else 0))
+
+# A plane at x = 10 across v = (y - 15) / 5 along x (normal +x): along it
+# above y = 15 (a flux of 12.5 / 5), against it below (112.5 / 5): warned.
+sheared = Calculator(Input=flow, ResultArrayName="w", Function="(coordsY - 15) / 5 * iHat")
+tracer.Input = sheared
+tracer.Vectors = ["POINTS", "w"]
+tracer.SeedSource = Plane(Origin=[10, 0, 0], Point1=[10, 20, 0], Point2=[10, 0, 20],
+                          XResolution=20, YResolution=2)
+points, said = released(tracer)
+bptest.check(len(points) == N and points[:, 1].min() > 15 - 1e-4 and
+             said.mentions("Most of the flow through the Seed Source's surface crosses it "
+                           "against its normals") and said.mentions("set Flip Normals"),
+             "mostly against the normals: released where along, warned (%s)" % said.messages)
+Delete(tracer)
+
 # With Linking a super set is placed in the emitter box: the Surface is not
 # used, said as for the other Seed Types, and the trace runs, even where the
 # Surface would release nothing (a plane the flow runs along: it failed).
-flow = Calculator(Input=Wavelet(WholeExtent=[0, 10, 0, 10, 0, 10]), ResultArrayName="v",
-                  Function="iHat + 0.1*jHat")
 linked = BoundParticleTracer(Input=flow, Vectors=["POINTS", "v"], ElementShape="Cross",
                              NumberOfElements=20, Linking="Chain", SeedType="Surface",
-                             SeedSource=Plane(Origin=[2, 2, 2], Point1=[8, 2, 2],
-                                              Point2=[2, 8, 2]))
+                             SeedSource=Plane(Origin=[2, 2, 2], Point1=[18, 2, 2],
+                                              Point2=[2, 18, 2]))
 points, said = released(linked)
 bptest.check(said.mentions("the Surface is not used") and not said.mentions("ERROR") and
              len(points) > 0, "Linking ignores the Surface (%d points; %s)" %
