@@ -35,7 +35,12 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   }
   const bp::VectorField field = this->Held.cache.field(this->Held.grid, ids);
   bpvtk::TracerSeeds seeds;
-  const std::string seedError = this->gatherSeeds(config, inputVector, field, seeds);
+  // With Linking no seeds are used: a Surface is not even drawn (it may
+  // have nothing to release over), only said to be unused, as the others.
+  const bool unusedSurface =
+    config.linking() && config.seedType && config.seedType->UsesSeedSource();
+  const std::string seedError =
+    unusedSurface ? std::string() : this->gatherSeeds(config, inputVector, field, seeds);
   if (!seedError.empty())
   {
     return Pass::fail(seedError);
@@ -44,11 +49,12 @@ bpvtk::TracerPass vtkBoundParticleTracerInternals::replay(
   this->restartInSitu(config, facts);
   bp::TraceSettings settings = config.trace;
   settings.seeded = !seeds.xyz.empty() && !config.linking();
-  if (!seeds.xyz.empty() && config.linking())
+  if ((!seeds.xyz.empty() || unusedSurface) && config.linking())
   {
     vtkWarningWithObjectMacro(this->Owner,
       "Linking places each super set as one structure in the emitter box: the "
-        << seeds.name << " is not used. Set Linking to None to release from the seeds.");
+        << (unusedSurface ? config.seedType->GetSeedTypeName() : seeds.name)
+        << " is not used. Set Linking to None to release from the seeds.");
     seeds.xyz.clear();
   }
   const bp::Resolution resolved = bp::resolveSettings(settings, facts);
@@ -108,12 +114,7 @@ std::string vtkBoundParticleTracerInternals::gatherSeeds(const Config& config,
   if (!config.seedSource)
   {
     this->seedTypePoints(config, field, seeds);
-    const std::string unusable =
-      config.seedType ? config.seedType->DescribeUnusableParameters() : std::string();
-    if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
-    {
-      vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
-    }
+    this->warnOfUnusableSeeds(config.seedType);
   }
   return std::string();
 }

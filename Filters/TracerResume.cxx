@@ -4,6 +4,8 @@
 // State File. See vtkBoundParticleTracerInternals.h and TracerState.h.
 #include "vtkBoundParticleTracerInternals.h"
 
+#include "vtkBoundParticleSeedType.h"
+
 #include "EngineState.h"
 #include "TracerState.h"
 
@@ -42,6 +44,14 @@ std::vector<bp::NamedValue> withoutTimeSteps(std::vector<bp::NamedValue> values)
 {
   values.erase(std::remove_if(values.begin(), values.end(),
                  [](const bp::NamedValue& v) { return namesTimeSteps(v.name); }),
+    values.end());
+  return values;
+}
+/// Only the seed points' values (their count and hash) of a state's settings.
+std::vector<bp::NamedValue> seedPointValues(std::vector<bp::NamedValue> values)
+{
+  values.erase(std::remove_if(values.begin(), values.end(),
+                 [](const bp::NamedValue& v) { return v.name.rfind("seedPoints", 0) != 0; }),
     values.end());
   return values;
 }
@@ -89,6 +99,19 @@ std::string vtkBoundParticleTracerInternals::stateMismatch(const Config& config,
   if (difference.empty())
   {
     difference = bp::firstDifference(state.parameters, bp::parameterValues(p), "the setting");
+    if (restart && !difference.empty() && config.seedType && config.seedType->UsesSeedSource() &&
+      !bp::firstDifference(
+        seedPointValues(state.parameters), seedPointValues(bp::parameterValues(p)), "")
+         .empty())
+    {
+      // A state keeps only the seed points' count and hash; a Surface draws
+      // them from the flow at the first step handed, here the restart step
+      // (the emitter box, fitted around them, is named first).
+      difference += " (Seed Type Surface draws its points from the flow at the trace's first "
+                    "step, after a restart in situ the restart step's, and the state keeps none: "
+                    "where the flux through the surface changed since the saved trace's start, "
+                    "it cannot go on from the state; use a Point Cloud or a Line to restart)";
+    }
   }
   if (difference.empty() &&
     (state.scheduleStart != this->Resolved.scheduleStart || state.dt != this->Resolved.dt))

@@ -175,6 +175,40 @@ std::string vtkBoundParticleTracerInternals::readSeeds(
   return std::string();
 }
 
+void vtkBoundParticleTracerInternals::nameSeeds(
+  vtkBoundParticleSeedType* type, bpvtk::TracerSeeds& seeds)
+{
+  seeds.name = type->GetSeedTypeName();
+  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
+  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
+    ", or use fewer elements.";
+  seeds.xyz.clear();
+}
+
+void vtkBoundParticleTracerInternals::putOnFlatAxes(
+  const bp::Domain& domain, std::vector<double>& xyz) const
+{
+  // On a 2D slice the seeds lie in its plane, as the emitter box does (it is
+  // clamped to the field's bounds): elsewhere no element would be released.
+  for (std::size_t i = 0; i < xyz.size(); ++i)
+  {
+    const std::size_t a = i % 3;
+    if (domain.degenerate[a])
+    {
+      xyz[i] = double(domain.lower[a]) + this->Held.offset[a];
+    }
+  }
+}
+
+void vtkBoundParticleTracerInternals::warnOfUnusableSeeds(vtkBoundParticleSeedType* type)
+{
+  const std::string unusable = type ? type->DescribeUnusableParameters() : std::string();
+  if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
+  {
+    vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
+  }
+}
+
 void vtkBoundParticleTracerInternals::seedTypePoints(
   const Config& config, const bp::VectorField& field, bpvtk::TracerSeeds& seeds) const
 {
@@ -185,28 +219,11 @@ void vtkBoundParticleTracerInternals::seedTypePoints(
   }
   // The whole field's flat axes, as every process sees them.
   const bp::Domain& domain = this->Layout.distributed() ? this->Layout.Domain : field.domain();
-  bool flat[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    flat[a] = domain.degenerate[a];
-  }
-  seeds.name = type->GetSeedTypeName();
-  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
-  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
-    ", or use fewer elements.";
-  seeds.xyz.clear();
+  const bool flat[3] = { domain.degenerate[0], domain.degenerate[1], domain.degenerate[2] };
+  nameSeeds(type, seeds);
   // Only what releases can take: a Resolution of a billion costs no memory.
   type->AppendPoints(config.trace.engine.seed, flat, vtkIdType(bp::MaxSeedPoints), seeds.xyz);
-  // On a 2D slice the seeds lie in its plane, as the emitter box does (it is
-  // clamped to the field's bounds): elsewhere no element would be released.
-  for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
-  {
-    const std::size_t a = i % 3;
-    if (flat[a])
-    {
-      seeds.xyz[i] = double(domain.lower[a]) + this->Held.offset[a];
-    }
-  }
+  this->putOnFlatAxes(domain, seeds.xyz);
 }
 
 std::string vtkBoundParticleTracerInternals::seedPoints(

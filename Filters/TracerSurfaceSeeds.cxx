@@ -49,6 +49,58 @@ bp::SurfaceVelocity velocityAt(const bp::VectorField& field, const bp::Domain& w
   };
 }
 
+/// How far a triangle is sampled off the surface where its centroid has no
+/// velocity: a cell's diagonal (over the axes that are not flat), `cell` the
+/// mean cell length, so the point is past the cells that straddle a mesh's
+/// side.
+double sampleStep(double cell, const bp::Domain& whole)
+{
+  int axes = 0;
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    axes += whole.degenerate[a] ? 0 : 1;
+  }
+  const double step = cell * std::sqrt(double(std::max(axes, 1)));
+  return std::isfinite(step) && step > 0.0 ? step : 0.0;
+}
+
+/// The triangles' weights, the other way's, and each one's step off the
+/// surface (bp::sideShift) where its velocity is taken.
+struct Weighed
+{
+  std::vector<double> weights, against, shifts;
+};
+
+/// The weights of the triangles; under MPI (`layout`) every process takes
+/// the first side any process has a velocity at (the lowest), and the
+/// largest weight over the processes.
+Weighed weigh(const std::vector<double>& triangles, const bp::SurfaceVelocity& velocity, bool flip,
+  double step, const bpvtk::PieceLayout* layout)
+{
+  std::vector<int> sides = bp::surfaceSides(triangles, velocity, flip, step);
+  if (layout)
+  {
+    std::vector<double> lowest(sides.begin(), sides.end());
+    std::transform(lowest.begin(), lowest.end(), lowest.begin(), [](double s) { return -s; });
+    layout->globalMax(lowest);
+    std::transform(lowest.begin(), lowest.end(), sides.begin(), [](double s) { return int(-s); });
+  }
+  Weighed w;
+  w.weights = bp::surfaceWeights(triangles, velocity, flip, step, sides, &w.against);
+  if (layout)
+  {
+    const std::size_t n = w.weights.size();
+    w.weights.insert(w.weights.end(), w.against.begin(), w.against.end());
+    layout->globalMax(w.weights);
+    w.against.assign(w.weights.begin() + std::ptrdiff_t(n), w.weights.end());
+    w.weights.resize(n);
+  }
+  w.shifts.resize(sides.size());
+  std::transform(sides.begin(), sides.end(), w.shifts.begin(),
+    [step, flip](int side) { return bp::sideShift(side, step, flip); });
+  return w;
+}
+
 /// The warning about triangles left out (a corner not finite, or no flow).
 void warnOfUnusedTriangles(vtkObject* owner, const bp::SurfaceSummary& summary)
 {
@@ -74,22 +126,14 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
 {
   vtkBoundParticleSeedType* type = config.seedType;
   auto* surface = vtkBoundParticleSurfaceSeeds::SafeDownCast(type);
-  seeds.name = type->GetSeedTypeName();
-  seeds.total = std::size_t(std::max<vtkIdType>(type->GetNumberOfSeedPoints(), 0));
-  seeds.advice = std::string("Raise the ") + seeds.name + "'s " + type->GetPointCountName() +
-    ", or use fewer elements.";
-  seeds.xyz.clear();
+  nameSeeds(type, seeds);
   if (!config.seedSource || !surface)
   {
     return "Seed Type Surface releases over the Seed Source's surface, and no Seed Source is "
            "connected: nothing is released. Connect one (a Plane, or a data set whose boundary "
            "is the inlet) as the Seed Source, or choose another Seed Type.";
   }
-  const std::string unusable = surface->DescribeUnusableParameters();
-  if (!unusable.empty() && !this->Said.said(bpvtk::Topic::Seeds))
-  {
-    vtkWarningWithObjectMacro(this->Owner, << unusable); // once, as the seeds' other warnings
-  }
+  this->warnOfUnusableSeeds(surface);
   std::vector<double> triangles;
   vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(
     vtkDataObject::GetData(inputVector[2], 0), triangles);
@@ -107,35 +151,39 @@ std::string vtkBoundParticleTracerInternals::surfaceSeedPoints(const Config& con
   const double start = this->Plan.startTime();
   const bp::SurfaceVelocity velocity = velocityAt(field, whole, this->Held.offset, start);
   const bool flip = surface->GetFlipNormals() != 0;
-  std::vector<double> weights = bp::surfaceWeights(triangles, velocity, flip);
-  if (distributed)
-  {
-    this->Layout.globalMax(weights);
-  }
-  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights);
+  // A triangle whose centroid has no velocity (a mesh's own boundary: the
+  // resampled cells across the mesh's side are outside the flow) is sampled
+  // a cell's diagonal into the flow instead, and its points put there.
+  const double step = sampleStep(this->Layout.cellLength(field.grid()), whole);
+  const Weighed weighed =
+    weigh(triangles, velocity, flip, step, distributed ? &this->Layout : nullptr);
+  const std::vector<double>& weights = weighed.weights;
+  const bp::SurfaceSummary summary = bp::summarizeSurface(triangles, weights, weighed.against);
   std::string problem = bp::surfaceProblem(summary, flip);
   if (!problem.empty())
   {
     return problem;
   }
-  seeds.xyz = bp::drawSurfacePoints(
-    triangles, weights, config.trace.engine.seed, std::min(seeds.total, bp::MaxSeedPoints));
+  seeds.xyz = bp::drawSurfacePoints(triangles, weights, config.trace.engine.seed,
+    std::min(seeds.total, bp::MaxSeedPoints), weighed.shifts);
   if (seeds.xyz.empty())
   {
     return "The flux through the Seed Source's surface is too large to weigh (it overflows a "
            "double): Seed Type Surface releases nothing. Scale the velocity down.";
   }
-  if (summary.nonFinite + summary.noVelocity > 0 && !this->Said.said(bpvtk::Topic::Seeds))
+  const std::string warning = bp::surfaceWarning(summary, flip);
+  if ((summary.nonFinite + summary.noVelocity > 0 || !warning.empty()) &&
+    !this->Said.said(bpvtk::Topic::Seeds))
   {
-    warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
-  }
-  for (std::size_t i = 0; i < seeds.xyz.size(); ++i)
-  {
-    const std::size_t a = i % 3;
-    if (whole.degenerate[a])
+    if (summary.nonFinite + summary.noVelocity > 0)
     {
-      seeds.xyz[i] = double(whole.lower[a]) + this->Held.offset[a];
+      warnOfUnusedTriangles(this->Owner, summary); // once, as the seeds' other warnings
+    }
+    if (!warning.empty())
+    {
+      vtkWarningWithObjectMacro(this->Owner, << warning);
     }
   }
+  this->putOnFlatAxes(whole, seeds.xyz);
   return std::string();
 }

@@ -53,7 +53,10 @@ public:
    * Seed, for seeds drawn at random: the same seed gives the same points.
    * `flat[a]` says the field has a single point along axis a (a 2D slice):
    * seeds spread over the other axes only, and the caller puts them on the
-   * field's plane.
+   * field's plane. The exception: seeds that use the Seed Source
+   * (UsesSeedSource(), the Surface) need it and the field, which this does
+   * not see; they append nothing here, and the tracer draws their points
+   * itself (vtkBoundParticleTracerInternals::surfaceSeedPoints).
    */
   virtual void AppendPoints(
     std::uint32_t seed, const bool flat[3], vtkIdType maxPoints, std::vector<double>& xyz) = 0;

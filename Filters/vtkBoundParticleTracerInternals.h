@@ -502,6 +502,15 @@ private:
   /// every process; along the field's flat axes they lie on its plane.
   void seedTypePoints(
     const Config& config, const bp::VectorField& field, bpvtk::TracerSeeds& seeds) const;
+  /// `seeds` emptied and named after `type` (its name, its point count, the
+  /// advice when elements share points): shared by every Seed Type.
+  static void nameSeeds(vtkBoundParticleSeedType* type, bpvtk::TracerSeeds& seeds);
+  /// Puts the points `xyz` (world coordinates) on the field's plane along
+  /// its flat axes (`domain`, the whole field's), as the emitter box is.
+  void putOnFlatAxes(const bp::Domain& domain, std::vector<double>& xyz) const;
+  /// The Seed Type's DescribeUnusableParameters, warned once (as the seeds'
+  /// other warnings); nothing when it has nothing to say.
+  void warnOfUnusableSeeds(vtkBoundParticleSeedType* type);
   /// Seed Type Surface: its points drawn over the Seed Source's surface by
   /// the flux through it at the trace's start (TracerSurfaceSeeds.cxx,
   /// collective in parallel); an error when nothing can be released.

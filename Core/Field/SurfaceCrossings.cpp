@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SurfaceCrossings.h"
 
+#include "Triangles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,20 +11,10 @@ namespace bp
 {
 namespace
 {
-using Vec = std::array<double, 3>;
-
-Vec sub(const double* a, const double* b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using triangles::cross;
+using triangles::dot;
+using triangles::sub;
+using Vec = triangles::Vec;
 
 /// How far outside a triangle's edges a hit may lie, in barycentric units,
 /// and still count: a segment through a shared edge, computed from either
@@ -70,14 +62,10 @@ SurfaceCrossings::SurfaceCrossings(
   for (std::size_t k = 0; k < given; ++k)
   {
     double v[9];
-    bool finite = true;
-    for (int i = 0; i < 9; ++i)
-    {
-      v[i] = corners[9 * k + std::size_t(i)];
-      finite = finite && std::isfinite(v[i]);
-    }
-    const Vec n = finite ? cross(sub(v + 3, v), sub(v + 6, v)) : Vec{ 0, 0, 0 };
-    if (!finite || !(dot(n, n) > 0.0) || !std::isfinite(dot(n, n)))
+    std::copy(
+      corners.begin() + std::ptrdiff_t(9 * k), corners.begin() + std::ptrdiff_t(9 * k + 9), v);
+    const Vec n = triangles::doubleAreaNormal(v);
+    if (!triangles::finite(v) || !(dot(n, n) > 0.0) || !std::isfinite(dot(n, n)))
     {
       ++this->Dropped;
       continue;

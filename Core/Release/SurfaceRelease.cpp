@@ -2,6 +2,7 @@
 #include "SurfaceRelease.h"
 
 #include "CounterHash.h"
+#include "Triangles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,27 +13,11 @@ namespace bp
 
 namespace
 {
-bool finiteTriangle(const double t[9])
-{
-  return std::all_of(t, t + 9, [](double x) { return std::isfinite(x); });
-}
-
-/// (b − a) × (c − a); zero where a corner is not finite.
-std::array<double, 3> doubleAreaNormal(const double t[9])
-{
-  if (!finiteTriangle(t))
-  {
-    return { 0.0, 0.0, 0.0 };
-  }
-  const double e1[3] = { t[3] - t[0], t[4] - t[1], t[5] - t[2] };
-  const double e2[3] = { t[6] - t[0], t[7] - t[1], t[8] - t[2] };
-  return { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-    e1[0] * e2[1] - e1[1] * e2[0] };
-}
+using triangles::doubleAreaNormal;
 
 double length(const std::array<double, 3>& v)
 {
-  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return std::sqrt(triangles::dot(v, v));
 }
 } // namespace
 
@@ -70,10 +55,62 @@ double fluxWeight(const double t[9], const double u[3], bool flip)
   return std::isfinite(w) ? w : 0.0;
 }
 
-std::vector<double> surfaceWeights(
-  const std::vector<double>& triangles, const SurfaceVelocity& velocity, bool flip)
+double sideShift(int side, double step, bool flip)
 {
+  const double along = flip ? -step : step;
+  return side == IntoFlux ? along : side == AgainstFlux ? -along : 0.0;
+}
+
+namespace
+{
+/// The velocity where `side` samples triangle t; false where there is none.
+bool sampleSide(
+  const double t[9], int side, double step, bool flip, const SurfaceVelocity& velocity, double u[3])
+{
+  std::array<double, 3> x = triangleCentroid(t);
+  const std::array<double, 3> n = triangleNormal(t);
+  const double shift = sideShift(side, step, flip);
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    x[a] += shift * n[a];
+  }
+  u[0] = u[1] = u[2] = 0.0;
+  return velocity(x, u) && std::isfinite(u[0]) && std::isfinite(u[1]) && std::isfinite(u[2]);
+}
+} // namespace
+
+std::vector<int> surfaceSides(
+  const std::vector<double>& triangles, const SurfaceVelocity& velocity, bool flip, double step)
+{
+  std::vector<int> sides(triangles.size() / 9, NoSample);
+  const int last = step > 0.0 && std::isfinite(step) ? AgainstFlux : AtCentroid;
+  for (std::size_t i = 0; i < sides.size(); ++i)
+  {
+    const double* t = triangles.data() + 9 * i;
+    double u[3];
+    for (int side = AtCentroid; triangleArea(t) > 0.0 && side <= last; ++side)
+    {
+      if (sampleSide(t, side, step, flip, velocity, u))
+      {
+        sides[i] = side;
+        break;
+      }
+    }
+  }
+  return sides;
+}
+
+std::vector<double> surfaceWeights(const std::vector<double>& triangles,
+  const SurfaceVelocity& velocity, bool flip, double step, const std::vector<int>& sides,
+  std::vector<double>* against)
+{
+  const std::vector<int> own =
+    sides.size() == triangles.size() / 9 ? sides : surfaceSides(triangles, velocity, flip, step);
   std::vector<double> weights(triangles.size() / 9, 0.0);
+  if (against)
+  {
+    against->assign(weights.size(), 0.0);
+  }
   for (std::size_t i = 0; i < weights.size(); ++i)
   {
     const double* t = triangles.data() + 9 * i;
@@ -81,16 +118,19 @@ std::vector<double> surfaceWeights(
     {
       continue; // no area, or a corner not finite: 0
     }
-    double u[3] = { 0.0, 0.0, 0.0 };
-    const bool has = velocity(triangleCentroid(t), u) && std::isfinite(u[0]) &&
-      std::isfinite(u[1]) && std::isfinite(u[2]);
+    double u[3];
+    const bool has = own[i] != NoSample && sampleSide(t, own[i], step, flip, velocity, u);
     weights[i] = has ? fluxWeight(t, u, flip) : NoVelocity;
+    if (against)
+    {
+      (*against)[i] = has ? fluxWeight(t, u, !flip) : NoVelocity;
+    }
   }
   return weights;
 }
 
-SurfaceSummary summarizeSurface(
-  const std::vector<double>& triangles, const std::vector<double>& weights)
+SurfaceSummary summarizeSurface(const std::vector<double>& triangles,
+  const std::vector<double>& weights, const std::vector<double>& against)
 {
   SurfaceSummary s;
   s.triangles = std::min(triangles.size() / 9, weights.size());
@@ -98,7 +138,7 @@ SurfaceSummary summarizeSurface(
   {
     const double* t = triangles.data() + 9 * i;
     const double area = triangleArea(t);
-    if (!finiteTriangle(t))
+    if (!triangles::finite(t))
     {
       ++s.nonFinite;
     }
@@ -114,6 +154,10 @@ SurfaceSummary summarizeSurface(
     {
       ++s.crossing;
       s.total += weights[i];
+    }
+    if (i < against.size() && against[i] > 0.0)
+    {
+      s.against += against[i];
     }
     s.area += area;
   }
@@ -151,9 +195,32 @@ std::string surfaceProblem(const SurfaceSummary& s, bool flip)
     out << "No flow crosses the Seed Source's surface along its " << (flip ? "flipped " : "")
         << "normals at the trace's start (max(0, u·n) is 0 on each of its "
         << s.triangles - s.nonFinite - s.noArea - s.noVelocity << " triangles in the flow)"
-        << nothing << " " << (flip ? "Unset" : "Set")
-        << " the Surface's Flip Normals if the flow crosses it the other way, or use another "
-           "Seed Type.";
+        << nothing << " ";
+    if (s.against > 0.0)
+    {
+      out << "The flow crosses it the other way (a flux of " << s.against << " against its "
+          << (flip ? "flipped " : "") << "normals). " << (flip ? "Unset" : "Set")
+          << " the Surface's Flip Normals.";
+    }
+    else
+    {
+      out << "No flow crosses it the other way either: it runs along the surface. Move the "
+             "surface across the flow, or use another Seed Type.";
+    }
+  }
+  return out.str();
+}
+
+std::string surfaceWarning(const SurfaceSummary& s, bool flip)
+{
+  std::ostringstream out;
+  if (s.total > 0.0 && s.against > AgainstFluxRatio * s.total)
+  {
+    out << "Most of the flow through the Seed Source's surface crosses it against its "
+        << (flip ? "flipped " : "") << "normals (a flux of " << s.against << " against, " << s.total
+        << " along): the Surface releases only where it crosses along them. The "
+        << "surface's normals may be inconsistent, or " << (flip ? "unset" : "set")
+        << " Flip Normals.";
   }
   return out.str();
 }
@@ -198,7 +265,8 @@ std::size_t pickWeighted(const std::vector<double>& cumulative, double r)
 }
 
 std::vector<double> drawSurfacePoints(const std::vector<double>& triangles,
-  const std::vector<double>& weights, std::uint32_t seed, std::size_t count)
+  const std::vector<double>& weights, std::uint32_t seed, std::size_t count,
+  const std::vector<double>& shifts)
 {
   const std::size_t n = std::min(triangles.size() / 9, weights.size());
   std::vector<double> cumulative(n);
@@ -218,8 +286,17 @@ std::vector<double> drawSurfacePoints(const std::vector<double>& triangles,
   {
     const std::uint32_t point = std::uint32_t(p);
     const std::size_t i = pickWeighted(cumulative, surfaceDraw(seed, point, 0));
-    const std::array<double, 3> x = pointInTriangle(
-      triangles.data() + 9 * i, surfaceDraw(seed, point, 1), surfaceDraw(seed, point, 2));
+    const double* t = triangles.data() + 9 * i;
+    std::array<double, 3> x =
+      pointInTriangle(t, surfaceDraw(seed, point, 1), surfaceDraw(seed, point, 2));
+    if (i < shifts.size() && shifts[i] != 0.0 && std::isfinite(shifts[i]))
+    {
+      const std::array<double, 3> n = triangleNormal(t);
+      for (std::size_t a = 0; a < 3; ++a)
+      {
+        x[a] += shifts[i] * n[a];
+      }
+    }
     xyz.insert(xyz.end(), x.begin(), x.end());
   }
   return xyz;

@@ -52,11 +52,44 @@ double fluxWeight(const double t[9], const double u[3], bool flip);
 /// The velocity at a point (world coordinates); false where there is none.
 using SurfaceVelocity = std::function<bool(const std::array<double, 3>& x, double u[3])>;
 
-/// Each triangle's weight (9 coordinates a triangle in `triangles`):
-/// fluxWeight at its centroid's velocity, NoVelocity where `velocity` has
-/// none there, 0 for a triangle with no area or a non-finite corner.
-std::vector<double> surfaceWeights(
-  const std::vector<double>& triangles, const SurfaceVelocity& velocity, bool flip);
+/**
+ * Where a triangle's velocity is sampled, tried in this order: at its
+ * centroid; where that has no velocity (a mesh's own boundary, whose
+ * resampled cells straddle the mesh's side and are outside the flow), a
+ * step into the side the flux counts towards (n, or −n with flip), then a
+ * step the other way. NoSample: none of the three has a velocity (or the
+ * triangle has no area). Ordered, so the lowest over processes is the one
+ * every process takes.
+ */
+enum SurfaceSide : int
+{
+  AtCentroid = 0,
+  IntoFlux = 1,
+  AgainstFlux = 2,
+  NoSample = 3
+};
+
+/// The signed distance along the triangle's own normal n at which `side`
+/// samples, `step` the step's length (0 at the centroid and for NoSample).
+double sideShift(int side, double step, bool flip);
+
+/// Each triangle's SurfaceSide: the first of the centroid, the centroid
+/// moved by `step` along the flux's side of n, then the other way, where
+/// `velocity` has one (`step` 0: the centroid only).
+std::vector<int> surfaceSides(
+  const std::vector<double>& triangles, const SurfaceVelocity& velocity, bool flip, double step);
+
+/**
+ * Each triangle's weight (9 coordinates a triangle in `triangles`):
+ * fluxWeight at the velocity where its side (`sides`, SurfaceSide; empty:
+ * surfaceSides with this `step`) samples, NoVelocity where `velocity` has
+ * none there, 0 for a triangle with no area or a non-finite corner. With
+ * `against`, also the weights the other way (fluxWeight with !flip, at the
+ * same velocities: the flux against the normals counted).
+ */
+std::vector<double> surfaceWeights(const std::vector<double>& triangles,
+  const SurfaceVelocity& velocity, bool flip, double step = 0.0, const std::vector<int>& sides = {},
+  std::vector<double>* against = nullptr);
 
 /// What a surface's weights say, for the messages.
 struct SurfaceSummary
@@ -68,9 +101,23 @@ struct SurfaceSummary
   std::size_t crossing = 0;   ///< with weight above 0
   double area = 0.0;          ///< total area of the finite triangles
   double total = 0.0;         ///< total weight (the flux)
+  /// The flux the other way, Σ max(0, ∓u · n) × area (from the weights
+  /// with flip reversed; 0 where none are given).
+  double against = 0.0;
 };
-SurfaceSummary summarizeSurface(
-  const std::vector<double>& triangles, const std::vector<double>& weights);
+/// `against`: the weights the other way (surfaceWeights' `against`), or empty.
+SurfaceSummary summarizeSurface(const std::vector<double>& triangles,
+  const std::vector<double>& weights, const std::vector<double>& against = {});
+
+/// A flux against the normals above this many times the flux along them is
+/// warned about (surfaceWarning): more than two thirds of the flux through
+/// the surface crosses it the other way. A closed volume's boundary, where
+/// inflow and outflow balance, stays below.
+constexpr double AgainstFluxRatio = 2.0;
+
+/// The warning about a surface most of whose flux crosses it against the
+/// normals counted (s.against above AgainstFluxRatio × s.total), or empty.
+std::string surfaceWarning(const SurfaceSummary& s, bool flip);
 
 /**
  * Why nothing can be released from the surface `name` names ("the Seed
@@ -96,11 +143,14 @@ std::size_t pickWeighted(const std::vector<double>& cumulative, double r);
 /**
  * `count` points (3 doubles each) over the triangles, point i in the
  * triangle picked by draw 0 of point i in proportion to its weight (weights
- * below 0 count as 0), uniform in it by draws 1 and 2. None where no weight
- * is above 0.
+ * below 0 count as 0), uniform in it by draws 1 and 2, then moved by
+ * shifts[i] along the triangle's normal n (`shifts`: one per triangle,
+ * sideShift of where its velocity was sampled, so the point starts in the
+ * flow; empty: none). None where no weight is above 0.
  */
 std::vector<double> drawSurfacePoints(const std::vector<double>& triangles,
-  const std::vector<double>& weights, std::uint32_t seed, std::size_t count);
+  const std::vector<double>& weights, std::uint32_t seed, std::size_t count,
+  const std::vector<double>& shifts = {});
 
 } // namespace bp
 

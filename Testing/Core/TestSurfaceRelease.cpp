@@ -103,7 +103,11 @@ TEST(SurfaceRelease, WeightsAndSummary)
 TEST(SurfaceRelease, ProblemsSayWhyNothingIsReleased)
 {
   auto problem = [](const std::vector<double>& t, const bp::SurfaceVelocity& v, bool flip)
-  { return bp::surfaceProblem(bp::summarizeSurface(t, bp::surfaceWeights(t, v, flip)), flip); };
+  {
+    std::vector<double> against;
+    const std::vector<double> w = bp::surfaceWeights(t, v, flip, 0.0, {}, &against);
+    return bp::surfaceProblem(bp::summarizeSurface(t, w, against), flip);
+  };
   EXPECT_NE(problem({}, linearFlow(), false).find("no surface with area"), std::string::npos);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(problem({ nan, 0, 0, 1, 0, 0, 0, 1, 0 }, linearFlow(), false).find("not finite"),
@@ -115,7 +119,9 @@ TEST(SurfaceRelease, ProblemsSayWhyNothingIsReleased)
   // The flow leaves through the side the normals point away from.
   const std::string against = problem(strips(3), linearFlow(), true);
   EXPECT_NE(against.find("No flow crosses"), std::string::npos);
-  EXPECT_NE(against.find("Unset the Surface's Flip Normals"), std::string::npos);
+  EXPECT_NE(against.find("The flow crosses it the other way (a flux of 2.5 against its flipped "
+                         "normals). Unset the Surface's Flip Normals"),
+    std::string::npos);
   const bp::SurfaceVelocity along = [](const std::array<double, 3>&, double u[3])
   {
     u[0] = 1.0;
@@ -124,7 +130,10 @@ TEST(SurfaceRelease, ProblemsSayWhyNothingIsReleased)
   };
   const std::string parallel = problem(strips(3), along, false);
   EXPECT_NE(parallel.find("each of its 6 triangles in the flow"), std::string::npos);
-  EXPECT_NE(parallel.find("Set the Surface's Flip Normals"), std::string::npos);
+  EXPECT_NE(parallel.find("No flow crosses it the other way either"), std::string::npos);
+  EXPECT_EQ(parallel.find("Flip Normals"), std::string::npos);
+  const std::string unflipped = problem(strips(3), along, true);
+  EXPECT_NE(unflipped.find("along its flipped normals"), std::string::npos);
   EXPECT_EQ(problem(strips(3), linearFlow(), false), "");
 }
 
@@ -225,3 +234,77 @@ TEST(SurfaceRelease, DrawsAreTheSeedsAndSkipTrianglesWithoutFlux)
 }
 
 } // namespace
+
+TEST(SurfaceRelease, SampledIntoTheFlowWhereTheCentroidHasNone)
+{
+  // A unit square at z = 0, normal +z; velocity only above z = 0.05 (a
+  // mesh's side: the cells across it have none), none below.
+  const std::vector<double> t = strips(1);
+  const bp::SurfaceVelocity above = [](const std::array<double, 3>& x, double u[3])
+  {
+    u[0] = u[1] = 0.0;
+    u[2] = 2.0;
+    return x[2] > 0.05;
+  };
+  EXPECT_EQ(bp::surfaceSides(t, above, false, 0.0), std::vector<int>(2, bp::NoSample));
+  EXPECT_EQ(bp::surfaceSides(t, above, false, 0.1), std::vector<int>(2, bp::IntoFlux));
+  // Flipped, the flux's side is −z: tried first, then +z.
+  EXPECT_EQ(bp::surfaceSides(t, above, true, 0.1), std::vector<int>(2, bp::AgainstFlux));
+  EXPECT_DOUBLE_EQ(bp::sideShift(bp::IntoFlux, 0.1, false), 0.1);
+  EXPECT_DOUBLE_EQ(bp::sideShift(bp::AgainstFlux, 0.1, true), 0.1);
+  EXPECT_DOUBLE_EQ(bp::sideShift(bp::IntoFlux, 0.1, true), -0.1);
+  EXPECT_EQ(bp::sideShift(bp::AtCentroid, 0.1, false), 0.0);
+  EXPECT_EQ(bp::sideShift(bp::NoSample, 0.1, false), 0.0);
+  std::vector<double> against;
+  const std::vector<double> w = bp::surfaceWeights(t, above, false, 0.1, {}, &against);
+  EXPECT_DOUBLE_EQ(w[0] + w[1], 2.0);
+  EXPECT_EQ(against, std::vector<double>(2, 0.0));
+  EXPECT_EQ(bp::surfaceWeights(t, above, false), std::vector<double>(2, bp::NoVelocity));
+  // The points are put where the velocity was taken: 0.1 up.
+  const std::vector<double> shifts(2, bp::sideShift(bp::IntoFlux, 0.1, false));
+  const std::vector<double> xyz = bp::drawSurfacePoints(t, w, 3, 50, shifts);
+  ASSERT_EQ(xyz.size(), 150u);
+  for (std::size_t p = 0; p < 50; ++p)
+  {
+    EXPECT_NEAR(xyz[3 * p + 2], 0.1, 1e-12);
+  }
+  // The centroid is kept where it has a velocity.
+  const bp::SurfaceVelocity everywhere = [](const std::array<double, 3>&, double u[3])
+  {
+    u[0] = u[1] = 0.0;
+    u[2] = 1.0;
+    return true;
+  };
+  EXPECT_EQ(bp::surfaceSides(t, everywhere, false, 0.1), std::vector<int>(2, bp::AtCentroid));
+}
+
+TEST(SurfaceRelease, FluxAgainstTheNormalsIsCountedAndWarned)
+{
+  // Two strips: along +z through one (x < 1/2), −z three times as fast
+  // through the other.
+  const std::vector<double> t = strips(2);
+  const bp::SurfaceVelocity split = [](const std::array<double, 3>& x, double u[3])
+  {
+    u[0] = u[1] = 0.0;
+    u[2] = x[0] < 0.5 ? 1.0 : -3.0;
+    return true;
+  };
+  std::vector<double> against;
+  const std::vector<double> w = bp::surfaceWeights(t, split, false, 0.0, {}, &against);
+  const bp::SurfaceSummary s = bp::summarizeSurface(t, w, against);
+  EXPECT_DOUBLE_EQ(s.total, 0.5);
+  EXPECT_DOUBLE_EQ(s.against, 1.5);
+  EXPECT_EQ(bp::surfaceProblem(s, false), "");
+  const std::string warning = bp::surfaceWarning(s, false);
+  EXPECT_NE(warning.find("a flux of 1.5 against, 0.5 along"), std::string::npos);
+  EXPECT_NE(warning.find("set Flip Normals"), std::string::npos);
+  // Balanced, as through a closed volume's boundary: no warning.
+  const bp::SurfaceVelocity balanced = [](const std::array<double, 3>& x, double u[3])
+  {
+    u[0] = u[1] = 0.0;
+    u[2] = x[0] < 0.5 ? 1.0 : -1.0;
+    return true;
+  };
+  const std::vector<double> b = bp::surfaceWeights(t, balanced, false, 0.0, {}, &against);
+  EXPECT_EQ(bp::surfaceWarning(bp::summarizeSurface(t, b, against), false), "");
+}

@@ -80,6 +80,8 @@ const std::map<std::string, std::string> Exempt = {
   { "BoundParticleTracer.TimeRange", "information, the time line" },
   { "PointCloud.Input", "the tracer's input, linked, for the widget's bounds" },
   { "Line.Input", "the tracer's input, linked, for the widget's bounds" },
+  { "PointCloud.SeedSource", "the tracer's Seed Source, linked, to hide the widgets it replaces" },
+  { "Line.SeedSource", "the tracer's Seed Source, linked, to hide the widgets it replaces" },
   { "BoundParticlesRepresentation.Input", "an input" },
   { "BoundParticlesRepresentation.ColorArrayName", "an array of the input; none: solid colour" },
   { "BoundParticlesRepresentation.LookupTable", "a proxy" },

@@ -7,16 +7,23 @@
 #include "vtkBoundParticleLineSeeds.h"
 #include "vtkBoundParticlePointCloudSeeds.h"
 #include "vtkBoundParticleSurfaceSeeds.h"
+#include "vtkCellArray.h"
 #include "vtkImageData.h"
 #include "vtkLineSource.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStructuredGrid.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -204,18 +211,164 @@ TEST(SeedTypes, SurfaceTrianglesKeepTheSurfacesOrientation)
   EXPECT_TRUE(t.empty());
 }
 
-TEST(SeedTypes, SurfaceHasNoPointsOfItsOwn)
+TEST(SeedTypes, SurfaceReleasesFromItsNumberOfPointsOverTheSeedSource)
 {
+  // 3 points drawn over a plane across the shear layer's flow (along +x,
+  // the plane's normal): 12 elements take them in order, cycling, so 3
+  // release centres, 4 elements each, all on the plane.
+  auto source = flow(bp::AnalyticFlow::ShearLayer);
+  auto tracer = tracerOn(source, 12);
+  tracer->SetElementShape(bp::BuiltinShape::Point);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.0, -0.5, -0.5);
+  plane->SetPoint1(0.0, 0.5, -0.5);
+  plane->SetPoint2(0.0, -0.5, 0.5);
+  plane->SetResolution(4, 4);
+  tracer->SetSeedSourceConnection(plane->GetOutputPort());
   vtkNew<vtkBoundParticleSurfaceSeeds> surface;
-  EXPECT_STREQ(surface->GetSeedTypeName(), "Surface");
+  surface->SetNumberOfPoints(3);
+  tracer->SetSeedType(surface);
   EXPECT_TRUE(surface->UsesSeedSource());
-  EXPECT_EQ(surface->GetNumberOfSeedPoints(), 10000);
-  std::vector<double> xyz;
-  surface->AppendPoints(1u, NotFlat, 100, xyz);
-  EXPECT_TRUE(xyz.empty()); // the tracer draws them over the Seed Source
+  const auto centres = centresAtStart(tracer, 12);
+  std::vector<std::array<double, 3>> distinct;
+  for (const auto& c : centres)
+  {
+    EXPECT_NEAR(c[0], 0.0, 1e-5);
+    const bool seen = std::any_of(distinct.begin(), distinct.end(),
+      [&c](const std::array<double, 3>& d)
+      { return std::abs(d[1] - c[1]) < 1e-6 && std::abs(d[2] - c[2]) < 1e-6; });
+    if (!seen)
+    {
+      distinct.push_back(c);
+    }
+  }
+  EXPECT_EQ(distinct.size(), 3u);
+  for (std::size_t e = 3; e < centres.size(); ++e)
+  {
+    EXPECT_NEAR(centres[e][1], centres[e % 3][1], 1e-6) << e;
+  }
   surface->SetNumberOfPoints(-2);
   EXPECT_EQ(surface->GetNumberOfSeedPoints(), 1);
   EXPECT_NE(surface->DescribeUnusableParameters().find("below 1"), std::string::npos);
   vtkNew<vtkBoundParticleLineSeeds> line;
   EXPECT_FALSE(line->UsesSeedSource());
+}
+
+namespace
+{
+/// The triangles' total area, and whether every normal points away from `o`.
+std::pair<double, bool> areaAndOutward(const std::vector<double>& t, const double o[3])
+{
+  double area = 0.0;
+  bool outward = true;
+  for (std::size_t i = 0; i + 9 <= t.size(); i += 9)
+  {
+    const std::array<double, 3> n = bp::triangleNormal(t.data() + i),
+                                c = bp::triangleCentroid(t.data() + i);
+    outward = outward && n[0] * (c[0] - o[0]) + n[1] * (c[1] - o[1]) + n[2] * (c[2] - o[2]) > 0;
+    area += bp::triangleArea(t.data() + i);
+  }
+  return { area, outward };
+}
+} // namespace
+
+TEST(SeedTypes, SurfaceOfBlocksLeavesOutTheFacesBetweenThem)
+{
+  // Two unit cubes of voxels side by side along x, as two blocks: their
+  // boundary is the 2 x 1 x 1 box's (area 10), not the face they share.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (int b = 0; b < 2; ++b)
+  {
+    vtkNew<vtkImageData> cube;
+    cube->SetDimensions(2, 2, 2);
+    cube->SetOrigin(double(b), 0.0, 0.0);
+    blocks->SetBlock(unsigned(b), cube);
+  }
+  std::vector<double> t;
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(blocks, t);
+  EXPECT_EQ(t.size(), 20u * 9u);
+  const double o[3] = { 1.0, 0.5, 0.5 };
+  const auto [area, outward] = areaAndOutward(t, o);
+  EXPECT_DOUBLE_EQ(area, 10.0);
+  EXPECT_TRUE(outward);
+  for (std::size_t i = 0; i + 9 <= t.size(); i += 9)
+  {
+    const std::array<double, 3> c = bp::triangleCentroid(t.data() + i);
+    EXPECT_FALSE(std::abs(c[0] - 1.0) < 1e-9 && std::abs(bp::triangleNormal(t.data() + i)[0]) > 0.5)
+      << "a triangle on the inner face x = 1";
+  }
+}
+
+TEST(SeedTypes, LeftHandedGridsBoundaryPointsOutward)
+{
+  // A unit cube as a structured grid mirrored in x (x = −i): left-handed,
+  // its cells' faces in VTK's order point inward. Alone and as one block
+  // of two (the other right-handed), its boundary points outward.
+  vtkNew<vtkStructuredGrid> mirrored;
+  mirrored->SetDimensions(2, 2, 2);
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int i = 0; i < 2; ++i)
+      {
+        points->InsertNextPoint(-double(i), double(j), double(k));
+      }
+    }
+  }
+  mirrored->SetPoints(points);
+  std::vector<double> t;
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(mirrored, t);
+  ASSERT_EQ(t.size(), 12u * 9u);
+  const double o[3] = { -0.5, 0.5, 0.5 };
+  auto [area, outward] = areaAndOutward(t, o);
+  EXPECT_DOUBLE_EQ(area, 6.0);
+  EXPECT_TRUE(outward);
+  vtkNew<vtkImageData> cube; // x from 1 to 2, apart from the mirrored one
+  cube->SetDimensions(2, 2, 2);
+  cube->SetOrigin(1.0, 0.0, 0.0);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, mirrored);
+  blocks->SetBlock(1, cube);
+  t.clear();
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(blocks, t);
+  ASSERT_EQ(t.size(), 24u * 9u);
+  std::size_t outwardCount = 0;
+  for (std::size_t i = 0; i < 24; ++i)
+  {
+    const double* tri = t.data() + 9 * i;
+    const std::array<double, 3> c = bp::triangleCentroid(tri), n = bp::triangleNormal(tri);
+    const double centre[3] = { c[0] < 0.5 ? -0.5 : 1.5, 0.5, 0.5 };
+    outwardCount +=
+      n[0] * (c[0] - centre[0]) + n[1] * (c[1] - centre[1]) + n[2] * (c[2] - centre[2]) > 0.0;
+  }
+  EXPECT_EQ(outwardCount, 24u);
+}
+
+TEST(SeedTypes, SurfaceCellWithANonFiniteCornerIsLeftOutWhole)
+{
+  // Two quads: the second with a NaN corner. Its fan's first triangle is
+  // finite, but the whole cell is left out and counted once.
+  vtkNew<vtkPoints> points;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const std::array<double, 3>& x : std::vector<std::array<double, 3>>{
+         { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, nan } })
+  {
+    points->InsertNextPoint(x.data());
+  }
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType a[4] = { 0, 1, 2, 3 }, b[4] = { 1, 4, 5, 2 };
+  quads->InsertNextCell(4, a);
+  quads->InsertNextCell(4, b);
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(quads);
+  std::vector<double> t;
+  vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(surface, t);
+  ASSERT_EQ(t.size(), 3u * 9u);
+  std::vector<double> weights(3, 1.0);
+  const bp::SurfaceSummary s = bp::summarizeSurface(t, weights);
+  EXPECT_EQ(s.nonFinite, 1u);
+  EXPECT_DOUBLE_EQ(s.area, 1.0);
 }

@@ -301,10 +301,10 @@ states = bptest.scratch("bp-insitu-state-")
 state_file = os.path.join(states, "state.vtp")
 
 
-def save_state_in_situ(settings, path):
+def save_state_in_situ(settings, path, keep=KEEP):
     feed = PVTrivialProducer()
     tracer = BoundParticleTracer(Input=feed, **settings)
-    for t in times[:KEEP + 1]:
+    for t in times[:keep + 1]:
         feed.GetClientSideObject().SetOutput(step_of(t), t)
         feed.MarkModified(feed)
         tracer.UpdatePipeline(t)
@@ -353,6 +353,25 @@ refusals = [m for m in said.messages if "numberOfElements" in m]
 bptest.check(refusals and len(refusals) == len(said.messages) and other,
              "a state of other settings in situ: said by name at the restart step only, then "
              "the trace starts at the next step without it: %s" % said.messages)
+# Seed Type Surface across the unsteady gyre (the line y = 0.5, where the
+# profile of v along x moves with the gyres): its points are drawn at the
+# first step handed, after the restart the restart step's, and a state keeps
+# only their hash: the restart is refused (by the emitter box fitted around
+# them, named first), with why, and the trace starts at the next step
+# without it. (Saved at step 3: the gyre
+# of step KEEP, half its period on, is the start's again.)
+SURFACE = dict(SETTINGS, SeedType="Surface",
+               SeedSource=Plane(Origin=[0, 0.5, 0], Point1=[2, 0.5, 0], Point2=[0, 0.5, 0.05],
+                                XResolution=40))
+surface_state = os.path.join(states, "surface.vtp")
+save_state_in_situ(SURFACE, surface_state, keep=3)
+inlet, said = last_output(lambda k, t: step_of(t) if k >= 3 else None,
+                          dict(SURFACE, InitialStateFile=surface_state))
+refusals = [m for m in said.messages if "was saved by a trace that differs" in m]
+bptest.check(refusals and len(refusals) == len(said.messages) and
+             all("Seed Type Surface draws its points" in m for m in refusals) and inlet,
+             "a Surface restarted in situ in an unsteady flow: refused, with why (%s)" %
+             said.messages)
 missing, said = last_output(lambda k, t: step_of(t) if k >= KEEP else None,
                             dict(SETTINGS, InitialStateFile=os.path.join(states, "none.vtp")))
 bptest.check(said.messages and all("none.vtp" in m for m in said.messages) and missing,
