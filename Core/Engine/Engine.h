@@ -438,7 +438,8 @@ private:
   void fillVelocity(const float* before, const float center[3], double h,
     std::vector<InteractionEvent>& events, std::size_t first) const;
   /// settle()'s events for element e: none where the step was taken back
-  /// (`moved` null: non-finite positions); its leaving (recordLeaving) where
+  /// (`moved` null: non-finite positions) or the element is not shown in it
+  /// (hidden: placed and moved, but it records nothing); its leaving (recordLeaving) where
   /// `leftAt` is given; then their velocity (fillVelocity).
   void noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
     const float* moved, const float* leftAt, bool terminated, std::vector<InteractionEvent>& events,

@@ -413,17 +413,11 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
     const bool walled = isWall(this->Params.boundary);
     flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
   }
-  if (events && hidden)
-  {
-    // An element not shown (waiting for its release window, or Terminated)
-    // is still placed and moved, but nothing it meets is an event.
-    events->resize(first);
-  }
-  else if (events)
+  if (events)
   {
     const bool leaving = left && flag && !isWall(this->Params.boundary);
-    this->noteEvents(e, field, h, before, finite ? moved : nullptr, leaving ? at : nullptr,
-      flag == Terminated, *events, first);
+    this->noteEvents(e, field, h, before, finite && !hidden ? moved : nullptr, // hidden: none
+      leaving ? at : nullptr, flag == Terminated, *events, first);
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
   this->Lifetimes[e] -= float(h);
