@@ -14,8 +14,10 @@
  * none; ids from 6 up are kept for surfaces given as an input, a later
  * stage) and Interaction (bp::Interaction: 0 Released, 1 Terminated,
  * 2 Stuck, 3 Slid, 4 Bounced), whose names the field data array
- * InteractionNames holds in that order. The events are ordered by (Time,
- * ElementId, ParticleIndex, Interaction), on any number of processes alike.
+ * InteractionNames holds in that order. The events are in the trace's
+ * order: by the trace time of their step (so Time decreases in a backward
+ * trace), then ElementId, ParticleIndex and Interaction, on any number of
+ * processes alike.
  * The CPU engine records them; for a GPU display's trace the output is empty.
  */
 #ifndef BoundParticles_TracerInteractions_h
@@ -23,7 +25,10 @@
 
 #include "Interactions.h"
 
+#include "vtkType.h"
+
 #include <array>
+#include <memory>
 #include <vector>
 
 class vtkMultiProcessController;
@@ -33,14 +38,53 @@ namespace bpvtk
 {
 
 /**
- * Fills `out` with `events` (engine coordinates and trace time): points at
- * `offset` + position, times through the trace's `backward` mirror (and
- * velocities negated for it). With a `controller` of several processes,
- * each process's events go to process 0, which gets them all and the
- * others an empty output: collective.
+ * The Interactions output of one tracer, kept between updates: fill() puts
+ * a log's events in an output (engine coordinates and trace time): points
+ * at `offset` + position, times through the trace's `backward` mirror (and
+ * velocities negated for it). Where the log only grew since the last fill
+ * (InteractionLog::eventsSince, the same offset and direction), only the
+ * new steps' events are appended, so showing the output while playing
+ * costs the events added, not the whole trace each update; otherwise (a
+ * copy gone back in time, a new trace) it is built again.
+ *
+ * With a `controller` of several processes, each process's events go to
+ * process 0, which gets them all and the others an empty output:
+ * collective, every process's calls alike. What is gathered is bounded:
+ * at most the log's capacity in all (capped so that no count overflows an
+ * int), the first steps' events; where a step's events pass the bound, its
+ * share is divided evenly among the processes that have some, and
+ * clipped() says so.
  */
-void fillInteractions(vtkPolyData* out, std::vector<bp::InteractionEvent> events,
-  const std::array<double, 3>& offset, bool backward, vtkMultiProcessController* controller);
+class InteractionsOutput
+{
+public:
+  void fill(vtkPolyData* out, const bp::InteractionLog& log, const std::array<double, 3>& offset,
+    bool backward, vtkMultiProcessController* controller);
+  /// Whether a fill left events out for the bound on what is gathered
+  /// (alike on every process; never in a serial run, whose log is the bound).
+  bool clipped() const { return this->Clipped; }
+  /// How many events the output holds (process 0's in a distributed run,
+  /// alike on every process).
+  vtkIdType size() const { return this->Count; }
+  /// The next fill builds the output anew.
+  void clear();
+
+private:
+  /// fill() in a distributed run: the events added since the last fill
+  /// (`shared` of the last log's kept) gathered on process 0.
+  void gather(const bp::InteractionLog& log, bool same, std::size_t shared,
+    std::vector<bp::InteractionEvent>& added, const std::array<double, 3>& offset, bool backward,
+    vtkMultiProcessController* controller);
+
+  struct Arrays;
+  std::shared_ptr<Arrays> Data;
+  bp::InteractionLog::Mark Mark;
+  std::array<double, 3> Offset = { 0, 0, 0 };
+  bool Backward = false;
+  bool Filled = false;
+  bool Clipped = false;
+  vtkIdType Count = 0;
+};
 
 } // namespace bpvtk
 

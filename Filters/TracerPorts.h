@@ -65,7 +65,7 @@ void markNotGenerated(
 /**
  * Whether an execution fills the Interactions output: it is the port asked
  * for, or it has a consumer (a display, a filter, a writer, a fetch). So
- * playing the animation with no consumer of it pays nothing for it: it keeps
+ * playing the animation with no consumer of it builds nothing for it: it keeps
  * what it holds, not generated, and a later request for it executes again
  * (markNotGenerated).
  */

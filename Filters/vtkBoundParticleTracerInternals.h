@@ -33,6 +33,7 @@
 #include "TracePlan.h"
 #include "TraceSettings.h"
 #include "TracerConfig.h"
+#include "TracerInteractions.h"
 #include "TracerOutput.h"
 #include "TracerParallel.h"
 #include "TracerResample.h"
@@ -368,6 +369,8 @@ private:
   /// The events last gathered in a distributed run, and where the trace
   /// stood then (its cursor's steps, short step shown, target).
   vtkNew<vtkPolyData> Interactions;
+  /// The Interactions output between updates (appended to while the log grows).
+  bpvtk::InteractionsOutput InteractionsOut;
   std::array<double, 3> InteractionsAt = { -1.0, 0.0, 0.0 };
   /// The time the elements were last shown at (trace time), which the State
   /// output saves, and when it was shown.

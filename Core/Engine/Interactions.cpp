@@ -160,4 +160,43 @@ std::vector<InteractionEvent> InteractionLog::events() const
   return all;
 }
 
+InteractionLog::Mark InteractionLog::mark() const
+{
+  Mark m;
+  m.Head = this->Head;
+  m.Size = this->size();
+  return m;
+}
+
+std::size_t InteractionLog::eventsSince(const Mark& m, std::vector<InteractionEvent>& added) const
+{
+  added.clear();
+  // Back from both heads to the last step both hold: the totals grow along
+  // each list (no step is empty), so the one with more events steps back.
+  const Step* mine = this->Head.get();
+  const Step* theirs = static_cast<const Step*>(m.Head.get());
+  std::vector<const Step*> steps;
+  while (mine != theirs)
+  {
+    const std::size_t a = mine ? mine->total : 0;
+    const std::size_t b = theirs ? theirs->total : 0;
+    if (a >= b)
+    {
+      steps.push_back(mine);
+      mine = mine->previous.get();
+    }
+    if (b >= a)
+    {
+      theirs = theirs->previous.get();
+    }
+  }
+  const std::size_t shared = mine ? mine->total : 0;
+  added.reserve(this->size() - shared);
+  for (auto t = steps.rbegin(); t != steps.rend(); ++t)
+  {
+    added.insert(added.end(), (*t)->events.begin(), (*t)->events.end());
+  }
+  return shared;
+}
+
 } // namespace bp

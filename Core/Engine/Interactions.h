@@ -101,6 +101,27 @@ public:
   void append(std::vector<InteractionEvent>&& step);
   /// Every event, oldest step first.
   std::vector<InteractionEvent> events() const;
+
+  /// Where a log stood (mark()): for eventsSince. It holds that log's steps
+  /// (shared with the log while it has them).
+  class Mark
+  {
+  public:
+    /// How many events the log held.
+    std::size_t size() const { return this->Size; }
+
+  private:
+    friend class InteractionLog;
+    std::shared_ptr<const void> Head;
+    std::size_t Size = 0;
+  };
+  Mark mark() const;
+  /// How many of `m`'s first events this log holds too (those of the last
+  /// step both share, m.size() where this log is m's with steps appended,
+  /// fewer for a copy gone back in time or one that went another way), and
+  /// in `added` this log's events after them, oldest first. The cost is in
+  /// the steps after that shared step only. A default Mark shares nothing.
+  std::size_t eventsSince(const Mark& m, std::vector<InteractionEvent>& added) const;
   /// How many events.
   std::size_t size() const { return this->Head ? this->Head->total : 0; }
   /// Whether a step's events were left out for the capacity.

@@ -339,6 +339,66 @@ TEST(Interactions, ALongLogIsFreedWithoutDeepRecursion)
   EXPECT_EQ(copy.size(), 0u);
 }
 
+TEST(Interactions, ALogGivesTheEventsAppendedSinceAMark)
+{
+  // The Interactions output keeps the events a log shares with the one it
+  // last showed and appends the rest: a log that only grew shares them all;
+  // a copy gone back in time (a short step's save) or one that went another
+  // way from there shares those up to the last step both hold.
+  auto step = [](std::uint32_t first, std::uint32_t count)
+  {
+    std::vector<bp::InteractionEvent> events(count);
+    for (std::uint32_t k = 0; k < count; ++k)
+      events[k].element = first + k;
+    return events;
+  };
+  auto elements = [](const std::vector<bp::InteractionEvent>& events)
+  {
+    std::vector<std::uint32_t> ids;
+    for (const bp::InteractionEvent& x : events)
+      ids.push_back(x.element);
+    return ids;
+  };
+  using Ids = std::vector<std::uint32_t>;
+  bp::InteractionLog log;
+  std::vector<bp::InteractionEvent> added;
+  EXPECT_EQ(log.eventsSince(bp::InteractionLog::Mark(), added), 0u);
+  EXPECT_TRUE(added.empty());
+  log.append(step(0, 2));
+  EXPECT_EQ(log.eventsSince(bp::InteractionLog::Mark(), added), 0u);
+  EXPECT_EQ(elements(added), (Ids{ 0, 1 }));
+  const bp::InteractionLog::Mark first = log.mark();
+  EXPECT_EQ(first.size(), 2u);
+  const bp::InteractionLog back = log;
+  log.append(step(2, 3));
+  log.append({});
+  log.append(step(5, 1));
+  EXPECT_EQ(log.eventsSince(first, added), 2u);
+  EXPECT_EQ(elements(added), (Ids{ 2, 3, 4, 5 }));
+  EXPECT_EQ(log.eventsSince(log.mark(), added), 6u);
+  EXPECT_TRUE(added.empty());
+  // Back in time: the first two shared, nothing after.
+  EXPECT_EQ(back.eventsSince(log.mark(), added), 2u);
+  EXPECT_TRUE(added.empty());
+  // Another way from `first` (a short step taken back, then steps on): as
+  // many events as the later log, another head.
+  bp::InteractionLog other = back;
+  other.append(step(20, 4));
+  EXPECT_EQ(other.size(), log.size());
+  EXPECT_EQ(other.eventsSince(log.mark(), added), 2u);
+  EXPECT_EQ(elements(added), (Ids{ 20, 21, 22, 23 }));
+  EXPECT_EQ(log.eventsSince(other.mark(), added), 2u);
+  EXPECT_EQ(elements(added), (Ids{ 2, 3, 4, 5 }));
+  // Nothing shared: a cleared log, a new trace.
+  other.clear();
+  EXPECT_EQ(other.eventsSince(first, added), 0u);
+  EXPECT_TRUE(added.empty());
+  bp::InteractionLog fresh;
+  fresh.append(step(0, 2));
+  EXPECT_EQ(fresh.eventsSince(first, added), 0u);
+  EXPECT_EQ(elements(added), (Ids{ 0, 1 }));
+}
+
 TEST(Interactions, ALogKeepsTheFirstEventsUpToItsCapacity)
 {
   // An outflow with Release Again leaves events every step of a long trace:

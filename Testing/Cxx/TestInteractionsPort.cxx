@@ -170,7 +170,7 @@ TEST(InteractionsPort, ReleaseAgainRecordsEachElementThatLeaves)
 TEST(InteractionsPort, IsFilledOnlyWhenAskedForOrConsumed)
 {
   // An update for the elements with nothing consuming port 3 leaves it as it
-  // was, not generated (playing pays nothing for it); asking for it then
+  // was, not generated (playing builds nothing for it); asking for it then
   // fills it at the time shown, and a consumer keeps it filled.
   auto source = intoTheSide();
   auto t = tracer(source, bp::Boundary::Stick);
@@ -199,4 +199,56 @@ TEST(InteractionsPort, IsFilledOnlyWhenAskedForOrConsumed)
   const std::vector<Row> consumed = rows(vtkPolyData::SafeDownCast(t->GetOutputDataObject(3)));
   EXPECT_GT(consumed.size(), asked.size());
   EXPECT_EQ(consumed, rows(interactionsAt(fresh, 2.0)));
+}
+
+TEST(InteractionsPort, PlayingAppendsTheStepsAddedAndGoingBackCutsTheRest)
+{
+  // Shown while playing, the output appends the events of the steps added
+  // (its arrays kept and grown: the cost of an update is the events added,
+  // not the trace's), the short step shown at a frame between two step
+  // boundaries taken off first; each frame's events are a new trace's to
+  // that time. Going back in time keeps the events of before and cuts the
+  // rest; forward again appends them.
+  auto source = intoTheSide();
+  auto t = tracer(source, bp::Boundary::Stick);
+  vtkDataArray* kept = nullptr;
+  std::size_t before = 0;
+  for (int frame = 1; frame <= 20; ++frame)
+  {
+    const double time = 0.1 * frame;
+    vtkPolyData* pd = interactionsAt(t, time);
+    const std::vector<Row> shown = rows(pd);
+    auto fresh = tracer(source, bp::Boundary::Stick);
+    ASSERT_EQ(shown, rows(interactionsAt(fresh, time))) << "at " << time;
+    EXPECT_EQ(pd->GetNumberOfVerts(), pd->GetNumberOfPoints());
+    EXPECT_GE(shown.size(), before);
+    before = shown.size();
+    vtkDataArray* times = pd->GetPointData()->GetArray("Time");
+    if (kept && times)
+      EXPECT_EQ(times, kept) << "appended to at " << time;
+    if (times)
+      kept = times;
+  }
+  ASSERT_TRUE(kept);
+  ASSERT_GT(before, 40u);
+  const std::vector<Row> played = rows(interactionsAt(t, 2.0));
+  auto fresh = tracer(source, bp::Boundary::Stick);
+  const std::vector<Row> back = rows(interactionsAt(t, 0.75));
+  EXPECT_EQ(back, rows(interactionsAt(fresh, 0.75)));
+  EXPECT_LT(back.size(), played.size());
+  EXPECT_EQ(rows(interactionsAt(t, 2.0)), played);
+}
+
+TEST(InteractionsPort, ABackwardTraceIsInTheTracesOrder)
+{
+  // The events follow the trace: in a backward trace the data's time of
+  // each event (Time) decreases along the output.
+  auto source = intoTheSide();
+  auto t = tracer(source, bp::Boundary::Stick);
+  t->SetTimeDirection(bp::TimeDirection::Backward);
+  const std::vector<Row> all = rows(interactionsAt(t, 0.0));
+  ASSERT_GT(all.size(), 10u);
+  EXPECT_GT(std::get<0>(all.front()), std::get<0>(all.back()));
+  for (std::size_t k = 1; k < all.size(); ++k)
+    EXPECT_GE(std::get<0>(all[k - 1]), std::get<0>(all[k]));
 }

@@ -97,7 +97,7 @@ if count:
     bptest.check(np.all(a["Normal"][on_x] == [1, 0, 0]), "+x events' normal is (1, 0, 0)")
     bptest.check(a["Time"].max() <= SHOWN + 1e-9 and a["Time"].min() > 0, "times within the trace")
     keys = list(zip(a["Time"].tolist(), a["ElementId"].tolist(), a["ParticleIndex"].tolist()))
-    bptest.check(keys == sorted(keys), "ordered by (Time, ElementId, ParticleIndex)")
+    bptest.check(keys == sorted(keys), "in the trace's order (Time, ElementId, ParticleIndex) forward")
     bptest.check(np.all(a["ElementVelocity"][:, 0] >= -1e-6), "elements moving with the flow")
 
     # The deposition count against the elements output: every particle on a
