@@ -7,8 +7,10 @@
 #include "Engine.h"
 #include "VectorField.h"
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 namespace bptest
 {
@@ -41,6 +43,27 @@ inline bp::VectorField unsteadyFlow(
   second.time = t1;
   second.velocity = std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(flow, g, t1));
   return bp::VectorField(g, first, second);
+}
+
+/// The uniform flow `u` on grid `g` (by default [-1, 1]^3, 9 points a side).
+inline bp::VectorField uniformFlow(std::array<float, 3> u, const bp::GridGeometry& g = grid(9))
+{
+  auto velocity = std::make_shared<std::vector<float>>();
+  for (std::size_t i = 0; i < g.pointCount(); ++i)
+    velocity->insert(velocity->end(), u.begin(), u.end());
+  bp::FieldSlice s;
+  s.velocity = velocity;
+  return bp::VectorField(g, s);
+}
+
+/// [-1, 1]^3 as a domain box, every axis with extent (grid(9)'s bounds).
+inline bp::Domain cube()
+{
+  bp::Domain d;
+  d.lower = { -1, -1, -1 };
+  d.upper = { 1, 1, 1 };
+  d.degenerate = { false, false, false };
+  return d;
 }
 
 inline float distance(const float* a, const float* b)

@@ -15,19 +15,7 @@
 
 namespace
 {
-/// A uniform flow `u` over [-1, 1]^3 (9 points a side).
-bp::VectorField uniformFlow(std::array<float, 3> u)
-{
-  const bp::GridGeometry g = bptest::grid(9);
-  auto velocity = std::make_shared<std::vector<float>>();
-  for (std::size_t i = 0; i < g.pointCount(); ++i)
-  {
-    velocity->insert(velocity->end(), u.begin(), u.end());
-  }
-  bp::FieldSlice s;
-  s.velocity = velocity;
-  return bp::VectorField(g, s);
-}
+using bptest::uniformFlow;
 
 /// One Point element released at `at`, Maxey-Riley with tau and density ratio.
 bp::Parameters heavy(std::array<float, 3> at, float tau, float densityRatio)

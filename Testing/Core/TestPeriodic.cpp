@@ -34,16 +34,6 @@ bp::VectorField sineFlow(const bp::GridGeometry& g)
   return bp::VectorField(g, s);
 }
 
-bp::VectorField uniformFlow(bp::GridGeometry g, std::array<float, 3> u)
-{
-  auto velocity = std::make_shared<std::vector<float>>();
-  for (std::size_t i = 0; i < g.pointCount(); ++i)
-    velocity->insert(velocity->end(), u.begin(), u.end());
-  bp::FieldSlice s;
-  s.velocity = velocity;
-  return bp::VectorField(g, s);
-}
-
 bp::GridGeometry periodicGrid(std::array<bool, 3> periodic)
 {
   bp::GridGeometry g = bptest::grid(9);
@@ -175,7 +165,8 @@ TEST(Periodic, AUniformFlowBringsEveryElementBackAfterOnePeriod)
 {
   // Period 2 along x at speed 1: after 2 time units every element is back
   // where it started, never released, its springs at rest all the way.
-  const bp::VectorField field = uniformFlow(periodicGrid({ true, false, false }), { 1, 0, 0 });
+  const bp::VectorField field =
+    bptest::uniformFlow({ 1, 0, 0 }, periodicGrid({ true, false, false }));
   for (bp::Boundary b : { bp::Boundary::ReleaseAgain, bp::Boundary::Terminate, bp::Boundary::Bounce,
          bp::Boundary::Stick })
   {
@@ -210,7 +201,8 @@ TEST(Periodic, AUniformFlowBringsEveryElementBackAfterOnePeriod)
 
 TEST(Periodic, AnyParticleLeavesNeverReleasesAnElementOnTheSeam)
 {
-  const bp::VectorField field = uniformFlow(periodicGrid({ true, true, false }), { 1, 0.5f, 0 });
+  const bp::VectorField field =
+    bptest::uniformFlow({ 1, 0.5f, 0 }, periodicGrid({ true, true, false }));
   bp::Parameters p = strips(bp::Boundary::ReleaseAgain);
   p.resetWhen = bp::ResetWhen::AnyParticleLeaves;
   bp::Engine engine = started(p);
@@ -231,7 +223,8 @@ TEST(Periodic, AnyParticleLeavesNeverReleasesAnElementOnTheSeam)
 TEST(Periodic, WithoutPeriodicTheSameTraceReleasesAgainAndTheOtherSidesStayWalls)
 {
   // The control: the same flow without Periodic releases the elements again.
-  const bp::VectorField open = uniformFlow(periodicGrid({ false, false, false }), { 1, 0, 0 });
+  const bp::VectorField open =
+    bptest::uniformFlow({ 1, 0, 0 }, periodicGrid({ false, false, false }));
   bp::Engine engine = started(strips(bp::Boundary::ReleaseAgain));
   for (int s = 0; s < 201; ++s)
     engine.step(open, s * 0.01, 0.01, bp::serialRunner());
@@ -241,7 +234,8 @@ TEST(Periodic, WithoutPeriodicTheSameTraceReleasesAgainAndTheOtherSidesStayWalls
   EXPECT_GT(released, 0u);
   // Periodic along x, Slip walls along y: the flow's y part lays the strips
   // on the upper y wall while they keep crossing the x seam.
-  const bp::VectorField mixed = uniformFlow(periodicGrid({ true, false, false }), { 1, 0.5f, 0 });
+  const bp::VectorField mixed =
+    bptest::uniformFlow({ 1, 0.5f, 0 }, periodicGrid({ true, false, false }));
   bp::Engine slip = started(strips(bp::Boundary::Slip));
   for (int s = 0; s < 400; ++s)
     slip.step(mixed, s * 0.01, 0.01, bp::serialRunner());

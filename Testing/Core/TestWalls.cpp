@@ -16,27 +16,8 @@
 
 namespace
 {
-/// [-1, 1]^3, every axis with extent.
-bp::Domain cube()
-{
-  bp::Domain d;
-  d.lower = { -1, -1, -1 };
-  d.upper = { 1, 1, 1 };
-  d.degenerate = { false, false, false };
-  return d;
-}
-
-/// A uniform flow `u` over [-1, 1]^3 (9 points a side).
-bp::VectorField uniformFlow(std::array<float, 3> u)
-{
-  const bp::GridGeometry g = bptest::grid(9);
-  auto velocity = std::make_shared<std::vector<float>>();
-  for (std::size_t i = 0; i < g.pointCount(); ++i)
-    velocity->insert(velocity->end(), u.begin(), u.end());
-  bp::FieldSlice s;
-  s.velocity = velocity;
-  return bp::VectorField(g, s);
-}
+using bptest::cube;
+using bptest::uniformFlow;
 
 /// One Strip4 element of size 0.5 centred at `at`, fixed orientation (along x).
 bp::Parameters strip(bp::Boundary boundary, std::array<float, 3> at)
