@@ -111,6 +111,7 @@ TEST(PieceBlocks, PeriodicAxesAreWholeAndTheOthersSplit)
   {
     expectSplitAlong({ 0, 20, 0, 10, 0, 4 }, { true, true, false }, 2, pieces);
     expectSplitAlong({ -10, 10, -5, 5, -2, 2 }, { true, true, false }, 2, pieces);
+    expectSplitAlong({ -10, 10, -5, 5, -12, 12 }, { true, true, false }, 2, pieces);
     expectSplitAlong({ 0, 127, 0, 63, 0, 95 }, { true, false, true }, 1, pieces);
   }
   // Two axes left: both split at 4 pieces where the translator splits so.
