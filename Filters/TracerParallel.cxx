@@ -32,7 +32,8 @@ vtkMultiProcessController* pieceController(int pieces)
   return pieces > 1 && c && c->GetNumberOfProcesses() == pieces ? c : nullptr;
 }
 
-/// Whether the block split gives each of `pieces` a block with cells.
+/// Whether the block split of `whole` gives each of `pieces` a block with
+/// cells along every axis that has them.
 bool splitsIntoBlocks(const int whole[6], int pieces)
 {
   vtkNew<vtkExtentTranslator> translator;
@@ -105,6 +106,44 @@ bp::ExchangeFunction controllerExchange(vtkMultiProcessController* controller)
 
 namespace bpvtk
 {
+
+bool pieceBlock(
+  int piece, int pieces, const int whole[6], const std::array<bool, 3>& periodic, int block[6])
+{
+  // The extent split: `whole` collapsed along the periodic axes, where that
+  // gives every piece cells; every process decides alike from the same values.
+  int split[6];
+  std::copy(whole, whole + 6, split);
+  bool collapsed = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (periodic[std::size_t(a)] && whole[2 * a + 1] > whole[2 * a])
+    {
+      split[2 * a + 1] = split[2 * a];
+      collapsed = true;
+    }
+  }
+  if (collapsed && !splitsIntoBlocks(split, pieces))
+  {
+    std::copy(whole, whole + 6, split);
+    collapsed = false;
+  }
+  vtkNew<vtkExtentTranslator> translator;
+  if (!translator->PieceToExtentThreadSafe(
+        piece, pieces, 0, split, block, vtkExtentTranslator::BLOCK_MODE, 0))
+  {
+    return false;
+  }
+  for (int a = 0; collapsed && a < 3; ++a)
+  {
+    if (periodic[std::size_t(a)])
+    {
+      block[2 * a] = whole[2 * a];
+      block[2 * a + 1] = whole[2 * a + 1];
+    }
+  }
+  return true;
+}
 
 std::string agreeOnError(vtkMultiProcessController* controller, const std::string& error)
 {
@@ -186,9 +225,10 @@ void PieceLayout::requestInput(vtkInformation* inInfo, bool mesh)
   {
     // The executive splits the update extent into blocks with ghost layers
     // alike along every axis; along a periodic one each process needs the
-    // whole axis (the field across the seam). So the extent is asked for
-    // as it is, one piece: a source that produces sub-extents gives just
-    // it, another the whole, which cropToPiece() cuts to it.
+    // whole axis (the field across the seam), and the blocks split the other
+    // axes only (pieceBlock()). So the extent is asked for as it is, one
+    // piece: a source that produces sub-extents gives just it, another the
+    // whole, which cropToPiece() cuts to it.
     inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
     inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
     inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
@@ -210,9 +250,7 @@ void PieceLayout::setWholeExtent(const int whole[6])
   {
     return;
   }
-  vtkNew<vtkExtentTranslator> translator;
-  if (!translator->PieceToExtentThreadSafe(this->Piece, this->Pieces, 0, this->WholeExtent,
-        this->OwnedExtent, vtkExtentTranslator::BLOCK_MODE, 0))
+  if (!pieceBlock(this->Piece, this->Pieces, this->WholeExtent, this->Periodic, this->OwnedExtent))
   {
     // More processes than blocks: this one owns nothing.
     for (int a = 0; a < 3; ++a)

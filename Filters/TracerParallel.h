@@ -11,8 +11,9 @@
  * process that owns their new centre (bp::DistributedStepper, through the
  * global vtkMultiProcessController). Along a periodic axis each process
  * reads the whole axis instead of its block's share (the field across the
- * seam), and an element the last step moved across the seam is handed over
- * with the others. Otherwise piece 0 traces the whole field and other
+ * seam), the blocks then split the other axes only where they can
+ * (pieceBlock()), and an element the last step moved across the seam is
+ * handed over with the others. Otherwise piece 0 traces the whole field and other
  * pieces are empty.
  */
 #ifndef BoundParticles_TracerParallel_h
@@ -69,6 +70,20 @@ std::string agreeOnError(vtkMultiProcessController* controller, const std::strin
  */
 std::string firstNonEmpty(vtkMultiProcessController* controller, const std::string& text);
 
+/**
+ * Piece `piece` of `pieces`' block of the extent `whole` (the block this
+ * process owns), the same on every process. With `periodic` axes the split
+ * runs along the others only: vtkExtentTranslator's block split of `whole`
+ * collapsed to its first point along each periodic axis, the block then
+ * widened to the whole axis there, so that a process holds whole periodic
+ * axes over its own part of the others. Where that split cannot give every
+ * piece cells (every axis periodic, or too few cells along the others), and
+ * without periodic axes, the block split of `whole` itself (the executive's).
+ * False where the piece owns nothing (more pieces than blocks).
+ */
+bool pieceBlock(
+  int piece, int pieces, const int whole[6], const std::array<bool, 3>& periodic, int block[6]);
+
 class PieceLayout
 {
 public:
@@ -100,7 +115,8 @@ public:
    */
   bool setPeriodic(const std::array<bool, 3>& periodic);
 
-  /// Takes the whole grid's extent and this process's block of it.
+  /// Takes the whole grid's extent and this process's block of it
+  /// (pieceBlock(), along the axes that are not periodic where it can).
   void setWholeExtent(const int whole[6]);
 
   /**
@@ -136,9 +152,9 @@ public:
    */
   vtkSmartPointer<vtkDataSet> cropToPiece(vtkDataSet* held) const;
 
-  /// Piece `piece`'s block of the whole extent with GhostCells layers, and
-  /// the whole extent along a periodic axis; false where it owns nothing
-  /// (more processes than blocks).
+  /// Piece `piece`'s block of the whole extent (pieceBlock()) with
+  /// GhostCells layers, and the whole extent along a periodic axis; false
+  /// where it owns nothing (more processes than blocks).
   bool blockWithGhosts(int piece, int extent[6]) const;
 
   /**

@@ -5,10 +5,8 @@
 #include "TracerParallel.h"
 
 #include "vtkDataArray.h"
-#include "vtkExtentTranslator.h"
 #include "vtkImageData.h"
 #include "vtkMultiProcessController.h"
-#include "vtkNew.h"
 #include "vtkPointData.h"
 
 #include <algorithm>
@@ -273,10 +271,8 @@ namespace bpvtk
 
 bool PieceLayout::blockWithGhosts(int piece, int extent[6]) const
 {
-  vtkNew<vtkExtentTranslator> translator;
   int owned[6];
-  if (!translator->PieceToExtentThreadSafe(piece, this->Pieces, 0,
-        const_cast<int*>(this->WholeExtent), owned, vtkExtentTranslator::BLOCK_MODE, 0))
+  if (!pieceBlock(piece, this->Pieces, this->WholeExtent, this->Periodic, owned))
   {
     return false; // more processes than blocks: this one owns nothing
   }

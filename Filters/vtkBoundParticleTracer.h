@@ -390,10 +390,12 @@ public:
   /// moves whole, by one period, to the other (its shape untouched; never
   /// released for leaving there). Boundary applies to the other axes' sides
   /// only. Refused along an axis of one grid point, with Trails (a trail
-  /// would cross the domain at the jump) and with Linking. Under MPI every
-  /// process holds the whole of a periodic axis and hands an element that
-  /// crosses the seam to the owner of its new centre: the same trace on any
-  /// number of processes. Both engines do the same.
+  /// would cross the domain at the jump) and with Linking. Under MPI the
+  /// processes split the other axes into blocks (where they cannot, every
+  /// axis periodic, all axes, each process then holding the whole field);
+  /// every process holds the whole of a periodic axis and hands an element
+  /// that crosses the seam to the owner of its new centre: the same trace on
+  /// any number of processes. Both engines do the same.
   vtkSetVector3Macro(Periodic, int);
   vtkGetVector3Macro(Periodic, int);
   ///@}

@@ -16,9 +16,21 @@ namespace
 {
 
 /// The whole grid's point extent [first, last] along each axis split in two
-/// along x and, for four pieces, along y: piece k's point ranges.
-std::vector<std::array<int, 6>> splitExtent(const bp::GridGeometry& g, int pieces)
+/// along x and, for four pieces, along y (or, with `slabs`, into `pieces`
+/// slabs along z): piece k's point ranges.
+std::vector<std::array<int, 6>> splitExtent(const bp::GridGeometry& g, int pieces, bool slabs)
 {
+  if (slabs)
+  {
+    // z only, as the tracer splits a field periodic along x and y
+    // (bpvtk::pieceBlock): each block the whole of x and y.
+    std::vector<std::array<int, 6>> out;
+    const int cells = g.dims[2] - 1;
+    for (int k = 0; k < pieces; ++k)
+      out.push_back(
+        { 0, g.dims[0] - 1, 0, g.dims[1] - 1, cells * k / pieces, cells * (k + 1) / pieces });
+    return out;
+  }
   const int mx = (g.dims[0] - 1) / 2, my = (g.dims[1] - 1) / 3;
   const int last[3] = { g.dims[0] - 1, g.dims[1] - 1, g.dims[2] - 1 };
   if (pieces == 2)
@@ -127,10 +139,10 @@ Element elementOf(const bp::Engine& engine, std::size_t e)
 /// number of elements that changed pieces.
 std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, int pieces,
   bool ghostedPieces, int steps, double dt, long long& migrated, bp::Orientation orientation,
-  bp::Boundary boundary, bool trails)
+  bp::Boundary boundary, bool trails, bool slabs)
 {
   const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Cross);
-  const auto extents = splitExtent(whole.grid(), pieces);
+  const auto extents = splitExtent(whole.grid(), pieces, slabs);
   std::vector<bp::Box> boxes;
   for (const auto& e : extents)
     boxes.push_back(boxOf(whole.grid(), e));
@@ -190,7 +202,8 @@ std::map<std::uint32_t, Element> runDistributed(const bp::VectorField& whole, in
 /// Expects runs on 2 and 4 pieces, with the whole field or ghosted pieces,
 /// to reproduce `serial`, run on `whole` from the same parameters.
 void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whole, int steps,
-  double dt, bp::Orientation orientation, bp::Boundary boundary = bp::Boundary::ReleaseAgain)
+  double dt, bp::Orientation orientation, bp::Boundary boundary = bp::Boundary::ReleaseAgain,
+  bool slabs = false)
 {
   const std::size_t n = serial.particlesPerElement();
   const bool trails = serial.parameters().trailLength > 0;
@@ -199,8 +212,8 @@ void expectPiecesReproduce(const bp::Engine& serial, const bp::VectorField& whol
     for (bool ghosted : { false, true })
     {
       long long migrated = 0;
-      const auto state =
-        runDistributed(whole, pieces, ghosted, steps, dt, migrated, orientation, boundary, trails);
+      const auto state = runDistributed(
+        whole, pieces, ghosted, steps, dt, migrated, orientation, boundary, trails, slabs);
       ASSERT_EQ(state.size(), serial.elementCount());
       // Elements crossed between pieces, and some were reset (lifetimes end).
       EXPECT_GT(migrated, 100) << pieces << " pieces";
@@ -348,11 +361,13 @@ TEST(Partition, PiecesReproduceTheSingleProcessRunWithWalls)
 
 TEST(Partition, PiecesReproduceTheSingleProcessRunAcrossAPeriodicSeam)
 {
-  // Periodic along x and y, the axes the pieces split: each piece holds the
-  // whole of both (the field across the seam, as the tracer asks for it),
-  // owns the elements of its block, and an element moved by a period at
-  // the end of a step (Engine::wrapPeriodic, on the whole field's domain)
-  // goes to its new owner at the start of the next (migrate).
+  // Periodic along x and y, split by the pieces into z slabs (as the tracer
+  // splits such a field: bpvtk::pieceBlock) and, as where every axis is
+  // periodic, along x and y themselves: each piece holds the whole of both
+  // (the field across the seam, as the tracer asks for it), owns the
+  // elements of its block, and an element moved by a period at the end of
+  // a step (Engine::wrapPeriodic, on the whole field's domain) goes to its
+  // new owner at the start of the next (migrate), where it has another.
   bp::GridGeometry g = bptest::grid(33);
   g.periodic = { true, true, false };
   const bp::VectorField whole = bptest::steadyFlow(bp::AnalyticFlow::ABC, g);
@@ -389,6 +404,10 @@ TEST(Partition, PiecesReproduceTheSingleProcessRunAcrossAPeriodicSeam)
         EXPECT_GE(serial.centerOf(e)[std::size_t(a)], -1.0f);
         EXPECT_LE(serial.centerOf(e)[std::size_t(a)], 1.0f);
       }
-    expectPiecesReproduce(serial, whole, steps, dt, bp::Orientation::Random, boundary);
+    for (bool slabs : { true, false })
+    {
+      SCOPED_TRACE(slabs ? "z slabs" : "x and y split");
+      expectPiecesReproduce(serial, whole, steps, dt, bp::Orientation::Random, boundary, slabs);
+    }
   }
 }

@@ -6,6 +6,7 @@ with, per trace and time, the points, ElementId, ParticleIndex and Velocity
 sorted by (ElementId, ParticleIndex), and the process that output each point.
 """
 import argparse
+import glob
 import os
 import sys
 
@@ -283,12 +284,38 @@ def ftle_trace():
     return tracer
 
 
-# Periodic along x and y: a Wavelet image over [-10, 10] x [-5, 5] x [-2, 2]
+# Periodic along x and y: a Wavelet image over [-10, 10] x [-5, 5] x [-8, 8]
 # (spacing 1) in the uniform flow (1, 0.5, 0), whose period along x (20 at
 # speed 1) and along y (10 at 0.5) is 20; and the same image as a mesh of
 # hexahedra, resampled onto the same grid. Compared at 1, halfway and one
-# period later (test_parallel.py: check_periodic).
+# period later (test_parallel.py: check_periodic). The processes split z, the
+# one axis not periodic, into blocks with ghost layers (4 here, for an element
+# and a step): each reads whole x-y planes over a part of z, which the
+# periodic_blocks case records per rank in <output>-extent-<rank>.txt
+# (EXTENT_SCRIPT), saved as "periodic_extents".
 PERIODIC_TIMES = [1.0, 11.0, 21.0]
+
+# A pass-through that appends the extent it passes on (the one the tracer
+# asked its input for) to a file per rank.
+EXTENT_SCRIPT = (
+    "from vtkmodules.vtkParallelCore import vtkMultiProcessController\n"
+    "out = self.GetOutput(); out.ShallowCopy(self.GetInput())\n"
+    "c = vtkMultiProcessController.GetGlobalController()\n"
+    "r = c.GetLocalProcessId() if c else 0\n"
+    "with open(%r + '-extent-%%d.txt' %% r, 'a') as f:\n"
+    "    f.write(' '.join(str(v) for v in out.GetExtent()) + '\\n')\n" % args.output)
+for stale in glob.glob(args.output + "-extent-*.txt"):
+    os.remove(stale)
+
+
+def periodic_extents():
+    """Each rank's last recorded extent of the periodic_blocks case, in rank
+    order (rows of 6)."""
+    rows = []
+    for rank in range(len(glob.glob(args.output + "-extent-*.txt"))):
+        with open(args.output + "-extent-%d.txt" % rank) as f:
+            rows.append([int(v) for v in f.read().split("\n")[-2].split()])
+    return numpy.array(rows, dtype=int).reshape(-1, 6)
 
 
 def periodic_traces():
@@ -297,15 +324,15 @@ def periodic_traces():
     the whole of both axes (cuts them from the resampled grid) and hands each
     element that moves across a seam to the process that owns its new
     centre."""
-    wavelet = Wavelet(WholeExtent=[-10, 10, -5, 5, -2, 2])
+    wavelet = Wavelet(WholeExtent=[-10, 10, -5, 5, -8, 8])
     wind = updated(Calculator(Input=wavelet, ResultArrayName="wind", Function="iHat + 0.5*jHat"))
     hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=wind)))
     cases = {}
     for name, field, extra in (("periodic", wind, {}),
-                               ("periodic_mesh", hexes, {"ResampleDimensions": [21, 11, 5]})):
+                               ("periodic_mesh", hexes, {"ResampleDimensions": [21, 11, 17]})):
         tracer = BoundParticleTracer(Input=field, Vectors=["POINTS", "wind"], ElementShape="Strip4",
                                      NumberOfElements=400, ElementSize=1.0,
-                                     EmitterCenter=[0, 0, 0], EmitterSize=[18, 8, 3],
+                                     EmitterCenter=[0, 0, 0], EmitterSize=[18, 8, 15],
                                      StepSizeUnit="Time", StepSize=0.05, Duration=22,
                                      LifetimeRange=[100, 100], Seed=5, Periodic=[0, 1, 0], **extra)
         # Traced first periodic along y only, then along x too: under MPI
@@ -314,6 +341,17 @@ def periodic_traces():
         tracer.UpdatePipeline(11.0)
         tracer.Periodic = [1, 1, 0]
         cases[name] = (tracer, PERIODIC_TIMES)
+    # Periodic along x and y from the start, on a field of its own, passed
+    # through EXTENT_SCRIPT: the extent each rank asks for. (After a change
+    # of Periodic the producer may give the union of the old and new
+    # extents, which the tracer crops.)
+    own = Calculator(Input=Wavelet(WholeExtent=[-10, 10, -5, 5, -8, 8]), ResultArrayName="wind",
+                     Function="iHat + 0.5*jHat")
+    cases["periodic_blocks"] = (BoundParticleTracer(
+        Input=ProgrammableFilter(Input=own, Script=EXTENT_SCRIPT), Vectors=["POINTS", "wind"],
+        ElementShape="Strip4", NumberOfElements=400, ElementSize=1.0, EmitterCenter=[0, 0, 0],
+        EmitterSize=[18, 8, 15], StepSizeUnit="Time", StepSize=0.05, Duration=1.0, Seed=6,
+        Periodic=[1, 1, 0]), [0.5, 1.0])
     return cases
 
 
@@ -437,5 +475,6 @@ if args.render:
     Delete(view)
     del view
 
+result["periodic_extents"] = periodic_extents()
 numpy.savez(args.output, **result)
 print("wrote", args.output)

@@ -12,7 +12,8 @@ for bit on as many processes, and on another number (saved on 1 resumed on 2,
 saved on 2 resumed on 1 and 4) with the same elements as a trace on that
 number, within the same tolerance. Periodic along x and y, strips in a
 uniform flow are back where they were after one period, whole, on every
-number of processes, each process holding the elements of its block.
+number of processes, each process holding the elements of its block and
+reading whole x-y planes over a part of z (the axis the processes split).
 """
 import argparse
 import json
@@ -311,11 +312,43 @@ def check_periodic(result, run_name, ranks):
     """Each of parallel_trace.py's periodic cases."""
     for case in ("periodic", "periodic_mesh"):
         check_periodic_case(result, run_name, case, ranks)
+    check_periodic_extents(result, run_name, ranks)
+
+
+def check_periodic_extents(result, run_name, ranks):
+    """The periodic_blocks case's field as each rank asked for it
+    (parallel_trace.py's periodic_extents): whole along x and y, the
+    periodic axes; along z, the one left to split, a part of [-8, 8] on every
+    rank of several (its block with its ghost layers), the parts together
+    the whole axis. Before the blocks split z only, 2 ranks split x and each
+    read the whole field."""
+    name = "%s periodic_blocks" % run_name
+    if result is None or "periodic_extents" not in result.files:
+        bptest.check(False, "%s: no extents recorded" % name)
+        return
+    extents = result["periodic_extents"]
+    for rank, extent in enumerate(extents):
+        print("%s: rank %d read the field's extent %s" % (name, rank, extent.tolist()))
+    bptest.check(len(extents) == ranks, "%s: %d ranks recorded an extent, not %d" %
+                 (name, len(extents), ranks))
+    if len(extents) != ranks:
+        return
+    whole_xy = (extents[:, 0:4] == [-10, 10, -5, 5]).all()
+    bptest.check(whole_xy, "%s: a rank read part of a periodic axis: %s" %
+                 (name, extents.tolist()))
+    if ranks < 2:
+        return
+    part = ((extents[:, 4] > -8) | (extents[:, 5] < 8)).all()
+    bptest.check(part, "%s: a rank read the whole z axis, which is not periodic, so holds the "
+                 "whole field: %s" % (name, extents.tolist()))
+    covered = extents[:, 4].min() == -8 and extents[:, 5].max() == 8
+    bptest.check(covered, "%s: the ranks' z ranges leave part of [-8, 8]: %s" %
+                 (name, extents.tolist()))
 
 
 def check_periodic_case(result, run_name, case, ranks):
     """A periodic case of parallel_trace.py (x and y periodic, the uniform
-    flow (1, 0.5, 0) on [-10, 10] x [-5, 5] x [-2, 2]): after one period
+    flow (1, 0.5, 0) on [-10, 10] x [-5, 5] x [-8, 8]): after one period
     every strip is back where it was, shape and all; halfway, each is whole
     and its centre inside the box; and each process holds the elements whose
     centres lie in its block, but for those a step took across a block's
