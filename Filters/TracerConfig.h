@@ -42,6 +42,11 @@ struct TracerConfig
   vtkBoundParticleSeedType* seedType = nullptr;
   bool templateInput = false; ///< a template is connected (input 1)
   bool seedSource = false;    ///< a Seed Source is connected (input 2)
+  bool surfaces = false;      ///< Surfaces are connected (input 3)
+  /// What every surface cell does, unless surfaceInteractionArray names a
+  /// cell array of the Surfaces that says it per cell (empty: none).
+  bp::SurfaceInteraction surfaceInteraction = bp::SurfaceInteraction::Gate;
+  std::string surfaceInteractionArray;
   VectorsChoice vectors;      ///< the Vectors property
   /// Why the Vectors default took this array for its units (the time line's
   /// check, bpvtk::TracerTimeLine::reasonFor); empty when it did not.

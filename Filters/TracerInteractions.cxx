@@ -36,8 +36,8 @@ namespace bpvtk
 namespace
 {
 /// One event as doubles, for the gather: time, element, particle, kind,
-/// side, position (3), velocity (3).
-constexpr int Fields = 11;
+/// side, cell, position (3), velocity (3), normal (3).
+constexpr int Fields = 15;
 
 void pack(const bp::InteractionEvent& x, double* v)
 {
@@ -46,10 +46,12 @@ void pack(const bp::InteractionEvent& x, double* v)
   v[2] = double(x.particle);
   v[3] = double(int(x.kind));
   v[4] = double(x.side);
+  v[5] = double(x.cell);
   for (int k = 0; k < 3; ++k)
   {
-    v[5 + k] = double(x.position[std::size_t(k)]);
-    v[8 + k] = double(x.velocity[std::size_t(k)]);
+    v[6 + k] = double(x.position[std::size_t(k)]);
+    v[9 + k] = double(x.velocity[std::size_t(k)]);
+    v[12 + k] = double(x.normal[std::size_t(k)]);
   }
 }
 
@@ -60,11 +62,13 @@ bp::InteractionEvent unpack(const double* v)
   x.element = std::uint32_t(v[1]);
   x.particle = std::int32_t(v[2]);
   x.kind = bp::Interaction(int(v[3]));
-  x.side = std::int8_t(v[4]);
+  x.side = std::int32_t(v[4]);
+  x.cell = std::int32_t(v[5]);
   for (int k = 0; k < 3; ++k)
   {
-    x.position[std::size_t(k)] = float(v[5 + k]);
-    x.velocity[std::size_t(k)] = float(v[8 + k]);
+    x.position[std::size_t(k)] = float(v[6 + k]);
+    x.velocity[std::size_t(k)] = float(v[9 + k]);
+    x.normal[std::size_t(k)] = float(v[12 + k]);
   }
   return x;
 }
@@ -121,6 +125,7 @@ struct InteractionsOutput::Arrays
   vtkSmartPointer<vtkFloatArray> velocity = named<vtkFloatArray>("ElementVelocity", 3);
   vtkSmartPointer<vtkFloatArray> normal = named<vtkFloatArray>("Normal", 3);
   vtkSmartPointer<vtkIntArray> surface = named<vtkIntArray>("SurfaceId", 1);
+  vtkSmartPointer<vtkIntArray> cell = named<vtkIntArray>("SurfaceCell", 1);
   vtkSmartPointer<vtkIntArray> kind = named<vtkIntArray>("Interaction", 1);
   vtkSmartPointer<vtkIdTypeArray> offsets = vtkSmartPointer<vtkIdTypeArray>::New();
   vtkSmartPointer<vtkIdTypeArray> connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
@@ -138,7 +143,6 @@ struct InteractionsOutput::Arrays
     for (std::size_t k = 0; k < count; ++k, ++id)
     {
       const bp::InteractionEvent& x = events[k];
-      const std::array<float, 3> n = bp::sideNormal(x.side);
       double p[3];
       float v[3];
       for (int a = 0; a < 3; ++a)
@@ -152,8 +156,9 @@ struct InteractionsOutput::Arrays
       this->particle->InsertNextValue(x.particle);
       this->time->InsertNextValue(bp::traceTime(direction, x.time));
       this->velocity->InsertNextTypedTuple(v);
-      this->normal->InsertNextTypedTuple(n.data());
+      this->normal->InsertNextTypedTuple(x.normal.data());
       this->surface->InsertNextValue(x.side);
+      this->cell->InsertNextValue(x.cell);
       this->kind->InsertNextValue(int(x.kind));
       this->connectivity->InsertNextValue(id);
       this->offsets->InsertNextValue(id + 1);
@@ -201,9 +206,9 @@ struct InteractionsOutput::Arrays
     a->Modified();
   }
 
-  std::array<vtkAbstractArray*, 7> all() const
+  std::array<vtkAbstractArray*, 8> all() const
   {
-    return { { element, particle, time, velocity, normal, surface, kind } };
+    return { { element, particle, time, velocity, normal, surface, cell, kind } };
   }
 
   /// `out` made of these arrays: points, one vertex cell an event (the

@@ -7,13 +7,15 @@
  *
  * One vertex per event at the point where it happened (world coordinates),
  * with the point arrays ElementId, ParticleIndex (-1 for the whole element),
- * Time (the data's time at the end of the step it happened in), ElementVelocity
+ * Time (the data's time at the end of the step it happened in; for a
+ * surface's passage, when the element's centre crossed it), ElementVelocity
  * (the element's mean velocity over that step, per time of the data),
- * Normal (the outward normal of the side met; 0 for a cell outside the
- * flow), SurfaceId (the box's sides 0..5 = -x, +x, -y, +y, -z, +z, -1 for
- * none; ids from 6 up are kept for surfaces given as an input, a later
- * stage) and Interaction (bp::Interaction: 0 Released, 1 Terminated,
- * 2 Stuck, 3 Slid, 4 Bounced), whose names the field data array
+ * Normal (the outward normal of the side met, 0 for a cell outside the
+ * flow; the surface's own normal for a passage), SurfaceId (the box's sides
+ * 0..5 = -x, +x, -y, +y, -z, +z, -1 for none; 6 + the block's index for a
+ * surface of the Surfaces input), SurfaceCell (the Surfaces input's cell
+ * passed, -1 for a side) and Interaction (bp::Interaction: 0 Released,
+ * 1 Terminated, 2 Stuck, 3 Slid, 4 Bounced, 5 Passed), whose names the field data array
  * InteractionNames holds in that order. The events are in the trace's
  * order: by the trace time of their step (so Time decreases in a backward
  * trace), then ElementId, ParticleIndex and Interaction, on any number of

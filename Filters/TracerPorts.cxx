@@ -81,9 +81,10 @@ void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs, bo
 void requestWholeInputs(vtkInformationVector** inputs, bool hasTimes, double startTime)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  // The template and the seed points are whole on every process: each
-  // process places elements anywhere, and a piece of them would differ.
-  for (int port = 1; port < 3; ++port)
+  // The template, the seed points and the Surfaces are whole on every
+  // process: each process places elements anywhere, and its elements may
+  // pass any surface; a piece of them would differ.
+  for (int port = 1; port < 4; ++port)
   {
     vtkInformation* whole = inputs[port]->GetInformationObject(0);
     if (!whole)

@@ -72,7 +72,7 @@ void markNotGenerated(
 bool fillsInteractions(vtkInformation* request, vtkInformationVector* outputs);
 
 /**
- * The template (input 1) and seed (input 2) connections asked for whole on
+ * The template (input 1), seed (input 2) and Surfaces (input 3) connections asked for whole on
  * every process, and without the GPU display's request; a time-varying one
  * at the trace's start `startTime` when `hasTimes`, a steady one at no time.
  */

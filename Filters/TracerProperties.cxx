@@ -123,6 +123,12 @@ bpvtk::TracerConfig vtkBoundParticleTracer::Config()
     ? weights->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   c.trace.weighted = !c.releaseWeights.empty();
+  // The Surfaces: input 3, with the interaction of every cell, or of each
+  // by a cell array of the Surfaces ("None", the panel's, or empty for none).
+  c.surfaces = this->GetNumberOfInputConnections(3) > 0;
+  c.surfaceInteraction = this->SurfaceInteraction;
+  c.surfaceInteractionArray =
+    this->SurfaceInteractionArray != "None" ? this->SurfaceInteractionArray : "";
   return c;
 }
 

@@ -335,6 +335,7 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
       return seedError;
     }
   }
+  this->gatherSurfaces(config, inputVector, field, p);
   if (!this->InSitu.restart)
   {
     // A restart's only time is its first step: its elements came before.

@@ -22,16 +22,17 @@ namespace bpvtk
 /// What a warning said once per configuration is about.
 enum class Topic
 {
-  NonFinite,   ///< the input's NaN share
-  Mask,        ///< an unusable vtkValidPointMask
-  Resample,    ///< the resampler's warning (blocks without the Vectors, the grid)
-  Weights,     ///< Release Weights unusable
-  Seeds,       ///< the seed points' warnings
-  OutOfPlane,  ///< a flat field's crossing vectors
-  GridChange,  ///< in situ, a change of grid
-  CellVectors, ///< point Vectors made of a cell array
-  Emitter,     ///< the emitter box moved into a changed grid (releaseIntoGrid)
-  Interactions ///< the engine's event log full (bp::InteractionLog::full)
+  NonFinite,    ///< the input's NaN share
+  Mask,         ///< an unusable vtkValidPointMask
+  Resample,     ///< the resampler's warning (blocks without the Vectors, the grid)
+  Weights,      ///< Release Weights unusable
+  Seeds,        ///< the seed points' warnings
+  OutOfPlane,   ///< a flat field's crossing vectors
+  GridChange,   ///< in situ, a change of grid
+  CellVectors,  ///< point Vectors made of a cell array
+  Emitter,      ///< the emitter box moved into a changed grid (releaseIntoGrid)
+  Interactions, ///< the engine's event log full (bp::InteractionLog::full)
+  Surfaces      ///< what of the Surfaces input is left out
 };
 
 class SaidOnce

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TracerSteppers.h"
 
+#include "Surfaces.h"
+
 #include "BoundParticleWorkQueues.h"
 #include "TracerParallel.h"
 
@@ -166,8 +168,14 @@ std::string TracerSteppers::fallBackIfTooLarge(
     return std::string();
   }
   const int maxSize = this->Queue->report().maxTextureSize;
-  const std::string limit =
+  std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
+  if (limit.empty() && p.surfaces && p.surfaces->hasOutlets())
+  {
+    // Gates change nothing in a step (they record, and the GPU engine records
+    // nothing): only an Outlet needs the engine's own rule.
+    limit = "the GPU engine does not end elements at Outlet surfaces (Surfaces input) yet";
+  }
   if (limit.empty())
   {
     return std::string();

@@ -54,7 +54,7 @@ vtkBoundParticleTracer::vtkBoundParticleTracer()
   : Internals(new vtkBoundParticleTracerInternals(this))
   , TimeLine(new bpvtk::TracerTimeLine(this))
 {
-  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfInputPorts(4);
   // The elements, the FTLE map of a lattice release (TracerFtleMap.h), the
   // trace's state to save (TracerPorts.h) and the events at the field's
   // sides (TracerInteractions.h).
@@ -155,7 +155,7 @@ int vtkBoundParticleTracer::FillInputPortInformation(int port, vtkInformation* i
   // process given no data at all still takes part in the collective steps of
   // a distributed update, instead of leaving the others waiting.
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
-  if (port == 1 || port == 2)
+  if (port >= 1) // the template, the Seed Source and the Surfaces
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   }
@@ -611,6 +611,8 @@ void vtkBoundParticleTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ResetWhen: " << this->GetResetWhenAsString() << "\n";
   os << indent << "Boundary: " << this->GetBoundaryAsString()
      << ", Restitution: " << this->Restitution << "\n";
+  os << indent << "SurfaceInteraction: " << this->GetSurfaceInteractionAsString()
+     << ", SurfaceInteractionArray: " << this->SurfaceInteractionArray << "\n";
   os << indent << "Periodic: " << this->Periodic[0] << " " << this->Periodic[1] << " "
      << this->Periodic[2] << "\n";
   os << indent << "ColoringAxis: " << char('X' + this->ColoringAxis) << "\n";

@@ -227,31 +227,25 @@ public:
   ///@}
 
   ///@{
-  /// Memory (MiB) the trace's checkpoints may take: copies of the engine's
-  /// whole state kept on step boundaries, as many as fit, spread evenly over
-  /// the trace, so that going back in time resumes from the latest one at or
-  /// before the time asked for instead of replaying from the start (with the
-  /// same result, bit for bit). -1 (default): half the trace's own size (its
-  /// engine state and output, as the memory estimate gives it); 0 keeps none.
-  /// At most half of what the process can allocate is used. The GPU engine
-  /// keeps its checkpoints in GPU memory (copies of its state textures, made
-  /// on the GPU) within the same budget. Clamped to [-1, 1e7], a value
-  /// outside said.
+  /// Memory (MiB) the trace's checkpoints may take: copies of the whole
+  /// state on step boundaries, spread evenly over the trace, so that going
+  /// back in time resumes from the latest one before the time asked for
+  /// instead of replaying from the start (bit for bit the same). -1
+  /// (default): half the trace's own size; 0 keeps none; at most half of what
+  /// the process can allocate. The GPU engine keeps its checkpoints in GPU
+  /// memory within the same budget. Clamped to [-1, 1e7], a value outside said.
   vtkBPClampedSetMacro(CheckpointMemory, double, -1.0, 1.0e7);
   vtkGetMacro(CheckpointMemory, double);
   ///@}
 
   ///@{
   /// A trace's state to go on from (File > Save Data on the State output,
-  /// output 2, as .vtp or .pvtp in Binary): times at or after the state's
-  /// are traced from it, bit for bit as the trace that saved it, instead of
-  /// from the start; earlier times are traced from the start as usual. The
-  /// tracer's settings and its input must be those it was saved with: a
-  /// state that differs (another setting, template, grid or field, or a file
-  /// cut short, altered or saved as ASCII) fails the update with a message
-  /// that names the difference. Both engines resume (the GPU engine in the
-  /// Bound Particles display, within the engines' agreement); only the CPU
-  /// engine saves. Empty (default): none.
+  /// output 2, .vtp or .pvtp in Binary): times at or after the state's are
+  /// traced from it, bit for bit as the trace that saved it; earlier ones
+  /// from the start. Settings and input must be those it was saved with: a
+  /// state that differs (a setting, template, grid or field, a file cut
+  /// short, altered or ASCII) fails with a message naming the difference.
+  /// Both engines resume; only the CPU engine saves. Empty (default): none.
   vtkSetStdStringFromCharMacro(InitialStateFile);
   vtkGetCharFromStdStringMacro(InitialStateFile);
   ///@}
@@ -325,10 +319,8 @@ public:
   /// equation, dv/dt = (u - v) / ResponseTime + beta Du/Dt + (1 - beta)
   /// Gravity with beta = 3 / (1 + 2 DensityRatio), starting at the flow's
   /// velocity. The response time is in the data's time units (0 is
-  /// massless), Gravity in its units of length per time squared. Not with
-  /// Anchor; both engines, CPU and GPU, step heavy particles. A negative or
-  /// NaN ResponseTime, a DensityRatio not above 0 or a NaN Gravity is
-  /// refused.
+  /// massless), Gravity in length per time squared. Not with Anchor; both
+  /// engines. Refused: ResponseTime < 0 or NaN, DensityRatio <= 0, NaN Gravity.
   // Declares SetInertia, GetInertia and GetInertiaAsString.
   vtkBPEnumMacro(Inertia, bp::Inertia);
   vtkSetMacro(ResponseTime, double);
@@ -360,25 +352,39 @@ public:
   /// (Bounce), and the springs restore the rest of the element, so a strip
   /// lies down along a wall or tumbles off it; heavy particles (Inertia)
   /// lose their velocity, its normal component, or have that reversed times
-  /// the Restitution. A particle that enters a cell outside the flow goes
-  /// back to where it was before the step (and stops). Walled elements are
-  /// never released again for leaving. Terminate cannot be used with
-  /// Linking (a super set lives out its lifetime whole); Stick, Slip and
-  /// Bounce cannot be used with Linking or Anchor = Centre. Both engines do
-  /// the same. Output 3 (Interactions) has an event for each element that
-  /// leaves and each particle's first contact with a wall (each bounce).
+  /// the Restitution. A particle entering a cell outside the flow goes back
+  /// (and stops). Walled elements are never released for leaving. Not with
+  /// Linking; walls not with Anchor = Centre. Both engines do the same.
+  /// Output 3 (Interactions) has an event for each element that leaves and
+  /// each particle's first contact with a wall (each bounce).
   // Declares SetBoundary, GetBoundary and GetBoundaryAsString.
   vtkBPEnumMacro(Boundary, bp::Boundary);
   ///@}
 
   ///@{
   /// Bounce's coefficient of restitution, 0 to 1 (default 1, a mirror): a
-  /// particle's step beyond a wall comes back this share of the way, a heavy
-  /// particle leaves the wall with this share of its normal velocity (and
-  /// rises to its square of the height it fell from). 0 is Slip. Used by
+  /// step beyond a wall comes back this share of the way, a heavy particle
+  /// leaves with this share of its normal velocity. 0 is Slip. Used by
   /// Boundary = Bounce only; outside [0, 1] (or NaN) is refused.
   vtkSetMacro(Restitution, double);
   vtkGetMacro(Restitution, double);
+  ///@}
+
+  ///@{
+  /// The optional fourth input, Surfaces: any data set whose surface (a
+  /// volume's boundary; in a 2D field lines, across the plane) acts on the
+  /// elements whose centres cross it: a Gate lets them through, an Outlet
+  /// ends them as Terminate does; output 3 records each passage.
+  /// SurfaceInteraction is what every cell does (Gate, default; Outlet),
+  /// unless SurfaceInteractionArray names a cell array of the Surfaces that
+  /// says it per cell (0 Gate, 1 Outlet; "None", the default, or empty:
+  /// none). Not with Linking or Anchor = Centre. A GPU display runs the CPU
+  /// engine where there is an Outlet.
+  void SetSurfacesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(3, output); }
+  // Declares SetSurfaceInteraction, GetSurfaceInteraction and GetSurfaceInteractionAsString.
+  vtkBPEnumMacro(SurfaceInteraction, bp::SurfaceInteraction);
+  vtkSetStdStringFromCharMacro(SurfaceInteractionArray);
+  vtkGetCharFromStdStringMacro(SurfaceInteractionArray);
   ///@}
 
   ///@{
@@ -448,11 +454,9 @@ public:
   vtkGetMacro(TrailSpacing, int);
   ///@}
 
-  ///@{
   /// Seed of the counter-based random numbers: the same seed, the same trace.
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
-  ///@}
 
   ///@{
   /// For a steady input: the time range [0, Duration] and the number of time
@@ -541,12 +545,9 @@ public:
   /// Where the output records the GPU_WORK_QUEUE it was made for.
   static vtkInformationIntegerKey* DATA_GPU_WORK_QUEUE();
 
-  /**
-   * Hands the memory this process has freed back to the system (glibc keeps
-   * freed blocks in its heap otherwise). A tracer does it when it is
-   * destroyed; the GUI does it again once a deleted tracer's displays are
-   * gone too (their copies of its output are freed after it).
-   */
+  /// Hands the memory this process has freed back to the system (glibc keeps
+  /// it otherwise): a tracer when destroyed, the GUI again once a deleted
+  /// tracer's displays (with their copies of its output) are gone too.
   static void ReturnFreedMemory();
 
   ///@{
@@ -563,17 +564,13 @@ public:
   ///@}
 
   ///@{
-  /// For the Vectors property's default (vtkSMBoundParticleVectorsDomain):
-  /// found by RequestInformation while Vectors is not set, on the input its
-  /// time line's probe delivered at its first time step (nothing else
-  /// updates for it), and kept once Vectors is set while the input is the
-  /// same. Asked of an input RequestInformation has not seen yet (pvpython
-  /// sets the default as soon as Input is set), found on the data that input
-  /// holds, at the time it holds: nothing is updated for them.
-  /// Where the input is an image or a rectilinear grid with several
-  /// 3-component point arrays, the time line automatic, and the array
-  /// Vectors takes by name (the input's active vectors, else a velocity's
-  /// name, else the first) fails the time line's units check while another
+  /// For the Vectors property's default (vtkSMBoundParticleVectorsDomain),
+  /// found by RequestInformation while Vectors is not set (on the data its
+  /// probe delivered; on the data an input holds where it has not run yet;
+  /// nothing is updated for them), kept once Vectors is set while the input
+  /// is the same: where the input is an image or rectilinear grid with
+  /// several 3-component point arrays, the time line automatic, and the array
+  /// Vectors takes by name fails the time line's units check while another
   /// passes it (bp::preferFittingUnits), the array that fails and the one to
   /// take instead. Empty otherwise, and in an MPI run.
   const char* GetUnitsMismatchedVectors();
@@ -591,8 +588,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// Port 0: the elements (vtkPolyData); port 1: the FTLE map (vtkImageData);
   /// port 2: the trace's state (vtkPolyData, filled only when it is asked for);
-  /// port 3: Interactions, one vertex per event at the field's sides so far
-  /// (TracerInteractions.h has its arrays); CPU engine only.
+  /// port 3: Interactions, one vertex per event at the field's sides and the
+  /// Surfaces so far (TracerInteractions.h has its arrays); CPU engine only.
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   ///@{
   /// The State output: filled only when it is asked for
@@ -646,6 +643,8 @@ protected:
   bp::ResetWhen ResetWhen = bp::ResetWhen::CenterLeaves;
   bp::Boundary Boundary = bp::Boundary::ReleaseAgain;
   double Restitution = 1.0;
+  bp::SurfaceInteraction SurfaceInteraction = bp::SurfaceInteraction::Gate;
+  std::string SurfaceInteractionArray = "None";
   int Periodic[3] = { 0, 0, 0 };
   int ColoringAxis = 2;
   int ResampleDimensions[3] = { 0, 0, 0 };

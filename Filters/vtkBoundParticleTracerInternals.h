@@ -519,6 +519,11 @@ private:
   /// collective in parallel); an error when nothing can be released.
   std::string surfaceSeedPoints(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, bpvtk::TracerSeeds& seeds);
+  /// The Surfaces input (input 3) as the engine's gates and outlets in
+  /// `p.surfaces` (null where none acts; TracerSurfaces.cxx), with a warning
+  /// (once) for what is left out.
+  void gatherSurfaces(const Config& config, vtkInformationVector** inputVector,
+    const bp::VectorField& field, bp::Parameters& p);
   /// The seed points in the field, as release centres in engine coordinates;
   /// an error when none lies in the flow.
   std::string seedPoints(

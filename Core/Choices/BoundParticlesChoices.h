@@ -159,6 +159,22 @@ struct EnumTraits<Boundary>
     "Bounce" };
 };
 
+/// What a surface of the tracer's Surfaces input does to the elements that
+/// pass it (Surface Interaction; engine specification 2.10): a Gate lets
+/// them through and records each passage, an Outlet ends them (as Boundary
+/// Terminate does) and records it. A Surface Interaction Array holds these
+/// values per cell.
+enum class SurfaceInteraction
+{
+  Gate = 0,
+  Outlet
+};
+template <>
+struct EnumTraits<SurfaceInteraction>
+{
+  static constexpr const char* names[] = { "Gate", "Outlet" };
+};
+
 /// The unit of the tracer's Step Size (Step Size Unit): cells, the fastest
 /// particle of the field moving that many cell lengths per step
 /// (TraceSettings::stepInCellLengths), or the data's time units.

@@ -444,9 +444,23 @@ private:
   void noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
     const float* moved, const float* leftAt, bool terminated, std::vector<InteractionEvent>& events,
     std::size_t first) const;
-  /// One step's events, in any order, kept in the log at `time` (the
-  /// step's end), ordered by element and particle.
-  void keepInteractions(std::vector<InteractionEvent>&& events, double time);
+  /// One step's events from t of size h, in any order, kept in the log at
+  /// their times (each event's share of the step: t + share h, the end
+  /// t + h as such), ordered by element and particle.
+  void keepInteractions(std::vector<InteractionEvent>&& events, double t, double h);
+  /// settle()'s end for element e: its reset flag from the step (`leave`:
+  /// due at once; `left`: out of the field; `moved`: its particles' mean,
+  /// null where the step was taken back; `at`: the centre tested), its
+  /// passages of the Surfaces, and its events.
+  void flagAfterStep(std::size_t e, const VectorField& field, double h, const float* before,
+    const float* moved, const float at[3], bool leave, bool left,
+    std::vector<InteractionEvent>* events, std::size_t first);
+  /// The Surfaces (Parameters::surfaces, 2.10): element e's centre moved
+  /// from its particles' mean `before` to `center` over the step; its
+  /// passages recorded in `events` (when given, with their share of the
+  /// step as time). Whether it ends at an Outlet.
+  bool passSurfaces(std::size_t e, const float* before, const float center[3],
+    std::vector<InteractionEvent>* events) const;
   /// Anchor::Centre: element e moved whole from its particles' mean `center`
   /// to its release centre; whether a particle is then outside the domain
   /// (tested only with `testParticles`).

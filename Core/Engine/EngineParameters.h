@@ -19,10 +19,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace bp
 {
+
+class SurfaceSet;
 
 /// The most particles a system may hold (about 2 GiB of state and output).
 constexpr std::size_t MaxParticles = std::size_t(1) << 26;
@@ -110,6 +113,10 @@ struct Parameters
   /// beyond the wall comes back e times as far, a heavy particle's normal
   /// velocity leaves at e times its speed. 1 (the default) is a mirror.
   float restitution = 1.0f;
+  /// The Surfaces input's gates and outlets (Surfaces.h, engine
+  /// specification 2.10), in engine coordinates; null for none. Shared by
+  /// every copy of the parameters (it never changes once made).
+  std::shared_ptr<const SurfaceSet> surfaces;
   ReleasePattern releasePattern = ReleasePattern::Random;
   /// The lattice of ReleasePattern::Lattice, over the emitter box
   /// (resolveSettings makes numberOfElements its size()).

@@ -5,6 +5,7 @@
 // save and load) is in EngineSaveState.cpp.
 #include "EngineState.h"
 #include "Engine.h"
+#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -232,6 +233,26 @@ std::vector<NamedValue> parameterValues(const Parameters& p)
   // Restitution was once changed still resumes a state that never bounced.
   const double restitution = p.boundary == Boundary::Bounce ? p.restitution : 1.0;
   v.push_back({ "restitution", restitution, 0.0, 1.0 });
+  // The Surfaces came later: a state saved before them had none.
+  Hash32 surfaces;
+  std::size_t triangles = 0;
+  if (p.surfaces)
+  {
+    const SurfaceTriangles& given = p.surfaces->triangles();
+    triangles = given.cells.size();
+    for (const float f : given.corners)
+    {
+      surfaces.f32(f);
+    }
+    for (std::size_t k = 0; k < triangles; ++k)
+    {
+      surfaces.u32(std::uint32_t(given.surfaces[k]));
+      surfaces.u32(std::uint32_t(given.cells[k]));
+      surfaces.u32(std::uint32_t(given.interaction[k]));
+    }
+  }
+  v.push_back({ "surfaces.count", double(triangles), 0.0, 0.0 });
+  v.push_back({ "surfaces.hash", triangles ? double(surfaces.value()) : 0.0, 0.0, 0.0 });
   addEnum(v, "releasePattern", p.releasePattern);
   addArray(v, "lattice.counts", p.lattice.counts);
   addArray(v, "lattice.origin", p.lattice.origin);

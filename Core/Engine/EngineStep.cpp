@@ -282,13 +282,14 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
     if (walls)
     {
       InteractionEvent met;
-      met.side = std::int8_t(
-        this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip, met.position.data()));
+      met.side =
+        this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip, met.position.data());
       if (events && met.side != NoSide)
       {
         met.element = this->Ids[e];
         met.particle = std::int32_t(i);
         met.kind = wallInteraction(this->Params.boundary);
+        met.normal = sideNormal(met.side);
         events->push_back(met);
       }
     }
@@ -398,6 +399,15 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   {
     this->updatePose(e, field, weights, h, finite);
   }
+  this->flagAfterStep(
+    e, field, h, before, finite ? moved : nullptr, at, leave, left, events, first);
+  this->Lifetimes[e] -= float(h);
+}
+
+void Engine::flagAfterStep(std::size_t e, const VectorField& field, double h, const float* before,
+  const float* moved, const float at[3], bool leave, bool left,
+  std::vector<InteractionEvent>* events, std::size_t first)
+{
   // A super set's element stays (and keeps its last good positions when they
   // turn non-finite): resetting it alone would tear the structure.
   // A hidden element stays hidden, and due (even in a super set, which is
@@ -405,22 +415,27 @@ void Engine::settle(std::size_t e, const VectorField& field, const StepWeights& 
   // Boundary::Terminate: one that left the field is hidden (Terminated)
   // until its lifetime runs out, and stays so whatever happens to it meanwhile.
   const std::uint8_t hidden = this->ResetFlags[e] & (ReleaseHidden | Terminated);
+  // The Surfaces (2.10): the centre's step through gates and outlets; an
+  // element that is not shown passes none.
+  const bool exits = this->Params.surfaces && moved && !leave && !hidden && this->Links.empty() &&
+    this->passSurfaces(e, before, moved, events);
   std::uint8_t flag = 0;
   if (this->Links.empty() && !(hidden & Terminated))
   {
     // A wall keeps the element in: it is never released again for leaving.
-    const bool terminates = left && !leave && this->Params.boundary == Boundary::Terminate;
+    // An Outlet ends it, as Terminate does, wherever it went on after.
+    const bool terminates =
+      !leave && (exits || (left && this->Params.boundary == Boundary::Terminate));
     const bool walled = isWall(this->Params.boundary);
     flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
   }
   if (events)
   {
-    const bool leaving = left && flag && !isWall(this->Params.boundary);
-    this->noteEvents(e, field, h, before, finite && !hidden ? moved : nullptr, // hidden: none
+    const bool leaving = left && flag && !isWall(this->Params.boundary) && !exits;
+    this->noteEvents(e, field, h, before, hidden ? nullptr : moved, // hidden: none
       leaving ? at : nullptr, flag == Terminated, *events, first);
   }
   this->ResetFlags[e] = std::uint8_t(flag | hidden);
-  this->Lifetimes[e] -= float(h);
 }
 
 bool Engine::wrapPeriodic(
@@ -598,7 +613,7 @@ void Engine::step(const VectorField& field, double t, double h, const RangeRunne
         stepEvents.insert(stepEvents.end(), events.begin(), events.end());
       }
     });
-  this->keepInteractions(std::move(stepEvents), t + h);
+  this->keepInteractions(std::move(stepEvents), t, h);
 }
 
 void Engine::prefetchElement(std::size_t e) const

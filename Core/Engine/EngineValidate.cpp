@@ -259,6 +259,27 @@ std::string checkInertia(const ElementTemplate& /*shape*/, const Parameters& p)
   return std::string();
 }
 
+std::string checkSurfaces(const ElementTemplate& /*shape*/, const Parameters& p)
+{
+  if (!p.surfaces)
+  {
+    return std::string();
+  }
+  if (p.linking != Linking::None)
+  {
+    // A super set's elements are never flagged, and record nothing.
+    return "Surfaces (gates and outlets) act on single elements; a super set (Linking) lives out "
+           "its lifetime whole: set Linking to None or disconnect the Surfaces";
+  }
+  if (p.anchor != Anchor::None)
+  {
+    // An anchored element goes back to its release centre every step.
+    return "Surfaces (gates and outlets) act on travelling elements; Anchor = Centre holds them "
+           "at their release centre: set Anchor to None or disconnect the Surfaces";
+  }
+  return std::string();
+}
+
 std::string checkBoundary(const ElementTemplate& /*shape*/, const Parameters& p)
 {
   if (int(p.boundary) < int(Boundary::ReleaseAgain) || int(p.boundary) > int(Boundary::Bounce))
@@ -308,7 +329,8 @@ std::string Engine::validate(const ElementTemplate& shape, const Parameters& p)
   // the one reported.
   using Check = std::string (*)(const ElementTemplate&, const Parameters&);
   const Check checks[] = { checkShape, checkLattice, checkSize, checkTrail, checkReleaseWindow,
-    checkRelease, checkRestoration, checkLinking, checkAnchor, checkInertia, checkBoundary };
+    checkRelease, checkRestoration, checkLinking, checkAnchor, checkInertia, checkBoundary,
+    checkSurfaces };
   for (const Check check : checks)
   {
     std::string error = check(shape, p);

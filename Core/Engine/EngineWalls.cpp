@@ -3,6 +3,7 @@
 // "Walls") and the events at the field's sides it records (Interactions.h,
 // 2.9): called from the step in EngineStep.cpp.
 #include "Engine.h"
+#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,23 @@ namespace
 inline bool finite3(const float* p)
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+/// The mean of n particles' positions p, summed in float as settle() sums it.
+void meanOf(const float* p, std::size_t n, float mean[3])
+{
+  float c[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += p[3 * i + k];
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    mean[k] = c[k] / float(n);
+  }
 }
 } // namespace
 
@@ -91,7 +109,8 @@ void Engine::wallAfterRestoration(std::size_t e, const VectorField& field,
       put.element = this->Ids[e];
       put.particle = std::int32_t(i);
       put.kind = wallInteraction(this->Params.boundary);
-      put.side = std::int8_t(lowestSide(met));
+      put.side = lowestSide(met);
+      put.normal = sideNormal(put.side);
       std::copy_n(q, 3, put.position.data());
       events.push_back(put);
     }
@@ -113,7 +132,8 @@ void Engine::recordLeaving(std::size_t e, const VectorField& field, const float 
   left.element = this->Ids[e];
   left.particle = -1;
   left.kind = terminated ? Interaction::Terminated : Interaction::Released;
-  left.side = std::int8_t(lowestSide(beyond));
+  left.side = lowestSide(beyond);
+  left.normal = sideNormal(left.side);
   std::copy_n(at, 3, left.position.data());
   events.push_back(left);
 }
@@ -121,26 +141,47 @@ void Engine::recordLeaving(std::size_t e, const VectorField& field, const float 
 void Engine::fillVelocity(const float* before, const float center[3], double h,
   std::vector<InteractionEvent>& events, std::size_t first) const
 {
-  // The particles' mean before the step, summed in float as settle() sums
-  // the centre after it.
-  const std::size_t n = this->Shape.particleCount();
-  float c[3] = { 0, 0, 0 };
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] += before[3 * i + k];
-    }
-  }
+  float c[3];
+  meanOf(before, this->Shape.particleCount(), c);
   std::array<float, 3> velocity;
   for (int k = 0; k < 3; ++k)
   {
-    velocity[std::size_t(k)] = float((double(center[k]) - double(c[k] / float(n))) / h);
+    velocity[std::size_t(k)] = float((double(center[k]) - double(c[k])) / h);
   }
   for (std::size_t k = first; k < events.size(); ++k)
   {
     events[k].velocity = velocity;
   }
+}
+
+bool Engine::passSurfaces(std::size_t e, const float* before, const float center[3],
+  std::vector<InteractionEvent>* events) const
+{
+  const SurfaceSet& surfaces = *this->Params.surfaces;
+  float from[3];
+  meanOf(before, this->Shape.particleCount(), from);
+  thread_local std::vector<SurfaceCrossing> crossings;
+  const bool exits = surfaces.passages(from, center, crossings);
+  for (const SurfaceCrossing& c : crossings)
+  {
+    if (!events)
+    {
+      break;
+    }
+    InteractionEvent passed;
+    passed.time = c.t; // the share of the step; keepInteractions makes it a time
+    passed.element = this->Ids[e];
+    passed.particle = -1;
+    passed.kind = surfaces.interaction(c.triangle) == SurfaceInteraction::Outlet
+      ? Interaction::Terminated
+      : Interaction::Passed;
+    passed.side = FirstSurfaceId + c.surface;
+    passed.cell = surfaces.cell(c.triangle);
+    passed.position = c.point;
+    passed.normal = c.normal;
+    events->push_back(passed);
+  }
+  return exits;
 }
 
 void Engine::noteEvents(std::size_t e, const VectorField& field, double h, const float* before,
@@ -162,11 +203,12 @@ void Engine::noteEvents(std::size_t e, const VectorField& field, double h, const
   }
 }
 
-void Engine::keepInteractions(std::vector<InteractionEvent>&& events, double time)
+void Engine::keepInteractions(std::vector<InteractionEvent>&& events, double t, double h)
 {
   for (InteractionEvent& event : events)
   {
-    event.time = time;
+    // The share of the step it happened at (1: its end, t + h as such).
+    event.time = event.time == 1.0 ? t + h : t + event.time * h;
   }
   std::sort(events.begin(), events.end(), interactionBefore);
   this->Log.append(std::move(events));

@@ -4,7 +4,8 @@
  * @brief What the elements did at the field's sides (engine specification
  * 2.9, "Interactions"): one event per particle that meets a wall it did
  * not lie on before the step (Stick, Slip, Bounce), one per element that
- * leaves the field (Release Again, Terminate). The CPU engine records them
+ * leaves the field (Release Again, Terminate), and one per passage of an
+ * element through a surface of the Surfaces input (2.10: Gate, Outlet). The CPU engine records them
  * as it steps (Engine::interactions()); the tracer's Interactions output
  * shows them. The GPU engine drives a display only and records none.
  *
@@ -28,28 +29,32 @@ namespace bp
 {
 
 /// What happened: an element that left the field and was released again
-/// (Release Again) or ended (Terminate); a particle held on a wall (Stick),
-/// put on it to slide (Slip), or reflected (Bounce).
+/// (Release Again) or ended (Terminate, or an Outlet surface); a particle
+/// held on a wall (Stick), put on it to slide (Slip), or reflected
+/// (Bounce); an element that passed a Gate surface (2.10).
 enum class Interaction : std::int8_t
 {
   Released = 0,
   Terminated,
   Stuck,
   Slid,
-  Bounced
+  Bounced,
+  Passed
 };
 /// The names, in the enumeration's order (the output's legend).
-constexpr const char* InteractionNames[] = { "Released", "Terminated", "Stuck", "Slid", "Bounced" };
-constexpr int InteractionCount = 5;
+constexpr const char* InteractionNames[] = { "Released", "Terminated", "Stuck", "Slid", "Bounced",
+  "Passed" };
+constexpr int InteractionCount = 6;
 
 /// A particle's event by Boundary `b` (Stick, Slip or Bounce).
 Interaction wallInteraction(Boundary b);
 
 /// The side ids: the box's sides 0..5 = -x, +x, -y, +y, -z, +z (the bit of
 /// WallHits they stand for); NoSide for none (an element that left into a
-/// cell outside the flow). Ids from 6 up are kept for surfaces given as an
-/// input (a later stage).
+/// cell outside the flow). Ids from FirstSurfaceId up are the Surfaces
+/// input's surfaces (FirstSurfaceId + its block's index).
 constexpr int NoSide = -1;
+constexpr int FirstSurfaceId = 6;
 /// The outward normal of side `side` (0 for NoSide).
 std::array<float, 3> sideNormal(int side);
 /// The lowest side among `hits` (NoSide for none).
@@ -72,13 +77,18 @@ int firstContact(const Domain& box, const float before[3], const float advected[
 /// One event.
 struct InteractionEvent
 {
-  double time = 0.0;          ///< trace time: the end of the step it happened in
+  /// Trace time: the end of the step it happened in, or for a surface's
+  /// passage the time it crossed. Within a step (until Engine::keepInteractions)
+  /// the share of the step at which it happened, 1 for its end.
+  double time = 1.0;
   std::uint32_t element = 0;  ///< the element's global id
   std::int32_t particle = -1; ///< its particle, -1 for the whole element
   Interaction kind = Interaction::Released;
-  std::int8_t side = NoSide;                   ///< sideNormal's id
+  std::int32_t side = NoSide;                  ///< sideNormal's id, or a surface's
+  std::int32_t cell = -1;                      ///< the Surfaces input's cell, -1 for a side
   std::array<float, 3> position = { 0, 0, 0 }; ///< engine coordinates
   std::array<float, 3> velocity = { 0, 0, 0 }; ///< the element's mean over the step
+  std::array<float, 3> normal = { 0, 0, 0 };   ///< the side's outward or the surface's normal
 };
 
 /// The output's order: (time, element, particle, kind).
@@ -91,7 +101,7 @@ bool interactionBefore(const InteractionEvent& a, const InteractionEvent& b);
 class InteractionLog
 {
 public:
-  /// The events a log keeps at most by default (about 370 MiB): a long trace
+  /// The events a log keeps at most by default (about 490 MiB): a long trace
   /// of many elements whose every step leaves events (Release Again in an
   /// outflow) would otherwise take memory without end.
   static constexpr std::size_t DefaultCapacity = 8000000;

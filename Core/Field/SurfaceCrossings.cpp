@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace bp
 {
@@ -160,8 +161,8 @@ void SurfaceCrossings::bucketRange(
   }
 }
 
-bool SurfaceCrossings::firstCrossing(
-  const float a[3], const float b[3], SurfaceCrossing& crossing) const
+template <typename Visit>
+bool SurfaceCrossings::meetAlong(const float a[3], const float b[3], Visit&& visit) const
 {
   if (this->Surface.empty() || !finite3(a) || !finite3(b))
   {
@@ -177,8 +178,6 @@ bool SurfaceCrossings::firstCrossing(
   }
   int f[3], l[3];
   this->bucketRange(lo, hi, f, l);
-  double best = std::numeric_limits<double>::infinity();
-  std::uint32_t bestTriangle = 0;
   for (int z = f[2]; z <= l[2]; ++z)
     for (int y = f[1]; y <= l[1]; ++y)
       for (int x = f[0]; x <= l[0]; ++x)
@@ -188,30 +187,85 @@ bool SurfaceCrossings::firstCrossing(
         {
           const std::uint32_t k = this->Members[m];
           const double t = meet(&this->Corners[9 * std::size_t(k)], da, d);
-          if (t < best || (t == best && k < bestTriangle))
+          if (std::isfinite(t))
           {
-            best = t;
-            bestTriangle = k;
+            visit(k, t);
           }
         }
       }
+  return true;
+}
+
+SurfaceCrossing SurfaceCrossings::crossingAt(
+  const float a[3], const float b[3], std::uint32_t k, double t) const
+{
+  const double* v = &this->Corners[9 * std::size_t(k)];
+  const Vec n = cross(sub(v + 3, v), sub(v + 6, v));
+  const double length = std::sqrt(dot(n, n));
+  const Vec d = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
+  SurfaceCrossing crossing;
+  crossing.t = t;
+  for (int c = 0; c < 3; ++c)
+  {
+    crossing.point[std::size_t(c)] = float(double(a[c]) + t * d[std::size_t(c)]);
+    crossing.normal[std::size_t(c)] = float(n[std::size_t(c)] / length);
+  }
+  crossing.direction = dot(d, n) > 0.0 ? 1 : -1;
+  crossing.surface = this->Surface[k];
+  crossing.triangle = this->Original[k];
+  return crossing;
+}
+
+bool SurfaceCrossings::firstCrossing(
+  const float a[3], const float b[3], SurfaceCrossing& crossing) const
+{
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t bestTriangle = 0;
+  this->meetAlong(a, b,
+    [&](std::uint32_t k, double t)
+    {
+      if (t < best || (t == best && k < bestTriangle))
+      {
+        best = t;
+        bestTriangle = k;
+      }
+    });
   if (!std::isfinite(best))
   {
     return false;
   }
-  const double* v = &this->Corners[9 * std::size_t(bestTriangle)];
-  Vec n = cross(sub(v + 3, v), sub(v + 6, v));
-  const double length = std::sqrt(dot(n, n));
-  crossing.t = best;
-  for (int k = 0; k < 3; ++k)
-  {
-    crossing.point[std::size_t(k)] = float(da[k] + best * d[std::size_t(k)]);
-    crossing.normal[std::size_t(k)] = float(n[std::size_t(k)] / length);
-  }
-  crossing.direction = dot(d, n) > 0.0 ? 1 : -1;
-  crossing.surface = this->Surface[bestTriangle];
-  crossing.triangle = this->Original[bestTriangle];
+  crossing = this->crossingAt(a, b, bestTriangle, best);
   return true;
+}
+
+void SurfaceCrossings::allCrossings(
+  const float a[3], const float b[3], std::vector<SurfaceCrossing>& crossings) const
+{
+  crossings.clear();
+  // (t, kept triangle) of every triangle met; a triangle in several buckets is met in each.
+  std::vector<std::pair<double, std::uint32_t>> met;
+  this->meetAlong(a, b, [&](std::uint32_t k, double t) { met.emplace_back(t, k); });
+  std::sort(met.begin(), met.end());
+  met.erase(std::unique(met.begin(), met.end(),
+              [](const auto& x, const auto& y) { return x.second == y.second; }),
+    met.end());
+  for (const auto& [t, k] : met)
+  {
+    SurfaceCrossing c = this->crossingAt(a, b, k, t);
+    // Through an edge or a corner that triangles of one surface share, the
+    // same way: one crossing, the first (the smallest t, then triangle, as
+    // firstCrossing takes).
+    const auto same = std::find_if(crossings.begin(), crossings.end(),
+      [&](const SurfaceCrossing& x)
+      {
+        return x.surface == c.surface && x.direction == c.direction &&
+          std::abs(x.t - c.t) <= SharedEdgeT;
+      });
+    if (same == crossings.end())
+    {
+      crossings.push_back(c);
+    }
+  }
 }
 
 } // namespace bp

@@ -67,7 +67,28 @@ public:
    */
   bool firstCrossing(const float a[3], const float b[3], SurfaceCrossing& crossing) const;
 
+  /**
+   * Every crossing of the step a -> b, by t (then triangle): one a
+   * triangle, and one where the step passes an edge or a corner that
+   * triangles of one surface share, crossing them the same way (t within
+   * SharedEdgeT; the first triangle, as firstCrossing takes). None where a
+   * or b is not finite.
+   */
+  void allCrossings(
+    const float a[3], const float b[3], std::vector<SurfaceCrossing>& crossings) const;
+
+  /// How close two triangles' t along one step are to be one crossing
+  /// through their shared edge (the same t, computed from either triangle).
+  static constexpr double SharedEdgeT = 1e-9;
+
 private:
+  /// Calls visit(kept triangle, t) for each triangle of the buckets the
+  /// step's box touches that the step meets (a triangle once per bucket);
+  /// false where a or b is not finite or there are no triangles.
+  template <typename Visit>
+  bool meetAlong(const float a[3], const float b[3], Visit&& visit) const;
+  /// The crossing of step a -> b with kept triangle k at t.
+  SurfaceCrossing crossingAt(const float a[3], const float b[3], std::uint32_t k, double t) const;
   /// The bucket range [lo, hi] along each axis that a box touches.
   void bucketRange(const double lo[3], const double hi[3], int first[3], int last[3]) const;
 

@@ -4,6 +4,7 @@
 // compares, how a difference is said, and the checksum. Resuming itself:
 // TestEngineState.cpp.
 #include "EngineState.h"
+#include "Surfaces.h"
 #include "TestHelpers.h"
 
 #include <gtest/gtest.h>
@@ -158,9 +159,18 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   // Whoever adds a member to bp::Parameters adds it to bp::parameterValues
   // (Core/Engine/EngineState.cpp) and to `changes` below, in declaration
   // order, then sets the size here (a resumed trace compares every setting).
-  static_assert(sizeof(void*) != 8 || sizeof(bp::Parameters) == 288,
+  static_assert(sizeof(void*) != 8 || sizeof(bp::Parameters) == 312,
     "bp::Parameters changed: add the new member to bp::parameterValues and to this test");
   using P = bp::Parameters;
+  // `count` triangles that do `kind`.
+  const auto surfaceOf = [](std::size_t count, bp::SurfaceInteraction kind)
+  {
+    bp::SurfaceTriangles t;
+    for (std::size_t k = 0; k < count; ++k)
+      t.corners.insert(t.corners.end(), { 0, 0, float(k), 1, 0, float(k), 0, 1, float(k) });
+    t.interaction.assign(count, kind);
+    return std::make_shared<const bp::SurfaceSet>(t);
+  };
   struct Change
   {
     std::string name;
@@ -198,6 +208,8 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   add("resetWhen", [](P& p) { p.resetWhen = bp::ResetWhen::AnyParticleLeaves; });
   add("boundary", [](P& p) { p.boundary = bp::Boundary::Terminate; });
   add("restitution", [](P& p) { p.restitution = 0.5f; });
+  add("surfaces.count", [&](P& p) { p.surfaces = surfaceOf(2, bp::SurfaceInteraction::Gate); });
+  add("surfaces.hash", [&](P& p) { p.surfaces = surfaceOf(1, bp::SurfaceInteraction::Outlet); });
   add("releasePattern", [](P& p) { p.releasePattern = bp::ReleasePattern::Lattice; });
   addArray("lattice.counts", 3, [](P& p, std::size_t k) { p.lattice.counts[k] = 5; });
   addArray("lattice.origin", 3, [](P& p, std::size_t k) { p.lattice.origin[k] = 0.5f; });
@@ -221,6 +233,7 @@ TEST(EngineState, ParameterValuesNameEveryMember)
   P base;
   base.seedPoints = { 0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f };
   base.boundary = bp::Boundary::Bounce; // the one Boundary that reads restitution
+  base.surfaces = surfaceOf(1, bp::SurfaceInteraction::Gate);
   const std::vector<bp::NamedValue> values = bp::parameterValues(base);
   ASSERT_EQ(values.size(), changes.size());
   for (std::size_t k = 0; k < values.size(); ++k)

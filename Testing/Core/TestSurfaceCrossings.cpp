@@ -192,3 +192,42 @@ TEST(SurfaceCrossings, AGateOnAHalfPlaneIsCrossedOncePerTurnOfARotation)
   }
   EXPECT_EQ(crossed, 5);
 }
+
+TEST(SurfaceCrossings, EveryCrossingOfAStepComesInOrderOnceEach)
+{
+  // Two squares, z = 0 (surface 3) and z = 0.5 (surface 4), and a step
+  // through both, through the diagonal each square's triangles share.
+  std::vector<float> corners = unitSquare();
+  std::vector<float> upper = unitSquare();
+  for (std::size_t k = 2; k < upper.size(); k += 3)
+    upper[k] = 0.5f;
+  corners.insert(corners.end(), upper.begin(), upper.end());
+  const bp::SurfaceCrossings two(corners, { 3, 3, 4, 4 });
+  std::vector<bp::SurfaceCrossing> all;
+  const float a[3] = { 0.5f, 0.5f, -0.5f }, b[3] = { 0.5f, 0.5f, 1.5f };
+  two.allCrossings(a, b, all);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].surface, 3);
+  EXPECT_EQ(all[0].triangle, 0u); // the diagonal: the first triangle's
+  EXPECT_EQ(all[1].triangle, 2u);
+  EXPECT_NEAR(all[0].t, 0.25, 1e-12);
+  EXPECT_EQ(all[1].surface, 4);
+  EXPECT_NEAR(all[1].t, 0.5, 1e-12);
+  EXPECT_EQ(all[1].direction, 1);
+  // The first crossing is firstCrossing's.
+  bp::SurfaceCrossing first;
+  ASSERT_TRUE(two.firstCrossing(a, b, first));
+  EXPECT_EQ(first.triangle, all[0].triangle);
+  EXPECT_EQ(first.t, all[0].t);
+  // Back the other way: the same crossings, reversed in order and direction.
+  two.allCrossings(b, a, all);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].surface, 4);
+  EXPECT_EQ(all[0].direction, -1);
+  // A step that misses, or is not finite: none.
+  const float beside[3] = { 2, 2, -1 }, nan[3] = { NAN, 0, 0 };
+  two.allCrossings(beside, b, all);
+  EXPECT_TRUE(all.empty());
+  two.allCrossings(nan, b, all);
+  EXPECT_TRUE(all.empty());
+}

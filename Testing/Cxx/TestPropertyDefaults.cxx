@@ -60,6 +60,7 @@ const std::map<std::string, std::string> Exempt = {
   { "BoundParticleTracer.Input", "an input" },
   { "BoundParticleTracer.ElementTemplate", "an input" },
   { "BoundParticleTracer.SeedSource", "an input" },
+  { "BoundParticleTracer.Surfaces", "an input" },
   { "BoundParticleTracer.Vectors", "an array of the input, chosen by its domain; no default" },
   { "BoundParticleTracer.ReleaseWeights", "an array of the input, None unless chosen" },
   { "BoundParticleTracer.UnitsMismatchedVectors", "information, from the input" },
@@ -169,6 +170,9 @@ const std::map<std::string, std::string> NotInCore = {
   { "TrailLength", "Core holds 0 while Trails is off" },
   { "ComputeVorticity", "folded into TracerConfig::wanted (Vorticity)" },
   { "InitialStateFile", "a file the tracer reads (TracerConfig::initialStateFile), not a setting" },
+  { "SurfaceInteraction", "made per triangle of the Surfaces (Parameters::surfaces)" },
+  { "SurfaceInteractionArray",
+    "an array of the Surfaces, read per cell into Parameters::surfaces" },
 };
 
 /// A Core enumeration's entries, value: text (bp::EnumTraits<E>::names).
@@ -211,6 +215,7 @@ const std::map<std::string, CoreEntries> CoreEnums = {
   { "BoundParticleTracer.Linking", entriesOfGetter(&vtkBPT::GetLinking) },
   { "BoundParticleTracer.ResetWhen", entriesOfGetter(&vtkBPT::GetResetWhen) },
   { "BoundParticleTracer.Boundary", entriesOfGetter(&vtkBPT::GetBoundary) },
+  { "BoundParticleTracer.SurfaceInteraction", entriesOfGetter(&vtkBPT::GetSurfaceInteraction) },
 };
 
 /// The enumerated properties with no Core enumeration, and why.

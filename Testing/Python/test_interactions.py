@@ -85,7 +85,7 @@ for name, components in (("ElementId", 1), ("ParticleIndex", 1), ("Time", 1),
                  "the array %s with %d components" % (name, components))
 names = data.GetFieldData().GetAbstractArray("InteractionNames")
 bptest.check(names is not None and [names.GetValue(k) for k in range(names.GetNumberOfValues())]
-             == ["Released", "Terminated", "Stuck", "Slid", "Bounced"],
+             == ["Released", "Terminated", "Stuck", "Slid", "Bounced", "Passed"],
              "the field data names the interactions")
 if count:
     bptest.check(set(a["Interaction"].tolist()) == {2}, "every event is Stuck")

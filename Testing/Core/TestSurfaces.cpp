@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Gates and outlets of the Surfaces input in the CPU engine (Surfaces.h,
+// engine specification 2.10): a gate on a half-plane in solid-body rotation
+// records each element once per turn at the analytic time; an outlet ends
+// an element where its centre crosses it and records that once; the
+// refusals; and without surfaces nothing changes.
+#include "Engine.h"
+#include "Surfaces.h"
+#include "TestHelpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// The rectangle [x0, x1] x [y0, y1] in the plane z = `z` (normal +z), or
+/// with `xz` the rectangle [x0, x1] x [z0 = y0, z1 = y1] in the plane y = `z`
+/// (normal -y, so +y by `flip`), as two triangles.
+std::vector<float> rectangle(float x0, float x1, float y0, float y1, float z, bool xz = false)
+{
+  std::vector<float> c = { x0, y0, z, x1, y0, z, x1, y1, z, x0, y0, z, x1, y1, z, x0, y1, z };
+  if (xz)
+  {
+    for (std::size_t k = 0; k < c.size(); k += 3)
+    {
+      std::swap(c[k + 1], c[k + 2]); // (x, a, b) -> (x, b, a): the plane y = z
+    }
+  }
+  return c;
+}
+
+std::shared_ptr<const bp::SurfaceSet> surfaceOf(
+  const std::vector<float>& corners, bp::SurfaceInteraction kind)
+{
+  bp::SurfaceTriangles t;
+  t.corners = corners;
+  const std::size_t n = corners.size() / 9;
+  t.surfaces.assign(n, 0);
+  t.interaction.assign(n, kind);
+  for (std::size_t k = 0; k < n; ++k)
+    t.cells.push_back(std::int32_t(100 + k));
+  return std::make_shared<const bp::SurfaceSet>(t);
+}
+
+bp::Parameters squares(std::vector<float> seeds, float lifetime)
+{
+  bp::Parameters p;
+  p.numberOfElements = seeds.size() / 3;
+  p.seedPoints = std::move(seeds);
+  p.elementSize = 0.2f;
+  p.orientation = bp::Orientation::Fixed;
+  p.lifetimeMin = p.lifetimeMax = lifetime;
+  p.iterations = 8;
+  p.integrator = bp::Integrator::RK4;
+  return p;
+}
+
+void run(bp::Engine& engine, const bp::VectorField& field, int steps, double h)
+{
+  for (int s = 0; s < steps; ++s)
+    engine.step(field, s * h, h, bp::serialRunner());
+}
+} // namespace
+
+TEST(Surfaces, AGateOnAHalfPlaneRecordsEachElementOncePerTurnAtTheAnalyticTime)
+{
+  // Solid-body rotation about z (unit angular velocity, period 2 pi) and a
+  // gate on the half-plane y = 0, x > 0: an element released at angle a
+  // crosses it at 2 pi k - a, going +y.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(9));
+  const int count = 8;
+  std::vector<float> seeds;
+  std::vector<double> angle;
+  for (int j = 0; j < count; ++j)
+  {
+    angle.push_back(2 * Pi * (j + 0.5) / count);
+    seeds.insert(seeds.end(),
+      { float(0.5 * std::cos(angle.back())), float(0.5 * std::sin(angle.back())), 0.0f });
+  }
+  bp::Parameters p = squares(seeds, 100.0f);
+  p.surfaces =
+    surfaceOf(rectangle(0.0f, 1.0f, -1.0f, 1.0f, 0.0f, true), bp::SurfaceInteraction::Gate);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  engine.initialize(bp::serialRunner());
+  const double h = 0.01;
+  run(engine, field, int(std::round(4 * Pi / h)), h); // two turns
+  std::map<std::uint32_t, std::vector<bp::InteractionEvent>> passes;
+  for (const bp::InteractionEvent& x : engine.interactions().events())
+    passes[x.element].push_back(x);
+  ASSERT_EQ(passes.size(), std::size_t(count));
+  double worst = 0.0;
+  for (const auto& [element, events] : passes)
+  {
+    ASSERT_EQ(events.size(), 2u) << "element " << element;
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+      const bp::InteractionEvent& x = events[k];
+      EXPECT_EQ(x.kind, bp::Interaction::Passed);
+      EXPECT_EQ(x.particle, -1);
+      EXPECT_EQ(x.side, bp::FirstSurfaceId);
+      EXPECT_TRUE(x.cell == 100 || x.cell == 101);
+      const double expected = 2 * Pi * double(k + 1) - angle[element];
+      worst = std::max(worst, std::abs(x.time - expected));
+      EXPECT_NEAR(x.position[1], 0.0, 1e-6);
+      EXPECT_NEAR(x.position[0], 0.5, 2e-3);
+      // The normal is the surface's (-y, by its corners' order), and the
+      // element went through it +y, against it.
+      EXPECT_NEAR(x.normal[1], -1.0f, 1e-6f);
+      EXPECT_NEAR(x.velocity[1], 0.5f, 1e-3f);
+    }
+  }
+  // Within a step, and much closer: the time is interpolated along it.
+  EXPECT_LT(worst, 0.1 * h);
+  std::printf("worst gate time error %.3g (step %.3g)\n", worst, h);
+}
+
+TEST(Surfaces, AnOutletEndsAnElementWhereItsCentreCrossesAndRecordsItOnce)
+{
+  // A uniform flow along x; an outlet across the box at x = 0; squares
+  // released at x = -0.5 reach it at t = 0.5, and again in their next
+  // generation (lifetime 2) at t = 2.5.
+  const bp::VectorField field = bptest::uniformFlow({ 1, 0, 0 });
+  bp::Parameters p = squares({ -0.5f, 0.0f, 0.0f, -0.5f, 0.4f, -0.3f }, 2.0f);
+  p.surfaces = surfaceOf(rectangle(-1, 1, -1, 1, 0.0f, false), bp::SurfaceInteraction::Outlet);
+  // The plane z = 0 turned to x = 0: (x, y, z) -> (z, y, x).
+  bp::SurfaceTriangles t;
+  t.corners = rectangle(-1, 1, -1, 1, 0.0f, false);
+  for (std::size_t k = 0; k < t.corners.size(); k += 3)
+    std::swap(t.corners[k], t.corners[k + 2]);
+  t.surfaces = { 2, 2 };
+  t.interaction.assign(2, bp::SurfaceInteraction::Outlet);
+  t.cells = { 7, 7 };
+  p.surfaces = std::make_shared<const bp::SurfaceSet>(t);
+  EXPECT_TRUE(p.surfaces->hasOutlets());
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  engine.initialize(bp::serialRunner());
+  const double h = 0.02;
+  run(engine, field, 50, h); // to t = 1
+  const std::vector<bp::InteractionEvent> first = engine.interactions().events();
+  ASSERT_EQ(first.size(), 2u);
+  for (const bp::InteractionEvent& x : first)
+  {
+    EXPECT_EQ(x.kind, bp::Interaction::Terminated);
+    EXPECT_EQ(x.side, bp::FirstSurfaceId + 2);
+    EXPECT_EQ(x.cell, 7);
+    EXPECT_NEAR(x.time, 0.5, 1e-5);
+    EXPECT_NEAR(x.position[0], 0.0f, 1e-6f);
+    EXPECT_NEAR(x.velocity[0], 1.0f, 1e-4f);
+  }
+  for (std::uint8_t flag : engine.resetFlags())
+    EXPECT_TRUE(flag & bp::Terminated) << "hidden until its lifetime ends";
+  // Past the box's side at x = 1 a terminated element records nothing
+  // more; its next generation crosses again.
+  run(engine, field, 150, h); // to t = 3 (the steps' times restart: a steady field)
+  std::size_t terminated = 0;
+  for (const bp::InteractionEvent& x : engine.interactions().events())
+    terminated += x.kind == bp::Interaction::Terminated && x.side == bp::FirstSurfaceId + 2;
+  EXPECT_EQ(terminated, 4u);
+  EXPECT_EQ(engine.interactions().size(), 4u);
+}
+
+TEST(Surfaces, AGateChangesNothingInTheTrace)
+{
+  // Positions with a gate are those without, bit for bit.
+  const bp::VectorField field =
+    bptest::steadyFlow(bp::AnalyticFlow::SolidBodyRotation, bptest::grid(9));
+  bp::Parameters p = squares({ 0.5f, 0.0f, 0.0f, 0.0f, 0.5f, 0.2f }, 10.0f);
+  bp::Engine plain, gated;
+  ASSERT_EQ(plain.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  p.surfaces =
+    surfaceOf(rectangle(0.0f, 1.0f, -1.0f, 1.0f, 0.0f, true), bp::SurfaceInteraction::Gate);
+  ASSERT_EQ(gated.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  plain.initialize(bp::serialRunner());
+  gated.initialize(bp::serialRunner());
+  run(plain, field, 700, 0.01);
+  run(gated, field, 700, 0.01);
+  EXPECT_EQ(plain.positions(), gated.positions());
+  EXPECT_EQ(plain.generations(), gated.generations());
+  EXPECT_EQ(plain.interactions().size(), 0u);
+  EXPECT_GT(gated.interactions().size(), 0u);
+}
+
+TEST(Surfaces, AreRefusedWithLinkingAndAnchors)
+{
+  bp::Parameters p = squares({ 0, 0, 0 }, 1.0f);
+  p.surfaces = surfaceOf(rectangle(0, 1, 0, 1, 0), bp::SurfaceInteraction::Gate);
+  const bp::ElementTemplate square = bp::builtinTemplate(bp::BuiltinShape::Square);
+  EXPECT_EQ(bp::Engine::validate(square, p), "");
+  bp::Parameters linked = p;
+  linked.linking = bp::Linking::Chain;
+  linked.seedPoints.clear();
+  linked.numberOfElements = 4;
+  EXPECT_NE(bp::Engine::validate(square, linked).find("Surfaces"), std::string::npos);
+  bp::Parameters anchored = p;
+  anchored.anchor = bp::Anchor::Centre;
+  EXPECT_NE(bp::Engine::validate(square, anchored).find("Anchor = Centre"), std::string::npos);
+}

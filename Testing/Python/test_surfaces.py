@@ -1,0 +1,168 @@
+"""The Surfaces input (gates and outlets) as pvpython users meet it.
+
+Solid-body rotation (unit angular velocity about z, period 2 pi), 8 squares
+released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
+- a Plane on the half-plane y = 0, x > 0 as a Gate: the Interactions port
+  has each element once per turn (two turns traced), Passed, at the
+  analytic time 2 pi k - a within a step, on the plane, with its normal
+  and cell; the elements output is the same as without the Surfaces;
+- the whole plane y = 0 in two cells with a cell array Kind (1: Outlet for
+  x < 0, 0: Gate for x > 0): an element ends where it crosses the outlet
+  (Terminated, at pi - a, or 3 pi - a after one passage of the gate) and is
+  hidden from then on;
+- bad input: Surfaces with no cells, outside the field, with NaN points or
+  with values of Kind that name no interaction warn and lose nothing; with
+  Linking the update fails with a message.
+"""
+import builtins
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bptest  # noqa: E402
+import paraview.simple  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+
+args = bptest.arguments()
+LoadPlugin(args.plugin, ns=globals())
+paraview.simple._DisableFirstRenderCameraReset()
+
+COUNT = 8
+ANGLES = [2 * math.pi * (j + 0.5) / COUNT for j in range(COUNT)]
+STEP = 0.01
+END = 4 * math.pi + 0.1  # two turns
+
+flow = AnalyticFlow(Flow="Solid Body Rotation", Resolution=[17, 17, 17])
+seeds = ProgrammableSource(OutputDataSetType="vtkPolyData")
+seeds.Script = (
+    "import math\n"
+    "from vtkmodules.vtkCommonCore import vtkPoints\n"
+    "p = vtkPoints()\n"
+    "for a in %r: p.InsertNextPoint(0.5 * math.cos(a), 0.5 * math.sin(a), 0.0)\n"
+    "self.GetOutput().SetPoints(p)\n" % (ANGLES,))
+
+
+def plane_with_kinds(kinds, nan=False):
+    """The plane y = 0 over x in [-1, 1], one cell per value of `kinds` along x
+    (cell array Kind), normal -y; with `nan`, one point made NaN."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+        "from vtkmodules.vtkCommonCore import vtkDoubleArray\n"
+        "p = vtkPlaneSource(); p.SetOrigin(-1, 0, -1); p.SetPoint1(1, 0, -1)\n"
+        "p.SetPoint2(-1, 0, 1); p.SetXResolution(%d); p.Update()\n"
+        "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n"
+        "k = vtkDoubleArray(); k.SetName('Kind')\n"
+        "for v in %r: k.InsertNextValue(v)\n"
+        "out.GetCellData().AddArray(k)\n"
+        "if %r: out.GetPoints().SetPoint(0, float('nan'), 0, 0)\n" % (len(kinds), kinds, nan))
+    return source
+
+
+def tracer(**extra):
+    settings = dict(Input=flow, Vectors=["POINTS", "velocity"], SeedSource=seeds,
+                    NumberOfElements=COUNT, ElementShape="Square", ElementSize=0.1,
+                    ReleaseOrientation="Fixed", MinimumReleaseSpeed=0.0,
+                    Integrator="Runge-Kutta 4", StepSizeUnit="Time", StepSize=STEP,
+                    Duration=END, NumberOfTimeSteps=3, LifetimeRange=[100, 100],
+                    OutputArrays=["ElementId"])
+    settings.update(extra)
+    return BoundParticleTracer(**settings)
+
+
+def events(proxy, time=END):
+    proxy.UpdatePipeline(time)
+    data = servermanager.Fetch(proxy, None, None, 3)
+    names = ("ElementId", "Time", "Interaction", "SurfaceId", "SurfaceCell", "Normal",
+             "ElementVelocity")
+    arrays = {n: bptest.point_array(data, n) for n in names}
+    points = np.array([data.GetPoint(k) for k in range(data.GetNumberOfPoints())]).reshape(-1, 3)
+    return arrays, points
+
+
+def elements(proxy, time=END):
+    data = bptest.fetch(proxy, time)
+    return np.array([data.GetPoint(k) for k in range(data.GetNumberOfPoints())]), \
+        data.GetNumberOfCells()
+
+
+PASSED, TERMINATED = 5, 1
+
+# A gate on the half-plane y = 0, x > 0.
+gate = Plane(Origin=[0, 0, -1], Point1=[1, 0, -1], Point2=[0, 0, 1])
+gated = tracer(Surfaces=gate)
+a, points = events(gated)
+bptest.check(a["Time"] is not None and len(a["Time"]) == 2 * COUNT,
+             "two passages per element over two turns: %s" %
+             (None if a["Time"] is None else len(a["Time"])))
+worst = 0.0
+for e in range(COUNT):
+    mine = sorted(a["Time"][a["ElementId"] == e].tolist())
+    expected = [2 * math.pi * k - ANGLES[e] for k in (1, 2)]
+    bptest.check(len(mine) == 2, "element %d passes twice: %s" % (e, mine))
+    if len(mine) == 2:
+        worst = float(np.max(np.abs(np.array(mine + [worst]) - np.array(expected + [0.0]))))
+print("worst passage time error %.3g (step %g)" % (worst, STEP))
+bptest.check(worst < STEP, "each passage at the analytic time within a step: %.3g" % worst)
+bptest.check(set(a["Interaction"].tolist()) == {PASSED}, "every event is Passed")
+bptest.check(set(a["SurfaceId"].tolist()) == {6}, "the Surfaces' block 0 is SurfaceId 6")
+bptest.check(set(a["SurfaceCell"].tolist()) == {0}, "the plane's one cell")
+bptest.check(np.allclose(a["Normal"], [0, -1, 0], atol=1e-6), "the plane's normal, -y")
+bptest.check(np.all(a["ElementVelocity"][:, 1] > 0.4), "the elements pass going +y")
+bptest.check(np.all(np.abs(points[:, 1]) < 1e-5) and np.all(points[:, 0] > 0.45),
+             "each passage on the plane, at the circle")
+plain = tracer()
+mine, cells = elements(gated)
+theirs, plain_cells = elements(plain)
+bptest.check(mine.shape == theirs.shape and np.array_equal(mine, theirs) and cells == plain_cells,
+             "a gate changes nothing in the elements output")
+
+# An outlet (x < 0) and a gate (x > 0) by the cell array Kind.
+both = tracer(Surfaces=plane_with_kinds([1.0, 0.0]),
+              SurfaceInteractionArray="Kind")
+a, points = events(both)
+rows = sorted(zip(a["ElementId"].tolist(), a["Time"].tolist(), a["Interaction"].tolist(),
+                  a["SurfaceCell"].tolist()))
+expected = []
+for e, angle in enumerate(ANGLES):
+    if angle > math.pi:
+        expected.append((e, 2 * math.pi - angle, PASSED, 1))
+        expected.append((e, 3 * math.pi - angle, TERMINATED, 0))
+    else:
+        expected.append((e, math.pi - angle, TERMINATED, 0))
+bptest.check(len(rows) == len(expected) and builtins.all(
+    r[0] == x[0] and abs(r[1] - x[1]) < STEP and r[2:] == x[2:] for r, x in zip(rows, expected)),
+    "an outlet ends each element where it crosses, after the gate where it passes it: %s"
+    % rows)
+_, cells = elements(both)
+bptest.check(cells == 0, "every element ended at the outlet is hidden: %d cells" % cells)
+
+# Bad input: a clear warning, and the trace goes on.
+empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
+empty.Script = "pass"
+far = Plane(Origin=[10, 10, 10], Point1=[11, 10, 10], Point2=[10, 11, 10])
+cases = [("no cells", empty, {}, "no surface to act on"),
+         ("outside the field", far, {}, "reaches into the field"),
+         ("NaN points", plane_with_kinds([0.0, 0.0], nan=True), {}, "not finite"),
+         ("unknown values", plane_with_kinds([1.0, 7.0]),
+          {"SurfaceInteractionArray": "Kind"}, "names no interaction"),
+         ("a missing array", gate, {"SurfaceInteractionArray": "Absent"},
+          "no cell array 'Absent'")]
+for name, surface, extra, said in cases:
+    with bptest.CapturedMessages() as messages:
+        bad = tracer(Surfaces=surface, **extra)
+        positions, cells = elements(bad, 1.0)
+    bptest.check(messages.mentions(said), "%s: warned (%s): %s" % (name, said, messages.messages))
+    bptest.check(cells > 0 and np.all(np.isfinite(positions)),
+                 "%s: the trace goes on, finite (%d cells)" % (name, cells))
+    Delete(bad)
+with bptest.CapturedMessages() as messages:
+    linked = tracer(Surfaces=gate, Linking="Chain", SeedSource=None)
+    linked.UpdatePipeline(1.0)
+bptest.check(messages.mentions("Surfaces (gates and outlets) act on single elements"),
+             "Surfaces with Linking: refused with a message: %s" % messages.messages)
+bptest.finish()
