@@ -48,6 +48,22 @@ def default_data():
     return os.path.join(os.path.dirname(ROOT), "shared", "data")
 
 
+def wall_scene(data):
+    """The wind of the shared data folder `data` and its tracer: 150 upright
+    Strip8 elements released in the Southern Ocean west of 179 E, with
+    Boundary = Slip (Testing/Python/test_walls_picture.py checks what the
+    picture shows on it)."""
+    wind = PVDReader(FileName=os.path.join(data, "gfs_wind10m.pvd"))
+    wind.UpdatePipeline()
+    tracer = BoundParticleTracer(Input=wind, Vectors=["POINTS", "velocity_deg_per_hour"],
+                                 ElementShape="Strip8", NumberOfElements=150, ElementSize=4.0,
+                                 ReleaseOrientation="Fixed", ElementRotation=[90.0, 0.0, 0.0],
+                                 EmitterCenter=[155.0, -52.0, 0.0], EmitterSize=[48.0, 24.0, 0.0],
+                                 Boundary="Slip", Integrator="Runge-Kutta 2",
+                                 Duration=TIME, LifetimeRange=[1000.0, 1000.0], Seed=4)
+    return wind, tracer
+
+
 def ground_tracks(tracer, time, wall_x, span):
     """The path of the centre of each element that lies on the wall x =
     `wall_x` at `time`, over the `span` before it, as a polyline just above
@@ -93,15 +109,8 @@ def arguments():
 def main():
     args = arguments()
     LoadPlugin(args.plugin, ns=globals())
-    wind = PVDReader(FileName=os.path.join(args.data, "gfs_wind10m.pvd"))
-    wind.UpdatePipeline()
+    wind, tracer = wall_scene(args.data)
     x0, x1, y0, y1, _, _ = wind.GetDataInformation().GetBounds()
-    tracer = BoundParticleTracer(Input=wind, Vectors=["POINTS", "velocity_deg_per_hour"],
-                                 ElementShape="Strip8", NumberOfElements=150, ElementSize=4.0,
-                                 ReleaseOrientation="Fixed", ElementRotation=[90.0, 0.0, 0.0],
-                                 EmitterCenter=[155.0, -52.0, 0.0], EmitterSize=[48.0, 24.0, 0.0],
-                                 Boundary="Slip", Integrator="Runge-Kutta 2",
-                                 Duration=TIME, LifetimeRange=[1000.0, 1000.0], Seed=4)
     tracks = ground_tracks(tracer, args.time, x1, 24.0)
     # 1 where a particle lies on a side of the grid, 0 elsewhere.
     on_wall = Calculator(Input=tracer, ResultArrayName="OnWall",
