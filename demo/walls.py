@@ -79,8 +79,9 @@ def ground_tracks(tracer, time, wall_x, span):
     lying = [e for e, (x, _) in enumerate(centres[-1]) if x > wall_x - 1e-4]
     paths = [[centres[f][e].tolist() for f in range(len(frames))] for e in lying]
     script = """
-import vtk
-points, lines = vtk.vtkPoints(), vtk.vtkCellArray()
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+points, lines = vtkPoints(), vtkCellArray()
 for path in %r:
     lines.InsertNextCell(len(path))
     for x, y in path:
