@@ -452,7 +452,7 @@ void OutputStorage::setUnchanged(const bp::OutputArray& row, std::uint64_t key, 
 void fillParticleOutput(vtkPolyData* output, const bp::Engine& engine, const bp::VectorField& field,
   const OutputFrame& frame, OutputStorage& storage, const bp::RangeRunner& run)
 {
-  const std::vector<TrailPose> trail = trailPoses(engine, frame.time);
+  const std::vector<TrailPose> trail = trailPoses(engine, field, frame.time);
   std::vector<OutputWrite> writes = { setPoints(output, engine, frame, trail, storage) };
   storage.applyCells(output, engine, trail.size());
   const vtkIdType points =

@@ -328,11 +328,14 @@ std::uint64_t unchangedKey(const bp::OutputArray& row, const FillContext& c)
   }
 }
 
-std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
+std::vector<TrailPose> trailPoses(
+  const bp::Engine& engine, const bp::VectorField& field, double time)
 {
   std::vector<TrailPose> poses;
   const int length = int(engine.trailTimes().size());
   const std::size_t E = engine.elementCount();
+  const auto& periodic = field.grid().periodic;
+  const bool seams = periodic[0] || periodic[1] || periodic[2];
   for (int k = 0; k < length; ++k)
   {
     const std::size_t slot = std::size_t(engine.trailSlot(k));
@@ -343,8 +346,11 @@ std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time)
     }
     for (std::size_t e = 0; e < E; ++e)
     {
+      // A pose from before the element's move across a periodic seam would
+      // lie a period away: the trail breaks there.
       if (engine.trailGenerations()[slot * E + e] == engine.generations()[e] &&
-        !(engine.resetFlags()[e] & bp::HiddenFlags))
+        !(engine.resetFlags()[e] & bp::HiddenFlags) &&
+        !(seams && engine.trailAcrossSeam(slot, e, field)))
       {
         poses.push_back({ slot, e, float(time - recorded) });
       }

@@ -61,9 +61,12 @@ struct TrailPose
 /**
  * The trail poses to show at `time`, newest first: those of each shown
  * element's own generation (a released element starts a new trail), strictly
- * older than the time shown (a step taken back leaves none ahead of it).
+ * older than the time shown (a step taken back leaves none ahead of it), and
+ * not across a periodic seam of `field` from the element
+ * (Engine::trailAcrossSeam: the trail breaks where the element moved by a period).
  */
-std::vector<TrailPose> trailPoses(const bp::Engine& engine, double time);
+std::vector<TrailPose> trailPoses(
+  const bp::Engine& engine, const bp::VectorField& field, double time);
 
 /// What filling an array may read: the engine, the field, the frame, and the
 /// output's arrays by id (null where the frame does not want one); those of

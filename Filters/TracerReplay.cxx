@@ -248,12 +248,6 @@ std::string vtkBoundParticleTracerInternals::checkPeriodic(
       ") cannot be used with Linking: a super set's elements would move across a periodic side "
       "one by one, and their links would then span the whole domain; set Linking to None.";
   }
-  if (config.trace.trailLength > 0)
-  {
-    return "Periodic (" + named +
-      ") cannot be used with Trails: an element that moves across a periodic side would draw "
-      "its trail across the whole domain; turn Trails off.";
-  }
   return std::string();
 }
 

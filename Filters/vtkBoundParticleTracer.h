@@ -395,8 +395,8 @@ public:
   /// across the seam, and an element whose centre leaves through one side
   /// moves whole, by one period, to the other (its shape untouched; never
   /// released for leaving there). Boundary applies to the other axes' sides
-  /// only. Refused along an axis of one grid point, with Trails (a trail
-  /// would cross the domain at the jump) and with Linking. Under MPI the
+  /// only. Refused along an axis of one grid point and with Linking. Trails
+  /// break at the jump (a pose over half a period away is left out). Under MPI the
   /// processes split the other axes into blocks (where they cannot, every
   /// axis periodic, all axes, each process then holding the whole field);
   /// every process holds the whole of a periodic axis and hands an element
@@ -441,10 +441,10 @@ public:
   ///@}
 
   ///@{
-  /// Motion trails: with Trails on, each element also shows its last
-  /// TrailLength poses, one every TrailSpacing steps, as extra cells whose
-  /// points carry their pose's Age (time before the one shown) and their
-  /// element's values of the other arrays; a released element starts anew.
+  /// Motion trails: with Trails on, each element also shows its last TrailLength poses, one every
+  /// TrailSpacing steps, as extra cells whose points carry their pose's Age (time before the one
+  /// shown) and their element's values of the other arrays; a released element starts anew, and
+  /// a Periodic jump breaks the trail (its poses over half a period away are left out).
   vtkSetMacro(Trails, int);
   vtkGetMacro(Trails, int);
   vtkBooleanMacro(Trails, int);

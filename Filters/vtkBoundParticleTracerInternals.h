@@ -435,7 +435,7 @@ private:
   /// (agreed between processes), then the field and the placement.
   Pass configureStepper(const Config& config, vtkInformationVector** inputVector,
     const bp::VectorField& field, const bp::Resolution& resolved, const bpvtk::TracerSeeds& seeds);
-  /// Periodic's refusals: several processes, an axis of one point, Linking, Trails.
+  /// Periodic's refusals: an axis of one point, Linking.
   std::string checkPeriodic(const Config& config, const bp::VectorField& field) const;
   /// A warning for each periodic axis whose last plane is not a copy of its
   /// first (bp::periodicSeamMismatch): traced, with a jump at the seam.

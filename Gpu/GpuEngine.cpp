@@ -3,8 +3,10 @@
 
 #include "GpuEngineState.h"
 #include "GpuSystem.h"
+#include "VectorField.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <utility>
@@ -238,6 +240,11 @@ GpuEngine::DrawInputs GpuEngine::drawInputs() const
   {
     const std::size_t slot = std::size_t(trail.slot(k));
     d.trail.push_back({ trail.particles[slot], trail.elements[slot], trail.times[slot] });
+  }
+  if (const VectorField* field = S.fieldCache.field())
+  {
+    const std::array<float, 3> half = field->domain().halfPeriods();
+    std::copy(half.begin(), half.end(), d.trailHalfPeriods);
   }
   return d;
 }

@@ -200,6 +200,9 @@ public:
     };
     int trailLength = 0;
     std::vector<TrailSlot> trail; ///< trailLength slots, newest first
+    /// The field's Domain::halfPeriods() (0 along an axis that is not
+    /// periodic): a pose across a periodic seam from its element is not drawn.
+    float trailHalfPeriods[3] = { 0, 0, 0 };
   };
   DrawInputs drawInputs() const;
 

@@ -491,6 +491,7 @@ void vtkOpenGLBoundParticleMapper::SetMapperShaderParameters(
   program->SetUniformi("bpLinksPerRow", std::max(I.LinkTable.width(), 1));
   program->SetUniformi("bpDrawLinks", 0);
   program->SetUniformi("bpAdjacencyWidth", I.CornerTable.width());
+  program->SetUniform3f("bpTrailHalfPeriods", I.Inputs.trailHalfPeriods); // the trail's breaks
   // The elements themselves; the trail draws change these three per slot.
   program->SetUniformi("bpTrail", 0);
   program->SetUniformf("bpTrailAge", 0.0f);

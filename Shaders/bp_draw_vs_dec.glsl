@@ -29,6 +29,7 @@ uniform isampler2D bpAdjacency; // per template particle (row): the triangles it
 uniform int bpAdjacencyWidth;  // texels a row; a row ends early at a corner index of -1
 uniform int bpTrail;           // 1 in a trail pose's draw, 0 otherwise
 uniform float bpTrailAge;      // in a trail pose's draw: the shown time minus the slot's
+uniform vec3 bpTrailHalfPeriods; // half of each periodic axis's period, 0 along the others
 uniform int bpLinksPerRow;
 uniform int bpDrawLinks;       // 1 in the link draw, 0 in the element draw
 uniform int bpScalarMode;      // a BP_COLOR_* of Core/Output/OutputArrays.h (ColorSource)
@@ -196,12 +197,30 @@ float bpScalarOf(int e, int i, ivec2 texel, vec4 state)
   return 0.0;
 }
 
+// Whether element e's pose in the trail slot drawn lies across a periodic
+// seam from the element (bp::Domain::acrossPeriodicSeam): its first particle
+// there and now farther apart than half a period along a periodic axis.
+bool bpAcrossPeriodicSeam(int e)
+{
+  ivec2 texel = bpParticleTexel(e, 0);
+  vec3 d = abs(texelFetch(bpTrailPositions, texel, 0).xyz - texelFetch(bpPositions, texel, 0).xyz);
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpTrailHalfPeriods[a] > 0.0 && d[a] > bpTrailHalfPeriods[a])
+      return true;
+  }
+  return false;
+}
+
 // Whether element e has no pose in the trail slot drawn: the slot holds
-// another generation's (a released element starts a new trail), or none.
+// another generation's (a released element starts a new trail), or none, or
+// a pose from before the element moved across a periodic seam (the trail
+// breaks there).
 bool bpNotInTrail(int e)
 {
   ivec2 elementTexel = bpElementTexel(e);
-  return texelFetch(bpTrailElements, elementTexel, 0).y != texelFetch(bpElements, elementTexel, 0).y;
+  return texelFetch(bpTrailElements, elementTexel, 0).y != texelFetch(bpElements, elementTexel, 0).y ||
+    bpAcrossPeriodicSeam(e);
 }
 
 // Particle i's normal in element e's trail pose, as the CPU output computes a

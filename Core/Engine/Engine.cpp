@@ -38,6 +38,14 @@ void Engine::recordTrail(double t)
     this->TrailGenerations.begin() + std::ptrdiff_t(slot * E));
 }
 
+bool Engine::trailAcrossSeam(std::size_t slot, std::size_t e, const VectorField& field) const
+{
+  const std::size_t first = e * this->particlesPerElement();
+  return this->domainOf(field).acrossPeriodicSeam(
+    this->TrailPositions.data() + 3 * (slot * this->particleCount() + first),
+    this->Positions.data() + 3 * first);
+}
+
 void Engine::updateNormals(const RangeRunner& run)
 {
   const std::size_t n = this->particlesPerElement();

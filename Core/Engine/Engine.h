@@ -196,6 +196,10 @@ public:
   /// Records the current poses at time t (a time recorded last is replaced:
   /// a step taken back and taken again records once).
   void recordTrail(double t);
+  /// Whether element e's pose in `slot` lies across a periodic seam from the
+  /// element now (Domain::acrossPeriodicSeam of its first particle, in the
+  /// domain the steps test against): moved by a period since, it is not shown.
+  bool trailAcrossSeam(std::size_t slot, std::size_t e, const VectorField& field) const;
   ///@}
   /// The super set's links (empty without Linking).
   const LinkTable& links() const { return this->Links; }

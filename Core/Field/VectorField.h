@@ -116,6 +116,39 @@ struct Domain
     }
     return true;
   }
+
+  /// Half the period (upper - lower, in float) of each periodic axis; 0
+  /// along any other. The draw shader's bpTrailHalfPeriods.
+  std::array<float, 3> halfPeriods() const
+  {
+    std::array<float, 3> half = { 0, 0, 0 };
+    for (int a = 0; a < 3; ++a)
+    {
+      if (this->periodic[a] && !this->degenerate[a])
+      {
+        half[a] = 0.5f * (this->upper[a] - this->lower[a]);
+      }
+    }
+    return half;
+  }
+
+  /// A trail pose across a periodic seam (engine specification 2.6): whether
+  /// `pose` and `now` (an element's first particle in a trail pose and in
+  /// the state shown) lie farther apart than half a period along a periodic
+  /// axis, |pose - now| > halfPeriods() in float (bp_draw_vs_dec.glsl:
+  /// bpAcrossPeriodicSeam). Never without a periodic axis.
+  bool acrossPeriodicSeam(const float pose[3], const float now[3]) const
+  {
+    const std::array<float, 3> half = this->halfPeriods();
+    for (int a = 0; a < 3; ++a)
+    {
+      if (half[a] > 0.0f && std::fabs(pose[a] - now[a]) > half[a])
+      {
+        return true;
+      }
+    }
+    return false;
+  }
 };
 
 /// One time step: 3 floats per grid point.

@@ -283,3 +283,106 @@ TEST(Periodic, TheSeamMismatchTellsACopiedLastPlaneFromAShortOne)
   EXPECT_EQ(
     bp::periodicSeamMismatch(flat, std::vector<float>(3 * flat.pointCount(), 1.0f), 2), 0.0);
 }
+
+TEST(Periodic, ATrailBreaksWhereItsElementMovesAcrossTheSeam)
+{
+  // x and y periodic (period 2) in the flow (1, 0.5, 0); a trail of 6 poses
+  // every 4 steps. A pose belongs to the element's shown trail exactly when
+  // it was recorded after the element's last move across a seam: before it,
+  // Engine::trailAcrossSeam (its first particle over half a period away).
+  const bp::VectorField field =
+    bptest::uniformFlow({ 1, 0.5f, 0 }, periodicGrid({ true, true, false }));
+  bp::Parameters p = strips(bp::Boundary::ReleaseAgain);
+  p.trailLength = 6;
+  p.trailInterval = 0.04;
+  bp::Engine engine = started(p);
+  const std::size_t E = engine.elementCount(), n = engine.particlesPerElement();
+  std::vector<double> lastMove(E, -INFINITY); // the end of the step that moved it by a period
+  int moves = 0, shown = 0, left = 0, wrong = 0;
+  float farthest = 0.0f; // a shown pose's centre from its element's, along x or y
+  for (int s = 0; s < 300; ++s)
+  {
+    std::vector<std::array<float, 3>> before(E);
+    for (std::size_t e = 0; e < E; ++e)
+      before[e] = centerOf(engine, e);
+    engine.step(field, s * 0.01, 0.01, bp::serialRunner());
+    for (std::size_t e = 0; e < E; ++e)
+    {
+      const std::array<float, 3> c = centerOf(engine, e);
+      if (std::abs(c[0] - before[e][0]) > 1.0f || std::abs(c[1] - before[e][1]) > 1.0f)
+      {
+        lastMove[e] = (s + 1) * 0.01;
+        ++moves;
+      }
+    }
+    for (int k = 0; k < p.trailLength; ++k)
+    {
+      const std::size_t slot = std::size_t(engine.trailSlot(k));
+      const double recorded = engine.trailTimes()[slot];
+      for (std::size_t e = 0; std::isfinite(recorded) && e < E; ++e)
+      {
+        const bool across = engine.trailAcrossSeam(slot, e, field);
+        wrong += across != (recorded < lastMove[e] - 1e-9);
+        if (across)
+        {
+          ++left;
+          continue;
+        }
+        ++shown;
+        std::array<float, 3> pose = { 0, 0, 0 };
+        for (std::size_t i = 0; i < n; ++i)
+          for (int a = 0; a < 3; ++a)
+            pose[a] += engine.trailPositions()[3 * (slot * E * n + e * n + i) + a] / float(n);
+        const std::array<float, 3> c = centerOf(engine, e);
+        farthest = std::max({ farthest, std::abs(pose[0] - c[0]), std::abs(pose[1] - c[1]) });
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0) << "poses shown or left out against the last move across a seam";
+  EXPECT_GT(moves, 8);       // every strip crossed a seam
+  EXPECT_GT(left, 100);      // poses left out after the crossings
+  EXPECT_GT(shown, 5000);    // and the rest shown, on the element's side
+  EXPECT_LT(farthest, 0.3f); // at most the trail's span, 0.24 at speed 1.12
+  for (std::size_t e = 0; e < E; ++e)
+    EXPECT_EQ(engine.generations()[e], 0u);
+  // Without Periodic no pose is ever across a seam, however far it lies
+  // (the same trace releases elements again at the sides).
+  const bp::VectorField open =
+    bptest::uniformFlow({ 1, 0.5f, 0 }, periodicGrid({ false, false, false }));
+  bp::Engine plain = started(p);
+  int across = 0;
+  for (int s = 0; s < 300; ++s)
+  {
+    plain.step(open, s * 0.01, 0.01, bp::serialRunner());
+    for (int k = 0; k < p.trailLength; ++k)
+      for (std::size_t e = 0; e < E; ++e)
+        across += plain.trailAcrossSeam(std::size_t(plain.trailSlot(k)), e, open);
+  }
+  EXPECT_EQ(across, 0);
+}
+
+TEST(Periodic, APoseIsAcrossTheSeamOverHalfAPeriodAway)
+{
+  // Domain::acrossPeriodicSeam on [-1, 1] along x (period 2) and y (period
+  // 3 on [0, 3]), z not periodic: strictly over half a period, in float.
+  bp::Domain box;
+  box.lower = { -1, 0, -1 };
+  box.upper = { 1, 3, 1 };
+  box.degenerate = { false, false, false };
+  box.periodic = { true, true, false };
+  EXPECT_EQ(box.halfPeriods(), (std::array<float, 3>{ 1.0f, 1.5f, 0.0f }));
+  const float now[3] = { 0.5f, 1.0f, 0.0f };
+  const float same[3] = { -0.5f, 2.5f, 0.9f }, x[3] = { -0.51f, 1.0f, 0.0f },
+              y[3] = { 0.5f, 2.6f, 0.0f }, z[3] = { 0.5f, 1.0f, 100.0f },
+              nan[3] = { NAN, NAN, NAN };
+  EXPECT_FALSE(box.acrossPeriodicSeam(same, now)); // exactly half a period: shown
+  EXPECT_TRUE(box.acrossPeriodicSeam(x, now));
+  EXPECT_TRUE(box.acrossPeriodicSeam(y, now));
+  EXPECT_FALSE(box.acrossPeriodicSeam(z, now)); // z has sides, no seam
+  EXPECT_FALSE(box.acrossPeriodicSeam(nan, now));
+  box.degenerate[0] = true; // a plane is never periodic
+  EXPECT_FALSE(box.acrossPeriodicSeam(x, now));
+  box.periodic = { false, false, false };
+  EXPECT_EQ(box.halfPeriods(), (std::array<float, 3>{ 0.0f, 0.0f, 0.0f }));
+  EXPECT_FALSE(box.acrossPeriodicSeam(y, now));
+}

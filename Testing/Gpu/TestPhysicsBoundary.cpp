@@ -4,12 +4,20 @@
 // grid's sides are hidden until their lifetime runs out, then placed again;
 // the GPU engine's positions, hidden elements and generations against the
 // CPU engine's, on the fragment path, the compute path and its fused step.
+// With Periodic and trails, the Bound Particles display's own test of which
+// trail poses to draw (bp_draw_vs_dec.glsl: bpNotInTrail, run here alone)
+// against the CPU output's (trailPoses: generation, hidden, trailAcrossSeam).
 #include "AnalyticFlows.h"
+#include "BoundParticlesShaders.h"
 #include "DomainMask.h"
 #include "Engine.h"
 #include "GpuStepper.h"
+#include "OutputArrays.h"
+#include "ShaderSource.h"
 #include "SharedContext.h"
 #include "Stepper.h"
+
+#include <epoxy/gl.h>
 
 #include <gtest/gtest.h>
 
@@ -17,6 +25,9 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -433,4 +444,162 @@ TEST(GpuBoundary, PeriodicMatchesTheCpuEngine)
   };
   for (const BoundaryCase& c : cases)
     EXPECT_GT(comparePeriodic(c), 100) << "the seams are crossed";
+}
+
+namespace
+{
+/// The draw shader's declarations (bp_draw_vs_dec.glsl, as the display
+/// compiles them) under a vertex shader of their own: vertex e writes 1
+/// where the display draws element e's pose in the trail slot bound, else 0
+/// (bpHiddenElement or bpNotInTrail, as bp_draw_vs_impl.glsl clips it), by
+/// transform feedback.
+class TrailPoseProbe
+{
+public:
+  TrailPoseProbe()
+  {
+    const std::string vs = "#version 330 core\n" + bp::colorSourceDefinitions() +
+      bp::engineConstantDefinitions() + bpShaderDrawVSDec +
+      "\nout float bpShown;\nvoid main()\n{\n  bpShown = bpHiddenElement(gl_VertexID) || "
+      "bpNotInTrail(gl_VertexID) ? 0.0 : 1.0;\n  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);\n}\n";
+    const char* source = vs.c_str();
+    const GLuint shader = glCreateShader(GL_VERTEX_SHADER);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    char log[4096] = "";
+    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    EXPECT_TRUE(ok) << log;
+    this->Program = glCreateProgram();
+    glAttachShader(this->Program, shader);
+    const char* varying = "bpShown";
+    glTransformFeedbackVaryings(this->Program, 1, &varying, GL_INTERLEAVED_ATTRIBS);
+    glLinkProgram(this->Program);
+    glGetProgramiv(this->Program, GL_LINK_STATUS, &ok);
+    glGetProgramInfoLog(this->Program, sizeof(log), nullptr, log);
+    EXPECT_TRUE(ok) << log;
+    glDeleteShader(shader);
+    glGenVertexArrays(1, &this->Array);
+    glGenBuffers(1, &this->Buffer);
+  }
+  ~TrailPoseProbe()
+  {
+    glDeleteBuffers(1, &this->Buffer);
+    glDeleteVertexArrays(1, &this->Array);
+    glDeleteProgram(this->Program);
+  }
+
+  /// Per element, whether the display draws its pose in `slot`.
+  std::vector<float> shown(
+    const bp::GpuEngine::DrawInputs& d, const bp::GpuEngine::DrawInputs::TrailSlot& slot)
+  {
+    glUseProgram(this->Program);
+    const std::pair<const char*, GLuint> textures[] = { { "bpPositions", d.positions },
+      { "bpElements", d.elements }, { "bpCenters", d.centers },
+      { "bpTrailPositions", slot.positions }, { "bpTrailElements", slot.elements } };
+    for (GLint unit = 0; unit < 5; ++unit)
+    {
+      glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+      glBindTexture(GL_TEXTURE_2D, textures[unit].second);
+      glUniform1i(glGetUniformLocation(this->Program, textures[unit].first), unit);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glUniform2i(
+      glGetUniformLocation(this->Program, "bpElementGrid"), d.elementGrid[0], d.elementGrid[1]);
+    glUniform1i(glGetUniformLocation(this->Program, "bpBlocksPerRow"), d.blocksPerRow);
+    glUniform3fv(glGetUniformLocation(this->Program, "bpTrailHalfPeriods"), 1, d.trailHalfPeriods);
+    glUniform1i(glGetUniformLocation(this->Program, "bpTrail"), 1);
+    const GLsizeiptr bytes = GLsizeiptr(sizeof(float)) * d.elementCount;
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, this->Buffer);
+    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, bytes, nullptr, GL_STREAM_READ);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, this->Buffer);
+    glBindVertexArray(this->Array);
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBeginTransformFeedback(GL_POINTS);
+    glDrawArrays(GL_POINTS, 0, d.elementCount);
+    glEndTransformFeedback();
+    glDisable(GL_RASTERIZER_DISCARD);
+    std::vector<float> out(std::size_t(d.elementCount), -1.0f);
+    glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, bytes, out.data());
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    return out;
+  }
+
+private:
+  GLuint Program = 0, Array = 0, Buffer = 0;
+};
+} // namespace
+
+TEST(GpuBoundary, PeriodicTrailsBreakAtTheSeamAsOnTheCpu)
+{
+  // periodicField() (x and y periodic, period 2), a trail of 6 poses every
+  // 4 steps: after each step from the trail's fill on, every slot's poses
+  // the display draws against those the CPU output shows, for every element
+  // whose positions agree on both engines (a centre on a seam may cross it
+  // on one engine only: comparePeriodic's edge exception).
+  ASSERT_TRUE(bp::haveSharedContext());
+  const bp::VectorField field = periodicField();
+  bp::Parameters p = boundaryTrace(
+    bp::Integrator::RK4, bp::Restoration::Jacobi, bp::Boundary::ReleaseAgain, 0.8f, 1.6f, 11);
+  p.trailLength = 6;
+  p.trailInterval = 0.04;
+  const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip4);
+  EnginePair engines(shape, p, field);
+  TrailPoseProbe probe;
+  const double dt = 0.01;
+  const std::size_t E = p.numberOfElements, n = shape.particleCount();
+  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
+  int shown = 0, across = 0, apart = 0, skipped = 0;
+  for (int k = 0; k < 120; ++k)
+  {
+    engines.cpu.step(k * dt, dt);
+    engines.gpu.step(k * dt, dt);
+    if (k < 24 || k % 3 != 0)
+      continue;
+    const bp::Engine& cpu = engines.cpu.engine();
+    const bp::GpuEngine::DrawInputs d = engines.gpu.engine().drawInputs();
+    ASSERT_EQ(d.trail.size(), std::size_t(p.trailLength));
+    for (int a = 0; a < 3; ++a)
+      EXPECT_EQ(d.trailHalfPeriods[a], a < 2 ? 1.0f : 0.0f) << "axis " << a;
+    std::vector<float> x;
+    engines.gpu.engine().read(&x, nullptr, nullptr);
+    std::vector<std::uint8_t> agree(E, 1);
+    for (std::size_t q = 0; q < x.size(); ++q)
+      agree[q / (3 * n)] &= std::abs(x[q] - cpu.positions()[q]) < tolerance;
+    const double now = (k + 1) * dt;
+    for (int s = 0; s < p.trailLength; ++s)
+    {
+      const std::size_t slot = std::size_t(cpu.trailSlot(s));
+      ASSERT_EQ(d.trail[std::size_t(s)].time, cpu.trailTimes()[slot]);
+      if (!(cpu.trailTimes()[slot] < now))
+        continue;
+      const std::vector<float> gpu = probe.shown(d, d.trail[std::size_t(s)]);
+      for (std::size_t e = 0; e < E; ++e)
+      {
+        // TracerOutputArrays.cxx: trailPoses, pose by pose.
+        const bool generation = cpu.trailGenerations()[slot * E + e] == cpu.generations()[e];
+        const bool seam = cpu.trailAcrossSeam(slot, e, field);
+        const bool cpuShown = generation && !(cpu.resetFlags()[e] & bp::HiddenFlags) && !seam;
+        if (!agree[e])
+        {
+          ++skipped;
+          continue;
+        }
+        apart += (gpu[e] > 0.5f) != cpuShown;
+        shown += cpuShown;
+        across += generation && seam;
+      }
+    }
+  }
+  std::printf("periodic trails: %d poses shown, %d across a seam left out, %d apart; %d poses "
+              "of elements apart skipped\n",
+    shown, across, apart, skipped);
+  EXPECT_EQ(apart, 0);
+  EXPECT_GT(across, 200); // the seams are crossed within the trails' span
+  EXPECT_GT(shown, 10000);
+  EXPECT_LT(skipped, (shown + across) / 50);
 }
