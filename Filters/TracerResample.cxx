@@ -45,29 +45,13 @@ namespace
 /// finest level first, so that it wins where levels overlap.
 std::vector<vtkDataSet*> blocksWithCells(vtkDataObject* input)
 {
-  std::vector<vtkDataSet*> blocks;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  std::vector<vtkDataSet*> blocks = bpvtk::leafDataSets(input);
+  blocks.erase(std::remove_if(blocks.begin(), blocks.end(),
+                 [](vtkDataSet* block) { return !block || block->GetNumberOfCells() == 0; }),
+    blocks.end());
+  if (vtkOverlappingAMR::SafeDownCast(input))
   {
-    auto it = vtk::TakeSmartPointer(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      auto* block = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
-      if (block && block->GetNumberOfCells() > 0)
-      {
-        blocks.push_back(block);
-      }
-    }
-    if (vtkOverlappingAMR::SafeDownCast(input))
-    {
-      std::reverse(blocks.begin(), blocks.end());
-    }
-  }
-  else if (auto* data = vtkDataSet::SafeDownCast(input))
-  {
-    if (data->GetNumberOfCells() > 0)
-    {
-      blocks.push_back(data);
-    }
+    std::reverse(blocks.begin(), blocks.end());
   }
   return blocks;
 }
@@ -208,6 +192,24 @@ void allReduce(vtkMultiProcessController* controller, std::vector<T>& values, in
 
 namespace bpvtk
 {
+
+std::vector<vtkDataSet*> leafDataSets(vtkDataObject* data)
+{
+  std::vector<vtkDataSet*> leaves;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+    }
+  }
+  else
+  {
+    leaves.push_back(vtkDataSet::SafeDownCast(data));
+  }
+  return leaves;
+}
 
 // The vectors and mask (13 bytes), the owner in parallel (4), while the cells
 // are searched the winning cell and its weights (8 + 32) and whether a block

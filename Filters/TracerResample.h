@@ -58,6 +58,10 @@ class vtkMultiProcessController;
 namespace bpvtk
 {
 
+/// The leaves of `data` in the composite's traversal order (a data set alone
+/// is the one leaf); a leaf that is not a data set, or no data, is null.
+std::vector<vtkDataSet*> leafDataSets(vtkDataObject* data);
+
 /// Which input array moves the elements: the Vectors property's choice.
 struct VectorsChoice
 {

@@ -7,12 +7,11 @@
 #include "vtkBoundParticleTracerInternals.h"
 
 #include "Surfaces.h"
+#include "TracerResample.h"
 #include "VectorField.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -33,27 +32,6 @@
 
 namespace
 {
-/// The leaves of the Surfaces input, in the composite's order (a data set
-/// alone is leaf 0); a leaf that is not a data set is null.
-std::vector<vtkDataSet*> leavesOf(vtkDataObject* input)
-{
-  std::vector<vtkDataSet*> leaves;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
-    }
-  }
-  else
-  {
-    leaves.push_back(vtkDataSet::SafeDownCast(input));
-  }
-  return leaves;
-}
-
 /// What the Surfaces' cells do, and what was left out, as it is gathered.
 struct Gathered
 {
@@ -284,7 +262,8 @@ void vtkBoundParticleTracerInternals::gatherSurfaces(const Config& config,
   const std::array<double, 3>& offset = this->Held.offset;
   const double plane = flat < 0 ? 0.0 : double(whole.lower[flat]) + offset[std::size_t(flat)];
   Gathered g;
-  const std::vector<vtkDataSet*> leaves = leavesOf(vtkDataObject::GetData(inputVector[3], 0));
+  const std::vector<vtkDataSet*> leaves =
+    bpvtk::leafDataSets(vtkDataObject::GetData(inputVector[3], 0));
   for (std::size_t b = 0; b < leaves.size(); ++b)
   {
     if (leaves[b] && leaves[b]->GetNumberOfCells() > 0)

@@ -2,14 +2,13 @@
 #include "vtkBoundParticleSurfaceSeeds.h"
 
 #include "SurfaceRelease.h"
+#include "TracerResample.h"
 
 #include "vtkAppendFilter.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkIdList.h"
@@ -192,20 +191,7 @@ vtkSmartPointer<vtkDataSet> marked(vtkDataSet* data)
 void vtkBoundParticleSurfaceSeeds::AppendSurfaceTriangles(
   vtkDataObject* source, std::vector<double>& triangles)
 {
-  std::vector<vtkDataSet*> leaves;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(source))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
-    }
-  }
-  else
-  {
-    leaves.push_back(vtkDataSet::SafeDownCast(source));
-  }
+  std::vector<vtkDataSet*> leaves = bpvtk::leafDataSets(source);
   leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
                  [](vtkDataSet* d) { return !d || d->GetNumberOfCells() == 0; }),
     leaves.end());

@@ -62,6 +62,21 @@ def traces():
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
 
 
+def gate_and_outlet():
+    """The plane x = 0 over y, z in [-1, 1] as two cells along y with the
+    cell array Kind: 0 (a Gate) for y < 0, 1 (an Outlet) for y > 0."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+        "from vtkmodules.vtkCommonCore import vtkIntArray\n"
+        "p = vtkPlaneSource(); p.SetOrigin(0, -1, -1); p.SetPoint1(0, 1, -1)\n"
+        "p.SetPoint2(0, -1, 1); p.SetXResolution(2); p.Update()\n"
+        "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n"
+        "k = vtkIntArray(); k.SetName('Kind'); k.InsertNextValue(0); k.InsertNextValue(1)\n"
+        "out.GetCellData().AddArray(k)\n")
+    return source
+
+
 def placement_traces():
     """Fields anywhere in space: the Analytic Flow's default bounds [-1, 1]^3;
     projected coordinates ~1e6 from the origin; a field at negative
@@ -115,6 +130,14 @@ def placement_traces():
     cases["walls"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
                                           NumberOfElements=400, Seed=4, Boundary="Stick",
                                           LifetimeRange=[2, 2]), [0.5, 1.0])
+    # Gates and an outlet (the Surfaces input, whole on every process): the
+    # plane x = 0 in two cells, a gate (y < 0) and an outlet (y > 0) by a
+    # cell array; the passages gathered on process 0 are the same on any
+    # number of processes.
+    cases["gates"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                          NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
+                                          Surfaces=gate_and_outlet(),
+                                          SurfaceInteractionArray="Kind"), [0.5, 1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -356,10 +379,11 @@ def periodic_traces():
 
 
 # The cases whose Interactions output (port 3) is compared: Stick's contacts,
-# and Release Again's elements leaving, back in time and straight.
-EVENT_CASES = ("walls", "back", "back_fresh")
+# Release Again's elements leaving, back in time and straight, and the
+# passages of a gate and an outlet.
+EVENT_CASES = ("walls", "back", "back_fresh", "gates")
 EVENT_ARRAYS = (("Time", 1), ("ElementId", 1), ("ParticleIndex", 1), ("Interaction", 1),
-                ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3))
+                ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3), ("SurfaceCell", 1))
 
 
 def interactions(tracer, time):

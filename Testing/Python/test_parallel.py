@@ -251,15 +251,18 @@ def compare(reference, result, name, ranks):
 def check_events(name, key, expected, got):
     """The Interactions output (process 0's, every event): the same events in
     the same order, (Time, ElementId, ParticleIndex, Interaction, SurfaceId,
-    Normal) exactly, points and velocities within the pieces' tolerance."""
+    Normal, SurfaceCell) exactly, points and velocities within the pieces'
+    tolerance."""
     if got is None or expected.shape != got.shape:
         bptest.check(False, "%s %s: %s events, expected %d" %
                      (name, key, None if got is None else len(got), len(expected)))
         return
     print("%s %s: %d events (%s)" % (name, key, len(got), ", ".join(
         "%s %d" % (kind, int((got[:, 6] == k).sum())) for k, kind in
-        enumerate(("Released", "Terminated", "Stuck", "Slid", "Bounced")) if (got[:, 6] == k).any())))
-    bptest.check(numpy.array_equal(got[:, 3:11], expected[:, 3:11]),
+        enumerate(("Released", "Terminated", "Stuck", "Slid", "Bounced", "Passed"))
+        if (got[:, 6] == k).any())))
+    bptest.check(numpy.array_equal(got[:, 3:11], expected[:, 3:11]) and
+                 numpy.array_equal(got[:, 14:], expected[:, 14:]),
                  "%s %s: the events differ from the built-in run's" % (name, key))
     if len(expected):
         diagonal = numpy.linalg.norm(expected[:, :3].max(axis=0) - expected[:, :3].min(axis=0))
