@@ -170,10 +170,14 @@ std::string TracerSteppers::fallBackIfTooLarge(
   const int maxSize = this->Queue->report().maxTextureSize;
   std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
-  if (limit.empty() && p.surfaces && p.surfaces->hasOutlets())
+  if (limit.empty() && p.surfaces && p.surfaces->hasWalls())
   {
     // Gates change nothing in a step (they record, and the GPU engine records
-    // nothing): only an Outlet needs the engine's own rule.
+    // nothing); Walls need the engine's own rules.
+    limit = "the GPU engine does not keep elements off Wall surfaces (Surfaces input) yet";
+  }
+  if (limit.empty() && p.surfaces && p.surfaces->hasOutlets())
+  {
     limit = "the GPU engine does not end elements at Outlet surfaces (Surfaces input) yet";
   }
   if (limit.empty())

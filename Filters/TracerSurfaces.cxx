@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The tracer's internals, the Surfaces input (input 3): its gates and
-// outlets as the engine takes them (bp::SurfaceSet, Core/Engine/Surfaces.h;
+// outlets and walls as the engine takes them (bp::SurfaceSet, Core/Engine/Surfaces.h;
 // engine specification 2.10), cut into triangles in engine coordinates,
 // each with its interaction, block and cell. See
 // vtkBoundParticleTracerInternals.h.
@@ -71,7 +71,7 @@ bool interactionOf(vtkDataArray* values, std::int32_t leaf, vtkIdType cell,
     return true;
   }
   const double v = values->GetComponent(cell, 0);
-  if (v == 0.0 || v == 1.0)
+  if (v == 0.0 || v == 1.0 || v == 2.0)
   {
     kind = bp::SurfaceInteraction(int(v));
     return true;
@@ -196,7 +196,7 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
   if (!g.unknownCells.empty())
   {
     say << g.unknownCells.size() << " cells of the Surfaces have a value of '" << arrayName
-        << "' that names no interaction (0 Gate, 1 Outlet; such as";
+        << "' that names no interaction (0 Gate, 1 Outlet, 2 Wall; such as";
     for (double v : g.unknownValues)
     {
       say << " " << v;
@@ -232,12 +232,12 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
   {
     say << "The Surfaces input has no surface to act on (no polygons"
         << (flat < 0 ? " or volume with finite points" : " or lines with finite points")
-        << "): no element passes a gate or an outlet.";
+        << "): no element passes a gate, an outlet or a wall.";
   }
   else if (!reachesBox(g.triangles.corners, box))
   {
     say << "No triangle of the Surfaces reaches into the field's bounds: no element passes a "
-           "gate or an outlet.";
+           "gate, an outlet or a wall.";
   }
   return say.str();
 }

@@ -373,13 +373,13 @@ public:
   ///@{
   /// The optional fourth input, Surfaces: any data set whose surface (a
   /// volume's boundary; in a 2D field lines, across the plane) acts on the
-  /// elements whose centres cross it: a Gate lets them through, an Outlet
-  /// ends them as Terminate does; output 3 records each passage.
-  /// SurfaceInteraction is what every cell does (Gate, default; Outlet),
-  /// unless SurfaceInteractionArray names a cell array of the Surfaces that
-  /// says it per cell (0 Gate, 1 Outlet; "None", the default, or empty:
-  /// none). Not with Linking or Anchor = Centre. A GPU display runs the CPU
-  /// engine where there is an Outlet.
+  /// elements that cross it: a Gate lets them through, an Outlet ends them
+  /// as Terminate does, a Wall acts as Boundary does at the sides (Slip and
+  /// Bounce per particle; Stick refused); output 3 records each event.
+  /// SurfaceInteraction is what every cell does (Gate, default; Outlet;
+  /// Wall) unless SurfaceInteractionArray names a cell array of the Surfaces
+  /// saying it per cell (0, 1, 2; "None", the default: none). Not with
+  /// Linking or Anchor = Centre. A GPU display runs the CPU engine for them.
   void SetSurfacesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(3, output); }
   // Declares SetSurfaceInteraction, GetSurfaceInteraction and GetSurfaceInteractionAsString.
   vtkBPEnumMacro(SurfaceInteraction, bp::SurfaceInteraction);

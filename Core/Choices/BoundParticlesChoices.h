@@ -162,17 +162,18 @@ struct EnumTraits<Boundary>
 /// What a surface of the tracer's Surfaces input does to the elements that
 /// pass it (Surface Interaction; engine specification 2.10): a Gate lets
 /// them through and records each passage, an Outlet ends them (as Boundary
-/// Terminate does) and records it. A Surface Interaction Array holds these
-/// values per cell.
+/// Terminate does) and records it, a Wall acts as the Boundary does at the
+/// field's sides. A Surface Interaction Array holds these values per cell.
 enum class SurfaceInteraction
 {
   Gate = 0,
-  Outlet
+  Outlet,
+  Wall
 };
 template <>
 struct EnumTraits<SurfaceInteraction>
 {
-  static constexpr const char* names[] = { "Gate", "Outlet" };
+  static constexpr const char* names[] = { "Gate", "Outlet", "Wall" };
 };
 
 /// The unit of the tracer's Step Size (Step Size Unit): cells, the fastest

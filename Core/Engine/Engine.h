@@ -95,6 +95,24 @@ std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size)
 /// with Release Pattern Lattice every element's is element 0's.
 float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation);
 
+/// The mean of n particles' positions p, summed in float, particle by
+/// particle, as the reposition test (2.4) sums an element's centre.
+inline void particleMean(const float* p, std::size_t n, float mean[3])
+{
+  float c[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += p[3 * i + k];
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    mean[k] = c[k] / float(n);
+  }
+}
+
 class Engine
 {
 public:
@@ -459,12 +477,32 @@ private:
   void flagAfterStep(std::size_t e, const VectorField& field, double h, const float* before,
     const float* moved, const float at[3], bool leave, bool left,
     std::vector<InteractionEvent>* events, std::size_t first);
-  /// The Surfaces (Parameters::surfaces, 2.10): element e's centre moved
-  /// from its particles' mean `before` to `center` over the step; its
-  /// passages recorded in `events` (when given, with their share of the
-  /// step as time). Whether it ends at an Outlet.
-  bool passSurfaces(std::size_t e, const float* before, const float center[3],
+  /// The Surfaces (Parameters::surfaces, 2.10; EngineSurfaces.cpp):
+  /// element e's centre moved from its particles' mean `before` to `center`
+  /// over the step; its passages recorded in `events` (when given, with
+  /// their share of the step as time). The flag a passage ends it with
+  /// (Terminated at an Outlet; at a Wall, Boundary's: ResetDue for Release
+  /// Again, Terminated for Terminate), 0 for none.
+  std::uint8_t passSurfaces(std::size_t e, const float* before, const float center[3],
     std::vector<InteractionEvent>* events) const;
+  /// Whether the Surfaces have Walls that act on particles (Boundary Slip
+  /// or Bounce).
+  bool wallsParticlesOnSurfaces() const;
+  /// A particle's step from `before` to `p` (after the box's walls) at the
+  /// Surfaces' Walls (Slip, Bounce; 2.10): p put back on its side, a heavy
+  /// particle's `slip` by the rule. Whether it met a Wall it did not lie on
+  /// before the step: then `met` holds the event (but for element and particle).
+  bool wallParticleOnSurfaces(const VectorField& field, const StepWeights& weights,
+    const float before[3], float p[3], float* slip, InteractionEvent& met) const;
+  /// How far off a Wall of the Surfaces (along its normal, on its side) a
+  /// particle lies on it before a step, so that meeting it is no new event:
+  /// two offsets (surfaceWallOffset), where the walls put it.
+  float restingOnWall(float offset) const;
+  /// After restoration: element e's particles the springs pushed through a
+  /// Wall of the Surfaces (from `advected`) put back on its side; an event
+  /// for one that did not lie on it before the step, and has none yet.
+  void keepOffSurfaceWalls(std::size_t e, const VectorField& field, const float* before,
+    const float* advected, std::vector<InteractionEvent>& events, std::size_t first);
   /// Anchor::Centre: element e moved whole from its particles' mean `center`
   /// to its release centre; whether a particle is then outside the domain
   /// (tested only with `testParticles`).

@@ -261,6 +261,7 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   std::copy_n(p, 3 * n, before);
   float* slips = this->Slips.empty() ? nullptr : this->Slips.data() + 3 * e * n;
   const bool walls = isWall(this->Params.boundary);
+  const bool surfaceWalls = this->wallsParticlesOnSurfaces();
   // Stick holds a particle that lies on a side of the box: not advected.
   const bool stick = this->Params.boundary == Boundary::Stick;
   const Domain& box = this->domainOf(field);
@@ -293,6 +294,17 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
         events->push_back(met);
       }
     }
+    InteractionEvent hit; // at a Wall of the Surfaces (2.10), one event a step at most
+    if (surfaceWalls &&
+      this->wallParticleOnSurfaces(field, weights, before + 3 * i, p + 3 * i, slip, hit) &&
+      events &&
+      (events->empty() || events->back().particle != std::int32_t(i) ||
+        events->back().element != this->Ids[e]))
+    {
+      hit.element = this->Ids[e];
+      hit.particle = std::int32_t(i);
+      events->push_back(hit);
+    }
   }
   if (advected)
   {
@@ -318,6 +330,10 @@ void Engine::stepElement(std::size_t e, const VectorField& field, const StepWeig
     if (isWall(this->Params.boundary))
     {
       this->wallAfterRestoration(e, field, weights, before, advected, events, first);
+    }
+    if (this->wallsParticlesOnSurfaces())
+    {
+      this->keepOffSurfaceWalls(e, field, before, advected, events, first);
     }
   }
   this->settle(e, field, weights, h, before, advected, &events, first);
@@ -417,21 +433,26 @@ void Engine::flagAfterStep(std::size_t e, const VectorField& field, double h, co
   const std::uint8_t hidden = this->ResetFlags[e] & (ReleaseHidden | Terminated);
   // The Surfaces (2.10): the centre's step through gates and outlets; an
   // element that is not shown passes none.
-  const bool exits = this->Params.surfaces && moved && !leave && !hidden && this->Links.empty() &&
-    this->passSurfaces(e, before, moved, events);
+  const std::uint8_t ended =
+    this->Params.surfaces && moved && !leave && !hidden && this->Links.empty()
+    ? this->passSurfaces(e, before, moved, events)
+    : std::uint8_t(0);
   std::uint8_t flag = 0;
   if (this->Links.empty() && !(hidden & Terminated))
   {
     // A wall keeps the element in: it is never released again for leaving.
-    // An Outlet ends it, as Terminate does, wherever it went on after.
-    const bool terminates =
-      !leave && (exits || (left && this->Params.boundary == Boundary::Terminate));
+    // A surface that ends it (an Outlet, a Wall with Release Again or
+    // Terminate) does so wherever it went on after.
     const bool walled = isWall(this->Params.boundary);
-    flag = terminates ? Terminated : (leave || (left && !walled)) ? ResetDue : 0;
+    const bool terminates = !leave &&
+      (ended == Terminated || (!ended && left && this->Params.boundary == Boundary::Terminate));
+    flag = terminates                                               ? Terminated
+      : (leave || ended == ResetDue || (!ended && left && !walled)) ? ResetDue
+                                                                    : 0;
   }
   if (events)
   {
-    const bool leaving = left && flag && !isWall(this->Params.boundary) && !exits;
+    const bool leaving = left && flag && !isWall(this->Params.boundary) && !ended;
     this->noteEvents(e, field, h, before, hidden ? nullptr : moved, // hidden: none
       leaving ? at : nullptr, flag == Terminated, *events, first);
   }

@@ -3,6 +3,7 @@
 // engine is sized, one named check per group of parameters, each giving the
 // message the user sees (empty when it passes).
 #include "Engine.h"
+#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -268,13 +269,23 @@ std::string checkSurfaces(const ElementTemplate& /*shape*/, const Parameters& p)
   if (p.linking != Linking::None)
   {
     // A super set's elements are never flagged, and record nothing.
-    return "Surfaces (gates and outlets) act on single elements; a super set (Linking) lives out "
+    return "Surfaces (gates, outlets and walls) act on single elements; a super set (Linking) "
+           "lives out "
            "its lifetime whole: set Linking to None or disconnect the Surfaces";
+  }
+  if (p.surfaces->hasWalls() && p.boundary == Boundary::Stick)
+  {
+    // Stick holds a particle on the box's sides by its position alone; on
+    // a surface's wall it would need state of its own.
+    return "Boundary = Stick holds particles on the field's sides, not on a Wall of the Surfaces: "
+           "set Boundary to Slip, Bounce, Terminate or Release Again, or make the surface an "
+           "Outlet (which records where each element meets it)";
   }
   if (p.anchor != Anchor::None)
   {
     // An anchored element goes back to its release centre every step.
-    return "Surfaces (gates and outlets) act on travelling elements; Anchor = Centre holds them "
+    return "Surfaces (gates, outlets and walls) act on travelling elements; Anchor = Centre holds "
+           "them "
            "at their release centre: set Anchor to None or disconnect the Surfaces";
   }
   return std::string();

@@ -3,7 +3,6 @@
 // "Walls") and the events at the field's sides it records (Interactions.h,
 // 2.9): called from the step in EngineStep.cpp.
 #include "Engine.h"
-#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,22 +17,6 @@ inline bool finite3(const float* p)
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
-/// The mean of n particles' positions p, summed in float as settle() sums it.
-void meanOf(const float* p, std::size_t n, float mean[3])
-{
-  float c[3] = { 0, 0, 0 };
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] += p[3 * i + k];
-    }
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    mean[k] = c[k] / float(n);
-  }
-}
 } // namespace
 
 int Engine::wallParticle(const VectorField& field, const StepWeights& weights,
@@ -142,7 +125,7 @@ void Engine::fillVelocity(const float* before, const float center[3], double h,
   std::vector<InteractionEvent>& events, std::size_t first) const
 {
   float c[3];
-  meanOf(before, this->Shape.particleCount(), c);
+  particleMean(before, this->Shape.particleCount(), c);
   std::array<float, 3> velocity;
   for (int k = 0; k < 3; ++k)
   {
@@ -152,36 +135,6 @@ void Engine::fillVelocity(const float* before, const float center[3], double h,
   {
     events[k].velocity = velocity;
   }
-}
-
-bool Engine::passSurfaces(std::size_t e, const float* before, const float center[3],
-  std::vector<InteractionEvent>* events) const
-{
-  const SurfaceSet& surfaces = *this->Params.surfaces;
-  float from[3];
-  meanOf(before, this->Shape.particleCount(), from);
-  thread_local std::vector<SurfaceCrossing> crossings;
-  const bool exits = surfaces.passages(from, center, crossings);
-  for (const SurfaceCrossing& c : crossings)
-  {
-    if (!events)
-    {
-      break;
-    }
-    InteractionEvent passed;
-    passed.time = c.t; // the share of the step; keepInteractions makes it a time
-    passed.element = this->Ids[e];
-    passed.particle = -1;
-    passed.kind = surfaces.interaction(c.triangle) == SurfaceInteraction::Outlet
-      ? Interaction::Terminated
-      : Interaction::Passed;
-    passed.side = FirstSurfaceId + c.surface;
-    passed.cell = surfaces.cell(c.triangle);
-    passed.position = c.point;
-    passed.normal = c.normal;
-    events->push_back(passed);
-  }
-  return exits;
 }
 
 void Engine::noteEvents(std::size_t e, const VectorField& field, double h, const float* before,

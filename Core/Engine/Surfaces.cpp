@@ -13,38 +13,90 @@ bool finiteTriangle(const float* v)
 {
   return std::all_of(v, v + 9, [](float x) { return std::isfinite(x); });
 }
+
+/// `given` filled in to one entry a triangle.
+SurfaceTriangles filledIn(SurfaceTriangles given)
+{
+  const std::size_t count = given.corners.size() / 9;
+  given.corners.resize(9 * count);
+  given.surfaces.resize(count, 0);
+  given.interaction.resize(count, SurfaceInteraction::Gate);
+  given.cells.resize(count, -1);
+  return given;
+}
+
+/// The corners and surfaces of the Wall triangles of `given`, with each
+/// one's index as given in `index`.
+SurfaceCrossings wallsOf(const SurfaceTriangles& given, std::vector<std::uint32_t>& index)
+{
+  std::vector<float> corners;
+  std::vector<std::int32_t> surfaces;
+  for (std::size_t k = 0; k < given.interaction.size(); ++k)
+  {
+    if (given.interaction[k] == SurfaceInteraction::Wall)
+    {
+      corners.insert(corners.end(), given.corners.begin() + std::ptrdiff_t(9 * k),
+        given.corners.begin() + std::ptrdiff_t(9 * k + 9));
+      surfaces.push_back(given.surfaces[k]);
+      index.push_back(std::uint32_t(k));
+    }
+  }
+  return SurfaceCrossings(corners, surfaces);
+}
 } // namespace
 
-SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
-  : Given(triangles)
-  , Crossings(triangles.corners, triangles.surfaces)
+float surfaceWallOffset(const Domain& box)
 {
-  const std::size_t count = triangles.corners.size() / 9;
-  this->Given.corners.resize(9 * count);
-  this->Given.surfaces.resize(count, 0);
-  this->Given.interaction.resize(count, SurfaceInteraction::Gate);
-  this->Given.cells.resize(count, -1);
-  for (std::size_t k = 0; k < count; ++k)
+  float extent = 0.0f;
+  for (int a = 0; a < 3; ++a)
+  {
+    extent = box.degenerate[a] ? extent : std::max(extent, box.upper[a] - box.lower[a]);
+  }
+  return std::isfinite(extent) && extent > 0.0f ? 1e-5f * extent : 1e-5f;
+}
+
+SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
+  : Given(filledIn(triangles))
+  , Passing(Given.corners, Given.surfaces)
+  , Walls(wallsOf(Given, WallIndex))
+{
+  for (std::size_t k = 0; k < this->Given.cells.size(); ++k)
   {
     // As SurfaceCrossings keeps it: finite corners (its area is checked there too).
     this->Outlets = this->Outlets ||
       (this->Given.interaction[k] == SurfaceInteraction::Outlet &&
-        finiteTriangle(triangles.corners.data() + 9 * k));
+        finiteTriangle(this->Given.corners.data() + 9 * k));
   }
 }
 
 bool SurfaceSet::passages(
-  const float a[3], const float b[3], std::vector<SurfaceCrossing>& out) const
+  const float a[3], const float b[3], bool wallsEnd, std::vector<SurfaceCrossing>& out) const
 {
-  this->Crossings.allCrossings(a, b, out);
-  const auto outlet = std::find_if(out.begin(), out.end(),
+  this->Passing.allCrossings(a, b, out);
+  // A particle-level Wall (Slip, Bounce) is no passage of the centre.
+  out.erase(std::remove_if(out.begin(), out.end(),
+              [&](const SurfaceCrossing& c) {
+                return !wallsEnd && this->Given.interaction[c.triangle] == SurfaceInteraction::Wall;
+              }),
+    out.end());
+  const auto ends = std::find_if(out.begin(), out.end(),
     [this](const SurfaceCrossing& c)
-    { return this->Given.interaction[c.triangle] == SurfaceInteraction::Outlet; });
-  if (outlet == out.end())
+    { return this->Given.interaction[c.triangle] != SurfaceInteraction::Gate; });
+  if (ends == out.end())
   {
     return false;
   }
-  out.erase(outlet + 1, out.end());
+  out.erase(ends + 1, out.end());
+  return true;
+}
+
+bool SurfaceSet::wallCrossing(const float a[3], const float b[3], SurfaceCrossing& crossing) const
+{
+  if (!this->Walls.firstCrossing(a, b, crossing))
+  {
+    return false;
+  }
+  crossing.triangle = this->WallIndex[crossing.triangle];
   return true;
 }
 

@@ -2,22 +2,27 @@
 /**
  * @file Surfaces.h
  * @brief The tracer's Surfaces input as the engine sees it (engine
- * specification 2.10, "Gates and outlets"): triangles in engine
- * coordinates, each with what it does (SurfaceInteraction: Gate, Outlet),
- * the surface it belongs to and the input's cell it was cut from.
+ * specification 2.10, "Gates, outlets and walls"): triangles in engine
+ * coordinates, each with what it does (SurfaceInteraction: Gate, Outlet,
+ * Wall), the surface it belongs to and the input's cell it was cut from.
  *
  * An element passes a surface where the step of its centre (the particles'
  * mean before the step to their mean after restoration and the walls)
  * crosses one of its triangles (SurfaceCrossings.h: t in (0, 1], one
  * crossing through an edge that triangles share). A Gate records each
  * passage; the first Outlet passed ends the element (Terminated) and
- * records it, and the passages after it in that step are not made.
+ * records it, and the passages after it in that step are not made. A Wall
+ * acts as the Boundary does at the field's sides: with Release Again or
+ * Terminate on the element whose centre crosses it (as an Outlet does,
+ * released again or ended), with Slip or Bounce on each particle whose step
+ * crosses it (wallCrossing).
  */
 #ifndef BoundParticles_Surfaces_h
 #define BoundParticles_Surfaces_h
 
 #include "BoundParticlesChoices.h"
 #include "SurfaceCrossings.h"
+#include "VectorField.h"
 
 #include <cstdint>
 #include <vector>
@@ -34,6 +39,12 @@ struct SurfaceTriangles
   std::vector<SurfaceInteraction> interaction; ///< what each does
 };
 
+/// Where a particle is put off a Wall surface, toward the side it came
+/// from: 10^-5 of the field's largest extent (its axes that are not flat),
+/// some hundred float roundings at that size, so that the next step starts
+/// strictly on that side.
+float surfaceWallOffset(const Domain& box);
+
 class SurfaceSet
 {
 public:
@@ -44,22 +55,33 @@ public:
   std::int32_t cell(std::uint32_t k) const { return this->Given.cells[k]; }
   /// The triangles as given (each list as long as the triangles: filled in).
   const SurfaceTriangles& triangles() const { return this->Given; }
-  /// Whether any triangle kept is an Outlet (an element may end at one).
+  /// Whether any triangle kept is an Outlet, or a Wall.
   bool hasOutlets() const { return this->Outlets; }
+  bool hasWalls() const { return this->Walls.triangleCount() > 0; }
   /// The triangles kept, and those left out (a corner not finite, or no area).
-  std::size_t triangleCount() const { return this->Crossings.triangleCount(); }
-  std::size_t droppedTriangles() const { return this->Crossings.droppedTriangles(); }
+  std::size_t triangleCount() const { return this->Passing.triangleCount(); }
+  std::size_t droppedTriangles() const { return this->Passing.droppedTriangles(); }
 
   /**
-   * The passages of the step a -> b, in order along it (allCrossings), up to
-   * and with the first Outlet's: what the step does at the surfaces.
-   * Returns whether it ends at an Outlet.
+   * The passages of an element's centre over the step a -> b, in order
+   * along it, up to and with the first that ends it: an Outlet's, or with
+   * `wallsEnd` (Boundary Release Again or Terminate) a Wall's. The
+   * crossings' triangles are indices as given. Returns whether one ends it.
    */
-  bool passages(const float a[3], const float b[3], std::vector<SurfaceCrossing>& out) const;
+  bool passages(
+    const float a[3], const float b[3], bool wallsEnd, std::vector<SurfaceCrossing>& out) const;
+
+  /// The first crossing of a particle's step a -> b with a Wall (its
+  /// triangle an index as given); false where it crosses none.
+  bool wallCrossing(const float a[3], const float b[3], SurfaceCrossing& crossing) const;
 
 private:
   SurfaceTriangles Given;
-  SurfaceCrossings Crossings;
+  /// Every triangle (for the elements' centres), and the Walls alone (for
+  /// the particles), with each one's index as given.
+  SurfaceCrossings Passing;
+  std::vector<std::uint32_t> WallIndex; // before Walls, which fills it as it is made
+  SurfaceCrossings Walls;
   bool Outlets = false;
 };
 

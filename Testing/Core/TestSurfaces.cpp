@@ -204,3 +204,136 @@ TEST(Surfaces, AreRefusedWithLinkingAndAnchors)
   anchored.anchor = bp::Anchor::Centre;
   EXPECT_NE(bp::Engine::validate(square, anchored).find("Anchor = Centre"), std::string::npos);
 }
+
+namespace
+{
+/// The plane y = `y` over x, z in [-1, 1] as a Wall (two triangles, cell 3).
+std::shared_ptr<const bp::SurfaceSet> floorAt(float y)
+{
+  bp::SurfaceTriangles t;
+  t.corners = rectangle(-1, 1, -1, 1, y, true);
+  t.surfaces = { 1, 1 };
+  t.interaction.assign(2, bp::SurfaceInteraction::Wall);
+  t.cells = { 3, 3 };
+  return std::make_shared<const bp::SurfaceSet>(t);
+}
+} // namespace
+
+TEST(Surfaces, AStripCarriedOntoASlipWallLiesAlongItAndSlides)
+{
+  // As Walls.AStripLiesDownOnASlipWallAndSlidesAlongIt at the box's side,
+  // on the plane x = 0.6 of the Surfaces: flow into the wall and along it
+  // (+y), the strip at 45 degrees to it. It lies down on the wall's side,
+  // keeps its length and slides at the flow's tangential speed.
+  const bp::VectorField field = bptest::uniformFlow({ 1.0f, 0.25f, 0.0f });
+  bp::Parameters p = squares({ 0.1f, -0.5f, 0.0f }, 100.0f);
+  p.elementSize = 0.5f;
+  p.integrator = bp::Integrator::Euler;
+  const float c = std::sqrt(0.5f);
+  p.frame = { c, 0, c, 0, 1, 0, -c, 0, c };
+  p.boundary = bp::Boundary::Slip;
+  bp::SurfaceTriangles wall;
+  wall.corners = rectangle(-1, 1, -1, 1, 0.6f, false);
+  for (std::size_t k = 0; k < wall.corners.size(); k += 3)
+    std::swap(wall.corners[k], wall.corners[k + 2]); // the plane x = 0.6
+  wall.surfaces = { 1, 1 };
+  wall.interaction.assign(2, bp::SurfaceInteraction::Wall);
+  wall.cells = { 3, 3 };
+  p.surfaces = std::make_shared<const bp::SurfaceSet>(wall);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, field, 150, 0.01);
+  EXPECT_EQ(engine.generations()[0], 0u);
+  EXPECT_EQ(engine.resetFlags()[0], 0u);
+  const float* q = engine.positions().data();
+  float lowest = 1, highest = -1, meanY = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    lowest = std::min(lowest, q[3 * i]);
+    highest = std::max(highest, q[3 * i]);
+    meanY += q[3 * i + 1] / 4;
+    std::printf("particle %d at %.5f %.5f %.5f\n", i, q[3 * i], q[3 * i + 1], q[3 * i + 2]);
+  }
+  EXPECT_LE(highest, 0.6f) << "every particle on the wall's side";
+  EXPECT_GT(lowest, 0.59f) << "lying on the wall";
+  EXPECT_LT(bptest::worstSpringStrain(engine), 0.05);
+  EXPECT_NEAR(meanY, -0.5f + 0.25f * 1.5f, 0.05f) << "it slid along the wall";
+  // One Slid event per particle, on the wall's surface and cell, when it
+  // first reached it: not again while it slides.
+  std::map<int, int> perParticle;
+  for (const bp::InteractionEvent& x : engine.interactions().events())
+  {
+    EXPECT_EQ(x.kind, bp::Interaction::Slid);
+    EXPECT_EQ(x.side, bp::FirstSurfaceId + 1);
+    EXPECT_EQ(x.cell, 3);
+    EXPECT_NEAR(x.position[0], 0.6f, 1e-6f);
+    ++perParticle[x.particle];
+  }
+  EXPECT_EQ(perParticle.size(), 4u);
+  for (const auto& [particle, count] : perParticle)
+    EXPECT_EQ(count, 1) << "particle " << particle;
+}
+
+TEST(Surfaces, APointBouncesOffAWallWithTheRestitution)
+{
+  // Down at speed 1 from y = 0.5 onto y = 0, steps of 0.3: the second step
+  // goes 0.1 beyond and comes back e = 0.5 times that.
+  const bp::VectorField field = bptest::uniformFlow({ 0.0f, -1.0f, 0.0f });
+  bp::Parameters p = squares({ 0.0f, 0.5f, 0.0f }, 100.0f);
+  p.integrator = bp::Integrator::Euler;
+  p.boundary = bp::Boundary::Bounce;
+  p.restitution = 0.5f;
+  p.surfaces = floorAt(0.0f);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, field, 2, 0.3);
+  const float offset = bp::surfaceWallOffset(field.domain());
+  EXPECT_NEAR(engine.positions()[1], 0.05f + offset, 1e-6f);
+  ASSERT_EQ(engine.interactions().size(), 1u);
+  const bp::InteractionEvent x = engine.interactions().events()[0];
+  EXPECT_EQ(x.kind, bp::Interaction::Bounced);
+  EXPECT_NEAR(x.position[1], 0.0f, 1e-6f);
+  EXPECT_DOUBLE_EQ(x.time, 0.6) << "a particle's wall event at the step's end, as at the sides";
+}
+
+TEST(Surfaces, AWallReleasesAgainOrEndsAnElementWhoseCentreCrossesIt)
+{
+  const bp::VectorField field = bptest::uniformFlow({ 0.0f, -1.0f, 0.0f });
+  for (bp::Boundary boundary : { bp::Boundary::ReleaseAgain, bp::Boundary::Terminate })
+  {
+    bp::Parameters p = squares({ 0.0f, 0.5f, 0.0f }, 100.0f);
+    p.boundary = boundary;
+    p.surfaces = floorAt(0.0f);
+    bp::Engine engine;
+    ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+    engine.initialize(bp::serialRunner());
+    run(engine, field, 30, 0.02); // the centre crosses at t = 0.5
+    const std::vector<bp::InteractionEvent> events = engine.interactions().events();
+    ASSERT_GE(events.size(), 1u);
+    const bool released = boundary == bp::Boundary::ReleaseAgain;
+    EXPECT_EQ(events[0].kind, released ? bp::Interaction::Released : bp::Interaction::Terminated);
+    EXPECT_EQ(events[0].side, bp::FirstSurfaceId + 1);
+    EXPECT_NEAR(events[0].time, 0.5, 1e-5);
+    if (released)
+    {
+      EXPECT_GE(engine.generations()[0], 1u) << "placed again";
+    }
+    else
+    {
+      EXPECT_TRUE(engine.resetFlags()[0] & bp::Terminated);
+    }
+  }
+}
+
+TEST(Surfaces, StickOnAWallIsRefused)
+{
+  bp::Parameters p = squares({ 0, 0.5f, 0 }, 1.0f);
+  p.surfaces = floorAt(0.0f);
+  p.boundary = bp::Boundary::Stick;
+  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Square), p).find("Stick"),
+    std::string::npos);
+  p.boundary = bp::Boundary::Slip;
+  EXPECT_EQ(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+}

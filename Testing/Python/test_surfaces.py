@@ -10,6 +10,8 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   x < 0, 0: Gate for x > 0): an element ends where it crosses the outlet
   (Terminated, at pi - a, or 3 pi - a after one passage of the gate) and is
   hidden from then on;
+- a wall (Kind 2) with Slip keeps every particle on its side, with Slid
+  events where they reach it; Stick with a wall is refused;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
   with values of Kind that name no interaction warn and lose nothing; with
   Linking the update fails with a message.
@@ -141,6 +143,34 @@ bptest.check(len(rows) == len(expected) and builtins.all(
 _, cells = elements(both)
 bptest.check(cells == 0, "every element ended at the outlet is hidden: %d cells" % cells)
 
+# A wall (x < 0, Kind 2) and a gate (x > 0) with Boundary = Slip: the
+# rotation carries the squares down onto the wall's upper side, where they
+# stay (the flow there is normal to it: nothing to slide along); a
+# particle records a Slid event when it reaches it (again where the springs
+# lifted it off).
+walled = tracer(Surfaces=plane_with_kinds([2.0, 0.0]), SurfaceInteractionArray="Kind",
+                Boundary="Slip", OutputArrays=["ElementId", "ParticleIndex"])
+a, points = events(walled, 5.0)
+slid = a["Interaction"] == 3
+bptest.check(slid.any() and np.all(a["SurfaceCell"][slid] == 0) and
+             np.all(a["SurfaceId"][slid] == 6) and np.all(np.abs(points[slid, 1]) < 1e-5),
+             "Slid events on the wall's cell: %d" % int(slid.sum()))
+pairs = set(zip(a["ElementId"][slid].tolist(), bptest.point_array(
+    servermanager.Fetch(walled, None, None, 3), "ParticleIndex")[slid].tolist()))
+print("%d Slid events of %d particles" % (int(slid.sum()), len(pairs)))
+bptest.check(len(pairs) >= 4 * 3, "the particles of at least three squares reach the wall")
+positions, _ = elements(walled, 5.0)
+on_wall_side = positions[positions[:, 0] < -0.05]
+bptest.check(len(on_wall_side) > 0 and float(on_wall_side[:, 1].min()) >= -1e-6,
+             "no particle passes the wall: lowest y %.3g over x < 0" %
+             (float(on_wall_side[:, 1].min()) if len(on_wall_side) else float("nan")))
+with bptest.CapturedMessages() as messages:
+    stuck = tracer(Surfaces=plane_with_kinds([2.0, 0.0]), SurfaceInteractionArray="Kind",
+                   Boundary="Stick")
+    stuck.UpdatePipeline(1.0)
+bptest.check(messages.mentions("Boundary = Stick holds particles on the field's sides"),
+             "Stick with a Wall surface: refused with a message: %s" % messages.messages)
+
 # Bad input: a clear warning, and the trace goes on.
 empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
 empty.Script = "pass"
@@ -163,6 +193,6 @@ for name, surface, extra, said in cases:
 with bptest.CapturedMessages() as messages:
     linked = tracer(Surfaces=gate, Linking="Chain", SeedSource=None)
     linked.UpdatePipeline(1.0)
-bptest.check(messages.mentions("Surfaces (gates and outlets) act on single elements"),
+bptest.check(messages.mentions("Surfaces (gates, outlets and walls) act on single elements"),
              "Surfaces with Linking: refused with a message: %s" % messages.messages)
 bptest.finish()

@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The Surfaces in a step of the CPU engine (Surfaces.h; engine specification
+// 2.10): an element's centre passing gates, outlets and element-level walls,
+// and each particle kept off the Walls with Slip or Bounce; called from the
+// step in EngineStep.cpp.
+#include "Engine.h"
+#include "Surfaces.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bp
+{
+
+namespace
+{
+inline float dot3(const float* a, const float* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// The crossing's normal turned to the side its step came from.
+std::array<float, 3> towardStart(const SurfaceCrossing& c)
+{
+  const float s = c.direction > 0 ? -1.0f : 1.0f;
+  return { s * c.normal[0], s * c.normal[1], s * c.normal[2] };
+}
+
+/// p put `offset` off the crossing's plane on its step's side, along m.
+void putOff(const SurfaceCrossing& c, const std::array<float, 3>& m, float offset, float p[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = c.point[std::size_t(k)] + offset * m[std::size_t(k)];
+  }
+}
+
+/// The event of a particle that met a Wall at crossing c.
+InteractionEvent wallEvent(const SurfaceSet& surfaces, const SurfaceCrossing& c, Boundary b)
+{
+  InteractionEvent met;
+  met.kind = wallInteraction(b);
+  met.side = FirstSurfaceId + c.surface;
+  met.cell = surfaces.cell(c.triangle);
+  met.position = c.point;
+  met.normal = c.normal;
+  return met;
+}
+} // namespace
+
+std::uint8_t Engine::passSurfaces(std::size_t e, const float* before, const float center[3],
+  std::vector<InteractionEvent>* events) const
+{
+  const SurfaceSet& surfaces = *this->Params.surfaces;
+  const Boundary boundary = this->Params.boundary;
+  // With Release Again or Terminate a Wall acts on the element as the
+  // field's sides do; with Slip or Bounce on its particles (not here).
+  const bool wallsEnd = !isWall(boundary);
+  float from[3];
+  particleMean(before, this->Shape.particleCount(), from);
+  thread_local std::vector<SurfaceCrossing> crossings;
+  const bool ends = surfaces.passages(from, center, wallsEnd, crossings);
+  std::uint8_t flag = 0;
+  for (const SurfaceCrossing& c : crossings)
+  {
+    const SurfaceInteraction kind = surfaces.interaction(c.triangle);
+    const bool released = kind == SurfaceInteraction::Wall && boundary == Boundary::ReleaseAgain;
+    flag = kind == SurfaceInteraction::Gate ? flag : released ? ResetDue : Terminated;
+    if (!events)
+    {
+      continue;
+    }
+    InteractionEvent passed;
+    passed.time = c.t; // the share of the step; keepInteractions makes it a time
+    passed.element = this->Ids[e];
+    passed.particle = -1;
+    passed.kind = kind == SurfaceInteraction::Gate ? Interaction::Passed
+      : released                                   ? Interaction::Released
+                                                   : Interaction::Terminated;
+    passed.side = FirstSurfaceId + c.surface;
+    passed.cell = surfaces.cell(c.triangle);
+    passed.position = c.point;
+    passed.normal = c.normal;
+    events->push_back(passed);
+  }
+  return ends ? flag : std::uint8_t(0);
+}
+
+float Engine::restingOnWall(float offset) const
+{
+  // Within two offsets of the wall on its side: where a step or the
+  // restoration before put it. A particle the springs lift farther off,
+  // that the flow brings back, meets the wall again, as at the field's sides.
+  return 2.0f * offset;
+}
+
+bool Engine::wallsParticlesOnSurfaces() const
+{
+  const Boundary b = this->Params.boundary;
+  return this->Params.surfaces && this->Params.surfaces->hasWalls() &&
+    (b == Boundary::Slip || b == Boundary::Bounce);
+}
+
+bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights& weights,
+  const float before[3], float p[3], float* slip, InteractionEvent& met) const
+{
+  const SurfaceSet& surfaces = *this->Params.surfaces;
+  SurfaceCrossing c;
+  if (!surfaces.wallCrossing(before, p, c))
+  {
+    return false; // none, or not finite (settle takes the step back)
+  }
+  const bool bounce = this->Params.boundary == Boundary::Bounce;
+  const float e = this->Params.restitution;
+  const float offset = surfaceWallOffset(this->domainOf(field));
+  const std::array<float, 3> m = towardStart(c);
+  // How far p lies beyond the plane (negative along m): Slip takes that
+  // back (the tangential step kept), Bounce (1 + e) times it.
+  const float d[3] = { p[0] - c.point[0], p[1] - c.point[1], p[2] - c.point[2] };
+  const float beyond = dot3(d, m.data());
+  const float back = (bounce ? 1.0f + e : 1.0f) * beyond;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] += (offset - back) * m[std::size_t(k)];
+  }
+  SurfaceCrossing again;
+  float start[3];
+  putOff(c, m, offset, start);
+  if (bounce && surfaces.wallCrossing(start, p, again))
+  {
+    putOff(again, towardStart(again), offset, p); // reflected into another wall: on it
+  }
+  if (slip)
+  {
+    // The rule on the heavy particle's velocity v = u + slip, u the flow
+    // where the wall leaves it at the step's end: the normal component into
+    // the wall removed (Slip) or reversed times e (Bounce).
+    float u[3];
+    field.sampleWeighted(p, weights.end, u);
+    const float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
+    const float into = dot3(v, m.data());
+    const float turn = into < 0.0f ? (bounce ? 1.0f + e : 1.0f) * into : 0.0f;
+    for (int k = 0; k < 3; ++k)
+    {
+      slip[k] = v[k] - turn * m[std::size_t(k)] - u[k];
+    }
+  }
+  if (dot3(before, m.data()) - dot3(c.point.data(), m.data()) <= this->restingOnWall(offset))
+  {
+    return false; // it lay on the wall before the step: it slides along it
+  }
+  met = wallEvent(surfaces, c, this->Params.boundary);
+  return true;
+}
+
+void Engine::keepOffSurfaceWalls(std::size_t e, const VectorField& field, const float* before,
+  const float* advected, std::vector<InteractionEvent>& events, std::size_t first)
+{
+  const SurfaceSet& surfaces = *this->Params.surfaces;
+  const std::size_t n = this->Shape.particleCount();
+  float* p = this->Positions.data() + 3 * e * n;
+  const float offset = surfaceWallOffset(this->domainOf(field));
+  const std::size_t stepEvents = events.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    SurfaceCrossing c;
+    if (!surfaces.wallCrossing(advected + 3 * i, p + 3 * i, c))
+    {
+      continue;
+    }
+    const std::array<float, 3> m = towardStart(c);
+    putOff(c, m, offset, p + 3 * i);
+    const float* b = before + 3 * i;
+    const float from = dot3(b, m.data()) - dot3(c.point.data(), m.data());
+    const auto already = std::find_if(events.begin() + std::ptrdiff_t(first),
+      events.begin() + std::ptrdiff_t(stepEvents),
+      [i](const InteractionEvent& x) { return x.particle == std::int32_t(i); });
+    if (from > this->restingOnWall(offset) &&
+      already == events.begin() + std::ptrdiff_t(stepEvents))
+    {
+      InteractionEvent put = wallEvent(surfaces, c, this->Params.boundary);
+      put.element = this->Ids[e];
+      put.particle = std::int32_t(i);
+      events.push_back(put);
+    }
+  }
+}
+
+} // namespace bp
