@@ -39,7 +39,8 @@
  * one file per role: EngineValidate.cpp (the parameter checks),
  * EngineConfigure.cpp (spring tables, sizing), EngineRelease.cpp (step 1),
  * EngineStep.cpp (steps 2, 3, 5 and 6 and the step loop), EngineWalls.cpp (the
- * walls in a step and the events at the field's sides), EngineLinked.cpp
+ * walls in a step and the events at the field's sides), EngineSurfaces.cpp
+ * (the Surfaces input's gates, outlets and walls), EngineLinked.cpp
  * (a super set's step), EngineVisitOrder.cpp, EngineMigration.cpp
  * (distributed runs), EngineSaveState.cpp (a state to save and resume; the
  * state's checks are in EngineState.cpp) and Engine.cpp (trails, step 4's
