@@ -45,7 +45,11 @@ public:
   /// The triangles as given (each list as long as the triangles: filled in).
   const SurfaceTriangles& triangles() const { return this->Given; }
   /// Whether any triangle kept is an Outlet (an element may end at one).
-  bool hasOutlets() const { return this->Outlets; }
+  bool hasOutlets() const { return !this->OutletCorners.empty(); }
+  /// The Outlet triangles kept, 9 floats each (three corners), in the order
+  /// given: what the GPU engine tests an element's step against (engine
+  /// specification 2.10). Gates are not here: they change nothing in a step.
+  const std::vector<float>& outletCorners() const { return this->OutletCorners; }
   /// The triangles kept, and those left out (a corner not finite, or no area).
   std::size_t triangleCount() const { return this->Crossings.triangleCount(); }
   std::size_t droppedTriangles() const { return this->Crossings.droppedTriangles(); }
@@ -60,7 +64,7 @@ public:
 private:
   SurfaceTriangles Given;
   SurfaceCrossings Crossings;
-  bool Outlets = false;
+  std::vector<float> OutletCorners;
 };
 
 } // namespace bp
