@@ -170,11 +170,11 @@ std::string TracerSteppers::fallBackIfTooLarge(
   const int maxSize = this->Queue->report().maxTextureSize;
   std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
-  if (limit.empty() && p.surfaces && p.surfaces->hasOutlets())
+  if (limit.empty() && p.surfaces)
   {
-    // Gates change nothing in a step (they record, and the GPU engine records
-    // nothing): only an Outlet needs the engine's own rule.
-    limit = "the GPU engine does not end elements at Outlet surfaces (Surfaces input) yet";
+    // The GPU engine tests each element's step against every Outlet triangle
+    // (gates change nothing in a step: they record, and it records nothing).
+    limit = bp::gpuOutletError(p.surfaces->outletCorners().size() / 9);
   }
   if (limit.empty())
   {

@@ -379,7 +379,7 @@ public:
   /// unless SurfaceInteractionArray names a cell array of the Surfaces that
   /// says it per cell (0 Gate, 1 Outlet; "None", the default, or empty:
   /// none). Not with Linking or Anchor = Centre. A GPU display runs the CPU
-  /// engine where there is an Outlet.
+  /// engine where there are more than 4096 Outlet triangles.
   void SetSurfacesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(3, output); }
   // Declares SetSurfaceInteraction, GetSurfaceInteraction and GetSurfaceInteractionAsString.
   vtkBPEnumMacro(SurfaceInteraction, bp::SurfaceInteraction);
