@@ -85,10 +85,10 @@ public:
 
   /**
    * Before a replay configures the active stepper: when it records for a
-   * display whose GPU cannot hold this system, or whose engine lacks a rule
-   * the trace needs (an Outlet surface), gives the display the reason and
-   * takes the CPU engine instead. Returns the message to show (empty
-   * when nothing changed).
+   * display whose GPU cannot hold this system, or more Outlet triangles
+   * than the GPU engine tests (bp::gpuOutletError), gives the display the
+   * reason and takes the CPU engine instead. Returns the message to show
+   * (empty when nothing changed).
    */
   std::string fallBackIfTooLarge(const bp::ElementTemplate& shape, const bp::Parameters& p);
 

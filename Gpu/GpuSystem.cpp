@@ -6,6 +6,7 @@
 #include "KernelConstants.h"
 #include "Quaternion.h"
 #include "SuperSet.h"
+#include "Surfaces.h"
 #include "Walls.h"
 
 #include <algorithm>
@@ -28,6 +29,12 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   this->FrameQuaternion = quaternionFromRotation(p.frame);
   this->LongAxis = longAxis(this->shape);
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
+  const std::vector<float> noOutlets;
+  const std::vector<float>& outlets = p.surfaces ? p.surfaces->outletCorners() : noOutlets;
+  if (error.empty())
+  {
+    error = gpuOutletError(outlets.size() / 9);
+  }
   if (!error.empty())
   {
     return error;
@@ -86,6 +93,15 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
     std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
   }
   this->SeedPoints = makeListTexture(seeds, SeedPointsPerRow);
+  // The Outlet triangles, a corner a texel; one texel when there are none,
+  // since the test pass binds it (and reads nothing: bpOutletCount 0).
+  this->OutletCount = int(outlets.size() / 9);
+  std::vector<float> corners(4 * 3 * std::max<std::size_t>(outlets.size() / 9, 1), 0.0f);
+  for (std::size_t c = 0; c < outlets.size() / 3; ++c)
+  {
+    std::copy_n(&outlets[3 * c], 3, &corners[4 * c]);
+  }
+  this->Outlets = makeListTexture(corners, 3 * OutletsPerRow);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");

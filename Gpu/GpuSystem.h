@@ -126,6 +126,11 @@ private:
   std::array<float, 3> LongAxis = { 1, 0, 0 }; ///< longAxis() of the template
   /// parameters.seedPoints, SeedPointsPerRow texels a row (one texel when there are none).
   GlTexture SeedPoints;
+  /// The Surfaces' Outlet triangles (SurfaceSet::outletCorners), 3 texels
+  /// each, OutletsPerRow triangles a row (one texel when there are none),
+  /// and how many there are (the test kernel's bpOutletCount).
+  GlTexture Outlets;
+  int OutletCount = 0;
 };
 
 } // namespace bp

@@ -148,6 +148,11 @@ void GpuSystem::testInputs(
   pass.setFloat("bpEndWeight", endWeight);
   // Anchor = Centre: the test also writes each element's move to its anchor.
   pass.setInt("bpAnchored", this->anchored(settleOnly) ? 1 : 0);
+  // The Outlets (engine specification 2.10): each element's centre before
+  // the step, from the positions before it, crossing any of the triangles.
+  pass.setInt("bpOutletCount", settleOnly ? 0 : this->OutletCount);
+  pass.texture("bpOutlets", this->Outlets.get());
+  pass.texture("bpBefore", this->state.before.get());
 }
 
 void GpuSystem::finalizeInputs(GpuPass& pass, GLuint restored, bool placed) const

@@ -2,7 +2,6 @@
 // positions from before the step (so nothing non-finite is ever drawn); the
 // force is the length of the restoration displacement.
 uniform sampler2D bpRestored;
-uniform sampler2D bpBefore;
 uniform sampler2D bpShifts; // per element, from the test pass (anchored or periodic only)
 
 // A particle's state after the step (position, force) from its positions

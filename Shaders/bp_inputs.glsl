@@ -33,6 +33,10 @@ uniform sampler2D bpSlipMoves;
 // walls did, bp_common.glsl's bpWallParticle), for the finalize pass's force,
 // the walls after restoration and the slip share pass.
 uniform sampler2D bpAdvected;
+// Per particle: its position before the step (placed anew where the reset
+// pass placed its element), written by the advect pass: for the finalize
+// pass's non-finite elements and the test pass's Outlets (bp_test.glsl).
+uniform sampler2D bpBefore;
 
 // Whether particle i is pinned (it never moves).
 bool bpPinned(int i)

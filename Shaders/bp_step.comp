@@ -177,11 +177,29 @@ void main()
     bpSync();
   }
 
+  // The Outlets (bp_test.glsl): each element's centre before the step, its
+  // particles' positions before it summed by its lead thread, then the
+  // restored positions shared again for the test.
+  vec3 from = vec3(0.0);
+  if (bpOutletCount > 0)
+  {
+    bpLocalPositions[thread] = before;
+    bpSync();
+    for (int k = 0; lead && k < bpParticles; ++k)
+    {
+      from += bpPositionOf(own, k);
+    }
+    from /= float(bpParticles);
+    bpSync();
+    bpLocalPositions[thread] = p;
+    bpSync();
+  }
+
   // 4. Test, on the restored positions.
   if (lead)
   {
     vec4 tested, shift;
-    bpTestElement(own, bpLocalState[thread], bpLocalCenter[thread], tested, shift);
+    bpTestElement(own, bpLocalState[thread], bpLocalCenter[thread], from, tested, shift);
     bpLocalState[thread] = tested;
     bpLocalFit[thread] = shift;
     imageStore(bpElementStateOut, at, tested);

@@ -4,7 +4,9 @@
 // than the release speed, or when a position is not finite; and take the
 // step off its lifetime. With Boundary Terminate (bpBoundary) an element that
 // left the field is flagged 2 instead of 1 (Engine::settle's Terminated): the
-// reset keeps it hidden (centre .w 2) until its lifetime runs out.
+// reset keeps it hidden (centre .w 2) until its lifetime runs out. An
+// element whose centre's step crosses an Outlet of the Surfaces input is
+// flagged 2 as well (Engine::flagAfterStep, engine specification 2.10).
 uniform bool bpAnyParticle;
 uniform float bpReleaseMinSpeed; // 0: every release stays
 uniform bool bpSettleOnly; // after initialisation: clear the placed-now mark, test nothing
@@ -23,10 +25,62 @@ bool bpReleasedStagnant(int e, vec4 state, vec3 c, vec3 released)
   return dot(d, d) < reach * reach && bpLifetimeOf(e, state.y) - state.x < 0.5 * bpStep;
 }
 
+// The Surfaces' Outlet triangles (engine specification 2.10; gates change
+// nothing in a step and are not here): bpOutletCount of them, 0 where there
+// are none (then nothing here is read). Corner c of triangle k is texel
+// (3 (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW) of bpOutlets.
+uniform int bpOutletCount;
+uniform sampler2D bpOutlets;
+
+vec3 bpOutletCorner(int k, int c)
+{
+  return texelFetch(bpOutlets, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
+}
+
+// Whether the step a -> b of an element's centre crosses an Outlet triangle:
+// SurfaceCrossings' meet (Moller-Trumbore) in float, at t in (0, 1] along
+// the step, closed on the edges (BP_OUTLET_EDGE_SLACK). Any crossing ends
+// the element, so the first triangle met will do.
+bool bpCrossesOutlet(vec3 a, vec3 b)
+{
+  vec3 d = b - a;
+  for (int k = 0; k < bpOutletCount; ++k)
+  {
+    vec3 v = bpOutletCorner(k, 0);
+    vec3 e1 = bpOutletCorner(k, 1) - v, e2 = bpOutletCorner(k, 2) - v;
+    vec3 p = cross(d, e2);
+    float det = dot(e1, p);
+    if (det == 0.0 || !bpFinite(vec3(det)))
+    {
+      continue;
+    }
+    vec3 s = a - v;
+    float u = dot(s, p) / det;
+    if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
+    {
+      continue;
+    }
+    vec3 q = cross(s, e1);
+    float w = dot(d, q) / det;
+    if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
+    {
+      continue;
+    }
+    float t = dot(e2, q) / det;
+    if (t > 0.0 && t <= 1.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Element e with its state after the reset and its release centre, its
-// particles restored (bpPositionOf): its state after the test (lifetime,
-// generation, flag, non-finite) and, anchored, its move to the anchor.
-void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shift)
+// particles restored (bpPositionOf), and with Outlets (bpOutletCount > 0)
+// `from`, its particles' mean before the step (summed in float, as the
+// centre below): its state after the test (lifetime, generation, flag,
+// non-finite) and, anchored, its move to the anchor.
+void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, out vec4 shift)
 {
   shift = vec4(0.0);
   if (bpSettleOnly)
@@ -76,6 +130,11 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
   }
   bool left = bpAnyParticle ? anyOutside : !bpInDomain(at, bpEndWeight);
   bool due = !finite || bpReleasedStagnant(e, state, c, center.xyz);
+  // The Outlets: an element shown (centre .w 0: not hidden by the release
+  // window, not terminated), finite and not due, whose centre's step (before
+  // any periodic move) crosses one ends there; that wins over leaving.
+  bool exits = bpOutletCount > 0 && !due && center.w < 0.5 && !bpLinked && bpFinite(from) &&
+    bpCrossesOutlet(from, c);
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure. A terminated element
   // (centre .w 2) stays terminated until its lifetime runs out.
@@ -84,7 +143,7 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
   {
     // A wall (Stick, Slip, Bounce) keeps the element in: never reset for leaving.
     flag = due || (left && !bpWalled()) ? 1.0 : 0.0;
-    flag = left && !due && bpBoundary == BP_BOUNDARY_TERMINATE ? 2.0 : flag;
+    flag = (left && !due && bpBoundary == BP_BOUNDARY_TERMINATE) || exits ? 2.0 : flag;
   }
   tested = vec4(state.x - bpStep, state.y, flag, finite ? 0.0 : 1.0);
 }
@@ -92,6 +151,14 @@ void bpTestElement(int e, vec4 state, vec4 center, out vec4 tested, out vec4 shi
 void bpTestPass(ivec2 texel, int e, int i, inout vec4 tested, inout vec4 shift,
   inout vec4 unused2, inout vec4 unused3)
 {
-  bpTestElement(
-    e, texelFetch(bpElementState, texel, 0), texelFetch(bpCenters, texel, 0), tested, shift);
+  // The centre before the step, from the advect pass's positions before it
+  // (bpBefore), for the Outlets only.
+  vec3 from = vec3(0.0);
+  for (int i = 0; bpOutletCount > 0 && i < bpParticles; ++i)
+  {
+    from += texelFetch(bpBefore, bpParticleTexel(e, i), 0).xyz;
+  }
+  from /= float(bpParticles);
+  bpTestElement(e, texelFetch(bpElementState, texel, 0), texelFetch(bpCenters, texel, 0), from,
+    tested, shift);
 }

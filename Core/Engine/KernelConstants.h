@@ -40,6 +40,17 @@ namespace bp
 /// GpuSystem): a seed point's texel is (i % SeedPointsPerRow, i / SeedPointsPerRow).
 constexpr int SeedPointsPerRow = 256;
 
+/// Outlet triangles a row of the Outlets' texture (bpOutlets, GpuSystem), 3
+/// texels each: corner c of triangle k is texel (3 (k % OutletsPerRow) + c,
+/// k / OutletsPerRow).
+constexpr int OutletsPerRow = 256;
+
+/// How far outside an Outlet triangle's edges, in barycentric units, the
+/// test kernel (bp_test.glsl: bpCrossesOutlet) still counts a hit: in float,
+/// as SurfaceCrossings' 1e-9 in double, a step through an edge that two
+/// triangles share must not fall between them by a rounding.
+constexpr float OutletEdgeSlack = 1e-6f;
+
 /// The compute path's pass work group (bp_pass.comp): PassGroupSize x
 /// PassGroupSize invocations, one per texel of the pass's domain
 /// (GpuPass::dispatch).
@@ -72,6 +83,8 @@ enum class KernelConstantUse
   X(FURTHER_CANDIDATE_DRAW, Uint, ::bp::FurtherCandidateDraw, Kernels)                            \
   X(FIRST_WEIGHT_DRAW, Uint, ::bp::FirstWeightDraw, Kernels)                                      \
   X(SEED_ROW, Uint, ::bp::SeedPointsPerRow, Kernels)                                              \
+  X(OUTLET_ROW, Int, ::bp::OutletsPerRow, Kernels)                                                \
+  X(OUTLET_EDGE_SLACK, Float, ::bp::OutletEdgeSlack, Kernels)                                     \
   X(ANTIPARALLEL_TOLERANCE, Float, ::bp::AntiparallelTolerance, Kernels)                          \
   X(PI, Float, ::bp::Pi, Kernels)                                                                 \
   X(PASS_GROUP_SIZE, Int, ::bp::PassGroupSize, Kernels)                                           \

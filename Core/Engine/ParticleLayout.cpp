@@ -37,6 +37,18 @@ std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, 
   return std::string();
 }
 
+std::string gpuOutletError(std::size_t outletTriangles)
+{
+  if (outletTriangles <= GpuMaxOutletTriangles)
+  {
+    return std::string();
+  }
+  return "the Surfaces hold " + std::to_string(outletTriangles) +
+    " Outlet triangles; the GPU engine tests each element's step against every one and takes "
+    "at most " +
+    std::to_string(GpuMaxOutletTriangles);
+}
+
 ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPerElement)
 {
   ParticleLayout l;

@@ -45,6 +45,15 @@ struct ParticleLayout
  */
 std::string gpuTextureError(const ElementTemplate& shape, std::size_t elements, long long maxSize);
 
+/// The most Outlet triangles the GPU engine takes (SurfaceSet::outletCorners):
+/// its test kernel tests each element's step against every one (engine
+/// specification 2.10), and keeps them in one texture (7).
+constexpr std::size_t GpuMaxOutletTriangles = 4096;
+
+/// Empty when the GPU engine takes `outletTriangles` Outlet triangles (at
+/// most GpuMaxOutletTriangles), otherwise why not.
+std::string gpuOutletError(std::size_t outletTriangles);
+
 /// The GPU engine's per-element state textures (Gpu/GpuStateLayout.h's
 /// ElementTexture rows; a static_assert there keeps the two equal).
 constexpr int GpuElementTextureRows = 5;

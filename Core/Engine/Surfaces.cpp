@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Surfaces.h"
 
+#include "Triangles.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,9 +11,14 @@ namespace bp
 
 namespace
 {
-bool finiteTriangle(const float* v)
+/// Whether SurfaceCrossings keeps the triangle: finite corners and an area.
+bool keptTriangle(const float* corners)
 {
-  return std::all_of(v, v + 9, [](float x) { return std::isfinite(x); });
+  double v[9];
+  std::copy(corners, corners + 9, v);
+  const triangles::Vec n = triangles::doubleAreaNormal(v);
+  const double squared = triangles::dot(n, n);
+  return triangles::finite(v) && squared > 0.0 && std::isfinite(squared);
 }
 
 /// `given` filled in to one entry a triangle.
@@ -62,10 +69,11 @@ SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
 {
   for (std::size_t k = 0; k < this->Given.cells.size(); ++k)
   {
-    // As SurfaceCrossings keeps it: finite corners (its area is checked there too).
-    this->Outlets = this->Outlets ||
-      (this->Given.interaction[k] == SurfaceInteraction::Outlet &&
-        finiteTriangle(this->Given.corners.data() + 9 * k));
+    const float* corners = this->Given.corners.data() + 9 * k;
+    if (this->Given.interaction[k] == SurfaceInteraction::Outlet && keptTriangle(corners))
+    {
+      this->OutletCorners.insert(this->OutletCorners.end(), corners, corners + 9);
+    }
   }
 }
 

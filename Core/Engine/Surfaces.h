@@ -55,9 +55,13 @@ public:
   std::int32_t cell(std::uint32_t k) const { return this->Given.cells[k]; }
   /// The triangles as given (each list as long as the triangles: filled in).
   const SurfaceTriangles& triangles() const { return this->Given; }
-  /// Whether any triangle kept is an Outlet, or a Wall.
-  bool hasOutlets() const { return this->Outlets; }
+  /// Whether any triangle kept is an Outlet (an element may end at one), or a Wall.
+  bool hasOutlets() const { return !this->OutletCorners.empty(); }
   bool hasWalls() const { return this->Walls.triangleCount() > 0; }
+  /// The Outlet triangles kept, 9 floats each (three corners), in the order
+  /// given: what the GPU engine tests an element's step against (engine
+  /// specification 2.10). Gates are not here: they change nothing in a step.
+  const std::vector<float>& outletCorners() const { return this->OutletCorners; }
   /// The triangles kept, and those left out (a corner not finite, or no area).
   std::size_t triangleCount() const { return this->Passing.triangleCount(); }
   std::size_t droppedTriangles() const { return this->Passing.droppedTriangles(); }
@@ -82,7 +86,7 @@ private:
   SurfaceCrossings Passing;
   std::vector<std::uint32_t> WallIndex; // before Walls, which fills it as it is made
   SurfaceCrossings Walls;
-  bool Outlets = false;
+  std::vector<float> OutletCorners;
 };
 
 } // namespace bp

@@ -3,8 +3,10 @@
 // engine specification 2.10): a gate on a half-plane in solid-body rotation
 // records each element once per turn at the analytic time; an outlet ends
 // an element where its centre crosses it and records that once; the
-// refusals; and without surfaces nothing changes.
+// refusals; and without surfaces nothing changes. The Outlet triangles the
+// GPU engine takes (SurfaceSet::outletCorners, gpuOutletError).
 #include "Engine.h"
+#include "ParticleLayout.h"
 #include "Surfaces.h"
 #include "TestHelpers.h"
 
@@ -336,4 +338,29 @@ TEST(Surfaces, StickOnAWallIsRefused)
     std::string::npos);
   p.boundary = bp::Boundary::Slip;
   EXPECT_EQ(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+}
+
+TEST(Surfaces, OutletCornersAreTheOutletTrianglesKept)
+{
+  // What the GPU engine uploads (engine specification 2.10): the Outlet
+  // triangles in the order given, without gates, triangles without area
+  // or with a corner that is not finite.
+  bp::SurfaceTriangles t;
+  t.corners = rectangle(0, 1, 0, 1, 0.0f); // two triangles
+  const std::vector<float> flat = { 0, 0, 0, 1, 0, 0, 2, 0, 0 };
+  const std::vector<float> nan = { 0, 0, 0, 1, 0, 0, NAN, 1, 0 };
+  const std::vector<float> gate = { 0, 0, 1, 1, 0, 1, 0, 1, 1 };
+  for (const std::vector<float>* v : { &flat, &nan, &gate })
+    t.corners.insert(t.corners.end(), v->begin(), v->end());
+  t.interaction.assign(4, bp::SurfaceInteraction::Outlet);
+  t.interaction.push_back(bp::SurfaceInteraction::Gate);
+  const bp::SurfaceSet set(t);
+  EXPECT_TRUE(set.hasOutlets());
+  EXPECT_EQ(set.triangleCount(), 3u);
+  EXPECT_EQ(set.outletCorners(), rectangle(0, 1, 0, 1, 0.0f));
+  EXPECT_FALSE(surfaceOf(gate, bp::SurfaceInteraction::Gate)->hasOutlets());
+  EXPECT_TRUE(surfaceOf(gate, bp::SurfaceInteraction::Gate)->outletCorners().empty());
+  EXPECT_EQ(bp::gpuOutletError(bp::GpuMaxOutletTriangles), "");
+  EXPECT_NE(bp::gpuOutletError(bp::GpuMaxOutletTriangles + 1).find("4097 Outlet triangles"),
+    std::string::npos);
 }

@@ -1,4 +1,4 @@
-"""The Surfaces input (gates and outlets) as pvpython users meet it.
+"""The Surfaces input (gates, outlets and walls) as pvpython users meet it.
 
 Solid-body rotation (unit angular velocity about z, period 2 pi), 8 squares
 released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
@@ -9,7 +9,9 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
 - the whole plane y = 0 in two cells with a cell array Kind (1: Outlet for
   x < 0, 0: Gate for x > 0): an element ends where it crosses the outlet
   (Terminated, at pi - a, or 3 pi - a after one passage of the gate) and is
-  hidden from then on;
+  hidden from then on; a Bound Particles display with the GPU engine ends
+  them at the outlet itself (no fallback to the CPU engine) and draws what
+  the CPU engine's Surface display shows;
 - a wall (Kind 2) with Slip keeps every particle on its side, with Slid
   events where they reach it; Stick with a wall is refused;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
@@ -170,6 +172,44 @@ with bptest.CapturedMessages() as messages:
     stuck.UpdatePipeline(1.0)
 bptest.check(messages.mentions("Boundary = Stick holds particles on the field's sides"),
              "Stick with a Wall surface: refused with a message: %s" % messages.messages)
+
+
+# The GPU engine ends the elements at the outlet itself: at t = 2 three of
+# the eight have ended (those released at angles a > pi - 2), at the end all.
+def rendered(engine, representation, name, view_time):
+    """The outlet's trace on `engine` drawn by `representation` at view_time:
+    the picture's file and the messages the render gave."""
+    t = tracer(Surfaces=plane_with_kinds([1.0, 0.0]), SurfaceInteractionArray="Kind",
+               Engine=engine)
+    view = bptest.element_view((240, 180))
+    shown = Show(t, view)
+    shown.SetRepresentationType(representation)
+    bptest.colour_display(shown, None, None)
+    view.ViewTime = view_time
+    with bptest.CapturedMessages() as said:
+        Render(view)
+    image = bptest.save_picture(view, pictures, name)
+    Delete(t)
+    return image, said
+
+
+pictures = bptest.scratch("bp-surfaces-")  # not "output": a ProgrammableSource deletes it
+cpu_image, _ = rendered("CPU", "Surface", "outlet_cpu", 2.0)
+gpu_image, said = rendered("GPU", "Bound Particles", "outlet_gpu", 2.0)
+mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+covered = bptest.covered_fraction(gpu_image)
+print("outlet, GPU display against CPU Surface at t = 2: mean %.3f, pixels %.4f; %.4f drawn"
+      % (mean, pixels, covered))
+bptest.check(not said.messages, "the GPU display runs the outlet without a message: %s"
+             % said.messages)
+# (An element drawn on one engine only covers about 0.0007 of the picture.)
+bptest.check(covered > 0.001 and mean <= 0.5 and pixels <= 0.0003,
+             "the GPU display ends the elements at the outlet as the CPU engine does: mean %.3f, "
+             "pixels %.4f, %.4f drawn" % (mean, pixels, covered))
+end_image, said = rendered("GPU", "Bound Particles", "outlet_gpu_end", END)
+bptest.check(bptest.covered_fraction(end_image) == 0.0 and not said.messages,
+             "at the end every element has ended at the outlet on the GPU: %.4f drawn; %s"
+             % (bptest.covered_fraction(end_image), said.messages))
 
 # Bad input: a clear warning, and the trace goes on.
 empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
