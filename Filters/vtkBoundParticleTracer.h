@@ -374,8 +374,8 @@ public:
   /// The optional fourth input, Surfaces: any data set whose surface (a
   /// volume's boundary; in a 2D field lines, across the plane) acts on the
   /// elements that cross it: a Gate lets them through, an Outlet ends them
-  /// as Terminate does, a Wall acts as Boundary does at the sides (Slip and
-  /// Bounce per particle; Stick refused); output 3 records each event.
+  /// as Terminate does, a Wall acts as Boundary does at the sides (Stick,
+  /// Slip and Bounce per particle); output 3 records each event.
   /// SurfaceInteraction is what every cell does (Gate, default; Outlet;
   /// Wall) unless SurfaceInteractionArray names a cell array of the Surfaces
   /// saying it per cell (0, 1, 2; "None", the default: none). Not with

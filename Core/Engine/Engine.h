@@ -486,11 +486,14 @@ private:
   /// Again, Terminated for Terminate), 0 for none.
   std::uint8_t passSurfaces(std::size_t e, const float* before, const float center[3],
     std::vector<InteractionEvent>* events) const;
-  /// Whether the Surfaces have Walls that act on particles (Boundary Slip
-  /// or Bounce).
+  /// Whether the Surfaces have Walls that act on particles (Boundary Stick,
+  /// Slip or Bounce).
   bool wallsParticlesOnSurfaces() const;
+  /// Whether Stick holds a particle at p on a Wall of the Surfaces: within
+  /// two offsets of one (SurfaceSet::onWall), where the rule put it.
+  bool heldOnSurfaceWall(const VectorField& field, const float p[3]) const;
   /// A particle's step from `before` to `p` (after the box's walls) at the
-  /// Surfaces' Walls (Slip, Bounce; 2.10): p put back on its side, a heavy
+  /// Surfaces' Walls (Stick, Slip, Bounce; 2.10): p put back on its side, a heavy
   /// particle's `slip` by the rule. Whether it met a Wall it did not lie on
   /// before the step: then `met` holds the event (but for element and particle).
   bool wallParticleOnSurfaces(const VectorField& field, const StepWeights& weights,
@@ -499,8 +502,9 @@ private:
   /// particle lies on it before a step, so that meeting it is no new event:
   /// two offsets (surfaceWallOffset), where the walls put it.
   float restingOnWall(float offset) const;
-  /// After restoration: element e's particles the springs pushed through a
-  /// Wall of the Surfaces (from `advected`) put back on its side; an event
+  /// After restoration: element e's particles held on a Wall of the
+  /// Surfaces (Stick) back where they were held, those the springs pushed
+  /// through one (from `advected`) put back on its side; an event
   /// for one that did not lie on it before the step, and has none yet.
   void keepOffSurfaceWalls(std::size_t e, const VectorField& field, const float* before,
     const float* advected, std::vector<InteractionEvent>& events, std::size_t first);

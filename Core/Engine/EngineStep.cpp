@@ -267,7 +267,8 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   const Domain& box = this->domainOf(field);
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (this->Pinned[i] || (stick && onWall(box, p + 3 * i)))
+    if (this->Pinned[i] || (stick && onWall(box, p + 3 * i)) ||
+      (surfaceWalls && this->heldOnSurfaceWall(field, p + 3 * i)))
     {
       continue;
     }

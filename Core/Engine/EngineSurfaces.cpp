@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The Surfaces in a step of the CPU engine (Surfaces.h; engine specification
 // 2.10): an element's centre passing gates, outlets and element-level walls,
-// and each particle kept off the Walls with Slip or Bounce; called from the
+// and each particle kept off the Walls with Stick, Slip or Bounce; called from the
 // step in EngineStep.cpp.
 #include "Engine.h"
 #include "Surfaces.h"
@@ -54,7 +54,7 @@ std::uint8_t Engine::passSurfaces(std::size_t e, const float* before, const floa
   const SurfaceSet& surfaces = *this->Params.surfaces;
   const Boundary boundary = this->Params.boundary;
   // With Release Again or Terminate a Wall acts on the element as the
-  // field's sides do; with Slip or Bounce on its particles (not here).
+  // field's sides do; with Stick, Slip or Bounce on its particles (not here).
   const bool wallsEnd = !isWall(boundary);
   float from[3];
   particleMean(before, this->Shape.particleCount(), from);
@@ -96,9 +96,16 @@ float Engine::restingOnWall(float offset) const
 
 bool Engine::wallsParticlesOnSurfaces() const
 {
-  const Boundary b = this->Params.boundary;
   return this->Params.surfaces && this->Params.surfaces->hasWalls() &&
-    (b == Boundary::Slip || b == Boundary::Bounce);
+    isWall(this->Params.boundary);
+}
+
+bool Engine::heldOnSurfaceWall(const VectorField& field, const float p[3]) const
+{
+  // As on the field's sides, held is a property of the position: a particle
+  // within two offsets of a Wall (where a step put it) stays.
+  return this->Params.boundary == Boundary::Stick && this->wallsParticlesOnSurfaces() &&
+    this->Params.surfaces->onWall(p, this->restingOnWall(surfaceWallOffset(this->domainOf(field))));
 }
 
 bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights& weights,
@@ -111,17 +118,26 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
     return false; // none, or not finite (settle takes the step back)
   }
   const bool bounce = this->Params.boundary == Boundary::Bounce;
+  const bool stick = this->Params.boundary == Boundary::Stick;
   const float e = this->Params.restitution;
   const float offset = surfaceWallOffset(this->domainOf(field));
   const std::array<float, 3> m = towardStart(c);
   // How far p lies beyond the plane (negative along m): Slip takes that
-  // back (the tangential step kept), Bounce (1 + e) times it.
+  // back (the tangential step kept), Bounce (1 + e) times it; Stick puts
+  // it where the step met the wall (held there from then on).
   const float d[3] = { p[0] - c.point[0], p[1] - c.point[1], p[2] - c.point[2] };
   const float beyond = dot3(d, m.data());
   const float back = (bounce ? 1.0f + e : 1.0f) * beyond;
-  for (int k = 0; k < 3; ++k)
+  if (stick)
   {
-    p[k] += (offset - back) * m[std::size_t(k)];
+    putOff(c, m, offset, p);
+  }
+  else
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] += (offset - back) * m[std::size_t(k)];
+    }
   }
   SurfaceCrossing again;
   float start[3];
@@ -142,7 +158,8 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
     const float turn = into < 0.0f ? (bounce ? 1.0f + e : 1.0f) * into : 0.0f;
     for (int k = 0; k < 3; ++k)
     {
-      slip[k] = v[k] - turn * m[std::size_t(k)] - u[k];
+      // Stick stops it: v = 0.
+      slip[k] = (stick ? 0.0f : v[k] - turn * m[std::size_t(k)]) - u[k];
     }
   }
   if (dot3(before, m.data()) - dot3(c.point.data(), m.data()) <= this->restingOnWall(offset))
@@ -163,6 +180,11 @@ void Engine::keepOffSurfaceWalls(std::size_t e, const VectorField& field, const 
   const std::size_t stepEvents = events.size();
   for (std::size_t i = 0; i < n; ++i)
   {
+    if (this->heldOnSurfaceWall(field, advected + 3 * i))
+    {
+      std::copy_n(advected + 3 * i, 3, p + 3 * i); // held (Stick)
+      continue;
+    }
     SurfaceCrossing c;
     if (!surfaces.wallCrossing(advected + 3 * i, p + 3 * i, c))
     {

@@ -273,14 +273,6 @@ std::string checkSurfaces(const ElementTemplate& /*shape*/, const Parameters& p)
            "lives out "
            "its lifetime whole: set Linking to None or disconnect the Surfaces";
   }
-  if (p.surfaces->hasWalls() && p.boundary == Boundary::Stick)
-  {
-    // Stick holds a particle on the box's sides by its position alone; on
-    // a surface's wall it would need state of its own.
-    return "Boundary = Stick holds particles on the field's sides, not on a Wall of the Surfaces: "
-           "set Boundary to Slip, Bounce, Terminate or Release Again, or make the surface an "
-           "Outlet (which records where each element meets it)";
-  }
   if (p.anchor != Anchor::None)
   {
     // An anchored element goes back to its release centre every step.

@@ -14,7 +14,7 @@
  * records it, and the passages after it in that step are not made. A Wall
  * acts as the Boundary does at the field's sides: with Release Again or
  * Terminate on the element whose centre crosses it (as an Outlet does,
- * released again or ended), with Slip or Bounce on each particle whose step
+ * released again or ended), with Stick, Slip or Bounce on each particle whose step
  * crosses it (wallCrossing).
  */
 #ifndef BoundParticles_Surfaces_h
@@ -78,6 +78,9 @@ public:
   /// The first crossing of a particle's step a -> b with a Wall (its
   /// triangle an index as given); false where it crosses none.
   bool wallCrossing(const float a[3], const float b[3], SurfaceCrossing& crossing) const;
+  /// Whether p lies on a Wall: within `distance` of a Wall triangle's plane,
+  /// its foot within the triangle (SurfaceCrossings::lies). Stick holds such a particle.
+  bool onWall(const float p[3], float distance) const { return this->Walls.lies(p, distance); }
 
 private:
   SurfaceTriangles Given;

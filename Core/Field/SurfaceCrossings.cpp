@@ -216,6 +216,49 @@ SurfaceCrossing SurfaceCrossings::crossingAt(
   return crossing;
 }
 
+bool SurfaceCrossings::lies(const float p[3], double distance) const
+{
+  if (this->Surface.empty() || !finite3(p))
+  {
+    return false;
+  }
+  const double x[3] = { p[0], p[1], p[2] };
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = x[k] - distance;
+    hi[k] = x[k] + distance;
+  }
+  int f[3], l[3];
+  this->bucketRange(lo, hi, f, l);
+  for (int z = f[2]; z <= l[2]; ++z)
+    for (int y = f[1]; y <= l[1]; ++y)
+      for (int w = f[0]; w <= l[0]; ++w)
+      {
+        const std::size_t bucket = (std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + w;
+        for (std::uint32_t m = this->Start[bucket]; m < this->Start[bucket + 1]; ++m)
+        {
+          const double* v = &this->Corners[9 * std::size_t(this->Members[m])];
+          const Vec e1 = sub(v + 3, v), e2 = sub(v + 6, v), n = cross(e1, e2);
+          const double area2 = dot(n, n);
+          const Vec s = sub(x, v);
+          const double height = dot(s, n) / std::sqrt(area2);
+          if (!(std::abs(height) <= distance))
+          {
+            continue;
+          }
+          // The foot's barycentric coordinates: (s x e2).n and (e1 x s).n over |n|^2.
+          const double u = dot(cross(s, e2), n) / area2;
+          const double w2 = dot(cross(e1, s), n) / area2;
+          if (u >= -EdgeSlack && w2 >= -EdgeSlack && u + w2 <= 1.0 + EdgeSlack)
+          {
+            return true;
+          }
+        }
+      }
+  return false;
+}
+
 bool SurfaceCrossings::firstCrossing(
   const float a[3], const float b[3], SurfaceCrossing& crossing) const
 {

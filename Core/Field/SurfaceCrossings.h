@@ -77,6 +77,14 @@ public:
   void allCrossings(
     const float a[3], const float b[3], std::vector<SurfaceCrossing>& crossings) const;
 
+  /**
+   * Whether p lies within `distance` of a triangle's plane and its foot on
+   * that plane within the triangle (its edges closed, as a crossing's): a
+   * point a step put on a surface, that far off it at most. False for a p
+   * that is not finite.
+   */
+  bool lies(const float p[3], double distance) const;
+
   /// How close two triangles' t along one step are to be one crossing
   /// through their shared edge (the same t, computed from either triangle).
   static constexpr double SharedEdgeT = 1e-9;

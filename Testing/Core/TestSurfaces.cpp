@@ -329,15 +329,61 @@ TEST(Surfaces, AWallReleasesAgainOrEndsAnElementWhoseCentreCrossesIt)
   }
 }
 
-TEST(Surfaces, StickOnAWallIsRefused)
+TEST(Surfaces, StickHoldsTheParticlesThatReachAWall)
 {
-  bp::Parameters p = squares({ 0, 0.5f, 0 }, 1.0f);
-  p.surfaces = floorAt(0.0f);
+  // As Walls.StickHoldsTheParticlesThatReachTheWall at the box's side, on
+  // the plane x = 0.6: the particles that reach it are held exactly where
+  // they met it, one Stuck event each, and the strip stops climbing.
+  const bp::VectorField field = bptest::uniformFlow({ 1.0f, 0.25f, 0.0f });
+  bp::Parameters p = squares({ 0.1f, -0.5f, 0.0f }, 100.0f);
+  p.elementSize = 0.5f;
+  p.integrator = bp::Integrator::Euler;
+  const float c = std::sqrt(0.5f);
+  p.frame = { c, 0, c, 0, 1, 0, -c, 0, c };
   p.boundary = bp::Boundary::Stick;
-  EXPECT_NE(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Square), p).find("Stick"),
-    std::string::npos);
-  p.boundary = bp::Boundary::Slip;
-  EXPECT_EQ(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  bp::SurfaceTriangles wall;
+  wall.corners = rectangle(-1, 1, -1, 1, 0.6f, false);
+  for (std::size_t k = 0; k < wall.corners.size(); k += 3)
+    std::swap(wall.corners[k], wall.corners[k + 2]); // the plane x = 0.6
+  wall.interaction.assign(2, bp::SurfaceInteraction::Wall);
+  p.surfaces = std::make_shared<const bp::SurfaceSet>(wall);
+  EXPECT_EQ(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, field, 150, 0.01);
+  const std::vector<float> held = engine.positions();
+  const float offset = bp::surfaceWallOffset(field.domain());
+  std::vector<bool> onWall(4);
+  int count = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    onWall[std::size_t(i)] = p.surfaces->onWall(held.data() + 3 * i, 2 * offset);
+    count += onWall[std::size_t(i)] ? 1 : 0;
+    EXPECT_LE(held[3 * i], 0.6f) << "on the wall's side";
+  }
+  EXPECT_GE(count, 1);
+  for (int s = 150; s < 200; ++s)
+    engine.step(field, s * 0.01, 0.01, bp::serialRunner());
+  float meanY = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (onWall[std::size_t(i)])
+      for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(engine.positions()[3 * i + k], held[3 * i + k]) << i; // held exactly
+    meanY += engine.positions()[3 * i + 1] / 4;
+  }
+  // Slip's strip climbs to about -0.125 by t = 1.5; this one stopped below.
+  EXPECT_LT(meanY, -0.5f + 0.25f * 0.5f + 0.1f);
+  std::map<int, int> stuck;
+  for (const bp::InteractionEvent& x : engine.interactions().events())
+  {
+    EXPECT_EQ(x.kind, bp::Interaction::Stuck);
+    ++stuck[x.particle];
+  }
+  EXPECT_EQ(int(stuck.size()), count);
+  for (const auto& [particle, events] : stuck)
+    EXPECT_EQ(events, 1) << "particle " << particle << " once, when it is first held";
 }
 
 TEST(Surfaces, OutletCornersAreTheOutletTrianglesKept)
