@@ -39,6 +39,7 @@ struct Gathered
   std::set<double> unknownValues; ///< values of the array that name no interaction
   std::set<std::pair<std::int32_t, vtkIdType>> unknownCells; ///< (leaf, cell) of such values
   vtkIdType nonFinitePoints = 0; ///< points that are not finite (their cells are left out)
+  vtkIdType inPlane = 0;         ///< triangles in a 2D field's plane, which no step crosses
   std::vector<int> leavesWithoutArray;
   vtkIdType lines = 0; ///< lines given where only a 2D field takes them
 };
@@ -163,6 +164,16 @@ void gatherLeaf(vtkDataSet* leaf, std::int32_t index, const std::string& arrayNa
     {
       points->GetPoint(ids[k], p[k]);
     }
+    if (flat >= 0)
+    {
+      const double u[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+      const double v[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+      const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0] };
+      const double along = std::abs(n[flat]),
+                   size = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      g.inPlane += along > 0.999 * size && size > 0.0 ? 1 : 0;
+    }
     addTriangle(g, p[0], p[1], p[2], offset, index, std::int32_t(cell), kind);
   }
 }
@@ -214,6 +225,13 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
     say << "The Surfaces' " << g.lines
         << " lines are left out: lines act only in a 2D field (across its plane); in a 3D "
            "field a surface needs polygons. ";
+  }
+  if (g.inPlane > 0)
+  {
+    say << g.inPlane
+        << " triangles of the Surfaces lie in this 2D field's plane, where no step "
+           "crosses them: they act nowhere (a surface across a 2D field is a line: "
+           "a Line source, a contour). ";
   }
   if (g.nonFinitePoints > 0)
   {

@@ -96,6 +96,8 @@ std::array<float, 9> restMomentInverse(const ElementTemplate& shape, float size)
 /// with Release Pattern Lattice every element's is element 0's.
 float lifetimeDraw(const Parameters& p, std::uint32_t drawElement, std::uint32_t generation);
 
+struct SurfaceCrossing;
+
 /// The mean of n particles' positions p, summed in float, particle by
 /// particle, as the reposition test (2.4) sums an element's centre.
 inline void particleMean(const float* p, std::size_t n, float mean[3])
@@ -498,6 +500,13 @@ private:
   /// before the step: then `met` holds the event (but for element and particle).
   bool wallParticleOnSurfaces(const VectorField& field, const StepWeights& weights,
     const float before[3], float p[3], float* slip, InteractionEvent& met) const;
+  /// Stick, Slip or Bounce on p at the Wall crossing c (p put `offset` off
+  /// it on its step's side: at c, on its plane, or reflected).
+  void wallRule(const SurfaceCrossing& c, float offset, float p[3]) const;
+  /// The rule on a heavy particle's `slip` at a Wall whose normal toward
+  /// its side is m, p where the wall left it.
+  void wallSlip(const VectorField& field, const StepWeights& weights, const std::array<float, 3>& m,
+    const float p[3], float* slip) const;
   /// How far off a Wall of the Surfaces (along its normal, on its side) a
   /// particle lies on it before a step, so that meeting it is no new event:
   /// two offsets (surfaceWallOffset), where the walls put it.

@@ -112,62 +112,100 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
   const float before[3], float p[3], float* slip, InteractionEvent& met) const
 {
   const SurfaceSet& surfaces = *this->Params.surfaces;
-  SurfaceCrossing c;
-  if (!surfaces.wallCrossing(before, p, c))
-  {
-    return false; // none, or not finite (settle takes the step back)
-  }
-  const bool bounce = this->Params.boundary == Boundary::Bounce;
-  const bool stick = this->Params.boundary == Boundary::Stick;
-  const float e = this->Params.restitution;
   const float offset = surfaceWallOffset(this->domainOf(field));
+  // The step is tested from half an offset behind its start, so that a
+  // particle that starts on a Wall's plane (a seed on it) meets it too: one
+  // a rule put there lies a whole offset off it, on its side.
+  const float d[3] = { p[0] - before[0], p[1] - before[1], p[2] - before[2] };
+  const float length = std::sqrt(dot3(d, d));
+  if (!(length > 0.0f))
+  {
+    return false; // not moved, or not finite (settle takes the step back)
+  }
+  const float back = 0.5f * offset / length;
+  const float from[3] = { before[0] - back * d[0], before[1] - back * d[1],
+    before[2] - back * d[2] };
+  SurfaceCrossing c;
+  if (!surfaces.wallCrossing(from, p, c))
+  {
+    return false;
+  }
+  const Boundary rule = this->Params.boundary;
   const std::array<float, 3> m = towardStart(c);
-  // How far p lies beyond the plane (negative along m): Slip takes that
-  // back (the tangential step kept), Bounce (1 + e) times it; Stick puts
-  // it where the step met the wall (held there from then on).
-  const float d[3] = { p[0] - c.point[0], p[1] - c.point[1], p[2] - c.point[2] };
-  const float beyond = dot3(d, m.data());
-  const float back = (bounce ? 1.0f + e : 1.0f) * beyond;
-  if (stick)
+  this->wallRule(c, offset, p);
+  if (rule != Boundary::Stick)
   {
-    putOff(c, m, offset, p);
-  }
-  else
-  {
-    for (int k = 0; k < 3; ++k)
+    // Put on one plane or reflected off it, p may lie behind another Wall
+    // where the walls bend inward (a corner, a pipe of flat facets): the
+    // rule again on each Wall the move from the wall crosses; after four,
+    // the particle stays where that move first meets a Wall.
+    float start[3];
+    putOff(c, m, offset, start);
+    for (int pass = 0; pass < 4; ++pass)
     {
-      p[k] += (offset - back) * m[std::size_t(k)];
+      SurfaceCrossing again;
+      if (!surfaces.wallCrossing(start, p, again))
+      {
+        break;
+      }
+      if (pass == 3)
+      {
+        putOff(again, towardStart(again), offset, p);
+        break;
+      }
+      this->wallRule(again, offset, p);
+      putOff(again, towardStart(again), offset, start);
     }
-  }
-  SurfaceCrossing again;
-  float start[3];
-  putOff(c, m, offset, start);
-  if (bounce && surfaces.wallCrossing(start, p, again))
-  {
-    putOff(again, towardStart(again), offset, p); // reflected into another wall: on it
   }
   if (slip)
   {
-    // The rule on the heavy particle's velocity v = u + slip, u the flow
-    // where the wall leaves it at the step's end: the normal component into
-    // the wall removed (Slip) or reversed times e (Bounce).
-    float u[3];
-    field.sampleWeighted(p, weights.end, u);
-    const float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
-    const float into = dot3(v, m.data());
-    const float turn = into < 0.0f ? (bounce ? 1.0f + e : 1.0f) * into : 0.0f;
-    for (int k = 0; k < 3; ++k)
-    {
-      // Stick stops it: v = 0.
-      slip[k] = (stick ? 0.0f : v[k] - turn * m[std::size_t(k)]) - u[k];
-    }
+    this->wallSlip(field, weights, m, p, slip);
   }
   if (dot3(before, m.data()) - dot3(c.point.data(), m.data()) <= this->restingOnWall(offset))
   {
     return false; // it lay on the wall before the step: it slides along it
   }
-  met = wallEvent(surfaces, c, this->Params.boundary);
+  met = wallEvent(surfaces, c, rule);
   return true;
+}
+
+void Engine::wallRule(const SurfaceCrossing& c, float offset, float p[3]) const
+{
+  const std::array<float, 3> m = towardStart(c);
+  if (this->Params.boundary == Boundary::Stick)
+  {
+    putOff(c, m, offset, p); // where the step met the wall (held there from then on)
+    return;
+  }
+  // How far p lies beyond the plane (negative along m): Slip takes that
+  // back (the tangential step kept), Bounce (1 + e) times it.
+  const float d[3] = { p[0] - c.point[0], p[1] - c.point[1], p[2] - c.point[2] };
+  const float beyond = dot3(d, m.data());
+  const float e = this->Params.restitution;
+  const float back = (this->Params.boundary == Boundary::Bounce ? 1.0f + e : 1.0f) * beyond;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] += (offset - back) * m[std::size_t(k)];
+  }
+}
+
+void Engine::wallSlip(const VectorField& field, const StepWeights& weights,
+  const std::array<float, 3>& m, const float p[3], float* slip) const
+{
+  // The rule on the heavy particle's velocity v = u + slip, u the flow where
+  // the wall leaves it at the step's end: stopped (Stick), the normal
+  // component into the wall removed (Slip) or reversed times e (Bounce).
+  const Boundary rule = this->Params.boundary;
+  float u[3];
+  field.sampleWeighted(p, weights.end, u);
+  const float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
+  const float into = dot3(v, m.data());
+  const float e = this->Params.restitution;
+  const float turn = into < 0.0f ? (rule == Boundary::Bounce ? 1.0f + e : 1.0f) * into : 0.0f;
+  for (int k = 0; k < 3; ++k)
+  {
+    slip[k] = (rule == Boundary::Stick ? 0.0f : v[k] - turn * m[std::size_t(k)]) - u[k];
+  }
 }
 
 void Engine::keepOffSurfaceWalls(std::size_t e, const VectorField& field, const float* before,

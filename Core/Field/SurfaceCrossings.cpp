@@ -49,6 +49,24 @@ double meet(const double* v, const double a[3], const Vec& d)
   return t > 0.0 && t <= 1.0 ? t : std::nan("");
 }
 
+/// Whether x lies within `distance` of triangle v's plane (9 doubles), its
+/// foot on the plane within the triangle (edges closed).
+bool near(const double* v, const double x[3], double distance)
+{
+  const Vec e1 = sub(v + 3, v), e2 = sub(v + 6, v), n = cross(e1, e2);
+  const double area2 = dot(n, n);
+  const Vec s = sub(x, v);
+  const double height = dot(s, n) / std::sqrt(area2);
+  if (!(std::abs(height) <= distance))
+  {
+    return false;
+  }
+  // The foot's barycentric coordinates: (s x e2).n and (e1 x s).n over |n|^2.
+  const double u = dot(cross(s, e2), n) / area2;
+  const double w = dot(cross(e1, s), n) / area2;
+  return u >= -EdgeSlack && w >= -EdgeSlack && u + w <= 1.0 + EdgeSlack;
+}
+
 bool finite3(const float p[3])
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -114,19 +132,41 @@ SurfaceCrossings::SurfaceCrossings(
   // Each triangle in every bucket its box touches (a counting sort).
   const std::size_t B = std::size_t(this->Buckets[0]) * this->Buckets[1] * this->Buckets[2];
   std::vector<std::uint32_t> count(B + 1, 0);
+  // A long thin triangle (a fan's sliver) touches many buckets: past
+  // MaxBucketsPerTriangle it is kept apart (Large) and tested by every step
+  // instead, so the buckets' entries stay at most that many a triangle.
+  auto range = [this](std::size_t k, int f[3], int l[3])
+  {
+    const double* v = &this->Corners[9 * k];
+    double blo[3], bhi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      blo[a] = std::min({ v[a], v[3 + a], v[6 + a] });
+      bhi[a] = std::max({ v[a], v[3 + a], v[6 + a] });
+    }
+    this->bucketRange(blo, bhi, f, l);
+    return double(l[0] - f[0] + 1) * double(l[1] - f[1] + 1) * double(l[2] - f[2] + 1);
+  };
+  std::vector<bool> large(T, false);
+  for (std::size_t k = 0; k < T; ++k)
+  {
+    int f[3], l[3];
+    large[k] = range(k, f, l) > double(MaxBucketsPerTriangle);
+    if (large[k])
+    {
+      this->Large.push_back(std::uint32_t(k));
+    }
+  }
   auto visit = [&](auto&& act)
   {
     for (std::size_t k = 0; k < T; ++k)
     {
-      const double* v = &this->Corners[9 * k];
-      double blo[3], bhi[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        blo[a] = std::min({ v[a], v[3 + a], v[6 + a] });
-        bhi[a] = std::max({ v[a], v[3 + a], v[6 + a] });
-      }
       int f[3], l[3];
-      this->bucketRange(blo, bhi, f, l);
+      if (large[k])
+      {
+        continue;
+      }
+      range(k, f, l);
       for (int z = f[2]; z <= l[2]; ++z)
         for (int y = f[1]; y <= l[1]; ++y)
           for (int x = f[0]; x <= l[0]; ++x)
@@ -193,6 +233,14 @@ bool SurfaceCrossings::meetAlong(const float a[3], const float b[3], Visit&& vis
           }
         }
       }
+  for (const std::uint32_t k : this->Large)
+  {
+    const double t = meet(&this->Corners[9 * std::size_t(k)], da, d);
+    if (std::isfinite(t))
+    {
+      visit(k, t);
+    }
+  }
   return true;
 }
 
@@ -238,25 +286,14 @@ bool SurfaceCrossings::lies(const float p[3], double distance) const
         const std::size_t bucket = (std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + w;
         for (std::uint32_t m = this->Start[bucket]; m < this->Start[bucket + 1]; ++m)
         {
-          const double* v = &this->Corners[9 * std::size_t(this->Members[m])];
-          const Vec e1 = sub(v + 3, v), e2 = sub(v + 6, v), n = cross(e1, e2);
-          const double area2 = dot(n, n);
-          const Vec s = sub(x, v);
-          const double height = dot(s, n) / std::sqrt(area2);
-          if (!(std::abs(height) <= distance))
-          {
-            continue;
-          }
-          // The foot's barycentric coordinates: (s x e2).n and (e1 x s).n over |n|^2.
-          const double u = dot(cross(s, e2), n) / area2;
-          const double w2 = dot(cross(e1, s), n) / area2;
-          if (u >= -EdgeSlack && w2 >= -EdgeSlack && u + w2 <= 1.0 + EdgeSlack)
+          if (near(&this->Corners[9 * std::size_t(this->Members[m])], x, distance))
           {
             return true;
           }
         }
       }
-  return false;
+  return std::any_of(this->Large.begin(), this->Large.end(),
+    [&](std::uint32_t k) { return near(&this->Corners[9 * std::size_t(k)], x, distance); });
 }
 
 bool SurfaceCrossings::firstCrossing(

@@ -15,7 +15,10 @@
  * the triangles (closed tests), so no crossing slips between two of them.
  *
  * The triangles are kept in a uniform grid of buckets over their bounds, so
- * a step tests only the triangles of the buckets its segment's box touches.
+ * a step tests only the triangles of the buckets its segment's box touches;
+ * a triangle that would touch more than MaxBucketsPerTriangle buckets (a
+ * long sliver of a fan) is kept apart and tested by every step, so that the
+ * buckets hold at most that many entries a triangle.
  * Triangles with a corner that is not finite, or without area, are left out
  * (droppedTriangles() counts them, for the caller's warning).
  */
@@ -112,6 +115,10 @@ private:
   /// Bucket b's triangles are Members[Start[b], Start[b + 1]).
   std::vector<std::uint32_t> Start;
   std::vector<std::uint32_t> Members;
+  /// The triangles that touch more than MaxBucketsPerTriangle buckets, in
+  /// no bucket: every step tests them.
+  std::vector<std::uint32_t> Large;
+  static constexpr int MaxBucketsPerTriangle = 64;
 };
 
 } // namespace bp

@@ -231,3 +231,35 @@ TEST(SurfaceCrossings, EveryCrossingOfAStepComesInOrderOnceEach)
   two.allCrossings(nan, b, all);
   EXPECT_TRUE(all.empty());
 }
+
+TEST(SurfaceCrossings, AFanOfLongThinTrianglesIsCrossedOnceWherever)
+{
+  // A disc cut as a fan (every triangle shares the centre): its slivers
+  // span many buckets, and are kept apart and tested by every step.
+  const int n = 3000;
+  std::vector<float> fan;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a0 = 2 * M_PI * k / n, a1 = 2 * M_PI * (k + 1) / n;
+    fan.insert(fan.end(),
+      { 0, 0, 0, float(std::cos(a0)), float(std::sin(a0)), 0, float(std::cos(a1)),
+        float(std::sin(a1)), 0 });
+  }
+  const bp::SurfaceCrossings disc(fan, {});
+  EXPECT_EQ(disc.triangleCount(), std::size_t(n));
+  std::mt19937 draw(5);
+  std::uniform_real_distribution<float> within(-0.6f, 0.6f);
+  for (int k = 0; k < 50; ++k)
+  {
+    const float x = within(draw), y = within(draw);
+    std::vector<bp::SurfaceCrossing> all;
+    const float a[3] = { x, y, -1 }, b[3] = { x, y, 1 };
+    disc.allCrossings(a, b, all);
+    EXPECT_EQ(all.size(), 1u) << x << " " << y;
+    const float on[3] = { x, y, 1e-7f }, off[3] = { x, y, 1e-3f };
+    EXPECT_TRUE(disc.lies(on, 1e-6));
+    EXPECT_FALSE(disc.lies(off, 1e-6));
+  }
+  const float beyond[3] = { 1.5f, 0, 0 };
+  EXPECT_FALSE(disc.lies(beyond, 1e-3));
+}

@@ -410,3 +410,111 @@ TEST(Surfaces, OutletCornersAreTheOutletTrianglesKept)
   EXPECT_NE(bp::gpuOutletError(bp::GpuMaxOutletTriangles + 1).find("4097 Outlet triangles"),
     std::string::npos);
 }
+
+namespace
+{
+/// The plane x = `x` over y, z in [-1, 1] as Wall triangles (appended).
+void wallAtX(bp::SurfaceTriangles& t, float x)
+{
+  std::vector<float> c = rectangle(-1, 1, -1, 1, x, false);
+  for (std::size_t k = 0; k < c.size(); k += 3)
+    std::swap(c[k], c[k + 2]);
+  t.corners.insert(t.corners.end(), c.begin(), c.end());
+  t.interaction.insert(t.interaction.end(), 2, bp::SurfaceInteraction::Wall);
+}
+
+/// The side of a pipe of radius r along z with `facets` flat facets, as Walls.
+bp::SurfaceTriangles pipe(float r, int facets)
+{
+  bp::SurfaceTriangles t;
+  for (int k = 0; k < facets; ++k)
+  {
+    const double a0 = 2 * Pi * k / facets, a1 = 2 * Pi * (k + 1) / facets;
+    const float x0 = float(r * std::cos(a0)), y0 = float(r * std::sin(a0));
+    const float x1 = float(r * std::cos(a1)), y1 = float(r * std::sin(a1));
+    t.corners.insert(
+      t.corners.end(), { x0, y0, -1, x1, y1, -1, x1, y1, 1, x0, y0, -1, x1, y1, 1, x0, y0, 1 });
+  }
+  t.interaction.assign(t.corners.size() / 9, bp::SurfaceInteraction::Wall);
+  return t;
+}
+
+/// Points released at `seeds` in `flow` under `boundary`, traced `steps` steps of h.
+bp::Engine tracedPoints(const bp::VectorField& flow, const std::vector<float>& seeds,
+  const bp::SurfaceTriangles& walls, bp::Boundary boundary, int steps, double h)
+{
+  bp::Parameters p = squares(seeds, 1000.0f);
+  p.integrator = bp::Integrator::Euler;
+  p.boundary = boundary;
+  p.restitution = 0.5f;
+  p.surfaces = std::make_shared<const bp::SurfaceSet>(walls);
+  bp::Engine engine;
+  EXPECT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, flow, steps, h);
+  return engine;
+}
+} // namespace
+
+TEST(Surfaces, NoParticlePassesWhereWallsBendInward)
+{
+  // A corner (walls x = 0.5 and y = 0.6) and a pipe of 24 flat facets:
+  // Slip puts a particle on one wall's plane, which at an inward bend lies
+  // behind the other; the rule is taken again there. Bounce alike.
+  bp::SurfaceTriangles corner;
+  wallAtX(corner, 0.5f);
+  const std::vector<float> y = rectangle(-1, 1, -1, 1, 0.6f, true); // the plane y = 0.6
+  corner.corners.insert(corner.corners.end(), y.begin(), y.end());
+  corner.interaction.insert(corner.interaction.end(), 2, bp::SurfaceInteraction::Wall);
+  std::vector<float> seeds;
+  for (int k = 0; k < 20; ++k)
+    seeds.insert(seeds.end(), { -0.9f + 0.05f * k, -0.8f + 0.03f * k, 0.1f * (k % 5) - 0.2f });
+  const bp::VectorField along = bptest::uniformFlow({ 1.0f, 0.5f, 0.0f });
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    const bp::Engine engine = tracedPoints(along, seeds, corner, b, 400, 0.01);
+    float x = -1, yMost = -1;
+    for (std::size_t i = 0; i < 20; ++i)
+    {
+      x = std::max(x, engine.positions()[3 * i]);
+      yMost = std::max(yMost, engine.positions()[3 * i + 1]);
+    }
+    EXPECT_LE(x, 0.5f) << bp::enumName(b);
+    EXPECT_LE(yMost, 0.6f) << bp::enumName(b);
+  }
+  // Inside a pipe of radius 0.8, a flow across it and along it.
+  std::vector<float> inside;
+  for (int k = 0; k < 40; ++k)
+  {
+    const double a = 2 * Pi * k / 40, r = 0.6 * (k % 4 + 1) / 4;
+    inside.insert(inside.end(), { float(r * std::cos(a)), float(r * std::sin(a)), 0.0f });
+  }
+  const bp::VectorField across = bptest::uniformFlow({ 0.6f, 0.05f, 0.35f });
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce })
+  {
+    const bp::Engine engine = tracedPoints(across, inside, pipe(0.8f, 24), b, 300, 0.01);
+    float widest = 0;
+    for (std::size_t i = 0; i < 40; ++i)
+    {
+      const float* q = engine.positions().data() + 3 * i;
+      widest = std::max(widest, std::sqrt(q[0] * q[0] + q[1] * q[1]));
+    }
+    EXPECT_LE(widest, 0.8f) << bp::enumName(b) << ": every particle inside the pipe";
+  }
+}
+
+TEST(Surfaces, AParticleStartingOnAWallStaysOnTheSideItCameFrom)
+{
+  // Seeds on the plane x = 0.5 itself, the flow through it (+x): they are
+  // kept on the side behind their first step, as one the step met.
+  bp::SurfaceTriangles wall;
+  wallAtX(wall, 0.5f);
+  const bp::VectorField through = bptest::uniformFlow({ 0.7f, 0.3f, 0.0f });
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    const bp::Engine engine =
+      tracedPoints(through, { 0.5f, 0.0f, 0.0f, 0.5f, -0.4f, 0.3f }, wall, b, 100, 0.01);
+    EXPECT_LE(engine.positions()[0], 0.5f) << bp::enumName(b);
+    EXPECT_LE(engine.positions()[3], 0.5f) << bp::enumName(b);
+  }
+}
