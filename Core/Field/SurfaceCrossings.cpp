@@ -129,6 +129,12 @@ SurfaceCrossings::SurfaceCrossings(
     this->Upper[a] = hi[a];
     this->BucketSize[a] = size;
   }
+  this->fillBuckets();
+}
+
+void SurfaceCrossings::fillBuckets()
+{
+  const std::size_t T = this->Surface.size();
   // Each triangle in every bucket its box touches (a counting sort).
   const std::size_t B = std::size_t(this->Buckets[0]) * this->Buckets[1] * this->Buckets[2];
   std::vector<std::uint32_t> count(B + 1, 0);

@@ -100,6 +100,9 @@ private:
   bool meetAlong(const float a[3], const float b[3], Visit&& visit) const;
   /// The crossing of step a -> b with kept triangle k at t.
   SurfaceCrossing crossingAt(const float a[3], const float b[3], std::uint32_t k, double t) const;
+  /// The buckets' members (Start, Members) and the triangles kept apart
+  /// (Large), once the triangles and the grid are set.
+  void fillBuckets();
   /// The bucket range [lo, hi] along each axis that a box touches.
   void bucketRange(const double lo[3], const double hi[3], int first[3], int last[3]) const;
 
