@@ -31,9 +31,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   const std::vector<float> noOutlets;
   const std::vector<float>& outlets = p.surfaces ? p.surfaces->outletCorners() : noOutlets;
+  const std::vector<float>& walls = p.surfaces ? p.surfaces->wallCorners() : noOutlets;
   if (error.empty())
   {
     error = gpuOutletError(outlets.size() / 9);
+  }
+  if (error.empty())
+  {
+    error = gpuWallError(walls.size() / 9, p.boundary == Boundary::Stick);
   }
   if (!error.empty())
   {
@@ -102,6 +107,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
     std::copy_n(&outlets[3 * c], 3, &corners[4 * c]);
   }
   this->Outlets = makeListTexture(corners, 3 * OutletsPerRow);
+  // The Wall triangles, laid out as the Outlets' (bpWallCount 0: none read).
+  this->WallCount = int(walls.size() / 9);
+  corners.assign(4 * 3 * std::max<std::size_t>(walls.size() / 9, 1), 0.0f);
+  for (std::size_t c = 0; c < walls.size() / 3; ++c)
+  {
+    std::copy_n(&walls[3 * c], 3, &corners[4 * c]);
+  }
+  this->Walls = makeListTexture(corners, 3 * OutletsPerRow);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
@@ -194,7 +207,7 @@ void GpuSystem::step(double t, double h)
   this->finalize(positions, false);
   if (carriesInertia(this->parameters))
   {
-    this->shareSlips(endWeight);
+    this->shareSlips(t, h, endWeight);
   }
   // 6. Poses and spins.
   if (this->parameters.trackPoses)

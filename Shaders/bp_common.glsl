@@ -674,6 +674,172 @@ vec3 bpWallRestored(vec3 q, vec3 a, float weight)
   return q;
 }
 
+// ---- Walls of the Surfaces (engine specification 2.10) --------------------
+// The Surfaces' Wall triangles (SurfaceSet::wallCorners): bpWallCount of
+// them, 0 where there are none (then nothing here is read). Corner c of
+// triangle k is texel (3 (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW) of
+// bpWalls, laid out as bpOutlets (bp_test.glsl). bpWallOffset is
+// surfaceWallOffset of the field's domain, computed on the host.
+uniform int bpWallCount;
+uniform sampler2D bpWalls;
+uniform float bpWallOffset;
+
+vec3 bpWallCorner(int k, int c)
+{
+  return texelFetch(bpWalls, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
+}
+
+// Where the step a + t d meets Wall triangle k, t in (0, 1]; -1 where it
+// does not: SurfaceCrossings' meet (Moller-Trumbore) in float, closed on the
+// edges (BP_OUTLET_EDGE_SLACK), as bpCrossesOutlet.
+float bpMeetWall(int k, vec3 a, vec3 d)
+{
+  vec3 v = bpWallCorner(k, 0);
+  vec3 e1 = bpWallCorner(k, 1) - v, e2 = bpWallCorner(k, 2) - v;
+  vec3 p = cross(d, e2);
+  float det = dot(e1, p);
+  if (det == 0.0 || !bpFinite(vec3(det)))
+  {
+    return -1.0;
+  }
+  vec3 s = a - v;
+  float u = dot(s, p) / det;
+  if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  vec3 q = cross(s, e1);
+  float w = dot(d, q) / det;
+  if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  float t = dot(e2, q) / det;
+  return t > 0.0 && t <= 1.0 ? t : -1.0;
+}
+
+// SurfaceCrossings::firstCrossing over the Walls: the smallest t of the
+// step a -> b's crossings, the first triangle on a tie (`first`, -1 and
+// t 2 where it crosses none, or a or b is not finite).
+float bpFirstWallCrossing(vec3 a, vec3 b, out int first)
+{
+  first = -1;
+  float best = 2.0;
+  if (!bpFinite(a) || !bpFinite(b))
+  {
+    return best;
+  }
+  vec3 d = b - a;
+  for (int k = 0; k < bpWallCount; ++k)
+  {
+    float t = bpMeetWall(k, a, d);
+    if (t > 0.0 && t < best)
+    {
+      best = t;
+      first = k;
+    }
+  }
+  return best;
+}
+
+// Wall triangle k's unit normal (its corners' right hand), turned to the
+// side the step d came from (towardStart); `along`: d went the normal's way.
+vec3 bpWallTowardStart(int k, vec3 d, out bool along)
+{
+  vec3 v = bpWallCorner(k, 0);
+  vec3 n = cross(bpWallCorner(k, 1) - v, bpWallCorner(k, 2) - v);
+  along = dot(d, n) > 0.0;
+  n = n / sqrt(dot(n, n));
+  return along ? -n : n;
+}
+
+// Whether the Walls act on the particles (Boundary Slip or Bounce), as
+// Engine::wallsParticlesOnSurfaces; with Release Again or Terminate they end
+// elements (bp_test.glsl), with Stick they are refused.
+bool bpWallsParticles()
+{
+  return bpWallCount > 0 && (bpBoundary == BP_BOUNDARY_SLIP || bpBoundary == BP_BOUNDARY_BOUNCE);
+}
+
+// Engine::wallParticleOnSurfaces's positions: p, advected from `before`
+// and walled by the field's sides, off the first Wall its step crosses
+// (at c, m the normal turned to before's side, beyond = (p - c).m): moved
+// by (offset - k beyond) m, k 1 (Slip) or 1 + e (Bounce); where Bounce's
+// reflection crosses a Wall again (from c + offset m), on that crossing,
+// offset off it. Returns 0 where it crosses none, else 1 + 2 k + (1 where
+// the step went the normal's way): the wall met, for bpWallSlipOnSurfaces.
+int bpWallOnSurfaces(vec3 before, inout vec3 p)
+{
+  int k;
+  float t = bpFirstWallCrossing(before, p, k);
+  if (k < 0)
+  {
+    return 0;
+  }
+  vec3 d = p - before;
+  vec3 c = before + t * d;
+  bool along;
+  vec3 m = bpWallTowardStart(k, d, along);
+  bool bounce = bpBoundary == BP_BOUNDARY_BOUNCE;
+  float beyond = dot(p - c, m);
+  float back = (bounce ? 1.0 + bpRestitution : 1.0) * beyond;
+  p += (bpWallOffset - back) * m;
+  if (bounce)
+  {
+    vec3 start = c + bpWallOffset * m;
+    int again;
+    float t2 = bpFirstWallCrossing(start, p, again);
+    if (again >= 0)
+    {
+      vec3 d2 = p - start;
+      bool along2;
+      vec3 m2 = bpWallTowardStart(again, d2, along2);
+      p = (start + t2 * d2) + bpWallOffset * m2;
+    }
+  }
+  return 1 + 2 * k + (along ? 1 : 0);
+}
+
+// The heavy particle's rule at a Wall met (`met`, bpWallOnSurfaces's
+// return; 0 none): v = u + s, u the flow at its walled p at the step's end
+// (`weight`), where v.m < 0 its part along m removed (Slip) or reversed
+// times e (Bounce); the new slip v - u.
+vec3 bpWallSlipOnSurfaces(int met, vec3 p, vec3 s, float weight)
+{
+  if (met == 0)
+  {
+    return s;
+  }
+  int k = (met - 1) / 2;
+  vec3 v0 = bpWallCorner(k, 0);
+  vec3 n = cross(bpWallCorner(k, 1) - v0, bpWallCorner(k, 2) - v0);
+  n = n / sqrt(dot(n, n));
+  vec3 m = (met - 1) - 2 * k == 1 ? -n : n;
+  vec3 u = bpSample(p, weight);
+  vec3 v = u + s;
+  float into = dot(v, m);
+  float turn = into < 0.0 ? (bpBoundary == BP_BOUNDARY_BOUNCE ? 1.0 + bpRestitution : 1.0) * into
+                          : 0.0;
+  return v - turn * m - u;
+}
+
+// Engine::keepOffSurfaceWalls for one particle restored to q from its
+// advected (and walled) position a: where the move a -> q crosses a Wall,
+// on that crossing, bpWallOffset off it on a's side.
+vec3 bpWallRestoredOnSurfaces(vec3 q, vec3 a)
+{
+  int k;
+  float t = bpFirstWallCrossing(a, q, k);
+  if (k < 0)
+  {
+    return q;
+  }
+  vec3 d = q - a;
+  bool along;
+  vec3 m = bpWallTowardStart(k, d, along);
+  return (a + t * d) + bpWallOffset * m;
+}
+
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where
