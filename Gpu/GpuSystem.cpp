@@ -16,6 +16,22 @@
 namespace bp
 {
 
+namespace
+{
+/// Triangles (9 floats each) as a list texture, a corner a texel,
+/// OutletsPerRow triangles a row; one texel when there are none, since the
+/// passes bind it.
+GlTexture triangleListTexture(const std::vector<float>& triangles)
+{
+  std::vector<float> corners(4 * 3 * std::max<std::size_t>(triangles.size() / 9, 1), 0.0f);
+  for (std::size_t c = 0; c < triangles.size() / 3; ++c)
+  {
+    std::copy_n(&triangles[3 * c], 3, &corners[4 * c]);
+  }
+  return makeListTexture(corners, 3 * OutletsPerRow);
+}
+} // namespace
+
 std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const Parameters& systemParameters, int textureSizeLimit, bool generatedSprings,
   FusedSteps fusedSteps)
@@ -98,23 +114,11 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
     std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
   }
   this->SeedPoints = makeListTexture(seeds, SeedPointsPerRow);
-  // The Outlet triangles, a corner a texel; one texel when there are none,
-  // since the test pass binds it (and reads nothing: bpOutletCount 0).
+  // The Outlet and Wall triangles (bpOutletCount, bpWallCount 0: none read).
   this->OutletCount = int(outlets.size() / 9);
-  std::vector<float> corners(4 * 3 * std::max<std::size_t>(outlets.size() / 9, 1), 0.0f);
-  for (std::size_t c = 0; c < outlets.size() / 3; ++c)
-  {
-    std::copy_n(&outlets[3 * c], 3, &corners[4 * c]);
-  }
-  this->Outlets = makeListTexture(corners, 3 * OutletsPerRow);
-  // The Wall triangles, laid out as the Outlets' (bpWallCount 0: none read).
+  this->Outlets = triangleListTexture(outlets);
   this->WallCount = int(walls.size() / 9);
-  corners.assign(4 * 3 * std::max<std::size_t>(walls.size() / 9, 1), 0.0f);
-  for (std::size_t c = 0; c < walls.size() / 3; ++c)
-  {
-    std::copy_n(&walls[3 * c], 3, &corners[4 * c]);
-  }
-  this->Walls = makeListTexture(corners, 3 * OutletsPerRow);
+  this->Walls = triangleListTexture(walls);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
