@@ -170,16 +170,17 @@ std::string TracerSteppers::fallBackIfTooLarge(
   const int maxSize = this->Queue->report().maxTextureSize;
   std::string limit =
     maxSize > 0 ? bp::gpuTextureError(shape, p.numberOfElements, maxSize) : std::string();
-  if (limit.empty() && p.surfaces && p.surfaces->hasWalls())
-  {
-    // Walls need the engine's own rules, which the GPU engine lacks.
-    limit = "the GPU engine does not keep elements off Wall surfaces (Surfaces input) yet";
-  }
   if (limit.empty() && p.surfaces)
   {
     // The GPU engine tests each element's step against every Outlet triangle
-    // (gates change nothing in a step: they record, and it records nothing).
+    // (gates change nothing in a step: they record, and it records nothing),
+    // and each particle's (or element's) against every Wall triangle.
     limit = bp::gpuOutletError(p.surfaces->outletCorners().size() / 9);
+  }
+  if (limit.empty() && p.surfaces)
+  {
+    limit =
+      bp::gpuWallError(p.surfaces->wallCorners().size() / 9, p.boundary == bp::Boundary::Stick);
   }
   if (limit.empty())
   {

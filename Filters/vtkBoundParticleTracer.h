@@ -379,7 +379,7 @@ public:
   /// SurfaceInteraction is what every cell does (Gate, default; Outlet;
   /// Wall) unless SurfaceInteractionArray names a cell array of the Surfaces
   /// saying it per cell (0, 1, 2; "None", the default: none). Not with
-  /// Linking or Anchor = Centre. A GPU display runs the CPU engine for Walls.
+  /// Linking or Anchor = Centre. A GPU display runs the CPU engine past 4096 Outlet/Wall triangles.
   void SetSurfacesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(3, output); }
   // Declares SetSurfaceInteraction, GetSurfaceInteraction and GetSurfaceInteractionAsString.
   vtkBPEnumMacro(SurfaceInteraction, bp::SurfaceInteraction);

@@ -107,7 +107,7 @@ public:
   /// without inertia).
   void readSlips(std::vector<float>& slips) const;
   /// `hidden`: 1 for an element placed outside the release window, 2 for one
-  /// terminated at the boundary (Boundary Terminate) or an Outlet, else 0.
+  /// terminated at the boundary (Boundary Terminate), an Outlet or a Wall, else 0.
   void readElements(std::vector<float>* lifetimes, std::vector<float>* generations,
     std::vector<float>* centers, std::vector<float>* orientations = nullptr,
     std::vector<float>* resetFlags = nullptr, std::vector<float>* hidden = nullptr) const;

@@ -407,9 +407,16 @@ std::string GpuPasses::compile(
       "#define BP_TARGETS " + std::to_string(k.targets) + "\n" +
       (k.perElement ? "#define BP_PER_ELEMENT\n" : "") + generated;
     GlProgram& program = this->programs.*(k.program);
-    const std::string error = buildProgram(path,
-      shaderFileName(k.kernel.number) + " (" + k.function + ", " + gpuPathName(path) + " path)",
-      defines, { k.kernel, { bpShaderPassNumber, bpShaderPass }, main }, program);
+    // The slip kernels find, with Walls of the Surfaces, where the advect
+    // pass's walls left a particle (bp_slip.glsl's bpWalledSlipOf).
+    const bool slips = k.program == &P::slip || k.program == &P::slipShare;
+    const ShaderPiece advect{ bpShaderAdvectNumber, bpShaderAdvect };
+    const std::string name =
+      shaderFileName(k.kernel.number) + " (" + k.function + ", " + gpuPathName(path) + " path)";
+    const ShaderPiece pass{ bpShaderPassNumber, bpShaderPass };
+    const std::string error = slips
+      ? buildProgram(path, name, defines, { advect, k.kernel, pass, main }, program)
+      : buildProgram(path, name, defines, { k.kernel, pass, main }, program);
     if (!error.empty())
     {
       return error;

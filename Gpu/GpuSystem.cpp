@@ -16,6 +16,22 @@
 namespace bp
 {
 
+namespace
+{
+/// Triangles (9 floats each) as a list texture, a corner a texel,
+/// OutletsPerRow triangles a row; one texel when there are none, since the
+/// passes bind it.
+GlTexture triangleListTexture(const std::vector<float>& triangles)
+{
+  std::vector<float> corners(4 * 3 * std::max<std::size_t>(triangles.size() / 9, 1), 0.0f);
+  for (std::size_t c = 0; c < triangles.size() / 3; ++c)
+  {
+    std::copy_n(&triangles[3 * c], 3, &corners[4 * c]);
+  }
+  return makeListTexture(corners, 3 * OutletsPerRow);
+}
+} // namespace
+
 std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const Parameters& systemParameters, int textureSizeLimit, bool generatedSprings,
   FusedSteps fusedSteps)
@@ -31,9 +47,14 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   std::string error = this->checkTextureSize(wanted, textureSizeLimit);
   const std::vector<float> noOutlets;
   const std::vector<float>& outlets = p.surfaces ? p.surfaces->outletCorners() : noOutlets;
+  const std::vector<float>& walls = p.surfaces ? p.surfaces->wallCorners() : noOutlets;
   if (error.empty())
   {
     error = gpuOutletError(outlets.size() / 9);
+  }
+  if (error.empty())
+  {
+    error = gpuWallError(walls.size() / 9, p.boundary == Boundary::Stick);
   }
   if (!error.empty())
   {
@@ -93,15 +114,11 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
     std::copy_n(&p.seedPoints[3 * k], 3, &seeds[4 * k]);
   }
   this->SeedPoints = makeListTexture(seeds, SeedPointsPerRow);
-  // The Outlet triangles, a corner a texel; one texel when there are none,
-  // since the test pass binds it (and reads nothing: bpOutletCount 0).
+  // The Outlet and Wall triangles (bpOutletCount, bpWallCount 0: none read).
   this->OutletCount = int(outlets.size() / 9);
-  std::vector<float> corners(4 * 3 * std::max<std::size_t>(outlets.size() / 9, 1), 0.0f);
-  for (std::size_t c = 0; c < outlets.size() / 3; ++c)
-  {
-    std::copy_n(&outlets[3 * c], 3, &corners[4 * c]);
-  }
-  this->Outlets = makeListTexture(corners, 3 * OutletsPerRow);
+  this->Outlets = triangleListTexture(outlets);
+  this->WallCount = int(walls.size() / 9);
+  this->Walls = triangleListTexture(walls);
   return glGetError() == GL_NO_ERROR
     ? std::string()
     : std::string("the GPU could not create the engine's float textures (RGBA32F render targets)");
@@ -194,7 +211,7 @@ void GpuSystem::step(double t, double h)
   this->finalize(positions, false);
   if (carriesInertia(this->parameters))
   {
-    this->shareSlips(endWeight);
+    this->shareSlips(t, h, endWeight);
   }
   // 6. Poses and spins.
   if (this->parameters.trackPoses)

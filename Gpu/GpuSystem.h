@@ -79,7 +79,7 @@ private:
   /// Heavy particles: the slip pass (new slips and their displacements),
   /// and after the test the share pass (a restored element's mean slip).
   void stepSlips(double t, double h);
-  void shareSlips(float endWeight);
+  void shareSlips(double t, double h, float endWeight);
   GLuint wallRestored(GLuint positions, float endWeight, int& restorationPass);
   GLuint restoreOnce(GLuint positions, int& restorationPass);
   GLuint matchShapes(GLuint positions, int& restorationPass);
@@ -107,6 +107,8 @@ private:
     GpuPass& pass, GLuint positions, bool settleOnly, double h, float endWeight) const;
   void finalizeInputs(GpuPass& pass, GLuint restored, bool placed) const;
   void poseInputs(GpuPass& pass, double h, float endWeight) const;
+  /// bpWallCount, bpWalls and bpWallOffset (the Walls of the Surfaces).
+  void surfaceWallInputs(GpuPass& pass) const;
   ///@}
   /// Binds the current textures of the per-element state's `rows` to their samplers.
   void bindCurrent(GpuPass& pass, std::initializer_list<ElementTexture> rows) const;
@@ -131,6 +133,10 @@ private:
   /// and how many there are (the test kernel's bpOutletCount).
   GlTexture Outlets;
   int OutletCount = 0;
+  /// The Surfaces' Wall triangles (SurfaceSet::wallCorners), laid out as
+  /// the Outlets, and how many there are (bpWallCount).
+  GlTexture Walls;
+  int WallCount = 0;
 };
 
 } // namespace bp

@@ -3,6 +3,8 @@
 // (GpuSystem.h). The fused step (GpuSystem.cpp) sets the same inputs.
 #include "GpuSystem.h"
 
+#include "Surfaces.h"
+
 namespace bp
 {
 
@@ -43,6 +45,7 @@ void GpuSystem::advectInputs(GpuPass& pass, bool placeOnly, double t, double h) 
   }
   pass.setInt("bpInertial", !placeOnly && carriesInertia(this->parameters) ? 1 : 0);
   pass.texture("bpSlipMoves", this->state.slipMoves.get());
+  this->surfaceWallInputs(pass);
 }
 
 void GpuSystem::slipInputs(GpuPass& pass, double t, double h) const
@@ -81,12 +84,17 @@ void GpuSystem::stepSlips(double t, double h)
   pass.runPerParticle({ this->state.slipsNext.get(), this->state.slipMoves.get() });
 }
 
-void GpuSystem::shareSlips(float endWeight)
+void GpuSystem::shareSlips(double t, double h, float endWeight)
 {
   GpuPass pass = this->begin(this->passes.programs.slipShare);
   this->slipInputs(pass, 0.0, 0.0);
   // The walls' rule on the velocity: where the advect pass left each
-  // particle and what the walls did (.w), the flow at the step's end.
+  // particle and what the walls did (.w), the flow at the step's end; with
+  // Walls of the Surfaces, the Wall met (the positions before's .w) and the
+  // advect pass's inputs, to find where the field's sides left a particle
+  // that met both (bp_advect.glsl: bpWalledBySides).
+  this->advectInputs(pass, false, t, h);
+  pass.texture("bpBefore", this->state.before.get());
   pass.texture("bpAdvected", this->state.advected.get());
   pass.setFloat("bpEndWeight", endWeight);
   pass.runPerParticle({ this->state.slips.get() });
@@ -101,6 +109,7 @@ GLuint GpuSystem::wallRestored(GLuint positions, float endWeight, int& restorati
   pass.texture("bpPositions", positions);
   pass.texture("bpAdvected", this->state.advected.get());
   pass.setFloat("bpEndWeight", endWeight);
+  this->surfaceWallInputs(pass);
   return this->runRestorationPass(pass, restorationPass);
 }
 
@@ -153,6 +162,18 @@ void GpuSystem::testInputs(
   pass.setInt("bpOutletCount", settleOnly ? 0 : this->OutletCount);
   pass.texture("bpOutlets", this->Outlets.get());
   pass.texture("bpBefore", this->state.before.get());
+  this->surfaceWallInputs(pass);
+}
+
+void GpuSystem::surfaceWallInputs(GpuPass& pass) const
+{
+  // The Walls of the Surfaces (engine specification 2.10): their triangles,
+  // and the offset the CPU engine puts a particle off one (surfaceWallOffset
+  // of the field's domain, the same float).
+  const VectorField* field = this->fieldCache.field();
+  pass.setInt("bpWallCount", this->WallCount);
+  pass.texture("bpWalls", this->Walls.get());
+  pass.setFloat("bpWallOffset", surfaceWallOffset(field ? field->domain() : Domain()));
 }
 
 void GpuSystem::finalizeInputs(GpuPass& pass, GLuint restored, bool placed) const

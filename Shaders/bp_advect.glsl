@@ -55,8 +55,25 @@ void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 bef
   {
     a += texelFetch(bpSlipMoves, texel, 0).xyz; // the slip's own (bp_slip.glsl)
   }
-  // The walls (bp_common.glsl), what they did in .w for the slip share pass.
-  int hits = bpMeetsWalls(i, b) ? bpWallParticle(b, a, bpWeights.z) : 0;
+  // The walls (bp_common.glsl), what they did in .w for the slip share pass:
+  // the field's sides' in the advected texture, the Surfaces' Wall met (its
+  // index and side, 0 none) in the texture of the positions before.
+  int hits = 0, met = 0;
+  if (bpMeetsWalls(i, b))
+  {
+    hits = bpWallParticle(b, a, bpWeights.z);
+    met = bpWallsParticles() ? bpWallOnSurfaces(b, a) : 0;
+  }
   advected = vec4(a, float(hits));
-  before = vec4(b, 0.0);
+  before = vec4(b, float(met));
+}
+
+// The slip share pass's: where the advect pass left particle i at `texel`
+// (starting the step at `b`) before a Wall of the Surfaces moved it, the
+// field's sides' walls done: its advection and the walls again.
+vec3 bpWalledBySides(ivec2 texel, int i, vec3 b)
+{
+  vec3 a = bpIntegrate(b) + texelFetch(bpSlipMoves, texel, 0).xyz;
+  bpWallParticle(b, a, bpWeights.z);
+  return a;
 }

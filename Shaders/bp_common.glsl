@@ -674,6 +674,196 @@ vec3 bpWallRestored(vec3 q, vec3 a, float weight)
   return q;
 }
 
+// ---- Walls of the Surfaces (engine specification 2.10) --------------------
+// The Surfaces' Wall triangles (SurfaceSet::wallCorners): bpWallCount of
+// them, 0 where there are none (then nothing here is read). Corner c of
+// triangle k is texel (3 (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW) of
+// bpWalls, laid out as bpOutlets (bp_test.glsl). bpWallOffset is
+// surfaceWallOffset of the field's domain, computed on the host.
+uniform int bpWallCount;
+uniform sampler2D bpWalls;
+uniform float bpWallOffset;
+
+vec3 bpWallCorner(int k, int c)
+{
+  return texelFetch(bpWalls, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
+}
+
+// Where the step a + t d meets Wall triangle k, t in (0, 1]; -1 where it
+// does not: SurfaceCrossings' meet (Moller-Trumbore) in float, closed on the
+// edges (BP_OUTLET_EDGE_SLACK), as bpCrossesOutlet.
+float bpMeetWall(int k, vec3 a, vec3 d)
+{
+  vec3 v = bpWallCorner(k, 0);
+  vec3 e1 = bpWallCorner(k, 1) - v, e2 = bpWallCorner(k, 2) - v;
+  vec3 p = cross(d, e2);
+  float det = dot(e1, p);
+  if (det == 0.0 || !bpFinite(vec3(det)))
+  {
+    return -1.0;
+  }
+  vec3 s = a - v;
+  float u = dot(s, p) / det;
+  if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  vec3 q = cross(s, e1);
+  float w = dot(d, q) / det;
+  if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  float t = dot(e2, q) / det;
+  return t > 0.0 && t <= 1.0 ? t : -1.0;
+}
+
+// SurfaceCrossings::firstCrossing over the Walls: the smallest t of the
+// step a -> b's crossings, the first triangle on a tie (`first`, -1 and
+// t 2 where it crosses none, or a or b is not finite).
+float bpFirstWallCrossing(vec3 a, vec3 b, out int first)
+{
+  first = -1;
+  float best = 2.0;
+  if (!bpFinite(a) || !bpFinite(b))
+  {
+    return best;
+  }
+  vec3 d = b - a;
+  for (int k = 0; k < bpWallCount; ++k)
+  {
+    float t = bpMeetWall(k, a, d);
+    if (t > 0.0 && t < best)
+    {
+      best = t;
+      first = k;
+    }
+  }
+  return best;
+}
+
+// Wall triangle k's unit normal (its corners' right hand), turned to the
+// side the step d came from (towardStart); `along`: d went the normal's way.
+vec3 bpWallTowardStart(int k, vec3 d, out bool along)
+{
+  vec3 v = bpWallCorner(k, 0);
+  vec3 n = cross(bpWallCorner(k, 1) - v, bpWallCorner(k, 2) - v);
+  along = dot(d, n) > 0.0;
+  n = n / sqrt(dot(n, n));
+  return along ? -n : n;
+}
+
+// Whether the Walls act on the particles (Boundary Slip or Bounce), as
+// Engine::wallsParticlesOnSurfaces; with Release Again or Terminate they end
+// elements (bp_test.glsl); with Stick a display runs the CPU engine (gpuWallError).
+bool bpWallsParticles()
+{
+  return bpWallCount > 0 && (bpBoundary == BP_BOUNDARY_SLIP || bpBoundary == BP_BOUNDARY_BOUNCE);
+}
+
+// Engine::wallRule: p off the Wall triangle k its step d met at c (m the
+// normal turned to the step's start), by (offset - k beyond) m, k 1 (Slip)
+// or 1 + e (Bounce), beyond = (p - c).m.
+vec3 bpWallRule(vec3 c, vec3 m, vec3 p)
+{
+  float beyond = dot(p - c, m);
+  float back = (bpBoundary == BP_BOUNDARY_BOUNCE ? 1.0 + bpRestitution : 1.0) * beyond;
+  return p + (bpWallOffset - back) * m;
+}
+
+// Engine::wallParticleOnSurfaces's positions: p, advected from `before`
+// and walled by the field's sides, off the first Wall its step crosses
+// (tested from half an offset behind `before`, so that a particle on a
+// Wall's plane meets it; at c, m the normal turned to the start's side) by
+// bpWallRule; then, where the walls bend inward, the rule again on each
+// Wall the move from the last one (from its crossing + offset m) crosses,
+// at most three times, a fourth crossing putting p on it, offset off.
+// Returns 0 where it crosses none, else 1 + 2 k + (1 where the step went
+// the normal's way): the wall met, for bpWallSlipOnSurfaces.
+int bpWallOnSurfaces(vec3 before, inout vec3 p)
+{
+  vec3 d = p - before;
+  float len = sqrt(dot(d, d));
+  if (!(len > 0.0))
+  {
+    return 0;
+  }
+  vec3 from = before - (0.5 * bpWallOffset / len) * d;
+  int k;
+  float t = bpFirstWallCrossing(from, p, k);
+  if (k < 0)
+  {
+    return 0;
+  }
+  vec3 step = p - from;
+  vec3 c = from + t * step;
+  bool along;
+  vec3 m = bpWallTowardStart(k, step, along);
+  p = bpWallRule(c, m, p);
+  vec3 start = c + bpWallOffset * m;
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    int again;
+    float t2 = bpFirstWallCrossing(start, p, again);
+    if (again < 0)
+    {
+      break;
+    }
+    vec3 d2 = p - start;
+    bool along2;
+    vec3 m2 = bpWallTowardStart(again, d2, along2);
+    vec3 c2 = start + t2 * d2;
+    if (pass == 3)
+    {
+      p = c2 + bpWallOffset * m2;
+      break;
+    }
+    p = bpWallRule(c2, m2, p);
+    start = c2 + bpWallOffset * m2;
+  }
+  return 1 + 2 * k + (along ? 1 : 0);
+}
+
+// The heavy particle's rule at a Wall met (`met`, bpWallOnSurfaces's
+// return; 0 none): v = u + s, u the flow at its walled p at the step's end
+// (`weight`), where v.m < 0 its part along m removed (Slip) or reversed
+// times e (Bounce); the new slip v - u.
+vec3 bpWallSlipOnSurfaces(int met, vec3 p, vec3 s, float weight)
+{
+  if (met == 0)
+  {
+    return s;
+  }
+  int k = (met - 1) / 2;
+  vec3 v0 = bpWallCorner(k, 0);
+  vec3 n = cross(bpWallCorner(k, 1) - v0, bpWallCorner(k, 2) - v0);
+  n = n / sqrt(dot(n, n));
+  vec3 m = (met - 1) - 2 * k == 1 ? -n : n;
+  vec3 u = bpSample(p, weight);
+  vec3 v = u + s;
+  float into = dot(v, m);
+  float turn = into < 0.0 ? (bpBoundary == BP_BOUNDARY_BOUNCE ? 1.0 + bpRestitution : 1.0) * into
+                          : 0.0;
+  return v - turn * m - u;
+}
+
+// Engine::keepOffSurfaceWalls for one particle restored to q from its
+// advected (and walled) position a: where the move a -> q crosses a Wall,
+// on that crossing, bpWallOffset off it on a's side.
+vec3 bpWallRestoredOnSurfaces(vec3 q, vec3 a)
+{
+  int k;
+  float t = bpFirstWallCrossing(a, q, k);
+  if (k < 0)
+  {
+    return q;
+  }
+  vec3 d = q - a;
+  bool along;
+  vec3 m = bpWallTowardStart(k, d, along);
+  return (a + t * d) + bpWallOffset * m;
+}
+
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------
 // The force term of a spring between the particles at pa and pb, f (pa - pb)
 // with f = stiffness (rest - |pa - pb|) / |pa - pb|; false, with none, where

@@ -35,11 +35,13 @@ void bpFinalizePass(ivec2 texel, int e, int i, inout vec4 state, inout vec4 unus
 // Engine::wallAfterRestoration, a pass of its own after the last restoration
 // pass (Boundary Stick, Slip or Bounce): each particle's restored position
 // (bpPositions) kept in the box and out of cells outside the flow, or back at
-// its walled advected position where Stick holds it.
+// its walled advected position where Stick holds it; then kept off the
+// Surfaces' Walls (Engine::keepOffSurfaceWalls).
 void bpWallPass(ivec2 texel, int e, int i, inout vec4 walled, inout vec4 unused1,
   inout vec4 unused2, inout vec4 unused3)
 {
-  walled = vec4(bpWallRestored(texelFetch(bpPositions, texel, 0).xyz,
-                  texelFetch(bpAdvected, texel, 0).xyz, bpEndWeight),
-    0.0);
+  vec3 a = texelFetch(bpAdvected, texel, 0).xyz;
+  vec3 q = bpWallRestored(texelFetch(bpPositions, texel, 0).xyz, a, bpEndWeight);
+  // The Surfaces' Walls (Slip, Bounce): restoration takes no particle through one.
+  walled = vec4(bpWallsParticles() ? bpWallRestoredOnSurfaces(q, a) : q, 0.0);
 }

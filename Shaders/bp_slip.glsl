@@ -102,7 +102,13 @@ void bpSlipPass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 move,
 // The slip pass's slip at a particle's texel with the walls' rule on its
 // velocity (Engine::wallParticle), from what the advect pass wrote in the
 // advected texture (its walled position, and in .w what the walls did).
-vec3 bpWalledSlipOf(ivec2 texel)
+// With Walls of the Surfaces (Slip, Bounce), where the advect pass wrote
+// one met (the positions before's .w): the sides' rule where they left the
+// particle (recomputed, bp_advect.glsl's bpWalledBySides, only where both
+// met it), then the Wall's at its walled position (bpWallSlipOnSurfaces).
+vec3 bpWalledBySides(ivec2 texel, int i, vec3 b);
+
+vec3 bpWalledSlipOf(ivec2 texel, int i)
 {
   vec3 s = texelFetch(bpSlipsNext, texel, 0).xyz;
   if (!bpWalled())
@@ -110,7 +116,17 @@ vec3 bpWalledSlipOf(ivec2 texel)
     return s;
   }
   vec4 a = texelFetch(bpAdvected, texel, 0);
-  return bpWallSlip(int(a.w), a.xyz, s, bpEndWeight);
+  vec4 b = bpWallsParticles() ? texelFetch(bpBefore, texel, 0) : vec4(0.0);
+  int met = int(b.w);
+  if (met == 0)
+  {
+    return bpWallSlip(int(a.w), a.xyz, s, bpEndWeight);
+  }
+  if (int(a.w) != 0)
+  {
+    s = bpWallSlip(int(a.w), bpWalledBySides(texel, i, b.xyz), s, bpEndWeight);
+  }
+  return bpWallSlipOnSurfaces(met, a.xyz, s, bpEndWeight);
 }
 
 // shareSlip, then a non-finite element's slips 0: particle i's slip after
@@ -119,13 +135,13 @@ void bpSlipSharePass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 unus
   inout vec4 unused2, inout vec4 unused3)
 {
   vec4 element = texelFetch(bpElementState, bpElementTexel(e), 0);
-  vec3 s = bpWalledSlipOf(texel);
+  vec3 s = bpWalledSlipOf(texel, i);
   if (bpShareSlip && bpParticles > 1)
   {
     vec3 mean = vec3(0.0);
     for (int k = 0; k < bpParticles; ++k)
     {
-      mean += bpWalledSlipOf(bpParticleTexel(e, k));
+      mean += bpWalledSlipOf(bpParticleTexel(e, k), k);
     }
     s = mean / float(bpParticles);
   }

@@ -114,6 +114,11 @@ void main()
 #ifdef BP_INERTIAL
       slip = bpWallSlip(hits, advected, slip, bpEndWeight);
 #endif
+      // The Surfaces' Walls (Slip, Bounce), and their rule on the velocity.
+      int met = bpWallsParticles() ? bpWallOnSurfaces(before, advected) : 0;
+#ifdef BP_INERTIAL
+      slip = bpWallSlipOnSurfaces(met, advected, slip, bpEndWeight);
+#endif
     }
   }
   bpLocalPositions[thread] = advected;
@@ -171,17 +176,19 @@ void main()
     if (live)
     {
       p = bpWallRestored(p, advected, bpEndWeight);
+      p = bpWallsParticles() ? bpWallRestoredOnSurfaces(p, advected) : p;
     }
     bpSync();
     bpLocalPositions[thread] = p;
     bpSync();
   }
 
-  // The Outlets (bp_test.glsl): each element's centre before the step, its
+  // The Outlets and the Walls that end elements (bp_test.glsl): each
+  // element's centre before the step, its
   // particles' positions before it summed by its lead thread, then the
   // restored positions shared again for the test.
   vec3 from = vec3(0.0);
-  if (bpOutletCount > 0)
+  if (bpTestsPassages())
   {
     bpLocalPositions[thread] = before;
     bpSync();

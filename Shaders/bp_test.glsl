@@ -37,42 +37,89 @@ vec3 bpOutletCorner(int k, int c)
   return texelFetch(bpOutlets, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
 }
 
-// Whether the step a -> b of an element's centre crosses an Outlet triangle:
-// SurfaceCrossings' meet (Moller-Trumbore) in float, at t in (0, 1] along
-// the step, closed on the edges (BP_OUTLET_EDGE_SLACK). Any crossing ends
-// the element, so the first triangle met will do.
+// Where the step a + t d of an element's centre meets Outlet triangle k,
+// t in (0, 1]; -1 where it does not: SurfaceCrossings' meet
+// (Moller-Trumbore) in float, closed on the edges (BP_OUTLET_EDGE_SLACK).
+float bpMeetOutlet(int k, vec3 a, vec3 d)
+{
+  vec3 v = bpOutletCorner(k, 0);
+  vec3 e1 = bpOutletCorner(k, 1) - v, e2 = bpOutletCorner(k, 2) - v;
+  vec3 p = cross(d, e2);
+  float det = dot(e1, p);
+  if (det == 0.0 || !bpFinite(vec3(det)))
+  {
+    return -1.0;
+  }
+  vec3 s = a - v;
+  float u = dot(s, p) / det;
+  if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  vec3 q = cross(s, e1);
+  float w = dot(d, q) / det;
+  if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
+  {
+    return -1.0;
+  }
+  float t = dot(e2, q) / det;
+  return t > 0.0 && t <= 1.0 ? t : -1.0;
+}
+
+// Whether the step a -> b of an element's centre crosses an Outlet
+// triangle. Any crossing ends the element, so the first triangle met will do.
 bool bpCrossesOutlet(vec3 a, vec3 b)
 {
   vec3 d = b - a;
   for (int k = 0; k < bpOutletCount; ++k)
   {
-    vec3 v = bpOutletCorner(k, 0);
-    vec3 e1 = bpOutletCorner(k, 1) - v, e2 = bpOutletCorner(k, 2) - v;
-    vec3 p = cross(d, e2);
-    float det = dot(e1, p);
-    if (det == 0.0 || !bpFinite(vec3(det)))
-    {
-      continue;
-    }
-    vec3 s = a - v;
-    float u = dot(s, p) / det;
-    if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
-    {
-      continue;
-    }
-    vec3 q = cross(s, e1);
-    float w = dot(d, q) / det;
-    if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
-    {
-      continue;
-    }
-    float t = dot(e2, q) / det;
-    if (t > 0.0 && t <= 1.0)
+    if (bpMeetOutlet(k, a, d) > 0.0)
     {
       return true;
     }
   }
   return false;
+}
+
+// The smallest t of the step a -> b's crossings with the Outlets, 2 where
+// it crosses none: whether it passes an Outlet or a Wall first.
+float bpFirstOutletCrossing(vec3 a, vec3 b)
+{
+  vec3 d = b - a;
+  float best = 2.0;
+  for (int k = 0; k < bpOutletCount; ++k)
+  {
+    float t = bpMeetOutlet(k, a, d);
+    best = t > 0.0 && t < best ? t : best;
+  }
+  return best;
+}
+
+// Whether the test reads each element's centre before the step (`from`):
+// with Outlets, or with Walls that end elements (Boundary Release Again or
+// Terminate; with Slip or Bounce they act on the particles, bp_common.glsl).
+bool bpTestsPassages()
+{
+  return bpOutletCount > 0 || (bpWallCount > 0 && !bpWalled());
+}
+
+// Engine::passSurfaces' flag for an element whose centre went a -> b: 2
+// (terminated) where the first Outlet or Wall it passes is an Outlet, or a
+// Wall with Terminate; 1 (due) where it is a Wall with Release Again; else 0.
+float bpPassageFlag(vec3 a, vec3 b)
+{
+  if (bpWallCount == 0 || bpWalled())
+  {
+    return bpOutletCount > 0 && bpCrossesOutlet(a, b) ? 2.0 : 0.0;
+  }
+  int k;
+  float wall = bpFirstWallCrossing(a, b, k);
+  float outlet = bpOutletCount > 0 ? bpFirstOutletCrossing(a, b) : 2.0;
+  if (outlet <= 1.0 && outlet <= wall)
+  {
+    return 2.0;
+  }
+  return k < 0 ? 0.0 : bpBoundary == BP_BOUNDARY_RELEASE_AGAIN ? 1.0 : 2.0;
 }
 
 // Element e with its state after the reset and its release centre, its
@@ -133,8 +180,11 @@ void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, o
   // The Outlets: an element shown (centre .w 0: not hidden by the release
   // window, not terminated), finite and not due, whose centre's step (before
   // any periodic move) crosses one ends there; that wins over leaving.
-  bool exits = bpOutletCount > 0 && !due && center.w < 0.5 && !bpLinked && bpFinite(from) &&
-    bpCrossesOutlet(from, c);
+  // With Release Again or Terminate a Wall ends it too (flagged 1 or 2, as
+  // the field's sides do), where it passes the Wall before any Outlet.
+  float ended = bpTestsPassages() && !due && center.w < 0.5 && !bpLinked && bpFinite(from)
+    ? bpPassageFlag(from, c)
+    : 0.0;
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure. A terminated element
   // (centre .w 2) stays terminated until its lifetime runs out.
@@ -143,7 +193,8 @@ void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, o
   {
     // A wall (Stick, Slip, Bounce) keeps the element in: never reset for leaving.
     flag = due || (left && !bpWalled()) ? 1.0 : 0.0;
-    flag = (left && !due && bpBoundary == BP_BOUNDARY_TERMINATE) || exits ? 2.0 : flag;
+    flag = (left && !due && bpBoundary == BP_BOUNDARY_TERMINATE) ? 2.0 : flag;
+    flag = ended > 0.0 ? ended : flag;
   }
   tested = vec4(state.x - bpStep, state.y, flag, finite ? 0.0 : 1.0);
 }
@@ -152,9 +203,9 @@ void bpTestPass(ivec2 texel, int e, int i, inout vec4 tested, inout vec4 shift,
   inout vec4 unused2, inout vec4 unused3)
 {
   // The centre before the step, from the advect pass's positions before it
-  // (bpBefore), for the Outlets only.
+  // (bpBefore), for the Outlets and Walls only.
   vec3 from = vec3(0.0);
-  for (int i = 0; bpOutletCount > 0 && i < bpParticles; ++i)
+  for (int i = 0; bpTestsPassages() && i < bpParticles; ++i)
   {
     from += texelFetch(bpBefore, bpParticleTexel(e, i), 0).xyz;
   }

@@ -42,11 +42,12 @@ constexpr int SeedPointsPerRow = 256;
 
 /// Outlet triangles a row of the Outlets' texture (bpOutlets, GpuSystem), 3
 /// texels each: corner c of triangle k is texel (3 (k % OutletsPerRow) + c,
-/// k / OutletsPerRow).
+/// k / OutletsPerRow). The Walls' texture (bpWalls) is laid out the same.
 constexpr int OutletsPerRow = 256;
 
-/// How far outside an Outlet triangle's edges, in barycentric units, the
-/// test kernel (bp_test.glsl: bpCrossesOutlet) still counts a hit: in float,
+/// How far outside an Outlet or Wall triangle's edges, in barycentric units,
+/// the kernels (bp_test.glsl: bpMeetOutlet, bp_common.glsl: bpMeetWall)
+/// still count a hit: in float,
 /// as SurfaceCrossings' 1e-9 in double, a step through an edge that two
 /// triangles share must not fall between them by a rounding.
 constexpr float OutletEdgeSlack = 1e-6f;
@@ -95,7 +96,7 @@ enum class KernelConstantUse
   X(INTEGRATOR_EULER, Int, int(::bp::Integrator::Euler), Kernels)                                 \
   X(INTEGRATOR_RK2, Int, int(::bp::Integrator::RK2), Kernels)                                     \
   X(INTEGRATOR_RK4, Int, int(::bp::Integrator::RK4), EnumValue)                                  \
-  X(BOUNDARY_RELEASE_AGAIN, Int, int(::bp::Boundary::ReleaseAgain), EnumValue)                    \
+  X(BOUNDARY_RELEASE_AGAIN, Int, int(::bp::Boundary::ReleaseAgain), Kernels)                      \
   X(BOUNDARY_TERMINATE, Int, int(::bp::Boundary::Terminate), Kernels)                            \
   X(BOUNDARY_STICK, Int, int(::bp::Boundary::Stick), Kernels)                                    \
   X(BOUNDARY_SLIP, Int, int(::bp::Boundary::Slip), Kernels)                                      \

@@ -49,6 +49,22 @@ std::string gpuOutletError(std::size_t outletTriangles)
     std::to_string(GpuMaxOutletTriangles);
 }
 
+std::string gpuWallError(std::size_t wallTriangles, bool stick)
+{
+  if (stick && wallTriangles > 0)
+  {
+    return "the GPU engine does not hold particles on Wall surfaces (Boundary Stick) yet";
+  }
+  if (wallTriangles <= GpuMaxWallTriangles)
+  {
+    return std::string();
+  }
+  return "the Surfaces hold " + std::to_string(wallTriangles) +
+    " Wall triangles; the GPU engine tests each particle's step against every one and takes "
+    "at most " +
+    std::to_string(GpuMaxWallTriangles);
+}
+
 ParticleLayout ParticleLayout::of(std::size_t elements, std::size_t particlesPerElement)
 {
   ParticleLayout l;

@@ -54,6 +54,16 @@ constexpr std::size_t GpuMaxOutletTriangles = 4096;
 /// most GpuMaxOutletTriangles), otherwise why not.
 std::string gpuOutletError(std::size_t outletTriangles);
 
+/// The most Wall triangles the GPU engine takes (SurfaceSet::wallCorners):
+/// it tests each particle's step, and each element's with Release Again or
+/// Terminate, against every one (engine specification 2.10).
+constexpr std::size_t GpuMaxWallTriangles = 4096;
+
+/// Empty when the GPU engine takes `wallTriangles` Wall triangles (at most
+/// GpuMaxWallTriangles, and with Boundary Stick none: it does not hold
+/// particles on them), otherwise why not.
+std::string gpuWallError(std::size_t wallTriangles, bool stick = false);
+
 /// The GPU engine's per-element state textures (Gpu/GpuStateLayout.h's
 /// ElementTexture rows; a static_assert there keeps the two equal).
 constexpr int GpuElementTextureRows = 5;

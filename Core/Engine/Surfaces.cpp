@@ -74,6 +74,10 @@ SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
     {
       this->OutletCorners.insert(this->OutletCorners.end(), corners, corners + 9);
     }
+    if (this->Given.interaction[k] == SurfaceInteraction::Wall && keptTriangle(corners))
+    {
+      this->WallCorners.insert(this->WallCorners.end(), corners, corners + 9);
+    }
   }
 }
 

@@ -62,6 +62,10 @@ public:
   /// given: what the GPU engine tests an element's step against (engine
   /// specification 2.10). Gates are not here: they change nothing in a step.
   const std::vector<float>& outletCorners() const { return this->OutletCorners; }
+  /// The Wall triangles kept, 9 floats each, in the order given (that of
+  /// wallCrossing's tie-break): what the GPU engine keeps particles off, or
+  /// ends elements at (engine specification 2.10).
+  const std::vector<float>& wallCorners() const { return this->WallCorners; }
   /// The triangles kept, and those left out (a corner not finite, or no area).
   std::size_t triangleCount() const { return this->Passing.triangleCount(); }
   std::size_t droppedTriangles() const { return this->Passing.droppedTriangles(); }
@@ -90,6 +94,7 @@ private:
   std::vector<std::uint32_t> WallIndex; // before Walls, which fills it as it is made
   SurfaceCrossings Walls;
   std::vector<float> OutletCorners;
+  std::vector<float> WallCorners;
 };
 
 } // namespace bp

@@ -518,3 +518,32 @@ TEST(Surfaces, AParticleStartingOnAWallStaysOnTheSideItCameFrom)
     EXPECT_LE(engine.positions()[3], 0.5f) << bp::enumName(b);
   }
 }
+
+TEST(Surfaces, WallCornersAreTheWallTrianglesKept)
+{
+  // What the GPU engine uploads for the Walls (engine specification 2.10):
+  // the Wall triangles in the order given (wallCrossing's tie-break), without
+  // the other kinds, triangles without area or with a corner not finite.
+  bp::SurfaceTriangles t;
+  const std::vector<float> outlet = { 0, 0, 1, 1, 0, 1, 0, 1, 1 };
+  t.corners = outlet;
+  const std::vector<float> walls = rectangle(0, 1, 0, 1, 0.0f); // two triangles
+  t.corners.insert(t.corners.end(), walls.begin(), walls.end());
+  const std::vector<float> flat = { 0, 0, 0, 1, 0, 0, 2, 0, 0 };
+  const std::vector<float> nan = { 0, 0, 0, 1, 0, 0, NAN, 1, 0 };
+  for (const std::vector<float>* v : { &flat, &nan })
+    t.corners.insert(t.corners.end(), v->begin(), v->end());
+  t.interaction.assign(5, bp::SurfaceInteraction::Wall);
+  t.interaction[0] = bp::SurfaceInteraction::Outlet;
+  const bp::SurfaceSet set(t);
+  EXPECT_TRUE(set.hasWalls());
+  EXPECT_EQ(set.wallCorners(), walls);
+  EXPECT_EQ(set.outletCorners(), outlet);
+  EXPECT_TRUE(surfaceOf(outlet, bp::SurfaceInteraction::Outlet)->wallCorners().empty());
+  EXPECT_EQ(bp::gpuWallError(bp::GpuMaxWallTriangles), "");
+  EXPECT_NE(
+    bp::gpuWallError(bp::GpuMaxWallTriangles + 1).find("4097 Wall triangles"), std::string::npos);
+  // Stick (held on a Wall) is the CPU engine's alone.
+  EXPECT_NE(bp::gpuWallError(1, true).find("Stick"), std::string::npos);
+  EXPECT_EQ(bp::gpuWallError(0, true), "");
+}

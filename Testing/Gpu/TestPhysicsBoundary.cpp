@@ -7,7 +7,10 @@
 // The Surfaces' Outlets (engine specification 2.10) the same way: elements
 // whose centres cross an outlet half-plane in solid-body rotation end there
 // on both engines; gates, and an outlet no element reaches, change nothing
-// on the GPU, bit for bit.
+// on the GPU, bit for bit. Its Walls too: a uniform flow onto a tilted plane
+// and solid-body rotation onto a half-plane, with Slip, Bounce (heavy
+// particles too), Release Again and Terminate; a wall no particle reaches
+// changes nothing, bit for bit.
 // With Periodic and trails, the Bound Particles display's own test of which
 // trail poses to draw (bp_draw_vs_dec.glsl: bpNotInTrail, run here alone)
 // against the CPU output's (trailPoses: generation, hidden, trailAcrossSeam).
@@ -812,4 +815,320 @@ TEST(GpuBoundary, PeriodicTrailsBreakAtTheSeamAsOnTheCpu)
   EXPECT_GT(across, 200); // the seams are crossed within the trails' span
   EXPECT_GT(shown, 10000);
   EXPECT_LT(skipped, (shown + across) / 50);
+}
+
+namespace
+{
+/// The Walls of the Surfaces (engine specification 2.10) on both engines:
+/// a uniform flow onto a tilted plane, or solid-body rotation onto a
+/// half-plane, each cut into triangles (Wall).
+enum class WallSurface
+{
+  Tilted,    ///< x + 0.3 y = 0.4 across the box, 12 x 11 squares (264 triangles: two rows)
+  HalfPlane, ///< y = 0, x in [0, 1], 8 x 6 squares (96 triangles)
+  Corner     ///< x = 0.5 (y below 0.6) and y = 0.6 (x below 0.5): an inward corner (144)
+};
+
+/// The triangles of each WallSurface.
+std::size_t wallTriangles(WallSurface which)
+{
+  return which == WallSurface::Tilted ? 264 : which == WallSurface::HalfPlane ? 96 : 144;
+}
+
+struct SurfaceWallCase
+{
+  WallSurface surface;
+  bp::BuiltinShape shape;
+  bp::Integrator integrator;
+  bp::Restoration restoration;
+  bp::Boundary boundary;
+  bool heavy = false; ///< Maxey-Riley with gravity
+};
+
+/// The uniform flow (0.8, 0.25, 0.1) on [-1, 1]^3, 12 points a side.
+bp::VectorField uniformField()
+{
+  bp::GridGeometry g;
+  g.dims = { 12, 12, 12 };
+  g.origin = { -1.0, -1.0, -1.0 };
+  g.spacing = { 2.0 / 11, 2.0 / 11, 2.0 / 11 };
+  bp::FieldSlice s;
+  auto velocity = std::make_shared<std::vector<float>>(3 * g.pointCount());
+  for (std::size_t k = 0; k < g.pointCount(); ++k)
+  {
+    (*velocity)[3 * k] = 0.8f;
+    (*velocity)[3 * k + 1] = 0.25f;
+    (*velocity)[3 * k + 2] = 0.1f;
+  }
+  s.velocity = velocity;
+  return bp::VectorField(g, s);
+}
+
+/// The case's wall as Surfaces; `shift` moves it along z (out of the way).
+std::shared_ptr<const bp::SurfaceSet> wallSurface(WallSurface which, float shift = 0.0f)
+{
+  bp::SurfaceTriangles t;
+  auto square = [&](const float* a, const float* b, const float* c, const float* d)
+  {
+    for (const float* v : { a, b, c, a, c, d })
+      t.corners.insert(t.corners.end(), { v[0], v[1], v[2] + shift });
+    t.interaction.insert(t.interaction.end(), 2, bp::SurfaceInteraction::Wall);
+    t.cells.insert(t.cells.end(), { std::int32_t(t.cells.size()), std::int32_t(t.cells.size()) });
+  };
+  if (which == WallSurface::Corner)
+  {
+    for (int plane = 0; plane < 2; ++plane)
+      for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i)
+        {
+          float q[4][3];
+          for (int c = 0; c < 4; ++c)
+          {
+            const float u = float(i + (c == 1 || c == 2)) / 6.0f;
+            const float z = -1.2f + 2.4f * float(j + (c >= 2)) / 6.0f;
+            const float along = plane == 0 ? -1.2f + 1.8f * u : -1.2f + 1.7f * u;
+            q[c][0] = plane == 0 ? 0.5f : along;
+            q[c][1] = plane == 0 ? along : 0.6f;
+            q[c][2] = z;
+          }
+          square(q[0], q[1], q[2], q[3]);
+        }
+    return std::make_shared<const bp::SurfaceSet>(t);
+  }
+  const bool tilted = which == WallSurface::Tilted;
+  const int nu = tilted ? 12 : 8, nv = tilted ? 11 : 6;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+    {
+      float q[4][3];
+      for (int c = 0; c < 4; ++c)
+      {
+        const float u = float(i + (c == 1 || c == 2)) / float(nu);
+        const float v = float(j + (c >= 2)) / float(nv);
+        if (tilted)
+        {
+          const float y = -1.2f + 2.4f * u;
+          q[c][0] = 0.4f - 0.3f * y;
+          q[c][1] = y;
+          q[c][2] = -1.2f + 2.4f * v;
+        }
+        else
+        {
+          q[c][0] = u;
+          q[c][1] = 0.0f;
+          q[c][2] = -1.0f + 2.0f * v;
+        }
+      }
+      square(q[0], q[1], q[2], q[3]);
+    }
+  return std::make_shared<const bp::SurfaceSet>(t);
+}
+
+/// Distance of p from the case's wall's plane (the tilted plane's, or the
+/// half-plane's where x is in [0, 1], else far).
+float fromWall(WallSurface which, const float* p)
+{
+  if (which == WallSurface::Tilted)
+    return std::abs(p[0] + 0.3f * p[1] - 0.4f) / std::sqrt(1.09f);
+  if (which == WallSurface::Corner)
+    return std::min(std::abs(p[0] - 0.5f), std::abs(p[1] - 0.6f));
+  return p[0] >= 0.0f && p[0] <= 1.0f ? std::abs(p[1]) : 1.0f;
+}
+
+/// Both engines 150 steps with the case's wall: positions (and heavy
+/// particles' slips, times the step) agree within 1e-4 of the diagonal but
+/// for at most 1% of the elements, hidden elements and generations but for
+/// at most 1% (the edge exception). Returns what the wall did on the CPU
+/// engine: particles within 10^-3 of it, summed over every tenth step
+/// (Slip, Bounce), or elements it ended (Release Again, Terminate).
+int compareSurfaceWalls(const SurfaceWallCase& c)
+{
+  const bool tilted = c.surface == WallSurface::Tilted;
+  const bool corner = c.surface == WallSurface::Corner;
+  const bp::VectorField field = tilted || corner ? uniformField() : rotationField();
+  bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.4f, 1.0f, 17);
+  p.restitution = 0.6f;
+  if (tilted || corner)
+    p.emitterMax[0] = 0.0f; // released before the wall
+  if (corner)
+    p.emitterMax[1] = 0.4f; // and below the corner's other wall
+  if (c.heavy)
+  {
+    p.inertia = bp::Inertia::MaxeyRiley;
+    p.responseTime = 0.2f;
+    p.densityRatio = 1000.0f;
+    p.gravity = { 0, 0, -4.0f };
+  }
+  p.surfaces = wallSurface(c.surface);
+  EXPECT_EQ(p.surfaces->wallCorners().size(), 9u * wallTriangles(c.surface));
+  const bp::ElementTemplate shape = bp::builtinTemplate(c.shape);
+  EnginePair engines(shape, p, field);
+  bp::CpuStepper& cpu = engines.cpu;
+  bp::GpuStepper& gpu = engines.gpu;
+  const double dt = 0.01;
+  const std::size_t elements = p.numberOfElements, n = shape.particleCount();
+  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
+  const bool particles = c.boundary == bp::Boundary::Slip || c.boundary == bp::Boundary::Bounce;
+  std::vector<std::uint8_t> apart(elements, 0);
+  int generationsApart = 0, hiddenApart = 0, met = 0, beyond = 0;
+  double worstKept = 0.0;
+  for (int k = 0; k < 150; ++k)
+  {
+    const std::vector<std::uint8_t> flagsBefore = cpu.engine().resetFlags();
+    cpu.step(k * dt, dt);
+    gpu.step(k * dt, dt);
+    const bp::Engine& E = cpu.engine();
+    for (std::size_t e = 0; !particles && e < elements; ++e)
+    {
+      // Ended in this step with lifetime left: at the wall (or, Release
+      // Again, out through a side of the field).
+      const std::uint8_t now = E.resetFlags()[e] & ~flagsBefore[e];
+      met += (now & (bp::Terminated | bp::ResetDue)) && E.lifetimes()[e] > 0.0f;
+    }
+    if (k % 10 != 9)
+      continue;
+    std::vector<float> x, generations, flags, hidden, slips;
+    gpu.engine().read(&x, nullptr, nullptr);
+    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
+    if (c.heavy)
+      gpu.engine().readSlips(slips);
+    for (std::size_t q = 0; particles && q < x.size(); q += 3)
+    {
+      met += fromWall(c.surface, E.positions().data() + q) < 1e-3f;
+      // On the tilted wall's far side (released before it): none should be.
+      beyond += tilted && x[q] + 0.3f * x[q + 1] - 0.4f > 0.0f;
+      beyond += corner && (x[q] > 0.5f || x[q + 1] > 0.6f);
+    }
+    for (std::size_t e = 0; e < elements; ++e)
+    {
+      double worst = 0.0;
+      for (std::size_t q = 3 * e * n; q < 3 * (e + 1) * n; ++q)
+      {
+        worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
+        if (c.heavy)
+          worst = std::max(worst, dt * double(std::abs(slips[q] - E.slips()[q])));
+      }
+      apart[e] = apart[e] || !(worst < tolerance);
+      if (!apart[e])
+        worstKept = std::max(worstKept, worst);
+      generationsApart += generations[e] != float(E.generations()[e]);
+      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
+      hiddenApart += gpuHidden != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
+    }
+  }
+  const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
+  std::printf("%s wall, %s, integrator %d, restoration %d, boundary %d%s: positions within %.3g "
+              "but for %ld elements; the wall met %d times; %d GPU particles beyond it; %d "
+              "hidden, %d generations apart\n",
+    tilted     ? "tilted"
+      : corner ? "corner"
+               : "half-plane",
+    shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
+    c.heavy ? ", heavy" : "", worstKept, elementsApart, met, beyond, hiddenApart, generationsApart);
+  EXPECT_LE(elementsApart, long(elements / 100));
+  EXPECT_LE(hiddenApart, int(elements / 100));
+  EXPECT_LE(generationsApart, int(elements / 100));
+  EXPECT_EQ(beyond, 0);
+  return met;
+}
+
+/// gpuTrace with the boundary `boundary`: the GPU engine's positions,
+/// generations, flags and hidden elements after 60 steps in rotationField().
+std::vector<float> gpuTraceWith(const bp::ElementTemplate& shape, bp::Boundary boundary,
+  std::shared_ptr<const bp::SurfaceSet> surfaces)
+{
+  bp::Parameters p =
+    boundaryTrace(bp::Integrator::RK4, bp::Restoration::AveragedJacobi, boundary, 0.2f, 0.5f, 13);
+  p.surfaces = std::move(surfaces);
+  bp::GpuStepper gpu;
+  EXPECT_EQ(gpu.configure(shape, p), "");
+  EXPECT_EQ(gpu.setField(rotationField()), "");
+  gpu.initialize(0.0);
+  for (int k = 0; k < 60; ++k)
+    gpu.step(k * 0.01, 0.01);
+  std::vector<float> x, generations, flags, hidden;
+  gpu.engine().read(&x, nullptr, nullptr);
+  gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
+  for (const std::vector<float>* v : { &generations, &flags, &hidden })
+    x.insert(x.end(), v->begin(), v->end());
+  return x;
+}
+} // namespace
+
+TEST(GpuBoundary, SurfaceWallsMatchTheCpuEngine)
+{
+  ASSERT_TRUE(bp::haveSharedContext());
+  using I = bp::Integrator;
+  using R = bp::Restoration;
+  using B = bp::Boundary;
+  using S = WallSurface;
+  const SurfaceWallCase cases[] = {
+    { S::Tilted, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
+    { S::Tilted, bp::BuiltinShape::Strip8, I::RK4, R::AveragedJacobi, B::Bounce },
+    { S::HalfPlane, bp::BuiltinShape::Cross, I::RK2, R::ShapeMatching, B::Slip },
+    { S::HalfPlane, bp::BuiltinShape::Strip4, I::Euler, R::GaussSeidel, B::Bounce },
+    { S::Tilted, bp::BuiltinShape::Strip4, I::RK2, R::Jacobi, B::ReleaseAgain },
+    { S::HalfPlane, bp::BuiltinShape::Strip8, I::RK4, R::AveragedJacobi, B::Terminate },
+    // An inward corner: the rule taken again on the second wall.
+    { S::Corner, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
+    { S::Corner, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
+  };
+  for (const SurfaceWallCase& c : cases)
+    EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
+}
+
+TEST(GpuBoundary, SurfaceWallsMatchWithInertia)
+{
+  ASSERT_TRUE(bp::haveSharedContext());
+  using I = bp::Integrator;
+  using R = bp::Restoration;
+  using B = bp::Boundary;
+  using S = WallSurface;
+  const SurfaceWallCase cases[] = {
+    { S::Tilted, bp::BuiltinShape::Strip8, I::RK2, R::AveragedJacobi, B::Slip, true },
+    { S::HalfPlane, bp::BuiltinShape::Cross, I::Euler, R::ShapeMatching, B::Bounce, true },
+    { S::Tilted, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Bounce, true },
+  };
+  for (const SurfaceWallCase& c : cases)
+    EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
+}
+
+TEST(GpuBoundary, AWallOutOfTheWayChangesNothing)
+{
+  // A wall no particle reaches (the half-plane moved 10 along z) runs every
+  // wall test, per particle (Slip) and per element (Release Again), and
+  // changes no bit.
+  ASSERT_TRUE(bp::haveSharedContext());
+  const bp::ElementTemplate shape = bp::builtinTemplate(bp::BuiltinShape::Strip8);
+  long differ = 0;
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::ReleaseAgain })
+  {
+    const std::vector<float> none = gpuTraceWith(shape, b, nullptr);
+    const std::vector<float> wall =
+      gpuTraceWith(shape, b, wallSurface(WallSurface::HalfPlane, 10.0f));
+    ASSERT_EQ(wall.size(), none.size());
+    for (std::size_t k = 0; k < none.size(); ++k)
+      differ += wall[k] != none[k];
+  }
+  EXPECT_EQ(differ, 0);
+  std::printf("a wall out of the way: %ld values apart\n", differ);
+}
+
+TEST(GpuBoundary, RefusesMoreWallTrianglesThanItTests)
+{
+  ASSERT_TRUE(bp::haveSharedContext());
+  bp::SurfaceTriangles t;
+  for (std::size_t k = 0; k <= bp::GpuMaxWallTriangles; ++k)
+  {
+    const float x = float(k) / float(bp::GpuMaxWallTriangles);
+    t.corners.insert(t.corners.end(), { x, 0, 0, x, 1, 0, x, 0, 1 });
+  }
+  t.interaction.assign(bp::GpuMaxWallTriangles + 1, bp::SurfaceInteraction::Wall);
+  bp::Parameters p = boundaryTrace(
+    bp::Integrator::Euler, bp::Restoration::AveragedJacobi, bp::Boundary::Slip, 1, 1, 1);
+  p.surfaces = std::make_shared<bp::SurfaceSet>(t);
+  bp::GpuStepper gpu;
+  const std::string error = gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p);
+  EXPECT_NE(error.find("4097 Wall triangles"), std::string::npos) << error;
+  EXPECT_EQ(bp::gpuWallError(bp::GpuMaxWallTriangles), "");
 }

@@ -13,7 +13,9 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   them at the outlet itself (no fallback to the CPU engine) and draws what
   the CPU engine's Surface display shows;
 - a wall (Kind 2) with Slip keeps every particle on its side, with Slid
-  events where they reach it; with Stick the particles that reach it stay;
+  events where they reach it, on a Bound Particles display with the GPU
+  engine too (no fallback), drawn as the CPU engine's; with Stick the
+  particles that reach it stay;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
   with values of Kind that name no interaction warn and lose nothing; with
   Linking the update fails with a message.
@@ -182,11 +184,12 @@ bptest.check(at_wall.any() and np.all(a["Interaction"][at_wall] == 2),
 
 # The GPU engine ends the elements at the outlet itself: at t = 2 three of
 # the eight have ended (those released at angles a > pi - 2), at the end all.
-def rendered(engine, representation, name, view_time):
-    """The outlet's trace on `engine` drawn by `representation` at view_time:
-    the picture's file and the messages the render gave."""
-    t = tracer(Surfaces=plane_with_kinds([1.0, 0.0]), SurfaceInteractionArray="Kind",
-               Engine=engine)
+def rendered(engine, representation, name, view_time, kinds=(1.0, 0.0), **extra):
+    """The outlet's trace (or with `kinds` another) on `engine` drawn by
+    `representation` at view_time: the picture's file and the messages the
+    render gave."""
+    t = tracer(Surfaces=plane_with_kinds(list(kinds)), SurfaceInteractionArray="Kind",
+               Engine=engine, **extra)
     view = bptest.element_view((240, 180))
     shown = Show(t, view)
     shown.SetRepresentationType(representation)
@@ -216,6 +219,21 @@ end_image, said = rendered("GPU", "Bound Particles", "outlet_gpu_end", END)
 bptest.check(bptest.covered_fraction(end_image) == 0.0 and not said.messages,
              "at the end every element has ended at the outlet on the GPU: %.4f drawn; %s"
              % (bptest.covered_fraction(end_image), said.messages))
+
+# The GPU engine keeps the particles off the Slip wall itself (no fallback
+# to the CPU engine): the squares resting on it drawn as the CPU engine's.
+cpu_image, _ = rendered("CPU", "Surface", "wall_cpu", 3.0, (2.0, 0.0), Boundary="Slip")
+gpu_image, said = rendered("GPU", "Bound Particles", "wall_gpu", 3.0, (2.0, 0.0),
+                           Boundary="Slip")
+mean, pixels = bptest.image_difference(cpu_image, gpu_image)
+covered = bptest.covered_fraction(gpu_image)
+print("Slip wall, GPU display against CPU Surface at t = 3: mean %.3f, pixels %.4f; %.4f drawn"
+      % (mean, pixels, covered))
+bptest.check(not said.messages, "the GPU display runs the wall without a message: %s"
+             % said.messages)
+bptest.check(covered > 0.001 and mean <= 0.5 and pixels <= 0.0003,
+             "the GPU display keeps the particles off the wall as the CPU engine does: mean "
+             "%.3f, pixels %.4f, %.4f drawn" % (mean, pixels, covered))
 
 # Bad input: a clear warning, and the trace goes on.
 empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
