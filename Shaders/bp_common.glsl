@@ -689,13 +689,12 @@ vec3 bpWallCorner(int k, int c)
   return texelFetch(bpWalls, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
 }
 
-// Where the step a + t d meets Wall triangle k, t in (0, 1]; -1 where it
-// does not: SurfaceCrossings' meet (Moller-Trumbore) in float, closed on the
-// edges (BP_OUTLET_EDGE_SLACK), as bpCrossesOutlet.
-float bpMeetWall(int k, vec3 a, vec3 d)
+// Where the step a + t d meets the triangle (v, v1, v2), t in (0, 1]; -1
+// where it does not: SurfaceCrossings' meet (Moller-Trumbore) in float,
+// closed on the edges (BP_OUTLET_EDGE_SLACK). The Walls' and the Outlets'.
+float bpMeetTriangle(vec3 v, vec3 v1, vec3 v2, vec3 a, vec3 d)
 {
-  vec3 v = bpWallCorner(k, 0);
-  vec3 e1 = bpWallCorner(k, 1) - v, e2 = bpWallCorner(k, 2) - v;
+  vec3 e1 = v1 - v, e2 = v2 - v;
   vec3 p = cross(d, e2);
   float det = dot(e1, p);
   if (det == 0.0 || !bpFinite(vec3(det)))
@@ -716,6 +715,12 @@ float bpMeetWall(int k, vec3 a, vec3 d)
   }
   float t = dot(e2, q) / det;
   return t > 0.0 && t <= 1.0 ? t : -1.0;
+}
+
+// Where the step a + t d meets Wall triangle k (bpMeetTriangle).
+float bpMeetWall(int k, vec3 a, vec3 d)
+{
+  return bpMeetTriangle(bpWallCorner(k, 0), bpWallCorner(k, 1), bpWallCorner(k, 2), a, d);
 }
 
 // SurfaceCrossings::firstCrossing over the Walls: the smallest t of the

@@ -37,33 +37,11 @@ vec3 bpOutletCorner(int k, int c)
   return texelFetch(bpOutlets, ivec2(3 * (k % BP_OUTLET_ROW) + c, k / BP_OUTLET_ROW), 0).xyz;
 }
 
-// Where the step a + t d of an element's centre meets Outlet triangle k,
-// t in (0, 1]; -1 where it does not: SurfaceCrossings' meet
-// (Moller-Trumbore) in float, closed on the edges (BP_OUTLET_EDGE_SLACK).
+// Where the step a + t d of an element's centre meets Outlet triangle k
+// (bp_common.glsl: bpMeetTriangle).
 float bpMeetOutlet(int k, vec3 a, vec3 d)
 {
-  vec3 v = bpOutletCorner(k, 0);
-  vec3 e1 = bpOutletCorner(k, 1) - v, e2 = bpOutletCorner(k, 2) - v;
-  vec3 p = cross(d, e2);
-  float det = dot(e1, p);
-  if (det == 0.0 || !bpFinite(vec3(det)))
-  {
-    return -1.0;
-  }
-  vec3 s = a - v;
-  float u = dot(s, p) / det;
-  if (!(u >= -BP_OUTLET_EDGE_SLACK && u <= 1.0 + BP_OUTLET_EDGE_SLACK))
-  {
-    return -1.0;
-  }
-  vec3 q = cross(s, e1);
-  float w = dot(d, q) / det;
-  if (!(w >= -BP_OUTLET_EDGE_SLACK && u + w <= 1.0 + BP_OUTLET_EDGE_SLACK))
-  {
-    return -1.0;
-  }
-  float t = dot(e2, q) / det;
-  return t > 0.0 && t <= 1.0 ? t : -1.0;
+  return bpMeetTriangle(bpOutletCorner(k, 0), bpOutletCorner(k, 1), bpOutletCorner(k, 2), a, d);
 }
 
 // Whether the step a -> b of an element's centre crosses an Outlet

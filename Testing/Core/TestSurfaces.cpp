@@ -37,6 +37,15 @@ std::vector<float> rectangle(float x0, float x1, float y0, float y1, float z, bo
   return c;
 }
 
+/// The plane x = `x` over y, z in [-1, 1] as two triangles.
+std::vector<float> planeX(float x)
+{
+  std::vector<float> c = rectangle(-1, 1, -1, 1, x, false);
+  for (std::size_t k = 0; k < c.size(); k += 3)
+    std::swap(c[k], c[k + 2]); // (x, y, z) -> (z, y, x): the plane z = x made x = x
+  return c;
+}
+
 std::shared_ptr<const bp::SurfaceSet> surfaceOf(
   const std::vector<float>& corners, bp::SurfaceInteraction kind)
 {
@@ -131,12 +140,8 @@ TEST(Surfaces, AnOutletEndsAnElementWhereItsCentreCrossesAndRecordsItOnce)
   // generation (lifetime 2) at t = 2.5.
   const bp::VectorField field = bptest::uniformFlow({ 1, 0, 0 });
   bp::Parameters p = squares({ -0.5f, 0.0f, 0.0f, -0.5f, 0.4f, -0.3f }, 2.0f);
-  p.surfaces = surfaceOf(rectangle(-1, 1, -1, 1, 0.0f, false), bp::SurfaceInteraction::Outlet);
-  // The plane z = 0 turned to x = 0: (x, y, z) -> (z, y, x).
   bp::SurfaceTriangles t;
-  t.corners = rectangle(-1, 1, -1, 1, 0.0f, false);
-  for (std::size_t k = 0; k < t.corners.size(); k += 3)
-    std::swap(t.corners[k], t.corners[k + 2]);
+  t.corners = planeX(0.0f);
   t.surfaces = { 2, 2 };
   t.interaction.assign(2, bp::SurfaceInteraction::Outlet);
   t.cells = { 7, 7 };
@@ -219,6 +224,25 @@ std::shared_ptr<const bp::SurfaceSet> floorAt(float y)
   t.cells = { 3, 3 };
   return std::make_shared<const bp::SurfaceSet>(t);
 }
+
+/// As Walls' strip at the box's side: a Strip4 (size 0.5) at 45 degrees to
+/// the Wall x = 0.6 (block 1, cell 3), in a flow into it and along it (+y).
+bp::Parameters stripTowardWall(bp::Boundary boundary)
+{
+  bp::Parameters p = squares({ 0.1f, -0.5f, 0.0f }, 100.0f);
+  p.elementSize = 0.5f;
+  p.integrator = bp::Integrator::Euler;
+  const float c = std::sqrt(0.5f);
+  p.frame = { c, 0, c, 0, 1, 0, -c, 0, c };
+  p.boundary = boundary;
+  bp::SurfaceTriangles wall;
+  wall.corners = planeX(0.6f);
+  wall.surfaces = { 1, 1 };
+  wall.interaction.assign(2, bp::SurfaceInteraction::Wall);
+  wall.cells = { 3, 3 };
+  p.surfaces = std::make_shared<const bp::SurfaceSet>(wall);
+  return p;
+}
 } // namespace
 
 TEST(Surfaces, AStripCarriedOntoASlipWallLiesAlongItAndSlides)
@@ -228,20 +252,7 @@ TEST(Surfaces, AStripCarriedOntoASlipWallLiesAlongItAndSlides)
   // (+y), the strip at 45 degrees to it. It lies down on the wall's side,
   // keeps its length and slides at the flow's tangential speed.
   const bp::VectorField field = bptest::uniformFlow({ 1.0f, 0.25f, 0.0f });
-  bp::Parameters p = squares({ 0.1f, -0.5f, 0.0f }, 100.0f);
-  p.elementSize = 0.5f;
-  p.integrator = bp::Integrator::Euler;
-  const float c = std::sqrt(0.5f);
-  p.frame = { c, 0, c, 0, 1, 0, -c, 0, c };
-  p.boundary = bp::Boundary::Slip;
-  bp::SurfaceTriangles wall;
-  wall.corners = rectangle(-1, 1, -1, 1, 0.6f, false);
-  for (std::size_t k = 0; k < wall.corners.size(); k += 3)
-    std::swap(wall.corners[k], wall.corners[k + 2]); // the plane x = 0.6
-  wall.surfaces = { 1, 1 };
-  wall.interaction.assign(2, bp::SurfaceInteraction::Wall);
-  wall.cells = { 3, 3 };
-  p.surfaces = std::make_shared<const bp::SurfaceSet>(wall);
+  const bp::Parameters p = stripTowardWall(bp::Boundary::Slip);
   bp::Engine engine;
   ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
   engine.initialize(bp::serialRunner());
@@ -335,18 +346,7 @@ TEST(Surfaces, StickHoldsTheParticlesThatReachAWall)
   // the plane x = 0.6: the particles that reach it are held exactly where
   // they met it, one Stuck event each, and the strip stops climbing.
   const bp::VectorField field = bptest::uniformFlow({ 1.0f, 0.25f, 0.0f });
-  bp::Parameters p = squares({ 0.1f, -0.5f, 0.0f }, 100.0f);
-  p.elementSize = 0.5f;
-  p.integrator = bp::Integrator::Euler;
-  const float c = std::sqrt(0.5f);
-  p.frame = { c, 0, c, 0, 1, 0, -c, 0, c };
-  p.boundary = bp::Boundary::Stick;
-  bp::SurfaceTriangles wall;
-  wall.corners = rectangle(-1, 1, -1, 1, 0.6f, false);
-  for (std::size_t k = 0; k < wall.corners.size(); k += 3)
-    std::swap(wall.corners[k], wall.corners[k + 2]); // the plane x = 0.6
-  wall.interaction.assign(2, bp::SurfaceInteraction::Wall);
-  p.surfaces = std::make_shared<const bp::SurfaceSet>(wall);
+  const bp::Parameters p = stripTowardWall(bp::Boundary::Stick);
   EXPECT_EQ(bp::Engine::validate(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
   bp::Engine engine;
   ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Strip4), p), "");
@@ -416,9 +416,7 @@ namespace
 /// The plane x = `x` over y, z in [-1, 1] as Wall triangles (appended).
 void wallAtX(bp::SurfaceTriangles& t, float x)
 {
-  std::vector<float> c = rectangle(-1, 1, -1, 1, x, false);
-  for (std::size_t k = 0; k < c.size(); k += 3)
-    std::swap(c[k], c[k + 2]);
+  const std::vector<float> c = planeX(x);
   t.corners.insert(t.corners.end(), c.begin(), c.end());
   t.interaction.insert(t.interaction.end(), 2, bp::SurfaceInteraction::Wall);
 }
