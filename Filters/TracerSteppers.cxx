@@ -179,8 +179,7 @@ std::string TracerSteppers::fallBackIfTooLarge(
   }
   if (limit.empty() && p.surfaces)
   {
-    limit =
-      bp::gpuWallError(p.surfaces->wallCorners().size() / 9, p.boundary == bp::Boundary::Stick);
+    limit = bp::gpuWallError(p.surfaces->wallCorners().size() / 9);
   }
   if (limit.empty())
   {

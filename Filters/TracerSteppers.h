@@ -86,10 +86,9 @@ public:
   /**
    * Before a replay configures the active stepper: when it records for a
    * display whose GPU cannot hold this system, or more Outlet or Wall
-   * triangles than the GPU engine tests, or Walls with Stick
-   * (bp::gpuOutletError, bp::gpuWallError), gives the display the
-   * reason and takes the CPU engine instead. Returns the message to show
-   * (empty when nothing changed).
+   * triangles than the GPU engine tests (bp::gpuOutletError,
+   * bp::gpuWallError), gives the display the reason and takes the CPU
+   * engine instead. Returns the message to show (empty when nothing changed).
    */
   std::string fallBackIfTooLarge(const bp::ElementTemplate& shape, const bp::Parameters& p);
 

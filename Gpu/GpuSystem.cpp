@@ -54,7 +54,7 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   }
   if (error.empty())
   {
-    error = gpuWallError(walls.size() / 9, p.boundary == Boundary::Stick);
+    error = gpuWallError(walls.size() / 9);
   }
   if (!error.empty())
   {

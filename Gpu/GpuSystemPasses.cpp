@@ -71,6 +71,8 @@ void GpuSystem::slipInputs(GpuPass& pass, double t, double h) const
   const VectorField* field = this->fieldCache.field();
   const float weights[3] = { field ? field->timeWeight(t) : 0.0f, 0.0f, 0.0f };
   pass.setVec3("bpSlipWeights", weights);
+  // A particle Stick holds on a Wall of the Surfaces keeps its slip (bpHeld).
+  this->surfaceWallInputs(pass);
   // As VectorField::sampleAlong: in double, then float.
   const bool unsteady = field && !field->isSteady();
   pass.setFloat("bpTimeRate",

@@ -507,10 +507,15 @@ bool bpOnWall(vec3 p)
   return false;
 }
 
-// A particle Stick holds: not advected, back where it was after restoration.
+// Whether p lies on a Wall of the Surfaces (below): Stick holds it too.
+bool bpOnSurfaceWall(vec3 p);
+
+// A particle Stick holds, on a side of the box or on a Wall of the Surfaces
+// (Engine::heldOnSurfaceWall): not advected, back where it was after
+// restoration.
 bool bpHeld(vec3 p)
 {
-  return bpBoundary == BP_BOUNDARY_STICK && bpOnWall(p);
+  return bpBoundary == BP_BOUNDARY_STICK && (bpOnWall(p) || bpOnSurfaceWall(p));
 }
 
 // clampToBox: p put on the sides it lies beyond; the sides met.
@@ -747,6 +752,42 @@ float bpFirstWallCrossing(vec3 a, vec3 b, out int first)
   return best;
 }
 
+// SurfaceSet::onWall at the distance Engine::restingOnWall (2 bpWallOffset):
+// p within it of a Wall triangle's plane, its foot on the plane within the
+// triangle (SurfaceCrossings::lies in float; the edges closed with the slack
+// of bpMeetWall, so that a particle Stick put where a step met a triangle
+// lies on it). Reads nothing where there are no Walls.
+bool bpOnSurfaceWall(vec3 p)
+{
+  if (bpWallCount == 0 || !bpFinite(p))
+  {
+    return false;
+  }
+  float distance = 2.0 * bpWallOffset;
+  for (int k = 0; k < bpWallCount; ++k)
+  {
+    vec3 v = bpWallCorner(k, 0);
+    vec3 e1 = bpWallCorner(k, 1) - v, e2 = bpWallCorner(k, 2) - v;
+    vec3 n = cross(e1, e2);
+    float area2 = dot(n, n);
+    vec3 s = p - v;
+    float height = dot(s, n) / sqrt(area2);
+    if (!(abs(height) <= distance))
+    {
+      continue;
+    }
+    // The foot's barycentric coordinates: (s x e2).n and (e1 x s).n over |n|^2.
+    float u = dot(cross(s, e2), n) / area2;
+    float w = dot(cross(e1, s), n) / area2;
+    if (u >= -BP_OUTLET_EDGE_SLACK && w >= -BP_OUTLET_EDGE_SLACK &&
+      u + w <= 1.0 + BP_OUTLET_EDGE_SLACK)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Wall triangle k's unit normal (its corners' right hand), turned to the
 // side the step d came from (towardStart); `along`: d went the normal's way.
 vec3 bpWallTowardStart(int k, vec3 d, out bool along)
@@ -758,19 +799,24 @@ vec3 bpWallTowardStart(int k, vec3 d, out bool along)
   return along ? -n : n;
 }
 
-// Whether the Walls act on the particles (Boundary Slip or Bounce), as
-// Engine::wallsParticlesOnSurfaces; with Release Again or Terminate they end
-// elements (bp_test.glsl); with Stick a display runs the CPU engine (gpuWallError).
+// Whether the Walls act on the particles (Boundary Stick, Slip or Bounce),
+// as Engine::wallsParticlesOnSurfaces; with Release Again or Terminate they
+// end elements (bp_test.glsl).
 bool bpWallsParticles()
 {
-  return bpWallCount > 0 && (bpBoundary == BP_BOUNDARY_SLIP || bpBoundary == BP_BOUNDARY_BOUNCE);
+  return bpWallCount > 0 && bpWalled();
 }
 
 // Engine::wallRule: p off the Wall triangle k its step d met at c (m the
-// normal turned to the step's start), by (offset - k beyond) m, k 1 (Slip)
-// or 1 + e (Bounce), beyond = (p - c).m.
+// normal turned to the step's start): Stick puts it at c + offset m (held
+// there from then on); Slip and Bounce move it by (offset - k beyond) m, k 1
+// (Slip) or 1 + e (Bounce), beyond = (p - c).m.
 vec3 bpWallRule(vec3 c, vec3 m, vec3 p)
 {
+  if (bpBoundary == BP_BOUNDARY_STICK)
+  {
+    return c + bpWallOffset * m;
+  }
   float beyond = dot(p - c, m);
   float back = (bpBoundary == BP_BOUNDARY_BOUNCE ? 1.0 + bpRestitution : 1.0) * beyond;
   return p + (bpWallOffset - back) * m;
@@ -780,9 +826,10 @@ vec3 bpWallRule(vec3 c, vec3 m, vec3 p)
 // and walled by the field's sides, off the first Wall its step crosses
 // (tested from half an offset behind `before`, so that a particle on a
 // Wall's plane meets it; at c, m the normal turned to the start's side) by
-// bpWallRule; then, where the walls bend inward, the rule again on each
-// Wall the move from the last one (from its crossing + offset m) crosses,
-// at most three times, a fourth crossing putting p on it, offset off.
+// bpWallRule; then (Slip, Bounce: Stick stays where the step met the Wall),
+// where the walls bend inward, the rule again on each Wall the move from the
+// last one (from its crossing + offset m) crosses, at most three times, a
+// fourth crossing putting p on it, offset off.
 // Returns 0 where it crosses none, else 1 + 2 k + (1 where the step went
 // the normal's way): the wall met, for bpWallSlipOnSurfaces.
 int bpWallOnSurfaces(vec3 before, inout vec3 p)
@@ -806,7 +853,7 @@ int bpWallOnSurfaces(vec3 before, inout vec3 p)
   vec3 m = bpWallTowardStart(k, step, along);
   p = bpWallRule(c, m, p);
   vec3 start = c + bpWallOffset * m;
-  for (int pass = 0; pass < 4; ++pass)
+  for (int pass = 0; pass < 4 && bpBoundary != BP_BOUNDARY_STICK; ++pass)
   {
     int again;
     float t2 = bpFirstWallCrossing(start, p, again);
@@ -831,8 +878,8 @@ int bpWallOnSurfaces(vec3 before, inout vec3 p)
 
 // The heavy particle's rule at a Wall met (`met`, bpWallOnSurfaces's
 // return; 0 none): v = u + s, u the flow at its walled p at the step's end
-// (`weight`), where v.m < 0 its part along m removed (Slip) or reversed
-// times e (Bounce); the new slip v - u.
+// (`weight`): stopped (Stick, v = 0), or where v.m < 0 its part along m
+// removed (Slip) or reversed times e (Bounce); the new slip v - u.
 vec3 bpWallSlipOnSurfaces(int met, vec3 p, vec3 s, float weight)
 {
   if (met == 0)
@@ -845,6 +892,10 @@ vec3 bpWallSlipOnSurfaces(int met, vec3 p, vec3 s, float weight)
   n = n / sqrt(dot(n, n));
   vec3 m = (met - 1) - 2 * k == 1 ? -n : n;
   vec3 u = bpSample(p, weight);
+  if (bpBoundary == BP_BOUNDARY_STICK)
+  {
+    return -u;
+  }
   vec3 v = u + s;
   float into = dot(v, m);
   float turn = into < 0.0 ? (bpBoundary == BP_BOUNDARY_BOUNCE ? 1.0 + bpRestitution : 1.0) * into

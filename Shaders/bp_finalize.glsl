@@ -42,6 +42,7 @@ void bpWallPass(ivec2 texel, int e, int i, inout vec4 walled, inout vec4 unused1
 {
   vec3 a = texelFetch(bpAdvected, texel, 0).xyz;
   vec3 q = bpWallRestored(texelFetch(bpPositions, texel, 0).xyz, a, bpEndWeight);
-  // The Surfaces' Walls (Slip, Bounce): restoration takes no particle through one.
+  // The Surfaces' Walls (Stick, Slip, Bounce): restoration takes no particle
+  // through one (a particle Stick holds on one is back at a above).
   walled = vec4(bpWallsParticles() ? bpWallRestoredOnSurfaces(q, a) : q, 0.0);
 }

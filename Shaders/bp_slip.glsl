@@ -102,7 +102,7 @@ void bpSlipPass(ivec2 texel, int e, int i, inout vec4 slip, inout vec4 move,
 // The slip pass's slip at a particle's texel with the walls' rule on its
 // velocity (Engine::wallParticle), from what the advect pass wrote in the
 // advected texture (its walled position, and in .w what the walls did).
-// With Walls of the Surfaces (Slip, Bounce), where the advect pass wrote
+// With Walls of the Surfaces (Stick, Slip, Bounce), where the advect pass wrote
 // one met (the positions before's .w): the sides' rule where they left the
 // particle (recomputed, bp_advect.glsl's bpWalledBySides, only where both
 // met it), then the Wall's at its walled position (bpWallSlipOnSurfaces).

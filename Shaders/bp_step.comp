@@ -114,7 +114,7 @@ void main()
 #ifdef BP_INERTIAL
       slip = bpWallSlip(hits, advected, slip, bpEndWeight);
 #endif
-      // The Surfaces' Walls (Slip, Bounce), and their rule on the velocity.
+      // The Surfaces' Walls (Stick, Slip, Bounce), and their rule on the velocity.
       int met = bpWallsParticles() ? bpWallOnSurfaces(before, advected) : 0;
 #ifdef BP_INERTIAL
       slip = bpWallSlipOnSurfaces(met, advected, slip, bpEndWeight);

@@ -49,12 +49,8 @@ std::string gpuOutletError(std::size_t outletTriangles)
     std::to_string(GpuMaxOutletTriangles);
 }
 
-std::string gpuWallError(std::size_t wallTriangles, bool stick)
+std::string gpuWallError(std::size_t wallTriangles)
 {
-  if (stick && wallTriangles > 0)
-  {
-    return "the GPU engine does not hold particles on Wall surfaces (Boundary Stick) yet";
-  }
   if (wallTriangles <= GpuMaxWallTriangles)
   {
     return std::string();

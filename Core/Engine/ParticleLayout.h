@@ -60,9 +60,8 @@ std::string gpuOutletError(std::size_t outletTriangles);
 constexpr std::size_t GpuMaxWallTriangles = 4096;
 
 /// Empty when the GPU engine takes `wallTriangles` Wall triangles (at most
-/// GpuMaxWallTriangles, and with Boundary Stick none: it does not hold
-/// particles on them), otherwise why not.
-std::string gpuWallError(std::size_t wallTriangles, bool stick = false);
+/// GpuMaxWallTriangles), otherwise why not.
+std::string gpuWallError(std::size_t wallTriangles);
 
 /// The GPU engine's per-element state textures (Gpu/GpuStateLayout.h's
 /// ElementTexture rows; a static_assert there keeps the two equal).

@@ -541,7 +541,4 @@ TEST(Surfaces, WallCornersAreTheWallTrianglesKept)
   EXPECT_EQ(bp::gpuWallError(bp::GpuMaxWallTriangles), "");
   EXPECT_NE(
     bp::gpuWallError(bp::GpuMaxWallTriangles + 1).find("4097 Wall triangles"), std::string::npos);
-  // Stick (held on a Wall) is the CPU engine's alone.
-  EXPECT_NE(bp::gpuWallError(1, true).find("Stick"), std::string::npos);
-  EXPECT_EQ(bp::gpuWallError(0, true), "");
 }

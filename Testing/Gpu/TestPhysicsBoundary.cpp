@@ -938,9 +938,12 @@ float fromWall(WallSurface which, const float* p)
 /// Both engines 150 steps with the case's wall: positions (and heavy
 /// particles' slips, times the step) agree within 1e-4 of the diagonal but
 /// for at most 1% of the elements, hidden elements and generations but for
-/// at most 1% (the edge exception). Returns what the wall did on the CPU
-/// engine: particles within 10^-3 of it, summed over every tenth step
-/// (Slip, Bounce), or elements it ended (Release Again, Terminate).
+/// at most 1% (the edge exception); with Stick every GPU particle that lay
+/// on a Wall (SurfaceSet::onWall, two offsets) ten steps before, its element
+/// not placed again since, is exactly where it was. Returns what the wall
+/// did on the CPU engine: particles within 10^-3 of it, summed over every
+/// tenth step (Stick, Slip, Bounce), or elements it ended (Release Again,
+/// Terminate).
 int compareSurfaceWalls(const SurfaceWallCase& c)
 {
   const bool tilted = c.surface == WallSurface::Tilted;
@@ -968,9 +971,13 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
   const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
-  const bool particles = c.boundary == bp::Boundary::Slip || c.boundary == bp::Boundary::Bounce;
+  const bool particles = bp::isWall(c.boundary);
+  const bool stick = c.boundary == bp::Boundary::Stick;
+  const float resting = 2.0f * bp::surfaceWallOffset(field.domain());
   std::vector<std::uint8_t> apart(elements, 0);
   int generationsApart = 0, hiddenApart = 0, met = 0, beyond = 0;
+  long held = 0, heldMoved = 0;
+  std::vector<float> heldBefore, generationsBefore;
   double worstKept = 0.0;
   for (int k = 0; k < 150; ++k)
   {
@@ -992,6 +999,19 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
     gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
     if (c.heavy)
       gpu.engine().readSlips(slips);
+    for (std::size_t q = 0; stick && !heldBefore.empty() && q < x.size(); q += 3)
+    {
+      // Held ten steps before (Stick), its element not placed again since.
+      const std::size_t e = q / (3 * n);
+      if (generations[e] == generationsBefore[e] && p.surfaces->onWall(&heldBefore[q], resting))
+      {
+        ++held;
+        heldMoved +=
+          !std::equal(x.begin() + long(q), x.begin() + long(q) + 3, heldBefore.begin() + long(q));
+      }
+    }
+    heldBefore = x;
+    generationsBefore = generations;
     for (std::size_t q = 0; particles && q < x.size(); q += 3)
     {
       met += fromWall(c.surface, E.positions().data() + q) < 1e-3f;
@@ -1019,16 +1039,22 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
   std::printf("%s wall, %s, integrator %d, restoration %d, boundary %d%s: positions within %.3g "
               "but for %ld elements; the wall met %d times; %d GPU particles beyond it; %d "
-              "hidden, %d generations apart\n",
+              "hidden, %d generations apart; %ld held, %ld of them moved\n",
     tilted     ? "tilted"
       : corner ? "corner"
                : "half-plane",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
-    c.heavy ? ", heavy" : "", worstKept, elementsApart, met, beyond, hiddenApart, generationsApart);
+    c.heavy ? ", heavy" : "", worstKept, elementsApart, met, beyond, hiddenApart, generationsApart,
+    held, heldMoved);
   EXPECT_LE(elementsApart, long(elements / 100));
   EXPECT_LE(hiddenApart, int(elements / 100));
   EXPECT_LE(generationsApart, int(elements / 100));
   EXPECT_EQ(beyond, 0);
+  if (stick)
+  {
+    EXPECT_GT(held, 20) << "Stick holds particles on the Walls";
+    EXPECT_EQ(heldMoved, 0) << "a held particle stays exactly";
+  }
   return met;
 }
 
@@ -1072,6 +1098,10 @@ TEST(GpuBoundary, SurfaceWallsMatchTheCpuEngine)
     // An inward corner: the rule taken again on the second wall.
     { S::Corner, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
     { S::Corner, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
+    // Stick: held where the step met the wall (and on it, the corner's).
+    { S::Tilted, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Stick },
+    { S::HalfPlane, bp::BuiltinShape::Strip4, I::RK2, R::GaussSeidel, B::Stick },
+    { S::Corner, bp::BuiltinShape::Strip4, I::Euler, R::AveragedJacobi, B::Stick },
   };
   for (const SurfaceWallCase& c : cases)
     EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
@@ -1088,6 +1118,7 @@ TEST(GpuBoundary, SurfaceWallsMatchWithInertia)
     { S::Tilted, bp::BuiltinShape::Strip8, I::RK2, R::AveragedJacobi, B::Slip, true },
     { S::HalfPlane, bp::BuiltinShape::Cross, I::Euler, R::ShapeMatching, B::Bounce, true },
     { S::Tilted, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Bounce, true },
+    { S::Tilted, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Stick, true },
   };
   for (const SurfaceWallCase& c : cases)
     EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
