@@ -527,6 +527,14 @@ int bpFirstOutsideFace(vec3 from, vec3 to, float weight, out float plane, out fl
   vec3 f;
   ivec3 cell = bpLocateCell(from, f);
   left = cell;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpPeriodic[a] && !(from[a] >= bpLower[a] && from[a] <= bpUpper[a] &&
+                           to[a] >= bpLower[a] && to[a] <= bpUpper[a]))
+    {
+      return -1; // across a periodic side: no face
+    }
+  }
   ivec3 end = bpLocateCell(to, f);
   if (bpOutsideCellIndexed(cell, weight))
   {
@@ -648,13 +656,15 @@ bool bpOnOutsideFace(vec3 p, float weight)
     }
     ivec3 next = cell;
     next[a] = cell[a] - 1;
-    if (cell[a] > 0 && p[a] - bpPointCoordinate(a, cell[a]) <= 2.0 * bpWallOffset &&
+    float below = p[a] - bpPointCoordinate(a, cell[a]);
+    if (cell[a] > 0 && below >= 0.0 && below <= 2.0 * bpWallOffset &&
       bpOutsideCellIndexed(next, weight))
     {
       return true;
     }
     next[a] = cell[a] + 1;
-    if (cell[a] < bpLastCell[a] && bpPointCoordinate(a, cell[a] + 1) - p[a] <= 2.0 * bpWallOffset &&
+    float above = bpPointCoordinate(a, cell[a] + 1) - p[a];
+    if (cell[a] < bpLastCell[a] && above >= 0.0 && above <= 2.0 * bpWallOffset &&
       bpOutsideCellIndexed(next, weight))
     {
       return true;

@@ -10,6 +10,18 @@ namespace bp
 bool firstOutsideFace(
   const VectorField& field, float weight, const float from[3], const float to[3], MaskFace& face)
 {
+  const Domain& box = field.domain();
+  for (int a = 0; a < 3; ++a)
+  {
+    // Across a periodic side the cells' indices wrap and the faces'
+    // coordinates do not: no face is found there.
+    if (box.periodic[a] &&
+      !(from[a] >= box.lower[a] && from[a] <= box.upper[a] && to[a] >= box.lower[a] &&
+        to[a] <= box.upper[a]))
+    {
+      return false;
+    }
+  }
   int cell[3], end[3];
   field.cellOf(from, cell);
   field.cellOf(to, end);
@@ -136,14 +148,15 @@ bool onOutsideFace(const VectorField& field, float weight, float offset, const f
     }
     int next[3] = { cell[0], cell[1], cell[2] };
     next[a] = cell[a] - 1;
-    if (cell[a] > 0 && p[a] - field.pointCoordinate(a, cell[a]) <= 2.0f * offset &&
+    const float below = p[a] - field.pointCoordinate(a, cell[a]);
+    if (cell[a] > 0 && below >= 0.0f && below <= 2.0f * offset &&
       field.outsideCellIndexed(next, weight))
     {
       return true;
     }
     next[a] = cell[a] + 1;
-    if (cell[a] < field.lastCellOf(a) &&
-      field.pointCoordinate(a, cell[a] + 1) - p[a] <= 2.0f * offset &&
+    const float above = field.pointCoordinate(a, cell[a] + 1) - p[a];
+    if (cell[a] < field.lastCellOf(a) && above >= 0.0f && above <= 2.0f * offset &&
       field.outsideCellIndexed(next, weight))
     {
       return true;

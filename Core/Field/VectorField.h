@@ -240,25 +240,13 @@ public:
 
   /// The walls of the cells outside the flow (MaskWalls.h): whether any
   /// slice has such cells; the cell that holds p, per axis (this grid's
-  /// indices, as cellIndexAt); whether cell `c` (in range) is outside the
-  /// flow as outsideCellAt; the coordinate of this grid's point i along a
-  /// (uniform: origin + i / inverse spacing in float; rectilinear: its
-  /// axisTable entry); this grid's last cell along a.
+  /// indices, as cellIndexAt); whether cell `c` is outside as outsideCellAt;
+  /// point i's coordinate along a (uniform: origin + i / inverse spacing in
+  /// float; rectilinear: its axisTable entry); the last cell along a.
   bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
   inline void cellOf(const float p[3], int c[3]) const;
-  bool outsideCellIndexed(const int c[3], float weight) const
-  {
-    const std::size_t base = std::size_t(c[0]) * this->Stride[0] +
-      std::size_t(c[1]) * this->Stride[1] + std::size_t(c[2]) * this->Stride[2];
-    return (this->FirstOutside && this->FirstOutside[base]) ||
-      (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);
-  }
-  float pointCoordinate(int a, int i) const
-  {
-    return this->Rectilinear[a]
-      ? this->AxisTable[a][2 * std::size_t(i)]
-      : this->Origin[a] + float(i + this->IndexShift[a]) / this->InverseSpacing[a];
-  }
+  bool outsideCellIndexed(const int c[3], float weight) const;
+  float pointCoordinate(int a, int i) const;
   int lastCellOf(int a) const { return this->LastCell[a] - this->IndexShift[a]; }
 
   /// Largest speed over the grid points of the first slice.

@@ -20,10 +20,11 @@ namespace
 {
 /// grid(9) over [-1, 1]^3 (spacing 0.25) with flow `u`, and NaN (outside the
 /// flow) at the points `outside` takes: a cell with one is outside.
-bp::VectorField maskedFlow(
-  std::array<float, 3> u, const std::function<bool(double, double)>& outside)
+bp::VectorField maskedFlow(std::array<float, 3> u,
+  const std::function<bool(double, double)>& outside, bool periodicX = false)
 {
-  const bp::GridGeometry g = bptest::grid(9);
+  bp::GridGeometry g = bptest::grid(9);
+  g.periodic = { periodicX, false, false };
   auto v = std::make_shared<std::vector<float>>();
   for (int k = 0; k < 9; ++k)
     for (int j = 0; j < 9; ++j)
@@ -134,6 +135,22 @@ TEST(MaskWalls, TheFirstFaceIntoACellOutsideAndTheRulesOnIt)
   EXPECT_EQ(bp::wallOnOutsideCells(bp::Boundary::Slip, 1, d, open, 0, before, p, face), 0u);
   EXPECT_EQ(p[0], 0.6f);
   EXPECT_FALSE(bp::onOutsideFace(open, 0, d, p));
+
+  // Beyond a periodic axis' bounds (cells wrap, faces do not): no face,
+  // back to before; within them the faces as without the period.
+  const bp::VectorField periodic = maskedFlow(
+    { 0, 1, 0 }, [](double, double y) { return y > 0.6; }, true);
+  const float across[3] = { 1.05f, 0.4f, 0.0f }, into[3] = { 1.06f, 0.6f, 0.0f };
+  std::copy_n(into, 3, p);
+  EXPECT_EQ(bp::wallOnOutsideCells(bp::Boundary::Slip, 1, d, periodic, 0, across, p, face),
+    bp::WallMaskedCell);
+  EXPECT_EQ(p[1], 0.4f);
+  const float within[3] = { 0.95f, 0.4f, 0.0f };
+  std::copy_n(within, 3, p);
+  p[1] = 0.6f;
+  EXPECT_EQ(bp::wallOnOutsideCells(bp::Boundary::Slip, 1, d, periodic, 0, within, p, face), 8u);
+  EXPECT_EQ(p[1], 0.5f - d);
+  EXPECT_EQ(p[0], 0.95f);
 }
 
 TEST(MaskWalls, AStripLiesDownOnTheFaceAndSlidesAlongIt)
