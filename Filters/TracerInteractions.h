@@ -10,8 +10,9 @@
  * Time (the data's time at the end of the step it happened in; for a
  * surface's passage, when the element's centre crossed it), ElementVelocity
  * (the element's mean velocity over that step, per time of the data),
- * Normal (the outward normal of the side met, 0 for a cell outside the
- * flow; the surface's own normal for a passage), SurfaceId (the box's sides
+ * Normal (the outward normal of the side or face of the cells outside the
+ * flow met, 0 for an element that left into a cell outside the flow; the
+ * surface's own normal for a passage), SurfaceId (the box's sides
  * 0..5 = -x, +x, -y, +y, -z, +z, -1 for none; 6 + the block's index for a
  * surface of the Surfaces input), SurfaceCell (the Surfaces input's cell
  * passed, -1 for a side) and Interaction (bp::Interaction: 0 Released,

@@ -352,8 +352,8 @@ public:
   /// (Bounce), and the springs restore the rest of the element, so a strip
   /// lies down along a wall or tumbles off it; heavy particles (Inertia)
   /// lose their velocity, its normal component, or have that reversed times
-  /// the Restitution. A particle entering a cell outside the flow goes back
-  /// (and stops). Walled elements are never released for leaving. Not with
+  /// the Restitution. The faces of the cells outside the flow are such a
+  /// wall too, with the same rules. Walled elements are never released for leaving. Not with
   /// Linking; walls not with Anchor = Centre. Both engines do the same.
   /// Output 3 (Interactions) has an event for each element that leaves and
   /// each particle's first contact with a wall (each bounce).

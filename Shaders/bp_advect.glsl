@@ -33,7 +33,7 @@ void bpAdvectParticle(int i, vec4 element, vec4 center, vec4 orientation, vec3 c
     ? bpPlace(center.xyz, orientation, texelFetch(bpRest, ivec2(i, 0), 0).xyz)
     : current;
   // Stick holds a particle on a side of the box: not advected.
-  advected = (bpPlaceOnly || bpPinned(i) || bpHeld(before)) ? before : bpIntegrate(before);
+  advected = (bpPlaceOnly || bpPinned(i) || bpHeld(before, bpWeights.z)) ? before : bpIntegrate(before);
 }
 
 // Whether particle i, starting the step at `before`, meets the walls after
@@ -41,7 +41,7 @@ void bpAdvectParticle(int i, vec4 element, vec4 center, vec4 orientation, vec3 c
 // neither pinned nor held.
 bool bpMeetsWalls(int i, vec3 before)
 {
-  return bpWalled() && !bpPlaceOnly && !bpPinned(i) && !bpHeld(before);
+  return bpWalled() && !bpPlaceOnly && !bpPinned(i) && !bpHeld(before, bpWeights.z);
 }
 
 void bpAdvectPass(ivec2 texel, int e, int i, inout vec4 advected, inout vec4 before,

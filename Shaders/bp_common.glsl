@@ -494,6 +494,185 @@ bool bpWalled()
     bpBoundary == BP_BOUNDARY_BOUNCE;
 }
 
+// ---- The walls of the cells outside the flow (MaskWalls.h) ----------------
+// The faces between a cell inside the flow and one outside it, normal to the
+// grid's axes: Boundary Stick, Slip and Bounce keep particles off them by
+// bpWallOffset (surfaceWallOffset of the field's domain, computed on the
+// host; also the Surfaces' Walls' offset).
+uniform float bpWallOffset;
+
+// VectorField::outsideCellIndexed: cell c (its first corner) outside the flow.
+bool bpOutsideCellIndexed(ivec3 c, float weight)
+{
+  return (bpMasked0 && texelFetch(bpOutside0, c, 0).r != 0u) ||
+    (weight > 0.0 && bpMasked1 && texelFetch(bpOutside1, c, 0).r != 0u);
+}
+
+// VectorField::pointCoordinate: point i's coordinate along axis a.
+float bpPointCoordinate(int a, int i)
+{
+  return bpRectilinear[a] ? texelFetch(bpAxes, ivec2(i, a), 0).x
+                          : bpOrigin[a] + float(i) / bpInverseSpacing[a];
+}
+
+// firstOutsideFace: the first face from -> to crosses into a cell outside
+// the flow: its axis (-1 for none), plane, normal toward `from` along the
+// axis (+1 or -1), point, and the cell inside the flow it leaves.
+int bpFirstOutsideFace(vec3 from, vec3 to, float weight, out float plane, out float toward,
+  out vec3 point, out ivec3 left)
+{
+  plane = 0.0;
+  toward = 0.0;
+  point = from;
+  vec3 f;
+  ivec3 cell = bpLocateCell(from, f);
+  left = cell;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpPeriodic[a] && !(from[a] >= bpLower[a] && from[a] <= bpUpper[a] &&
+                           to[a] >= bpLower[a] && to[a] <= bpUpper[a]))
+    {
+      return -1; // across a periodic side: no face
+    }
+  }
+  ivec3 end = bpLocateCell(to, f);
+  if (bpOutsideCellIndexed(cell, weight))
+  {
+    return -1;
+  }
+  for (int k = 0; k < BP_MASK_WALL_CROSSINGS; ++k)
+  {
+    int axis = -1, step = 0;
+    float first = 0.0, w0 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (cell[a] == end[a])
+      {
+        continue;
+      }
+      int s = end[a] > cell[a] ? 1 : -1;
+      float w = bpPointCoordinate(a, s > 0 ? cell[a] + 1 : cell[a]);
+      float d = to[a] - from[a];
+      float t = d != 0.0 ? min(max((w - from[a]) / d, 0.0), 1.0) : 0.0;
+      if (axis < 0 || t < first)
+      {
+        axis = a;
+        step = s;
+        first = t;
+        w0 = w;
+      }
+    }
+    if (axis < 0)
+    {
+      return -1;
+    }
+    left = cell;
+    cell[axis] += step;
+    if (bpOutsideCellIndexed(cell, weight))
+    {
+      plane = w0;
+      toward = float(-step);
+      point = from + first * (to - from);
+      point[axis] = w0;
+      return axis;
+    }
+  }
+  return -1;
+}
+
+// wallOnOutsideCells for Boundary `boundary`: p, advected from `before`,
+// back inside the flow on the faces; the faces met as the sides' bits, or
+// BP_WALL_MASKED_CELL where no face is found (p back at `before`).
+int bpWallOnOutsideCells(int boundary, vec3 before, inout vec3 p, float weight)
+{
+  if (!bpOutsideCell(p, weight))
+  {
+    return 0;
+  }
+  vec3 from = before, last = before;
+  int hits = 0;
+  for (int k = 0; k < BP_MASK_WALL_RULES; ++k)
+  {
+    float plane, toward;
+    vec3 point;
+    ivec3 left;
+    int a = bpFirstOutsideFace(from, p, weight, plane, toward, point, left);
+    if (a < 0)
+    {
+      p = last;
+      return hits != 0 ? hits : BP_WALL_MASKED_CELL;
+    }
+    float inside = plane + bpWallOffset * toward;
+    last = point;
+    last[a] = inside;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (j != a && bpBounded(j))
+      {
+        float lo = bpPointCoordinate(j, left[j]) + bpWallOffset;
+        float hi = bpPointCoordinate(j, left[j] + 1) - bpWallOffset;
+        last[j] = min(max(last[j], lo), hi);
+      }
+    }
+    hits |= 1 << (2 * a + (toward < 0.0 ? 1 : 0));
+    if (boundary == BP_BOUNDARY_STICK)
+    {
+      p = last;
+      return hits;
+    }
+    float beyond = abs(p[a] - plane);
+    p[a] = boundary == BP_BOUNDARY_BOUNCE
+      ? plane + toward * max(bpRestitution * beyond, bpWallOffset)
+      : inside;
+    if (!bpOutsideCell(p, weight))
+    {
+      return hits;
+    }
+    from = last;
+  }
+  p = last;
+  return hits;
+}
+
+// onOutsideFace: p, in a cell inside the flow, within two offsets of a face
+// of its cell whose neighbour across it is outside the flow.
+bool bpOnOutsideFace(vec3 p, float weight)
+{
+  if ((!bpMasked0 && !bpMasked1) || !bpFinite(p))
+  {
+    return false;
+  }
+  vec3 f;
+  ivec3 cell = bpLocateCell(p, f);
+  if (bpOutsideCellIndexed(cell, weight))
+  {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bpDegenerate[a])
+    {
+      continue;
+    }
+    ivec3 next = cell;
+    next[a] = cell[a] - 1;
+    float below = p[a] - bpPointCoordinate(a, cell[a]);
+    if (cell[a] > 0 && below >= 0.0 && below <= 2.0 * bpWallOffset &&
+      bpOutsideCellIndexed(next, weight))
+    {
+      return true;
+    }
+    next[a] = cell[a] + 1;
+    float above = bpPointCoordinate(a, cell[a] + 1) - p[a];
+    if (cell[a] < bpLastCell[a] && above >= 0.0 && above <= 2.0 * bpWallOffset &&
+      bpOutsideCellIndexed(next, weight))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // onWall: p on a side, compared exactly.
 bool bpOnWall(vec3 p)
 {
@@ -510,12 +689,13 @@ bool bpOnWall(vec3 p)
 // Whether p lies on a Wall of the Surfaces (below): Stick holds it too.
 bool bpOnSurfaceWall(vec3 p);
 
-// A particle Stick holds, on a side of the box or on a Wall of the Surfaces
-// (Engine::heldOnSurfaceWall): not advected, back where it was after
-// restoration.
-bool bpHeld(vec3 p)
+// A particle Stick holds: not advected, back where it was after restoration:
+// on a side, on a face of the cells outside the flow (at `weight`), or on a
+// Wall of the Surfaces (Engine::heldOnSurfaceWall).
+bool bpHeld(vec3 p, float weight)
 {
-  return bpBoundary == BP_BOUNDARY_STICK && (bpOnWall(p) || bpOnSurfaceWall(p));
+  return bpBoundary == BP_BOUNDARY_STICK &&
+    (bpOnWall(p) || bpOnOutsideFace(p, weight) || bpOnSurfaceWall(p));
 }
 
 // clampToBox: p put on the sides it lies beyond; the sides met.
@@ -614,10 +794,10 @@ int bpWallAfterAdvection(vec3 before, inout vec3 p)
 }
 
 // Engine::wallParticle's positions: p, advected from `before`, back into
-// the box, and back to `before` from a cell outside the flow (at the weight
-// `weight` of the step's end). Returns the sides met, with
-// BP_WALL_MASKED_CELL where it went back out of a cell outside the flow (the
-// advected texture's .w carries it to the slip share pass).
+// the box, and off the faces of the cells outside the flow (at the weight
+// `weight` of the step's end; bpWallOnOutsideCells). Returns the sides and
+// faces met, with BP_WALL_MASKED_CELL where it went back to `before` (no
+// face found; the advected texture's .w carries it to the slip share pass).
 int bpWallParticle(vec3 before, inout vec3 p, float weight)
 {
   if (!bpFinite(p))
@@ -625,12 +805,7 @@ int bpWallParticle(vec3 before, inout vec3 p, float weight)
     return 0;
   }
   int hits = bpWallAfterAdvection(before, p);
-  if (bpOutsideCell(p, weight))
-  {
-    p = before;
-    hits |= BP_WALL_MASKED_CELL;
-  }
-  return hits;
+  return hits | bpWallOnOutsideCells(bpBoundary, before, p, weight);
 }
 
 // wallVelocity on a heavy particle's slip s at its walled position p: the
@@ -664,17 +839,17 @@ vec3 bpWallSlip(int hits, vec3 p, vec3 s, float weight)
 
 // Engine::wallAfterRestoration for one particle restored to q from its
 // walled advected position a: a held one back at a, another kept in the
-// box and out of cells outside the flow.
+// box and out of cells outside the flow (Slip's rule on their faces from a).
 vec3 bpWallRestored(vec3 q, vec3 a, float weight)
 {
-  if (bpHeld(a))
+  if (bpHeld(a, weight))
   {
     return a;
   }
   bpClampToBox(q);
-  if (bpFinite(q) && bpOutsideCell(q, weight))
+  if (bpFinite(q))
   {
-    q = a;
+    bpWallOnOutsideCells(BP_BOUNDARY_SLIP, a, q, weight);
   }
   return q;
 }
@@ -687,7 +862,6 @@ vec3 bpWallRestored(vec3 q, vec3 a, float weight)
 // surfaceWallOffset of the field's domain, computed on the host.
 uniform int bpWallCount;
 uniform sampler2D bpWalls;
-uniform float bpWallOffset;
 
 vec3 bpWallCorner(int k, int c)
 {

@@ -73,7 +73,7 @@ void bpSlipParticle(int i, vec4 element, vec3 p, inout vec3 s, out vec3 move)
   {
     s = vec3(0.0); // placed anew: released with the flow's velocity
   }
-  if (bpPinned(i) || bpHeld(p))
+  if (bpPinned(i) || bpHeld(p, bpEndWeight))
   {
     return; // a particle Stick holds keeps its slip
   }

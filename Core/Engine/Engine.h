@@ -426,19 +426,22 @@ private:
   std::size_t restorationScratchFloats() const;
   /// A wall (Boundary Stick, Slip, Bounce; Walls.h) after advection for one
   /// particle: p, advected from `before`, back into the domain's box and out
-  /// of cells outside the flow (back to `before` there); a heavy particle's
-  /// `slip` (or null) by the same rule on its velocity. Returns the side the
-  /// step first met that the particle did not lie on before it (NoSide for
-  /// none, or where it went back out of a cell outside the flow), with its
-  /// point in `contact` (firstContact).
-  int wallParticle(const VectorField& field, const StepWeights& weights, const float before[3],
-    float p[3], float* slip, float contact[3]) const;
+  /// of cells outside the flow (MaskWalls.h: on their faces by the rule, or
+  /// back to `before` where no face is found); a heavy particle's `slip` (or
+  /// null) by the same rule on its velocity. True where the step met a wall
+  /// the particle did not lie on before it, with `met`'s side (NoSide for a
+  /// face of the cells outside the flow), point and outward normal filled in
+  /// (firstContact, firstOutsideFace).
+  bool wallParticle(const VectorField& field, const StepWeights& weights, const float before[3],
+    float p[3], float* slip, InteractionEvent& met) const;
   /// The wall after restoration for element e: a particle Stick holds (on a
-  /// side in `advected`, its walled position) goes back there; another
-  /// pushed out of the box is put on its side, one pushed into a cell
-  /// outside the flow back to its position in `advected`. A particle put on
-  /// a side it did not lie on in `before`, with no event yet in this step
-  /// (from `first` on in `events`), gets one there.
+  /// side or a face of the cells outside the flow in `advected`, its walled
+  /// position) goes back there; another pushed out of the box is put on its
+  /// side, one pushed into a cell outside the flow on the faces by Slip's
+  /// rule from its position in `advected` (back there where no face is
+  /// found). A particle put on a side or face it did not lie on in
+  /// `before`, with no event yet in this step (from `first` on in
+  /// `events`), gets one there.
   void wallAfterRestoration(std::size_t e, const VectorField& field, const StepWeights& weights,
     const float* before, const float* advected, std::vector<InteractionEvent>& events,
     std::size_t first);

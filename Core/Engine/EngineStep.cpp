@@ -7,9 +7,11 @@
 // Bounce) and the events' (Interactions.h) are in EngineWalls.cpp.
 #include "CounterHash.h"
 #include "Engine.h"
+#include "MaskWalls.h"
 #include "Pose.h"
 #include "ShapeMatching.h"
 #include "SpringForce.h"
+#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -267,7 +269,10 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
   const Domain& box = this->domainOf(field);
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (this->Pinned[i] || (stick && onWall(box, p + 3 * i)) ||
+    if (this->Pinned[i] ||
+      (stick &&
+        (onWall(box, p + 3 * i) ||
+          onOutsideFace(field, weights.end, surfaceWallOffset(box), p + 3 * i))) ||
       (surfaceWalls && this->heldOnSurfaceWall(field, p + 3 * i)))
     {
       continue;
@@ -284,14 +289,11 @@ void Engine::resetAndAdvect(std::size_t e, const VectorField& field, const StepW
     if (walls)
     {
       InteractionEvent met;
-      met.side =
-        this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip, met.position.data());
-      if (events && met.side != NoSide)
+      if (this->wallParticle(field, weights, before + 3 * i, p + 3 * i, slip, met) && events)
       {
         met.element = this->Ids[e];
         met.particle = std::int32_t(i);
         met.kind = wallInteraction(this->Params.boundary);
-        met.normal = sideNormal(met.side);
         events->push_back(met);
       }
     }

@@ -3,6 +3,8 @@
 // "Walls") and the events at the field's sides it records (Interactions.h,
 // 2.9): called from the step in EngineStep.cpp.
 #include "Engine.h"
+#include "MaskWalls.h"
+#include "Surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,39 +21,59 @@ inline bool finite3(const float* p)
 
 } // namespace
 
-int Engine::wallParticle(const VectorField& field, const StepWeights& weights,
-  const float before[3], float p[3], float* slip, float contact[3]) const
+bool Engine::wallParticle(const VectorField& field, const StepWeights& weights,
+  const float before[3], float p[3], float* slip, InteractionEvent& met) const
 {
   if (!finite3(p))
   {
-    return NoSide; // settle() takes the element back to its positions before the step
+    return false; // settle() takes the element back to its positions before the step
   }
   const Parameters& P = this->Params;
   const Domain& box = this->domainOf(field);
-  int side = firstContact(box, before, p, contact);
-  const WallHits hits = wallAfterAdvection(P.boundary, P.restitution, box, before, p);
-  // A cell outside the flow has no normal: the particle goes back to where
-  // it was before the step, and a heavy one stops there.
-  const bool masked = field.outsideCellAt(p, weights.end);
-  if (masked)
+  met.side = firstContact(box, before, p, met.position.data());
+  bool event = met.side != NoSide;
+  if (event)
   {
-    std::copy_n(before, 3, p);
-    side = NoSide;
+    met.normal = sideNormal(met.side);
   }
-  if (slip && (hits || masked))
+  WallHits hits = wallAfterAdvection(P.boundary, P.restitution, box, before, p);
+  if (field.hasOutsideCells())
+  {
+    // The faces of the cells outside the flow (MaskWalls.h); where none is
+    // found, back to before the step, and a heavy particle stops there.
+    const float offset = surfaceWallOffset(box);
+    MaskFace face;
+    const WallHits faces =
+      wallOnOutsideCells(P.boundary, P.restitution, offset, field, weights.end, before, p, face);
+    if (faces & WallMaskedCell)
+    {
+      event = false;
+    }
+    else if (faces && !event && !onOutsideFace(field, weights.end, offset, before))
+    {
+      event = true; // reaching the face: its outward normal, no side
+      met.side = NoSide;
+      std::copy_n(face.point, 3, met.position.data());
+      met.normal = { 0.0f, 0.0f, 0.0f };
+      met.normal[std::size_t(face.axis)] = -face.toward;
+    }
+    hits |= faces;
+  }
+  if (slip && hits)
   {
     // The rule acts on the particle's velocity v = u + slip, u the flow
     // where the wall leaves it at the step's end.
+    const bool masked = hits & WallMaskedCell;
     float u[3];
     field.sampleWeighted(p, weights.end, u);
     float v[3] = { u[0] + slip[0], u[1] + slip[1], u[2] + slip[2] };
-    wallVelocity(masked ? Boundary::Stick : P.boundary, P.restitution, masked ? 1u : hits, v);
+    wallVelocity(masked ? Boundary::Stick : P.boundary, P.restitution, hits, v);
     for (int k = 0; k < 3; ++k)
     {
       slip[k] = v[k] - u[k];
     }
   }
-  return side;
+  return event;
 }
 
 void Engine::wallAfterRestoration(std::size_t e, const VectorField& field,
@@ -62,24 +84,28 @@ void Engine::wallAfterRestoration(std::size_t e, const VectorField& field,
   float* p = this->Positions.data() + 3 * e * n;
   const Domain& box = this->domainOf(field);
   const bool stick = this->Params.boundary == Boundary::Stick;
+  const float offset = surfaceWallOffset(box);
   const std::size_t advectionEvents = events.size();
   for (std::size_t i = 0; i < n; ++i)
   {
     float* q = p + 3 * i;
     const float* a = advected + 3 * i;
-    if (stick && onWall(box, a))
+    if (stick && (onWall(box, a) || onOutsideFace(field, weights.end, offset, a)))
     {
       std::copy_n(a, 3, q); // held
       continue;
     }
     const WallHits hits = clampToBox(box, q);
-    if (finite3(q) && field.outsideCellAt(q, weights.end))
-    {
-      std::copy_n(a, 3, q);
-      continue;
-    }
-    const WallHits met = hits & ~sidesOn(box, before + 3 * i);
-    if (!met)
+    // Pushed into a cell outside the flow: Slip's rule on the faces from
+    // the advected position (back there where none is found).
+    MaskFace face;
+    const WallHits faces = finite3(q) && field.hasOutsideCells()
+      ? wallOnOutsideCells(Boundary::Slip, 0.0f, offset, field, weights.end, a, q, face)
+      : 0;
+    const WallHits met = faces & WallMaskedCell ? 0 : hits & ~sidesOn(box, before + 3 * i);
+    const bool metFace = !(faces & WallMaskedCell) && faces && !met &&
+      !onOutsideFace(field, weights.end, offset, before + 3 * i);
+    if (!met && !metFace)
     {
       continue;
     }
@@ -92,9 +118,13 @@ void Engine::wallAfterRestoration(std::size_t e, const VectorField& field,
       put.element = this->Ids[e];
       put.particle = std::int32_t(i);
       put.kind = wallInteraction(this->Params.boundary);
-      put.side = lowestSide(met);
-      put.normal = sideNormal(put.side);
-      std::copy_n(q, 3, put.position.data());
+      put.side = met ? lowestSide(met) : NoSide;
+      put.normal = met ? sideNormal(put.side) : std::array<float, 3>{ 0.0f, 0.0f, 0.0f };
+      if (!met)
+      {
+        put.normal[std::size_t(face.axis)] = -face.toward;
+      }
+      std::copy_n(met ? q : face.point, 3, put.position.data());
       events.push_back(put);
     }
   }

@@ -26,6 +26,7 @@
 
 #include "CounterHash.h"
 #include "EngineParameters.h"
+#include "MaskWalls.h"
 #include "ParticleLayout.h"
 #include "Pose.h"
 #include "Quaternion.h"
@@ -101,7 +102,9 @@ enum class KernelConstantUse
   X(BOUNDARY_STICK, Int, int(::bp::Boundary::Stick), Kernels)                                    \
   X(BOUNDARY_SLIP, Int, int(::bp::Boundary::Slip), Kernels)                                      \
   X(BOUNDARY_BOUNCE, Int, int(::bp::Boundary::Bounce), Kernels)                                \
-  X(WALL_MASKED_CELL, Int, int(::bp::WallMaskedCell), Kernels)
+  X(WALL_MASKED_CELL, Int, int(::bp::WallMaskedCell), Kernels)                                     \
+  X(MASK_WALL_CROSSINGS, Int, ::bp::MaxMaskWallCrossings, Kernels)                                 \
+  X(MASK_WALL_RULES, Int, ::bp::MaxMaskWallRules, Kernels)
 // clang-format on
 
 #endif

@@ -42,8 +42,9 @@ inline bool isWall(Boundary b)
 /// The sides a particle met: bit 2a for the lower side of axis a, bit
 /// 2a + 1 for the upper; 0 for none.
 using WallHits = unsigned;
-/// With the sides, in what the GPU engine's advect pass hands its slip share
-/// pass: the particle went back out of a cell outside the flow.
+/// With the sides (and the faces of the cells outside the flow, MaskWalls.h),
+/// in what the GPU engine's advect pass hands its slip share pass: the
+/// particle went back to before the step, no face found.
 constexpr WallHits WallMaskedCell = 1u << 6;
 
 /// Whether p lies on a side of `box` (p[a] equal to its lower or upper bound

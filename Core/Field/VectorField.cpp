@@ -418,6 +418,21 @@ bool VectorField::outsideCellOf(const float p[3], float weight) const
     (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);
 }
 
+bool VectorField::outsideCellIndexed(const int c[3], float weight) const
+{
+  const std::size_t base = std::size_t(c[0]) * this->Stride[0] +
+    std::size_t(c[1]) * this->Stride[1] + std::size_t(c[2]) * this->Stride[2];
+  return (this->FirstOutside && this->FirstOutside[base]) ||
+    (weight > 0.0f && this->SecondOutside && this->SecondOutside[base]);
+}
+
+float VectorField::pointCoordinate(int a, int i) const
+{
+  return this->Rectilinear[a]
+    ? this->AxisTable[a][2 * std::size_t(i)]
+    : this->Origin[a] + float(i + this->IndexShift[a]) / this->InverseSpacing[a];
+}
+
 float VectorField::timeWeight(double t) const
 {
   if (!this->Second.velocity)

@@ -238,6 +238,17 @@ public:
   /// The grid's bounds as a Domain.
   const Domain& domain() const { return this->Bounds; }
 
+  /// The walls of the cells outside the flow (MaskWalls.h): whether any
+  /// slice has such cells; the cell that holds p, per axis (this grid's
+  /// indices, as cellIndexAt); whether cell `c` is outside as outsideCellAt;
+  /// point i's coordinate along a (uniform: origin + i / inverse spacing in
+  /// float; rectilinear: its axisTable entry); the last cell along a.
+  bool hasOutsideCells() const { return this->FirstOutside || this->SecondOutside; }
+  inline void cellOf(const float p[3], int c[3]) const;
+  bool outsideCellIndexed(const int c[3], float weight) const;
+  float pointCoordinate(int a, int i) const;
+  int lastCellOf(int a) const { return this->LastCell[a] - this->IndexShift[a]; }
+
   /// Largest speed over the grid points of the first slice.
   double maxSpeed() const;
   /// The speed 90% of the first time step's moving points (speed above 0)
@@ -438,6 +449,17 @@ inline std::size_t VectorField::cellIndexAt(const float p[3]) const
     base += i * this->Stride[a];
   }
   return base;
+}
+
+inline void VectorField::cellOf(const float p[3], int c[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    std::size_t i;
+    float f;
+    this->locate(a, p[a], i, f);
+    c[a] = int(i);
+  }
 }
 
 inline void VectorField::prefetch(const float p[3]) const

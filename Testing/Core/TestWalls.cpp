@@ -252,10 +252,10 @@ TEST(Walls, AnyParticleLeavesNeverResetsAWalledElement)
   }
 }
 
-TEST(Walls, ACellOutsideTheFlowSendsTheParticleBackToItsStart)
+TEST(Walls, ACellOutsideTheFlowIsAWallOnItsFaces)
 {
-  // The last layer of cells (x from 0.5) is outside the flow: no normal is
-  // known there, so a particle that enters it goes back to where it was.
+  // The last layer of cells (x from 0.5) is outside the flow: a particle
+  // that would enter it stays on the face x = 0.5 (MaskWalls.h).
   bp::GridGeometry g = bptest::grid(5);
   auto v = std::make_shared<std::vector<float>>();
   for (std::size_t i = 0; i < g.pointCount(); ++i)

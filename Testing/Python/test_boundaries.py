@@ -295,4 +295,62 @@ with bptest.CapturedMessages() as said:
 bptest.check(said.mentions("Periodic along z needs the grid to have more than one point"),
              "Periodic along a flat axis is refused by name: %s" % said.messages)
 bptest.check(refused.GetNumberOfPoints() == 0, "Periodic along a flat axis: no output")
+# The boundary of a mesh as a wall (issue 58): an annulus r in [1, 2] (a
+# curvilinear mesh, resampled inside the tracer; its hole is cells outside
+# the flow) in solid-body rotation with an inward drift of 1, so every strip
+# reaches the hole's side within 0.8. With Slip the strips lie down on the
+# hole's staircase of cell faces and slide around it: no particle in the
+# hole, the elements keep turning, none released again (their centres keep
+# turning from where they started).
+annulus = ProgrammableSource(OutputDataSetType="vtkStructuredGrid")
+annulus.Script = """
+import numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkPoints
+nr, nt, nz = 9, 73, 5
+r, t, z = numpy.meshgrid(numpy.linspace(1, 2, nr), numpy.linspace(0, 2 * numpy.pi, nt),
+                         numpy.linspace(0, 0.5, nz), indexing="ij")
+xyz = numpy.stack([r * numpy.cos(t), r * numpy.sin(t), z], -1).transpose(2, 1, 0, 3).reshape(-1, 3)
+out = self.GetOutput()
+out.SetDimensions(nr, nt, nz)
+points = vtkPoints(); points.SetData(numpy_to_vtk(xyz.copy(), deep=1)); out.SetPoints(points)
+radius = numpy.hypot(xyz[:, 0], xyz[:, 1])
+v = numpy.stack([-xyz[:, 1] - xyz[:, 0] / radius, xyz[:, 0] - xyz[:, 1] / radius, 0 * radius], -1)
+v = numpy_to_vtk(v.copy(), deep=1)
+v.SetName("velocity"); out.GetPointData().AddArray(v)
+"""
+annulus.ScriptRequestInformation = """
+from paraview import util
+util.SetOutputWholeExtent(self, [0, 8, 0, 72, 0, 4])
+"""
+annulus.UpdatePipeline()
+for wall in ("Slip", "Release Again"):
+    ring = BoundParticleTracer(Input=annulus, Vectors=["POINTS", "velocity"],
+                               ElementShape="Strip4", NumberOfElements=40, ElementSize=0.15,
+                               EmitterCenter=[1.6, 0, 0.25], EmitterSize=[0.3, 0.3, 0.3],
+                               StepSizeUnit="Time", StepSize=0.01, Duration=1.5,
+                               NumberOfTimeSteps=4, LifetimeRange=[100, 100],
+                               MinimumReleaseSpeed=0, Seed=5, Boundary=wall)
+    start = vtk_to_numpy(bptest.fetch(ring, 0.0).GetPoints().GetData()).reshape(-1, N, 3)
+    end = vtk_to_numpy(bptest.fetch(ring, 1.5).GetPoints().GetData()).reshape(-1, N, 3)
+    radius = np.hypot(end[:, :, 0], end[:, :, 1])
+    before, after = start.mean(1), end.mean(1)
+    angle = np.arctan2(after[:, 1], after[:, 0]) - np.arctan2(before[:, 1], before[:, 0])
+    angle = (angle + np.pi) % (2 * np.pi) - np.pi
+    print("%s on the annulus: particles at r %.4f..%.4f at t = 1.5, %.2f of them within 0.15 "
+          "of the hole, elements turned %.3f (median; 1.5 without the wall)"
+          % (wall, radius.min(), radius.max(), np.mean(radius < 1.15), np.median(angle)))
+    if wall == "Slip":
+        bptest.check(np.all(np.isfinite(end)) and radius.min() > 0.99,
+                     "Slip: no particle in the annulus' hole (r = %.4f)" % radius.min())
+        bptest.check(np.mean(radius < 1.15) > 0.9,
+                     "Slip: the strips lie on the hole's side: %.2f" % np.mean(radius < 1.15))
+        bptest.check(np.median(angle) > 0.8,
+                     "Slip: they slide around it: turned %.3f" % np.median(angle))
+    else:
+        bptest.check(np.mean(radius < 1.15) < 0.5,
+                     "Release Again: strips that reach the hole are released again: %.2f on "
+                     "its side" % np.mean(radius < 1.15))
+    Delete(ring)
+
 bptest.finish()
