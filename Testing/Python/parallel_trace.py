@@ -62,9 +62,10 @@ def traces():
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
 
 
-def gate_and_outlet():
+def plane_of_kinds(first, second):
     """The plane x = 0 over y, z in [-1, 1] as two cells along y with the
-    cell array Kind: 0 (a Gate) for y < 0, 1 (an Outlet) for y > 0."""
+    cell array Kind (0 Gate, 1 Outlet, 2 Wall): `first` for y < 0, `second`
+    for y > 0."""
     source = ProgrammableSource(OutputDataSetType="vtkPolyData")
     source.Script = (
         "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
@@ -72,8 +73,8 @@ def gate_and_outlet():
         "p = vtkPlaneSource(); p.SetOrigin(0, -1, -1); p.SetPoint1(0, 1, -1)\n"
         "p.SetPoint2(0, -1, 1); p.SetXResolution(2); p.Update()\n"
         "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n"
-        "k = vtkIntArray(); k.SetName('Kind'); k.InsertNextValue(0); k.InsertNextValue(1)\n"
-        "out.GetCellData().AddArray(k)\n")
+        "k = vtkIntArray(); k.SetName('Kind'); k.InsertNextValue(%d); k.InsertNextValue(%d)\n"
+        "out.GetCellData().AddArray(k)\n" % (first, second))
     return source
 
 
@@ -136,8 +137,15 @@ def placement_traces():
     # number of processes.
     cases["gates"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
                                           NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
-                                          Surfaces=gate_and_outlet(),
+                                          Surfaces=plane_of_kinds(0, 1),
                                           SurfaceInteractionArray="Kind"), [0.5, 1.0])
+    # A Slip wall (y < 0) and a gate (y > 0) of the Surfaces: each particle
+    # kept off the wall on its process as on one.
+    cases["surface_walls"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                                  NumberOfElements=400, Seed=4,
+                                                  LifetimeRange=[2, 2], Boundary="Slip",
+                                                  Surfaces=plane_of_kinds(2, 0),
+                                                  SurfaceInteractionArray="Kind"), [0.5, 1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -247,6 +255,16 @@ def placement_traces():
         Input=hexes, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
         NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16]),
         [0.5, 1.0])
+    # A mesh with a spherical hole (clipped away), resampled: the hole's
+    # cells are outside the flow, and with Slip their faces are a wall.
+    holed = updated(Clip(Input=hexes, ClipType="Sphere", Invert=0))
+    holed.ClipType.Center = [1.0, 0.9, 0.8]
+    holed.ClipType.Radius = 0.45
+    holed.UpdatePipeline()
+    cases["mask_slip"] = (BoundParticleTracer(
+        Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
+        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
+        Boundary="Slip"), [0.5, 1.0])
     zones = updated(GroupDatasets(Input=[
         ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 20, 16],
                                                Bounds=[0, 1, 0, 1.8, 0, 1.6])),
@@ -381,7 +399,7 @@ def periodic_traces():
 # The cases whose Interactions output (port 3) is compared: Stick's contacts,
 # Release Again's elements leaving, back in time and straight, and the
 # passages of a gate and an outlet.
-EVENT_CASES = ("walls", "back", "back_fresh", "gates")
+EVENT_CASES = ("walls", "back", "back_fresh", "gates", "surface_walls", "mask_slip")
 EVENT_ARRAYS = (("Time", 1), ("ElementId", 1), ("ParticleIndex", 1), ("Interaction", 1),
                 ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3), ("SurfaceCell", 1))
 
