@@ -361,7 +361,7 @@ std::string vtkBoundParticleTracerInternals::checkConfiguration(const Config& co
   const std::string fallback = this->Steppers.fallBackIfTooLarge(shape, p);
   if (!fallback.empty())
   {
-    vtkErrorWithObjectMacro(this->Owner, << fallback);
+    vtkWarningWithObjectMacro(this->Owner, << fallback);
   }
   const std::string error = this->stepper().configure(shape, p);
   return error.empty() ? error : error + ".";

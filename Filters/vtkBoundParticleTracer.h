@@ -332,9 +332,9 @@ public:
   ///@}
 
   ///@{
-  /// When an element is put back into the emitter besides running out of
-  /// lifetime: Center Leaves (default, the thesis) the field, or Any Particle
-  /// Leaves it, which keeps particles from sampling outside the data.
+  /// When an element is put back into the emitter besides running out of lifetime (Boundary
+  /// Release Again; Terminate ends it, walls keep it in): Center Leaves (default, the thesis)
+  /// the field, or Any Particle Leaves it, which keeps particles from sampling outside the data.
   // Declares SetResetWhen, GetResetWhen and GetResetWhenAsString.
   vtkBPEnumMacro(ResetWhen, bp::ResetWhen);
   ///@}

@@ -5,7 +5,8 @@
  * vtkValidPointMask 0, NaN vectors: VectorField::outsideCellAt) under
  * Boundary Stick, Slip or Bounce (engine specification 2.8, "Walls"): the
  * rules for one particle, which both engines follow (the GPU engine in
- * Shaders/bp_common.glsl, bpMaskWall...).
+ * Shaders/bp_common.glsl: bpWallOnOutsideCells, bpFirstOutsideFace,
+ * bpOnOutsideFace).
  *
  * The wall is made of the faces between a cell inside the flow and a cell
  * outside it, each normal to a grid axis. A particle whose step before -> p

@@ -1,6 +1,6 @@
 # Run from the GUI's Python shell by surfaces.xml, after the frames were
-# played to t = 6 (one Next Frame at a time) with the panel's Gates and
-# Outlets settings applied to its tracer: solid-body rotation about z, 10
+# played to t = 6 (one Next Frame at a time) with the panel's Gates, Outlets
+# and Walls settings applied to its tracer: solid-body rotation about z, 10
 # squares released near (0, 0.5, 0), the Surfaces a half-plane y = 0,
 # x from 0 to 1, whose cell array Kind is 1 (Outlet) everywhere. By the
 # panel's settings it expects, from the Interactions output (port 3):

@@ -252,7 +252,7 @@ Delete(once)
 Delete(view)
 del view
 
-# A GPU that cannot hold the system: a clear error, and the display draws the
+# A GPU that cannot hold the system: a clear warning, and the display draws the
 # CPU result in the same frame.
 cpu_image = render(cpu, "Surface", None, None, "Fallback_cpu")
 with bptest.CapturedMessages() as messages:
