@@ -15,46 +15,39 @@
 
 namespace bpvtk
 {
-namespace
-{
-/// The uniforms' names in Shaders/bp_draw_vs_dec.glsl, in the order of Sampler.
-const char* const Names[DrawSamplers::Count] = { "bpPositions", "bpNormals", "bpSamples",
-  "bpElements", "bpCenters", "bpLinks", "bpPoses", "bpSpins", "bpTrailPositions", "bpTrailElements",
-  "bpAdjacency", "bpStretchRest", "bpSlips" };
-} // namespace
 
 void DrawSamplers::bindAll(vtkOpenGLRenderWindow* window, const Textures& textures)
 {
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  for (int k = 0; k < Count; ++k)
+  for (int k = 0; k < bp::DrawSamplerCount; ++k)
   {
-    this->Units[k] = units->Allocate();
+    this->Units[std::size_t(k)] = units->Allocate();
     this->bind(window, Sampler(k), textures[std::size_t(k)]);
   }
 }
 
 void DrawSamplers::bind(vtkOpenGLRenderWindow* window, Sampler sampler, unsigned texture)
 {
-  window->GetState()->vtkglActiveTexture(GLenum(GL_TEXTURE0 + this->Units[sampler]));
+  window->GetState()->vtkglActiveTexture(GLenum(GL_TEXTURE0 + this->Units[std::size_t(sampler)]));
   glBindTexture(GL_TEXTURE_2D, texture);
 }
 
 void DrawSamplers::unbindAll(vtkOpenGLRenderWindow* window)
 {
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  for (int k = 0; k < Count; ++k)
+  for (int k = 0; k < bp::DrawSamplerCount; ++k)
   {
     this->bind(window, Sampler(k), 0);
-    units->Free(this->Units[k]);
-    this->Units[k] = -1;
+    units->Free(this->Units[std::size_t(k)]);
+    this->Units[std::size_t(k)] = -1;
   }
 }
 
 void DrawSamplers::setUniforms(vtkShaderProgram* program) const
 {
-  for (int k = 0; k < Count; ++k)
+  for (int k = 0; k < bp::DrawSamplerCount; ++k)
   {
-    program->SetUniformi(Names[k], this->Units[k]);
+    program->SetUniformi(bp::drawSamplerName(Sampler(k)), this->Units[std::size_t(k)]);
   }
 }
 

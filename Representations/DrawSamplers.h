@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file DrawSamplers.h
- * @brief The GPU draw shader's samplers (Shaders/bp_draw_vs_dec.glsl) and
- * the texture units they read during one draw.
+ * @brief The GPU draw shader's samplers (Shaders/bp_draw_vs_dec.glsl) on
+ * the texture units they read during one draw; which sampler reads which
+ * texture is bp::DrawSampler's list (Gpu/GpuDrawSamplers.h), shared with the
+ * standalone step-plus-draw bench.
  *
  * Every sampler gets a unit of its own from VTK's texture unit manager, also
  * those with nothing to read (bpLinks when nothing is linked): samplers of
@@ -11,6 +13,8 @@
  */
 #ifndef BoundParticles_DrawSamplers_h
 #define BoundParticles_DrawSamplers_h
+
+#include "GpuDrawSamplers.h"
 
 #include <array>
 
@@ -23,25 +27,10 @@ namespace bpvtk
 class DrawSamplers
 {
 public:
-  /// The samplers, in the order of their names in the .cxx.
-  enum Sampler
-  {
-    Positions,
-    Normals,
-    Samples,
-    Elements,
-    Centers,
-    Links,
-    Poses,
-    Spins,
-    TrailPositions, ///< bound per trail pose (bind)
-    TrailElements,  ///< bound per trail pose (bind)
-    Corners,
-    StretchRest, ///< the template's rest offsets (DrawDeformation.h)
-    Slips,       ///< heavy particles' slips (none: reads 0)
-    Count
-  };
-  using Textures = std::array<unsigned, Count>;
+  using Sampler = bp::DrawSampler;
+  using Textures = std::array<unsigned, bp::DrawSamplerCount>;
+
+  DrawSamplers() { this->Units.fill(-1); }
 
   /// Takes a unit for every sampler and binds its 2D texture (0: none) there.
   void bindAll(vtkOpenGLRenderWindow* window, const Textures& textures);
@@ -53,7 +42,7 @@ public:
   void setUniforms(vtkShaderProgram* program) const;
 
 private:
-  int Units[Count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+  std::array<int, bp::DrawSamplerCount> Units; ///< -1 outside a draw
 };
 
 } // namespace bpvtk

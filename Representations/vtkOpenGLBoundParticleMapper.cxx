@@ -545,9 +545,8 @@ void vtkOpenGLBoundParticleMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   bpvtk::chooseTrailPoses(I.Inputs.trail, I.Queue->draw().time, I.TrailSpan + I.TrailInterval,
     this->ColorMapIsTranslucent(), I.TrailPoses);
   I.Samplers.bindAll(window,
-    { I.Inputs.positions, I.Inputs.normals, I.Inputs.samples, I.Inputs.elements, I.Inputs.centers,
-      I.LinkTable.handle(), I.Inputs.poses, I.Inputs.spins, 0u, 0u, I.CornerTable.handle(),
-      I.Deformation.handle(), I.Inputs.slips });
+    bp::drawSamplerTextures(
+      I.Inputs, { I.LinkTable.handle(), I.CornerTable.handle(), I.Deformation.handle() }));
   for (int p = PrimitiveStart; p <= PrimitiveTris; ++p)
   {
     this->DrawPrimitive(p, ren, act);
@@ -639,8 +638,8 @@ void vtkOpenGLBoundParticleMapper::DrawElementCells(
   // elements of another generation there are clipped.
   for (const bpvtk::TrailPoseDraw& t : I.TrailPoses)
   {
-    I.Samplers.bind(window, bpvtk::DrawSamplers::TrailPositions, t.positions);
-    I.Samplers.bind(window, bpvtk::DrawSamplers::TrailElements, t.elements);
+    I.Samplers.bind(window, bp::DrawSampler::TrailPositions, t.positions);
+    I.Samplers.bind(window, bp::DrawSampler::TrailElements, t.elements);
     helper.Program->SetUniformi("bpTrail", 1);
     helper.Program->SetUniformf("bpTrailAge", t.age);
     helper.Program->SetUniformf("bpFade", t.fade);

@@ -22,6 +22,11 @@
 #   fused-group  the fused step at 8, 16 and 32 elements a workgroup
 #            (BOUNDPARTICLES_FUSED_GROUP), Strip16, the first rows' size (under
 #            100 s, 16,384 particles, steady, 64^3)
+#   step-draw  the display's step plus draw without ParaView, frames per
+#            second for the step, the draw and both on each path (fused
+#            first): 1 M Strip16 particles into 1920x1080 with the display's
+#            draw shaders (BoundParticlesStepDrawBench; under 200 s of budget
+#            256 K particles, under 100 s 1,024 on a 32^3 field)
 #   threads  the CPU engine on 1, 2, 4, 8 and 16 threads, 1 M particles (issue 40)
 #   inertia  heavy particles against massless on both engines (issue 44); a
 #            budget under 200 s runs the GPU's fused path alone
@@ -32,8 +37,8 @@
 # driver's own (/usr/local/nvidia/share/glvnd/egl_vendor.d, ...) unless
 # __EGL_VENDOR_LIBRARY_FILENAMES names it.
 #
-# Writes at most 7 files into OUTDIR: summary.txt (one line per section, last),
-# host.txt, tests.txt, rows.txt, rows.csv, threads.txt, inertia.txt.
+# Writes at most 8 files into OUTDIR: summary.txt (one line per section, last),
+# host.txt, tests.txt, rows.txt, rows.csv, step-draw.txt, threads.txt, inertia.txt.
 # Exits 0 when every section is ok.
 set -uo pipefail # no -e: a failing section must not stop the others
 
@@ -157,7 +162,9 @@ elif echo "$renderer" | grep -qiE 'llvmpipe|softpipe|swrast|swiftshader|software
   else
     result gpu "failed (a software renderer, $renderer: no GPU figures; check the EGL vendor files in host.txt, or BOUNDPARTICLES_ALLOW_SOFTWARE_GPU=1 to run on it)"
     cat "$host"
-    for s in tests rows threads inertia; do result "$s" "skipped (no hardware GPU)"; done
+    for s in tests rows fused-group step-draw threads inertia; do
+      result "$s" "skipped (no hardware GPU)"
+    done
     printf '%s\n' "${results[@]}" | tee -a "$summary"
     exit 3
   fi
@@ -171,7 +178,7 @@ cat "$host"
 log="$out/tests.txt"
 : >"$log"
 if [ "$gpu_ok" = 1 ]; then
-  secs=$(share 30 80)
+  secs=$(share 30 90)
   until=$((SECONDS + secs))
   passed=0 failed=() cut=()
   # The default path on a GPU (fused) on every binary first, then the others.
@@ -243,7 +250,7 @@ minsteps="$(scale 100)"
 minsteps="${minsteps%.*}"
 [ "${minsteps:-0}" -ge 1 ] || minsteps=1
 if [ "$gpu_ok" = 1 ]; then
-  secs=$(share 35 45)
+  secs=$(share 35 55)
   why="$(run $((secs + 20)) "$out/rows.txt" "$bin/BoundParticlesGpuRows" --particles "$particles" \
     --min-time "$(scale 0.3)" --min-steps "$minsteps" --repeats 3 --threads "$cores" \
     --budget "$secs" --csv "$out/rows.csv")"
@@ -258,7 +265,7 @@ fi
 # threads) on the first rows' size, steady and unsteady, the fused column
 # alone; appended to rows.txt.
 if [ "$gpu_ok" = 1 ]; then
-  secs=$(share 15 30)
+  secs=$(share 15 40)
   until=$((SECONDS + secs))
   done_groups=() cut_groups=() why=""
   # Under 100 s: the steady rows of 16,384 particles on 64^3 fields.
@@ -293,6 +300,27 @@ if [ "$gpu_ok" = 1 ]; then
   fi
 else
   result fused-group "skipped (no OpenGL context)"
+fi
+
+# --- step-draw: the display's step plus draw, frames per second, each path ---
+# 1 M Strip16 particles (65,536 elements) into a 1920x1080 framebuffer with
+# the display's own draw shaders (bench/step_draw.cpp), the fused path first
+# (a GPU's default); a path that would end past the section's time is listed
+# as skipped. Fewer elements at a shortened budget; the framebuffer stays
+# 1920x1080.
+if [ "$gpu_ok" = 1 ]; then
+  secs=$(share 10 30)
+  if [ "$budget" -ge 200 ]; then args=(--elements 65536)
+  elif [ "$budget" -ge 100 ]; then args=(--elements 16384)
+  else args=(--elements 64 --resolution 32)
+  fi
+  why="$(run $((secs + 20)) "$out/step-draw.txt" "$bin/BoundParticlesStepDrawBench" "${args[@]}" \
+    --paths fused,compute,fragment --min-time "$(scale 0.3)" --min-frames "$minsteps" \
+    --repeats 3 --seconds "$secs")"
+  fps="$(sed -n 's/^step+draw: //p' "$out/step-draw.txt")"
+  result step-draw "$([ -z "$why" ] && echo "ok ($fps)" || echo "failed ($why; see step-draw.txt)")"
+else
+  result step-draw "skipped (no OpenGL context)"
 fi
 
 # --- threads: the CPU engine on 1 to 16 threads, 1 M particles ---------------

@@ -33,8 +33,8 @@ fail() {
   exit 1
 }
 
-bins=(BoundParticlesGpuInfo BoundParticlesGpuRows BoundParticlesBench BoundParticlesThreadsBench
-  BoundParticlesInertiaBench BoundParticlesGpuTests BoundParticlesPhysicsTests
+bins=(BoundParticlesGpuInfo BoundParticlesGpuRows BoundParticlesStepDrawBench BoundParticlesBench
+  BoundParticlesThreadsBench BoundParticlesInertiaBench BoundParticlesGpuTests BoundParticlesPhysicsTests
   BoundParticlesInertiaTests BoundParticlesDeformationTests BoundParticlesGpuPathTests)
 # The libraries every x86-64 Linux has (glibc and the compiler's runtime):
 # never carried. Anything else ldd names is.
