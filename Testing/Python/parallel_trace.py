@@ -62,20 +62,36 @@ def traces():
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
 
 
-def plane_of_kinds(first, second):
-    """The plane x = 0 over y, z in [-1, 1] as two cells along y with the
-    cell array Kind (0 Gate, 1 Outlet, 2 Wall): `first` for y < 0, `second`
-    for y > 0."""
+def plane_of_kinds(first, second, at=(0.0, 0.0, 0.0)):
+    """The plane x = 0 over y, z in [-1, 1], moved by `at`, as two cells
+    along y with the cell array Kind (0 Gate, 1 Outlet, 2 Wall): `first` for
+    y < 0, `second` for y > 0. Its points in double (far from the origin a
+    float would move them)."""
+    x, y, z = at
     source = ProgrammableSource(OutputDataSetType="vtkPolyData")
     source.Script = (
         "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
         "from vtkmodules.vtkCommonCore import vtkIntArray\n"
-        "p = vtkPlaneSource(); p.SetOrigin(0, -1, -1); p.SetPoint1(0, 1, -1)\n"
-        "p.SetPoint2(0, -1, 1); p.SetXResolution(2); p.Update()\n"
+        "p = vtkPlaneSource(); p.SetOutputPointsPrecision(1)\n"
+        "p.SetOrigin(%r, %r, %r); p.SetPoint1(%r, %r, %r)\n"
+        "p.SetPoint2(%r, %r, %r); p.SetXResolution(2); p.Update()\n"
         "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n"
         "k = vtkIntArray(); k.SetName('Kind'); k.InsertNextValue(%d); k.InsertNextValue(%d)\n"
-        "out.GetCellData().AddArray(k)\n" % (first, second))
+        "out.GetCellData().AddArray(k)\n" % (x, y - 1, z - 1, x, y + 1, z - 1, x, y - 1, z + 1,
+                                               first, second))
     return source
+
+
+# Far from the origin, at a negative y: where the far variants of the
+# Surfaces' cases (gates_far, surface_walls_far, mask_slip_far) move their
+# field and surfaces. The engines work relative to the field's first point
+# (engine specification, section 5), so 1e7 loses nothing in float.
+FAR = (1.0e7 + 0.375, -2.5e6 - 0.625, 0.0)
+
+
+def moved(bounds, at=FAR):
+    """`bounds` (x0, x1, y0, y1, z0, z1) moved by `at`."""
+    return [b + at[k // 2] for k, b in enumerate(bounds)]
 
 
 def placement_traces():
@@ -265,6 +281,7 @@ def placement_traces():
         Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
         NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
         Boundary="Slip"), [0.5, 1.0])
+    cases.update(far_surface_traces())
     zones = updated(GroupDatasets(Input=[
         ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 20, 16],
                                                Bounds=[0, 1, 0, 1.8, 0, 1.6])),
@@ -304,6 +321,34 @@ def placement_traces():
             FileName=[os.path.join(args.data, "combustor.vti")]))
         cases["combustor"] = (BoundParticleTracer(
             Input=combustor, ElementShape="Strip4", NumberOfElements=600, Seed=10), None)
+    return cases
+
+
+def far_surface_traces():
+    """gates, surface_walls and mask_slip moved by FAR, the Surfaces and the
+    hole with their fields: the passages, slides and ends the same on any
+    number of processes (test_parallel.py: EVENT_KINDS says which must
+    occur)."""
+    hurricane = updated(AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24],
+                                     Bounds=moved([-1, 1, -1, 1, -1, 1])))
+    cases = {}
+    for name, kinds, extra in (("gates_far", (0, 1), {}),
+                               ("surface_walls_far", (2, 0), {"Boundary": "Slip"})):
+        cases[name] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
+                                           NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
+                                           Surfaces=plane_of_kinds(*kinds, at=FAR),
+                                           SurfaceInteractionArray="Kind", **extra), [0.5, 1.0])
+    abc = updated(AnalyticFlow(Flow="ABC", Resolution=[24, 20, 16],
+                               Bounds=moved([0, 2, 0, 1.8, 0, 1.6])))
+    holed = Clip(Input=CleantoGrid(Input=ImageDatatoPointSet(Input=abc)), ClipType="Sphere",
+                 Invert=0)
+    holed.ClipType.Center = moved([1.0, 1.0, 0.9, 0.9, 0.8, 0.8])[::2]
+    holed.ClipType.Radius = 0.45
+    holed.UpdatePipeline()
+    cases["mask_slip_far"] = (BoundParticleTracer(
+        Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
+        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
+        Boundary="Slip"), [0.5, 1.0])
     return cases
 
 
@@ -397,9 +442,11 @@ def periodic_traces():
 
 
 # The cases whose Interactions output (port 3) is compared: Stick's contacts,
-# Release Again's elements leaving, back in time and straight, and the
-# passages of a gate and an outlet.
-EVENT_CASES = ("walls", "back", "back_fresh", "gates", "surface_walls", "mask_slip")
+# Release Again's elements leaving, back in time and straight, the passages
+# of a gate and an outlet, the slides along a wall of the Surfaces and along
+# a mesh's hole, near the origin and far from it.
+EVENT_CASES = ("walls", "back", "back_fresh", "gates", "surface_walls", "mask_slip",
+               "gates_far", "surface_walls_far", "mask_slip_far")
 EVENT_ARRAYS = (("Time", 1), ("ElementId", 1), ("ParticleIndex", 1), ("Interaction", 1),
                 ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3), ("SurfaceCell", 1))
 
@@ -518,5 +565,6 @@ if args.render:
     del view
 
 result["periodic_extents"] = periodic_extents()
+result["far_offset"] = numpy.array(FAR)  # test_parallel.py: check_far_moved
 numpy.savez(args.output, **result)
 print("wrote", args.output)
