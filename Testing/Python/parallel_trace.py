@@ -151,17 +151,10 @@ def placement_traces():
     # plane x = 0 in two cells, a gate (y < 0) and an outlet (y > 0) by a
     # cell array; the passages gathered on process 0 are the same on any
     # number of processes.
-    cases["gates"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                          NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
-                                          Surfaces=plane_of_kinds(0, 1),
-                                          SurfaceInteractionArray="Kind"), [0.5, 1.0])
+    cases["gates"] = (plane_tracer(hurricane, (0, 1)), [0.5, 1.0])
     # A Slip wall (y < 0) and a gate (y > 0) of the Surfaces: each particle
     # kept off the wall on its process as on one.
-    cases["surface_walls"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                                  NumberOfElements=400, Seed=4,
-                                                  LifetimeRange=[2, 2], Boundary="Slip",
-                                                  Surfaces=plane_of_kinds(2, 0),
-                                                  SurfaceInteractionArray="Kind"), [0.5, 1.0])
+    cases["surface_walls"] = (plane_tracer(hurricane, (2, 0), Boundary="Slip"), [0.5, 1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -273,14 +266,7 @@ def placement_traces():
         [0.5, 1.0])
     # A mesh with a spherical hole (clipped away), resampled: the hole's
     # cells are outside the flow, and with Slip their faces are a wall.
-    holed = updated(Clip(Input=hexes, ClipType="Sphere", Invert=0))
-    holed.ClipType.Center = [1.0, 0.9, 0.8]
-    holed.ClipType.Radius = 0.45
-    holed.UpdatePipeline()
-    cases["mask_slip"] = (BoundParticleTracer(
-        Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
-        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
-        Boundary="Slip"), [0.5, 1.0])
+    cases["mask_slip"] = (hole_tracer(hexes, [1.0, 0.9, 0.8]), [0.5, 1.0])
     cases.update(far_surface_traces())
     zones = updated(GroupDatasets(Input=[
         ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 20, 16],
@@ -326,30 +312,40 @@ def placement_traces():
 
 def far_surface_traces():
     """gates, surface_walls and mask_slip moved by FAR, the Surfaces and the
-    hole with their fields: the passages, slides and ends the same on any
-    number of processes (test_parallel.py: EVENT_KINDS says which must
-    occur)."""
+    hole with their fields: the same passages, slides and ends on any number
+    of processes as near the origin (test_parallel.py: REQUIRED_EVENTS says
+    which must occur, check_far_moved compares them with the near cases')."""
     hurricane = updated(AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24],
                                      Bounds=moved([-1, 1, -1, 1, -1, 1])))
-    cases = {}
-    for name, kinds, extra in (("gates_far", (0, 1), {}),
-                               ("surface_walls_far", (2, 0), {"Boundary": "Slip"})):
-        cases[name] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                           NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
-                                           Surfaces=plane_of_kinds(*kinds, at=FAR),
-                                           SurfaceInteractionArray="Kind", **extra), [0.5, 1.0])
     abc = updated(AnalyticFlow(Flow="ABC", Resolution=[24, 20, 16],
                                Bounds=moved([0, 2, 0, 1.8, 0, 1.6])))
-    holed = Clip(Input=CleantoGrid(Input=ImageDatatoPointSet(Input=abc)), ClipType="Sphere",
-                 Invert=0)
-    holed.ClipType.Center = moved([1.0, 1.0, 0.9, 0.9, 0.8, 0.8])[::2]
+    hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=abc)))
+    return {"gates_far": (plane_tracer(hurricane, (0, 1), at=FAR), [0.5, 1.0]),
+            "surface_walls_far": (plane_tracer(hurricane, (2, 0), at=FAR, Boundary="Slip"),
+                                  [0.5, 1.0]),
+            "mask_slip_far": (hole_tracer(hexes, moved([1.0, 1.0, 0.9, 0.9, 0.8, 0.8])[::2]),
+                              [0.5, 1.0])}
+
+
+def plane_tracer(hurricane, kinds, at=(0.0, 0.0, 0.0), **extra):
+    """Crosses in `hurricane` with plane_of_kinds(*kinds), moved by `at`, as
+    the Surfaces (gates, surface_walls)."""
+    return BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                               Seed=4, LifetimeRange=[2, 2], Surfaces=plane_of_kinds(*kinds, at=at),
+                               SurfaceInteractionArray="Kind", **extra)
+
+
+def hole_tracer(hexes, centre):
+    """Crosses in the mesh `hexes` with a spherical hole of radius 0.45 at
+    `centre` clipped away, resampled, Slip on the hole's faces (mask_slip)."""
+    holed = updated(Clip(Input=hexes, ClipType="Sphere", Invert=0))
+    holed.ClipType.Center = centre
     holed.ClipType.Radius = 0.45
     holed.UpdatePipeline()
-    cases["mask_slip_far"] = (BoundParticleTracer(
+    return BoundParticleTracer(
         Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
         NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
-        Boundary="Slip"), [0.5, 1.0])
-    return cases
+        Boundary="Slip")
 
 
 def ftle_trace():
