@@ -56,6 +56,17 @@ struct Counts
   int replaced = 0;   ///< of those, placed again by the end
 };
 
+/// The grid over [-1, 1]^3 with `points` points a side, every field's here.
+bp::GridGeometry cubeGrid(int points)
+{
+  bp::GridGeometry g;
+  g.dims = { points, points, points };
+  g.origin = { -1.0, -1.0, -1.0 };
+  const double h = 2.0 / (points - 1);
+  g.spacing = { h, h, h };
+  return g;
+}
+
 /// The boundary tests' common trace: 300 elements of size 0.1 released in
 /// [-0.9, 0.9]^3 with lifetimes in [lifetimeMin, lifetimeMax], two iterations,
 /// the case's shape, integrator, restoration and boundary.
@@ -94,13 +105,87 @@ struct EnginePair
   }
 };
 
+/// The GPU engine's state read back: positions, generations, flags, hidden
+/// elements and, where asked, slip velocities.
+struct GpuReadback
+{
+  std::vector<float> x, generations, flags, hidden, slips;
+
+  GpuReadback(const bp::GpuStepper& gpu, bool withSlips = false)
+  {
+    gpu.engine().read(&this->x, nullptr, nullptr);
+    gpu.engine().readElements(
+      nullptr, &this->generations, nullptr, nullptr, &this->flags, &this->hidden);
+    if (withSlips)
+      gpu.engine().readSlips(this->slips);
+  }
+  /// The GPU's hidden: centre .w 1 (release window) or 2 (terminated), or a
+  /// test's flag of 2 (terminated in the last step).
+  bool hiddenAt(std::size_t e) const { return this->hidden[e] > 0.5f || this->flags[e] > 1.5f; }
+};
+
+/// The GPU engine against the CPU engine over a run's checks: per element,
+/// whether its positions (and heavy particles' slips, times the step) were
+/// ever further apart than 1e-4 of the diagonal of [-1, 1]^3 (every field
+/// here), the largest difference of those never apart, and the generations
+/// and hidden elements apart, summed over the checks.
+struct Parity
+{
+  std::size_t n; ///< particles per element
+  std::vector<std::uint8_t> apart;
+  int generationsApart = 0, hiddenApart = 0;
+  double worstKept = 0.0;
+
+  Parity(std::size_t elements, std::size_t particlesPerElement)
+    : n(particlesPerElement)
+    , apart(elements, 0)
+  {
+  }
+
+  /// Reads the GPU engine back (its slips too where `slipStep` > 0, weighed
+  /// by it) and compares it with `cpu`; returns what it read.
+  GpuReadback check(const bp::GpuStepper& gpu, const bp::Engine& cpu, double slipStep = 0.0)
+  {
+    const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
+    GpuReadback r(gpu, slipStep > 0.0);
+    for (std::size_t e = 0; e < this->apart.size(); ++e)
+    {
+      double worst = 0.0;
+      for (std::size_t q = 3 * e * this->n; q < 3 * (e + 1) * this->n; ++q)
+      {
+        worst = std::max(worst, double(std::abs(r.x[q] - cpu.positions()[q])));
+        if (slipStep > 0.0)
+          worst = std::max(worst, slipStep * double(std::abs(r.slips[q] - cpu.slips()[q])));
+      }
+      this->apart[e] = this->apart[e] || !(worst < tolerance);
+      if (!this->apart[e])
+        this->worstKept = std::max(this->worstKept, worst);
+      this->generationsApart += r.generations[e] != float(cpu.generations()[e]);
+      this->hiddenApart += r.hiddenAt(e) != ((cpu.resetFlags()[e] & bp::HiddenFlags) != 0);
+    }
+    return r;
+  }
+
+  long elementsApart() const
+  {
+    return std::count(this->apart.begin(), this->apart.end(), std::uint8_t(1));
+  }
+
+  /// At most 1% of the elements apart (one that meets a side, a seam, a wall
+  /// or an outlet within a rounding of it on one engine only: the edge
+  /// exception); at most `allowed` hidden elements and generations apart.
+  void expectAgree(int allowed) const
+  {
+    EXPECT_LE(this->elementsApart(), long(this->apart.size() / 100)) << "elements apart";
+    EXPECT_LE(this->hiddenApart, allowed) << "hidden elements apart";
+    EXPECT_LE(this->generationsApart, allowed) << "generations apart";
+  }
+};
+
 Counts compareEngines(const BoundaryCase& c)
 {
   Counts counts;
-  bp::GridGeometry g;
-  g.dims = { 24, 24, 24 };
-  g.origin = { -1.0, -1.0, -1.0 };
-  g.spacing = { 2.0 / 23, 2.0 / 23, 2.0 / 23 };
+  bp::GridGeometry g = cubeGrid(24);
   bp::FieldSlice s;
   s.velocity =
     std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(bp::AnalyticFlow::ABC, g, 0.0));
@@ -123,19 +208,13 @@ Counts compareEngines(const BoundaryCase& c)
     if (k % 10 != 9)
       continue;
     const bp::Engine& E = cpu.engine();
-    std::vector<float> x, generations, flags, hidden;
-    gpu.engine().read(&x, nullptr, nullptr);
-    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-    for (std::size_t q = 0; q < x.size(); ++q)
-      worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
+    const GpuReadback r(gpu);
+    for (std::size_t q = 0; q < r.x.size(); ++q)
+      worst = std::max(worst, double(std::abs(r.x[q] - E.positions()[q])));
     for (std::size_t e = 0; e < elements; ++e)
     {
-      // The GPU's hidden: centre .w 1 (release window) or 2 (terminated),
-      // or a test's flag of 2 (terminated in the last step).
-      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
-      const bool cpuHidden = (E.resetFlags()[e] & bp::HiddenFlags) != 0;
-      hiddenApart += gpuHidden != cpuHidden;
-      generationsApart += generations[e] != float(E.generations()[e]);
+      hiddenApart += r.hiddenAt(e) != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
+      generationsApart += r.generations[e] != float(E.generations()[e]);
       if (E.resetFlags()[e] & bp::Terminated)
       {
         counts.terminated += terminatedAt[e] == 0;
@@ -199,10 +278,7 @@ struct WallCase
 /// with `staircase` those with x + y > 0.5 (a diagonal of cell faces).
 bp::VectorField wallField(bool masked, bool staircase = false)
 {
-  bp::GridGeometry g;
-  g.dims = { 24, 24, 24 };
-  g.origin = { -1.0, -1.0, -1.0 };
-  g.spacing = { 2.0 / 23, 2.0 / 23, 2.0 / 23 };
+  bp::GridGeometry g = cubeGrid(24);
   bp::FieldSlice s;
   auto velocity =
     std::make_shared<std::vector<float>>(bp::sampleAnalyticFlow(bp::AnalyticFlow::ABC, g, 0.0));
@@ -243,10 +319,7 @@ int compareWalls(const WallCase& c)
   bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
-  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
-  std::vector<std::uint8_t> apart(elements, 0);
-  int generationsApart = 0, hiddenApart = 0;
-  double worstKept = 0.0;
+  Parity parity(elements, n);
   int nearWall = 0, inCellOutside = 0, onFace = 0;
   for (int k = 0; k < 150; ++k)
   {
@@ -269,11 +342,7 @@ int compareWalls(const WallCase& c)
     if (k % 10 != 9)
       continue;
     const bp::Engine& E = cpu.engine();
-    std::vector<float> x, generations, flags, hidden, slips;
-    gpu.engine().read(&x, nullptr, nullptr);
-    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-    if (c.heavy)
-      gpu.engine().readSlips(slips);
+    parity.check(gpu, E, c.heavy ? dt : 0.0);
     const bp::Domain& box = field.domain();
     for (std::size_t q = 0; q < E.positions().size(); q += 3)
       onFace +=
@@ -283,22 +352,6 @@ int compareWalls(const WallCase& c)
       const float x = E.positions()[q];
       nearWall += std::min(x - box.lower[q % 3], box.upper[q % 3] - x) < 0.02f ? 1 : 0;
     }
-    for (std::size_t e = 0; e < elements; ++e)
-    {
-      double worst = 0.0;
-      for (std::size_t q = 3 * e * n; q < 3 * (e + 1) * n; ++q)
-      {
-        worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
-        if (c.heavy)
-          worst = std::max(worst, dt * double(std::abs(slips[q] - E.slips()[q])));
-      }
-      apart[e] = apart[e] || !(worst < tolerance);
-      if (!apart[e])
-        worstKept = std::max(worstKept, worst);
-      generationsApart += generations[e] != float(E.generations()[e]);
-      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
-      hiddenApart += gpuHidden != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
-    }
   }
   const bp::Engine& E = cpu.engine();
   int onWall = 0, outside = 0;
@@ -307,16 +360,14 @@ int compareWalls(const WallCase& c)
     onWall += bp::onWall(field.domain(), E.positions().data() + q) ? 1 : 0;
     outside += field.domain().contains(E.positions().data() + q) ? 0 : 1;
   }
-  const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
   std::printf("%s, integrator %d, restoration %d, boundary %d%s%s: positions within %.3g but for "
               "%ld elements; %d particles on a wall at the end, %d near one; %d hidden, %d "
               "generations apart; %d on a face of the cells outside the flow, %d in one\n",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
-    c.heavy ? ", heavy" : "", c.masked ? (c.staircase ? ", staircase" : ", masked") : "", worstKept,
-    elementsApart, onWall, nearWall, hiddenApart, generationsApart, onFace, inCellOutside);
-  EXPECT_LE(elementsApart, long(elements / 100));
-  EXPECT_EQ(generationsApart, 0);
-  EXPECT_EQ(hiddenApart, 0);
+    c.heavy ? ", heavy" : "", c.masked ? (c.staircase ? ", staircase" : ", masked") : "",
+    parity.worstKept, parity.elementsApart(), onWall, nearWall, parity.hiddenApart,
+    parity.generationsApart, onFace, inCellOutside);
+  parity.expectAgree(0);
   EXPECT_EQ(outside, 0);
   EXPECT_EQ(inCellOutside, 0);
   if (c.masked && c.boundary == bp::Boundary::Stick)
@@ -388,10 +439,7 @@ namespace
 /// and again and meet the z sides.
 bp::VectorField periodicField()
 {
-  bp::GridGeometry g;
-  g.dims = { 24, 24, 24 };
-  g.origin = { -1.0, -1.0, -1.0 };
-  g.spacing = { 2.0 / 23, 2.0 / 23, 2.0 / 23 };
+  bp::GridGeometry g = cubeGrid(24);
   g.periodic = { true, true, false };
   auto velocity = std::make_shared<std::vector<float>>();
   for (int k = 0; k < 24; ++k)
@@ -427,11 +475,9 @@ int comparePeriodic(const BoundaryCase& c)
   bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
-  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
-  std::vector<std::uint8_t> apart(elements, 0);
+  Parity parity(elements, n);
   std::vector<float> centres(3 * elements, 0.0f);
-  int generationsApart = 0, hiddenApart = 0, crossings = 0;
-  double worstKept = 0.0;
+  int crossings = 0;
   for (int k = 0; k < 150; ++k)
   {
     cpu.step(k * dt, dt);
@@ -449,33 +495,16 @@ int comparePeriodic(const BoundaryCase& c)
         centres[3 * e + a] = centre[a];
       }
     }
-    if (k % 10 != 9)
-      continue;
-    std::vector<float> x, generations, flags, hidden;
-    gpu.engine().read(&x, nullptr, nullptr);
-    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-    for (std::size_t e = 0; e < elements; ++e)
-    {
-      double worst = 0.0;
-      for (std::size_t q = 3 * e * n; q < 3 * (e + 1) * n; ++q)
-        worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
-      apart[e] = apart[e] || !(worst < tolerance);
-      if (!apart[e])
-        worstKept = std::max(worstKept, worst);
-      generationsApart += generations[e] != float(E.generations()[e]);
-      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
-      hiddenApart += gpuHidden != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
-    }
+    if (k % 10 == 9)
+      parity.check(gpu, E);
   }
-  const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
   std::printf("%s, integrator %d, restoration %d, reset when %d, boundary %d, periodic x and y: "
               "positions within %.3g but for %ld elements; %d seam crossings; %d hidden, %d "
               "generations apart\n",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.resetWhen), int(c.boundary),
-    worstKept, elementsApart, crossings, hiddenApart, generationsApart);
-  EXPECT_LE(elementsApart, long(elements / 100));
-  EXPECT_EQ(generationsApart, 0);
-  EXPECT_EQ(hiddenApart, 0);
+    parity.worstKept, parity.elementsApart(), crossings, parity.hiddenApart,
+    parity.generationsApart);
+  parity.expectAgree(0);
   return crossings;
 }
 } // namespace
@@ -504,10 +533,7 @@ namespace
 /// points a side.
 bp::VectorField rotationField()
 {
-  bp::GridGeometry g;
-  g.dims = { 24, 24, 24 };
-  g.origin = { -1.0, -1.0, -1.0 };
-  g.spacing = { 2.0 / 23, 2.0 / 23, 2.0 / 23 };
+  bp::GridGeometry g = cubeGrid(24);
   bp::FieldSlice s;
   s.velocity = std::make_shared<std::vector<float>>(
     bp::sampleAnalyticFlow(bp::AnalyticFlow::SolidBodyRotation, g, 0.0));
@@ -569,11 +595,9 @@ int compareOutlets(const BoundaryCase& c)
   bp::CpuStepper& cpu = engines.cpu;
   bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
-  const std::size_t elements = p.numberOfElements, n = shape.particleCount();
-  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
-  std::vector<std::uint8_t> apart(elements, 0);
-  int generationsApart = 0, hiddenApart = 0, terminated = 0;
-  double worstKept = 0.0;
+  const std::size_t elements = p.numberOfElements;
+  Parity parity(elements, shape.particleCount());
+  int terminated = 0;
   for (int k = 0; k < 150; ++k)
   {
     const std::vector<std::uint8_t> flagsBefore = cpu.engine().resetFlags();
@@ -586,43 +610,26 @@ int compareOutlets(const BoundaryCase& c)
       // Terminate (a wall, or Release Again); counted at once for Terminate.
       terminated += (E.resetFlags()[e] & bp::Terminated) && !(flagsBefore[e] & bp::Terminated);
     }
-    if (k % 10 != 9)
-      continue;
-    std::vector<float> x, generations, flags, hidden;
-    gpu.engine().read(&x, nullptr, nullptr);
-    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-    for (std::size_t e = 0; e < elements; ++e)
-    {
-      double worst = 0.0;
-      for (std::size_t q = 3 * e * n; q < 3 * (e + 1) * n; ++q)
-        worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
-      apart[e] = apart[e] || !(worst < tolerance);
-      if (!apart[e])
-        worstKept = std::max(worstKept, worst);
-      generationsApart += generations[e] != float(E.generations()[e]);
-      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
-      hiddenApart += gpuHidden != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
-    }
+    if (k % 10 == 9)
+      parity.check(gpu, E);
   }
-  const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
   std::printf("%s, integrator %d, restoration %d, reset when %d, boundary %d, an outlet: "
               "positions within %.3g but for %ld elements; %d terminated; %d hidden, %d "
               "generations apart\n",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.resetWhen), int(c.boundary),
-    worstKept, elementsApart, terminated, hiddenApart, generationsApart);
-  EXPECT_LE(elementsApart, long(elements / 100));
-  EXPECT_LE(hiddenApart, int(elements / 100));
-  EXPECT_LE(generationsApart, int(elements / 100));
+    parity.worstKept, parity.elementsApart(), terminated, parity.hiddenApart,
+    parity.generationsApart);
+  parity.expectAgree(int(elements / 100));
   return terminated;
 }
 
 /// The GPU engine's positions, generations, flags and hidden elements after
-/// 60 steps in rotationField() with `surfaces`.
-std::vector<float> gpuTrace(
-  const bp::ElementTemplate& shape, std::shared_ptr<const bp::SurfaceSet> surfaces)
+/// 60 steps in rotationField() with `surfaces` and the boundary `boundary`.
+std::vector<float> gpuTrace(const bp::ElementTemplate& shape,
+  std::shared_ptr<const bp::SurfaceSet> surfaces, bp::Boundary boundary = bp::Boundary::Terminate)
 {
-  bp::Parameters p = boundaryTrace(
-    bp::Integrator::RK4, bp::Restoration::AveragedJacobi, bp::Boundary::Terminate, 0.2f, 0.5f, 13);
+  bp::Parameters p =
+    boundaryTrace(bp::Integrator::RK4, bp::Restoration::AveragedJacobi, boundary, 0.2f, 0.5f, 13);
   p.surfaces = std::move(surfaces);
   bp::GpuStepper gpu;
   EXPECT_EQ(gpu.configure(shape, p), "");
@@ -630,12 +637,10 @@ std::vector<float> gpuTrace(
   gpu.initialize(0.0);
   for (int k = 0; k < 60; ++k)
     gpu.step(k * 0.01, 0.01);
-  std::vector<float> x, generations, flags, hidden;
-  gpu.engine().read(&x, nullptr, nullptr);
-  gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-  for (const std::vector<float>* v : { &generations, &flags, &hidden })
-    x.insert(x.end(), v->begin(), v->end());
-  return x;
+  GpuReadback r(gpu);
+  for (const std::vector<float>* v : { &r.generations, &r.flags, &r.hidden })
+    r.x.insert(r.x.end(), v->begin(), v->end());
+  return r.x;
 }
 } // namespace
 
@@ -683,21 +688,32 @@ TEST(GpuBoundary, GatesAndAnOutletOutOfTheWayChangeNothing)
     "surfaces that end nothing: %ld values apart; %ld of 300 elements hidden\n", differ, hidden);
 }
 
+namespace
+{
+/// What the GPU engine's configure says to `limit` + 1 triangles of `kind`
+/// under the boundary `boundary`.
+std::string configureMoreThan(std::size_t limit, bp::SurfaceInteraction kind, bp::Boundary boundary)
+{
+  bp::SurfaceTriangles t;
+  for (std::size_t k = 0; k <= limit; ++k)
+  {
+    const float x = float(k) / float(limit);
+    t.corners.insert(t.corners.end(), { x, 0, 0, x, 1, 0, x, 0, 1 });
+  }
+  t.interaction.assign(limit + 1, kind);
+  bp::Parameters p =
+    boundaryTrace(bp::Integrator::Euler, bp::Restoration::AveragedJacobi, boundary, 1, 1, 1);
+  p.surfaces = std::make_shared<bp::SurfaceSet>(t);
+  bp::GpuStepper gpu;
+  return gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p);
+}
+} // namespace
+
 TEST(GpuBoundary, RefusesMoreOutletTrianglesThanItTests)
 {
   ASSERT_TRUE(bp::haveSharedContext());
-  bp::SurfaceTriangles t;
-  for (std::size_t k = 0; k <= bp::GpuMaxOutletTriangles; ++k)
-  {
-    const float x = float(k) / float(bp::GpuMaxOutletTriangles);
-    t.corners.insert(t.corners.end(), { x, 0, 0, x, 1, 0, x, 0, 1 });
-  }
-  t.interaction.assign(bp::GpuMaxOutletTriangles + 1, bp::SurfaceInteraction::Outlet);
-  bp::Parameters p = boundaryTrace(
-    bp::Integrator::Euler, bp::Restoration::AveragedJacobi, bp::Boundary::ReleaseAgain, 1, 1, 1);
-  p.surfaces = std::make_shared<bp::SurfaceSet>(t);
-  bp::GpuStepper gpu;
-  const std::string error = gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p);
+  const std::string error = configureMoreThan(
+    bp::GpuMaxOutletTriangles, bp::SurfaceInteraction::Outlet, bp::Boundary::ReleaseAgain);
   EXPECT_NE(error.find("4097 Outlet triangles"), std::string::npos) << error;
   EXPECT_EQ(bp::gpuOutletError(bp::GpuMaxOutletTriangles), "");
 }
@@ -891,10 +907,7 @@ struct SurfaceWallCase
 /// The uniform flow (0.8, 0.25, 0.1) on [-1, 1]^3, 12 points a side.
 bp::VectorField uniformField()
 {
-  bp::GridGeometry g;
-  g.dims = { 12, 12, 12 };
-  g.origin = { -1.0, -1.0, -1.0 };
-  g.spacing = { 2.0 / 11, 2.0 / 11, 2.0 / 11 };
+  bp::GridGeometry g = cubeGrid(12);
   bp::FieldSlice s;
   auto velocity = std::make_shared<std::vector<float>>(3 * g.pointCount());
   for (std::size_t k = 0; k < g.pointCount(); ++k)
@@ -1013,15 +1026,13 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   bp::GpuStepper& gpu = engines.gpu;
   const double dt = 0.01;
   const std::size_t elements = p.numberOfElements, n = shape.particleCount();
-  const double tolerance = 1e-4 * 2.0 * std::sqrt(3.0);
   const bool particles = bp::isWall(c.boundary);
   const bool stick = c.boundary == bp::Boundary::Stick;
   const float resting = 2.0f * bp::surfaceWallOffset(field.domain());
-  std::vector<std::uint8_t> apart(elements, 0);
-  int generationsApart = 0, hiddenApart = 0, met = 0, beyond = 0;
+  Parity parity(elements, n);
+  int met = 0, beyond = 0;
   long held = 0, heldMoved = 0;
   std::vector<float> heldBefore, generationsBefore;
-  double worstKept = 0.0;
   for (int k = 0; k < 150; ++k)
   {
     const std::vector<std::uint8_t> flagsBefore = cpu.engine().resetFlags();
@@ -1037,11 +1048,9 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
     }
     if (k % 10 != 9)
       continue;
-    std::vector<float> x, generations, flags, hidden, slips;
-    gpu.engine().read(&x, nullptr, nullptr);
-    gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-    if (c.heavy)
-      gpu.engine().readSlips(slips);
+    const GpuReadback r = parity.check(gpu, E, c.heavy ? dt : 0.0);
+    const std::vector<float>& x = r.x;
+    const std::vector<float>& generations = r.generations;
     for (std::size_t q = 0; stick && !heldBefore.empty() && q < x.size(); q += 3)
     {
       // Held ten steps before (Stick), its element not placed again since.
@@ -1062,24 +1071,7 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
       beyond += tilted && x[q] + 0.3f * x[q + 1] - 0.4f > 0.0f;
       beyond += corner && (x[q] > 0.5f || x[q + 1] > 0.6f);
     }
-    for (std::size_t e = 0; e < elements; ++e)
-    {
-      double worst = 0.0;
-      for (std::size_t q = 3 * e * n; q < 3 * (e + 1) * n; ++q)
-      {
-        worst = std::max(worst, double(std::abs(x[q] - E.positions()[q])));
-        if (c.heavy)
-          worst = std::max(worst, dt * double(std::abs(slips[q] - E.slips()[q])));
-      }
-      apart[e] = apart[e] || !(worst < tolerance);
-      if (!apart[e])
-        worstKept = std::max(worstKept, worst);
-      generationsApart += generations[e] != float(E.generations()[e]);
-      const bool gpuHidden = hidden[e] > 0.5f || flags[e] > 1.5f;
-      hiddenApart += gpuHidden != ((E.resetFlags()[e] & bp::HiddenFlags) != 0);
-    }
   }
-  const long elementsApart = std::count(apart.begin(), apart.end(), std::uint8_t(1));
   std::printf("%s wall, %s, integrator %d, restoration %d, boundary %d%s: positions within %.3g "
               "but for %ld elements; the wall met %d times; %d GPU particles beyond it; %d "
               "hidden, %d generations apart; %ld held, %ld of them moved\n",
@@ -1087,11 +1079,9 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
       : corner ? "corner"
                : "half-plane",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
-    c.heavy ? ", heavy" : "", worstKept, elementsApart, met, beyond, hiddenApart, generationsApart,
-    held, heldMoved);
-  EXPECT_LE(elementsApart, long(elements / 100));
-  EXPECT_LE(hiddenApart, int(elements / 100));
-  EXPECT_LE(generationsApart, int(elements / 100));
+    c.heavy ? ", heavy" : "", parity.worstKept, parity.elementsApart(), met, beyond,
+    parity.hiddenApart, parity.generationsApart, held, heldMoved);
+  parity.expectAgree(int(elements / 100));
   EXPECT_EQ(beyond, 0);
   if (stick)
   {
@@ -1101,27 +1091,6 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   return met;
 }
 
-/// gpuTrace with the boundary `boundary`: the GPU engine's positions,
-/// generations, flags and hidden elements after 60 steps in rotationField().
-std::vector<float> gpuTraceWith(const bp::ElementTemplate& shape, bp::Boundary boundary,
-  std::shared_ptr<const bp::SurfaceSet> surfaces)
-{
-  bp::Parameters p =
-    boundaryTrace(bp::Integrator::RK4, bp::Restoration::AveragedJacobi, boundary, 0.2f, 0.5f, 13);
-  p.surfaces = std::move(surfaces);
-  bp::GpuStepper gpu;
-  EXPECT_EQ(gpu.configure(shape, p), "");
-  EXPECT_EQ(gpu.setField(rotationField()), "");
-  gpu.initialize(0.0);
-  for (int k = 0; k < 60; ++k)
-    gpu.step(k * 0.01, 0.01);
-  std::vector<float> x, generations, flags, hidden;
-  gpu.engine().read(&x, nullptr, nullptr);
-  gpu.engine().readElements(nullptr, &generations, nullptr, nullptr, &flags, &hidden);
-  for (const std::vector<float>* v : { &generations, &flags, &hidden })
-    x.insert(x.end(), v->begin(), v->end());
-  return x;
-}
 } // namespace
 
 TEST(GpuBoundary, SurfaceWallsMatchTheCpuEngine)
@@ -1177,9 +1146,8 @@ TEST(GpuBoundary, AWallOutOfTheWayChangesNothing)
   long differ = 0;
   for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::ReleaseAgain })
   {
-    const std::vector<float> none = gpuTraceWith(shape, b, nullptr);
-    const std::vector<float> wall =
-      gpuTraceWith(shape, b, wallSurface(WallSurface::HalfPlane, 10.0f));
+    const std::vector<float> none = gpuTrace(shape, nullptr, b);
+    const std::vector<float> wall = gpuTrace(shape, wallSurface(WallSurface::HalfPlane, 10.0f), b);
     ASSERT_EQ(wall.size(), none.size());
     for (std::size_t k = 0; k < none.size(); ++k)
       differ += wall[k] != none[k];
@@ -1191,18 +1159,8 @@ TEST(GpuBoundary, AWallOutOfTheWayChangesNothing)
 TEST(GpuBoundary, RefusesMoreWallTrianglesThanItTests)
 {
   ASSERT_TRUE(bp::haveSharedContext());
-  bp::SurfaceTriangles t;
-  for (std::size_t k = 0; k <= bp::GpuMaxWallTriangles; ++k)
-  {
-    const float x = float(k) / float(bp::GpuMaxWallTriangles);
-    t.corners.insert(t.corners.end(), { x, 0, 0, x, 1, 0, x, 0, 1 });
-  }
-  t.interaction.assign(bp::GpuMaxWallTriangles + 1, bp::SurfaceInteraction::Wall);
-  bp::Parameters p = boundaryTrace(
-    bp::Integrator::Euler, bp::Restoration::AveragedJacobi, bp::Boundary::Slip, 1, 1, 1);
-  p.surfaces = std::make_shared<bp::SurfaceSet>(t);
-  bp::GpuStepper gpu;
-  const std::string error = gpu.configure(bp::builtinTemplate(bp::BuiltinShape::Point), p);
+  const std::string error =
+    configureMoreThan(bp::GpuMaxWallTriangles, bp::SurfaceInteraction::Wall, bp::Boundary::Slip);
   EXPECT_NE(error.find("4097 Wall triangles"), std::string::npos) << error;
   EXPECT_EQ(bp::gpuWallError(bp::GpuMaxWallTriangles), "");
 }

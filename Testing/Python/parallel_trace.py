@@ -62,20 +62,36 @@ def traces():
     return {"crosses": (crosses, [0.5, 1.0]), "points": (points, None)}
 
 
-def plane_of_kinds(first, second):
-    """The plane x = 0 over y, z in [-1, 1] as two cells along y with the
-    cell array Kind (0 Gate, 1 Outlet, 2 Wall): `first` for y < 0, `second`
-    for y > 0."""
+def plane_of_kinds(first, second, at=(0.0, 0.0, 0.0)):
+    """The plane x = 0 over y, z in [-1, 1], moved by `at`, as two cells
+    along y with the cell array Kind (0 Gate, 1 Outlet, 2 Wall): `first` for
+    y < 0, `second` for y > 0. Its points in double (far from the origin a
+    float would move them)."""
+    x, y, z = at
     source = ProgrammableSource(OutputDataSetType="vtkPolyData")
     source.Script = (
         "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
         "from vtkmodules.vtkCommonCore import vtkIntArray\n"
-        "p = vtkPlaneSource(); p.SetOrigin(0, -1, -1); p.SetPoint1(0, 1, -1)\n"
-        "p.SetPoint2(0, -1, 1); p.SetXResolution(2); p.Update()\n"
+        "p = vtkPlaneSource(); p.SetOutputPointsPrecision(1)\n"
+        "p.SetOrigin(%r, %r, %r); p.SetPoint1(%r, %r, %r)\n"
+        "p.SetPoint2(%r, %r, %r); p.SetXResolution(2); p.Update()\n"
         "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n"
         "k = vtkIntArray(); k.SetName('Kind'); k.InsertNextValue(%d); k.InsertNextValue(%d)\n"
-        "out.GetCellData().AddArray(k)\n" % (first, second))
+        "out.GetCellData().AddArray(k)\n" % (x, y - 1, z - 1, x, y + 1, z - 1, x, y - 1, z + 1,
+                                               first, second))
     return source
+
+
+# Far from the origin, at a negative y: where the far variants of the
+# Surfaces' cases (gates_far, surface_walls_far, mask_slip_far) move their
+# field and surfaces. The engines work relative to the field's first point
+# (engine specification, section 5), so 1e7 loses nothing in float.
+FAR = (1.0e7 + 0.375, -2.5e6 - 0.625, 0.0)
+
+
+def moved(bounds, at=FAR):
+    """`bounds` (x0, x1, y0, y1, z0, z1) moved by `at`."""
+    return [b + at[k // 2] for k, b in enumerate(bounds)]
 
 
 def placement_traces():
@@ -135,17 +151,10 @@ def placement_traces():
     # plane x = 0 in two cells, a gate (y < 0) and an outlet (y > 0) by a
     # cell array; the passages gathered on process 0 are the same on any
     # number of processes.
-    cases["gates"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                          NumberOfElements=400, Seed=4, LifetimeRange=[2, 2],
-                                          Surfaces=plane_of_kinds(0, 1),
-                                          SurfaceInteractionArray="Kind"), [0.5, 1.0])
+    cases["gates"] = (plane_tracer(hurricane, (0, 1)), [0.5, 1.0])
     # A Slip wall (y < 0) and a gate (y > 0) of the Surfaces: each particle
     # kept off the wall on its process as on one.
-    cases["surface_walls"] = (BoundParticleTracer(Input=hurricane, ElementShape="Cross",
-                                                  NumberOfElements=400, Seed=4,
-                                                  LifetimeRange=[2, 2], Boundary="Slip",
-                                                  Surfaces=plane_of_kinds(2, 0),
-                                                  SurfaceInteractionArray="Kind"), [0.5, 1.0])
+    cases["surface_walls"] = (plane_tracer(hurricane, (2, 0), Boundary="Slip"), [0.5, 1.0])
     # Seed Types: every process computes the same points (the cloud's from
     # the Seed, not from a process's own random sequence).
     cloud = BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
@@ -257,14 +266,8 @@ def placement_traces():
         [0.5, 1.0])
     # A mesh with a spherical hole (clipped away), resampled: the hole's
     # cells are outside the flow, and with Slip their faces are a wall.
-    holed = updated(Clip(Input=hexes, ClipType="Sphere", Invert=0))
-    holed.ClipType.Center = [1.0, 0.9, 0.8]
-    holed.ClipType.Radius = 0.45
-    holed.UpdatePipeline()
-    cases["mask_slip"] = (BoundParticleTracer(
-        Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
-        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
-        Boundary="Slip"), [0.5, 1.0])
+    cases["mask_slip"] = (hole_tracer(hexes, [1.0, 0.9, 0.8]), [0.5, 1.0])
+    cases.update(far_surface_traces())
     zones = updated(GroupDatasets(Input=[
         ImageDatatoPointSet(Input=AnalyticFlow(Flow="ABC", Resolution=[12, 20, 16],
                                                Bounds=[0, 1, 0, 1.8, 0, 1.6])),
@@ -305,6 +308,44 @@ def placement_traces():
         cases["combustor"] = (BoundParticleTracer(
             Input=combustor, ElementShape="Strip4", NumberOfElements=600, Seed=10), None)
     return cases
+
+
+def far_surface_traces():
+    """gates, surface_walls and mask_slip moved by FAR, the Surfaces and the
+    hole with their fields: the same passages, slides and ends on any number
+    of processes as near the origin (test_parallel.py: REQUIRED_EVENTS says
+    which must occur, check_far_moved compares them with the near cases')."""
+    hurricane = updated(AnalyticFlow(Flow="Hurricane", Resolution=[24, 24, 24],
+                                     Bounds=moved([-1, 1, -1, 1, -1, 1])))
+    abc = updated(AnalyticFlow(Flow="ABC", Resolution=[24, 20, 16],
+                               Bounds=moved([0, 2, 0, 1.8, 0, 1.6])))
+    hexes = updated(CleantoGrid(Input=ImageDatatoPointSet(Input=abc)))
+    return {"gates_far": (plane_tracer(hurricane, (0, 1), at=FAR), [0.5, 1.0]),
+            "surface_walls_far": (plane_tracer(hurricane, (2, 0), at=FAR, Boundary="Slip"),
+                                  [0.5, 1.0]),
+            "mask_slip_far": (hole_tracer(hexes, moved([1.0, 1.0, 0.9, 0.9, 0.8, 0.8])[::2]),
+                              [0.5, 1.0])}
+
+
+def plane_tracer(hurricane, kinds, at=(0.0, 0.0, 0.0), **extra):
+    """Crosses in `hurricane` with plane_of_kinds(*kinds), moved by `at`, as
+    the Surfaces (gates, surface_walls)."""
+    return BoundParticleTracer(Input=hurricane, ElementShape="Cross", NumberOfElements=400,
+                               Seed=4, LifetimeRange=[2, 2], Surfaces=plane_of_kinds(*kinds, at=at),
+                               SurfaceInteractionArray="Kind", **extra)
+
+
+def hole_tracer(hexes, centre):
+    """Crosses in the mesh `hexes` with a spherical hole of radius 0.45 at
+    `centre` clipped away, resampled, Slip on the hole's faces (mask_slip)."""
+    holed = updated(Clip(Input=hexes, ClipType="Sphere", Invert=0))
+    holed.ClipType.Center = centre
+    holed.ClipType.Radius = 0.45
+    holed.UpdatePipeline()
+    return BoundParticleTracer(
+        Input=holed, ElementShape="Cross", NumberOfElements=400, Seed=3, Duration=1.0,
+        NumberOfTimeSteps=11, Vectors=["POINTS", "velocity"], ResampleDimensions=[24, 20, 16],
+        Boundary="Slip")
 
 
 def ftle_trace():
@@ -397,9 +438,11 @@ def periodic_traces():
 
 
 # The cases whose Interactions output (port 3) is compared: Stick's contacts,
-# Release Again's elements leaving, back in time and straight, and the
-# passages of a gate and an outlet.
-EVENT_CASES = ("walls", "back", "back_fresh", "gates", "surface_walls", "mask_slip")
+# Release Again's elements leaving, back in time and straight, the passages
+# of a gate and an outlet, the slides along a wall of the Surfaces and along
+# a mesh's hole, near the origin and far from it.
+EVENT_CASES = ("walls", "back", "back_fresh", "gates", "surface_walls", "mask_slip",
+               "gates_far", "surface_walls_far", "mask_slip_far")
 EVENT_ARRAYS = (("Time", 1), ("ElementId", 1), ("ParticleIndex", 1), ("Interaction", 1),
                 ("SurfaceId", 1), ("Normal", 3), ("ElementVelocity", 3), ("SurfaceCell", 1))
 
@@ -518,5 +561,6 @@ if args.render:
     del view
 
 result["periodic_extents"] = periodic_extents()
+result["far_offset"] = numpy.array(FAR)  # test_parallel.py: check_far_moved
 numpy.savez(args.output, **result)
 print("wrote", args.output)

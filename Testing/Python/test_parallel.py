@@ -14,6 +14,9 @@ number, within the same tolerance. Periodic along x and y, strips in a
 uniform flow are back where they were after one period, whole, on every
 number of processes, each process holding the elements of its block and
 reading whole x-y planes over a part of z (the axis the processes split).
+The Surfaces' cases (a gate and an outlet, a Slip wall, a mesh's hole) hold
+events of the kinds they are there for, and their variants far from the
+origin trace what they do near it, moved.
 """
 import argparse
 import json
@@ -248,6 +251,10 @@ def compare(reference, result, name, ranks):
             bptest.check(moved > 0, "%s %s: no element changed ranks" % (name, trace_name))
 
 
+# The Interactions output's kinds, by their values.
+EVENT_KINDS = ("Released", "Terminated", "Stuck", "Slid", "Bounced", "Passed")
+
+
 def check_events(name, key, expected, got):
     """The Interactions output (process 0's, every event): the same events in
     the same order, (Time, ElementId, ParticleIndex, Interaction, SurfaceId,
@@ -258,8 +265,7 @@ def check_events(name, key, expected, got):
                      (name, key, None if got is None else len(got), len(expected)))
         return
     print("%s %s: %d events (%s)" % (name, key, len(got), ", ".join(
-        "%s %d" % (kind, int((got[:, 6] == k).sum())) for k, kind in
-        enumerate(("Released", "Terminated", "Stuck", "Slid", "Bounced", "Passed"))
+        "%s %d" % (kind, int((got[:, 6] == k).sum())) for k, kind in enumerate(EVENT_KINDS)
         if (got[:, 6] == k).any())))
     bptest.check(numpy.array_equal(got[:, 3:11], expected[:, 3:11]) and
                  numpy.array_equal(got[:, 14:], expected[:, 14:]),
@@ -271,6 +277,84 @@ def check_events(name, key, expected, got):
                      "%s %s: the events' points differ" % (name, key))
         bptest.check(float(abs(got[:, 11:14] - expected[:, 11:14]).max()) <= 1e-3 * speed,
                      "%s %s: the events' velocities differ" % (name, key))
+
+
+# What each Surfaces case's events must hold at every time compared, near the
+# origin and far from it (parallel_trace.py's *_far cases): the outlet ends
+# elements and the gate counts passages; the Slip wall slides them and the
+# gate beside it counts; the mesh's hole slides them.
+REQUIRED_EVENTS = {"gates": ("Terminated", "Passed"), "surface_walls": ("Slid", "Passed"),
+                   "mask_slip": ("Slid",)}
+
+
+def check_event_kinds(result, name):
+    """Each case of REQUIRED_EVENTS, and its far variant, traced with events
+    of every kind it names: a comparison of no events shows nothing."""
+    for case, kinds in REQUIRED_EVENTS.items():
+        for variant in (case, case + "_far"):
+            keys = [k for k in (result.files if result is not None else ())
+                    if k.startswith(variant + "_") and k.endswith("_events") and
+                    k[len(variant) + 1:-len("_events")].isdigit()]
+            bptest.check(len(keys) == 2, "%s %s: %d times with events, not 2" %
+                         (name, variant, len(keys)))
+            for key in sorted(keys):
+                counts = {kind: int((result[key][:, 6] == k).sum())
+                          for k, kind in enumerate(EVENT_KINDS)}
+                for kind in kinds:
+                    bptest.check(counts[kind] > 0, "%s %s: no %s events (%s)" %
+                                 (name, key, kind, counts))
+
+
+def check_far_moved(result, name):
+    """Each far variant traces what its case near the origin does, moved by
+    parallel_trace.py's FAR: the same elements and particles, positions and
+    velocities within the pieces' tolerance; the same events (elements,
+    particles, kinds, surfaces, normals and cells exactly, times within
+    1e-8, points and velocities within the same tolerances). Walls, gates
+    and outlets act far from the origin as they do near it."""
+    if result is None or "far_offset" not in result.files:
+        bptest.check(False, "%s: no far variants traced" % name)
+        return
+    offset = result["far_offset"]
+    for case in REQUIRED_EVENTS:
+        for k in (0, 1):
+            near, far = "%s_%d" % (case, k), "%s_far_%d" % (case, k)
+            label = "%s %s" % (name, far)
+            if far + "_points" not in result.files or near + "_points" not in result.files:
+                bptest.check(False, "%s: not traced" % label)
+                continue
+            same = all(numpy.array_equal(result[near + s], result[far + s])
+                       for s in ("_element", "_particle"))
+            bptest.check(same, "%s: not the elements and particles of %s" % (label, near))
+            if not same:
+                continue
+            points = result[near + "_points"]
+            diagonal = numpy.linalg.norm(points.max(axis=0) - points.min(axis=0))
+            speed = float(numpy.linalg.norm(result[near + "_velocity"], axis=1).max())
+            moved = float(abs(result[far + "_points"] - offset - points).max())
+            faster = float(abs(result[far + "_velocity"] - result[near + "_velocity"]).max())
+            print("%s: positions within %.3g of %s's moved, velocities within %.3g" %
+                  (label, moved, near, faster))
+            bptest.check(moved <= 2e-5 * diagonal and faster <= 1e-3 * speed,
+                         "%s: %s moved differs by %g (velocities %g)" %
+                         (label, near, moved, faster))
+            near_events, far_events = result[near + "_events"], result[far + "_events"]
+            bptest.check(near_events.shape == far_events.shape and len(near_events) > 0,
+                         "%s: %d events, %d near the origin" %
+                         (label, len(far_events), len(near_events)))
+            if near_events.shape != far_events.shape or not len(near_events):
+                continue
+            exact = (numpy.array_equal(far_events[:, 4:11], near_events[:, 4:11]) and
+                     numpy.array_equal(far_events[:, 14:], near_events[:, 14:]))
+            times = float(abs(far_events[:, 3] - near_events[:, 3]).max())
+            at = float(abs(far_events[:, :3] - offset - near_events[:, :3]).max())
+            going = float(abs(far_events[:, 11:14] - near_events[:, 11:14]).max())
+            print("%s: %d events as near the origin; times within %.3g, points within %.3g, "
+                  "velocities within %.3g" % (label, len(far_events), times, at, going))
+            bptest.check(exact and times <= 1e-8 and at <= 2e-5 * diagonal and
+                         going <= 1e-3 * speed,
+                         "%s: the events differ from %s's (times by %g, points by %g, velocities "
+                         "by %g)" % (label, near, times, at, going))
 
 
 def check_step_back(result, name):
@@ -447,6 +531,8 @@ def compare_pictures(reference_dir, result_dir, name):
 reference_pictures = os.path.join(args.output, "builtin-pictures")
 reference = trace("builtin", [args.pvpython], ["--render", reference_pictures])
 check_step_back(reference, "builtin")
+check_event_kinds(reference, "builtin")
+check_far_moved(reference, "builtin")
 check_shared_start(reference, "builtin")
 check_save_resume(reference, "builtin")
 check_periodic(reference, "builtin", 1)
@@ -463,6 +549,8 @@ if args.mode == "batch":
                        (["--render", pictures] if ranks == 2 else []) + states)
         compare(reference, result, name, ranks)
         check_step_back(result, name)
+        check_event_kinds(result, name)
+        check_far_moved(result, name)
         check_shared_start(result, name)
         check_save_resume(result, name)
         check_resume_across(result, name, ranks, resume_from[ranks])
@@ -514,6 +602,8 @@ else:
         bptest.check(client.returncode == 0, "the client exited with %d" % client.returncode)
         served = numpy.load(out) if os.path.exists(out) else None
         compare(reference, served, "client-server", 2)
+        check_event_kinds(served, "client-server")
+        check_far_moved(served, "client-server")
         check_shared_start(served, "client-server")
         check_save_resume(served, "client-server")
         check_resume_across(served, "client-server", 2, ["builtin"])
