@@ -42,11 +42,12 @@ public:
   /// Makes the system for a template and parameters the CPU engine accepts
   /// (Engine::validate), its textures at most `textureSizeLimit` texels wide,
   /// with the Jacobi pass's springs as code if `generatedSprings`, its step
-  /// fused on the compute path as `fusedSteps` says. Empty on
-  /// success, otherwise why the GPU cannot run it (the system is then partly
-  /// made: assign an empty one over it).
+  /// fused on the compute path as `fusedSteps` says, its programs taken from
+  /// `programs` (compiled there for the parameters' KernelSpecialisation
+  /// where it has none yet). Empty on success, otherwise why the GPU cannot
+  /// run it (the system is then partly made: assign an empty one over it).
   std::string make(const ElementTemplate& elementTemplate, const Parameters& systemParameters,
-    int textureSizeLimit, bool generatedSprings, FusedSteps fusedSteps);
+    int textureSizeLimit, bool generatedSprings, FusedSteps fusedSteps, GpuProgramCache& programs);
 
   /// Places every element (generation 0), as Engine::initialize leaves them.
   void initialize(double startTime);
@@ -66,7 +67,7 @@ public:
   GpuState state;
 
 private:
-  GpuPass begin(const GlProgram& program) const;
+  GpuPass begin(GLuint program) const;
   std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
   /// The fused step this system can run on the compute path (FusedStep::of).
   FusedStep fusedStep() const;
