@@ -31,7 +31,9 @@
  * particle. A step never waits for the GPU nor reads from it.
  *
  * Inside, by role: GpuSystem.h (what configure() makes, a step's passes),
- * GpuPasses.h (running and reading back passes), ShaderSource.h (a program's
+ * GpuPasses.h (running and reading back passes; the programs built for the
+ * trace's integrator, poses and inertia by #define), GpuProgramCache.h (each
+ * program compiled once, kept across configure()), ShaderSource.h (a program's
  * GLSL put together, compiled, its errors named by file and line),
  * GpuTemplate.h (the template's tables), GpuState.h (the state textures),
  * GpuFieldCache.h (resident time steps), PassObserver.h (told about every pass),

@@ -4,8 +4,10 @@
  * @brief A system of bound particles on the GPU, and the passes of its step.
  *
  * What GpuEngine::configure() makes: the template's tables, the passes
- * compiled for the path the context allows (GpuPath.h) and the state
- * textures, with the field's resident time steps. A step runs the kernels in
+ * for the path the context allows (GpuPath.h) and the parameters'
+ * integrator, poses and inertia (KernelSpecialisation, GpuPasses.h), taken
+ * from the engine's GpuProgramCache, and the state textures, with the
+ * field's resident time steps. A step runs the kernels in
  * the order of docs/engine-specification.md, as the CPU engine
  * (Core/Engine/Engine.h) runs its stages: the trail's record (a copy, when the step
  * starts on the trail's interval), reset, advect, K restoration iterations
@@ -16,7 +18,8 @@
  * Nothing in a step waits for the GPU or reads from it.
  *
  * Needs the GL context current. Assigning an empty system over one deletes
- * every GL object it holds (GlObjects.h): that is how GpuEngine releases.
+ * every GL object it holds (GlObjects.h); its programs are the cache's, which
+ * GpuEngine::release() clears after.
  */
 #ifndef BoundParticles_GpuSystem_h
 #define BoundParticles_GpuSystem_h
