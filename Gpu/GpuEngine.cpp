@@ -119,7 +119,9 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   error = I.system.make(shape, p, I.textureSizeLimit, I.generatedSprings, I.fusedSteps, I.programs);
   if (!error.empty())
   {
-    I.system = GpuSystem();
+    // No GL object outlives a configure that fails, its programs neither: a
+    // display releases the engine only once it has configured it.
+    this->release();
   }
   I.system.passes.setObserver(I.observer);
   return error;

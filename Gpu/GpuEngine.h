@@ -68,7 +68,8 @@ public:
   /// Takes the passes, compiled for the parameters' integrator, poses and
   /// inertia, from the engine's program cache (compiling those it does not
   /// hold yet) and sizes the textures; the GL context must be current.
-  /// Empty on success, otherwise why the GPU cannot run this system.
+  /// Empty on success, otherwise why the GPU cannot run this system (and,
+  /// as after release(), no GL object is left, no program cached).
   std::string configure(const ElementTemplate& shape, const Parameters& parameters);
 
   /// Makes the field's time steps resident: a time step already uploaded (or

@@ -124,7 +124,7 @@ std::string GpuProgramCache::build(GpuPath path, const std::string& name,
   const auto known = this->Programs.find(key);
   if (known != this->Programs.end())
   {
-    known->second.lastUse = this->Use;
+    known->second.lastUse = ++this->Clock;
     out = known->second.program.get();
     zeroUniforms(out);
     return std::string();
@@ -141,13 +141,12 @@ std::string GpuProgramCache::build(GpuPath path, const std::string& name,
   out = program.get();
   Entry& entry = this->Programs[std::move(key)];
   entry.program = std::move(program);
-  entry.lastUse = this->Use;
+  entry.lastUse = ++this->Clock;
   return std::string();
 }
 
 void GpuProgramCache::beginUse()
 {
-  ++this->Use;
   while (this->Programs.size() > MostKept)
   {
     const auto oldest = std::min_element(this->Programs.begin(), this->Programs.end(),

@@ -19,7 +19,8 @@
  *
  * The cache owns its programs (GlObjects.h): clear() deletes them, with
  * the context current (GpuEngine::release); beginUse() deletes, beyond
- * MostKept, those unused the longest. A system holds their names only.
+ * MostKept, those handed out the longest ago. A system holds their names
+ * only.
  */
 #ifndef BoundParticles_GpuProgramCache_h
 #define BoundParticles_GpuProgramCache_h
@@ -51,9 +52,10 @@ public:
   std::string build(GpuPath path, const std::string& name, const std::string& defines,
     const std::vector<ShaderPiece>& pieces, GLuint& out, bool images = false);
 
-  /// Starts a configure: the programs build() hands out from now on are in
-  /// use; when more than MostKept are kept, those unused the longest are
-  /// deleted (none handed out since the last beginUse() is in use any more).
+  /// Starts a configure, when no program is in use (the last system is
+  /// gone): beyond MostKept programs, deletes those handed out the longest
+  /// ago; the needs of several configures before are kept (MostKept holds
+  /// four systems' programs). Needs the context current.
   void beginUse();
 
   /// Programs compiled since the cache was made or cleared.
@@ -68,11 +70,11 @@ private:
   struct Entry
   {
     GlProgram program;
-    long lastUse = 0;
+    long lastUse = 0; ///< Clock when build() last handed it out
   };
   /// By the program's whole source, as build() assembles its key.
   std::unordered_map<std::string, Entry> Programs;
-  long Use = 0;
+  long Clock = 0; ///< build()s so far
   long Compiles = 0;
 };
 

@@ -249,3 +249,47 @@ TEST(GpuPrograms, TheAdvectProgramOfEachIntegratorHoldsItsOwnCodeOnly)
   EXPECT_LT(sizes[0], sizes[1]) << "Euler's program is not smaller than RK2's";
   EXPECT_LT(sizes[1], sizes[2]) << "RK2's program is not smaller than RK4's";
 }
+
+// The cache keeps at most GpuProgramCache::MostKept programs: a beginUse()
+// deletes the ones handed out the longest ago, never those of the last
+// configure; a program deleted is compiled again when asked for.
+TEST(GpuPrograms, TheCacheKeepsItsBoundAndWhatIsInUse)
+{
+  if (!bp::haveSharedContext())
+    return;
+  bp::GpuProgramCache cache;
+  const std::vector<bp::ShaderPiece> pieces = { { bpShaderPassFragNumber,
+    "vec3 bpPositionOf(int e, int i)\n{\n  return vec3(0.0);\n}\n"
+    "layout(location = 0) out vec4 bpTarget0;\nvoid main()\n{\n  bpTarget0 = "
+    "vec4(BP_VALUE);\n}\n" } };
+  const auto build = [&](int k)
+  {
+    GLuint program = 0;
+    EXPECT_EQ(cache.build(bp::GpuPath::Fragment, "value",
+                "#define BP_VALUE " + std::to_string(k) + ".0\n", pieces, program),
+      "");
+    return program;
+  };
+  const int half = int(bp::GpuProgramCache::MostKept) / 2 + 8;
+  cache.beginUse();
+  for (int k = 0; k < half; ++k)
+    build(k);
+  cache.beginUse();
+  std::vector<GLuint> inUse;
+  for (int k = half; k < 2 * half; ++k)
+    inUse.push_back(build(k));
+  EXPECT_EQ(cache.size(), std::size_t(2 * half)) << "nothing deleted while in use";
+  EXPECT_EQ(cache.compiles(), 2 * half);
+  cache.beginUse();
+  EXPECT_EQ(cache.size(), bp::GpuProgramCache::MostKept);
+  for (GLuint program : inUse)
+    EXPECT_TRUE(glIsProgram(program)) << "a program of the last use deleted";
+  EXPECT_EQ(build(2 * half - 1), inUse.back()) << "kept: not compiled again";
+  EXPECT_EQ(cache.compiles(), 2 * half);
+  build(0);
+  EXPECT_EQ(cache.compiles(), 2 * half + 1) << "the oldest was deleted, so compiled again";
+  cache.clear();
+  EXPECT_EQ(cache.size(), 0u);
+  for (GLuint program : inUse)
+    EXPECT_FALSE(glIsProgram(program)) << "clear() deletes every program";
+}
