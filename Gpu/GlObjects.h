@@ -15,7 +15,8 @@
  * another context is current (a delete would free that context's objects).
  * So GpuEngine::release() (documented "the context must be current") deletes
  * every object at once by assigning an empty GpuSystem over the old one,
- * member by member, and ~GpuEngine() calls no GL: an owner destroyed while
+ * member by member, and clearing its GpuProgramCache (the programs), and
+ * ~GpuEngine() calls no GL: an owner destroyed while
  * still holding a name forgets it, and the object lives on until its context
  * is destroyed. No list of objects to delete is kept anywhere.
  */

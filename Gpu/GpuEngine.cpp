@@ -23,6 +23,9 @@ struct GpuEngine::Internals
   bool generatedSprings = false;
   FusedSteps fusedSteps = FusedSteps::Automatic;
   PassObserver* observer = nullptr; ///< set again on every new system
+  /// The programs of every configure since the last release(): a
+  /// configure with settings seen before compiles nothing again.
+  GpuProgramCache programs;
   GpuSystem system;
 };
 
@@ -48,6 +51,7 @@ int GpuEngine::particleTextureHeight() const
 void GpuEngine::release()
 {
   this->I->system = GpuSystem(); // deletes every GL object the old one held
+  this->I->programs.clear();
 }
 
 void GpuEngine::setGeneratedSprings(bool generated)
@@ -80,6 +84,16 @@ long GpuEngine::uniformLookups() const
   return this->I->system.passes.uniformLookups();
 }
 
+long GpuEngine::programsCompiled() const
+{
+  return this->I->programs.compiles();
+}
+
+std::size_t GpuEngine::programsKept() const
+{
+  return this->I->programs.size();
+}
+
 void GpuEngine::setPassObserver(PassObserver* observer)
 {
   this->I->observer = observer;
@@ -99,11 +113,14 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   {
     return error;
   }
-  this->release();
   Internals& I = *this->I;
-  error = I.system.make(shape, p, I.textureSizeLimit, I.generatedSprings, I.fusedSteps);
+  I.system = GpuSystem(); // deletes the old system's GL objects; its programs stay cached
+  I.programs.beginUse();
+  error = I.system.make(shape, p, I.textureSizeLimit, I.generatedSprings, I.fusedSteps, I.programs);
   if (!error.empty())
   {
+    // No GL object outlives a configure that fails, its programs neither: a
+    // display releases the engine only once it has configured it.
     this->release();
   }
   I.system.passes.setObserver(I.observer);

@@ -31,7 +31,9 @@
  * particle. A step never waits for the GPU nor reads from it.
  *
  * Inside, by role: GpuSystem.h (what configure() makes, a step's passes),
- * GpuPasses.h (running and reading back passes), ShaderSource.h (a program's
+ * GpuPasses.h (running and reading back passes; the programs built for the
+ * trace's integrator, poses and inertia by #define), GpuProgramCache.h (each
+ * program compiled once, kept across configure()), ShaderSource.h (a program's
  * GLSL put together, compiled, its errors named by file and line),
  * GpuTemplate.h (the template's tables), GpuState.h (the state textures),
  * GpuFieldCache.h (resident time steps), PassObserver.h (told about every pass),
@@ -48,6 +50,7 @@
 #include "VectorField.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -62,8 +65,11 @@ public:
   GpuEngine();
   ~GpuEngine(); // releases GL objects only through release()
 
-  /// Compiles the passes and sizes the textures; the GL context must be
-  /// current. Empty on success, otherwise why the GPU cannot run this system.
+  /// Takes the passes, compiled for the parameters' integrator, poses and
+  /// inertia, from the engine's program cache (compiling those it does not
+  /// hold yet) and sizes the textures; the GL context must be current.
+  /// Empty on success, otherwise why the GPU cannot run this system (and,
+  /// as after release(), no GL object is left, no program cached).
   std::string configure(const ElementTemplate& shape, const Parameters& parameters);
 
   /// Makes the field's time steps resident: a time step already uploaded (or
@@ -225,6 +231,13 @@ public:
   /// How many uniform locations the driver was asked since configure(): each
   /// program's names once, then none while stepping (GpuPasses::uniformLocation).
   long uniformLookups() const;
+  /// How many programs were compiled since the engine was made or
+  /// released, and how many it keeps: each configure() takes its programs
+  /// from the engine's cache, which compiles a program the first time its
+  /// source (path, kernel, KernelSpecialisation where the kernel depends on
+  /// it) is asked for only (GpuProgramCache.h).
+  long programsCompiled() const;
+  std::size_t programsKept() const;
 
   /// Tells `observer` about every pass and copy from now on, across
   /// configure() and release(), or stops (null). Not owned: it must outlive
@@ -239,7 +252,8 @@ public:
   int particleTextureWidth() const;
   int particleTextureHeight() const;
 
-  /// Deletes the GL objects; the context must be current.
+  /// Deletes the GL objects, the cached programs with them; the context
+  /// must be current.
   void release();
 
 private:

@@ -40,9 +40,36 @@ struct PassKernel
   const char* function;
   bool perElement;
   int targets;
-  GlProgram GpuPasses::Programs::*program;
+  GLuint GpuPasses::Programs::*program;
   const char* name;
 };
+
+/// Every kernel run as a pass of its own, `restore` the Jacobi kernel.
+std::vector<PassKernel> passKernels(const ShaderPiece& restore)
+{
+  using P = GpuPasses::Programs;
+  return { { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4, &P::reset, "reset" },
+    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipPass", false, 2, &P::slip, "slip" },
+    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipSharePass", false, 1, &P::slipShare,
+      "slip share" },
+    { { bpShaderAdvectNumber, bpShaderAdvect }, "bpAdvectPass", false, 2, &P::advect, "advect" },
+    { restore, "bpRestorePass", false, 1, &P::restore, "restore" },
+    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchPass", true, 4, &P::match, "match" },
+    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchApplyPass", false, 1, &P::matchApply,
+      "match apply" },
+    { { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, "bpGaussSeidelPass", false, 1,
+      &P::gaussSeidel, "gauss-seidel" },
+    { { bpShaderTestNumber, bpShaderTest }, "bpTestPass", true, 2, &P::test, "test" },
+    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpFinalizePass", false, 1, &P::finalize,
+      "finalize" },
+    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpWallPass", false, 1, &P::wall, "wall" },
+    { { bpShaderNormalsNumber, bpShaderNormals }, "bpNormalsPass", false, 1, &P::normals,
+      "normals" },
+    { { bpShaderSamplesNumber, bpShaderSamples }, "bpSamplesPass", false, 1, &P::samples,
+      "samples" },
+    { { bpShaderLinkNumber, bpShaderLink }, "bpLinkPass", false, 1, &P::link, "link" },
+    { { bpShaderPoseNumber, bpShaderPose }, "bpPosePass", true, 2, &P::pose, "pose" } };
+}
 
 /// bp_restore.glsl with the template's springs as code (thesis §3.5) in
 /// place of its reads from the springs buffer (with BP_GENERATED_SPRINGS).
@@ -144,6 +171,25 @@ FusedStep FusedStep::of(const Parameters& parameters, int particles, bool spring
     : r == Restoration::GaussSeidel                   ? FusedRestore::GaussSeidel
                                                       : FusedRestore::Jacobi;
   return fused;
+}
+
+KernelSpecialisation KernelSpecialisation::of(const Parameters& parameters)
+{
+  KernelSpecialisation s;
+  s.integrator = parameters.integrator;
+  s.trackPoses = parameters.trackPoses;
+  s.inertial = carriesInertia(parameters);
+  return s;
+}
+
+std::string KernelSpecialisation::defines(bool inertia, bool poses) const
+{
+  const char* integrator = this->integrator == Integrator::RK4 ? "BP_INTEGRATOR_RK4"
+    : this->integrator == Integrator::RK2                      ? "BP_INTEGRATOR_RK2"
+                                                               : "BP_INTEGRATOR_EULER";
+  return std::string("#define BP_INTEGRATOR ") + integrator + "\n" +
+    (inertia && this->inertial ? "#define BP_INERTIAL\n" : "") +
+    (poses && this->trackPoses ? "#define BP_TRACK_POSES\n" : "");
 }
 
 GpuLayout::GpuLayout(const ParticleLayout& layout, std::size_t elements, std::size_t particles)
@@ -365,67 +411,50 @@ void GpuPass::runPerParticle(std::initializer_list<GLuint> targets) const
   this->run(targets, this->Layout.particleTextureWidth, this->Layout.particleTextureHeight);
 }
 
-std::string GpuPasses::compile(
-  GpuPath path, const std::string& springSumCode, const FusedStep& fusedStep)
+std::string GpuPasses::compile(GpuPath path, const std::string& springSumCode,
+  const FusedStep& fusedStep, const KernelSpecialisation& specialisation, GpuProgramCache& cache)
 {
   this->Path = path;
   this->fused = fusedStep;
+  this->Specialisation = specialisation;
   this->Locations.clear(); // a program's name may be a deleted one's
   this->LocationLookups = 0;
-  using P = Programs;
   const ShaderPiece restore = restoreKernel(springSumCode);
-  const PassKernel kernels[] = { { { bpShaderResetNumber, bpShaderReset }, "bpResetPass", true, 4,
-                                   &P::reset, "reset" },
-    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipPass", false, 2, &P::slip, "slip" },
-    { { bpShaderSlipNumber, bpShaderSlip }, "bpSlipSharePass", false, 1, &P::slipShare,
-      "slip share" },
-    { { bpShaderAdvectNumber, bpShaderAdvect }, "bpAdvectPass", false, 2, &P::advect, "advect" },
-    { restore, "bpRestorePass", false, 1, &P::restore, "restore" },
-    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchPass", true, 4, &P::match, "match" },
-    { { bpShaderMatchNumber, bpShaderMatch }, "bpMatchApplyPass", false, 1, &P::matchApply,
-      "match apply" },
-    { { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, "bpGaussSeidelPass", false, 1,
-      &P::gaussSeidel, "gauss-seidel" },
-    { { bpShaderTestNumber, bpShaderTest }, "bpTestPass", true, 2, &P::test, "test" },
-    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpFinalizePass", false, 1, &P::finalize,
-      "finalize" },
-    { { bpShaderFinalizeNumber, bpShaderFinalize }, "bpWallPass", false, 1, &P::wall, "wall" },
-    { { bpShaderNormalsNumber, bpShaderNormals }, "bpNormalsPass", false, 1, &P::normals,
-      "normals" },
-    { { bpShaderSamplesNumber, bpShaderSamples }, "bpSamplesPass", false, 1, &P::samples,
-      "samples" },
-    { { bpShaderLinkNumber, bpShaderLink }, "bpLinkPass", false, 1, &P::link, "link" },
-    { { bpShaderPoseNumber, bpShaderPose }, "bpPosePass", true, 2, &P::pose, "pose" } };
   const bool compute = path == GpuPath::Compute;
   const ShaderPiece main = compute ? ShaderPiece{ bpShaderPassCompNumber, bpShaderPassComp }
                                    : ShaderPiece{ bpShaderPassFragNumber, bpShaderPassFrag };
   const std::string generated = springSumCode.empty() ? "" : "#define BP_GENERATED_SPRINGS\n";
   this->Names.clear();
-  for (const PassKernel& k : kernels)
+  for (const PassKernel& k : passKernels(restore))
   {
+    // The advect kernel's program is built for the integrator and inertia;
+    // the slip kernels' take the advect kernel (bp_slip.glsl's
+    // bpWalledSlipOf finds, with Walls of the Surfaces, where the advect
+    // pass's walls left a particle), and so the integrator.
+    const bool slips = k.program == &Programs::slip || k.program == &Programs::slipShare;
+    const bool advects = k.program == &Programs::advect;
     const std::string defines = std::string("#define BP_PASS ") + k.function + "\n" +
       "#define BP_TARGETS " + std::to_string(k.targets) + "\n" +
-      (k.perElement ? "#define BP_PER_ELEMENT\n" : "") + generated;
-    GlProgram& program = this->programs.*(k.program);
-    // The slip kernels find, with Walls of the Surfaces, where the advect
-    // pass's walls left a particle (bp_slip.glsl's bpWalledSlipOf).
-    const bool slips = k.program == &P::slip || k.program == &P::slipShare;
+      (k.perElement ? "#define BP_PER_ELEMENT\n" : "") + generated +
+      (advects || slips ? specialisation.defines(advects, false) : std::string());
+    GLuint& program = this->programs.*(k.program);
     const ShaderPiece advect{ bpShaderAdvectNumber, bpShaderAdvect };
     const std::string name =
       shaderFileName(k.kernel.number) + " (" + k.function + ", " + gpuPathName(path) + " path)";
     const ShaderPiece pass{ bpShaderPassNumber, bpShaderPass };
     const std::string error = slips
-      ? buildProgram(path, name, defines, { advect, k.kernel, pass, main }, program)
-      : buildProgram(path, name, defines, { k.kernel, pass, main }, program);
+      ? cache.build(path, name, defines, { advect, k.kernel, pass, main }, program)
+      : cache.build(path, name, defines, { k.kernel, pass, main }, program);
     if (!error.empty())
     {
       return error;
     }
-    this->Names.push_back({ program.get(), k.name });
+    this->Names.push_back({ program, k.name });
   }
+  this->programs.step = 0;
   if (compute && this->fused.groupElements > 0)
   {
-    const std::string error = this->compileFusedStep(restore, generated);
+    const std::string error = this->compileFusedStep(restore, generated, cache);
     if (!error.empty())
     {
       return error;
@@ -437,7 +466,8 @@ std::string GpuPasses::compile(
   return std::string();
 }
 
-std::string GpuPasses::compileFusedStep(const ShaderPiece& restore, const std::string& generated)
+std::string GpuPasses::compileFusedStep(
+  const ShaderPiece& restore, const std::string& generated, GpuProgramCache& cache)
 {
   const FusedStep& f = this->fused;
   const std::string defines = "#define BP_N " + std::to_string(f.particles) +
@@ -448,18 +478,19 @@ std::string GpuPasses::compileFusedStep(const ShaderPiece& restore, const std::s
     "\n#define BP_FUSED_GAUSS_SEIDEL " + std::to_string(int(FusedRestore::GaussSeidel)) +
     "\n#define BP_FUSED_SHAPE_MATCHING " + std::to_string(int(FusedRestore::ShapeMatching)) +
     "\n#define BP_RESTORATION " + std::to_string(int(f.restoration)) + "\n" + generated +
+    this->Specialisation.defines(true, true) +
     "layout(rgba32f, binding = 0) uniform writeonly image2D bpParticlesOut;\n" +
-    (f.inertial ? "#define BP_INERTIAL\nlayout(rgba32f, binding = " +
-          std::to_string(1 + ElementTextureCount) + ") uniform writeonly image2D bpSlipsOut;\n"
+    (f.inertial ? "layout(rgba32f, binding = " + std::to_string(1 + ElementTextureCount) +
+          ") uniform writeonly image2D bpSlipsOut;\n"
                 : std::string());
-  const std::string error = buildProgram(GpuPath::Compute, "bp_step.comp (the fused step)", defines,
+  const std::string error = cache.build(GpuPath::Compute, "bp_step.comp (the fused step)", defines,
     { { bpShaderResetNumber, bpShaderReset }, { bpShaderSlipNumber, bpShaderSlip },
       { bpShaderAdvectNumber, bpShaderAdvect }, restore,
       { bpShaderGaussSeidelNumber, bpShaderGaussSeidel }, { bpShaderMatchNumber, bpShaderMatch },
       { bpShaderTestNumber, bpShaderTest }, { bpShaderFinalizeNumber, bpShaderFinalize },
       { bpShaderPoseNumber, bpShaderPose }, { bpShaderStepCompNumber, bpShaderStepComp } },
     this->programs.step, true);
-  this->Names.push_back({ this->programs.step.get(), "step (fused)" });
+  this->Names.push_back({ this->programs.step, "step (fused)" });
   return error;
 }
 
@@ -476,11 +507,11 @@ const std::string& GpuPasses::nameOf(GLuint program) const
   return unknown;
 }
 
-GpuPass GpuPasses::begin(const GlProgram& program, const SharedPassInputs& shared) const
+GpuPass GpuPasses::begin(GLuint program, const SharedPassInputs& shared) const
 {
-  glUseProgram(program.get());
+  glUseProgram(program);
   const GpuLayout& layout = *shared.layout;
-  GpuPass pass(*this, layout, program.get());
+  GpuPass pass(*this, layout, program);
   const Parameters& p = *shared.parameters;
   pass.setIVec2("bpElementGrid", layout.elementGrid[0], layout.elementGrid[1]);
   pass.setInt("bpBlocksPerRow", layout.blocksPerRow);

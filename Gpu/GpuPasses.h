@@ -14,6 +14,13 @@
  * a pass ignores what it does not use. An observer, when one is set, is
  * told about every pass and copy (PassObserver.h).
  *
+ * The programs are compiled for the trace's KernelSpecialisation: the
+ * integrator, whether poses are fitted and whether particles are heavy are
+ * #defines of the programs that use them (BP_INTEGRATOR, BP_TRACK_POSES,
+ * BP_INERTIAL), not uniforms they branch on. They come from a
+ * GpuProgramCache that outlives the passes, so a configure with settings
+ * seen before compiles nothing again (GpuProgramCache.h).
+ *
  * Every call needs the GL context current; the programs and framebuffers are
  * deleted as GlObjects.h says.
  */
@@ -23,6 +30,7 @@
 #include "Engine.h"
 #include "GlObjects.h"
 #include "GpuPath.h"
+#include "GpuProgramCache.h"
 #include "ParticleLayout.h"
 #include "PassObserver.h"
 #include "ShaderSource.h"
@@ -112,6 +120,27 @@ struct FusedStep
   static int imagesBound(bool inertial);
 };
 
+/// What the programs of a trace are compiled for: the settings the
+/// kernels once branched on in uniforms, #defines now (GpuProgramCache.h
+/// keeps a program per source, so per specialisation where it differs).
+struct KernelSpecialisation
+{
+  /// BP_INTEGRATOR: BP_INTEGRATOR_EULER, _RK2 or _RK4 (bp_advect.glsl).
+  Integrator integrator = Integrator::Euler;
+  /// BP_TRACK_POSES: the fused step fits poses and spins (bp_step.comp);
+  /// a pass of its own runs only where they are fitted (GpuSystem::step).
+  bool trackPoses = false;
+  /// BP_INERTIAL: heavy particles (bp::carriesInertia): the advect kernel
+  /// adds the slip's displacement, the fused step steps and shares slips.
+  bool inertial = false;
+
+  static KernelSpecialisation of(const Parameters& parameters);
+  /// "#define BP_INTEGRATOR BP_INTEGRATOR_RK4\n" and so on: the
+  /// integrator always, BP_INERTIAL with `inertia` where particles are
+  /// heavy, BP_TRACK_POSES with `poses` where poses are fitted.
+  std::string defines(bool inertia, bool poses) const;
+};
+
 /// One pass being set up: its program in use, texture units handed out in turn.
 class GpuPass
 {
@@ -168,19 +197,26 @@ private:
 class GpuPasses
 {
 public:
-  /// Compiles every pass for `path`, and on the compute path the fused step
+  /// Takes every pass for `path` from `cache` (compiled there the first
+  /// time its source is asked for), and on the compute path the fused step
   /// as `fused` says (none where fused.groupElements is 0), and makes the
-  /// framebuffers. `springSumCode`, when not empty, is the template's springs
-  /// written as code (GpuTemplate.h) for the Jacobi kernel instead of its
-  /// springs buffer. Empty on success, otherwise the compiler's or linker's
-  /// log, naming the pass's file and each message's file and line
-  /// (ShaderSource.h).
-  std::string compile(GpuPath path, const std::string& springSumCode, const FusedStep& fused);
+  /// framebuffers. The kernels that depend on the integrator, heavy
+  /// particles or poses are built for `specialisation`: the advect kernel
+  /// (and the slip kernels, which include it) for its integrator and
+  /// inertia, the fused step for all three. `springSumCode`, when not
+  /// empty, is the template's springs written as code (GpuTemplate.h) for
+  /// the Jacobi kernel instead of its springs buffer. Empty on success,
+  /// otherwise the compiler's or linker's log, naming the pass's file and
+  /// each message's file and line (ShaderSource.h).
+  std::string compile(GpuPath path, const std::string& springSumCode, const FusedStep& fused,
+    const KernelSpecialisation& specialisation, GpuProgramCache& cache);
 
   GpuPath path() const { return this->Path; }
+  /// What compile() built the programs for.
+  const KernelSpecialisation& specialisation() const { return this->Specialisation; }
 
-  /// Uses `program` with the uniforms every pass shares.
-  GpuPass begin(const GlProgram& program, const SharedPassInputs& shared) const;
+  /// Uses `program` (a name in `programs`) with the uniforms every pass shares.
+  GpuPass begin(GLuint program, const SharedPassInputs& shared) const;
 
   /// A texture's texels, 4 floats each, row by row.
   void readTexture(GLuint texture, int width, int height, std::vector<float>& out) const;
@@ -209,25 +245,26 @@ public:
   /// How many times uniformLocation() asked the driver since compile().
   long uniformLookups() const { return this->LocationLookups; }
 
-  /// The passes (a kernel of Shaders/ each), in the order a step runs them.
+  /// The passes (a kernel of Shaders/ each), in the order a step runs them:
+  /// the names of programs the GpuProgramCache given to compile() owns.
   struct Programs
   {
-    GlProgram reset;       ///< places flagged elements (all, initialising)
-    GlProgram slip;        ///< heavy particles: the slip's step and displacement
-    GlProgram slipShare;   ///< heavy particles: an element's shared slip
-    GlProgram advect;      ///< moves particles through the field
-    GlProgram restore;     ///< (averaged) Jacobi over each particle's springs
-    GlProgram gaussSeidel; ///< one colour of springs
-    GlProgram match;       ///< shape matching: a fit per element
-    GlProgram matchApply;  ///< shape matching: a move per particle
-    GlProgram link;        ///< a super set's links between elements
-    GlProgram wall;        ///< the walls after restoration (Boundary Stick, Slip, Bounce)
-    GlProgram test;        ///< the reposition test
-    GlProgram finalize;    ///< the new state
-    GlProgram normals;     ///< per particle, from the template's triangles
-    GlProgram pose;        ///< the pose fit and spin (Parameters::trackPoses)
-    GlProgram samples;     ///< the field at every particle, for colouring
-    GlProgram step;        ///< the compute path's fused step (bp_step.comp), or none
+    GLuint reset = 0;       ///< places flagged elements (all, initialising)
+    GLuint slip = 0;        ///< heavy particles: the slip's step and displacement
+    GLuint slipShare = 0;   ///< heavy particles: an element's shared slip
+    GLuint advect = 0;      ///< moves particles through the field
+    GLuint restore = 0;     ///< (averaged) Jacobi over each particle's springs
+    GLuint gaussSeidel = 0; ///< one colour of springs
+    GLuint match = 0;       ///< shape matching: a fit per element
+    GLuint matchApply = 0;  ///< shape matching: a move per particle
+    GLuint link = 0;        ///< a super set's links between elements
+    GLuint wall = 0;        ///< the walls after restoration (Boundary Stick, Slip, Bounce)
+    GLuint test = 0;        ///< the reposition test
+    GLuint finalize = 0;    ///< the new state
+    GLuint normals = 0;     ///< per particle, from the template's triangles
+    GLuint pose = 0;        ///< the pose fit and spin (Parameters::trackPoses)
+    GLuint samples = 0;     ///< the field at every particle, for colouring
+    GLuint step = 0;        ///< the compute path's fused step (bp_step.comp), or 0: none
   };
   Programs programs;
   /// What the fused step was compiled for (groupElements 0: none).
@@ -237,10 +274,12 @@ private:
   friend class GpuPass;
   /// The name a program is told to the observer by.
   const std::string& nameOf(GLuint program) const;
-  /// Compiles the fused step with the Jacobi kernel `restore`.
-  std::string compileFusedStep(const ShaderPiece& restore, const std::string& generated);
+  /// Builds the fused step with the Jacobi kernel `restore`.
+  std::string compileFusedStep(
+    const ShaderPiece& restore, const std::string& generated, GpuProgramCache& cache);
 
   GpuPath Path = GpuPath::Fragment;
+  KernelSpecialisation Specialisation;
   std::vector<std::pair<GLuint, std::string>> Names; ///< each program's name
   GlVertexArray Triangle; ///< empty: bp_fullscreen.vert makes the triangle from gl_VertexID
   GlFramebuffer Framebuffer;

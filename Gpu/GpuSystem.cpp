@@ -34,7 +34,7 @@ GlTexture triangleListTexture(const std::vector<float>& triangles)
 
 std::string GpuSystem::make(const ElementTemplate& elementTemplate,
   const Parameters& systemParameters, int textureSizeLimit, bool generatedSprings,
-  FusedSteps fusedSteps)
+  FusedSteps fusedSteps, GpuProgramCache& programs)
 {
   this->shape = elementTemplate;
   this->parameters = systemParameters;
@@ -88,14 +88,16 @@ std::string GpuSystem::make(const ElementTemplate& elementTemplate,
       : " Each kernel is a dispatch of its own.";
   }
   this->shapeTables.upload(this->shape, p.elementSize, generatedSprings);
-  error = this->passes.compile(
-    path.path, this->shapeTables.springSumCode, fuses ? this->fusedStep() : FusedStep());
+  const KernelSpecialisation specialisation = KernelSpecialisation::of(p);
+  error = this->passes.compile(path.path, this->shapeTables.springSumCode,
+    fuses ? this->fusedStep() : FusedStep(), specialisation, programs);
   if (!error.empty() && compute)
   {
     // A compute program the driver refuses: the fragment path, same kernels.
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     fallBackToFragmentPath(path, error, version ? version : "?");
-    error = this->passes.compile(GpuPath::Fragment, this->shapeTables.springSumCode, FusedStep());
+    error = this->passes.compile(
+      GpuPath::Fragment, this->shapeTables.springSumCode, FusedStep(), specialisation, programs);
   }
   sayGpuPathOnce(path);
   if (!error.empty())
@@ -237,8 +239,8 @@ void GpuSystem::runFusedStep(double t, double h, float endWeight)
   this->slipInputs(pass, t, h);
   pass.setInt("bpIterations", this->parameters.iterations);
   pass.setInt("bpColourCount", this->shapeTables.colourCount);
-  const bool poses = this->parameters.trackPoses;
-  pass.setInt("bpTrackPoses", poses ? 1 : 0);
+  // Poses and spins are fitted in the program compiled with BP_TRACK_POSES.
+  const bool poses = this->passes.specialisation().trackPoses;
   using E = ElementTexture;
   const int perGroup = this->passes.fused.groupElements;
   // Images: the particles', then each per-element row's (GpuStateLayout.h's order).
@@ -294,7 +296,7 @@ void GpuSystem::updateFieldSamples(double t)
   pass.runPerParticle({ this->state.samples.get() });
 }
 
-GpuPass GpuSystem::begin(const GlProgram& program) const
+GpuPass GpuSystem::begin(GLuint program) const
 {
   SharedPassInputs shared;
   shared.layout = &this->layout;

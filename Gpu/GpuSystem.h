@@ -4,8 +4,10 @@
  * @brief A system of bound particles on the GPU, and the passes of its step.
  *
  * What GpuEngine::configure() makes: the template's tables, the passes
- * compiled for the path the context allows (GpuPath.h) and the state
- * textures, with the field's resident time steps. A step runs the kernels in
+ * for the path the context allows (GpuPath.h) and the parameters'
+ * integrator, poses and inertia (KernelSpecialisation, GpuPasses.h), taken
+ * from the engine's GpuProgramCache, and the state textures, with the
+ * field's resident time steps. A step runs the kernels in
  * the order of docs/engine-specification.md, as the CPU engine
  * (Core/Engine/Engine.h) runs its stages: the trail's record (a copy, when the step
  * starts on the trail's interval), reset, advect, K restoration iterations
@@ -16,7 +18,8 @@
  * Nothing in a step waits for the GPU or reads from it.
  *
  * Needs the GL context current. Assigning an empty system over one deletes
- * every GL object it holds (GlObjects.h): that is how GpuEngine releases.
+ * every GL object it holds (GlObjects.h); its programs are the cache's, which
+ * GpuEngine::release() clears after.
  */
 #ifndef BoundParticles_GpuSystem_h
 #define BoundParticles_GpuSystem_h
@@ -42,11 +45,12 @@ public:
   /// Makes the system for a template and parameters the CPU engine accepts
   /// (Engine::validate), its textures at most `textureSizeLimit` texels wide,
   /// with the Jacobi pass's springs as code if `generatedSprings`, its step
-  /// fused on the compute path as `fusedSteps` says. Empty on
-  /// success, otherwise why the GPU cannot run it (the system is then partly
-  /// made: assign an empty one over it).
+  /// fused on the compute path as `fusedSteps` says, its programs taken from
+  /// `programs` (compiled there for the parameters' KernelSpecialisation
+  /// where it has none yet). Empty on success, otherwise why the GPU cannot
+  /// run it (the system is then partly made: assign an empty one over it).
   std::string make(const ElementTemplate& elementTemplate, const Parameters& systemParameters,
-    int textureSizeLimit, bool generatedSprings, FusedSteps fusedSteps);
+    int textureSizeLimit, bool generatedSprings, FusedSteps fusedSteps, GpuProgramCache& programs);
 
   /// Places every element (generation 0), as Engine::initialize leaves them.
   void initialize(double startTime);
@@ -66,7 +70,7 @@ public:
   GpuState state;
 
 private:
-  GpuPass begin(const GlProgram& program) const;
+  GpuPass begin(GLuint program) const;
   std::string checkTextureSize(const ParticleLayout& wanted, int textureSizeLimit) const;
   /// The fused step this system can run on the compute path (FusedStep::of).
   FusedStep fusedStep() const;

@@ -34,7 +34,8 @@ void GpuSystem::advectInputs(GpuPass& pass, bool placeOnly, double t, double h) 
   pass.texture("bpRest", this->shapeTables.rest.get());
   pass.texture("bpParticleInfo", this->shapeTables.particleInfo.get());
   pass.setInt("bpPlaceOnly", placeOnly ? 1 : 0);
-  pass.setInt("bpIntegrator", int(this->parameters.integrator));
+  // The integrator and heavy particles' slip are the program's own
+  // (KernelSpecialisation: BP_INTEGRATOR, BP_INERTIAL).
   pass.setFloat("bpStep", float(h));
   if (const VectorField* field = this->fieldCache.field())
   {
@@ -43,7 +44,6 @@ void GpuSystem::advectInputs(GpuPass& pass, bool placeOnly, double t, double h) 
       field->timeWeight(t + h) };
     pass.setVec3("bpWeights", weights);
   }
-  pass.setInt("bpInertial", !placeOnly && carriesInertia(this->parameters) ? 1 : 0);
   pass.texture("bpSlipMoves", this->state.slipMoves.get());
   this->surfaceWallInputs(pass);
 }

@@ -26,8 +26,8 @@ uniform bool bpAnchored;       // Anchor = Centre (bp_test.glsl, bp_finalize.gls
 uniform bool bpShiftsPeriodic; // a periodic field: finalize applies the test's shifts
 uniform bool bpLinearMatching; // linear shape matching (bp_match.glsl)
 // Heavy particles (bp_slip.glsl): per particle, the displacement the slip adds
-// to the tracer's in this step (bp_advect.glsl adds it).
-uniform bool bpInertial;
+// to the tracer's in this step (bp_advect.glsl adds it in a program compiled
+// with BP_INERTIAL).
 uniform sampler2D bpSlipMoves;
 // Per particle: its position after advection and the walls (.w: what the
 // walls did, bp_common.glsl's bpWallParticle), for the finalize pass's force,

@@ -15,8 +15,10 @@
 // the barrier (a GPU runs other workgroups meanwhile). Gpu/GpuPasses.cpp
 // defines BP_N, BP_GROUP_ELEMENTS, BP_GROUP_THREADS (their product) and
 // BP_RESTORATION (one of BP_FUSED_NONE, _JACOBI, _GAUSS_SEIDEL and
-// _SHAPE_MATCHING, which it defines from GpuPasses.h's FusedRestore), and
-// declares the images it writes: the particle state's next texture
+// _SHAPE_MATCHING, which it defines from GpuPasses.h's FusedRestore), the
+// trace's specialisation (KernelSpecialisation: BP_INTEGRATOR, and
+// BP_TRACK_POSES and BP_INERTIAL where poses are fitted and particles are
+// heavy), and declares the images it writes: the particle state's next texture
 // (bpParticlesOut) and each per-element texture's (bpElementStateOut,
 // bpCentersOut, bpOrientationsOut, bpPosesOut, bpSpinsOut: GpuState's one
 // list). Workgroups run along x, then y, as many as the system needs.
@@ -24,7 +26,6 @@ layout(local_size_x = BP_GROUP_THREADS) in;
 
 uniform int bpIterations;  // K
 uniform int bpColourCount; // Gauss-Seidel: colours of springs
-uniform bool bpTrackPoses;
 
 // The positions of the phase at hand (particle i of element e0 + k at
 // i * G + k), then the elements' per-element values.
@@ -242,18 +243,17 @@ void main()
 #endif
 
   // 6. Poses and spins, from the positions after the step.
-  if (bpTrackPoses)
+#ifdef BP_TRACK_POSES
+  bpSync();
+  bpLocalPositions[thread] = after.xyz;
+  bpSync();
+  if (lead)
   {
-    bpSync();
-    bpLocalPositions[thread] = after.xyz;
-    bpSync();
-    if (lead)
-    {
-      vec4 spin;
-      bpPoseElement(own, bpLocalState[thread], pose, spin);
-      imageStore(bpSpinsOut, at, spin);
-    }
+    vec4 spin;
+    bpPoseElement(own, bpLocalState[thread], pose, spin);
+    imageStore(bpSpinsOut, at, spin);
   }
+#endif
   if (lead)
   {
     imageStore(bpPosesOut, at, pose);

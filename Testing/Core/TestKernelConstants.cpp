@@ -171,7 +171,7 @@ TEST(KernelConstants, NoKernelWritesAGroupSizeOrAnEnumValueAsADigit)
 {
   static const std::regex groupSize(R"(local_size_[xyz]\s*=\s*[0-9])");
   static const std::regex enumDigit(
-    R"(\b(bpIntegrator|bpOrientation|BP_RESTORATION)\s*[!=<>]=?\s*[0-9]|[0-9]\s*[!=<>]=?\s*(bpIntegrator|bpOrientation|BP_RESTORATION)\b)");
+    R"(\b(BP_INTEGRATOR|bpOrientation|BP_RESTORATION)\s*[!=<>]=?\s*[0-9]|[0-9]\s*[!=<>]=?\s*(BP_INTEGRATOR|bpOrientation|BP_RESTORATION)\b)");
   for (const auto& file : shaders())
   {
     EXPECT_FALSE(std::regex_search(file.second, groupSize))
