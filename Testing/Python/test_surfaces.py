@@ -17,7 +17,9 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   engine too (no fallback), drawn as the CPU engine's; with Stick the
   particles that reach it stay;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
-  with values of Kind that name no interaction warn and lose nothing; with
+  with values of Kind that name no interaction warn and lose nothing; a
+  Kind with NaN, with no value that names an interaction, of 3 components
+  or of strings is said as it is, once; with
   Linking the update fails with a message.
 """
 import builtins
@@ -254,9 +256,55 @@ for name, surface, extra, said in cases:
     bptest.check(cells > 0 and np.all(np.isfinite(positions)),
                  "%s: the trace goes on, finite (%d cells)" % (name, cells))
     Delete(bad)
+
 with bptest.CapturedMessages() as messages:
     linked = tracer(Surfaces=gate, Linking="Chain", SeedSource=None)
     linked.UpdatePipeline(1.0)
 bptest.check(messages.mentions("Surfaces (gates, outlets and walls) act on single elements"),
              "Surfaces with Linking: refused with a message: %s" % messages.messages)
+
+
+def plane_with_array(cells, code):
+    """The plane of plane_with_kinds in `cells` cells, with the cell array
+    Kind that `code` makes as `k` (any class, any components)."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+        "from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray\n"
+        "p = vtkPlaneSource(); p.SetOrigin(-1, 0, -1); p.SetPoint1(1, 0, -1)\n"
+        "p.SetPoint2(-1, 0, 1); p.SetXResolution(%d); p.Update()\n"
+        "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n%s\n"
+        "out.GetCellData().AddArray(k)\n" % (cells, code))
+    return source
+
+
+# A bad Surface Interaction Array: each fault said as it is.
+kinds = [
+    ("NaN among unknown values", plane_with_array(4, "k = vtkDoubleArray(); k.SetName('Kind')\n"
+     "for v in (3.0, -1.0, float('nan'), 1.0): k.InsertNextValue(v)"),
+     ["3 cells", "such as -1 3 NaN)"], ["no surface to act on"]),
+    ("no value names an interaction", plane_with_array(2, "k = vtkDoubleArray(); "
+     "k.SetName('Kind')\nfor v in (1.5, 0.5): k.InsertNextValue(v)"),
+     ["2 cells", "No cell of the Surfaces is left to act on"], ["no polygons"]),
+    ("3 components", plane_with_array(2, "k = vtkDoubleArray(); k.SetName('Kind'); "
+     "k.SetNumberOfComponents(3)\nk.InsertNextTuple3(1, 5, 5); k.InsertNextTuple3(0, 7, 7)"),
+     ["cell array 'Kind' of 3 components: its first component is taken"], []),
+    ("a string array", plane_with_array(2, "k = vtkStringArray(); k.SetName('Kind')\n"
+     "k.InsertNextValue('1'); k.InsertNextValue('0')"),
+     ["cell array 'Kind' that is not numeric (a vtkStringArray"], ["no cell array"])]
+for name, surface, said, unsaid in kinds:
+    with bptest.CapturedMessages() as messages:
+        bad = tracer(Surfaces=surface, SurfaceInteractionArray="Kind")
+        a, points = events(bad)
+    bptest.check(len(messages.messages) == 1 and builtins.all(messages.mentions(m) for m in said) and
+                 not builtins.any(messages.mentions(m) for m in unsaid),
+                 "%s: one warning saying %s, not %s: %s" % (name, said, unsaid, messages.messages))
+    if name == "3 components":
+        # Component 0: cell 0 (x < 0) an Outlet, cell 1 a Gate.
+        bptest.check(a["Interaction"] is not None and
+                     set(a["Interaction"].tolist()) == {PASSED, TERMINATED},
+                     "3 components: the first says Outlet and Gate: %s" % (
+                         None if a["Interaction"] is None else set(a["Interaction"].tolist())))
+    Delete(bad)
+
 bptest.finish()
