@@ -19,7 +19,8 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
 - bad input: Surfaces with no cells, outside the field, with NaN points or
   with values of Kind that name no interaction warn and lose nothing; a
   Kind with NaN, with no value that names an interaction, of 3 components
-  or of strings is said as it is, once; with
+  or of strings is said as it is, once;
+- SurfaceId is 6 + the block, null and empty blocks counted; with
   Linking the update fails with a message.
 """
 import builtins
@@ -306,5 +307,26 @@ for name, surface, said, unsaid in kinds:
                      "3 components: the first says Outlet and Gate: %s" % (
                          None if a["Interaction"] is None else set(a["Interaction"].tolist())))
     Delete(bad)
+
+# SurfaceId is 6 + the block: the leaf's number from 0 among all the leaves,
+# null and empty blocks included. Blocks [null, empty, null, the gate].
+blocks = ProgrammableSource(OutputDataSetType="vtkMultiblockDataSet")
+blocks.Script = (
+    "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+    "from vtkmodules.vtkCommonDataModel import vtkPolyData\n"
+    "p = vtkPlaneSource(); p.SetOrigin(0, 0, -1); p.SetPoint1(1, 0, -1)\n"
+    "p.SetPoint2(0, 0, 1); p.Update()\n"
+    "out = self.GetOutput(); out.SetNumberOfBlocks(4)\n"
+    "out.SetBlock(1, vtkPolyData()); out.SetBlock(3, p.GetOutput())\n")
+with bptest.CapturedMessages() as messages:
+    blocked = tracer(Surfaces=blocks, SurfaceInteractionArray="Absent")
+    a, points = events(blocked)
+bptest.check(a["SurfaceId"] is not None and len(a["SurfaceId"]) == 2 * COUNT and
+             set(a["SurfaceId"].tolist()) == {9},
+             "the gate in block 3 after null and empty blocks is SurfaceId 6 + 3: %s" %
+             (None if a["SurfaceId"] is None else set(a["SurfaceId"].tolist())))
+bptest.check(messages.mentions("(the first: block 3) have no cell array 'Absent'"),
+             "the warnings number the blocks alike: %s" % messages.messages)
+Delete(blocked)
 
 bptest.finish()
