@@ -20,8 +20,9 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   with values of Kind that name no interaction warn and lose nothing; a
   Kind with NaN, with no value that names an interaction, of 3 components
   or of strings is said as it is, once;
-- SurfaceId is 6 + the block, null and empty blocks counted; with
-  Linking the update fails with a message.
+- SurfaceId is 6 + the block, null and empty blocks counted;
+- with Linking, Anchor = Centre or Restitution 2 the update fails with one
+  message per update, and again after a change.
 """
 import builtins
 import math
@@ -258,12 +259,6 @@ for name, surface, extra, said in cases:
                  "%s: the trace goes on, finite (%d cells)" % (name, cells))
     Delete(bad)
 
-with bptest.CapturedMessages() as messages:
-    linked = tracer(Surfaces=gate, Linking="Chain", SeedSource=None)
-    linked.UpdatePipeline(1.0)
-bptest.check(messages.mentions("Surfaces (gates, outlets and walls) act on single elements"),
-             "Surfaces with Linking: refused with a message: %s" % messages.messages)
-
 
 def plane_with_array(cells, code):
     """The plane of plane_with_kinds in `cells` cells, with the cell array
@@ -329,4 +324,23 @@ bptest.check(messages.mentions("(the first: block 3) have no cell array 'Absent'
              "the warnings number the blocks alike: %s" % messages.messages)
 Delete(blocked)
 
+# A refusal is said once per update (ParaView asks every port), and again
+# at the next update after a change.
+refusals = [("Linking", dict(Surfaces=gate, Linking="Chain", SeedSource=None),
+             "Surfaces (gates, outlets and walls) act on single elements"),
+            ("Anchor", dict(Surfaces=gate, Anchor="Centre"),
+             "Surfaces (gates, outlets and walls) act on travelling elements"),
+            ("Restitution", dict(Boundary="Bounce", Restitution=2.0),
+             "Restitution must be between 0 and 1")]
+for name, settings, refusal in refusals:
+    refused = tracer(**settings)
+    for update in ("first", "after a change"):
+        with bptest.CapturedMessages() as messages:
+            refused.UpdatePipeline(1.0)
+            servermanager.Fetch(refused, None, None, 3)
+        bptest.check(len(messages.messages) == 1 and messages.mentions(refusal),
+                     "%s, %s update: refused once with a message: %s" %
+                     (name, update, messages.messages))
+        refused.ElementSize = 0.2
+    Delete(refused)
 bptest.finish()
