@@ -4,6 +4,7 @@
 
 #include "vtkBoundParticleTracer.h"
 
+#include "vtkDataObject.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
@@ -74,6 +75,24 @@ void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs, bo
       (interactionsOnly && port != InteractionsPort))
     {
       outputs->GetInformationObject(port)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+    }
+  }
+}
+
+void markFailedUpdate(vtkInformation* request, vtkInformationVector* outputs)
+{
+  const bool state = askedPort(request) == StatePort;
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkInformation* info = outputs->GetInformationObject(port);
+    if (state && port != StatePort)
+    {
+      continue; // a state pass leaves the others as they are
+    }
+    info->Remove(vtkDemandDrivenPipeline::DATA_NOT_GENERATED());
+    if (vtkDataObject* data = vtkDataObject::GetData(info))
+    {
+      data->Initialize();
     }
   }
 }

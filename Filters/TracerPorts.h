@@ -63,6 +63,17 @@ void markNotGenerated(
   vtkInformation* request, vtkInformationVector* outputs, bool interactionsOnly = false);
 
 /**
+ * After a failed execution (its error said): the State output emptied when
+ * it was the port asked for (the others keep what they hold); else every
+ * output emptied and marked generated, the State and Interactions outputs
+ * too, so that the requests ParaView makes of the other ports in the same
+ * update (vtkSMSourceProxy::UpdatePipeline asks each) find them up to date
+ * instead of executing again to say the same error. A change of the filter
+ * or its input, or another time, executes again and says it again.
+ */
+void markFailedUpdate(vtkInformation* request, vtkInformationVector* outputs);
+
+/**
  * Whether an execution fills the Interactions output: it is the port asked
  * for, or it has a consumer (a display, a filter, a writer, a fetch). So
  * playing the animation with no consumer of it builds nothing for it: it keeps

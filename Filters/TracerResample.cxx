@@ -199,6 +199,7 @@ std::vector<vtkDataSet*> leafDataSets(vtkDataObject* data)
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
     auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    it->SkipEmptyNodesOff(); // a null block is a leaf too: the numbers are the user's blocks
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
       leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));

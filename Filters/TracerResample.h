@@ -59,7 +59,9 @@ namespace bpvtk
 {
 
 /// The leaves of `data` in the composite's traversal order (a data set alone
-/// is the one leaf); a leaf that is not a data set, or no data, is null.
+/// is the one leaf), null blocks included, so that leaf k is the k-th leaf
+/// of the Multiblock Inspector's tree, from 0 (the Surfaces' SurfaceId 6 + k);
+/// a leaf that is not a data set, or no data, is null.
 std::vector<vtkDataSet*> leafDataSets(vtkDataObject* data);
 
 /// Which input array moves the elements: the Vectors property's choice.

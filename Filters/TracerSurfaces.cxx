@@ -10,6 +10,7 @@
 #include "TracerResample.h"
 #include "VectorField.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace
@@ -36,11 +38,16 @@ namespace
 struct Gathered
 {
   bp::SurfaceTriangles triangles;
-  std::set<double> unknownValues; ///< values of the array that name no interaction
+  std::set<double> unknownValues; ///< values of the array that name no interaction (not NaN)
+  bool unknownNaN = false;        ///< whether NaN is one of them (a std::set cannot hold it)
   std::set<std::pair<std::int32_t, vtkIdType>> unknownCells; ///< (leaf, cell) of such values
   vtkIdType nonFinitePoints = 0; ///< points that are not finite (their cells are left out)
   vtkIdType inPlane = 0;         ///< triangles in a 2D field's plane, which no step crosses
   std::vector<int> leavesWithoutArray;
+  std::vector<int> leavesNotNumeric;     ///< blocks whose array is not numeric (a string array)
+  std::string notNumeric;                ///< the first such array's class
+  std::vector<int> leavesWithComponents; ///< blocks whose array has several components
+  int components = 1;                    ///< the first such array's components
   vtkIdType lines = 0; ///< lines given where only a 2D field takes them
 };
 
@@ -77,9 +84,16 @@ bool interactionOf(vtkDataArray* values, std::int32_t leaf, vtkIdType cell,
     kind = bp::SurfaceInteraction(int(v));
     return true;
   }
-  if (g.unknownValues.size() < 4)
+  if (g.unknownValues.size() + (g.unknownNaN ? 1 : 0) < 4)
   {
-    g.unknownValues.insert(v);
+    if (std::isnan(v))
+    {
+      g.unknownNaN = true;
+    }
+    else
+    {
+      g.unknownValues.insert(v);
+    }
   }
   g.unknownCells.emplace(leaf, cell);
   return false;
@@ -98,7 +112,16 @@ void gatherLeaf(vtkDataSet* leaf, std::int32_t index, const std::string& arrayNa
     values = leaf->GetCellData()->GetArray(arrayName.c_str());
     if (!values)
     {
-      g.leavesWithoutArray.push_back(index);
+      // A string array is there, but no number says what a cell does.
+      vtkAbstractArray* other = leaf->GetCellData()->GetAbstractArray(arrayName.c_str());
+      (other ? g.leavesNotNumeric : g.leavesWithoutArray).push_back(index);
+      g.notNumeric = other && g.notNumeric.empty() ? other->GetClassName() : g.notNumeric;
+    }
+    else if (values->GetNumberOfComponents() != 1)
+    {
+      g.components =
+        g.leavesWithComponents.empty() ? values->GetNumberOfComponents() : g.components;
+      g.leavesWithComponents.push_back(index);
     }
   }
   for (vtkIdType k = 0; k < leaf->GetNumberOfPoints(); ++k)
@@ -212,13 +235,26 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
     {
       say << " " << v;
     }
-    say << "): they are left out. ";
+    say << (g.unknownNaN ? " NaN" : "") << "): they are left out. ";
   }
   if (!g.leavesWithoutArray.empty())
   {
     say << g.leavesWithoutArray.size() << " block(s) of the Surfaces (the first: block "
         << g.leavesWithoutArray.front() << ") have no cell array '" << arrayName
         << "': their cells take Surface Interaction. ";
+  }
+  if (!g.leavesNotNumeric.empty())
+  {
+    say << g.leavesNotNumeric.size() << " block(s) of the Surfaces (the first: block "
+        << g.leavesNotNumeric.front() << ") have a cell array '" << arrayName
+        << "' that is not numeric (a " << g.notNumeric
+        << "; 0 Gate, 1 Outlet, 2 Wall): their cells take Surface Interaction. ";
+  }
+  if (!g.leavesWithComponents.empty())
+  {
+    say << g.leavesWithComponents.size() << " block(s) of the Surfaces (the first: block "
+        << g.leavesWithComponents.front() << ") have a cell array '" << arrayName << "' of "
+        << g.components << " components: its first component is taken. ";
   }
   if (g.lines > 0)
   {
@@ -246,7 +282,12 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
         << " have a corner that is not finite or no area: they are "
            "left out. ";
   }
-  if (set.triangleCount() == 0)
+  if (set.triangleCount() == 0 && !g.unknownCells.empty())
+  {
+    say << "No cell of the Surfaces is left to act on: no element passes a gate, an outlet or "
+           "a wall.";
+  }
+  else if (set.triangleCount() == 0)
   {
     say << "The Surfaces input has no surface to act on (no polygons"
         << (flat < 0 ? " or volume with finite points" : " or lines with finite points")

@@ -405,19 +405,12 @@ int vtkBoundParticleTracer::RequestData(
   vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
-  for (int port = 0; port < bpvtk::TracerPortCount; ++port)
-  {
-    if ((port == bpvtk::StatePort) == saving) // a state pass leaves the others as they are
-    {
-      vtkDataObject::GetData(outputVector, port)->Initialize();
-    }
-  }
+  bpvtk::markFailedUpdate(request, outputVector);
   return 1;
 }
 
 int vtkBoundParticleTracer::EndUpdatePass(
-  const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output)
+  const bpvtk::TracerPass& pass, vtkInformation* request, vtkInformationVector* outputs)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
   using Pass = bpvtk::TracerPass;
@@ -437,7 +430,13 @@ int vtkBoundParticleTracer::EndUpdatePass(
   }
   I.endFailedUpdate(pass.kind == Pass::Skipped);
   request->Remove(SDDP::CONTINUE_EXECUTING());
-  output->Initialize();
+  const bool saving = bpvtk::askedPort(request) == bpvtk::StatePort;
+  vtkPolyData::GetData(outputs, saving ? bpvtk::StatePort : bpvtk::ElementsPort)->Initialize();
+  if (pass.kind == Pass::Failed)
+  {
+    // Said once per update: the other ports' requests find the outputs up to date.
+    bpvtk::markFailedUpdate(request, outputs);
+  }
   return 1;
 }
 
@@ -465,7 +464,7 @@ int vtkBoundParticleTracer::ExecuteUpdatePass(
     this->SetProgressShiftScale(0.0, 1.0);
   }
 
-  auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, output); };
+  auto end = [&](const Pass& pass) { return this->EndUpdatePass(pass, request, outputVector); };
   // The time line's warnings of an update whose Vectors is still not chosen.
   this->TimeLine->sayPending();
   if (!I.hasTimes())

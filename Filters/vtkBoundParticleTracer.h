@@ -606,9 +606,9 @@ protected:
   /// One pipeline pass of an update (RequestData guards it against failed allocations).
   int ExecuteUpdatePass(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 #ifndef __VTK_WRAP__
-  /// Ends the update (quietly when aborted, with the error when failed), or
-  /// this pass asking upstream for another time step.
-  int EndUpdatePass(const bpvtk::TracerPass& pass, vtkInformation* request, vtkPolyData* output);
+  /// Ends the update (quietly when aborted, with the error once when failed:
+  /// bpvtk::markFailedUpdate), or this pass asking upstream for another time step.
+  int EndUpdatePass(const bpvtk::TracerPass&, vtkInformation* request, vtkInformationVector*);
   /// The properties as the VTK-free core takes them.
   bp::TraceSettings Settings() const;
   /// The properties as the internals read them (they read nothing else).

@@ -17,8 +17,12 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   engine too (no fallback), drawn as the CPU engine's; with Stick the
   particles that reach it stay;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
-  with values of Kind that name no interaction warn and lose nothing; with
-  Linking the update fails with a message.
+  with values of Kind that name no interaction warn and lose nothing; a
+  Kind with NaN, with no value that names an interaction, of 3 components
+  or of strings is said as it is, once;
+- SurfaceId is 6 + the block, null and empty blocks counted;
+- with Linking, Anchor = Centre or Restitution 2 the update fails with one
+  message per update, and again after a change.
 """
 import builtins
 import math
@@ -254,9 +258,89 @@ for name, surface, extra, said in cases:
     bptest.check(cells > 0 and np.all(np.isfinite(positions)),
                  "%s: the trace goes on, finite (%d cells)" % (name, cells))
     Delete(bad)
+
+
+def plane_with_array(cells, code):
+    """The plane of plane_with_kinds in `cells` cells, with the cell array
+    Kind that `code` makes as `k` (any class, any components)."""
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+        "from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray\n"
+        "p = vtkPlaneSource(); p.SetOrigin(-1, 0, -1); p.SetPoint1(1, 0, -1)\n"
+        "p.SetPoint2(-1, 0, 1); p.SetXResolution(%d); p.Update()\n"
+        "out = self.GetOutput(); out.ShallowCopy(p.GetOutput())\n%s\n"
+        "out.GetCellData().AddArray(k)\n" % (cells, code))
+    return source
+
+
+# A bad Surface Interaction Array: each fault said as it is.
+kinds = [
+    ("NaN among unknown values", plane_with_array(4, "k = vtkDoubleArray(); k.SetName('Kind')\n"
+     "for v in (3.0, -1.0, float('nan'), 1.0): k.InsertNextValue(v)"),
+     ["3 cells", "such as -1 3 NaN)"], ["no surface to act on"]),
+    ("no value names an interaction", plane_with_array(2, "k = vtkDoubleArray(); "
+     "k.SetName('Kind')\nfor v in (1.5, 0.5): k.InsertNextValue(v)"),
+     ["2 cells", "No cell of the Surfaces is left to act on"], ["no polygons"]),
+    ("3 components", plane_with_array(2, "k = vtkDoubleArray(); k.SetName('Kind'); "
+     "k.SetNumberOfComponents(3)\nk.InsertNextTuple3(1, 5, 5); k.InsertNextTuple3(0, 7, 7)"),
+     ["cell array 'Kind' of 3 components: its first component is taken"], []),
+    ("a string array", plane_with_array(2, "k = vtkStringArray(); k.SetName('Kind')\n"
+     "k.InsertNextValue('1'); k.InsertNextValue('0')"),
+     ["cell array 'Kind' that is not numeric (a vtkStringArray"], ["no cell array"])]
+for name, surface, said, unsaid in kinds:
+    with bptest.CapturedMessages() as messages:
+        bad = tracer(Surfaces=surface, SurfaceInteractionArray="Kind")
+        a, points = events(bad)
+    bptest.check(len(messages.messages) == 1 and builtins.all(messages.mentions(m) for m in said) and
+                 not builtins.any(messages.mentions(m) for m in unsaid),
+                 "%s: one warning saying %s, not %s: %s" % (name, said, unsaid, messages.messages))
+    if name == "3 components":
+        # Component 0: cell 0 (x < 0) an Outlet, cell 1 a Gate.
+        bptest.check(a["Interaction"] is not None and
+                     set(a["Interaction"].tolist()) == {PASSED, TERMINATED},
+                     "3 components: the first says Outlet and Gate: %s" % (
+                         None if a["Interaction"] is None else set(a["Interaction"].tolist())))
+    Delete(bad)
+
+# SurfaceId is 6 + the block: the leaf's number from 0 among all the leaves,
+# null and empty blocks included. Blocks [null, empty, null, the gate].
+blocks = ProgrammableSource(OutputDataSetType="vtkMultiblockDataSet")
+blocks.Script = (
+    "from vtkmodules.vtkFiltersSources import vtkPlaneSource\n"
+    "from vtkmodules.vtkCommonDataModel import vtkPolyData\n"
+    "p = vtkPlaneSource(); p.SetOrigin(0, 0, -1); p.SetPoint1(1, 0, -1)\n"
+    "p.SetPoint2(0, 0, 1); p.Update()\n"
+    "out = self.GetOutput(); out.SetNumberOfBlocks(4)\n"
+    "out.SetBlock(1, vtkPolyData()); out.SetBlock(3, p.GetOutput())\n")
 with bptest.CapturedMessages() as messages:
-    linked = tracer(Surfaces=gate, Linking="Chain", SeedSource=None)
-    linked.UpdatePipeline(1.0)
-bptest.check(messages.mentions("Surfaces (gates, outlets and walls) act on single elements"),
-             "Surfaces with Linking: refused with a message: %s" % messages.messages)
+    blocked = tracer(Surfaces=blocks, SurfaceInteractionArray="Absent")
+    a, points = events(blocked)
+bptest.check(a["SurfaceId"] is not None and len(a["SurfaceId"]) == 2 * COUNT and
+             set(a["SurfaceId"].tolist()) == {9},
+             "the gate in block 3 after null and empty blocks is SurfaceId 6 + 3: %s" %
+             (None if a["SurfaceId"] is None else set(a["SurfaceId"].tolist())))
+bptest.check(messages.mentions("(the first: block 3) have no cell array 'Absent'"),
+             "the warnings number the blocks alike: %s" % messages.messages)
+Delete(blocked)
+
+# A refusal is said once per update (ParaView asks every port), and again
+# at the next update after a change.
+refusals = [("Linking", dict(Surfaces=gate, Linking="Chain", SeedSource=None),
+             "Surfaces (gates, outlets and walls) act on single elements"),
+            ("Anchor", dict(Surfaces=gate, Anchor="Centre"),
+             "Surfaces (gates, outlets and walls) act on travelling elements"),
+            ("Restitution", dict(Boundary="Bounce", Restitution=2.0),
+             "Restitution must be between 0 and 1")]
+for name, settings, refusal in refusals:
+    refused = tracer(**settings)
+    for update in ("first", "after a change"):
+        with bptest.CapturedMessages() as messages:
+            refused.UpdatePipeline(1.0)
+            servermanager.Fetch(refused, None, None, 3)
+        bptest.check(len(messages.messages) == 1 and messages.mentions(refusal),
+                     "%s, %s update: refused once with a message: %s" %
+                     (name, update, messages.messages))
+        refused.ElementSize = 0.2
+    Delete(refused)
 bptest.finish()
