@@ -190,7 +190,8 @@ if [ "$gpu_ok" = 1 ]; then
   jobs=("BoundParticlesGpuPathTests any")
   for path in fused compute fragment; do
     for b in BoundParticlesDeformationTests BoundParticlesInertiaTests \
-      BoundParticlesPhysicsTests BoundParticlesGpuTests; do
+      BoundParticlesPhysicsTests BoundParticlesGpuTests BoundParticlesBoundaryTests \
+      BoundParticlesWallTests BoundParticlesGpuProgramTests BoundParticlesGpuStateTests; do
       jobs+=("$b $path")
     done
   done

@@ -35,7 +35,9 @@ fail() {
 
 bins=(BoundParticlesGpuInfo BoundParticlesGpuRows BoundParticlesStepDrawBench BoundParticlesBench
   BoundParticlesThreadsBench BoundParticlesInertiaBench BoundParticlesGpuTests BoundParticlesPhysicsTests
-  BoundParticlesInertiaTests BoundParticlesDeformationTests BoundParticlesGpuPathTests)
+  BoundParticlesInertiaTests BoundParticlesDeformationTests BoundParticlesGpuPathTests
+  BoundParticlesBoundaryTests BoundParticlesWallTests BoundParticlesGpuProgramTests
+  BoundParticlesGpuStateTests)
 # The libraries every x86-64 Linux has (glibc and the compiler's runtime):
 # never carried. Anything else ldd names is.
 base='^(linux-vdso|ld-linux-x86-64|libc|libm|libdl|librt|libpthread|libgcc_s|libstdc\+\+)\.so'
