@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 namespace bp
@@ -67,6 +68,42 @@ bool near(const double* v, const double x[3], double distance)
   return u >= -EdgeSlack && w >= -EdgeSlack && u + w <= 1.0 + EdgeSlack;
 }
 
+/// At most the corners of a triangle clipped to two slabs (one more a side).
+constexpr int MaxClipped = 8;
+
+/// The part of convex polygon p (n corners) on the side of x[a] = bound
+/// where sign (x[a] - bound) >= 0, into q; its corner count.
+int clipSide(const Vec* p, int n, int a, double bound, double sign, Vec* q)
+{
+  int m = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec& c = p[i];
+    const Vec& d = p[(i + 1) % n];
+    const double dc = sign * (c[std::size_t(a)] - bound), dd = sign * (d[std::size_t(a)] - bound);
+    if (dc >= 0.0)
+    {
+      q[m++] = c;
+    }
+    if ((dc >= 0.0) != (dd >= 0.0))
+    {
+      const double t = dc / (dc - dd);
+      Vec x = { c[0] + t * (d[0] - c[0]), c[1] + t * (d[1] - c[1]), c[2] + t * (d[2] - c[2]) };
+      x[std::size_t(a)] = bound;
+      q[m++] = x;
+    }
+  }
+  return m;
+}
+
+/// The part of convex polygon p (n corners) with lo <= x[a] <= hi, into q
+/// (MaxClipped corners); its corner count.
+int clipToSlab(const Vec* p, int n, int a, double lo, double hi, Vec* q)
+{
+  Vec above[MaxClipped];
+  return clipSide(above, clipSide(p, n, a, lo, 1.0, above), a, hi, -1.0, q);
+}
+
 bool finite3(const float p[3])
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -103,90 +140,219 @@ SurfaceCrossings::SurfaceCrossings(
     this->Surface.push_back(surfaces.size() == given ? surfaces[k] : 0);
     this->Original.push_back(std::uint32_t(k));
   }
+  this->sizeGrid(lo, hi);
+  this->fillBuckets();
+}
+
+void SurfaceCrossings::sizeGrid(const double lo[3], const double hi[3])
+{
   const std::size_t T = this->Surface.size();
-  // About sqrt(T) buckets along the longest side (one triangle a bucket
-  // column of a flat surface), at most 256, and at most 4 T + 64 in all.
-  const double longest = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
-  double size =
-    longest > 0.0 ? longest / std::min(256.0, std::max(1.0, std::ceil(std::sqrt(double(T))))) : 1.0;
-  for (;;)
-  {
-    double total = 1.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      this->Buckets[a] = std::max(1, int(std::ceil((hi[a] - lo[a]) / size)));
-      total *= this->Buckets[a];
-    }
-    if (total <= 4.0 * double(T) + 64.0)
-    {
-      break;
-    }
-    size *= std::cbrt(total / (4.0 * double(T) + 64.0)) * 1.01;
-  }
+  double extent[3];
   for (int a = 0; a < 3; ++a)
   {
     this->Lower[a] = lo[a];
     this->Upper[a] = hi[a];
-    this->BucketSize[a] = size;
+    extent[a] = hi[a] - lo[a];
   }
-  this->fillBuckets();
+  auto total = [&extent](const double s[3])
+  {
+    double n = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      n *= std::max(1.0, std::ceil(extent[a] / s[a]));
+    }
+    return n;
+  };
+  // Cubes: about sqrt(T) buckets along the longest side (one triangle a
+  // bucket column of a flat surface), at most 256, and at most 4 T + 64 in all.
+  const double longest = std::max({ extent[0], extent[1], extent[2] });
+  double size =
+    longest > 0.0 ? longest / std::min(256.0, std::max(1.0, std::ceil(std::sqrt(double(T))))) : 1.0;
+  for (;;)
+  {
+    const double cube[3] = { size, size, size };
+    const double n = total(cube);
+    if (n <= 4.0 * double(T) + 64.0)
+    {
+      break;
+    }
+    size *= std::cbrt(n / (4.0 * double(T) + 64.0)) * 1.01;
+  }
+  // Along an axis the triangles span far (long slivers: a pipe cut along its
+  // axis), a bucket is a quarter of their median extent long at least, and
+  // the other axes are cut finer, to as many buckets as the cubes in all.
+  double median[3] = { 0, 0, 0 };
+  std::vector<double> spans(T);
+  for (int a = 0; a < 3 && T > 0; ++a)
+  {
+    for (std::size_t k = 0; k < T; ++k)
+    {
+      const double* v = &this->Corners[9 * k];
+      spans[k] = std::max({ v[a], v[3 + a], v[6 + a] }) - std::min({ v[a], v[3 + a], v[6 + a] });
+    }
+    std::nth_element(spans.begin(), spans.begin() + std::ptrdiff_t(T / 2), spans.end());
+    median[a] = spans[T / 2];
+  }
+  auto sizes = [&](double s, double out[3])
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      out[a] = std::max({ s, median[a] / 4.0, extent[a] / 256.0 });
+    }
+  };
+  double chosen[3] = { size, size, size };
+  if (std::max({ median[0], median[1], median[2] }) / 4.0 > size)
+  {
+    const double cubes = total(chosen);
+    double fine = size / 1024.0, coarse = size; // total(sizes(coarse)) <= cubes
+    for (int i = 0; i < 40; ++i)
+    {
+      const double middle = std::sqrt(fine * coarse);
+      double s[3];
+      sizes(middle, s);
+      (total(s) <= cubes ? coarse : fine) = middle;
+    }
+    sizes(coarse, chosen);
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->BucketSize[a] = chosen[a];
+    this->Buckets[a] = int(std::max(1.0, std::ceil(extent[a] / chosen[a])));
+  }
+}
+
+template <typename Act>
+std::size_t SurfaceCrossings::touchedBuckets(std::size_t k, std::size_t cap, Act&& act) const
+{
+  const double* v = &this->Corners[9 * k];
+  double lo[3], hi[3], margin[3], scale = 0.0, span = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::min({ v[a], v[3 + a], v[6 + a] });
+    hi[a] = std::max({ v[a], v[3 + a], v[6 + a] });
+    span = std::max(span, hi[a] - lo[a]);
+    scale = std::max({ scale, std::abs(this->Lower[a]), std::abs(this->Upper[a]) });
+  }
+  // A hair wider than the buckets and the triangle: more than the crossings'
+  // EdgeSlack and the roundings, so no crossing a step's box finds is lost.
+  for (int a = 0; a < 3; ++a)
+  {
+    margin[a] = 1e-6 * (this->BucketSize[a] + span) + 1e-12 * scale;
+    lo[a] -= margin[a];
+    hi[a] += margin[a];
+  }
+  int f[3], l[3];
+  this->bucketRange(lo, hi, f, l);
+  // The bucket range [first, last] along axis a of the polygon p's span (wider by the margin).
+  auto cells = [&](int a, const Vec* p, int n, int& first, int& last)
+  {
+    double pl = p[0][std::size_t(a)], ph = pl;
+    for (int i = 1; i < n; ++i)
+    {
+      pl = std::min(pl, p[i][std::size_t(a)]);
+      ph = std::max(ph, p[i][std::size_t(a)]);
+    }
+    first =
+      std::max(f[a], int(std::floor((pl - margin[a] - this->Lower[a]) / this->BucketSize[a])));
+    last = std::min(l[a], int(std::floor((ph + margin[a] - this->Lower[a]) / this->BucketSize[a])));
+  };
+  // The slab of buckets i along axis a, wider by the margin (the outer ones unbounded).
+  auto slab = [&](int a, int i, const Vec* p, int n, Vec* q)
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double s = this->BucketSize[a], o = this->Lower[a];
+    return clipToSlab(p, n, a, i == 0 ? -inf : o + i * s - margin[a],
+      i == this->Buckets[a] - 1 ? inf : o + (i + 1) * s + margin[a], q);
+  };
+  const Vec triangle[3] = { { v[0], v[1], v[2] }, { v[3], v[4], v[5] }, { v[6], v[7], v[8] } };
+  std::size_t count = 0;
+  for (int z = f[2]; z <= l[2]; ++z)
+  {
+    Vec inSlab[MaxClipped], inRow[MaxClipped];
+    const int n = slab(2, z, triangle, 3, inSlab);
+    int fy = 0, ly = -1;
+    if (n > 0)
+    {
+      cells(1, inSlab, n, fy, ly);
+    }
+    for (int y = fy; y <= ly; ++y)
+    {
+      const int m = slab(1, y, inSlab, n, inRow);
+      int fx = 0, lx = -1;
+      if (m > 0)
+      {
+        cells(0, inRow, m, fx, lx);
+      }
+      for (int x = fx; x <= lx; ++x)
+      {
+        if (++count > cap)
+        {
+          return count;
+        }
+        act((std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + x);
+      }
+    }
+  }
+  return count;
 }
 
 void SurfaceCrossings::fillBuckets()
 {
   const std::size_t T = this->Surface.size();
-  // Each triangle in every bucket its box touches (a counting sort).
   const std::size_t B = std::size_t(this->Buckets[0]) * this->Buckets[1] * this->Buckets[2];
-  std::vector<std::uint32_t> count(B + 1, 0);
-  // A long thin triangle (a fan's sliver) touches many buckets: past
-  // MaxBucketsPerTriangle it is kept apart (Large) and tested by every step
-  // instead, so the buckets' entries stay at most that many a triangle.
-  auto range = [this](std::size_t k, int f[3], int l[3])
-  {
-    const double* v = &this->Corners[9 * k];
-    double blo[3], bhi[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      blo[a] = std::min({ v[a], v[3 + a], v[6 + a] });
-      bhi[a] = std::max({ v[a], v[3 + a], v[6 + a] });
-    }
-    this->bucketRange(blo, bhi, f, l);
-    return double(l[0] - f[0] + 1) * double(l[1] - f[1] + 1) * double(l[2] - f[2] + 1);
-  };
-  std::vector<bool> large(T, false);
+  // Each triangle in every bucket it touches (a counting sort), within a
+  // budget of entries linear in the triangles and the buckets: the triangles
+  // that touch the fewest buckets first; the rest (a fan's long slivers) are
+  // kept apart (Large) and tested by every step instead.
+  std::vector<std::uint32_t> touches(T);
   for (std::size_t k = 0; k < T; ++k)
   {
-    int f[3], l[3];
-    large[k] = range(k, f, l) > double(MaxBucketsPerTriangle);
-    if (large[k])
+    touches[k] = std::uint32_t(this->touchedBuckets(k, MaxBucketsPerTriangle, [](std::size_t) {}));
+  }
+  std::vector<std::uint32_t> order(T);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(),
+    [&touches](std::uint32_t x, std::uint32_t y) { return touches[x] < touches[y]; });
+  std::vector<bool> apart(T, false);
+  const std::size_t budget = EntriesPerTriangle * T + B;
+  std::size_t spent = 0;
+  for (std::size_t i = 0; i < T; ++i)
+  {
+    const std::size_t n = touches[order[i]];
+    if (n > MaxBucketsPerTriangle || spent + n > budget)
+    {
+      std::for_each(order.begin() + std::ptrdiff_t(i), order.end(),
+        [&apart](std::uint32_t k) { apart[k] = true; });
+      break;
+    }
+    spent += n;
+  }
+  std::vector<std::uint32_t> count(B + 1, 0);
+  for (std::size_t k = 0; k < T; ++k)
+  {
+    if (apart[k])
     {
       this->Large.push_back(std::uint32_t(k));
     }
-  }
-  auto visit = [&](auto&& act)
-  {
-    for (std::size_t k = 0; k < T; ++k)
+    else
     {
-      int f[3], l[3];
-      if (large[k])
-      {
-        continue;
-      }
-      range(k, f, l);
-      for (int z = f[2]; z <= l[2]; ++z)
-        for (int y = f[1]; y <= l[1]; ++y)
-          for (int x = f[0]; x <= l[0]; ++x)
-            act((std::size_t(z) * this->Buckets[1] + y) * this->Buckets[0] + x, k);
+      this->touchedBuckets(k, MaxBucketsPerTriangle, [&](std::size_t b) { ++count[b + 1]; });
     }
-  };
-  visit([&](std::size_t b, std::size_t) { ++count[b + 1]; });
+  }
   for (std::size_t b = 0; b < B; ++b)
   {
     count[b + 1] += count[b];
   }
   this->Start = count;
   this->Members.resize(count[B]);
-  visit([&](std::size_t b, std::size_t k) { this->Members[count[b]++] = std::uint32_t(k); });
+  for (std::size_t k = 0; k < T; ++k)
+  {
+    if (!apart[k])
+    {
+      this->touchedBuckets(k, MaxBucketsPerTriangle,
+        [&](std::size_t b) { this->Members[count[b]++] = std::uint32_t(k); });
+    }
+  }
 }
 
 void SurfaceCrossings::bucketRange(

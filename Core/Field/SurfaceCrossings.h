@@ -14,11 +14,17 @@
  * crossing (the first triangle in the surface's order); the edges belong to
  * the triangles (closed tests), so no crossing slips between two of them.
  *
- * The triangles are kept in a uniform grid of buckets over their bounds, so
- * a step tests only the triangles of the buckets its segment's box touches;
- * a triangle that would touch more than MaxBucketsPerTriangle buckets (a
- * long sliver of a fan) is kept apart and tested by every step, so that the
- * buckets hold at most that many entries a triangle.
+ * The triangles are kept in a grid of buckets over their bounds, so a step
+ * tests only the triangles of the buckets its segment's box touches. A
+ * triangle is in the buckets it really touches (its box's buckets that a
+ * triangle-box test, a hair wider than the buckets, keeps), and the buckets
+ * are as long along an axis as a quarter of the triangles' median extent
+ * along it at least, so that a surface of long slivers (a pipe cut along
+ * its axis) is bucketed like a well-shaped one. The buckets hold at most
+ * EntriesPerTriangle entries a triangle plus one a bucket: the triangles
+ * that touch the fewest buckets first; the rest (the long slivers of a fan,
+ * or a triangle touching more than MaxBucketsPerTriangle buckets) are kept
+ * apart and tested by every step.
  * Triangles with a corner that is not finite, or without area, are left out
  * (droppedTriangles() counts them, for the caller's warning).
  */
@@ -88,6 +94,19 @@ public:
    */
   bool lies(const float p[3], double distance) const;
 
+  /// The bucket index's size: its buckets, their entries (at most
+  /// EntriesPerTriangle a triangle plus one a bucket), and the triangles
+  /// kept apart, which every step tests.
+  std::size_t bucketCount() const { return this->Start.size() - 1; }
+  std::size_t bucketEntries() const { return this->Members.size(); }
+  std::size_t apartTriangles() const { return this->Large.size(); }
+
+  /// The buckets' entries: at most this many a triangle, plus one a bucket.
+  static constexpr std::size_t EntriesPerTriangle = 64;
+  /// A triangle that touches more buckets is kept apart (and its buckets no
+  /// longer counted).
+  static constexpr std::size_t MaxBucketsPerTriangle = 1024;
+
   /// How close two triangles' t along one step are to be one crossing
   /// through their shared edge (the same t, computed from either triangle).
   static constexpr double SharedEdgeT = 1e-9;
@@ -100,9 +119,15 @@ private:
   bool meetAlong(const float a[3], const float b[3], Visit&& visit) const;
   /// The crossing of step a -> b with kept triangle k at t.
   SurfaceCrossing crossingAt(const float a[3], const float b[3], std::uint32_t k, double t) const;
+  /// The grid's buckets (Buckets, BucketSize) over the bounds lo, hi.
+  void sizeGrid(const double lo[3], const double hi[3]);
   /// The buckets' members (Start, Members) and the triangles kept apart
   /// (Large), once the triangles and the grid are set.
   void fillBuckets();
+  /// Calls act(bucket) for each bucket kept triangle k touches (a hair
+  /// wider), up to cap + 1 of them; returns how many it called.
+  template <typename Act>
+  std::size_t touchedBuckets(std::size_t k, std::size_t cap, Act&& act) const;
   /// The bucket range [lo, hi] along each axis that a box touches.
   void bucketRange(const double lo[3], const double hi[3], int first[3], int last[3]) const;
 
@@ -118,10 +143,8 @@ private:
   /// Bucket b's triangles are Members[Start[b], Start[b + 1]).
   std::vector<std::uint32_t> Start;
   std::vector<std::uint32_t> Members;
-  /// The triangles that touch more than MaxBucketsPerTriangle buckets, in
-  /// no bucket: every step tests them.
+  /// The triangles kept apart, in no bucket: every step tests them.
   std::vector<std::uint32_t> Large;
-  static constexpr int MaxBucketsPerTriangle = 64;
 };
 
 } // namespace bp

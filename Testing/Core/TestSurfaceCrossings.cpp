@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace
@@ -16,6 +18,29 @@ namespace
 std::vector<float> unitSquare(float o = 0.0f)
 {
   return { o, o, 0, 1 + o, o, 0, 1 + o, 1 + o, 0, o, o, 0, 1 + o, 1 + o, 0, o, 1 + o, 0 };
+}
+
+/// An open pipe of radius 0.3 along y from -0.9 to 0.9, cut into `around`
+/// x `along` quads, two triangles each (around = 10000, along = 1: long
+/// slivers, as an extrusion gives).
+std::vector<float> pipe(int around, int along)
+{
+  std::vector<float> corners;
+  auto corner = [&](int i, int r)
+  {
+    const double a = 2 * M_PI * (i % around) / around, y = -0.9 + 1.8 * r / along;
+    corners.insert(corners.end(), { float(0.3 * std::cos(a)), float(y), float(0.3 * std::sin(a)) });
+  };
+  for (int r = 0; r < along; ++r)
+    for (int i = 0; i < around; ++i)
+    {
+      for (const auto& [di, dr] :
+        { std::pair{ 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 0 }, { 1, 1 }, { 0, 1 } })
+      {
+        corner(i + di, r + dr);
+      }
+    }
+  return corners;
 }
 
 bool cross(const bp::SurfaceCrossings& s, std::vector<float> a, std::vector<float> b,
@@ -235,7 +260,7 @@ TEST(SurfaceCrossings, EveryCrossingOfAStepComesInOrderOnceEach)
 TEST(SurfaceCrossings, AFanOfLongThinTrianglesIsCrossedOnceWherever)
 {
   // A disc cut as a fan (every triangle shares the centre): its slivers
-  // span many buckets, and are kept apart and tested by every step.
+  // span many buckets, and every one is found wherever a step crosses.
   const int n = 3000;
   std::vector<float> fan;
   for (int k = 0; k < n; ++k)
@@ -262,4 +287,103 @@ TEST(SurfaceCrossings, AFanOfLongThinTrianglesIsCrossedOnceWherever)
   }
   const float beyond[3] = { 1.5f, 0, 0 };
   EXPECT_FALSE(disc.lies(beyond, 1e-3));
+}
+
+TEST(SurfaceCrossings, APipeOfLongSliversIsBucketedLikeAWellShapedOne)
+{
+  // 20,000 slivers the pipe's length: none kept apart (tested by every
+  // step), a few buckets each, as the same number of well-shaped triangles.
+  const bp::SurfaceCrossings slivers(pipe(10000, 1), {}), quads(pipe(100, 100), {});
+  ASSERT_EQ(slivers.triangleCount(), 20000u);
+  EXPECT_EQ(slivers.apartTriangles(), 0u);
+  EXPECT_EQ(quads.apartTriangles(), 0u);
+  EXPECT_LE(slivers.bucketEntries(), 8 * slivers.triangleCount());
+  EXPECT_LE(quads.bucketEntries(), 8 * quads.triangleCount());
+  // A step across the wall anywhere crosses it once, where it meets the
+  // wall's one triangle there.
+  std::mt19937 draw(3);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), height(-0.85, 0.85);
+  for (int k = 0; k < 200; ++k)
+  {
+    const double a = angle(draw), y = height(draw);
+    const float in[3] = { float(0.29 * std::cos(a)), float(y), float(0.29 * std::sin(a)) };
+    const float out[3] = { float(0.31 * std::cos(a)), float(y), float(0.31 * std::sin(a)) };
+    std::vector<bp::SurfaceCrossing> all;
+    slivers.allCrossings(in, out, all);
+    ASSERT_EQ(all.size(), 1u) << a << " " << y;
+    EXPECT_NEAR(all[0].t, 0.5, 1e-3);
+    EXPECT_EQ(all[0].direction, -1); // the normals point inwards: (b - a) x (c - a)
+    EXPECT_TRUE(slivers.lies(all[0].point.data(), 1e-5));
+  }
+}
+
+TEST(SurfaceCrossings, ADiagonalSliverIsInTheBucketsItTouchesNotItsBoxes)
+{
+  // Slivers along a cube's diagonal: their boxes cover every bucket, the
+  // slivers a line of them; none kept apart, a few buckets each.
+  std::vector<float> corners;
+  const int n = 20000;
+  for (int k = 0; k < n; ++k)
+  {
+    const float o = float(k) / n;
+    corners.insert(corners.end(), { o, 0, 0, o + 1, 1, 1, o + 1.0001f, 1, 1 });
+  }
+  const bp::SurfaceCrossings diagonal(corners, {});
+  EXPECT_EQ(diagonal.apartTriangles(), 0u);
+  EXPECT_LE(diagonal.bucketEntries(), 32u * n);
+  EXPECT_LT(diagonal.bucketEntries(), std::size_t(n) * diagonal.bucketCount() / 4);
+  // Halfway along the slivers, a step across them in z meets each there.
+  const float a[3] = { 1.0f, 0.5f, 0.4f }, b[3] = { 1.0f, 0.5f, 0.6f };
+  std::vector<bp::SurfaceCrossing> all;
+  diagonal.allCrossings(a, b, all);
+  EXPECT_GE(all.size(), 1u);
+}
+
+TEST(SurfaceCrossings, AFanAmongSmallTrianglesKeepsTheBucketsLinear)
+{
+  // Small triangles most of all (fine buckets), and a fan of slivers from a
+  // corner across the square: the slivers would fill the buckets with
+  // hundreds of entries each. The buckets hold at most EntriesPerTriangle
+  // entries a triangle plus one a bucket, the slivers that touch the fewest;
+  // the others are kept apart, and every one is still found.
+  std::vector<float> corners;
+  const int slivers = 30000, small = 40000;
+  for (int k = 0; k < slivers; ++k)
+  {
+    // From (0, 0) to the diagonal x + y = 1.
+    const float s0 = float(k) / slivers, s1 = float(k + 1) / slivers;
+    corners.insert(corners.end(), { 0, 0, 0, s0, 1 - s0, 0, s1, 1 - s1, 0 });
+  }
+  std::mt19937 draw(9);
+  std::uniform_real_distribution<float> where(0.0f, 1.0f);
+  for (int k = 0; k < small; ++k)
+  {
+    // Beyond the diagonal: x + y > 1.05.
+    float x = where(draw), y = where(draw);
+    if (x + y < 1.05f)
+    {
+      x = 1.0f - x, y = 1.0f - y;
+    }
+    x = std::max(x, 1.06f - y);
+    corners.insert(corners.end(), { x, y, 0, x + 0.003f, y, 0, x, y + 0.003f, 0 });
+  }
+  const bp::SurfaceCrossings mixed(corners, {});
+  const std::size_t T = mixed.triangleCount();
+  ASSERT_EQ(T, std::size_t(slivers + small));
+  EXPECT_LE(
+    mixed.bucketEntries(), bp::SurfaceCrossings::EntriesPerTriangle * T + mixed.bucketCount());
+  EXPECT_GT(mixed.apartTriangles(), 0u);
+  EXPECT_LT(mixed.apartTriangles(), std::size_t(slivers));
+  std::uniform_real_distribution<float> within(0.02f, 0.45f);
+  for (int k = 0; k < 50; ++k)
+  {
+    const float x = within(draw), y = within(draw);
+    std::vector<bp::SurfaceCrossing> all;
+    const float a[3] = { x, y, -1 }, b[3] = { x, y, 1 };
+    mixed.allCrossings(a, b, all);
+    EXPECT_EQ(all.size(), 1u) << x << " " << y;
+    const float on[3] = { x, y, 1e-7f }, off[3] = { x, y, 1e-3f };
+    EXPECT_TRUE(mixed.lies(on, 1e-6));
+    EXPECT_FALSE(mixed.lies(off, 1e-6));
+  }
 }
