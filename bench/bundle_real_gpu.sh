@@ -267,6 +267,8 @@ fi
 # alone; appended to rows.txt.
 if [ "$gpu_ok" = 1 ]; then
   secs=$(share 15 40)
+  # At least one group size's compile and run, also on a cold shader cache.
+  [ "$secs" -lt 15 ] && secs=15
   until=$((SECONDS + secs))
   done_groups=() cut_groups=() why=""
   # Under 100 s: the steady rows of 16,384 particles on 64^3 fields.
