@@ -187,13 +187,20 @@ if [ "$gpu_ok" = 1 ]; then
   shards=1
   [ "$budget" -lt 420 ] && shards=4
   [ "$budget" -lt 200 ] && shards=8
+  binaries=(BoundParticlesDeformationTests BoundParticlesInertiaTests BoundParticlesPhysicsTests
+    BoundParticlesGpuTests BoundParticlesBoundaryTests BoundParticlesWallTests
+    BoundParticlesGpuProgramTests BoundParticlesGpuStateTests)
   jobs=("BoundParticlesGpuPathTests any")
   for path in fused compute fragment; do
-    for b in BoundParticlesDeformationTests BoundParticlesInertiaTests \
-      BoundParticlesPhysicsTests BoundParticlesGpuTests BoundParticlesBoundaryTests \
-      BoundParticlesWallTests BoundParticlesGpuProgramTests BoundParticlesGpuStateTests; do
+    for b in "${binaries[@]}"; do
       jobs+=("$b $path")
     done
+  done
+  # Every binary starts here (its libraries found, its tests listed), whatever
+  # the budget lets run.
+  unstarted=()
+  for b in BoundParticlesGpuPathTests "${binaries[@]}"; do
+    "$bin/$b" --gtest_list_tests >/dev/null 2>>"$log" || unstarted+=("$b")
   done
   for job in "${jobs[@]}"; do
     read -r b path <<<"$job"
@@ -224,8 +231,10 @@ if [ "$gpu_ok" = 1 ]; then
     fi
   done
   detail="$passed of ${#jobs[@]} test runs passed"
+  [ "${#unstarted[@]}" -eq 0 ] && detail+=", all $((${#binaries[@]} + 1)) binaries started"
   [ "$shards" -gt 1 ] && detail+=", each one shard of $shards (the budget)"
   [ "${#cut[@]}" -gt 0 ] && detail+="; not run or cut by the budget: ${cut[*]}"
+  [ "${#unstarted[@]}" -gt 0 ] && failed+=("${unstarted[*]}: did not start")
   if [ "${#failed[@]}" -gt 0 ]; then
     result tests "failed (${failed[*]}; $detail; see tests.txt)"
   elif [ "$passed" -eq 0 ]; then
