@@ -81,10 +81,53 @@ SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
   }
 }
 
-bool SurfaceSet::passages(
-  const float a[3], const float b[3], bool wallsEnd, std::vector<SurfaceCrossing>& out) const
+void SurfaceSet::crossingsAcrossSeam(const float a[3], const float b[3], const Domain* box,
+  const float* seam, std::vector<SurfaceCrossing>& out) const
 {
   this->Passing.allCrossings(a, b, out);
+  if (!box || !seam || (seam[0] == 0.0f && seam[1] == 0.0f && seam[2] == 0.0f))
+  {
+    return;
+  }
+  // Within the box (closed) along each axis the seam moves the step.
+  const auto within = [box, seam](const SurfaceCrossing& c)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      if (seam[k] != 0.0f && !(c.point[k] >= box->lower[k] && c.point[k] <= box->upper[k]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  out.erase(
+    std::remove_if(out.begin(), out.end(), [&](const SurfaceCrossing& c) { return !within(c); }),
+    out.end());
+  const float shiftedA[3] = { a[0] + seam[0], a[1] + seam[1], a[2] + seam[2] };
+  const float shiftedB[3] = { b[0] + seam[0], b[1] + seam[1], b[2] + seam[2] };
+  thread_local std::vector<SurfaceCrossing> beyond;
+  this->Passing.allCrossings(shiftedA, shiftedB, beyond);
+  const std::size_t before = out.size();
+  for (const SurfaceCrossing& c : beyond)
+  {
+    // A triangle met within the box by both steps is met on the seam itself
+    // (its two points a period apart): one passage, the step's.
+    const auto same = std::find_if(out.begin(), out.begin() + std::ptrdiff_t(before),
+      [&](const SurfaceCrossing& x) { return x.triangle == c.triangle; });
+    if (within(c) && same == out.begin() + std::ptrdiff_t(before))
+    {
+      out.push_back(c);
+    }
+  }
+  std::stable_sort(out.begin(), out.end(),
+    [](const SurfaceCrossing& x, const SurfaceCrossing& y) { return x.t < y.t; });
+}
+
+bool SurfaceSet::passages(const float a[3], const float b[3], bool wallsEnd,
+  std::vector<SurfaceCrossing>& out, const Domain* box, const float* seam) const
+{
+  this->crossingsAcrossSeam(a, b, box, seam, out);
   // A particle-level Wall (Slip, Bounce) is no passage of the centre.
   out.erase(std::remove_if(out.begin(), out.end(),
               [&](const SurfaceCrossing& c) {
