@@ -104,20 +104,37 @@ void SurfaceSet::crossingsAcrossSeam(const float a[3], const float b[3], const D
   out.erase(
     std::remove_if(out.begin(), out.end(), [&](const SurfaceCrossing& c) { return !within(c); }),
     out.end());
-  const float shiftedA[3] = { a[0] + seam[0], a[1] + seam[1], a[2] + seam[2] };
-  const float shiftedB[3] = { b[0] + seam[0], b[1] + seam[1], b[2] + seam[2] };
+  // The step translated by each part of the seam (the whole of it, and
+  // where it moves along two or three axes, each one alone and each pair:
+  // the piece of a step through a corner between its two seams).
   thread_local std::vector<SurfaceCrossing> beyond;
-  this->Passing.allCrossings(shiftedA, shiftedB, beyond);
-  const std::size_t before = out.size();
-  for (const SurfaceCrossing& c : beyond)
+  for (unsigned part = 1; part < 8; ++part)
   {
-    // A triangle met within the box by both steps is met on the seam itself
-    // (its two points a period apart): one passage, the step's.
-    const auto same = std::find_if(out.begin(), out.begin() + std::ptrdiff_t(before),
-      [&](const SurfaceCrossing& x) { return x.triangle == c.triangle; });
-    if (within(c) && same == out.begin() + std::ptrdiff_t(before))
+    float s[3] = { 0, 0, 0 };
+    bool picked = true;
+    for (std::size_t k = 0; k < 3; ++k)
     {
-      out.push_back(c);
+      const bool in = (part >> k) & 1u;
+      picked = picked && (!in || seam[k] != 0.0f);
+      s[k] = in ? seam[k] : 0.0f;
+    }
+    if (!picked)
+    {
+      continue;
+    }
+    const float shiftedA[3] = { a[0] + s[0], a[1] + s[1], a[2] + s[2] };
+    const float shiftedB[3] = { b[0] + s[0], b[1] + s[1], b[2] + s[2] };
+    this->Passing.allCrossings(shiftedA, shiftedB, beyond);
+    for (const SurfaceCrossing& c : beyond)
+    {
+      // A triangle met within the box by two of them is met on a seam itself
+      // (its points a period apart): one passage, the first found.
+      const bool met = std::any_of(out.begin(), out.end(),
+        [&](const SurfaceCrossing& x) { return x.triangle == c.triangle; });
+      if (within(c) && !met)
+      {
+        out.push_back(c);
+      }
     }
   }
   std::stable_sort(out.begin(), out.end(),

@@ -79,12 +79,14 @@ public:
    * `seam` (3 floats, or null for none): the whole periods a centre that
    * left through a periodic side of `box` moves by after the step
    * (periodicShift; engine specification 2.8, 2.10). Where it is not 0 the
-   * step is also tested translated by it, a + seam -> b + seam, and from
-   * each of the two only the crossings whose point lies within the box
-   * (closed) along the axes the seam moves are kept, so a surface just past
-   * the seam is passed too, and one spanning it once. Their t stay the
-   * share of the whole step; a triangle met by both (on the seam itself) is
-   * passed once, where the step meets it. A seam of 0 changes nothing.
+   * step is also tested translated by it, a + seam -> b + seam (and, where
+   * it moves along several axes, by each part of it: a step through a
+   * corner), and from each segment only the crossings whose point lies
+   * within the box (closed) along the axes the seam moves are kept, so a
+   * surface just past the seam is passed too, and one spanning it once.
+   * Their t stay the share of the whole step; a triangle met by two
+   * segments (on the seam itself) is passed once, the untranslated step's
+   * first. A seam of 0 changes nothing.
    */
   bool passages(const float a[3], const float b[3], bool wallsEnd,
     std::vector<SurfaceCrossing>& out, const Domain* box = nullptr,

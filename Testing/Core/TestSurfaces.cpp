@@ -660,3 +660,32 @@ TEST(Surfaces, ASurfaceSpanningAPeriodicSeamIsPassedOnce)
   EXPECT_EQ(passes[0], 3u);
   EXPECT_EQ(passes[1], 3u);
 }
+
+TEST(Surfaces, ACentreThroughAPeriodicCornerPassesAGateBetweenItsTwoSeams)
+{
+  // x and y periodic, the flow (1, 1, 0): a square released at (0.505,
+  // 0.515) goes through the corner in the step from (0.985, 0.995) to
+  // (1.005, 1.015), across the y seam at a quarter of it and the x seam at
+  // three quarters. A gate at x = 0.995 over y in [-1, -0.98] lies in the
+  // piece between the two (past the y seam only): passed at t = 0.49 + 2 k.
+  bp::GridGeometry g = bptest::grid(9);
+  g.periodic = { true, true, false };
+  const bp::VectorField field = bptest::uniformFlow({ 1, 1, 0 }, g);
+  std::vector<float> corners = rectangle(-1.0f, 1.0f, -1.0f, -0.98f, 0.995f);
+  for (std::size_t k = 0; k < corners.size(); k += 3)
+    std::swap(corners[k], corners[k + 2]); // the plane x = 0.995
+  bp::Parameters p = squares({ 0.505f, 0.515f, 0.0f }, 100.0f);
+  p.surfaces = surfaceOf(corners, bp::SurfaceInteraction::Gate);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, field, 250, 0.02);
+  const std::vector<bp::InteractionEvent> events = engine.interactions().events();
+  ASSERT_EQ(events.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(events[k].time, 0.49 + 2.0 * double(k), 1e-4);
+    EXPECT_NEAR(events[k].position[0], 0.995f, 1e-5f);
+    EXPECT_NEAR(events[k].position[1], -0.995f, 1e-4f);
+  }
+}
