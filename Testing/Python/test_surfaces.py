@@ -17,8 +17,9 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   engine too (no fallback), drawn as the CPU engine's; with Stick the
   particles that reach it stay;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
-  with values of Kind that name no interaction warn and lose nothing; with
-  Linking the update fails with a message.
+  with values of Kind that name no interaction warn and lose nothing, and so
+  does a Slip wall that reaches a periodic side (particles crossing the seam
+  can pass it); with Linking the update fails with a message.
 """
 import builtins
 import math
@@ -245,7 +246,10 @@ cases = [("no cells", empty, {}, "no surface to act on"),
          ("unknown values", plane_with_kinds([1.0, 7.0]),
           {"SurfaceInteractionArray": "Kind"}, "names no interaction"),
          ("a missing array", gate, {"SurfaceInteractionArray": "Absent"},
-          "no cell array 'Absent'")]
+          "no cell array 'Absent'"),
+         ("a Slip wall at a periodic side", plane_with_kinds([2.0, 0.0]),
+          {"SurfaceInteractionArray": "Kind", "Boundary": "Slip", "Periodic": [1, 0, 0]},
+          "closer than one cell to a periodic side")]
 for name, surface, extra, said in cases:
     with bptest.CapturedMessages() as messages:
         bad = tracer(Surfaces=surface, **extra)
