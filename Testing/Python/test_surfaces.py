@@ -17,9 +17,8 @@ released on the circle of radius 0.5 at angles (j + 1/2) 2 pi / 8:
   engine too (no fallback), drawn as the CPU engine's; with Stick the
   particles that reach it stay;
 - bad input: Surfaces with no cells, outside the field, with NaN points or
-  with values of Kind that name no interaction warn and lose nothing, and so
-  does a Slip wall that reaches a periodic side (particles crossing the seam
-  can pass it); with Linking the update fails with a message.
+  with values of Kind that name no interaction warn and lose nothing; with
+  Linking the update fails with a message.
 """
 import builtins
 import math
@@ -236,7 +235,8 @@ bptest.check(covered > 0.001 and mean <= 0.5 and pixels <= 0.0003,
              "the GPU display keeps the particles off the wall as the CPU engine does: mean "
              "%.3f, pixels %.4f, %.4f drawn" % (mean, pixels, covered))
 
-# Bad input: a clear warning, and the trace goes on.
+# Bad input: a clear warning, and the trace goes on. A Slip wall that reaches
+# a periodic side warns too: a particle crossing the seam can pass it.
 empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
 empty.Script = "pass"
 far = Plane(Origin=[10, 10, 10], Point1=[11, 10, 10], Point2=[10, 11, 10])
