@@ -301,6 +301,59 @@ std::string leftOut(const Gathered& g, const bp::SurfaceSet& set, const std::str
   return say.str();
 }
 
+/// Where Walls act on the particles (Boundary Stick, Slip or Bounce): how
+/// many Wall triangles come closer than one cell (the grid's mean spacing) to a
+/// periodic side of `box`, said as a warning (empty: none). A particle's
+/// step is tested before its element's periodic move, not across the seam
+/// (engine specification 2.10), so it can pass such a wall.
+std::string wallsNearSeam(const bp::SurfaceTriangles& t, bp::Boundary boundary,
+  const bp::GridGeometry& grid, const bp::Domain& box)
+{
+  if (!bp::isWall(boundary))
+  {
+    return std::string();
+  }
+  std::size_t near = 0;
+  int first = -1;
+  for (std::size_t k = 0; k < t.interaction.size() && 9 * k + 9 <= t.corners.size(); ++k)
+  {
+    const float* c = t.corners.data() + 9 * k;
+    for (int a = 0; a < 3 && t.interaction[k] == bp::SurfaceInteraction::Wall; ++a)
+    {
+      if (!box.periodic[a] || box.degenerate[a])
+      {
+        continue;
+      }
+      const double lo = std::min({ c[a], c[3 + a], c[6 + a] });
+      const double hi = std::max({ c[a], c[3 + a], c[6 + a] });
+      const double cell = grid.spacing[std::size_t(a)];
+      const double lower = box.lower[std::size_t(a)], upper = box.upper[std::size_t(a)];
+      if ((lo < lower + cell && hi > lower - cell) || (lo < upper + cell && hi > upper - cell))
+      {
+        ++near;
+        first = first < 0 ? a : first;
+        break;
+      }
+    }
+  }
+  if (near == 0)
+  {
+    return std::string();
+  }
+  const char* rule = boundary == bp::Boundary::Stick ? "Stick"
+    : boundary == bp::Boundary::Slip                 ? "Slip"
+                                                     : "Bounce";
+  const char axis = "xyz"[first];
+  std::ostringstream say;
+  say << near << " Wall triangles of the Surfaces lie closer than one cell to a periodic side (the "
+      << "first along " << axis << "): with Boundary " << rule
+      << " a particle's step is tested before its element moves across the seam, so a particle "
+         "that crosses the seam can pass a wall just past it. Keep walls farther from a periodic "
+         "side than a step and an element's size (gates, outlets and walls that end elements "
+         "are passed across it). ";
+  return say.str();
+}
+
 } // namespace
 
 void vtkBoundParticleTracerInternals::gatherSurfaces(const Config& config,
@@ -332,7 +385,8 @@ void vtkBoundParticleTracerInternals::gatherSurfaces(const Config& config,
     }
   }
   auto set = std::make_shared<const bp::SurfaceSet>(g.triangles);
-  const std::string said = leftOut(g, *set, config.surfaceInteractionArray, flat, whole);
+  const std::string said = leftOut(g, *set, config.surfaceInteractionArray, flat, whole) +
+    wallsNearSeam(g.triangles, p.boundary, field.grid(), whole);
   if (!said.empty() && this->Said.first(bpvtk::Topic::Surfaces, said))
   {
     vtkWarningWithObjectMacro(this->Owner, << said);

@@ -59,16 +59,96 @@ bool bpCrossesOutlet(vec3 a, vec3 b)
   return false;
 }
 
-// The smallest t of the step a -> b's crossings with the Outlets, 2 where
-// it crosses none: whether it passes an Outlet or a Wall first.
-float bpFirstOutletCrossing(vec3 a, vec3 b)
+// SurfaceSet::passages' seam (engine specification 2.8, 2.10): whether the
+// point p of a crossing lies within the box (closed) along each axis the
+// periodic shift `seam` moves the element by.
+bool bpWithinSeam(vec3 p, vec3 seam)
 {
-  vec3 d = b - a;
-  float best = 2.0;
-  for (int k = 0; k < bpOutletCount; ++k)
+  for (int a = 0; a < 3; ++a)
   {
-    float t = bpMeetOutlet(k, a, d);
-    best = t > 0.0 && t < best ? t : best;
+    if (seam[a] != 0.0 && !(p[a] >= bpLower[a] && p[a] <= bpUpper[a]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The part of `seam` that `part` picks (bit a: axis a) in s; false where it
+// picks an axis the seam does not move. Part 0 is the step itself.
+bool bpSeamPart(vec3 seam, int part, out vec3 s)
+{
+  s = vec3(0.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    if ((part & (1 << a)) != 0)
+    {
+      if (seam[a] == 0.0)
+      {
+        return false;
+      }
+      s[a] = seam[a];
+    }
+  }
+  return true;
+}
+
+// The smallest t of the step a -> b's crossings with the Outlets, 2 where
+// it crosses none: whether it passes an Outlet or a Wall first. With a
+// `seam` (not 0: the centre left through a periodic side) the step
+// translated by each part of it is tested too, and of each only the
+// crossings within the box along the seam's axes count (t the share of the
+// whole step): SurfaceSet::passages.
+float bpFirstOutletCrossing(vec3 a, vec3 b, vec3 seam)
+{
+  bool across = seam != vec3(0.0);
+  float best = 2.0;
+  for (int part = 0; part < (across ? 8 : 1); ++part)
+  {
+    vec3 s;
+    if (!bpSeamPart(seam, part, s))
+    {
+      continue;
+    }
+    vec3 from = a + s, d = (b + s) - from;
+    for (int k = 0; k < bpOutletCount; ++k)
+    {
+      float t = bpMeetOutlet(k, from, d);
+      t = across && t > 0.0 && !bpWithinSeam(from + t * d, seam) ? -1.0 : t;
+      best = t > 0.0 && t < best ? t : best;
+    }
+  }
+  return best;
+}
+
+// bpFirstWallCrossing of the step a -> b across a `seam` that is not 0, as
+// bpFirstOutletCrossing: the step and its translates, the crossings within
+// the box along the seam's axes.
+float bpFirstWallAcross(vec3 a, vec3 b, vec3 seam, out int first)
+{
+  first = -1;
+  float best = 2.0;
+  if (!bpFinite(a) || !bpFinite(b))
+  {
+    return best;
+  }
+  for (int part = 0; part < 8; ++part)
+  {
+    vec3 s;
+    if (!bpSeamPart(seam, part, s))
+    {
+      continue;
+    }
+    vec3 from = a + s, d = (b + s) - from;
+    for (int k = 0; k < bpWallCount; ++k)
+    {
+      float t = bpMeetWall(k, from, d);
+      if (t > 0.0 && t < best && bpWithinSeam(from + t * d, seam))
+      {
+        best = t;
+        first = k;
+      }
+    }
   }
   return best;
 }
@@ -84,15 +164,18 @@ bool bpTestsPassages()
 // Engine::passSurfaces' flag for an element whose centre went a -> b: 2
 // (terminated) where the first Outlet or Wall it passes is an Outlet, or a
 // Wall with Terminate; 1 (due) where it is a Wall with Release Again; else 0.
-float bpPassageFlag(vec3 a, vec3 b)
+// `seam`: the periodic shift the element moves by after the step (0: none).
+float bpPassageFlag(vec3 a, vec3 b, vec3 seam)
 {
+  bool across = seam != vec3(0.0);
   if (bpWallCount == 0 || bpWalled())
   {
-    return bpOutletCount > 0 && bpCrossesOutlet(a, b) ? 2.0 : 0.0;
+    bool crosses = across ? bpFirstOutletCrossing(a, b, seam) <= 1.0 : bpCrossesOutlet(a, b);
+    return bpOutletCount > 0 && crosses ? 2.0 : 0.0;
   }
   int k;
-  float wall = bpFirstWallCrossing(a, b, k);
-  float outlet = bpOutletCount > 0 ? bpFirstOutletCrossing(a, b) : 2.0;
+  float wall = across ? bpFirstWallAcross(a, b, seam, k) : bpFirstWallCrossing(a, b, k);
+  float outlet = bpOutletCount > 0 ? bpFirstOutletCrossing(a, b, seam) : 2.0;
   if (outlet <= 1.0 && outlet <= wall)
   {
     return 2.0;
@@ -108,6 +191,7 @@ float bpPassageFlag(vec3 a, vec3 b)
 void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, out vec4 shift)
 {
   shift = vec4(0.0);
+  vec3 seam = vec3(0.0); // the periodic shift alone (not the anchor's move)
   if (bpSettleOnly)
   {
     tested = vec4(state.x, state.y, 0.0, 0.0);
@@ -142,6 +226,7 @@ void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, o
     // Engine::wrapPeriodic: a centre beyond a periodic side moves the whole
     // element by whole periods (Periodic.h); finalize applies the shift.
     shift = vec4(bpPeriodicShift(c), 0.0);
+    seam = shift.xyz;
     if (shift.xyz != vec3(0.0))
     {
       at = c + shift.xyz;
@@ -157,11 +242,12 @@ void bpTestElement(int e, vec4 state, vec4 center, vec3 from, out vec4 tested, o
   bool due = !finite || bpReleasedStagnant(e, state, c, center.xyz);
   // The Outlets: an element shown (centre .w 0: not hidden by the release
   // window, not terminated), finite and not due, whose centre's step (before
-  // any periodic move) crosses one ends there; that wins over leaving.
+  // any periodic move, and across the seam where it moves: bpPassageFlag)
+  // crosses one ends there; that wins over leaving.
   // With Release Again or Terminate a Wall ends it too (flagged 1 or 2, as
   // the field's sides do), where it passes the Wall before any Outlet.
   float ended = bpTestsPassages() && !due && center.w < 0.5 && !bpLinked && bpFinite(from)
-    ? bpPassageFlag(from, c)
+    ? bpPassageFlag(from, c, seam)
     : 0.0;
   // A super set's element stays (finalize keeps its last good positions):
   // resetting it alone would tear the structure. A terminated element

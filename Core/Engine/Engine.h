@@ -489,8 +489,11 @@ private:
   /// their share of the step as time). The flag a passage ends it with
   /// (Terminated at an Outlet; at a Wall, Boundary's: ResetDue for Release
   /// Again, Terminated for Terminate), 0 for none.
-  std::uint8_t passSurfaces(std::size_t e, const float* before, const float center[3],
-    std::vector<InteractionEvent>* events) const;
+  /// A centre that left through a periodic side (moved by wrapPeriodic
+  /// after; not anchored) passes the Surfaces just past the seam too
+  /// (SurfaceSet::passages' seam).
+  std::uint8_t passSurfaces(std::size_t e, const VectorField& field, const float* before,
+    const float center[3], std::vector<InteractionEvent>* events) const;
   /// Whether the Surfaces have Walls that act on particles (Boundary Stick,
   /// Slip or Bounce).
   bool wallsParticlesOnSurfaces() const;
@@ -530,6 +533,9 @@ private:
   /// periodic side; then its new centre in `wrapped`. Whether it moved.
   bool wrapPeriodic(
     std::size_t e, const VectorField& field, const float center[3], float wrapped[3]);
+  /// The whole periods (periodicShift, each periodic axis) that move an
+  /// element whose particles' mean is `center` back into the domain; whether any is not 0.
+  bool seamShift(const VectorField& field, const float center[3], float shift[3]) const;
   /// Whether a particle of element e is outside the domain (false unless
   /// `testParticles`).
   bool anyOutside(

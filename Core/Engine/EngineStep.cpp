@@ -438,7 +438,7 @@ void Engine::flagAfterStep(std::size_t e, const VectorField& field, double h, co
   // element that is not shown passes none.
   const std::uint8_t ended =
     this->Params.surfaces && moved && !leave && !hidden && this->Links.empty()
-    ? this->passSurfaces(e, before, moved, events)
+    ? this->passSurfaces(e, field, before, moved, events)
     : std::uint8_t(0);
   std::uint8_t flag = 0;
   if (this->Links.empty() && !(hidden & Terminated))
@@ -467,18 +467,8 @@ bool Engine::wrapPeriodic(
 {
   // An element whose centre left through a periodic side moves whole by
   // whole periods to the other side (Periodic.h): its shape is untouched.
-  const Domain& box = this->domainOf(field);
-  float shift[3] = { 0, 0, 0 };
-  bool moves = false;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (box.periodic[a] && !box.degenerate[a])
-    {
-      shift[a] = periodicShift(center[a], box.lower[a], box.upper[a]);
-      moves = moves || shift[a] != 0.0f;
-    }
-  }
-  if (!moves)
+  float shift[3];
+  if (!this->seamShift(field, center, shift))
   {
     return false;
   }
@@ -493,6 +483,20 @@ bool Engine::wrapPeriodic(
     wrapped[k] = center[k] + shift[k];
   }
   return true;
+}
+
+bool Engine::seamShift(const VectorField& field, const float center[3], float shift[3]) const
+{
+  const Domain& box = this->domainOf(field);
+  bool moves = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    shift[a] = box.periodic[a] && !box.degenerate[a]
+      ? periodicShift(center[a], box.lower[a], box.upper[a])
+      : 0.0f;
+    moves = moves || shift[a] != 0.0f;
+  }
+  return moves;
 }
 
 bool Engine::anyOutside(

@@ -48,8 +48,8 @@ InteractionEvent wallEvent(const SurfaceSet& surfaces, const SurfaceCrossing& c,
 }
 } // namespace
 
-std::uint8_t Engine::passSurfaces(std::size_t e, const float* before, const float center[3],
-  std::vector<InteractionEvent>* events) const
+std::uint8_t Engine::passSurfaces(std::size_t e, const VectorField& field, const float* before,
+  const float center[3], std::vector<InteractionEvent>* events) const
 {
   const SurfaceSet& surfaces = *this->Params.surfaces;
   const Boundary boundary = this->Params.boundary;
@@ -59,7 +59,13 @@ std::uint8_t Engine::passSurfaces(std::size_t e, const float* before, const floa
   float from[3];
   particleMean(before, this->Shape.particleCount(), from);
   thread_local std::vector<SurfaceCrossing> crossings;
-  const bool ends = surfaces.passages(from, center, wallsEnd, crossings);
+  // A centre past a periodic side, that wrapPeriodic moves by whole periods
+  // after (an anchored element is moved back instead): the step is tested
+  // across the seam too (2.8, 2.10).
+  float seam[3] = { 0, 0, 0 };
+  const bool wraps = this->Params.anchor != Anchor::Centre && this->seamShift(field, center, seam);
+  const bool ends = surfaces.passages(from, center, wallsEnd, crossings,
+    wraps ? &this->domainOf(field) : nullptr, wraps ? seam : nullptr);
   std::uint8_t flag = 0;
   for (const SurfaceCrossing& c : crossings)
   {

@@ -81,10 +81,70 @@ SurfaceSet::SurfaceSet(const SurfaceTriangles& triangles)
   }
 }
 
-bool SurfaceSet::passages(
-  const float a[3], const float b[3], bool wallsEnd, std::vector<SurfaceCrossing>& out) const
+void SurfaceSet::crossingsAcrossSeam(const float a[3], const float b[3], const Domain* box,
+  const float* seam, std::vector<SurfaceCrossing>& out) const
 {
   this->Passing.allCrossings(a, b, out);
+  if (!box || !seam || (seam[0] == 0.0f && seam[1] == 0.0f && seam[2] == 0.0f))
+  {
+    return;
+  }
+  // Within the box (closed) along each axis the seam moves the step.
+  const auto within = [box, seam](const SurfaceCrossing& c)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      if (seam[k] != 0.0f && !(c.point[k] >= box->lower[k] && c.point[k] <= box->upper[k]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  out.erase(
+    std::remove_if(out.begin(), out.end(), [&](const SurfaceCrossing& c) { return !within(c); }),
+    out.end());
+  // The step translated by each part of the seam (the whole of it, and
+  // where it moves along two or three axes, each one alone and each pair:
+  // the piece of a step through a corner between its two seams).
+  thread_local std::vector<SurfaceCrossing> beyond;
+  for (unsigned part = 1; part < 8; ++part)
+  {
+    float s[3] = { 0, 0, 0 };
+    bool picked = true;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const bool in = (part >> k) & 1u;
+      picked = picked && (!in || seam[k] != 0.0f);
+      s[k] = in ? seam[k] : 0.0f;
+    }
+    if (!picked)
+    {
+      continue;
+    }
+    const float shiftedA[3] = { a[0] + s[0], a[1] + s[1], a[2] + s[2] };
+    const float shiftedB[3] = { b[0] + s[0], b[1] + s[1], b[2] + s[2] };
+    this->Passing.allCrossings(shiftedA, shiftedB, beyond);
+    for (const SurfaceCrossing& c : beyond)
+    {
+      // A triangle met within the box by two of them is met on a seam itself
+      // (its points a period apart): one passage, the first found.
+      const bool met = std::any_of(out.begin(), out.end(),
+        [&](const SurfaceCrossing& x) { return x.triangle == c.triangle; });
+      if (within(c) && !met)
+      {
+        out.push_back(c);
+      }
+    }
+  }
+  std::stable_sort(out.begin(), out.end(),
+    [](const SurfaceCrossing& x, const SurfaceCrossing& y) { return x.t < y.t; });
+}
+
+bool SurfaceSet::passages(const float a[3], const float b[3], bool wallsEnd,
+  std::vector<SurfaceCrossing>& out, const Domain* box, const float* seam) const
+{
+  this->crossingsAcrossSeam(a, b, box, seam, out);
   // A particle-level Wall (Slip, Bounce) is no passage of the centre.
   out.erase(std::remove_if(out.begin(), out.end(),
               [&](const SurfaceCrossing& c) {

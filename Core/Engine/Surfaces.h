@@ -75,9 +75,22 @@ public:
    * along it, up to and with the first that ends it: an Outlet's, or with
    * `wallsEnd` (Boundary Release Again or Terminate) a Wall's. The
    * crossings' triangles are indices as given. Returns whether one ends it.
+   *
+   * `seam` (3 floats, or null for none): the whole periods a centre that
+   * left through a periodic side of `box` moves by after the step
+   * (periodicShift; engine specification 2.8, 2.10). Where it is not 0 the
+   * step is also tested translated by it, a + seam -> b + seam (and, where
+   * it moves along several axes, by each part of it: a step through a
+   * corner), and from each segment only the crossings whose point lies
+   * within the box (closed) along the axes the seam moves are kept, so a
+   * surface just past the seam is passed too, and one spanning it once.
+   * Their t stay the share of the whole step; a triangle met by two
+   * segments (on the seam itself) is passed once, the untranslated step's
+   * first. A seam of 0 changes nothing.
    */
-  bool passages(
-    const float a[3], const float b[3], bool wallsEnd, std::vector<SurfaceCrossing>& out) const;
+  bool passages(const float a[3], const float b[3], bool wallsEnd,
+    std::vector<SurfaceCrossing>& out, const Domain* box = nullptr,
+    const float* seam = nullptr) const;
 
   /// The first crossing of a particle's step a -> b with a Wall (its
   /// triangle an index as given); false where it crosses none.
@@ -87,6 +100,11 @@ public:
   bool onWall(const float p[3], float distance) const { return this->Walls.lies(p, distance); }
 
 private:
+  /// Every crossing of the step a -> b, in order along it, with `seam`
+  /// (not 0) those of the translated step added as passages() says.
+  void crossingsAcrossSeam(const float a[3], const float b[3], const Domain* box, const float* seam,
+    std::vector<SurfaceCrossing>& out) const;
+
   SurfaceTriangles Given;
   /// Every triangle (for the elements' centres), and the Walls alone (for
   /// the particles), with each one's index as given.

@@ -542,3 +542,150 @@ TEST(Surfaces, WallCornersAreTheWallTrianglesKept)
   EXPECT_NE(
     bp::gpuWallError(bp::GpuMaxWallTriangles + 1).find("4097 Wall triangles"), std::string::npos);
 }
+
+namespace
+{
+/// A uniform flow along +x on [-1, 1]^3 with x periodic (period 2).
+bp::VectorField periodicAlongX()
+{
+  bp::GridGeometry g = bptest::grid(9);
+  g.periodic = { true, false, false };
+  return bptest::uniformFlow({ 1, 0, 0 }, g);
+}
+
+/// Squares released at x0 = 0.505 and 0.305 (their centres cross the seam
+/// x = 1 in a step of 0.02 from 0.985 to 1.005, and every 2 after), traced
+/// to t = 5 past `surfaces` under `boundary`.
+bp::Engine acrossTheSeam(std::shared_ptr<const bp::SurfaceSet> surfaces, bp::Boundary boundary)
+{
+  bp::Parameters p = squares({ 0.505f, 0.0f, 0.0f, 0.305f, 0.3f, -0.2f }, 100.0f);
+  p.boundary = boundary;
+  p.surfaces = std::move(surfaces);
+  bp::Engine engine;
+  EXPECT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, periodicAlongX(), 250, 0.02);
+  return engine;
+}
+} // namespace
+
+TEST(Surfaces, ACentreCrossingAPeriodicSeamPassesAGateJustPastIt)
+{
+  // A gate at x = -0.9975, 0.0025 past the seam: the step that crosses the
+  // seam reaches it after the period's move, the next starts beyond it.
+  // Each element passes it at (1.0025 - x0) + 2 k, k = 0, 1, 2 to t = 5;
+  // a gate just before the seam (x = 0.9975) as often, at (0.9975 - x0) + 2 k.
+  for (const float at : { -0.9975f, 0.9975f })
+  {
+    const bp::Engine engine = acrossTheSeam(
+      surfaceOf(planeX(at), bp::SurfaceInteraction::Gate), bp::Boundary::ReleaseAgain);
+    std::map<std::uint32_t, std::vector<bp::InteractionEvent>> passes;
+    for (const bp::InteractionEvent& x : engine.interactions().events())
+      passes[x.element].push_back(x);
+    ASSERT_EQ(passes.size(), 2u) << "gate at " << at;
+    const double x0[2] = { 0.505, 0.305 };
+    for (const auto& [element, events] : passes)
+    {
+      ASSERT_EQ(events.size(), 3u) << "gate at " << at << ", element " << element;
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        EXPECT_EQ(events[k].kind, bp::Interaction::Passed);
+        EXPECT_NEAR(events[k].position[0], at, 1e-5f);
+        const double unwrapped = at < 0.0f ? at + 2.0 : at;
+        EXPECT_NEAR(events[k].time, unwrapped - x0[element] + 2.0 * double(k), 1e-4);
+      }
+    }
+  }
+}
+
+TEST(Surfaces, ACentreCrossingAPeriodicSeamEndsAtAnOutletOrWallJustPastIt)
+{
+  // An Outlet, or a Wall with Terminate, at x = -0.9975: each element ends
+  // there at 1.0025 - x0, once; a Wall with Release Again places it again.
+  for (const bp::SurfaceInteraction kind :
+    { bp::SurfaceInteraction::Outlet, bp::SurfaceInteraction::Wall })
+  {
+    for (const bp::Boundary boundary : { bp::Boundary::Terminate, bp::Boundary::ReleaseAgain })
+    {
+      if (kind == bp::SurfaceInteraction::Outlet && boundary == bp::Boundary::ReleaseAgain)
+        continue;
+      bp::SurfaceTriangles t;
+      t.corners = planeX(-0.9975f);
+      t.surfaces = { 3, 3 };
+      t.interaction.assign(2, kind);
+      t.cells = { 9, 9 };
+      const bp::Engine engine = acrossTheSeam(std::make_shared<bp::SurfaceSet>(t), boundary);
+      const std::vector<bp::InteractionEvent> events = engine.interactions().events();
+      const bool released = boundary == bp::Boundary::ReleaseAgain;
+      const double x0[2] = { 0.505, 0.305 };
+      std::size_t ended[2] = { 0, 0 };
+      for (const bp::InteractionEvent& x : events)
+      {
+        ASSERT_LT(x.element, 2u);
+        EXPECT_EQ(x.side, bp::FirstSurfaceId + 3);
+        EXPECT_EQ(x.kind, released ? bp::Interaction::Released : bp::Interaction::Terminated);
+        EXPECT_NEAR(x.position[0], -0.9975f, 1e-5f);
+        if (ended[x.element]++ == 0)
+          EXPECT_NEAR(x.time, 1.0025 - x0[x.element], 1e-4);
+      }
+      for (std::size_t e = 0; e < 2; ++e)
+      {
+        // Released, it is placed again at its seed and meets the wall again.
+        EXPECT_TRUE(released ? ended[e] >= 2u : ended[e] == 1u)
+          << int(kind) << " " << int(boundary) << ": " << ended[e];
+      }
+      for (std::uint8_t flag : engine.resetFlags())
+        EXPECT_EQ(bool(flag & bp::Terminated), !released);
+    }
+  }
+}
+
+TEST(Surfaces, ASurfaceSpanningAPeriodicSeamIsPassedOnce)
+{
+  // One gate given twice, on either side of the seam: at x = 1.0025 (past
+  // the upper side, outside the box) and at its copy x = -0.9975. The
+  // crossing outside the box is not kept: each element passes it once a lap.
+  std::vector<float> corners = planeX(1.0025f);
+  const std::vector<float> copy = planeX(-0.9975f);
+  corners.insert(corners.end(), copy.begin(), copy.end());
+  const bp::Engine engine =
+    acrossTheSeam(surfaceOf(corners, bp::SurfaceInteraction::Gate), bp::Boundary::ReleaseAgain);
+  std::size_t passes[2] = { 0, 0 };
+  for (const bp::InteractionEvent& x : engine.interactions().events())
+  {
+    ASSERT_LT(x.element, 2u);
+    ++passes[x.element];
+    EXPECT_NEAR(x.position[0], -0.9975f, 1e-5f);
+  }
+  EXPECT_EQ(passes[0], 3u);
+  EXPECT_EQ(passes[1], 3u);
+}
+
+TEST(Surfaces, ACentreThroughAPeriodicCornerPassesAGateBetweenItsTwoSeams)
+{
+  // x and y periodic, the flow (1, 1, 0): a square released at (0.505,
+  // 0.515) goes through the corner in the step from (0.985, 0.995) to
+  // (1.005, 1.015), across the y seam at a quarter of it and the x seam at
+  // three quarters. A gate at x = 0.995 over y in [-1, -0.98] lies in the
+  // piece between the two (past the y seam only): passed at t = 0.49 + 2 k.
+  bp::GridGeometry g = bptest::grid(9);
+  g.periodic = { true, true, false };
+  const bp::VectorField field = bptest::uniformFlow({ 1, 1, 0 }, g);
+  std::vector<float> corners = rectangle(-1.0f, 1.0f, -1.0f, -0.98f, 0.995f);
+  for (std::size_t k = 0; k < corners.size(); k += 3)
+    std::swap(corners[k], corners[k + 2]); // the plane x = 0.995
+  bp::Parameters p = squares({ 0.505f, 0.515f, 0.0f }, 100.0f);
+  p.surfaces = surfaceOf(corners, bp::SurfaceInteraction::Gate);
+  bp::Engine engine;
+  ASSERT_EQ(engine.configure(bp::builtinTemplate(bp::BuiltinShape::Square), p), "");
+  engine.initialize(bp::serialRunner());
+  run(engine, field, 250, 0.02);
+  const std::vector<bp::InteractionEvent> events = engine.interactions().events();
+  ASSERT_EQ(events.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(events[k].time, 0.49 + 2.0 * double(k), 1e-4);
+    EXPECT_NEAR(events[k].position[0], 0.995f, 1e-5f);
+    EXPECT_NEAR(events[k].position[1], -0.995f, 1e-4f);
+  }
+}

@@ -239,7 +239,8 @@ bptest.check(covered > 0.001 and mean <= 0.5 and pixels <= 0.0003,
              "the GPU display keeps the particles off the wall as the CPU engine does: mean "
              "%.3f, pixels %.4f, %.4f drawn" % (mean, pixels, covered))
 
-# Bad input: a clear warning, and the trace goes on.
+# Bad input: a clear warning, and the trace goes on. A Slip wall that reaches
+# a periodic side warns too: a particle crossing the seam can pass it.
 empty = ProgrammableSource(OutputDataSetType="vtkPolyData")
 empty.Script = "pass"
 far = Plane(Origin=[10, 10, 10], Point1=[11, 10, 10], Point2=[10, 11, 10])
@@ -249,7 +250,10 @@ cases = [("no cells", empty, {}, "no surface to act on"),
          ("unknown values", plane_with_kinds([1.0, 7.0]),
           {"SurfaceInteractionArray": "Kind"}, "names no interaction"),
          ("a missing array", gate, {"SurfaceInteractionArray": "Absent"},
-          "no cell array 'Absent'")]
+          "no cell array 'Absent'"),
+         ("a Slip wall at a periodic side", plane_with_kinds([2.0, 0.0]),
+          {"SurfaceInteractionArray": "Kind", "Boundary": "Slip", "Periodic": [1, 0, 0]},
+          "closer than one cell to a periodic side")]
 for name, surface, extra, said in cases:
     with bptest.CapturedMessages() as messages:
         bad = tracer(Surfaces=surface, **extra)
