@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <random>
 #include <vector>
 
 namespace
@@ -498,6 +499,80 @@ TEST(Surfaces, NoParticlePassesWhereWallsBendInward)
       widest = std::max(widest, std::sqrt(q[0] * q[0] + q[1] * q[1]));
     }
     EXPECT_LE(widest, 0.8f) << bp::enumName(b) << ": every particle inside the pipe";
+  }
+}
+
+namespace
+{
+/// The closed box [-a, a]^3 as 12 Wall triangles (two a face, normals outward).
+bp::SurfaceTriangles closedBox(float a)
+{
+  bp::SurfaceTriangles t;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float side : { -a, a })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const float q[4][2] = { { -a, -a }, { a, -a }, { a, a }, { -a, a } };
+      for (const int k : { 0, 1, 2, 0, 2, 3 })
+      {
+        float x[3];
+        x[axis] = side;
+        x[u] = q[k][0];
+        x[v] = side > 0 ? q[k][1] : -q[k][1]; // the corners' right hand outward
+        t.corners.insert(t.corners.end(), x, x + 3);
+      }
+    }
+  t.interaction.assign(12, bp::SurfaceInteraction::Wall);
+  return t;
+}
+
+/// How far the farthest of the engine's particles lies outside [-a, a]^3 (0 inside).
+float farthestOutside(const bp::Engine& engine, float a)
+{
+  float most = 0;
+  for (const float x : engine.positions())
+    most = std::max(most, std::abs(x) - a);
+  return most;
+}
+} // namespace
+
+TEST(Surfaces, NoParticleLeavesAClosedBoxThroughItsEdgesOrCorners)
+{
+  // A step through the edge two faces share meets both at one point: the
+  // rule on the first leaves its move's start on the second's plane, where
+  // the move meets it at t = 0. Points inside a box of side 0.6 (12 Wall
+  // triangles), uniform flows aimed at its 12 edges and 8 corners (each
+  // turned a little at random) and the ABC flow: none may end outside.
+  const float a = 0.3f;
+  const bp::SurfaceTriangles box = closedBox(a);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> inside(-0.28f, 0.28f), turn(-0.02f, 0.02f);
+  std::vector<float> seeds(3 * 64);
+  for (float& x : seeds)
+    x = inside(random);
+  std::vector<std::array<float, 3>> aims;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (std::abs(x) + std::abs(y) + std::abs(z) >= 2)
+          aims.push_back({ float(x), float(y), float(z) }); // 12 edges, 8 corners
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    for (std::size_t k = 0; k < aims.size(); ++k)
+    {
+      std::array<float, 3> u = aims[k];
+      for (float& c : u)
+        c += k % 2 ? turn(random) : 0.0f; // every other aim exactly at the edge or corner
+      const bp::Engine engine = tracedPoints(bptest::uniformFlow(u), seeds, box, b, 60, 0.013);
+      EXPECT_LE(farthestOutside(engine, a), 0.0f)
+        << bp::enumName(b) << " aimed at " << u[0] << " " << u[1] << " " << u[2];
+    }
+    const bp::VectorField abc = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+    for (const double h : { 0.05, 0.1 })
+    {
+      const bp::Engine engine = tracedPoints(abc, seeds, box, b, 200, h);
+      EXPECT_LE(farthestOutside(engine, a), 0.0f) << bp::enumName(b) << " in ABC, h " << h;
+    }
   }
 }
 
