@@ -1034,6 +1034,25 @@ float bpWallAgain(vec3 before, inout vec3 a, vec3 p, out int again)
   return t;
 }
 
+// keptOnSide (EngineSurfaces.cpp): p reached from `before` without crossing
+// a Wall. Where the segment before -> p crosses one (a rule's start behind
+// the other Wall at an edge sharper than a right angle), p goes back along
+// it to an offset short of that crossing (before itself where closer).
+vec3 bpKeptOnSide(vec3 before, vec3 p)
+{
+  int last;
+  float t = bpFirstWallCrossing(before, p, last);
+  if (last < 0)
+  {
+    return p;
+  }
+  vec3 c = before + t * (p - before);
+  vec3 back = before - c;
+  float length = sqrt(dot(back, back));
+  float share = length > bpWallOffset ? bpWallOffset / length : 1.0;
+  return c + share * back;
+}
+
 // Engine::wallParticleOnSurfaces's positions: p, advected from `before`
 // and walled by the field's sides, off the first Wall its step crosses
 // (tested from half an offset behind `before`, so that a particle on a
@@ -1087,6 +1106,10 @@ int bpWallOnSurfaces(vec3 before, inout vec3 p)
     p = bpWallRule(c2, m2, p);
     start = c2 + bpWallOffset * m2;
   }
+  if (bpBoundary != BP_BOUNDARY_STICK)
+  {
+    p = bpKeptOnSide(before, p);
+  }
   return 1 + 2 * k + (along ? 1 : 0);
 }
 
@@ -1131,7 +1154,7 @@ vec3 bpWallRestoredOnSurfaces(vec3 q, vec3 a)
   vec3 d = q - a;
   bool along;
   vec3 m = bpWallTowardStart(k, d, along);
-  return (a + t * d) + bpWallOffset * m;
+  return bpKeptOnSide(a, (a + t * d) + bpWallOffset * m);
 }
 
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------

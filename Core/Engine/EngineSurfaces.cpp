@@ -77,6 +77,28 @@ bool wallAgain(const SurfaceSet& surfaces, const float before[3], const float st
   const std::array<float, 3> m = towardStart(again);
   return dot3(before, m.data()) - dot3(again.point.data(), m.data()) > 0.0f;
 }
+
+/// Last (Slip, Bounce, and a restored particle put off a Wall): p must be
+/// reached from before without crossing a Wall. At an edge sharper than a
+/// right angle a point c + offset m may lie behind the other Wall, where no
+/// move from it meets that Wall; where the segment before -> p crosses one,
+/// p goes back along it to an offset short of that crossing (before itself
+/// where that is closer).
+void keptOnSide(const SurfaceSet& surfaces, const float before[3], float offset, float p[3])
+{
+  SurfaceCrossing c;
+  if (!surfaces.wallCrossing(before, p, c))
+  {
+    return;
+  }
+  const float back[3] = { before[0] - c.point[0], before[1] - c.point[1], before[2] - c.point[2] };
+  const float length = std::sqrt(dot3(back, back));
+  const float share = length > offset ? offset / length : 1.0f;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = c.point[std::size_t(k)] + share * back[k];
+  }
+}
 } // namespace
 
 std::uint8_t Engine::passSurfaces(std::size_t e, const float* before, const float center[3],
@@ -188,6 +210,7 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
       this->wallRule(again, offset, p);
       putOff(again, towardStart(again), offset, start);
     }
+    keptOnSide(surfaces, before, offset, p);
   }
   if (slip)
   {
@@ -262,6 +285,7 @@ void Engine::keepOffSurfaceWalls(std::size_t e, const VectorField& field, const 
     }
     const std::array<float, 3> m = towardStart(c);
     putOff(c, m, offset, p + 3 * i);
+    keptOnSide(surfaces, advected + 3 * i, offset, p + 3 * i);
     const float* b = before + 3 * i;
     const float from = dot3(b, m.data()) - dot3(c.point.data(), m.data());
     const auto already = std::find_if(events.begin() + std::ptrdiff_t(first),

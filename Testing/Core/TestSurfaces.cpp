@@ -576,6 +576,68 @@ TEST(Surfaces, NoParticleLeavesAClosedBoxThroughItsEdgesOrCorners)
   }
 }
 
+TEST(Surfaces, NoParticleLeavesAClosedPrismThroughItsSharpEdges)
+{
+  // A prism of equilateral cross-section (circumradius 0.5, z in [-0.5,
+  // 0.5]; 8 Wall triangles): at its 60-degree edges a rule's start c + offset
+  // m lies behind the other wall, where no move from it meets that wall;
+  // the segment from before the step to p is tested last. Flows aimed at its
+  // three long edges and their ends (exactly and turned a little) and the
+  // ABC flow: none may end outside.
+  bp::SurfaceTriangles prism;
+  float vx[3], vy[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    vx[k] = float(0.5 * std::cos(Pi / 2 + 2 * Pi * k / 3));
+    vy[k] = float(0.5 * std::sin(Pi / 2 + 2 * Pi * k / 3));
+  }
+  for (int k = 0, j = 1; k < 3; ++k, j = (k + 1) % 3)
+    prism.corners.insert(prism.corners.end(),
+      { vx[k], vy[k], -0.5f, vx[j], vy[j], -0.5f, vx[j], vy[j], 0.5f, vx[k], vy[k], -0.5f, vx[j],
+        vy[j], 0.5f, vx[k], vy[k], 0.5f });
+  for (const float z : { -0.5f, 0.5f })
+    prism.corners.insert(
+      prism.corners.end(), { vx[0], vy[0], z, vx[1], vy[1], z, vx[2], vy[2], z });
+  prism.interaction.assign(8, bp::SurfaceInteraction::Wall);
+  auto outside = [](const bp::Engine& engine)
+  {
+    float most = 0;
+    for (std::size_t q = 0; q < engine.positions().size(); q += 3)
+    {
+      const float* p = &engine.positions()[q];
+      most = std::max(most, std::abs(p[2]) - 0.5f);
+      for (int k = 0; k < 3; ++k) // side k, k + 1: outward normal at 150 + 120 k degrees, 0.25 off
+        most = std::max(most,
+          float(std::cos(5 * Pi / 6 + 2 * Pi * k / 3) * p[0] +
+            std::sin(5 * Pi / 6 + 2 * Pi * k / 3) * p[1] - 0.25));
+    }
+    return most;
+  };
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> inside(-0.2f, 0.2f), turn(-0.02f, 0.02f);
+  std::vector<float> seeds(3 * 64);
+  for (float& x : seeds)
+    x = inside(random);
+  const bp::VectorField abc = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    for (int k = 0; k < 3; ++k)
+      for (const float z : { -0.5f, 0.0f, 0.5f })
+        for (const bool turned : { false, true })
+        {
+          std::array<float, 3> u = { vx[k], vy[k], z };
+          for (float& c : u)
+            c += turned ? turn(random) : 0.0f;
+          const bp::Engine engine =
+            tracedPoints(bptest::uniformFlow(u), seeds, prism, b, 80, 0.013);
+          EXPECT_LE(outside(engine), 0.0f)
+            << bp::enumName(b) << " aimed at " << u[0] << " " << u[1] << " " << u[2];
+        }
+    EXPECT_LE(outside(tracedPoints(abc, seeds, prism, b, 200, 0.05)), 0.0f)
+      << bp::enumName(b) << " in ABC";
+  }
+}
+
 TEST(Surfaces, AParticleStartingOnAWallStaysOnTheSideItCameFrom)
 {
   // Seeds on the plane x = 0.5 itself, the flow through it (+x): they are

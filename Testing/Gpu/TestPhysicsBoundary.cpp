@@ -887,7 +887,8 @@ enum class WallSurface
   Tilted,    ///< x + 0.3 y = 0.4 across the box, 12 x 11 squares (264 triangles: two rows)
   HalfPlane, ///< y = 0, x in [0, 1], 8 x 6 squares (96 triangles)
   Corner,    ///< x = 0.5 (y below 0.6) and y = 0.6 (x below 0.5): an inward corner (144)
-  Box        ///< the closed box [-0.5, 0.5]^3, 3 x 3 squares a face (108)
+  Box,       ///< the closed box [-0.5, 0.5]^3, 3 x 3 squares a face (108)
+  Prism      ///< a closed prism along z, 60-degree edges, 3 x 3 squares a side (56)
 };
 
 /// The triangles of each WallSurface.
@@ -896,7 +897,8 @@ std::size_t wallTriangles(WallSurface which)
   return which == WallSurface::Tilted ? 264
     : which == WallSurface::HalfPlane ? 96
     : which == WallSurface::Corner    ? 144
-                                      : 108;
+    : which == WallSurface::Box       ? 108
+                                      : 56;
 }
 
 struct SurfaceWallCase
@@ -972,6 +974,39 @@ std::shared_ptr<const bp::SurfaceSet> wallSurface(WallSurface which, float shift
           }
     return std::make_shared<const bp::SurfaceSet>(t);
   }
+  if (which == WallSurface::Prism)
+  {
+    // Equilateral cross-section, circumradius 0.5, a corner at (0, 0.5);
+    // z in [-0.5, 0.5], closed by a triangle at each end.
+    float v[3][2];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k][0] = float(0.5 * std::cos(M_PI / 2 + 2 * M_PI * k / 3));
+      v[k][1] = float(0.5 * std::sin(M_PI / 2 + 2 * M_PI * k / 3));
+    }
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+        {
+          float q[4][3];
+          for (int c = 0; c < 4; ++c)
+          {
+            const float u = float(i + (c == 1 || c == 2)) / 3.0f;
+            q[c][0] = v[k][0] + u * (v[(k + 1) % 3][0] - v[k][0]);
+            q[c][1] = v[k][1] + u * (v[(k + 1) % 3][1] - v[k][1]);
+            q[c][2] = -0.5f + float(j + (c >= 2)) / 3.0f;
+          }
+          square(q[0], q[1], q[2], q[3]);
+        }
+    for (const float z : { -0.5f, 0.5f })
+    {
+      t.corners.insert(
+        t.corners.end(), { v[0][0], v[0][1], z, v[1][0], v[1][1], z, v[2][0], v[2][1], z });
+      t.interaction.push_back(bp::SurfaceInteraction::Wall);
+      t.cells.push_back(std::int32_t(t.cells.size()));
+    }
+    return std::make_shared<const bp::SurfaceSet>(t);
+  }
   const bool tilted = which == WallSurface::Tilted;
   const int nu = tilted ? 12 : 8, nv = tilted ? 11 : 6;
   for (int j = 0; j < nv; ++j)
@@ -1011,6 +1046,16 @@ float fromWall(WallSurface which, const float* p)
     return std::min(std::abs(p[0] - 0.5f), std::abs(p[1] - 0.6f));
   if (which == WallSurface::Box)
     return 0.5f - std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+  if (which == WallSurface::Prism)
+  {
+    float nearest = 0.5f - std::abs(p[2]);
+    for (int k = 0; k < 3; ++k) // the side's outward normal at 150 + 120 k degrees, 0.25 off
+    {
+      const double a = 5 * M_PI / 6 + 2 * M_PI * k / 3;
+      nearest = std::min(nearest, float(0.25 - std::cos(a) * p[0] - std::sin(a) * p[1]));
+    }
+    return nearest;
+  }
   return p[0] >= 0.0f && p[0] <= 1.0f ? std::abs(p[1]) : 1.0f;
 }
 
@@ -1028,8 +1073,10 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   const bool tilted = c.surface == WallSurface::Tilted;
   const bool corner = c.surface == WallSurface::Corner;
   const bool box = c.surface == WallSurface::Box;
-  // Into the box's edge x = y = 0.5 and along it, to its corner.
+  const bool prism = c.surface == WallSurface::Prism;
+  // Into the box's edge x = y = 0.5 (the prism's at (0, 0.5)) and along it, to its corner.
   const bp::VectorField field = box ? uniformField({ 0.7f, 0.7f, 0.35f })
+    : prism                         ? uniformField({ 0.1f, 0.8f, 0.35f })
     : tilted || corner              ? uniformField()
                                     : rotationField();
   bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.4f, 1.0f, 17);
@@ -1042,6 +1089,11 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
   {
     p.emitterMin = { -0.4f, -0.4f, -0.4f }; // inside the box
     p.emitterMax = { 0.4f, 0.4f, 0.4f };
+  }
+  if (prism)
+  {
+    p.emitterMin = { -0.15f, -0.15f, -0.4f }; // inside the prism
+    p.emitterMax = { 0.15f, 0.15f, 0.4f };
   }
   if (c.heavy)
   {
@@ -1102,7 +1154,7 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
       // On the tilted wall's far side (released before it): none should be.
       beyond += tilted && x[q] + 0.3f * x[q + 1] - 0.4f > 0.0f;
       beyond += corner && (x[q] > 0.5f || x[q + 1] > 0.6f);
-      beyond += box && fromWall(c.surface, &x[q]) < 0.0f;
+      beyond += (box || prism) && fromWall(c.surface, &x[q]) < 0.0f;
     }
   }
   std::printf("%s wall, %s, integrator %d, restoration %d, boundary %d%s: positions within %.3g "
@@ -1111,6 +1163,7 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
     tilted     ? "tilted"
       : corner ? "corner"
       : box    ? "box"
+      : prism  ? "prism"
                : "half-plane",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
     c.heavy ? ", heavy" : "", parity.worstKept, parity.elementsApart(), met, beyond,
@@ -1153,6 +1206,10 @@ TEST(GpuBoundary, SurfaceWallsMatchTheCpuEngine)
     { S::Box, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
     { S::Box, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
     { S::Box, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Stick },
+    // A closed prism: at its 60-degree edges the segment from before the
+    // step is tested last.
+    { S::Prism, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
+    { S::Prism, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
   };
   for (const SurfaceWallCase& c : cases)
     EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
