@@ -996,14 +996,72 @@ vec3 bpWallRule(vec3 c, vec3 m, vec3 p)
   return p + (bpWallOffset - back) * m;
 }
 
+// wallAgain (EngineSurfaces.cpp): the Wall the move a -> p crosses, where a
+// rule left p (`again`, -1 and t 2 where none; its t along the segment from
+// a). Where the step met a Wall at an edge it shares with another, a (an
+// offset off the first) lies on the other's plane or just behind it: where
+// the move from a meets none, it is tested again from half an offset behind
+// a (a moved there), a crossing so found taken only where `before` lies on
+// the side the rule keeps p.
+float bpWallAgain(vec3 before, inout vec3 a, vec3 p, out int again)
+{
+  float t = bpFirstWallCrossing(a, p, again);
+  if (again >= 0)
+  {
+    return t;
+  }
+  vec3 d = p - a;
+  float len = sqrt(dot(d, d));
+  if (!(len > 0.0))
+  {
+    return t;
+  }
+  vec3 from = a - (0.5 * bpWallOffset / len) * d;
+  t = bpFirstWallCrossing(from, p, again);
+  if (again < 0)
+  {
+    return t;
+  }
+  bool along;
+  vec3 m = bpWallTowardStart(again, p - from, along);
+  vec3 c = from + t * (p - from);
+  if (!(dot(before, m) - dot(c, m) > 0.0))
+  {
+    again = -1;
+    return 2.0;
+  }
+  a = from;
+  return t;
+}
+
+// keptOnSide (EngineSurfaces.cpp): p reached from `before` without crossing
+// a Wall. Where the segment before -> p crosses one (a rule's start behind
+// the other Wall at an edge sharper than a right angle), p goes back along
+// it to an offset short of that crossing (before itself where closer).
+vec3 bpKeptOnSide(vec3 before, vec3 p)
+{
+  int last;
+  float t = bpFirstWallCrossing(before, p, last);
+  if (last < 0)
+  {
+    return p;
+  }
+  vec3 c = before + t * (p - before);
+  vec3 back = before - c;
+  float length = sqrt(dot(back, back));
+  float share = length > bpWallOffset ? bpWallOffset / length : 1.0;
+  return c + share * back;
+}
+
 // Engine::wallParticleOnSurfaces's positions: p, advected from `before`
 // and walled by the field's sides, off the first Wall its step crosses
 // (tested from half an offset behind `before`, so that a particle on a
 // Wall's plane meets it; at c, m the normal turned to the start's side) by
 // bpWallRule; then (Slip, Bounce: Stick stays where the step met the Wall),
-// where the walls bend inward, the rule again on each Wall the move from the
-// last one (from its crossing + offset m) crosses, at most three times, a
-// fourth crossing putting p on it, offset off.
+// where the walls bend inward (or the step went through an edge), the rule
+// again on each Wall the move from the last one (from its crossing +
+// offset m) crosses (bpWallAgain), at most three times, a fourth crossing
+// putting p on it, offset off.
 // Returns 0 where it crosses none, else 1 + 2 k + (1 where the step went
 // the normal's way): the wall met, for bpWallSlipOnSurfaces.
 int bpWallOnSurfaces(vec3 before, inout vec3 p)
@@ -1030,15 +1088,16 @@ int bpWallOnSurfaces(vec3 before, inout vec3 p)
   for (int pass = 0; pass < 4 && bpBoundary != BP_BOUNDARY_STICK; ++pass)
   {
     int again;
-    float t2 = bpFirstWallCrossing(start, p, again);
+    vec3 a = start;
+    float t2 = bpWallAgain(before, a, p, again);
     if (again < 0)
     {
       break;
     }
-    vec3 d2 = p - start;
+    vec3 d2 = p - a;
     bool along2;
     vec3 m2 = bpWallTowardStart(again, d2, along2);
-    vec3 c2 = start + t2 * d2;
+    vec3 c2 = a + t2 * d2;
     if (pass == 3)
     {
       p = c2 + bpWallOffset * m2;
@@ -1046,6 +1105,10 @@ int bpWallOnSurfaces(vec3 before, inout vec3 p)
     }
     p = bpWallRule(c2, m2, p);
     start = c2 + bpWallOffset * m2;
+  }
+  if (bpBoundary != BP_BOUNDARY_STICK)
+  {
+    p = bpKeptOnSide(before, p);
   }
   return 1 + 2 * k + (along ? 1 : 0);
 }
@@ -1091,7 +1154,7 @@ vec3 bpWallRestoredOnSurfaces(vec3 q, vec3 a)
   vec3 d = q - a;
   bool along;
   vec3 m = bpWallTowardStart(k, d, along);
-  return (a + t * d) + bpWallOffset * m;
+  return bpKeptOnSide(a, (a + t * d) + bpWallOffset * m);
 }
 
 // ---- Springs (Engine::restore, Engine::restoreLinks) -----------------------

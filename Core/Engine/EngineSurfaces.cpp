@@ -46,6 +46,59 @@ InteractionEvent wallEvent(const SurfaceSet& surfaces, const SurfaceCrossing& c,
   met.normal = c.normal;
   return met;
 }
+
+/// The Wall the move start -> p crosses, where a rule left p (Slip, Bounce).
+/// Where the step met the Wall at an edge it shares with another (a box's
+/// edge, an inward bend), start, an offset off the first, lies on the
+/// other's plane or just behind it, and the move from there meets it at
+/// t = 0 or not at all: where the move from start meets none, it is tested
+/// again from half an offset behind start (as the step is from before its
+/// start), and a crossing found so is taken only where before, the
+/// particle's position before the step, lies on the side the rule keeps p.
+bool wallAgain(const SurfaceSet& surfaces, const float before[3], const float start[3],
+  const float p[3], float offset, SurfaceCrossing& again)
+{
+  if (surfaces.wallCrossing(start, p, again))
+  {
+    return true;
+  }
+  const float d[3] = { p[0] - start[0], p[1] - start[1], p[2] - start[2] };
+  const float length = std::sqrt(dot3(d, d));
+  if (!(length > 0.0f))
+  {
+    return false;
+  }
+  const float back = 0.5f * offset / length;
+  const float from[3] = { start[0] - back * d[0], start[1] - back * d[1], start[2] - back * d[2] };
+  if (!surfaces.wallCrossing(from, p, again))
+  {
+    return false;
+  }
+  const std::array<float, 3> m = towardStart(again);
+  return dot3(before, m.data()) - dot3(again.point.data(), m.data()) > 0.0f;
+}
+
+/// Last (Slip, Bounce, and a restored particle put off a Wall): p must be
+/// reached from before without crossing a Wall. At an edge sharper than a
+/// right angle a point c + offset m may lie behind the other Wall, where no
+/// move from it meets that Wall; where the segment before -> p crosses one,
+/// p goes back along it to an offset short of that crossing (before itself
+/// where that is closer).
+void keptOnSide(const SurfaceSet& surfaces, const float before[3], float offset, float p[3])
+{
+  SurfaceCrossing c;
+  if (!surfaces.wallCrossing(before, p, c))
+  {
+    return;
+  }
+  const float back[3] = { before[0] - c.point[0], before[1] - c.point[1], before[2] - c.point[2] };
+  const float length = std::sqrt(dot3(back, back));
+  const float share = length > offset ? offset / length : 1.0f;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = c.point[std::size_t(k)] + share * back[k];
+  }
+}
 } // namespace
 
 std::uint8_t Engine::passSurfaces(std::size_t e, const VectorField& field, const float* before,
@@ -142,15 +195,16 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
   if (rule != Boundary::Stick)
   {
     // Put on one plane or reflected off it, p may lie behind another Wall
-    // where the walls bend inward (a corner, a pipe of flat facets): the
-    // rule again on each Wall the move from the wall crosses; after four,
-    // the particle stays where that move first meets a Wall.
+    // where the walls bend inward (a corner, a pipe of flat facets, the
+    // edge the step went through): the rule again on each Wall the move
+    // from the wall crosses (wallAgain); after four, the particle stays
+    // where that move first meets a Wall.
     float start[3];
     putOff(c, m, offset, start);
     for (int pass = 0; pass < 4; ++pass)
     {
       SurfaceCrossing again;
-      if (!surfaces.wallCrossing(start, p, again))
+      if (!wallAgain(surfaces, before, start, p, offset, again))
       {
         break;
       }
@@ -162,6 +216,7 @@ bool Engine::wallParticleOnSurfaces(const VectorField& field, const StepWeights&
       this->wallRule(again, offset, p);
       putOff(again, towardStart(again), offset, start);
     }
+    keptOnSide(surfaces, before, offset, p);
   }
   if (slip)
   {
@@ -236,6 +291,7 @@ void Engine::keepOffSurfaceWalls(std::size_t e, const VectorField& field, const 
     }
     const std::array<float, 3> m = towardStart(c);
     putOff(c, m, offset, p + 3 * i);
+    keptOnSide(surfaces, advected + 3 * i, offset, p + 3 * i);
     const float* b = before + 3 * i;
     const float from = dot3(b, m.data()) - dot3(c.point.data(), m.data());
     const auto already = std::find_if(events.begin() + std::ptrdiff_t(first),

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <random>
 #include <vector>
 
 namespace
@@ -498,6 +499,142 @@ TEST(Surfaces, NoParticlePassesWhereWallsBendInward)
       widest = std::max(widest, std::sqrt(q[0] * q[0] + q[1] * q[1]));
     }
     EXPECT_LE(widest, 0.8f) << bp::enumName(b) << ": every particle inside the pipe";
+  }
+}
+
+namespace
+{
+/// The closed box [-a, a]^3 as 12 Wall triangles (two a face, normals outward).
+bp::SurfaceTriangles closedBox(float a)
+{
+  bp::SurfaceTriangles t;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float side : { -a, a })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const float q[4][2] = { { -a, -a }, { a, -a }, { a, a }, { -a, a } };
+      for (const int k : { 0, 1, 2, 0, 2, 3 })
+      {
+        float x[3];
+        x[axis] = side;
+        x[u] = q[k][0];
+        x[v] = side > 0 ? q[k][1] : -q[k][1]; // the corners' right hand outward
+        t.corners.insert(t.corners.end(), x, x + 3);
+      }
+    }
+  t.interaction.assign(12, bp::SurfaceInteraction::Wall);
+  return t;
+}
+
+/// How far the farthest of the engine's particles lies outside [-a, a]^3 (0 inside).
+float farthestOutside(const bp::Engine& engine, float a)
+{
+  float most = 0;
+  for (const float x : engine.positions())
+    most = std::max(most, std::abs(x) - a);
+  return most;
+}
+} // namespace
+
+TEST(Surfaces, NoParticleLeavesAClosedBoxThroughItsEdgesOrCorners)
+{
+  // A step through the edge two faces share meets both at one point: the
+  // rule on the first leaves its move's start on the second's plane, where
+  // the move meets it at t = 0. Points inside a box of side 0.6 (12 Wall
+  // triangles), uniform flows aimed at its 12 edges and 8 corners (each
+  // turned a little at random) and the ABC flow: none may end outside.
+  const float a = 0.3f;
+  const bp::SurfaceTriangles box = closedBox(a);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> inside(-0.28f, 0.28f), turn(-0.02f, 0.02f);
+  std::vector<float> seeds(3 * 64);
+  for (float& x : seeds)
+    x = inside(random);
+  std::vector<std::array<float, 3>> aims;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (std::abs(x) + std::abs(y) + std::abs(z) >= 2)
+          aims.push_back({ float(x), float(y), float(z) }); // 12 edges, 8 corners
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    for (std::size_t k = 0; k < aims.size(); ++k)
+    {
+      std::array<float, 3> u = aims[k];
+      for (float& c : u)
+        c += k % 2 ? turn(random) : 0.0f; // every other aim exactly at the edge or corner
+      const bp::Engine engine = tracedPoints(bptest::uniformFlow(u), seeds, box, b, 60, 0.013);
+      EXPECT_LE(farthestOutside(engine, a), 0.0f)
+        << bp::enumName(b) << " aimed at " << u[0] << " " << u[1] << " " << u[2];
+    }
+    const bp::VectorField abc = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+    for (const double h : { 0.05, 0.1 })
+    {
+      const bp::Engine engine = tracedPoints(abc, seeds, box, b, 200, h);
+      EXPECT_LE(farthestOutside(engine, a), 0.0f) << bp::enumName(b) << " in ABC, h " << h;
+    }
+  }
+}
+
+TEST(Surfaces, NoParticleLeavesAClosedPrismThroughItsSharpEdges)
+{
+  // A prism of equilateral cross-section (circumradius 0.5, z in [-0.5,
+  // 0.5]; 8 Wall triangles): at its 60-degree edges a rule's start c + offset
+  // m lies behind the other wall, where no move from it meets that wall;
+  // the segment from before the step to p is tested last. Flows aimed at its
+  // three long edges and their ends (exactly and turned a little) and the
+  // ABC flow: none may end outside.
+  bp::SurfaceTriangles prism;
+  float vx[3], vy[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    vx[k] = float(0.5 * std::cos(Pi / 2 + 2 * Pi * k / 3));
+    vy[k] = float(0.5 * std::sin(Pi / 2 + 2 * Pi * k / 3));
+  }
+  for (int k = 0, j = 1; k < 3; ++k, j = (k + 1) % 3)
+    prism.corners.insert(prism.corners.end(),
+      { vx[k], vy[k], -0.5f, vx[j], vy[j], -0.5f, vx[j], vy[j], 0.5f, vx[k], vy[k], -0.5f, vx[j],
+        vy[j], 0.5f, vx[k], vy[k], 0.5f });
+  for (const float z : { -0.5f, 0.5f })
+    prism.corners.insert(
+      prism.corners.end(), { vx[0], vy[0], z, vx[1], vy[1], z, vx[2], vy[2], z });
+  prism.interaction.assign(8, bp::SurfaceInteraction::Wall);
+  auto outside = [](const bp::Engine& engine)
+  {
+    float most = 0;
+    for (std::size_t q = 0; q < engine.positions().size(); q += 3)
+    {
+      const float* p = &engine.positions()[q];
+      most = std::max(most, std::abs(p[2]) - 0.5f);
+      for (int k = 0; k < 3; ++k) // side k, k + 1: outward normal at 150 + 120 k degrees, 0.25 off
+        most = std::max(most,
+          float(std::cos(5 * Pi / 6 + 2 * Pi * k / 3) * p[0] +
+            std::sin(5 * Pi / 6 + 2 * Pi * k / 3) * p[1] - 0.25));
+    }
+    return most;
+  };
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> inside(-0.2f, 0.2f), turn(-0.02f, 0.02f);
+  std::vector<float> seeds(3 * 64);
+  for (float& x : seeds)
+    x = inside(random);
+  const bp::VectorField abc = bptest::steadyFlow(bp::AnalyticFlow::ABC, bptest::grid(33));
+  for (bp::Boundary b : { bp::Boundary::Slip, bp::Boundary::Bounce, bp::Boundary::Stick })
+  {
+    for (int k = 0; k < 3; ++k)
+      for (const float z : { -0.5f, 0.0f, 0.5f })
+        for (const bool turned : { false, true })
+        {
+          std::array<float, 3> u = { vx[k], vy[k], z };
+          for (float& c : u)
+            c += turned ? turn(random) : 0.0f;
+          const bp::Engine engine =
+            tracedPoints(bptest::uniformFlow(u), seeds, prism, b, 80, 0.013);
+          EXPECT_LE(outside(engine), 0.0f)
+            << bp::enumName(b) << " aimed at " << u[0] << " " << u[1] << " " << u[2];
+        }
+    EXPECT_LE(outside(tracedPoints(abc, seeds, prism, b, 200, 0.05)), 0.0f)
+      << bp::enumName(b) << " in ABC";
   }
 }
 

@@ -32,6 +32,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -885,13 +886,19 @@ enum class WallSurface
 {
   Tilted,    ///< x + 0.3 y = 0.4 across the box, 12 x 11 squares (264 triangles: two rows)
   HalfPlane, ///< y = 0, x in [0, 1], 8 x 6 squares (96 triangles)
-  Corner     ///< x = 0.5 (y below 0.6) and y = 0.6 (x below 0.5): an inward corner (144)
+  Corner,    ///< x = 0.5 (y below 0.6) and y = 0.6 (x below 0.5): an inward corner (144)
+  Box,       ///< the closed box [-0.5, 0.5]^3, 3 x 3 squares a face (108)
+  Prism      ///< a closed prism along z, 60-degree edges, 3 x 3 squares a side (56)
 };
 
 /// The triangles of each WallSurface.
 std::size_t wallTriangles(WallSurface which)
 {
-  return which == WallSurface::Tilted ? 264 : which == WallSurface::HalfPlane ? 96 : 144;
+  return which == WallSurface::Tilted ? 264
+    : which == WallSurface::HalfPlane ? 96
+    : which == WallSurface::Corner    ? 144
+    : which == WallSurface::Box       ? 108
+                                      : 56;
 }
 
 struct SurfaceWallCase
@@ -904,17 +911,15 @@ struct SurfaceWallCase
   bool heavy = false; ///< Maxey-Riley with gravity
 };
 
-/// The uniform flow (0.8, 0.25, 0.1) on [-1, 1]^3, 12 points a side.
-bp::VectorField uniformField()
+/// The uniform flow u on [-1, 1]^3, 12 points a side.
+bp::VectorField uniformField(std::array<float, 3> u = { 0.8f, 0.25f, 0.1f })
 {
   bp::GridGeometry g = cubeGrid(12);
   bp::FieldSlice s;
   auto velocity = std::make_shared<std::vector<float>>(3 * g.pointCount());
   for (std::size_t k = 0; k < g.pointCount(); ++k)
   {
-    (*velocity)[3 * k] = 0.8f;
-    (*velocity)[3 * k + 1] = 0.25f;
-    (*velocity)[3 * k + 2] = 0.1f;
+    std::copy(u.begin(), u.end(), velocity->begin() + long(3 * k));
   }
   s.velocity = velocity;
   return bp::VectorField(g, s);
@@ -949,6 +954,57 @@ std::shared_ptr<const bp::SurfaceSet> wallSurface(WallSurface which, float shift
           }
           square(q[0], q[1], q[2], q[3]);
         }
+    return std::make_shared<const bp::SurfaceSet>(t);
+  }
+  if (which == WallSurface::Box)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+      for (const float side : { -0.5f, 0.5f })
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i)
+          {
+            float q[4][3];
+            for (int c = 0; c < 4; ++c)
+            {
+              q[c][axis] = side;
+              q[c][(axis + 1) % 3] = -0.5f + float(i + (c == 1 || c == 2)) / 3.0f;
+              q[c][(axis + 2) % 3] = -0.5f + float(j + (c >= 2)) / 3.0f;
+            }
+            square(q[0], q[1], q[2], q[3]);
+          }
+    return std::make_shared<const bp::SurfaceSet>(t);
+  }
+  if (which == WallSurface::Prism)
+  {
+    // Equilateral cross-section, circumradius 0.5, a corner at (0, 0.5);
+    // z in [-0.5, 0.5], closed by a triangle at each end.
+    float v[3][2];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k][0] = float(0.5 * std::cos(M_PI / 2 + 2 * M_PI * k / 3));
+      v[k][1] = float(0.5 * std::sin(M_PI / 2 + 2 * M_PI * k / 3));
+    }
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+        {
+          float q[4][3];
+          for (int c = 0; c < 4; ++c)
+          {
+            const float u = float(i + (c == 1 || c == 2)) / 3.0f;
+            q[c][0] = v[k][0] + u * (v[(k + 1) % 3][0] - v[k][0]);
+            q[c][1] = v[k][1] + u * (v[(k + 1) % 3][1] - v[k][1]);
+            q[c][2] = -0.5f + float(j + (c >= 2)) / 3.0f;
+          }
+          square(q[0], q[1], q[2], q[3]);
+        }
+    for (const float z : { -0.5f, 0.5f })
+    {
+      t.corners.insert(
+        t.corners.end(), { v[0][0], v[0][1], z, v[1][0], v[1][1], z, v[2][0], v[2][1], z });
+      t.interaction.push_back(bp::SurfaceInteraction::Wall);
+      t.cells.push_back(std::int32_t(t.cells.size()));
+    }
     return std::make_shared<const bp::SurfaceSet>(t);
   }
   const bool tilted = which == WallSurface::Tilted;
@@ -988,6 +1044,18 @@ float fromWall(WallSurface which, const float* p)
     return std::abs(p[0] + 0.3f * p[1] - 0.4f) / std::sqrt(1.09f);
   if (which == WallSurface::Corner)
     return std::min(std::abs(p[0] - 0.5f), std::abs(p[1] - 0.6f));
+  if (which == WallSurface::Box)
+    return 0.5f - std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+  if (which == WallSurface::Prism)
+  {
+    float nearest = 0.5f - std::abs(p[2]);
+    for (int k = 0; k < 3; ++k) // the side's outward normal at 150 + 120 k degrees, 0.25 off
+    {
+      const double a = 5 * M_PI / 6 + 2 * M_PI * k / 3;
+      nearest = std::min(nearest, float(0.25 - std::cos(a) * p[0] - std::sin(a) * p[1]));
+    }
+    return nearest;
+  }
   return p[0] >= 0.0f && p[0] <= 1.0f ? std::abs(p[1]) : 1.0f;
 }
 
@@ -1004,13 +1072,29 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
 {
   const bool tilted = c.surface == WallSurface::Tilted;
   const bool corner = c.surface == WallSurface::Corner;
-  const bp::VectorField field = tilted || corner ? uniformField() : rotationField();
+  const bool box = c.surface == WallSurface::Box;
+  const bool prism = c.surface == WallSurface::Prism;
+  // Into the box's edge x = y = 0.5 (the prism's at (0, 0.5)) and along it, to its corner.
+  const bp::VectorField field = box ? uniformField({ 0.7f, 0.7f, 0.35f })
+    : prism                         ? uniformField({ 0.1f, 0.8f, 0.35f })
+    : tilted || corner              ? uniformField()
+                                    : rotationField();
   bp::Parameters p = boundaryTrace(c.integrator, c.restoration, c.boundary, 0.4f, 1.0f, 17);
   p.restitution = 0.6f;
   if (tilted || corner)
     p.emitterMax[0] = 0.0f; // released before the wall
   if (corner)
     p.emitterMax[1] = 0.4f; // and below the corner's other wall
+  if (box)
+  {
+    p.emitterMin = { -0.4f, -0.4f, -0.4f }; // inside the box
+    p.emitterMax = { 0.4f, 0.4f, 0.4f };
+  }
+  if (prism)
+  {
+    p.emitterMin = { -0.15f, -0.15f, -0.4f }; // inside the prism
+    p.emitterMax = { 0.15f, 0.15f, 0.4f };
+  }
   if (c.heavy)
   {
     p.inertia = bp::Inertia::MaxeyRiley;
@@ -1070,6 +1154,7 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
       // On the tilted wall's far side (released before it): none should be.
       beyond += tilted && x[q] + 0.3f * x[q + 1] - 0.4f > 0.0f;
       beyond += corner && (x[q] > 0.5f || x[q + 1] > 0.6f);
+      beyond += (box || prism) && fromWall(c.surface, &x[q]) < 0.0f;
     }
   }
   std::printf("%s wall, %s, integrator %d, restoration %d, boundary %d%s: positions within %.3g "
@@ -1077,6 +1162,8 @@ int compareSurfaceWalls(const SurfaceWallCase& c)
               "hidden, %d generations apart; %ld held, %ld of them moved\n",
     tilted     ? "tilted"
       : corner ? "corner"
+      : box    ? "box"
+      : prism  ? "prism"
                : "half-plane",
     shape.name.c_str(), int(c.integrator), int(c.restoration), int(c.boundary),
     c.heavy ? ", heavy" : "", parity.worstKept, parity.elementsApart(), met, beyond,
@@ -1114,6 +1201,15 @@ TEST(GpuBoundary, SurfaceWallsMatchTheCpuEngine)
     { S::Tilted, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Stick },
     { S::HalfPlane, bp::BuiltinShape::Strip4, I::RK2, R::GaussSeidel, B::Stick },
     { S::Corner, bp::BuiltinShape::Strip4, I::Euler, R::AveragedJacobi, B::Stick },
+    // A closed box, the flow into an edge and along it: the step through
+    // the edge meets both faces at one point, the rule taken on both.
+    { S::Box, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
+    { S::Box, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
+    { S::Box, bp::BuiltinShape::Point, I::RK4, R::AveragedJacobi, B::Stick },
+    // A closed prism: at its 60-degree edges the segment from before the
+    // step is tested last.
+    { S::Prism, bp::BuiltinShape::Point, I::Euler, R::AveragedJacobi, B::Slip },
+    { S::Prism, bp::BuiltinShape::Strip4, I::RK2, R::AveragedJacobi, B::Bounce },
   };
   for (const SurfaceWallCase& c : cases)
     EXPECT_GT(compareSurfaceWalls(c), 20) << "the wall acts";
