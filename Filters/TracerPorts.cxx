@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // How the tracer's requests reach its ports and inputs (TracerPorts.h).
 #include "TracerPorts.h"
+#include "TracerState.h"
 
 #include "vtkBoundParticleTracer.h"
 
@@ -12,6 +13,7 @@
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkInformationVector.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 namespace bpvtk
@@ -79,7 +81,8 @@ void markNotGenerated(vtkInformation* request, vtkInformationVector* outputs, bo
   }
 }
 
-void markFailedUpdate(vtkInformation* request, vtkInformationVector* outputs)
+void markFailedUpdate(
+  vtkInformation* request, vtkInformationVector* outputs, const std::string& why)
 {
   const bool state = askedPort(request) == StatePort;
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
@@ -93,6 +96,10 @@ void markFailedUpdate(vtkInformation* request, vtkInformationVector* outputs)
     if (vtkDataObject* data = vtkDataObject::GetData(info))
     {
       data->Initialize();
+    }
+    if (port == StatePort && vtkPolyData::GetData(info))
+    {
+      writeStateNote("the trace failed: " + why, vtkPolyData::GetData(info));
     }
   }
 }

@@ -20,6 +20,8 @@
 #ifndef BoundParticles_TracerPorts_h
 #define BoundParticles_TracerPorts_h
 
+#include <string>
+
 class vtkInformation;
 class vtkInformationVector;
 
@@ -69,9 +71,12 @@ void markNotGenerated(
  * too, so that the requests ParaView makes of the other ports in the same
  * update (vtkSMSourceProxy::UpdatePipeline asks each) find them up to date
  * instead of executing again to say the same error. A change of the filter
- * or its input, or another time, executes again and says it again.
+ * or its input, or another time, executes again and says it again. The
+ * State output emptied holds the failure `why` as its note (writeStateNote),
+ * so a state saved from it says why it holds none when it is resumed.
  */
-void markFailedUpdate(vtkInformation* request, vtkInformationVector* outputs);
+void markFailedUpdate(
+  vtkInformation* request, vtkInformationVector* outputs, const std::string& why);
 
 /**
  * Whether an execution fills the Interactions output: it is the port asked

@@ -422,6 +422,8 @@ std::string readStateFields(vtkFieldData* fields, bp::TraceState& state)
 void writeStateNote(const std::string& why, vtkPolyData* out)
 {
   out->Initialize();
+  // No points, but a Points array: VTK's XML reader refuses a piece without one.
+  out->SetPoints(vtkNew<vtkPoints>());
   addStrings(out->GetFieldData(), "bpStateNote", { why });
 }
 

@@ -387,25 +387,26 @@ int vtkBoundParticleTracer::RequestData(
   // The checks before every large allocation leave only what they cannot
   // foresee (memory taken meanwhile): that ends the update with a message,
   // never the process.
+  std::string failure;
   try
   {
     return this->ExecuteUpdatePass(request, inputVector, outputVector);
   }
   catch (const std::bad_alloc&)
   {
-    vtkErrorMacro("Out of memory while tracing "
-      << this->NumberOfElements
-      << " elements; use fewer elements or a smaller template, or close other data.");
+    failure = "Out of memory while tracing " + std::to_string(this->NumberOfElements) +
+      " elements; use fewer elements or a smaller template, or close other data.";
   }
   catch (const std::exception& e)
   {
     // Nothing else is thrown on purpose: end the update, keep the session.
-    vtkErrorMacro("The trace failed: " << e.what() << "; please report this with the input.");
+    failure = std::string("The trace failed: ") + e.what() + "; please report this with the input.";
   }
+  vtkErrorMacro(<< failure);
   vtkBoundParticleTracerInternals& I = *this->Internals;
   I.endFailedUpdate();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-  bpvtk::markFailedUpdate(request, outputVector);
+  bpvtk::markFailedUpdate(request, outputVector, failure);
   return 1;
 }
 
@@ -435,7 +436,7 @@ int vtkBoundParticleTracer::EndUpdatePass(
   if (pass.kind == Pass::Failed)
   {
     // Said once per update: the other ports' requests find the outputs up to date.
-    bpvtk::markFailedUpdate(request, outputs);
+    bpvtk::markFailedUpdate(request, outputs, pass.message);
   }
   return 1;
 }

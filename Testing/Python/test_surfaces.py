@@ -347,4 +347,20 @@ for name, settings, refusal in refusals:
                      (name, update, messages.messages))
         refused.ElementSize = 0.2
     Delete(refused)
+
+# A state saved at a failed update holds no state and says why when it is
+# resumed (not an empty state, nor an unrelated reader error).
+refused = tracer(Boundary="Bounce", Restitution=2.0)
+saved = os.path.join(bptest.scratch("bp-surfaces-"), "failed.vtp")
+with bptest.CapturedMessages() as messages:
+    refused.UpdatePipeline(1.0)
+    SaveData(saved, proxy=OutputPort(refused, 2))
+Delete(refused)
+resumed = tracer(InitialStateFile=saved)
+with bptest.CapturedMessages() as messages:
+    resumed.UpdatePipeline(1.0)
+bptest.check(messages.mentions("holds no state: the trace failed: ") and
+             messages.mentions("Restitution must be between 0 and 1"),
+             "a state saved at a failed update says the failure on resume: %s" % messages.messages)
+Delete(resumed)
 bptest.finish()
