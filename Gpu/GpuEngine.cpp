@@ -111,6 +111,9 @@ std::string GpuEngine::configure(const ElementTemplate& shape, const Parameters&
   std::string error = Engine::validate(shape, p);
   if (!error.empty())
   {
+    // As for any configure that fails: nothing of the old system, nor a
+    // cached program, outlives it (a display releases only what it configured).
+    this->release();
     return error;
   }
   Internals& I = *this->I;

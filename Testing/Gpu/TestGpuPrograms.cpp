@@ -204,6 +204,14 @@ TEST(GpuPrograms, EachSourceIsCompiledOnceAndOnlyWhatASettingChanges)
   gpu.release();
   EXPECT_EQ(gpu.programsCompiled(), 0);
   EXPECT_EQ(gpu.programsKept(), 0u);
+  // A configure the engine's checks refuse keeps nothing either: a display
+  // releases only an engine it configured, in the context it configured it in.
+  ASSERT_EQ(gpu.configure(shape, p), "");
+  EXPECT_GT(gpu.programsKept(), 0u);
+  bp::Parameters refused = p;
+  refused.restitution = 2.0f;
+  EXPECT_NE(gpu.configure(shape, refused), "");
+  EXPECT_EQ(gpu.programsKept(), 0u) << "a refused configure keeps no program";
 }
 
 // The specialisation is in the code the driver compiles: the advect
