@@ -345,11 +345,12 @@ result threads "$([ -z "$why" ] && echo ok || echo "failed ($why; see threads.tx
 
 # --- inertia: heavy particles against massless, both engines ---------------
 secs=$(share 20 0)
-# At least 25 s whatever is left: its GPU half first compiles the heavy
-# particles' programs, seconds each on a software renderer whose shader cache
-# is empty (the rehearsal's bare chroot made anew); a lent GPU's budget never
-# gets this low.
-[ "$secs" -lt 25 ] && secs=25
+# At least 60 s whatever is left: its GPU half first compiles the heavy
+# particles' programs (their own advect kernel and fused step, BP_INERTIAL),
+# seconds each on a software renderer whose shader cache is empty (the
+# rehearsal's bare chroot made anew, or the shaders changed: 25 s ran out
+# there); a lent GPU's budget never gets this low.
+[ "$secs" -lt 60 ] && secs=60
 if [ "$budget" -ge 400 ]; then args=(--interleaved 60)
 elif [ "$budget" -ge 200 ]; then args=(--quick --repeats 1 --divide 4)
 else args=(--quick --repeats 1 --divide 32 --gpu-path fused) # the path a GPU runs by default
