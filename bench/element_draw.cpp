@@ -144,6 +144,7 @@ std::string ElementDraw::create(const bp::ElementTemplate& shape, int width, int
   }
   if (!error.empty())
     return "the draw program: " + error;
+  this->setConstantUniforms();
 
   std::vector<std::uint32_t> indices;
   for (const auto& t : shape.triangles)
@@ -189,6 +190,33 @@ std::string ElementDraw::create(const bp::ElementTemplate& shape, int width, int
   const GLenum glError = glGetError();
   return glError == GL_NO_ERROR ? ""
                                 : "OpenGL error " + std::to_string(glError) + " making the draw";
+}
+
+void ElementDraw::setConstantUniforms()
+{
+  // What no frame changes, set once (as the mapper's element draw sets them,
+  // SetMapperShaderParameters); the frame's own uniforms' locations kept.
+  const GLuint p = this->Program;
+  const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
+  glUseProgram(p);
+  for (int k = 0; k < bp::DrawSamplerCount; ++k)
+    glUniform1i(at(bp::drawSamplerName(bp::DrawSampler(k))), k);
+  glUniform1i(at("bpColorTable"), TableUnit);
+  glUniform1f(at("bpColorTableSize"), float(TableSize));
+  glUniform1i(at("bpLinksPerRow"), 1);
+  glUniform1i(at("bpDrawLinks"), 0);
+  glUniform1i(at("bpAdjacencyWidth"), 1);
+  glUniform1i(at("bpTrail"), 0);
+  glUniform1f(at("bpTrailAge"), 0.0f);
+  glUniform1f(at("bpFade"), 1.0f);
+  glUniform1i(at("bpScalarMode"), int(bp::ColorSource::Force));
+  glUniform1i(at("bpComponent"), -1);
+  glUniform1i(at("bpColoringAxis"), 0);
+  glUniform2f(at("bpRadialCenter"), 0.0f, 0.0f);
+  glUniform1f(at("bpVelocitySign"), 1.0f);
+  glUseProgram(0);
+  this->Locations = { at("bpViewProjection"), at("bpNormalMatrix"), at("bpElementGrid"),
+    at("bpBlocksPerRow"), at("bpTrailHalfPeriods"), at("bpScalarRange") };
 }
 
 void ElementDraw::setCamera(const std::array<float, 3>& eye, const std::array<float, 3>& center)
@@ -239,40 +267,22 @@ void ElementDraw::draw(const bp::GpuEngine::DrawInputs& inputs, float forceMax)
   glClearColor(Clear[0], Clear[1], Clear[2], Clear[3]);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const GLuint p = this->Program;
-  glUseProgram(p);
+  glUseProgram(this->Program);
   const auto textures = bp::drawSamplerTextures(inputs, {});
   for (int k = 0; k < bp::DrawSamplerCount; ++k)
   {
     glActiveTexture(GLenum(GL_TEXTURE0 + k));
     glBindTexture(GL_TEXTURE_2D, textures[std::size_t(k)]);
-    glUniform1i(glGetUniformLocation(p, bp::drawSamplerName(bp::DrawSampler(k))), k);
   }
   glActiveTexture(GLenum(GL_TEXTURE0 + TableUnit));
   glBindTexture(GL_TEXTURE_2D, this->ColorTable);
-  glUniform1i(glGetUniformLocation(p, "bpColorTable"), TableUnit);
-  glUniform1f(glGetUniformLocation(p, "bpColorTableSize"), float(TableSize));
-  glUniformMatrix4fv(
-    glGetUniformLocation(p, "bpViewProjection"), 1, GL_FALSE, this->ViewProjection.data());
-  glUniformMatrix3fv(
-    glGetUniformLocation(p, "bpNormalMatrix"), 1, GL_FALSE, this->NormalMatrix.data());
-  // As the mapper's element draw sets them (SetMapperShaderParameters).
-  glUniform2i(
-    glGetUniformLocation(p, "bpElementGrid"), inputs.elementGrid[0], inputs.elementGrid[1]);
-  glUniform1i(glGetUniformLocation(p, "bpBlocksPerRow"), inputs.blocksPerRow);
-  glUniform1i(glGetUniformLocation(p, "bpLinksPerRow"), 1);
-  glUniform1i(glGetUniformLocation(p, "bpDrawLinks"), 0);
-  glUniform1i(glGetUniformLocation(p, "bpAdjacencyWidth"), 1);
-  glUniform3fv(glGetUniformLocation(p, "bpTrailHalfPeriods"), 1, inputs.trailHalfPeriods);
-  glUniform1i(glGetUniformLocation(p, "bpTrail"), 0);
-  glUniform1f(glGetUniformLocation(p, "bpTrailAge"), 0.0f);
-  glUniform1f(glGetUniformLocation(p, "bpFade"), 1.0f);
-  glUniform1i(glGetUniformLocation(p, "bpScalarMode"), int(bp::ColorSource::Force));
-  glUniform1i(glGetUniformLocation(p, "bpComponent"), -1);
-  glUniform2f(glGetUniformLocation(p, "bpScalarRange"), 0.0f, forceMax);
-  glUniform1i(glGetUniformLocation(p, "bpColoringAxis"), 0);
-  glUniform2f(glGetUniformLocation(p, "bpRadialCenter"), 0.0f, 0.0f);
-  glUniform1f(glGetUniformLocation(p, "bpVelocitySign"), 1.0f);
+  const FrameLocations& at = this->Locations;
+  glUniformMatrix4fv(at.viewProjection, 1, GL_FALSE, this->ViewProjection.data());
+  glUniformMatrix3fv(at.normalMatrix, 1, GL_FALSE, this->NormalMatrix.data());
+  glUniform2i(at.elementGrid, inputs.elementGrid[0], inputs.elementGrid[1]);
+  glUniform1i(at.blocksPerRow, inputs.blocksPerRow);
+  glUniform3fv(at.trailHalfPeriods, 1, inputs.trailHalfPeriods);
+  glUniform2f(at.scalarRange, 0.0f, forceMax);
   glBindVertexArray(this->VertexArray);
   glDrawElementsInstanced(
     GL_TRIANGLES, this->IndexCount, GL_UNSIGNED_INT, nullptr, GLsizei(inputs.elementCount));

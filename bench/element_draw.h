@@ -46,6 +46,20 @@ public:
   void release();
 
 private:
+  /// The uniforms every frame may change: their locations, looked up once.
+  struct FrameLocations
+  {
+    int viewProjection = -1;
+    int normalMatrix = -1;
+    int elementGrid = -1;
+    int blocksPerRow = -1;
+    int trailHalfPeriods = -1;
+    int scalarRange = -1;
+  };
+  /// Sets what no frame changes and keeps FrameLocations (after linking).
+  void setConstantUniforms();
+
+  FrameLocations Locations;
   unsigned Program = 0;
   unsigned VertexArray = 0;
   unsigned Indices = 0;
