@@ -340,13 +340,10 @@ std::string wallsNearSeam(const bp::SurfaceTriangles& t, bp::Boundary boundary,
   {
     return std::string();
   }
-  const char* rule = boundary == bp::Boundary::Stick ? "Stick"
-    : boundary == bp::Boundary::Slip                 ? "Slip"
-                                                     : "Bounce";
   const char axis = "xyz"[first];
   std::ostringstream say;
   say << near << " Wall triangles of the Surfaces lie closer than one cell to a periodic side (the "
-      << "first along " << axis << "): with Boundary " << rule
+      << "first along " << axis << "): with Boundary " << bp::enumName(boundary)
       << " a particle's step is tested before its element moves across the seam, so a particle "
          "that crosses the seam can pass a wall just past it. Keep walls farther from a periodic "
          "side than a step and an element's size (gates, outlets and walls that end elements "
